@@ -1,0 +1,54 @@
+#include "commands.h"
+
+#include "cli_support.h"
+
+#include <QCoreApplication>
+
+namespace nb::cli {
+
+// Each command's entry point, defined in its cmd_*.cpp file.
+int cmdVersion(const QStringList& args, Io io);
+
+const std::vector<Command>& commands()
+{
+    static const std::vector<Command> all{
+        {QStringLiteral("version"), QCoreApplication::translate("cli", "print the version"), cmdVersion},
+    };
+    return all;
+}
+
+static void printUsage(QTextStream& s)
+{
+    s << QCoreApplication::translate("cli",
+                                     "Usage: needlebench                 open the workbench (GUI, simulated rig)\n"
+                                     "       needlebench COMMAND [options]  run headless\n\n"
+                                     "Commands:\n");
+    for (const Command& c : commands())
+        s << "  " << c.name.leftJustified(16) << ' ' << c.summary << '\n';
+    s << QCoreApplication::translate("cli", "\n'needlebench COMMAND --help' describes a command.\n");
+}
+
+int run(const QStringList& arguments, Io io)
+{
+    if (arguments.isEmpty() || arguments.first() == QLatin1String("help") ||
+        arguments.first() == QLatin1String("--help") || arguments.first() == QLatin1String("-h")) {
+        printUsage(arguments.isEmpty() ? io.err : io.out);
+        return arguments.isEmpty() ? Usage : Ok;
+    }
+    const QString word = arguments.first();
+    for (const Command& c : commands()) {
+        if (c.name == word) {
+            try {
+                return c.run(arguments.mid(1), io);
+            } catch (const std::exception& e) {
+                io.err << "needlebench " << word << ": " << QString::fromStdString(e.what()) << '\n';
+                return Failure;
+            }
+        }
+    }
+    io.err << QCoreApplication::translate("cli", "needlebench: unknown command '%1'\n\n").arg(word);
+    printUsage(io.err);
+    return Usage;
+}
+
+}  // namespace nb::cli

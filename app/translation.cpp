@@ -1,0 +1,36 @@
+#include "translation.h"
+
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QSettings>
+#include <QTranslator>
+
+namespace nb {
+
+QStringList availableLanguages() { return {QStringLiteral("en"), QStringLiteral("de")}; }
+
+QString preferredLanguage()
+{
+    const QString chosen = QSettings().value(QStringLiteral("language")).toString();
+    if (availableLanguages().contains(chosen))
+        return chosen;
+    const QString system = QLocale().name().left(2);
+    return availableLanguages().contains(system) ? system : QStringLiteral("en");
+}
+
+void setPreferredLanguage(const QString& code) { QSettings().setValue(QStringLiteral("language"), code); }
+
+void installTranslation(QCoreApplication& app)
+{
+    const QString lang = preferredLanguage();
+    if (lang == QLatin1String("en"))
+        return;
+    auto* own = new QTranslator(&app);
+    if (own->load(QStringLiteral(":/i18n/needlebench_%1.qm").arg(lang)))
+        app.installTranslator(own);
+    auto* qt = new QTranslator(&app);
+    if (qt->load(QStringLiteral("qtbase_%1").arg(lang), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        app.installTranslator(qt);
+}
+
+}  // namespace nb

@@ -1,0 +1,396 @@
+#include "run_file.h"
+
+#include <QSaveFile>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace nb {
+
+namespace {
+
+constexpr const char* kRequired[] = {"time_s", "position_mm", "force_N"};
+
+QString tr(const char* text) { return QString::fromUtf8(text); }
+
+// Splits one CSV line on commas (the format has no quoting: metadata lives in `#` lines,
+// text columns hold labels without commas). Trims surrounding blanks.
+void splitFields(std::string_view line, std::vector<std::string_view>& fields)
+{
+    fields.clear();
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = line.find(',', start);
+        std::string_view f = line.substr(start, comma == std::string_view::npos ? std::string_view::npos
+                                                                                 : comma - start);
+        while (!f.empty() && (f.front() == ' ' || f.front() == '\t'))
+            f.remove_prefix(1);
+        while (!f.empty() && (f.back() == ' ' || f.back() == '\t'))
+            f.remove_suffix(1);
+        fields.push_back(f);
+        if (comma == std::string_view::npos)
+            break;
+        start = comma + 1;
+    }
+}
+
+bool parseNumber(std::string_view s, double& out)
+{
+    if (s.empty())
+        return false;
+    if (s.front() == '+')
+        s.remove_prefix(1);
+    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && ptr == s.data() + s.size() && std::isfinite(out);
+}
+
+void parseMetaLine(std::string_view line, Metadata& into)
+{
+    line.remove_prefix(1);  // '#'
+    const auto colon = line.find(':');
+    if (colon == std::string_view::npos)
+        return;  // a plain comment
+    const QString key = QString::fromUtf8(line.substr(0, colon)).trimmed();
+    const QString value = QString::fromUtf8(line.substr(colon + 1)).trimmed();
+    if (!key.isEmpty() && !key.contains(QLatin1Char(' ')))
+        into.set(key, value);
+}
+
+enum class Kind { Time, Position, Force, Numeric, Text, Ignored };
+
+}  // namespace
+
+RunFileError::RunFileError(QString file, int line, QString reason)
+    : std::runtime_error((line > 0 ? QStringLiteral("%1:%2: %3").arg(file).arg(line).arg(reason)
+                                   : QStringLiteral("%1: %2").arg(file, reason))
+                             .toStdString()),
+      file_(std::move(file)), line_(line), reason_(std::move(reason))
+{
+}
+
+QString RunFileError::message() const { return QString::fromStdString(what()); }
+
+const QStringList& knownNumericColumns()
+{
+    static const QStringList names{
+        QStringLiteral("velocity_mm_s"),     QStringLiteral("acceleration_mm_s2"),
+        QStringLiteral("voltage_V"),         QStringLiteral("seq"),
+        QStringLiteral("device_time_s"),     QStringLiteral("stage_position_mm"),
+        QStringLiteral("tissue_position_mm"), QStringLiteral("force_limit_N"),
+    };
+    return names;
+}
+
+const QStringList& knownTextColumns()
+{
+    static const QStringList names{QStringLiteral("phase"), QStringLiteral("event")};
+    return names;
+}
+
+RunReadResult readRunFile(const QString& path, const RunReadOptions& options)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw RunFileError(path, 0, tr("cannot open: %1").arg(file.errorString()));
+    return parseRunText(file.readAll(), path, options);
+}
+
+RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const RunReadOptions& options)
+{
+    RunReadResult result;
+    Run& run = result.run;
+    std::string_view text(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+    if (text.starts_with("\xEF\xBB\xBF"))
+        text.remove_prefix(3);
+    if (text.find('\0') != std::string_view::npos)
+        throw RunFileError(name, 0, tr("binary data, not a text run file"));
+
+    std::vector<Kind> kinds;
+    QStringList columnNames;
+    std::vector<std::vector<double>*> numericTargets;
+    std::vector<std::vector<QString>*> textTargets;
+    std::vector<std::string_view> fields;
+    bool haveHeader = false;
+    bool dataEnded = false;
+    int lineNo = 0;
+    std::size_t pos = 0;
+    double lastTime = -std::numeric_limits<double>::infinity();
+
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        const bool lastLineUnterminated = end == std::string_view::npos;
+        if (lastLineUnterminated)
+            end = text.size();
+        std::string_view line = text.substr(pos, end - pos);
+        pos = end + 1;
+        ++lineNo;
+        if (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        std::string_view trimmed = line;
+        while (!trimmed.empty() && (trimmed.front() == ' ' || trimmed.front() == '\t'))
+            trimmed.remove_prefix(1);
+        if (trimmed.empty())
+            continue;
+        if (trimmed.front() == '#') {
+            parseMetaLine(trimmed, haveHeader && run.size() > 0 ? run.footer : run.metadata);
+            if (haveHeader && run.size() > 0)
+                dataEnded = true;
+            continue;
+        }
+
+        splitFields(trimmed, fields);
+        if (!haveHeader) {
+            haveHeader = true;
+            QStringList& names = columnNames;
+            for (auto f : fields)
+                names << QString::fromUtf8(f);
+            for (const char* req : kRequired)
+                if (!names.contains(QLatin1String(req)))
+                    throw RunFileError(name, lineNo,
+                                       tr("header has no '%1' column (found: %2)")
+                                           .arg(QLatin1String(req), names.join(QLatin1String(", "))));
+            QStringList ignored;
+            for (const QString& n : names) {
+                if (names.count(n) > 1)
+                    throw RunFileError(name, lineNo, tr("column '%1' appears twice").arg(n));
+                if (n == QLatin1String("time_s"))
+                    kinds.push_back(Kind::Time);
+                else if (n == QLatin1String("position_mm"))
+                    kinds.push_back(Kind::Position);
+                else if (n == QLatin1String("force_N"))
+                    kinds.push_back(Kind::Force);
+                else if (knownNumericColumns().contains(n)) {
+                    kinds.push_back(Kind::Numeric);
+                    numericTargets.push_back(&run.addNumericColumn(n));
+                } else if (knownTextColumns().contains(n)) {
+                    kinds.push_back(Kind::Text);
+                    textTargets.push_back(&run.addTextColumn(n));
+                } else {
+                    kinds.push_back(Kind::Ignored);
+                    ignored << n;
+                }
+            }
+            if (!ignored.isEmpty())
+                result.warnings << tr("%1: ignored unknown columns: %2").arg(name, ignored.join(QLatin1String(", ")));
+            continue;
+        }
+
+        if (dataEnded)
+            throw RunFileError(name, lineNo, tr("sample row after the closing metadata"));
+        if (fields.size() != kinds.size()) {
+            if (lastLineUnterminated && options.dropTruncatedLastRow) {
+                result.warnings << tr("%1:%2: dropped a partial last row (recording was interrupted)")
+                                       .arg(name)
+                                       .arg(lineNo);
+                break;
+            }
+            throw RunFileError(name, lineNo,
+                               tr("expected %1 fields, found %2%3")
+                                   .arg(kinds.size())
+                                   .arg(fields.size())
+                                   .arg(lastLineUnterminated ? tr(" (file ends mid-row: interrupted recording?)")
+                                                             : QString()));
+        }
+        std::size_t ni = 0, ti = 0;
+        for (std::size_t c = 0; c < fields.size(); ++c) {
+            const Kind k = kinds[c];
+            if (k == Kind::Ignored)
+                continue;
+            if (k == Kind::Text) {
+                textTargets[ti++]->push_back(QString::fromUtf8(fields[c]));
+                continue;
+            }
+            double v = std::numeric_limits<double>::quiet_NaN();
+            if (!parseNumber(fields[c], v)) {
+                const bool optionalEmpty = k == Kind::Numeric && fields[c].empty();
+                if (!optionalEmpty) {
+                    if (lastLineUnterminated && options.dropTruncatedLastRow) {
+                        result.warnings << tr("%1:%2: dropped a partial last row (recording was interrupted)")
+                                               .arg(name)
+                                               .arg(lineNo);
+                        goto done;
+                    }
+                    throw RunFileError(name, lineNo,
+                                       tr("column %1 ('%2'): '%3' is not a number")
+                                           .arg(c + 1)
+                                           .arg(columnNames[static_cast<qsizetype>(c)])
+                                           .arg(QString::fromUtf8(fields[c])));
+                }
+            }
+            switch (k) {
+            case Kind::Time:
+                if (!(v > lastTime))
+                    throw RunFileError(name, lineNo,
+                                       tr("time_s %1 does not increase (previous %2)").arg(v).arg(lastTime));
+                lastTime = v;
+                run.time_s.push_back(v);
+                break;
+            case Kind::Position: run.position_mm.push_back(v); break;
+            case Kind::Force: run.force_N.push_back(v); break;
+            case Kind::Numeric: numericTargets[ni++]->push_back(v); break;
+            default: break;
+            }
+        }
+    }
+done:
+    if (!haveHeader)
+        throw RunFileError(name, 0, bytes.isEmpty() ? tr("file is empty") : tr("no header row"));
+    // A dropped partial row may have left some columns one longer than others.
+    const std::size_t n = run.time_s.size();
+    run.position_mm.resize(std::min(run.position_mm.size(), n));
+    run.force_N.resize(std::min(run.force_N.size(), n));
+    for (auto& [_, c] : run.numeric)
+        c.resize(std::min(c.size(), n));
+    for (auto& [_, c] : run.text)
+        c.resize(std::min(c.size(), n));
+    return result;
+}
+
+namespace {
+
+int decimalsFor(const QString& column)
+{
+    if (column == QLatin1String("seq"))
+        return 0;
+    if (column == QLatin1String("voltage_V"))
+        return 8;
+    if (column.endsWith(QLatin1String("time_s")))
+        return 7;
+    return 6;
+}
+
+void appendNumber(QByteArray& out, double v, int decimals)
+{
+    if (!std::isfinite(v))
+        return;  // empty field: missing value
+    char buf[64];
+    const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+    if (ec == std::errc())
+        out.append(buf, ptr - buf);
+}
+
+QByteArray metadataBlock(const Metadata& m)
+{
+    QByteArray out;
+    for (const auto& [k, v] : m.entries()) {
+        QString value = v;
+        value.replace(QLatin1Char('\n'), QLatin1Char(' ')).replace(QLatin1Char('\r'), QLatin1Char(' '));
+        out += "# " + k.toUtf8() + ": " + value.toUtf8() + '\n';
+    }
+    return out;
+}
+
+}  // namespace
+
+void writeRunFile(const QString& path, const Run& run)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+    QByteArray out = metadataBlock(run.metadata);
+    QStringList header{QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")};
+    std::vector<int> decimals{decimalsFor(header[0]), 6, 6};
+    for (const auto& [n, _] : run.numeric) {
+        header << n;
+        decimals.push_back(decimalsFor(n));
+    }
+    for (const auto& [n, _] : run.text)
+        header << n;
+    out += header.join(QLatin1Char(',')).toUtf8() + '\n';
+    const std::size_t n = run.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        appendNumber(out, run.time_s[i], decimals[0]);
+        out += ',';
+        appendNumber(out, i < run.position_mm.size() ? run.position_mm[i] : NAN, 6);
+        out += ',';
+        appendNumber(out, i < run.force_N.size() ? run.force_N[i] : NAN, 6);
+        std::size_t c = 3;
+        for (const auto& [_, col] : run.numeric) {
+            out += ',';
+            appendNumber(out, i < col.size() ? col[i] : NAN, decimals[c++]);
+        }
+        for (const auto& [_, col] : run.text) {
+            out += ',';
+            if (i < col.size())
+                out += col[i].toUtf8();
+        }
+        out += '\n';
+        if (out.size() > (1 << 20)) {
+            file.write(out);
+            out.clear();
+        }
+    }
+    out += metadataBlock(run.footer);
+    file.write(out);
+    if (!file.commit())
+        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+}
+
+RunFileWriter::~RunFileWriter()
+{
+    if (file_.isOpen()) {
+        writeBuffer();
+        file_.close();
+    }
+}
+
+void RunFileWriter::open(const QString& path, const Metadata& metadata, const QStringList& numericColumns,
+                         const QStringList& textColumns)
+{
+    path_ = path;
+    file_.setFileName(path);
+    if (!file_.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered))
+        throw RunFileError(path, 0, tr("cannot write: %1").arg(file_.errorString()));
+    decimals_.clear();
+    for (const QString& c : numericColumns)
+        decimals_.push_back(decimalsFor(c));
+    textCount_ = static_cast<std::size_t>(textColumns.size());
+    rows_ = 0;
+    buffer_ = metadataBlock(metadata);
+    buffer_ += (numericColumns + textColumns).join(QLatin1Char(',')).toUtf8() + '\n';
+    flush();
+}
+
+void RunFileWriter::writeRow(std::span<const double> numbers, std::span<const QString> texts)
+{
+    for (std::size_t i = 0; i < decimals_.size(); ++i) {
+        if (i)
+            buffer_ += ',';
+        appendNumber(buffer_, i < numbers.size() ? numbers[i] : NAN, decimals_[i]);
+    }
+    for (std::size_t i = 0; i < textCount_; ++i) {
+        buffer_ += ',';
+        if (i < texts.size())
+            buffer_ += texts[i].toUtf8();
+    }
+    buffer_ += '\n';
+    ++rows_;
+    if (buffer_.size() > (1 << 18))
+        writeBuffer();
+}
+
+void RunFileWriter::writeBuffer()
+{
+    if (buffer_.isEmpty())
+        return;
+    const qint64 written = file_.write(buffer_);
+    if (written != buffer_.size())
+        throw RunFileError(path_, 0, tr("write failed: %1").arg(file_.errorString()));
+    buffer_.clear();
+}
+
+void RunFileWriter::flush()
+{
+    writeBuffer();
+}
+
+void RunFileWriter::close(const Metadata& footer)
+{
+    if (!file_.isOpen())
+        return;
+    buffer_ += metadataBlock(footer);
+    writeBuffer();
+    file_.close();
+}
+
+}  // namespace nb

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every test with ctest.
+#   NEEDLEBENCH_BUILD_DIR  build folder (default: build)
+#   NEEDLEBENCH_SANITIZE   ON for an ASan + UBSan build
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+build=${NEEDLEBENCH_BUILD_DIR:-build}
+sanitize=${NEEDLEBENCH_SANITIZE:-OFF}
+cmake -S . -B "$build" -G Ninja -DNEEDLEBENCH_SANITIZE="$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+cmake --build "$build" --parallel "$(nproc)"
+ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --timeout 600

@@ -1,0 +1,169 @@
+// The run file format: round trips and every kind of bad input, on real files on disk.
+#include "core/run_file.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+
+using namespace nb;
+
+class TestRunFile : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+    QString write(const QString& name, const QByteArray& bytes)
+    {
+        const QString path = dir_.filePath(name);
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly))
+            qFatal("cannot write %s", qPrintable(path));
+        f.write(bytes);
+        return path;
+    }
+
+    // Reads a file that must be refused, returns the error's line and reason.
+    RunFileError refused(const QString& path)
+    {
+        try {
+            readRunFile(path);
+        } catch (const RunFileError& e) {
+            return e;
+        }
+        return RunFileError(QString(), -1, QStringLiteral("accepted"));
+    }
+
+private slots:
+    void roundTripKeepsMetadataColumnsAndFooter()
+    {
+        Run run;
+        run.metadata.set(QStringLiteral("protocol"), QStringLiteral("stiffness"));
+        run.metadata.set(QStringLiteral("rate_hz"), 500.0);
+        auto& seq = run.addNumericColumn(QStringLiteral("seq"));
+        auto& phase = run.addTextColumn(QStringLiteral("phase"));
+        for (int i = 0; i < 1000; ++i) {
+            run.time_s.push_back(i * 0.002);
+            run.position_mm.push_back(i * 0.008);
+            run.force_N.push_back(std::sin(i * 0.01));
+            seq.push_back(i);
+            phase.push_back(i < 500 ? QStringLiteral("a") : QStringLiteral("c"));
+        }
+        run.footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
+        const QString path = dir_.filePath(QStringLiteral("round.csv"));
+        writeRunFile(path, run);
+
+        const auto back = readRunFile(path);
+        QCOMPARE(back.run.size(), std::size_t(1000));
+        QCOMPARE(back.run.metadata.value(QStringLiteral("protocol"), QString()), QStringLiteral("stiffness"));
+        QCOMPARE(*back.run.metadata.number(QStringLiteral("rate_hz")), 500.0);
+        QCOMPARE(back.run.meta(QStringLiteral("end_reason")).value_or(QString()), QStringLiteral("completed"));
+        QVERIFY(back.run.footer.contains(QStringLiteral("end_reason")));
+        QVERIFY(!back.run.metadata.contains(QStringLiteral("end_reason")));
+        for (std::size_t i = 0; i < 1000; i += 97) {
+            QVERIFY(std::abs(back.run.time_s[i] - run.time_s[i]) < 1e-9);
+            QVERIFY(std::abs(back.run.force_N[i] - run.force_N[i]) < 1e-6);
+        }
+        QCOMPARE(back.run.numericColumn(QStringLiteral("seq"))->at(999), 999.0);
+        QCOMPARE(back.run.textColumn(QStringLiteral("phase"))->at(999), QStringLiteral("c"));
+        QVERIFY(back.warnings.isEmpty());
+    }
+
+    void streamingWriterMatchesReader()
+    {
+        const QString path = dir_.filePath(QStringLiteral("stream.csv"));
+        Metadata m;
+        m.set(QStringLiteral("protocol"), QStringLiteral("friction"));
+        RunFileWriter w;
+        w.open(path, m, {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N"),
+                         QStringLiteral("seq")});
+        for (int i = 0; i < 250; ++i) {
+            const double row[] = {i * 0.001, i * 0.004, 0.5, double(i)};
+            w.writeRow(row);
+            if (i == 100) {
+                w.flush();
+                // What a crash at this point would leave on disk reads back cleanly.
+                const auto partial = readRunFile(path);
+                QCOMPARE(partial.run.size(), std::size_t(101));
+                QVERIFY(!partial.run.footer.contains(QStringLiteral("end_reason")));
+            }
+        }
+        Metadata footer;
+        footer.set(QStringLiteral("end_reason"), QStringLiteral("stopped by operator"));
+        w.close(footer);
+        const auto back = readRunFile(path);
+        QCOMPARE(back.run.size(), std::size_t(250));
+        QCOMPARE(back.run.meta(QStringLiteral("end_reason")).value_or(QString()), QStringLiteral("stopped by operator"));
+    }
+
+    void acceptsBomCrlfBlanksAndUnknownColumns()
+    {
+        const QString path = write(QStringLiteral("excel.csv"),
+                                   "\xEF\xBB\xBF# specimen: liver 1\r\n\r\ntime_s, position_mm ,force_N,notes,velocity_mm_s\r\n"
+                                   "0,0,0,hello,4\r\n0.002,0.008,+0.01,x,\r\n");
+        const auto r = readRunFile(path);
+        QCOMPARE(r.run.size(), std::size_t(2));
+        QCOMPARE(r.run.metadata.value(QStringLiteral("specimen"), QString()), QStringLiteral("liver 1"));
+        QCOMPARE(r.run.force_N[1], 0.01);
+        QVERIFY(std::isnan(r.run.numericColumn(QStringLiteral("velocity_mm_s"))->at(1)));
+        QVERIFY(r.warnings.join(' ').contains(QStringLiteral("notes")));
+    }
+
+    void refusesBadInputWithFileLineAndReason_data()
+    {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("empty") << QByteArray() << 0 << "empty";
+        QTest::newRow("only comments") << QByteArray("# a: b\n") << 0 << "no header";
+        QTest::newRow("missing force") << QByteArray("time_s,position_mm\n0,0\n") << 1 << "force_N";
+        QTest::newRow("text in number") << QByteArray("time_s,position_mm,force_N\n0,0,0\n0.1,abc,0\n") << 3
+                                        << "'abc' is not a number";
+        QTest::newRow("nan required") << QByteArray("time_s,position_mm,force_N\n0,0,nan\n") << 2 << "not a number";
+        QTest::newRow("time repeats") << QByteArray("time_s,position_mm,force_N\n0,0,0\n0,1,0\n") << 3
+                                      << "does not increase";
+        QTest::newRow("time backwards") << QByteArray("time_s,position_mm,force_N\n1,0,0\n0.5,1,0\n") << 3
+                                        << "does not increase";
+        QTest::newRow("short row") << QByteArray("time_s,position_mm,force_N\n0,0,0\n1,2\n3,4,5\n") << 3
+                                   << "expected 3 fields, found 2";
+        QTest::newRow("truncated tail") << QByteArray("time_s,position_mm,force_N\n0,0,0\n1,2") << 3
+                                        << "interrupted";
+        QTest::newRow("duplicate column") << QByteArray("time_s,force_N,position_mm,force_N\n") << 1 << "twice";
+        QTest::newRow("binary") << QByteArray("time_s,position_mm,force_N\n\0\0\0", 30) << 0 << "binary";
+        QTest::newRow("row after footer") << QByteArray("time_s,position_mm,force_N\n0,0,0\n# end: x\n1,1,1\n") << 4
+                                          << "after the closing metadata";
+    }
+    void refusesBadInputWithFileLineAndReason()
+    {
+        QFETCH(QByteArray, bytes);
+        QFETCH(int, line);
+        QFETCH(QString, reason);
+        const QString path = write(QStringLiteral("bad.csv"), bytes);
+        const RunFileError e = refused(path);
+        QVERIFY2(e.line() != -1, "bad input was accepted");
+        QCOMPARE(e.line(), line);
+        QVERIFY2(e.reason().contains(reason), qPrintable(e.message()));
+        QVERIFY(e.message().startsWith(path));
+    }
+
+    void recoveryDropsOnlyThePartialLastRow()
+    {
+        const QString path = write(QStringLiteral("crashed.csv"), "time_s,position_mm,force_N\n0,0,0\n0.1,1,0.2\n0.2,1.");
+        RunReadOptions o;
+        o.dropTruncatedLastRow = true;
+        const auto r = readRunFile(path, o);
+        QCOMPARE(r.run.size(), std::size_t(2));
+        QCOMPARE(r.run.position_mm.size(), std::size_t(2));
+        QCOMPARE(r.warnings.size(), 1);
+    }
+
+    void missingFileNamesTheFile()
+    {
+        const QString path = dir_.filePath(QStringLiteral("nope.csv"));
+        const RunFileError e = refused(path);
+        QVERIFY(e.message().contains(QStringLiteral("nope.csv")));
+        QVERIFY(e.reason().contains(QStringLiteral("cannot open")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRunFile)
+#include "test_run_file.moc"
