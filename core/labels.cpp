@@ -1,0 +1,142 @@
+#include "labels.h"
+
+#include "run_file.h"
+
+#include <QFile>
+#include <QSaveFile>
+#include <cmath>
+
+namespace nb {
+
+namespace {
+
+QString tr(const char* s) { return QString::fromUtf8(s); }
+
+// Splits one CSV line, honouring "..." quoting with "" as an escaped quote.
+QStringList splitCsv(const QString& line)
+{
+    QStringList out;
+    QString field;
+    bool quoted = false;
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (quoted) {
+            if (c == QLatin1Char('"')) {
+                if (i + 1 < line.size() && line[i + 1] == QLatin1Char('"')) {
+                    field += c;
+                    ++i;
+                } else {
+                    quoted = false;
+                }
+            } else {
+                field += c;
+            }
+        } else if (c == QLatin1Char('"')) {
+            quoted = true;
+        } else if (c == QLatin1Char(',')) {
+            out << field.trimmed();
+            field.clear();
+        } else {
+            field += c;
+        }
+    }
+    out << field.trimmed();
+    return out;
+}
+
+QString quoteIfNeeded(QString s)
+{
+    if (!s.contains(QLatin1Char(',')) && !s.contains(QLatin1Char('"')))
+        return s;
+    s.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + s + QLatin1Char('"');
+}
+
+}  // namespace
+
+Labels readLabelsFile(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw RunFileError(path, 0, tr("cannot open: %1").arg(file.errorString()));
+    QString text = QString::fromUtf8(file.readAll());
+    if (text.startsWith(QChar(0xFEFF)))
+        text.remove(0, 1);
+    const QStringList lines = text.split(QLatin1Char('\n'));
+    Labels labels;
+    bool haveHeader = false;
+    int col[5] = {-1, -1, -1, -1, -1};
+    static const char* names[5] = {"track", "label", "start_s", "end_s", "comment"};
+    for (int i = 0; i < lines.size(); ++i) {
+        QString line = lines[i];
+        if (line.endsWith(QLatin1Char('\r')))
+            line.chop(1);
+        if (line.trimmed().isEmpty() || line.trimmed().startsWith(QLatin1Char('#')))
+            continue;
+        const QStringList f = splitCsv(line);
+        if (!haveHeader) {
+            haveHeader = true;
+            for (int k = 0; k < 5; ++k)
+                col[k] = int(f.indexOf(QLatin1String(names[k])));
+            for (int k = 0; k < 4; ++k)
+                if (col[k] < 0)
+                    throw RunFileError(path, i + 1, tr("header has no '%1' column").arg(QLatin1String(names[k])));
+            continue;
+        }
+        auto field = [&](int k) { return col[k] >= 0 && col[k] < f.size() ? f[col[k]] : QString(); };
+        Label l;
+        l.track = field(0);
+        l.label = field(1);
+        bool ok1 = false, ok2 = false;
+        l.start_s = field(2).toDouble(&ok1);
+        l.end_s = field(3).toDouble(&ok2);
+        l.comment = field(4);
+        if (!ok1 || !ok2 || !std::isfinite(l.start_s) || !std::isfinite(l.end_s))
+            throw RunFileError(path, i + 1, tr("start_s and end_s must be numbers"));
+        if (l.end_s < l.start_s)
+            throw RunFileError(path, i + 1, tr("end_s %1 is before start_s %2").arg(l.end_s).arg(l.start_s));
+        if (l.label.isEmpty())
+            throw RunFileError(path, i + 1, tr("empty label"));
+        labels.push_back(std::move(l));
+    }
+    if (!haveHeader)
+        throw RunFileError(path, 0, tr("no header row (expected track,label,start_s,end_s,comment)"));
+    return labels;
+}
+
+void writeLabelsFile(const QString& path, const Labels& labels)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+    QByteArray out = "track,label,start_s,end_s,comment\n";
+    for (const Label& l : labels)
+        out += QStringLiteral("%1,%2,%3,%4,%5\n")
+                   .arg(quoteIfNeeded(l.track), quoteIfNeeded(l.label))
+                   .arg(l.start_s, 0, 'f', 6)
+                   .arg(l.end_s, 0, 'f', 6)
+                   .arg(quoteIfNeeded(l.comment))
+                   .toUtf8();
+    file.write(out);
+    if (!file.commit())
+        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+}
+
+QStringList phasePerSample(const Labels& labels, const std::vector<double>& time_s, const QString& track)
+{
+    QStringList out;
+    out.reserve(qsizetype(time_s.size()));
+    for (double t : time_s) {
+        QString name;
+        for (const Label& l : labels) {
+            if (!l.isPoint() && (track.isEmpty() || l.track == track) && l.contains(t)) {
+                name = l.label;
+                break;
+            }
+        }
+        out << name;
+    }
+    return out;
+}
+
+}  // namespace nb

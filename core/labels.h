@@ -1,0 +1,36 @@
+#pragma once
+// Labels on a run's timeline: phase intervals (a, b1, b2, c per direction) and point events
+// (contact, puncture, relaxation, internal puncture), in recording time.
+//
+// File format (a contract): CSV `track,label,start_s,end_s,comment`, one label per row; a
+// point event has start_s == end_s. Comments may be quoted ("...") to hold commas.
+
+#include <QString>
+#include <QStringList>
+#include <vector>
+
+namespace nb {
+
+struct Label {
+    QString track;   // e.g. "insertion", "withdrawal", "events"
+    QString label;   // e.g. "a", "b1", "b2", "c", "contact", "puncture"
+    double start_s = 0.0;
+    double end_s = 0.0;
+    QString comment;
+
+    bool isPoint() const { return start_s == end_s; }
+    bool contains(double t) const { return t >= start_s && t < end_s; }
+    friend bool operator==(const Label&, const Label&) = default;
+};
+
+using Labels = std::vector<Label>;
+
+// Throws RunFileError (core/run_file.h) naming file, line and reason.
+Labels readLabelsFile(const QString& path);
+void writeLabelsFile(const QString& path, const Labels& labels);
+
+// Per-sample phase names for `time_s` (empty where no interval of `track` covers the
+// sample; any track when `track` is empty).
+QStringList phasePerSample(const Labels& labels, const std::vector<double>& time_s, const QString& track = {});
+
+}  // namespace nb
