@@ -17,6 +17,16 @@ const std::vector<Command>& commands()
     return all;
 }
 
+bool needsWidgets(const QStringList& arguments)
+{
+    if (arguments.isEmpty())
+        return false;
+    for (const Command& c : commands())
+        if (c.name == arguments.first())
+            return c.rendersWidgets;
+    return false;
+}
+
 static void printUsage(QTextStream& s)
 {
     s << QCoreApplication::translate("cli",

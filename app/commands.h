@@ -21,7 +21,13 @@ struct Command {
     QString name;
     QString summary;                                     // one line for `needlebench help`
     std::function<int(const QStringList& args, Io io)> run;  // args start after the command word
+    // Renders widgets (plots to PNG/SVG/PDF): gets a QApplication on the offscreen platform
+    // instead of a QCoreApplication, so it still needs no display.
+    bool rendersWidgets = false;
 };
+
+// True when `arguments` (argv[1..]) names a command that renders widgets.
+bool needsWidgets(const QStringList& arguments);
 
 const std::vector<Command>& commands();
 

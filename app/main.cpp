@@ -24,7 +24,18 @@ int main(int argc, char** argv)
     QCoreApplication::setApplicationVersion(QStringLiteral(NEEDLEBENCH_VERSION));
 
     if (isHeadless(argc, argv) || (argc > 1 && (QByteArray(argv[1]) == "--help" || QByteArray(argv[1]) == "-h"))) {
-        QCoreApplication app(argc, argv);
+        QStringList words;
+        for (int i = 1; i < argc; ++i)
+            words << QString::fromLocal8Bit(argv[i]);
+        std::unique_ptr<QCoreApplication> holder;
+        if (nb::cli::needsWidgets(words)) {
+            if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+                qputenv("QT_QPA_PLATFORM", "offscreen");
+            holder = std::make_unique<QApplication>(argc, argv);
+        } else {
+            holder = std::make_unique<QCoreApplication>(argc, argv);
+        }
+        QCoreApplication& app = *holder;
         nb::installTranslation(app);
         QTextStream out(stdout);
         QTextStream err(stderr);
