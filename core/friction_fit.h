@@ -1,0 +1,59 @@
+#pragma once
+// Friction identification (models.md section 5, eqs. 16-26): the modified Karnopp model
+// from sinusoidal runs through a tissue slab, by linear least squares, with the mass either
+// estimated (eq. 19) or known and removed (eq. 21).
+
+#include "models.h"
+#include "run.h"
+
+#include <QString>
+#include <QStringList>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace nb {
+
+struct FrictionOptions {
+    double thickness_mm = 0.0;                  // length of needle in tissue; > 0
+    double band_m_s = 0.005;                    // zero-velocity band (±band/2)
+    double mass_kg = kNeedleHolderMass_kg;      // removed from the force (eq. 21)...
+    bool estimateMass = false;                  // ...or estimated with the friction (eq. 19)
+    double smoothing_s = 0.02;                  // moving-average window
+    int trimSamples = 100;                      // dropped at each end (filter edges)
+};
+
+struct FrictionFit {
+    KarnoppModel model;              // C, b from sliding samples; D from sticking ones
+    KarnoppPerLength perLength;      // divided by the thickness in m
+    std::optional<double> massEstimate_kg;  // eq. 19 only
+    double frequency_hz = 0.0;       // metadata `frequency_hz`, else estimated from position
+    double rms_N = 0.0;              // of the sliding-sample residuals
+    std::size_t positiveSamples = 0, negativeSamples = 0;
+    // Where D came from: "phase a" (labels) or "velocity band" (extreme friction force inside
+    // the band around each turning point, averaged over turning points).
+    QString staticSource;
+};
+
+// `phases`: one phase name per sample ("a", "b1", "b2", "c" or empty), e.g. from a labels
+// file (phasePerSample) or the run's `phase` column; when given, C and b come from phase c
+// and D from phase a. Without phases (empty list and no `phase` column) the velocity band
+// decides. Throws FitError (too few samples, no motion, a direction missing, bad thickness).
+FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QStringList& phases = {});
+
+// Frequency of a sinusoidal position signal from its mean crossings; 0 when fewer than
+// two crossings.
+double estimateFrequency(const Run& run);
+
+// Tables 4/5 layout: mean and sample standard deviation of the per-length values.
+struct FrictionGroup {
+    double frequency_hz = 0.0;       // mean frequency of the group (0 for "overall")
+    std::size_t runs = 0;
+    KarnoppPerLength mean, stdDev;
+    std::optional<double> massEstimateMean_kg, massEstimateStdDev_kg;
+};
+// Runs whose frequencies lie within 5 % of each other form a group; sorted by frequency.
+std::vector<FrictionGroup> groupByFrequency(std::span<const FrictionFit> fits);
+FrictionGroup overall(std::span<const FrictionFit> fits);
+
+}  // namespace nb
