@@ -1,0 +1,242 @@
+#include "zaber_stage.h"
+
+#include "devices/device_error.h"
+
+#include <QCoreApplication>
+#include <QDebug>
+#include <cmath>
+#include <numbers>
+
+namespace nb::devices {
+
+using namespace zaber;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("ZaberStage", text);
+}
+
+double nowSeconds()
+{
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+ZaberStage::ZaberStage(ZaberConfig config) : config_(std::move(config)), port_(std::make_unique<QSerialPort>())
+{
+    port_->setPortName(config_.port);
+    port_->setBaudRate(QSerialPort::Baud115200);
+    port_->setDataBits(QSerialPort::Data8);
+    port_->setParity(QSerialPort::NoParity);
+    port_->setStopBits(QSerialPort::OneStop);
+    port_->setFlowControl(QSerialPort::NoFlowControl);
+    if (!port_->open(QIODevice::ReadWrite))
+        fail(tr("cannot open the serial port: %1").arg(port_->errorString()));
+    port_->clear();
+    const Message version = request("get version");
+    firmware_ = QString::fromLatin1(version.data);
+    const Message pos = request("get pos");
+    lastPos_ = config_.units.mm(pos.data.toDouble());
+}
+
+ZaberStage::~ZaberStage()
+{
+    if (port_->isOpen() && sineActive_) {
+        try {
+            request("stop");
+        } catch (const std::exception&) {
+            // Closing after a fault: nothing more to do.
+        }
+    }
+}
+
+QString ZaberStage::name() const
+{
+    return tr("Zaber stage on %1").arg(config_.port);
+}
+
+void ZaberStage::fail(const QString& reason) const
+{
+    throw DeviceError(name(), reason);
+}
+
+QStringList ZaberStage::takeAlerts()
+{
+    return std::exchange(alerts_, {});
+}
+
+std::optional<Message> ZaberStage::readMessage(Clock::time_point deadline)
+{
+    for (;;) {
+        const qsizetype nl = pending_.indexOf('\n');
+        if (nl >= 0) {
+            const QByteArray line = pending_.left(nl);
+            pending_.remove(0, nl + 1);
+            if (line.trimmed().isEmpty())
+                continue;
+            if (auto m = parse(line))
+                return m;
+            qWarning().noquote() << name() << tr("ignored a garbled line: %1").arg(QString::fromLatin1(line.trimmed()));
+            continue;
+        }
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+        if (left <= 0)
+            return std::nullopt;
+        if (!port_->waitForReadyRead(int(left))) {
+            if (port_->error() != QSerialPort::NoError && port_->error() != QSerialPort::TimeoutError)
+                fail(tr("serial port failed: %1 (cable unplugged?)").arg(port_->errorString()));
+            if (Clock::now() >= deadline)
+                return std::nullopt;
+        }
+        pending_ += port_->readAll();
+    }
+}
+
+void ZaberStage::checkFlags(const Message& m)
+{
+    const QString fault = faultText(m.warning);
+    if (!fault.isEmpty()) {
+        sineActive_ = false;
+        fail(tr("controller fault %1: %2").arg(QString::fromLatin1(m.warning), fault));
+    }
+}
+
+Message ZaberStage::request(const QByteArray& text)
+{
+    if (port_->write(command(config_.device, config_.axis, text)) < 0)
+        fail(tr("writing to the serial port failed: %1").arg(port_->errorString()));
+    const auto deadline = Clock::now() + config_.replyTimeout;
+    // Writes on a serial port complete asynchronously; flush so the command leaves now.
+    port_->flush();
+    for (;;) {
+        const auto m = readMessage(deadline);
+        if (!m)
+            fail(tr("no reply to '%1' within %2 ms (cable unplugged or controller off?)")
+                     .arg(QString::fromLatin1(text))
+                     .arg(config_.replyTimeout.count()));
+        if (m->type == '!') {
+            alerts_ << QString::fromLatin1(format(*m));
+            checkFlags(*m);
+            continue;
+        }
+        if (m->type != '@' || m->device != config_.device || (m->axis != config_.axis && m->axis != 0))
+            continue;
+        if (m->rejected) {
+            if (m->data == "DRIVERDISABLED")
+                enabled_ = false;
+            fail(tr("'%1' rejected: %2").arg(QString::fromLatin1(text), rejectionText(m->data)));
+        }
+        checkFlags(*m);
+        return *m;
+    }
+}
+
+void ZaberStage::enable(bool on)
+{
+    if (!on)
+        sineActive_ = false;
+    request(on ? "driver enable" : "driver disable");
+    enabled_ = on;
+    if (!on)
+        homed_ = false;
+}
+
+void ZaberStage::zero()
+{
+    request("set pos 0");
+    homed_ = true;
+    lastPos_ = 0.0;
+    lastPos_s_ = -1.0;
+}
+
+void ZaberStage::moveLinear(const LinearMotion& motion)
+{
+    if (motion.target_mm < config_.minPosition_mm || motion.target_mm > config_.maxPosition_mm)
+        fail(tr("target %1 mm is outside the travel %2..%3 mm")
+                 .arg(motion.target_mm)
+                 .arg(config_.minPosition_mm)
+                 .arg(config_.maxPosition_mm));
+    const double speed = std::min(std::abs(motion.velocity_mm_s), config_.maxSpeed_mm_s);
+    if (speed <= 0.0)
+        fail(tr("speed must be positive"));
+    sineActive_ = false;
+    request("set maxspeed " + QByteArray::number(qlonglong(config_.units.speedData(speed))));
+    request("move abs " + QByteArray::number(qlonglong(config_.units.steps(motion.target_mm))));
+}
+
+void ZaberStage::moveSine(const SineMotion& motion)
+{
+    const double peakSpeed = 2.0 * std::numbers::pi * motion.frequency_hz * motion.amplitude_mm;
+    if (motion.frequency_hz <= 0.0 || motion.cycles <= 0 || peakSpeed > config_.maxSpeed_mm_s)
+        fail(tr("sine %1 mm at %2 Hz needs %3 mm/s, above the %4 mm/s limit")
+                 .arg(motion.amplitude_mm)
+                 .arg(motion.frequency_hz)
+                 .arg(peakSpeed, 0, 'f', 1)
+                 .arg(config_.maxSpeed_mm_s));
+    const Message pos = request("get pos");
+    sineCentre_ = config_.units.mm(pos.data.toDouble());
+    if (sineCentre_ - motion.amplitude_mm < config_.minPosition_mm || sineCentre_ + motion.amplitude_mm > config_.maxPosition_mm)
+        fail(tr("sine of %1 mm around %2 mm leaves the travel").arg(motion.amplitude_mm).arg(sineCentre_));
+    // Velocity moves accelerate at the controller's own limit; give them headroom.
+    request("set maxspeed " + QByteArray::number(qlonglong(config_.units.speedData(config_.maxSpeed_mm_s))));
+    sine_ = motion;
+    sineStart_s_ = nowSeconds();
+    sineActive_ = true;
+    steerSine(sineStart_s_, sineCentre_);
+}
+
+void ZaberStage::steerSine(double now_s, double position_mm)
+{
+    const double w = 2.0 * std::numbers::pi * sine_.frequency_hz;
+    const double t = now_s - sineStart_s_;
+    if (t >= sine_.cycles / sine_.frequency_hz) {
+        sineActive_ = false;
+        request("set maxspeed " + QByteArray::number(qlonglong(config_.units.speedData(sine_.amplitude_mm * w))));
+        request("move abs " + QByteArray::number(qlonglong(config_.units.steps(sineCentre_))));
+        return;
+    }
+    // Feed-forward velocity plus a proportional correction of the position error, so the
+    // stream of velocity commands does not drift from x(t) = centre + A sin(wt).
+    const double wanted = sineCentre_ + sine_.amplitude_mm * std::sin(w * t);
+    const double v = sine_.amplitude_mm * w * std::cos(w * t) + 5.0 * (wanted - position_mm);
+    const double limited = std::clamp(v, -config_.maxSpeed_mm_s, config_.maxSpeed_mm_s);
+    request("move vel " + QByteArray::number(qlonglong(config_.units.speedData(limited))));
+}
+
+void ZaberStage::stop()
+{
+    sineActive_ = false;
+    request("stop");
+}
+
+void ZaberStage::emergencyStop()
+{
+    sineActive_ = false;
+    request("estop");
+}
+
+StageState ZaberStage::state()
+{
+    const Message m = request("get pos");
+    const double now = nowSeconds();
+    bool ok = false;
+    const double steps = m.data.toDouble(&ok);
+    if (!ok)
+        fail(tr("position reply is not a number: '%1'").arg(QString::fromLatin1(m.data)));
+    const double pos = config_.units.mm(steps);
+    if (lastPos_s_ >= 0 && now > lastPos_s_)
+        velocity_ = (pos - lastPos_) / (now - lastPos_s_);
+    lastPos_ = pos;
+    lastPos_s_ = now;
+    if (!m.busy)
+        velocity_ = 0.0;
+    if (sineActive_)
+        steerSine(now, pos);
+    return {pos, velocity_, enabled_, m.busy || sineActive_, homed_};
+}
+
+}  // namespace nb::devices
