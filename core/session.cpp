@@ -1,0 +1,365 @@
+#include "session.h"
+
+#include "core/run_file.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QSaveFile>
+#include <algorithm>
+
+namespace nb {
+
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("nb::Session", text); }
+
+const QString kSessionFile = QStringLiteral("session.json");
+const QString kCalibrationDir = QStringLiteral("calibrations");
+
+void writeJson(const QString& path, const QJsonObject& object)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw SessionError(path, file.errorString());
+    file.write(QJsonDocument(object).toJson(QJsonDocument::Indented));
+    if (!file.commit())
+        throw SessionError(path, file.errorString());
+}
+
+QJsonObject readJson(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw SessionError(path, file.errorString());
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    if (error.error != QJsonParseError::NoError)
+        throw SessionError(path, tr("not valid JSON at byte %1: %2").arg(error.offset).arg(error.errorString()));
+    if (!doc.isObject())
+        throw SessionError(path, tr("expected a JSON object"));
+    return doc.object();
+}
+
+QJsonArray pointsJson(const std::vector<CalibrationPoint>& points)
+{
+    QJsonArray a;
+    for (const CalibrationPoint& p : points)
+        a.append(QJsonObject{{QStringLiteral("mass_g"), p.mass_g}, {QStringLiteral("voltage_V"), p.voltage_V}});
+    return a;
+}
+
+std::vector<CalibrationPoint> pointsFromJson(const QJsonArray& a)
+{
+    std::vector<CalibrationPoint> points;
+    for (const QJsonValue& v : a)
+        points.push_back({v[QStringLiteral("mass_g")].toDouble(), v[QStringLiteral("voltage_V")].toDouble()});
+    return points;
+}
+
+// `# key: value` lines, as in the run file format.
+std::optional<std::pair<QString, QString>> metaLine(const QByteArray& raw)
+{
+    const QString line = QString::fromUtf8(raw).trimmed();
+    if (!line.startsWith(QLatin1Char('#')))
+        return std::nullopt;
+    const QString body = line.mid(1).trimmed();
+    const int colon = body.indexOf(QLatin1Char(':'));
+    if (colon <= 0)
+        return std::nullopt;
+    return std::make_pair(body.left(colon).trimmed(), body.mid(colon + 1).trimmed());
+}
+
+const QRegularExpression& runNamePattern()
+{
+    static const QRegularExpression re(QStringLiteral(R"(^run_(\d+)(_[A-Za-z0-9-]+)?\.csv$)"));
+    return re;
+}
+
+}  // namespace
+
+SessionError::SessionError(QString file, QString reason)
+    : std::runtime_error(QStringLiteral("%1: %2").arg(file, reason).toStdString()), file_(std::move(file)),
+      reason_(std::move(reason))
+{
+}
+
+QString SessionError::message() const { return QStringLiteral("%1: %2").arg(file_, reason_); }
+
+RunState runStateForEndReason(const QString& r)
+{
+    if (r.isEmpty())
+        return RunState::Interrupted;
+    if (r == QLatin1String("completed"))
+        return RunState::Complete;
+    if (r == QLatin1String("force_limit"))
+        return RunState::StoppedByLimit;
+    if (r == QLatin1String("fault"))
+        return RunState::Fault;
+    if (r == QLatin1String("recovered"))
+        return RunState::Recovered;
+    return RunState::Stopped;  // stopped, aborted, emergency_stop, ...
+}
+
+QString runStateName(RunState state)
+{
+    switch (state) {
+    case RunState::Interrupted: return tr("interrupted");
+    case RunState::Complete: return tr("complete");
+    case RunState::Stopped: return tr("stopped");
+    case RunState::StoppedByLimit: return tr("stopped by force limit");
+    case RunState::Fault: return tr("fault");
+    case RunState::Recovered: return tr("recovered");
+    case RunState::Unreadable: return tr("unreadable");
+    }
+    return {};
+}
+
+RunEntry inspectRun(const QString& path)
+{
+    RunEntry e;
+    const QFileInfo fi(path);
+    e.path = path;
+    e.fileName = fi.fileName();
+    e.modified = fi.lastModified();
+    const auto m = runNamePattern().match(e.fileName);
+    if (m.hasMatch())
+        e.number = m.captured(1).toInt();
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        e.state = RunState::Unreadable;
+        e.detail = file.errorString();
+        return e;
+    }
+    // Head: metadata lines up to the header row.
+    bool sawHeader = false;
+    for (int i = 0; i < 200 && !file.atEnd(); ++i) {
+        const QByteArray line = file.readLine();
+        const auto kv = metaLine(line);
+        if (!kv) {
+            sawHeader = !line.trimmed().isEmpty();
+            break;
+        }
+        if (kv->first == QLatin1String("motion"))
+            e.motion = kv->second;
+        else if (kv->first == QLatin1String("calibration"))
+            e.calibration = kv->second;
+    }
+    if (!sawHeader) {
+        e.state = RunState::Unreadable;
+        e.detail = tr("no header row");
+        return e;
+    }
+    // Tail: the footer is the run of `# key: value` lines at the very end.
+    const qint64 tail = std::min<qint64>(file.size(), 8192);
+    file.seek(file.size() - tail);
+    QList<QByteArray> lines = file.read(tail).split('\n');
+    while (!lines.isEmpty() && lines.last().trimmed().isEmpty())
+        lines.removeLast();
+    for (auto it = lines.crbegin(); it != lines.crend(); ++it) {
+        const auto kv = metaLine(*it);
+        if (!kv)
+            break;
+        if (kv->first == QLatin1String("end_reason") && e.endReason.isEmpty())
+            e.endReason = kv->second;
+        if (kv->first == QLatin1String("calibration") && e.calibration.isEmpty())
+            e.calibration = kv->second;
+    }
+    e.state = runStateForEndReason(e.endReason);
+    return e;
+}
+
+QStringList recoverRunFile(const QString& path)
+{
+    RunReadOptions options;
+    options.dropTruncatedLastRow = true;
+    RunReadResult result = readRunFile(path, options);
+    const QString original = result.run.footer.value(QStringLiteral("end_reason"), QString());
+    result.run.footer.set(QStringLiteral("end_reason"), QStringLiteral("recovered"));
+    result.run.footer.set(QStringLiteral("recovered_at"), QDateTime::currentDateTime().toString(Qt::ISODate));
+    result.run.footer.set(QStringLiteral("recovered_rows"), QString::number(result.run.size()));
+    writeRunFile(path, result.run);
+    return result.warnings;
+}
+
+Session Session::create(const QString& dir, const SessionInfo& info)
+{
+    QDir d(dir);
+    if (!d.exists() && !QDir().mkpath(dir))
+        throw SessionError(dir, tr("cannot create the folder"));
+    if (QFileInfo::exists(d.filePath(kSessionFile)))
+        throw SessionError(d.filePath(kSessionFile), tr("a session already exists here; open it instead"));
+    if (!d.mkpath(kCalibrationDir))
+        throw SessionError(d.filePath(kCalibrationDir), tr("cannot create the folder"));
+    Session s;
+    s.dir_ = d.absolutePath();
+    s.info_ = info;
+    if (!s.info_.created.isValid())
+        s.info_.created = QDateTime::currentDateTime();
+    s.save();
+    return s;
+}
+
+bool Session::isSession(const QString& dir) { return QFileInfo::exists(QDir(dir).filePath(kSessionFile)); }
+
+Session Session::open(const QString& dir)
+{
+    const QString path = QDir(dir).filePath(kSessionFile);
+    if (!QFileInfo::exists(path))
+        throw SessionError(dir, tr("not a session folder (no %1)").arg(kSessionFile));
+    const QJsonObject o = readJson(path);
+    Session s;
+    s.dir_ = QDir(dir).absolutePath();
+    s.info_.organ = o[QStringLiteral("organ")].toString();
+    s.info_.specimen = o[QStringLiteral("specimen")].toString();
+    s.info_.tip = o[QStringLiteral("tip")].toString();
+    s.info_.thickness_mm = o[QStringLiteral("thickness_mm")].toDouble();
+    s.info_.operatorName = o[QStringLiteral("operator")].toString();
+    s.info_.protocol = o[QStringLiteral("protocol")].toString();
+    s.info_.notes = o[QStringLiteral("notes")].toString();
+    s.info_.created = QDateTime::fromString(o[QStringLiteral("created")].toString(), Qt::ISODate);
+    s.activeCalibration_ = o[QStringLiteral("active_calibration")].toString();
+    return s;
+}
+
+void Session::save() const
+{
+    writeJson(QDir(dir_).filePath(kSessionFile),
+              QJsonObject{{QStringLiteral("organ"), info_.organ},
+                          {QStringLiteral("specimen"), info_.specimen},
+                          {QStringLiteral("tip"), info_.tip},
+                          {QStringLiteral("thickness_mm"), info_.thickness_mm},
+                          {QStringLiteral("operator"), info_.operatorName},
+                          {QStringLiteral("protocol"), info_.protocol},
+                          {QStringLiteral("notes"), info_.notes},
+                          {QStringLiteral("created"), info_.created.toString(Qt::ISODate)},
+                          {QStringLiteral("active_calibration"), activeCalibration_}});
+}
+
+void Session::setInfo(const SessionInfo& info)
+{
+    info_ = info;
+    save();
+}
+
+QString Session::nextRunPath(const QString& motion) const
+{
+    int highest = 0;
+    for (const QString& name : QDir(dir_).entryList({QStringLiteral("run_*.csv")}, QDir::Files)) {
+        const auto m = runNamePattern().match(name);
+        if (m.hasMatch())
+            highest = std::max(highest, m.captured(1).toInt());
+    }
+    QString suffix = motion;
+    suffix.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9-]")), QStringLiteral("-"));
+    const QString name = QStringLiteral("run_%1%2.csv")
+                             .arg(highest + 1, 3, 10, QLatin1Char('0'))
+                             .arg(suffix.isEmpty() ? QString() : QLatin1Char('_') + suffix);
+    return QDir(dir_).filePath(name);
+}
+
+std::vector<RunEntry> Session::runs() const
+{
+    std::vector<RunEntry> out;
+    for (const QString& name : QDir(dir_).entryList({QStringLiteral("run_*.csv")}, QDir::Files)) {
+        if (runNamePattern().match(name).hasMatch())
+            out.push_back(inspectRun(QDir(dir_).filePath(name)));
+    }
+    std::sort(out.begin(), out.end(), [](const RunEntry& a, const RunEntry& b) { return a.number < b.number; });
+    return out;
+}
+
+QStringList Session::recoverInterrupted(const QString& busyPath, QStringList* problems)
+{
+    QStringList recovered;
+    for (const RunEntry& e : runs()) {
+        if (e.state != RunState::Interrupted || QFileInfo(e.path) == QFileInfo(busyPath))
+            continue;
+        try {
+            const QStringList warnings = recoverRunFile(e.path);
+            recovered << (warnings.isEmpty() ? e.fileName : QStringLiteral("%1 (%2)").arg(e.fileName, warnings.join(QStringLiteral("; "))));
+        } catch (const RunFileError& error) {
+            if (problems)
+                *problems << error.message();
+        }
+    }
+    return recovered;
+}
+
+QString Session::saveCalibration(StoredCalibration c)
+{
+    if (!c.date.isValid())
+        c.date = QDateTime::currentDateTime();
+    if (c.name.isEmpty())
+        c.name = QStringLiteral("cal_") + c.date.toString(QStringLiteral("yyyyMMdd_HHmmss"));
+    QDir d(dir_);
+    d.mkpath(kCalibrationDir);
+    QJsonArray residuals;
+    for (double r : c.fit.residuals_V)
+        residuals.append(r);
+    writeJson(d.filePath(kCalibrationDir + QLatin1Char('/') + c.name + QStringLiteral(".json")),
+              QJsonObject{{QStringLiteral("name"), c.name},
+                          {QStringLiteral("date"), c.date.toString(Qt::ISODate)},
+                          {QStringLiteral("sensor"), c.sensor},
+                          {QStringLiteral("nominal"), c.nominal},
+                          {QStringLiteral("slope_V_per_g"), c.fit.slope_V_per_g},
+                          {QStringLiteral("intercept_V"), c.fit.intercept_V},
+                          {QStringLiteral("r2"), c.fit.r2},
+                          {QStringLiteral("rms_V"), c.fit.rms_V},
+                          {QStringLiteral("residuals_V"), residuals},
+                          {QStringLiteral("points"), pointsJson(c.points)},
+                          {QStringLiteral("removed_points"), pointsJson(c.removed)}});
+    activeCalibration_ = c.name;
+    save();
+    return c.name;
+}
+
+std::vector<StoredCalibration> Session::calibrations() const
+{
+    std::vector<StoredCalibration> out;
+    const QDir d(QDir(dir_).filePath(kCalibrationDir));
+    for (const QString& name : d.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        try {
+            const QJsonObject o = readJson(d.filePath(name));
+            StoredCalibration c;
+            c.name = o[QStringLiteral("name")].toString(QFileInfo(name).completeBaseName());
+            c.date = QDateTime::fromString(o[QStringLiteral("date")].toString(), Qt::ISODate);
+            c.sensor = o[QStringLiteral("sensor")].toString();
+            c.nominal = o[QStringLiteral("nominal")].toBool();
+            c.fit.slope_V_per_g = o[QStringLiteral("slope_V_per_g")].toDouble();
+            c.fit.intercept_V = o[QStringLiteral("intercept_V")].toDouble();
+            c.fit.r2 = o[QStringLiteral("r2")].toDouble();
+            c.fit.rms_V = o[QStringLiteral("rms_V")].toDouble();
+            for (const QJsonValue& v : o[QStringLiteral("residuals_V")].toArray())
+                c.fit.residuals_V.push_back(v.toDouble());
+            c.points = pointsFromJson(o[QStringLiteral("points")].toArray());
+            c.removed = pointsFromJson(o[QStringLiteral("removed_points")].toArray());
+            if (c.fit.slope_V_per_g > 0.0)
+                out.push_back(std::move(c));
+        } catch (const SessionError&) {
+            // An unreadable calibration is simply not offered.
+        }
+    }
+    return out;
+}
+
+std::optional<StoredCalibration> Session::activeCalibration() const
+{
+    for (StoredCalibration& c : calibrations())
+        if (c.name == activeCalibration_)
+            return std::move(c);
+    return std::nullopt;
+}
+
+void Session::setActiveCalibration(const QString& name)
+{
+    activeCalibration_ = name;
+    save();
+}
+
+}  // namespace nb

@@ -1,0 +1,123 @@
+#pragma once
+// A lab session is a folder: the specimen and protocol (session.json), the sensor
+// calibrations made for it (calibrations/*.json, one of them active), and its runs
+// (run_001_linear.csv, ...), each a run file whose footer says how it ended.
+//
+//   liver3_2026-11-21/
+//     session.json
+//     calibrations/cal_20261121_093000.json
+//     run_001_linear.csv
+//     run_002_sine.csv
+//
+// A run without a footer was cut off by a crash; recoverInterrupted() finds it at the next
+// start, drops a partial last row and closes it with `end_reason: recovered`.
+
+#include "core/calibration.h"
+
+#include <QDateTime>
+#include <QString>
+#include <QStringList>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace nb {
+
+// A session folder that cannot be created, read or written: names the file and the reason.
+class SessionError : public std::runtime_error {
+public:
+    SessionError(QString file, QString reason);
+    const QString& file() const { return file_; }
+    const QString& reason() const { return reason_; }
+    QString message() const;
+
+private:
+    QString file_;
+    QString reason_;
+};
+
+struct SessionInfo {
+    QString organ;
+    QString specimen;     // specimen number
+    QString tip;          // beveled, blunt, diamond
+    double thickness_mm = 0.0;
+    QString operatorName;
+    QString protocol;     // overall stiffness, friction, ...
+    QString notes;
+    QDateTime created;
+};
+
+struct StoredCalibration {
+    QString name;         // file base name, e.g. cal_20261121_093000
+    QDateTime date;
+    QString sensor;       // which load cell / DAQ it was made with
+    std::vector<CalibrationPoint> points;  // the points used in the fit
+    std::vector<CalibrationPoint> removed; // points the operator struck out (kept for the record)
+    CalibrationFit fit;
+    bool nominal = false; // the sensor chain's nominal slope, not measured
+};
+
+enum class RunState {
+    Interrupted,     // no footer: cut off by a crash (or still recording)
+    Complete,
+    Stopped,         // ended by the operator before the motion finished
+    StoppedByLimit,  // the force limit stopped it
+    Fault,           // a device fault ended it
+    Recovered,       // was interrupted, recovered at a later start
+    Unreadable,
+};
+
+struct RunEntry {
+    QString path;
+    QString fileName;
+    int number = 0;
+    QString motion;       // from metadata (motion: linear | sine), may be empty
+    RunState state = RunState::Interrupted;
+    QString endReason;    // raw footer value
+    QString calibration;  // calibration named in the run
+    QString detail;       // e.g. why unreadable
+    QDateTime modified;
+};
+
+RunState runStateForEndReason(const QString& endReason);
+// Operator-facing name of a state (translated).
+QString runStateName(RunState state);
+// Reads only the head and tail of a run file: cheap for long recordings.
+RunEntry inspectRun(const QString& path);
+// Closes an interrupted run file in place: drops a partial last row, appends
+// `end_reason: recovered`. Returns warnings. Throws RunFileError.
+QStringList recoverRunFile(const QString& path);
+
+class Session {
+public:
+    // Creates the folder (or adopts an empty one) and writes session.json. Throws SessionError.
+    static Session create(const QString& dir, const SessionInfo& info);
+    // Throws SessionError when dir has no readable session.json.
+    static Session open(const QString& dir);
+    static bool isSession(const QString& dir);
+
+    const QString& dir() const { return dir_; }
+    const SessionInfo& info() const { return info_; }
+    void setInfo(const SessionInfo& info);  // saves
+
+    // The next free run file name, numbered after the highest existing one.
+    QString nextRunPath(const QString& motion) const;
+    std::vector<RunEntry> runs() const;
+    // Recovers every interrupted run except `busyPath` (a run this process is recording).
+    // Returns one line per recovered file; problems go to *problems.
+    QStringList recoverInterrupted(const QString& busyPath = {}, QStringList* problems = nullptr);
+
+    // Saves it under calibrations/ (naming it by its date if unnamed) and makes it active.
+    QString saveCalibration(StoredCalibration calibration);
+    std::vector<StoredCalibration> calibrations() const;
+    std::optional<StoredCalibration> activeCalibration() const;
+    void setActiveCalibration(const QString& name);
+
+private:
+    void save() const;
+    QString dir_;
+    SessionInfo info_;
+    QString activeCalibration_;
+};
+
+}  // namespace nb

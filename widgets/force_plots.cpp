@@ -1,0 +1,342 @@
+#include "force_plots.h"
+
+#include "core/decimate.h"
+
+#include <QHBoxLayout>
+#include <QSplitter>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <qcustomplot.h>
+
+namespace nb {
+
+namespace {
+
+QCustomPlot* makePlot(QWidget* parent, const QString& xLabel, const QString& yLabel)
+{
+    auto* plot = new QCustomPlot(parent);
+    plot->xAxis->setLabel(xLabel);
+    plot->yAxis->setLabel(yLabel);
+    plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    plot->setNoAntialiasingOnDrag(true);
+    plot->setMinimumSize(240, 150);
+    return plot;
+}
+
+QCPItemStraightLine* makeLimitLine(QCustomPlot* plot)
+{
+    auto* line = new QCPItemStraightLine(plot);
+    QPen pen(QColor(200, 30, 30), 1.5, Qt::DashLine);
+    line->setPen(pen);
+    line->setVisible(false);
+    return line;
+}
+
+// Data range with a little air, so a flat signal still gets a visible axis.
+QCPRange padded(double lo, double hi)
+{
+    double span = hi - lo;
+    if (span < 1e-9)
+        span = std::max(1e-3, std::abs(hi) * 0.1);
+    return {lo - 0.05 * span, hi + 0.05 * span};
+}
+
+}  // namespace
+
+ForcePlots::ForcePlots(QWidget* parent) : QWidget(parent)
+{
+    forceTime_ = makePlot(this, tr("time [s]"), tr("force [N]"));
+    positionTime_ = makePlot(this, tr("time [s]"), tr("position [mm]"));
+    forcePosition_ = makePlot(this, tr("position [mm]"), tr("force [N]"));
+    forceTime_->setObjectName(QStringLiteral("forceTimePlot"));
+    positionTime_->setObjectName(QStringLiteral("positionTimePlot"));
+    forcePosition_->setObjectName(QStringLiteral("forcePositionPlot"));
+
+    forceGraph_ = forceTime_->addGraph();
+    forceGraph_->setPen(QPen(QColor(20, 90, 180), 1.2));
+    forceGraph_->setAdaptiveSampling(false);  // reduced here already
+    forceGraph_->setName(tr("force"));
+    positionGraph_ = positionTime_->addGraph();
+    positionGraph_->setPen(QPen(QColor(30, 140, 60), 1.2));
+    positionGraph_->setAdaptiveSampling(false);
+    positionGraph_->setName(tr("position"));
+    curve_ = new QCPCurve(forcePosition_->xAxis, forcePosition_->yAxis);
+    curve_->setPen(QPen(QColor(120, 40, 160), 1.2));
+    curve_->setName(tr("force vs position"));
+
+    limitTime_ = makeLimitLine(forceTime_);
+    limitCurve_ = makeLimitLine(forcePosition_);
+
+    // The two time plots share their time axis.
+    connect(forceTime_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), positionTime_->xAxis,
+            qOverload<const QCPRange&>(&QCPAxis::setRange));
+    connect(positionTime_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), forceTime_->xAxis,
+            qOverload<const QCPRange&>(&QCPAxis::setRange));
+    connect(forceTime_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] {
+        if (!settingRanges_)
+            positionTime_->replot(QCustomPlot::rpQueuedReplot);
+    });
+    // Each plot reduces the samples for its own visible range right before it draws, so
+    // zooming in brings back detail even while paused.
+    for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_}) {
+        connect(plot, &QCustomPlot::beforeReplot, this, &ForcePlots::updateData);
+        connect(plot, &QCustomPlot::mousePress, this, &ForcePlots::userMovedView);
+        connect(plot, &QCustomPlot::mouseWheel, this, &ForcePlots::userMovedView);
+    }
+
+    followButton_ = new QToolButton(this);
+    followButton_->setText(tr("Follow"));
+    followButton_->setCheckable(true);
+    followButton_->setChecked(true);
+    followButton_->setToolTip(tr("Keep the newest samples in view (zooming or dragging a plot turns this off)"));
+    connect(followButton_, &QToolButton::toggled, this, &ForcePlots::setFollow);
+    pauseButton_ = new QToolButton(this);
+    pauseButton_->setText(tr("Pause display"));
+    pauseButton_->setCheckable(true);
+    pauseButton_->setToolTip(tr("Freeze the plots to look closely; recording goes on and nothing is lost"));
+    connect(pauseButton_, &QToolButton::toggled, this, &ForcePlots::setPaused);
+    auto* all = new QToolButton(this);
+    all->setText(tr("Show whole run"));
+    all->setToolTip(tr("Zoom out to every sample of the run"));
+    connect(all, &QToolButton::clicked, this, &ForcePlots::showAll);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(followButton_);
+    buttons->addWidget(pauseButton_);
+    buttons->addWidget(all);
+    buttons->addStretch();
+
+    auto* timeColumn = new QSplitter(Qt::Vertical, this);
+    timeColumn->addWidget(forceTime_);
+    timeColumn->addWidget(positionTime_);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(timeColumn);
+    split->addWidget(forcePosition_);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(buttons);
+    layout->addWidget(split, 1);
+}
+
+void ForcePlots::appendSamples(std::span<const double> time_s, std::span<const double> position_mm,
+                               std::span<const double> force_N)
+{
+    const std::size_t n = std::min({time_s.size(), position_mm.size(), force_N.size()});
+    t_.insert(t_.end(), time_s.begin(), time_s.begin() + n);
+    x_.insert(x_.end(), position_mm.begin(), position_mm.begin() + n);
+    f_.insert(f_.end(), force_N.begin(), force_N.begin() + n);
+    if (!paused_)
+        dirty_ = true;
+}
+
+void ForcePlots::append(double time_s, double position_mm, double force_N)
+{
+    appendSamples({&time_s, 1}, {&position_mm, 1}, {&force_N, 1});
+}
+
+void ForcePlots::clear()
+{
+    t_.clear();
+    x_.clear();
+    f_.clear();
+    shown_ = 0;
+    fMin_ = fMax_ = xMin_ = xMax_ = 0.0;
+    for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_}) {
+        for (int i = plot->itemCount() - 1; i >= 0; --i) {
+            QCPAbstractItem* item = plot->item(i);
+            if (item != limitTime_ && item != limitCurve_)
+                plot->removeItem(item);
+        }
+    }
+    events_.clear();
+    dirty_ = true;
+    setFollow(true);
+    refresh();
+}
+
+void ForcePlots::setForceLimit(double force_N)
+{
+    limit_N_ = force_N;
+    const bool on = force_N > 0.0;
+    limitTime_->setVisible(on);
+    limitCurve_->setVisible(on);
+    for (QCPItemStraightLine* line : {limitTime_, limitCurve_}) {
+        line->point1->setCoords(0.0, force_N);
+        line->point2->setCoords(1.0, force_N);
+    }
+    dirty_ = true;
+}
+
+void ForcePlots::addEvent(double time_s, const QString& label)
+{
+    events_.push_back({time_s, label});
+    for (QCustomPlot* plot : {forceTime_, positionTime_}) {
+        auto* line = new QCPItemStraightLine(plot);
+        line->setPen(QPen(QColor(230, 140, 0), 1.0, Qt::DotLine));
+        line->point1->setCoords(time_s, 0.0);
+        line->point2->setCoords(time_s, 1.0);
+        auto* text = new QCPItemText(plot);
+        text->position->setTypeX(QCPItemPosition::ptPlotCoords);
+        text->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        text->position->setCoords(time_s, 0.02);
+        text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+        text->setText(label);
+        text->setColor(QColor(180, 100, 0));
+    }
+    // On the force-position plot the event sits on the curve at its sample.
+    const auto it = std::lower_bound(t_.begin(), t_.end(), time_s);
+    if (it != t_.end()) {
+        const std::size_t i = std::size_t(it - t_.begin());
+        auto* mark = new QCPItemTracer(forcePosition_);
+        mark->position->setCoords(x_[i], f_[i]);
+        mark->setStyle(QCPItemTracer::tsCircle);
+        mark->setSize(8);
+        mark->setPen(QPen(QColor(230, 140, 0), 2));
+        auto* text = new QCPItemText(forcePosition_);
+        text->position->setCoords(x_[i], f_[i]);
+        text->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
+        text->setText(label);
+        text->setColor(QColor(180, 100, 0));
+    }
+    dirty_ = true;
+}
+
+void ForcePlots::setFollow(bool on)
+{
+    if (follow_ == on)
+        return;
+    follow_ = on;
+    followButton_->setChecked(on);
+    dirty_ = true;
+    emit followChanged(on);
+}
+
+void ForcePlots::setFollowWindow(double seconds)
+{
+    window_s_ = std::max(0.1, seconds);
+    dirty_ = true;
+}
+
+void ForcePlots::setPaused(bool on)
+{
+    if (paused_ == on)
+        return;
+    paused_ = on;
+    pauseButton_->setChecked(on);
+    dirty_ = true;
+    emit pausedChanged(on);
+}
+
+void ForcePlots::showAll()
+{
+    setFollow(false);
+    if (shown_ == 0)
+        return;
+    settingRanges_ = true;
+    forceTime_->xAxis->setRange(padded(t_.front(), t_[shown_ - 1]));
+    forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), std::max(fMax_, limit_N_)));
+    positionTime_->yAxis->setRange(padded(xMin_, xMax_));
+    forcePosition_->xAxis->setRange(padded(xMin_, xMax_));
+    forcePosition_->yAxis->setRange(padded(std::min(fMin_, 0.0), std::max(fMax_, limit_N_)));
+    settingRanges_ = false;
+    for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_})
+        plot->replot();
+}
+
+void ForcePlots::userMovedView()
+{
+    setFollow(false);
+}
+
+void ForcePlots::refresh()
+{
+    if (!dirty_)
+        return;
+    dirty_ = false;
+    if (!paused_) {
+        for (std::size_t i = shown_; i < t_.size(); ++i) {
+            if (i == 0) {
+                fMin_ = fMax_ = f_[0];
+                xMin_ = xMax_ = x_[0];
+            }
+            fMin_ = std::min(fMin_, f_[i]);
+            fMax_ = std::max(fMax_, f_[i]);
+            xMin_ = std::min(xMin_, x_[i]);
+            xMax_ = std::max(xMax_, x_[i]);
+        }
+        shown_ = t_.size();
+    }
+    if (follow_ && !paused_)
+        applyFollowRanges();
+    for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_})
+        plot->replot();
+    ++frames_;
+}
+
+void ForcePlots::applyFollowRanges()
+{
+    settingRanges_ = true;
+    const double tEnd = shown_ ? t_[shown_ - 1] : 0.0;
+    const double tStart = std::max(shown_ ? t_.front() : 0.0, tEnd - window_s_);
+    forceTime_->xAxis->setRange(tStart, std::max(tEnd, tStart + window_s_));
+    // The limit stays in view so the margin to it can be seen.
+    const double top = std::max(fMax_, limit_N_ > 0.0 ? limit_N_ : fMax_);
+    forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), top));
+    positionTime_->yAxis->setRange(padded(std::min(xMin_, 0.0), xMax_));
+    forcePosition_->xAxis->setRange(padded(std::min(xMin_, 0.0), xMax_));
+    forcePosition_->yAxis->setRange(padded(std::min(fMin_, 0.0), top));
+    settingRanges_ = false;
+}
+
+void ForcePlots::updateData()
+{
+    auto* plot = qobject_cast<QCustomPlot*>(sender());
+    const std::span<const double> t(t_.data(), shown_), x(x_.data(), shown_), f(f_.data(), shown_);
+    std::vector<double> keys, values, values2;
+    auto fill = [&](const std::vector<std::size_t>& idx, std::span<const double> a, std::span<const double> b) {
+        gather(a, idx, keys);
+        gather(b, idx, values);
+    };
+    std::vector<std::size_t> idx;
+    if (plot == forceTime_ || plot == positionTime_) {
+        const bool force = plot == forceTime_;
+        const std::span<const double> ch = force ? f : x;
+        const QCPRange r = plot->xAxis->range();
+        if (reduce_) {
+            const std::span<const double> channels[] = {ch};
+            idx = minMaxIndices(t, channels, r.lower, r.upper, std::max(1, plot->axisRect()->width()));
+        } else {
+            idx.resize(shown_);
+            for (std::size_t i = 0; i < shown_; ++i)
+                idx[i] = i;
+        }
+        fill(idx, t, ch);
+        (force ? forceGraph_ : positionGraph_)->setData(QVector<double>(keys.begin(), keys.end()),
+                                                         QVector<double>(values.begin(), values.end()), true);
+        if (force) {
+            drawnForceTime_ = idx.size();
+            limitTime_->point1->setCoords(r.lower, limit_N_);
+            limitTime_->point2->setCoords(r.upper, limit_N_);
+        }
+    } else if (plot == forcePosition_) {
+        if (reduce_ && shown_ > 0) {
+            const std::span<const double> channels[] = {x, f};
+            idx = minMaxIndices(t, channels, t.front(), t.back(), std::max(1, plot->axisRect()->width()));
+        } else {
+            idx.resize(shown_);
+            for (std::size_t i = 0; i < shown_; ++i)
+                idx[i] = i;
+        }
+        gather(t, idx, values2);
+        fill(idx, x, f);
+        curve_->setData(QVector<double>(values2.begin(), values2.end()), QVector<double>(keys.begin(), keys.end()),
+                        QVector<double>(values.begin(), values.end()), true);
+        drawnForcePosition_ = idx.size();
+    }
+}
+
+}  // namespace nb

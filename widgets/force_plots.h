@@ -1,0 +1,105 @@
+#pragma once
+// The live plots of a run: force vs time, position vs time (sharing the time axis) and
+// force vs position (thesis Fig. 20). Samples are appended as they are drained from the
+// engine; each redraw reduces what is visible to min/max per pixel column, so a 10 kHz
+// recording costs the same to draw as a slow one.
+
+#include <QString>
+#include <QWidget>
+#include <span>
+#include <vector>
+
+class QCustomPlot;
+class QCPGraph;
+class QCPCurve;
+class QCPItemStraightLine;
+class QToolButton;
+class QLabel;
+
+namespace nb {
+
+class ForcePlots : public QWidget {
+    Q_OBJECT
+public:
+    explicit ForcePlots(QWidget* parent = nullptr);
+
+    void appendSamples(std::span<const double> time_s, std::span<const double> position_mm,
+                       std::span<const double> force_N);
+    void append(double time_s, double position_mm, double force_N);
+    // Forgets every sample and event (a new run).
+    void clear();
+    // Draws the maximum-force limit as a line on both force plots; <= 0 hides it.
+    void setForceLimit(double force_N);
+    // Marks a detected event (puncture, contact, ...) at a time.
+    void addEvent(double time_s, const QString& label);
+
+    // Follow: the time axis shows the last followWindow() seconds and the axes track the
+    // data. Zooming or dragging a plot turns following off.
+    bool follows() const { return follow_; }
+    void setFollow(bool on);
+    double followWindow() const { return window_s_; }
+    void setFollowWindow(double seconds);
+    // Paused: the plots keep showing what they showed; samples keep arriving and appear
+    // when resumed (nothing is lost).
+    bool isPaused() const { return paused_; }
+    void setPaused(bool on);
+    // Shows the whole run (and stops following).
+    void showAll();
+
+    // Off only to measure what the reduction saves (bench/bench_plot.cpp).
+    void setReduction(bool on) { reduce_ = on; }
+
+    // Redraws if anything changed since the last call; called by the drain timer.
+    void refresh();
+
+    std::size_t sampleCount() const { return t_.size(); }
+    // Points handed to the plots at the last redraw (after reduction), per plot.
+    std::size_t pointsDrawnForceTime() const { return drawnForceTime_; }
+    std::size_t pointsDrawnForcePosition() const { return drawnForcePosition_; }
+    int framesDrawn() const { return frames_; }
+    int eventCount() const { return int(events_.size()); }
+
+    QCustomPlot* forceTimePlot() const { return forceTime_; }
+    QCustomPlot* positionTimePlot() const { return positionTime_; }
+    QCustomPlot* forcePositionPlot() const { return forcePosition_; }
+
+signals:
+    void followChanged(bool on);
+    void pausedChanged(bool on);
+
+private:
+    void updateData();
+    void applyFollowRanges();
+    void userMovedView();
+
+    QCustomPlot* forceTime_ = nullptr;
+    QCustomPlot* positionTime_ = nullptr;
+    QCustomPlot* forcePosition_ = nullptr;
+    QCPGraph* forceGraph_ = nullptr;
+    QCPGraph* positionGraph_ = nullptr;
+    QCPCurve* curve_ = nullptr;
+    QCPItemStraightLine* limitTime_ = nullptr;
+    QCPItemStraightLine* limitCurve_ = nullptr;
+    QToolButton* followButton_ = nullptr;
+    QToolButton* pauseButton_ = nullptr;
+
+    std::vector<double> t_, x_, f_;
+    std::size_t shown_ = 0;  // samples the plots show (frozen while paused)
+    double fMin_ = 0.0, fMax_ = 0.0, xMin_ = 0.0, xMax_ = 0.0;
+    struct Event {
+        double time_s;
+        QString label;
+    };
+    std::vector<Event> events_;
+    double limit_N_ = 0.0;
+    double window_s_ = 10.0;
+    bool follow_ = true;
+    bool paused_ = false;
+    bool reduce_ = true;
+    bool dirty_ = true;
+    bool settingRanges_ = false;
+    std::size_t drawnForceTime_ = 0, drawnForcePosition_ = 0;
+    int frames_ = 0;
+};
+
+}  // namespace nb
