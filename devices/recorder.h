@@ -1,0 +1,71 @@
+#pragma once
+// Writes one run file on its own thread from a ring of samples, flushing at least every
+// 100 ms so that a crash (even kill -9) loses at most the last 100 ms.
+
+#include "core/run.h"
+#include "devices/spsc_ring.h"
+
+#include <QString>
+#include <QStringList>
+#include <atomic>
+#include <cstdint>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+namespace nb::devices {
+
+// One acquired sample. `seq` is the sensor's sample counter; `time_s` its device clock.
+struct Sample {
+    std::uint64_t seq = 0;
+    double time_s = 0.0;
+    double position_mm = 0.0;
+    double force_N = 0.0;
+    double volts = 0.0;
+    double velocity_mm_s = 0.0;
+    // Simulated runs only (NaN / 0 otherwise): the ground truth of this sample.
+    double tissue_position_mm = std::numeric_limits<double>::quiet_NaN();
+    char phase = 0;
+};
+
+class Recorder {
+public:
+    static constexpr int kFlushPeriod_ms = 50;
+
+    Recorder();
+    ~Recorder();  // closes an open file with end_reason "aborted"
+    Recorder(const Recorder&) = delete;
+    Recorder& operator=(const Recorder&) = delete;
+
+    // Opens the file (throws RunFileError) and starts the writer thread.
+    // `truthColumns` adds tissue_position_mm and phase.
+    void open(const QString& path, const Metadata& metadata, bool truthColumns);
+    // Producer side (the acquisition thread): false when the ring was full (sample lost).
+    bool push(const Sample& s) { return ring_.push(s); }
+    // Drains everything pushed so far, appends the footer and closes. Blocking.
+    void close(const Metadata& footer);
+    bool isOpen() const { return running_.load(); }
+    QString path() const;
+    std::uint64_t written() const { return written_.load(); }
+    std::uint64_t overruns() const { return ring_.overruns(); }
+    // A write error seen by the writer thread (disk full...), empty if none.
+    QString error() const;
+    // Linux thread id of the writer thread (for CPU accounting), 0 when not running.
+    int threadId() const { return tid_.load(); }
+
+private:
+    void writerLoop();
+    SpscRing<Sample> ring_;
+    std::thread thread_;
+    std::atomic<bool> running_{false};
+    std::atomic<bool> stopRequested_{false};
+    std::atomic<std::uint64_t> written_{0};
+    std::atomic<int> tid_{0};
+    mutable std::mutex mutex_;  // guards path_, error_
+    QString path_;
+    QString error_;
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace nb::devices

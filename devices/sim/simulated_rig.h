@@ -1,0 +1,93 @@
+#pragma once
+// The simulated rig: one physical world (stage, needle, tissue, load cell) shared by a
+// simulated Stage and a simulated ForceSensor. The world advances when the sensor samples
+// (each sample steps the physics to its time), on a real-time or simulated clock.
+// Seeded and reproducible. Knows the ground truth and can inject device faults for tests.
+
+#include "devices/force_sensor.h"
+#include "devices/sim/rig_config.h"
+#include "devices/stage.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace nb::devices::sim {
+
+enum class Fault {
+    None,
+    SensorSilent,   // the DAQ stops answering (cable unplugged)
+    SensorError,    // the DAQ reports an error
+    StageSilent,    // the stage controller stops answering
+    StageRejects,   // the stage controller rejects every command
+};
+
+// A labelled interval of the ground truth (same shape as core/labels.h rows).
+struct TruthPhase {
+    QString track;
+    QString label;
+    double start_s = 0.0;
+    double end_s = 0.0;
+};
+
+struct TruthEvent {
+    QString name;          // contact, pre_puncture, puncture, relaxed, internal_puncture, bone_contact, emergency_stop, fault
+    double time_s = 0.0;
+    double position_mm = 0.0;  // needle tip
+    double force_N = 0.0;      // true force at the event
+};
+
+struct GroundTruth {
+    double contact_mm = 0.0, contact_s = -1.0;       // x_s1
+    double puncture_mm = 0.0, puncture_s = -1.0;     // x_s2 (surface at puncture)
+    double relaxed_mm = 0.0, relaxed_s = -1.0;       // x_s3
+    double punctureForce_N = 0.0;
+    std::vector<TruthEvent> events;
+    std::vector<TruthPhase> phases;
+};
+
+// Ground truth of one sample, for the truth columns of simulated runs.
+struct SampleTruth {
+    double force_N = 0.0;
+    double tissue_mm = 0.0;
+    char phase = 0;  // friction platform: 'a', '1' (b1), '2' (b2), 'c'; 0 otherwise
+};
+
+class SimulatedRig : public std::enable_shared_from_this<SimulatedRig> {
+public:
+    explicit SimulatedRig(RigConfig config);
+    ~SimulatedRig();
+
+    const RigConfig& config() const { return config_; }
+    const TissuePreset& tissue() const { return tissue_; }
+
+    // A mass hung on the load cell (calibration wizard); grams, 0 = nothing.
+    void setLoadMass_g(double grams);
+    // Takes effect at sim time `at_s` (or at once). Fault::None clears every fault.
+    void injectFault(Fault fault, double at_s = 0.0);
+
+    double simTime_s() const;
+    GroundTruth truth() const;
+    // Model parameters, events and phases; what `simulate --truth` writes.
+    QJsonObject truthJson() const;
+    // Truth of the sample with this sensor index, while it is among the last ~64k.
+    SampleTruth sampleTruth(std::uint64_t index) const;
+
+    std::unique_ptr<Stage> makeStage();
+    std::unique_ptr<ForceSensor> makeSensor();
+
+    // Used by the simulated devices (any thread, serialised inside).
+    class World;
+    World& world() { return *world_; }
+
+private:
+    RigConfig config_;
+    TissuePreset tissue_;
+    std::unique_ptr<World> world_;
+};
+
+}  // namespace nb::devices::sim
