@@ -1,19 +1,469 @@
 #include "main_window.h"
 
+#include "translation.h"
+
+#include "core/events.h"
+#include "core/fit_error.h"
+#include "devices/acquisition_engine.h"
+#include "devices/device_set.h"
+#include "devices/sim/rig_config.h"
+#include "devices/sim/simulated_rig.h"
+#include "widgets/calibration_wizard.h"
+#include "widgets/control_panel.h"
+#include "widgets/force_plots.h"
+#include "widgets/session_view.h"
+
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QShortcut>
+#include <QStandardPaths>
 #include <QStatusBar>
+#include <QTimer>
 
 namespace nb {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
+namespace {
+
+QString defaultSessionRoot()
 {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).filePath(QStringLiteral("sessions"));
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : MainWindow(WorkbenchOptions{}, parent) {}
+
+MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMainWindow(parent), options_(options)
+{
+    setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(tr("NeedleBench"));
-    auto* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
-    setCentralWidget(new QLabel(tr("Simulated rig"), this));
-    statusBar()->showMessage(tr("Ready"));
-    resize(1280, 800);
+
+    devices::sim::RigConfig rig;
+    rig.realtime = options_.realtime;
+    devices::DeviceSet devices = devices::makeSimulatedDevices(rig);
+    nominalSensor_ = devices.description;
+    devices::EngineConfig config;
+    config.rateHz = options_.rateHz;
+    config.realtimeScheduling = options_.realtime;
+    engine_ = std::make_unique<devices::AcquisitionEngine>(std::move(devices), config);
+
+    plots_ = new ForcePlots(this);
+    setCentralWidget(plots_);
+
+    panel_ = new ControlPanel(this);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(panel_);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(panel_->sizeHint().width() + 24);
+    panelDock_ = new QDockWidget(tr("Control panel"), this);
+    panelDock_->setObjectName(QStringLiteral("controlDock"));
+    panelDock_->setWidget(scroll);
+    panelDock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);  // never closed: E-stop lives here
+    addDockWidget(Qt::LeftDockWidgetArea, panelDock_);
+
+    sessionView_ = new SessionView(this);
+    sessionDock_ = new QDockWidget(tr("Session"), this);
+    sessionDock_->setObjectName(QStringLiteral("sessionDock"));
+    sessionDock_->setWidget(sessionView_);
+    addDockWidget(Qt::BottomDockWidgetArea, sessionDock_);
+
+    statusLabel_ = new QLabel(this);
+    statusBar()->addPermanentWidget(statusLabel_);
+
+    // The emergency stop answers Esc wherever the focus is, in any window of the application.
+    auto* estop = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    estop->setContext(Qt::ApplicationShortcut);
+    connect(estop, &QShortcut::activated, panel_, &ControlPanel::emergencyStopRequested);
+
+    devices::AcquisitionEngine* e = engine_.get();
+    connect(panel_, &ControlPanel::enableRequested, e, &devices::AcquisitionEngine::enableStage);
+    connect(panel_, &ControlPanel::biasRequested, e, &devices::AcquisitionEngine::biasSensor);
+    connect(panel_, &ControlPanel::zeroRequested, e, &devices::AcquisitionEngine::zeroStage);
+    connect(panel_, &ControlPanel::forceLimitChanged, e, &devices::AcquisitionEngine::setForceLimit);
+    connect(panel_, &ControlPanel::forceLimitChanged, plots_, &ForcePlots::setForceLimit);
+    connect(panel_, &ControlPanel::startRequested, this, &MainWindow::startRun);
+    connect(panel_, &ControlPanel::withdrawRequested, this, [this](double v) {
+        engine_->withdraw(v);
+        plots_->addEvent(lastT_ - runT0_, tr("withdraw"));
+    });
+    connect(panel_, &ControlPanel::stopMotionRequested, this, [this] {
+        engine_->stopMotion();
+        plots_->addEvent(lastT_ - runT0_, tr("stop"));
+    });
+    connect(panel_, &ControlPanel::endRunRequested, e, &devices::AcquisitionEngine::endRun);
+    connect(panel_, &ControlPanel::emergencyStopRequested, this, [this] {
+        engine_->emergencyStop();
+        plots_->addEvent(lastT_ - runT0_, tr("E-STOP"));
+        showMessage(tr("Emergency stop"), true);
+    });
+    connect(panel_, &ControlPanel::calibrateRequested, this, &MainWindow::openCalibrationWizard);
+
+    connect(e, &devices::AcquisitionEngine::statusChanged, this, &MainWindow::onStatus);
+    connect(e, &devices::AcquisitionEngine::runStarted, this, [this](const QString& path) {
+        recording_ = true;
+        lastRunPath_ = path;
+        plots_->clear();
+        runT0_ = lastT_;
+        showMessage(tr("Recording %1").arg(QDir::toNativeSeparators(path)));
+        sessionView_->refresh();
+    });
+    connect(e, &devices::AcquisitionEngine::runEnded, this, &MainWindow::onRunEnded);
+    connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) { showMessage(why, true); });
+    connect(e, &devices::AcquisitionEngine::faultOccurred, this, [this](const QString& device, const QString& reason) {
+        showMessage(tr("Fault: %1: %2").arg(device, reason), true);
+        plots_->addEvent(lastT_ - runT0_, tr("fault"));
+    });
+    connect(e, &devices::AcquisitionEngine::forceLimitTripped, this, [this](double force, double position) {
+        showMessage(tr("Force limit tripped at %1 N, %2 mm: the stage was stopped").arg(force, 0, 'f', 2).arg(position, 0, 'f', 2), true);
+        plots_->addEvent(lastT_ - runT0_, tr("force limit"));
+    });
+    connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+
+    buildMenus();
+
+    QSettings settings;
+    if (options_.persistSettings) {
+        restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+        restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+        if (settings.contains(QStringLiteral("run/forceLimit_N")))
+            panel_->setForceLimit(settings.value(QStringLiteral("run/forceLimit_N")).toDouble());
+    } else {
+        resize(1400, 860);
+    }
+    engine_->setForceLimit(panel_->forceLimit());
+    plots_->setForceLimit(panel_->forceLimit());
+
+    QString dir = options_.sessionDir;
+    if (dir.isEmpty() && options_.persistSettings)
+        dir = settings.value(QStringLiteral("session/last")).toString();
+    if (!dir.isEmpty() && Session::isSession(dir))
+        openSession(dir);
+    else if (!dir.isEmpty() || !options_.persistSettings)
+        createSession(dir.isEmpty() ? QDir(defaultSessionRoot()).filePath(QDateTime::currentDateTime().toString(QStringLiteral("'session_'yyyyMMdd_HHmmss"))) : dir, {});
+    else
+        createSession(QDir(defaultSessionRoot()).filePath(QDateTime::currentDateTime().toString(QStringLiteral("'session_'yyyyMMdd_HHmmss"))), {});
+
+    drainTimer_ = new QTimer(this);
+    drainTimer_->setInterval(25);  // 40 frames/s at most
+    connect(drainTimer_, &QTimer::timeout, this, &MainWindow::drain);
+    drainTimer_->start();
+    engine_->start();
+}
+
+MainWindow::~MainWindow()
+{
+    drainTimer_->stop();
+    if (wizard_)
+        delete wizard_.data();
+    engine_->shutdown();
+}
+
+void MainWindow::buildMenus()
+{
+    auto* sessionMenu = menuBar()->addMenu(tr("&Session"));
+    sessionMenu->addAction(tr("&New session…"), QKeySequence::New, this, &MainWindow::newSessionDialog);
+    sessionMenu->addAction(tr("&Open session…"), QKeySequence::Open, this, &MainWindow::openSessionDialog);
+    sessionMenu->addSeparator();
+    sessionMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    auto* calibration = menuBar()->addMenu(tr("&Calibration"));
+    calibration->addAction(tr("&Calibrate force sensor…"), this, &MainWindow::openCalibrationWizard);
+    calibration->addAction(tr("Use the sensor's &nominal calibration"), this, [this] {
+        StoredCalibration c;
+        c.sensor = nominalSensor_;
+        c.nominal = true;
+        c.fit.slope_V_per_g = devices::sim::SensorChainConfig{}.slope_V_per_g();
+        c.fit.r2 = 1.0;
+        c.name = QStringLiteral("nominal_") + QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd_HHmmss"));
+        useCalibration(c);
+    });
+
+    auto* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(panelDock_->toggleViewAction());
+    view->addAction(sessionDock_->toggleViewAction());
+    view->addSeparator();
+    auto* language = view->addMenu(tr("&Language"));
+    auto* group = new QActionGroup(this);
+    const std::pair<QString, QString> names[] = {{QStringLiteral("en"), QStringLiteral("English")},
+                                                 {QStringLiteral("de"), QStringLiteral("Deutsch")}};
+    for (const auto& [code, name] : names) {
+        QAction* a = language->addAction(name);
+        a->setCheckable(true);
+        a->setChecked(preferredLanguage() == code);
+        a->setData(code);
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] {
+            setPreferredLanguage(code);
+            QMessageBox::information(this, tr("Language"), tr("The language changes when NeedleBench is started again."));
+        });
+    }
+}
+
+bool MainWindow::openSession(const QString& dir)
+{
+    try {
+        Session s = Session::open(dir);
+        QStringList problems;
+        recovered_ = s.recoverInterrupted(engine_->status().runPath, &problems);
+        session_ = std::move(s);
+        if (!recovered_.isEmpty())
+            showMessage(tr("Recovered %n interrupted run(s): %1", nullptr, int(recovered_.size())).arg(recovered_.join(QStringLiteral(", "))), true);
+        if (!problems.isEmpty())
+            QMessageBox::warning(this, tr("Interrupted runs"), tr("Could not recover:\n%1").arg(problems.join(QLatin1Char('\n'))));
+    } catch (const SessionError& e) {
+        QMessageBox::warning(this, tr("Open session"), e.message());
+        return false;
+    }
+    if (const auto cal = session_->activeCalibration())
+        engine_->setCalibration(cal->fit.slope_V_per_g, cal->name);
+    panel_->setSessionOpen(true);
+    sessionView_->setSession(&*session_);
+    setWindowTitle(tr("NeedleBench – %1").arg(QDir::toNativeSeparators(session_->dir())));
+    if (options_.persistSettings)
+        QSettings().setValue(QStringLiteral("session/last"), session_->dir());
+    return true;
+}
+
+bool MainWindow::createSession(const QString& dir, const SessionInfo& info)
+{
+    try {
+        Session::create(dir, info);
+    } catch (const SessionError& e) {
+        QMessageBox::warning(this, tr("New session"), e.message());
+        return false;
+    }
+    return openSession(dir);
+}
+
+void MainWindow::newSessionDialog()
+{
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("New session"));
+    auto* form = new QFormLayout(&dialog);
+    auto* organ = new QLineEdit(&dialog);
+    auto* specimen = new QLineEdit(&dialog);
+    auto* tip = new QLineEdit(&dialog);
+    tip->setPlaceholderText(tr("beveled, blunt, diamond"));
+    auto* thickness = new QDoubleSpinBox(&dialog);
+    thickness->setRange(0, 500);
+    thickness->setSuffix(tr(" mm"));
+    auto* op = new QLineEdit(&dialog);
+    auto* protocol = new QLineEdit(&dialog);
+    protocol->setPlaceholderText(tr("overall stiffness, friction, …"));
+    auto* notes = new QPlainTextEdit(&dialog);
+    auto* folder = new QLineEdit(defaultSessionRoot(), &dialog);
+    auto* browse = new QPushButton(tr("Browse…"), &dialog);
+    connect(browse, &QPushButton::clicked, &dialog, [&] {
+        const QString d = QFileDialog::getExistingDirectory(&dialog, tr("Parent folder"), folder->text());
+        if (!d.isEmpty())
+            folder->setText(d);
+    });
+    auto* folderRow = new QHBoxLayout;
+    folderRow->addWidget(folder, 1);
+    folderRow->addWidget(browse);
+    form->addRow(tr("Organ"), organ);
+    form->addRow(tr("Specimen number"), specimen);
+    form->addRow(tr("Needle tip"), tip);
+    form->addRow(tr("Thickness"), thickness);
+    form->addRow(tr("Operator"), op);
+    form->addRow(tr("Protocol"), protocol);
+    form->addRow(tr("Notes"), notes);
+    form->addRow(tr("Parent folder"), folderRow);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    form->addRow(buttons);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    SessionInfo info;
+    info.organ = organ->text();
+    info.specimen = specimen->text();
+    info.tip = tip->text();
+    info.thickness_mm = thickness->value();
+    info.operatorName = op->text();
+    info.protocol = protocol->text();
+    info.notes = notes->toPlainText();
+    QString name = QStringLiteral("%1_%2_%3").arg(info.organ, info.specimen, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd_HHmmss")));
+    name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("_"));
+    createSession(QDir(folder->text()).filePath(name), info);
+}
+
+void MainWindow::openSessionDialog()
+{
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open session folder"), defaultSessionRoot());
+    if (!dir.isEmpty())
+        openSession(dir);
+}
+
+CalibrationWizard* MainWindow::openCalibrationWizard()
+{
+    if (!wizard_) {
+        wizard_ = new CalibrationWizard(nominalSensor_, this);
+        wizard_->setAttribute(Qt::WA_DeleteOnClose);
+        wizard_->setDwell(options_.calibrationDwell_s);
+        if (auto rig = engine_->rig())
+            wizard_->setLoadMassHook([rig](double grams) { rig->setLoadMass_g(grams); });
+        connect(wizard_, &CalibrationWizard::calibrationAccepted, this, &MainWindow::useCalibration);
+        connect(wizard_, &QDialog::finished, this, [this] {
+            if (auto rig = engine_->rig())
+                rig->setLoadMass_g(0.0);
+        });
+    }
+    wizard_->show();
+    wizard_->raise();
+    return wizard_;
+}
+
+void MainWindow::useCalibration(const StoredCalibration& calibration)
+{
+    if (!session_)
+        return;
+    try {
+        const QString name = session_->saveCalibration(calibration);
+        engine_->setCalibration(calibration.fit.slope_V_per_g, name);
+        showMessage(tr("Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)")
+                        .arg(name)
+                        .arg(calibration.fit.slope_V_per_g * 1000.0, 0, 'f', 4)
+                        .arg(calibration.fit.r2, 0, 'f', 6));
+    } catch (const SessionError& e) {
+        QMessageBox::warning(this, tr("Calibration"), e.message());
+    }
+    sessionView_->refresh();
+}
+
+void MainWindow::startRun()
+{
+    if (!session_)
+        return;
+    devices::RunPlan plan = panel_->motionPlan();
+    plan.outPath = session_->nextRunPath(panel_->motionName());
+    plan.endWhenMotionDone = true;
+    const SessionInfo& i = session_->info();
+    plan.metadata.set(QStringLiteral("organ"), i.organ);
+    plan.metadata.set(QStringLiteral("specimen"), i.specimen);
+    plan.metadata.set(QStringLiteral("tip"), i.tip);
+    plan.metadata.set(QStringLiteral("thickness_mm"), i.thickness_mm);
+    plan.metadata.set(QStringLiteral("operator"), i.operatorName);
+    plan.metadata.set(QStringLiteral("protocol"), i.protocol);
+    plan.metadata.set(QStringLiteral("session"), QDir(session_->dir()).dirName());
+    runIsLinear_ = plan.motion == devices::RunPlan::Motion::Linear;
+    engine_->startRun(plan);
+}
+
+void MainWindow::drain()
+{
+    drained_.clear();
+    engine_->liveRing().popAll(drained_);
+    if (!drained_.empty()) {
+        t_.resize(drained_.size());
+        x_.resize(drained_.size());
+        f_.resize(drained_.size());
+        for (std::size_t i = 0; i < drained_.size(); ++i) {
+            t_[i] = drained_[i].time_s - runT0_;
+            x_[i] = drained_[i].position_mm;
+            f_[i] = drained_[i].force_N;
+        }
+        lastT_ = drained_.back().time_s;
+        // Between runs the plots show the live signal; keep it to the last minute.
+        if (!recording_ && plots_->sampleCount() > std::size_t(options_.rateHz * 60.0)) {
+            runT0_ = lastT_;
+            plots_->clear();
+        }
+        plots_->appendSamples(t_, x_, f_);
+        if (wizard_)
+            for (const devices::Sample& s : drained_)
+                wizard_->addSample(s.time_s, s.volts);
+    }
+    plots_->refresh();
+}
+
+void MainWindow::onStatus(const devices::EngineStatus& s)
+{
+    panel_->setStatus(s);
+    statusLabel_->setText(tr("%1 Hz · %2 samples · dropped %3 · %4 frames drawn")
+                              .arg(s.rateHz, 0, 'f', 0)
+                              .arg(s.samples)
+                              .arg(s.dropped + s.overruns)
+                              .arg(plots_->framesDrawn()));
+}
+
+void MainWindow::onRunEnded(const devices::RunSummary& summary)
+{
+    recording_ = false;
+    lastRunPath_ = summary.path;
+    lastEndReason_ = summary.endReason;
+    ++runsEnded_;
+    const QString file = QDir::toNativeSeparators(summary.path);
+    const bool normal = summary.endReason == QLatin1String("completed");
+    QString text = tr("Run saved: %1 (%2, %3 samples, %4 dropped)")
+                       .arg(file, runStateName(runStateForEndReason(summary.endReason)))
+                       .arg(summary.samples)
+                       .arg(summary.dropped);
+    if (!summary.fault.isEmpty())
+        text += QStringLiteral(" – ") + summary.fault;
+    showMessage(text, !normal || summary.dropped > 0);
+    if (runIsLinear_)
+        markDetectedEvents();
+    sessionView_->refresh();
+}
+
+void MainWindow::markDetectedEvents()
+{
+    Run run;
+    run.time_s = plots_->times();
+    run.position_mm = plots_->positions();
+    run.force_N = plots_->forces();
+    try {
+        const InsertionEvents events = detectEvents(run);
+        plots_->addEvent(events.contact.time_s, tr("contact"));
+        plots_->addEvent(events.puncture.time_s, tr("puncture"));
+        plots_->refresh();
+    } catch (const FitError&) {
+        // No puncture in this run (it stopped early or never touched tissue): nothing to mark.
+    }
+}
+
+void MainWindow::showMessage(const QString& text, bool alarm)
+{
+    statusBar()->setStyleSheet(alarm ? QStringLiteral("QStatusBar { color: #c62828; font-weight: bold; }") : QString());
+    statusBar()->showMessage(text);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (engine_->status().recording) {
+        const auto answer = QMessageBox::question(this, tr("Quit"),
+                                                  tr("A run is recording. Stop the stage, end the run (saved as stopped) and quit?"));
+        if (answer != QMessageBox::Yes) {
+            event->ignore();
+            return;
+        }
+        engine_->emergencyStop();
+    }
+    if (options_.persistSettings) {
+        QSettings settings;
+        settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+        settings.setValue(QStringLiteral("window/state"), saveState());
+        settings.setValue(QStringLiteral("run/forceLimit_N"), panel_->forceLimit());
+    }
+    QMainWindow::closeEvent(event);
 }
 
 }  // namespace nb

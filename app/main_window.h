@@ -1,13 +1,100 @@
 #pragma once
+#include "core/session.h"
+
 #include <QMainWindow>
+#include <QPointer>
+#include <QStringList>
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QLabel;
+class QTimer;
+class QDockWidget;
 
 namespace nb {
 
-// The workbench window: wires the reusable views in widgets/ to the device layer.
+namespace devices {
+class AcquisitionEngine;
+struct EngineStatus;
+struct RunSummary;
+struct Sample;
+}  // namespace devices
+class ControlPanel;
+class ForcePlots;
+class SessionView;
+class CalibrationWizard;
+
+struct WorkbenchOptions {
+    bool realtime = true;             // false: the simulated rig runs as fast as it can (tests)
+    double rateHz = 1000.0;
+    QString sessionDir;               // open (or create) this session; empty: the last one, else a new one
+    double calibrationDwell_s = 2.0;  // averaging per mass in the calibration wizard
+    bool persistSettings = true;      // restore and save window layout and settings
+};
+
+// The workbench window: the control panel and status (left), the live plots (centre), the
+// session's runs (right), on the simulated rig. Drains the engine's live ring on a timer.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    explicit MainWindow(const WorkbenchOptions& options, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    ControlPanel* controlPanel() const { return panel_; }
+    ForcePlots* plots() const { return plots_; }
+    SessionView* sessionView() const { return sessionView_; }
+    devices::AcquisitionEngine* engine() const { return engine_.get(); }
+    const Session* session() const { return session_ ? &*session_ : nullptr; }
+    // Runs recovered when the session was opened (file names).
+    const QStringList& recoveredRuns() const { return recovered_; }
+    QString lastRunPath() const { return lastRunPath_; }
+    QString lastEndReason() const { return lastEndReason_; }
+    int runsEnded() const { return runsEnded_; }
+
+    // Opens a session folder (recovering interrupted runs); false with a message on error.
+    bool openSession(const QString& dir);
+    bool createSession(const QString& dir, const SessionInfo& info);
+    // The non-modal calibration wizard, fed from the live stream.
+    CalibrationWizard* openCalibrationWizard();
+    void useCalibration(const StoredCalibration& calibration);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void buildMenus();
+    void drain();
+    void onStatus(const devices::EngineStatus& status);
+    void onRunEnded(const devices::RunSummary& summary);
+    void startRun();
+    void newSessionDialog();
+    void openSessionDialog();
+    void markDetectedEvents();
+    void showMessage(const QString& text, bool alarm = false);
+
+    WorkbenchOptions options_;
+    std::unique_ptr<devices::AcquisitionEngine> engine_;
+    std::optional<Session> session_;
+    ControlPanel* panel_ = nullptr;
+    ForcePlots* plots_ = nullptr;
+    SessionView* sessionView_ = nullptr;
+    QDockWidget* panelDock_ = nullptr;
+    QDockWidget* sessionDock_ = nullptr;
+    QPointer<CalibrationWizard> wizard_;
+    QTimer* drainTimer_ = nullptr;
+    QLabel* statusLabel_ = nullptr;
+    std::vector<devices::Sample> drained_;
+    std::vector<double> t_, x_, f_;
+    double runT0_ = 0.0;
+    double lastT_ = 0.0;
+    bool recording_ = false;
+    bool runIsLinear_ = false;
+    QString lastRunPath_, lastEndReason_;
+    int runsEnded_ = 0;
+    QStringList recovered_;
+    QString nominalSensor_;
 };
 
 }  // namespace nb

@@ -53,6 +53,9 @@ public:
     void refresh();
 
     std::size_t sampleCount() const { return t_.size(); }
+    const std::vector<double>& times() const { return t_; }
+    const std::vector<double>& positions() const { return x_; }
+    const std::vector<double>& forces() const { return f_; }
     // Points handed to the plots at the last redraw (after reduction), per plot.
     std::size_t pointsDrawnForceTime() const { return drawnForceTime_; }
     std::size_t pointsDrawnForcePosition() const { return drawnForcePosition_; }

@@ -1,0 +1,385 @@
+#include "calibration_wizard.h"
+
+#include "core/fit_error.h"
+
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <cmath>
+#include <qcustomplot.h>
+
+namespace nb {
+
+namespace {
+enum Column { Mass, Voltage, Residual, Use, Columns };
+}
+
+CalibrationWizard::CalibrationWizard(const QString& sensorName, QWidget* parent)
+    : QDialog(parent), sensor_(sensorName)
+{
+    setWindowTitle(tr("Calibrate force sensor – %1").arg(sensorName));
+    setObjectName(QStringLiteral("calibrationWizard"));
+
+    auto* massRow = new QHBoxLayout;
+    from_ = new QDoubleSpinBox(this);
+    to_ = new QDoubleSpinBox(this);
+    step_ = new QDoubleSpinBox(this);
+    for (QDoubleSpinBox* s : {from_, to_, step_}) {
+        s->setRange(0.0, 2000.0);
+        s->setDecimals(1);
+        s->setSuffix(tr(" g"));
+    }
+    from_->setValue(0.0);
+    to_->setValue(850.0);
+    step_->setValue(25.0);
+    step_->setMinimum(1.0);
+    auto* setMasses = new QPushButton(tr("Set masses"), this);
+    setMasses->setToolTip(tr("Replaces the table with these masses (individual masses can be edited in the table)"));
+    massRow->addWidget(new QLabel(tr("Masses from"), this));
+    massRow->addWidget(from_);
+    massRow->addWidget(new QLabel(tr("to"), this));
+    massRow->addWidget(to_);
+    massRow->addWidget(new QLabel(tr("step"), this));
+    massRow->addWidget(step_);
+    massRow->addWidget(setMasses);
+    massRow->addStretch();
+    connect(setMasses, &QPushButton::clicked, this, [this] { this->setMasses(from_->value(), to_->value(), step_->value()); });
+
+    table_ = new QTableWidget(0, Columns, this);
+    table_->setHorizontalHeaderLabels({tr("Mass [g]"), tr("Voltage [V]"), tr("Residual [mV]"), tr("Use")});
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->verticalHeader()->setVisible(false);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->setMinimumWidth(330);
+    connect(table_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+        if (updating_)
+            return;
+        if (item->column() == Use || item->column() == Mass) {
+            refit();
+            redraw();
+        }
+    });
+
+    plot_ = new QCustomPlot(this);
+    plot_->setMinimumSize(420, 360);
+    plot_->xAxis->setLabel(tr("mass [g]"));
+    plot_->yAxis->setLabel(tr("voltage [V]"));
+    auto* residualRect = new QCPAxisRect(plot_);
+    plot_->plotLayout()->addElement(1, 0, residualRect);
+    plot_->plotLayout()->setRowStretchFactor(1, 0.45);
+    residualRect->axis(QCPAxis::atBottom)->setLabel(tr("mass [g]"));
+    residualRect->axis(QCPAxis::atLeft)->setLabel(tr("residual [mV]"));
+    auto* used = plot_->addGraph();
+    used->setLineStyle(QCPGraph::lsNone);
+    used->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QColor(20, 90, 180), 6));
+    auto* removed = plot_->addGraph();
+    removed->setLineStyle(QCPGraph::lsNone);
+    removed->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QColor(150, 150, 150), 8));
+    auto* line = plot_->addGraph();
+    line->setPen(QPen(QColor(200, 30, 30), 1.5));
+    auto* residuals = plot_->addGraph(residualRect->axis(QCPAxis::atBottom), residualRect->axis(QCPAxis::atLeft));
+    residuals->setLineStyle(QCPGraph::lsImpulse);
+    residuals->setPen(QPen(QColor(20, 90, 180)));
+    residuals->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QColor(20, 90, 180), 5));
+    auto* worst = plot_->addGraph(residualRect->axis(QCPAxis::atBottom), residualRect->axis(QCPAxis::atLeft));
+    worst->setLineStyle(QCPGraph::lsNone);
+    worst->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(200, 30, 30), 2), Qt::NoBrush, 11));
+
+    fitLabel_ = new QLabel(tr("No fit yet: measure at least two masses."), this);
+    fitLabel_->setObjectName(QStringLiteral("fitLabel"));
+    fitLabel_->setWordWrap(true);
+    fitLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    prompt_ = new QLabel(this);
+    prompt_->setWordWrap(true);
+    prompt_->setStyleSheet(QStringLiteral("font-weight: bold;"));
+
+    measure_ = new QPushButton(tr("Measure selected mass"), this);
+    measure_->setToolTip(tr("Averages the sensor voltage over the dwell time for the selected row"));
+    measureAll_ = new QPushButton(tr("Measure all"), this);
+    measureAll_->setToolTip(tr("Measures every row in turn"));
+    auto* stop = new QPushButton(tr("Stop"), this);
+    save_ = new QPushButton(tr("Save and use"), this);
+    save_->setToolTip(tr("Saves this calibration in the session and uses it for every following run"));
+    save_->setEnabled(false);
+    auto* cancel = new QPushButton(tr("Cancel"), this);
+    connect(measure_, &QPushButton::clicked, this, &CalibrationWizard::measureCurrent);
+    connect(measureAll_, &QPushButton::clicked, this, &CalibrationWizard::measureAll);
+    connect(stop, &QPushButton::clicked, this, &CalibrationWizard::stopMeasuring);
+    connect(save_, &QPushButton::clicked, this, [this] {
+        emit calibrationAccepted(calibration());
+        accept();
+    });
+    connect(cancel, &QPushButton::clicked, this, &QDialog::reject);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(measure_);
+    buttons->addWidget(measureAll_);
+    buttons->addWidget(stop);
+    buttons->addStretch();
+    buttons->addWidget(save_);
+    buttons->addWidget(cancel);
+
+    auto* split = new QSplitter(this);
+    split->addWidget(table_);
+    split->addWidget(plot_);
+    split->setStretchFactor(1, 1);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(massRow);
+    layout->addWidget(split, 1);
+    layout->addWidget(fitLabel_);
+    layout->addWidget(prompt_);
+    layout->addLayout(buttons);
+    resize(980, 640);
+
+    this->setMasses(0.0, 850.0, 25.0);
+}
+
+void CalibrationWizard::setDwell(double seconds) { dwell_s_ = std::max(0.01, seconds); }
+
+void CalibrationWizard::setMasses(double from_g, double to_g, double step_g)
+{
+    stopMeasuring();
+    updating_ = true;
+    table_->setRowCount(0);
+    for (double m = from_g; m <= to_g + 1e-9 && step_g > 0; m += step_g) {
+        const int row = table_->rowCount();
+        table_->insertRow(row);
+        auto* mass = new QTableWidgetItem(QString::number(m, 'f', 1));
+        table_->setItem(row, Mass, mass);
+        for (int c : {Voltage, Residual}) {
+            auto* item = new QTableWidgetItem(QStringLiteral("–"));
+            item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+            table_->setItem(row, c, item);
+        }
+        auto* use = new QTableWidgetItem;
+        use->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+        use->setCheckState(Qt::Checked);
+        table_->setItem(row, Use, use);
+    }
+    updating_ = false;
+    table_->selectRow(0);
+    refit();
+    redraw();
+}
+
+int CalibrationWizard::rowCount() const { return table_->rowCount(); }
+double CalibrationWizard::massAt(int row) const { return table_->item(row, Mass)->text().toDouble(); }
+bool CalibrationWizard::usedAt(int row) const { return table_->item(row, Use)->checkState() == Qt::Checked; }
+bool CalibrationWizard::measuredAt(int row) const { return table_->item(row, Voltage)->data(Qt::UserRole).isValid(); }
+
+void CalibrationWizard::setPointUsed(int row, bool used)
+{
+    table_->item(row, Use)->setCheckState(used ? Qt::Checked : Qt::Unchecked);
+}
+
+void CalibrationWizard::measureCurrent()
+{
+    const int row = table_->currentRow() < 0 ? 0 : table_->currentRow();
+    all_ = false;
+    beginRow(row);
+}
+
+void CalibrationWizard::measureAll()
+{
+    all_ = true;
+    beginRow(0);
+}
+
+void CalibrationWizard::stopMeasuring()
+{
+    const bool was = measuringRow_ >= 0;
+    measuringRow_ = -1;
+    all_ = false;
+    if (prompt_)
+        prompt_->clear();
+    if (was)
+        emit measuringChanged(false);
+}
+
+void CalibrationWizard::beginRow(int row)
+{
+    if (row < 0 || row >= table_->rowCount()) {
+        stopMeasuring();
+        return;
+    }
+    const bool was = measuringRow_ >= 0;
+    measuringRow_ = row;
+    startTime_ = -1.0;
+    sum_ = 0.0;
+    count_ = 0;
+    table_->selectRow(row);
+    if (loadMass_)
+        loadMass_(massAt(row));
+    prompt_->setText(loadMass_ ? tr("Measuring %1 g for %2 s…").arg(massAt(row)).arg(dwell_s_)
+                               : tr("Measuring %1 g for %2 s: keep the mass hanging still…").arg(massAt(row)).arg(dwell_s_));
+    if (!was)
+        emit measuringChanged(true);
+}
+
+void CalibrationWizard::addSample(double time_s, double volts)
+{
+    if (measuringRow_ < 0)
+        return;
+    if (startTime_ < 0.0)
+        startTime_ = time_s;
+    // The first moments after a mass is hung are its swing settling: not averaged.
+    const double settle = std::min(0.5, 0.25 * dwell_s_);
+    const double age = time_s - startTime_;
+    if (age < settle)
+        return;
+    sum_ += volts;
+    ++count_;
+    if (age >= settle + dwell_s_)
+        finishRow();
+}
+
+void CalibrationWizard::finishRow()
+{
+    const int row = measuringRow_;
+    const double mean = sum_ / std::max(1, count_);
+    auto* item = table_->item(row, Voltage);
+    item->setData(Qt::UserRole, mean);
+    updating_ = true;
+    item->setText(QString::number(mean, 'f', 5));
+    updating_ = false;
+    refit();
+    redraw();
+    const int next = row + 1;
+    if (all_ && next < table_->rowCount()) {
+        beginRow(next);
+        return;
+    }
+    stopMeasuring();
+    if (next < table_->rowCount()) {
+        table_->selectRow(next);
+        if (!loadMass_)
+            prompt_->setText(tr("Hang %1 g on the sensor, then press Measure.").arg(massAt(next)));
+    }
+}
+
+void CalibrationWizard::refit()
+{
+    std::vector<CalibrationPoint> points;
+    fitRows_.clear();
+    for (int r = 0; r < table_->rowCount(); ++r) {
+        if (measuredAt(r) && usedAt(r)) {
+            points.push_back({massAt(r), table_->item(r, Voltage)->data(Qt::UserRole).toDouble()});
+            fitRows_.push_back(r);
+        }
+    }
+    hasFit_ = false;
+    try {
+        if (points.size() >= 2) {
+            fit_ = fitCalibration(points);
+            hasFit_ = fit_.slope_V_per_g > 0.0;
+        }
+    } catch (const FitError& e) {
+        fitLabel_->setText(e.message());
+    }
+    updating_ = true;
+    for (int r = 0; r < table_->rowCount(); ++r) {
+        table_->item(r, Residual)->setText(QStringLiteral("–"));
+        for (int c = 0; c < Columns; ++c)
+            table_->item(r, c)->setBackground(QBrush());
+    }
+    const int worst = worstRow();
+    for (std::size_t k = 0; hasFit_ && k < fitRows_.size(); ++k)
+        table_->item(fitRows_[k], Residual)->setText(QString::number(fit_.residuals_V[k] * 1000.0, 'f', 3));
+    if (worst >= 0)
+        for (int c = 0; c < Columns; ++c)
+            table_->item(worst, c)->setBackground(QColor(255, 205, 205));
+    updating_ = false;
+    if (hasFit_) {
+        QString text = tr("d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points")
+                           .arg(fit_.slope_V_per_g * 1000.0, 0, 'f', 4)
+                           .arg(fit_.intercept_V, 0, 'f', 4)
+                           .arg(fit_.r2, 0, 'f', 6)
+                           .arg(fit_.rms_V * 1000.0, 0, 'f', 3)
+                           .arg(fitRows_.size());
+        if (worst >= 0)
+            text += QStringLiteral("\n") + tr("Suspect point: %1 g (residual %2 mV, %3× the rms). Untick it to leave it out.")
+                                                .arg(massAt(worst))
+                                                .arg(fit_.residuals_V[std::size_t(std::find(fitRows_.begin(), fitRows_.end(), worst) - fitRows_.begin())] * 1000.0, 0, 'f', 3)
+                                                .arg(std::abs(fit_.residuals_V[std::size_t(std::find(fitRows_.begin(), fitRows_.end(), worst) - fitRows_.begin())]) / fit_.rms_V, 0, 'f', 1);
+        fitLabel_->setText(text);
+    } else if (points.size() < 2) {
+        fitLabel_->setText(tr("No fit yet: measure at least two masses."));
+    }
+    save_->setEnabled(hasFit_);
+}
+
+int CalibrationWizard::worstRow() const
+{
+    // A point is suspect when it sits far off the line compared with the others.
+    if (!hasFit_ || fitRows_.size() < 4 || fit_.rms_V <= 0.0)
+        return -1;
+    std::size_t worst = 0;
+    for (std::size_t k = 1; k < fit_.residuals_V.size(); ++k)
+        if (std::abs(fit_.residuals_V[k]) > std::abs(fit_.residuals_V[worst]))
+            worst = k;
+    return std::abs(fit_.residuals_V[worst]) > 2.5 * fit_.rms_V ? fitRows_[worst] : -1;
+}
+
+void CalibrationWizard::redraw()
+{
+    QVector<double> um, uv, rm, rv, wm, wv, xm, xv;
+    for (int r = 0; r < table_->rowCount(); ++r) {
+        if (!measuredAt(r))
+            continue;
+        const double v = table_->item(r, Voltage)->data(Qt::UserRole).toDouble();
+        (usedAt(r) ? um : xm).push_back(massAt(r));
+        (usedAt(r) ? uv : xv).push_back(v);
+    }
+    for (std::size_t k = 0; hasFit_ && k < fitRows_.size(); ++k) {
+        rm.push_back(massAt(fitRows_[k]));
+        rv.push_back(fit_.residuals_V[k] * 1000.0);
+        if (fitRows_[k] == worstRow()) {
+            wm.push_back(rm.back());
+            wv.push_back(rv.back());
+        }
+    }
+    plot_->graph(0)->setData(um, uv);
+    plot_->graph(1)->setData(xm, xv);
+    if (hasFit_) {
+        const double lo = std::min(0.0, from_->value()), hi = std::max(to_->value(), um.isEmpty() ? 0.0 : um.back());
+        plot_->graph(2)->setData({lo, hi}, {fit_.intercept_V + fit_.slope_V_per_g * lo, fit_.intercept_V + fit_.slope_V_per_g * hi});
+    } else {
+        plot_->graph(2)->data()->clear();
+    }
+    plot_->graph(3)->setData(rm, rv);
+    plot_->graph(4)->setData(wm, wv);
+    for (int g = 0; g < plot_->graphCount(); ++g)
+        plot_->graph(g)->rescaleAxes(g != 0 && g != 3);
+    plot_->xAxis->setRange(std::min(0.0, from_->value()) - 10.0, to_->value() + 10.0);
+    auto* residualRect = plot_->axisRect(1);
+    residualRect->axis(QCPAxis::atBottom)->setRange(plot_->xAxis->range());
+    const double span = rv.isEmpty() ? 1.0 : std::max(1e-3, std::max(std::abs(*std::max_element(rv.begin(), rv.end())),
+                                                                      std::abs(*std::min_element(rv.begin(), rv.end()))));
+    residualRect->axis(QCPAxis::atLeft)->setRange(-1.2 * span, 1.2 * span);
+    plot_->replot();
+}
+
+StoredCalibration CalibrationWizard::calibration() const
+{
+    StoredCalibration c;
+    c.date = QDateTime::currentDateTime();
+    c.sensor = sensor_;
+    c.fit = fit_;
+    for (int r = 0; r < table_->rowCount(); ++r) {
+        if (!measuredAt(r))
+            continue;
+        const CalibrationPoint p{massAt(r), table_->item(r, Voltage)->data(Qt::UserRole).toDouble()};
+        (usedAt(r) ? c.points : c.removed).push_back(p);
+    }
+    return c;
+}
+
+}  // namespace nb

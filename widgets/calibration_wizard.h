@@ -1,0 +1,93 @@
+#pragma once
+// The load cell calibration (models.md section 2): known masses hung on the sensor, the
+// voltage averaged over a dwell per mass, V = d·m + c fitted as the points come in, r² and
+// residuals shown so that a bad point stands out; a point can be struck out and the fit
+// follows. The wizard reads voltages handed to it (addSample) from the live stream.
+
+#include "core/session.h"
+
+#include <QDialog>
+#include <functional>
+
+class QCustomPlot;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QDoubleSpinBox;
+class QTableWidget;
+
+namespace nb {
+
+class CalibrationWizard : public QDialog {
+    Q_OBJECT
+public:
+    explicit CalibrationWizard(const QString& sensorName, QWidget* parent = nullptr);
+
+    // Averaging time per mass (2 s in the thesis; tests use less).
+    void setDwell(double seconds);
+    double dwell() const { return dwell_s_; }
+    // Puts a mass on the sensor without the operator (the simulated rig). Without it the
+    // wizard asks the operator to hang each mass and press Measure.
+    void setLoadMassHook(std::function<void(double grams)> hook) { loadMass_ = std::move(hook); }
+    // Masses from..to in steps (grams); replaces the table.
+    void setMasses(double from_g, double to_g, double step_g);
+
+    // The live stream: device time and voltage of each sample.
+    void addSample(double time_s, double volts);
+
+    bool isMeasuring() const { return measuringRow_ >= 0; }
+    int rowCount() const;
+    // Strikes a point out of the fit (or puts it back).
+    void setPointUsed(int row, bool used);
+    bool hasFit() const { return hasFit_; }
+    const CalibrationFit& fit() const { return fit_; }
+    // The row whose residual is largest (-1 without a fit).
+    int worstRow() const;
+    StoredCalibration calibration() const;
+
+    QCustomPlot* plot() const { return plot_; }
+    QTableWidget* table() const { return table_; }
+
+public slots:
+    void measureCurrent();
+    void measureAll();
+    void stopMeasuring();
+
+signals:
+    void calibrationAccepted(const nb::StoredCalibration& calibration);
+    void measuringChanged(bool on);
+
+private:
+    void beginRow(int row);
+    void finishRow();
+    void refit();
+    void redraw();
+    double massAt(int row) const;
+    bool usedAt(int row) const;
+    bool measuredAt(int row) const;
+
+    QString sensor_;
+    double dwell_s_ = 2.0;
+    std::function<void(double)> loadMass_;
+    QTableWidget* table_ = nullptr;
+    QCustomPlot* plot_ = nullptr;
+    QLabel* fitLabel_ = nullptr;
+    QLabel* prompt_ = nullptr;
+    QPushButton* measure_ = nullptr;
+    QPushButton* measureAll_ = nullptr;
+    QPushButton* save_ = nullptr;
+    QDoubleSpinBox* from_ = nullptr;
+    QDoubleSpinBox* to_ = nullptr;
+    QDoubleSpinBox* step_ = nullptr;
+    int measuringRow_ = -1;
+    bool all_ = false;
+    double startTime_ = -1.0;
+    double sum_ = 0.0;
+    int count_ = 0;
+    bool hasFit_ = false;
+    CalibrationFit fit_;
+    std::vector<int> fitRows_;  // table rows behind fit_.residuals_V
+    bool updating_ = false;
+};
+
+}  // namespace nb

@@ -1,0 +1,290 @@
+#include "control_panel.h"
+
+#include <QButtonGroup>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSpinBox>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+namespace nb {
+
+namespace {
+
+QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int decimals, const QString& suffix)
+{
+    auto* s = new QDoubleSpinBox(parent);
+    s->setRange(lo, hi);
+    s->setDecimals(decimals);
+    s->setValue(value);
+    s->setSuffix(suffix);
+    s->setKeyboardTracking(false);
+    return s;
+}
+
+QString yesNo(bool on) { return on ? QObject::tr("yes") : QObject::tr("no"); }
+
+}  // namespace
+
+ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("controlPanel"));
+    auto* layout = new QVBoxLayout(this);
+
+    // Emergency stop first, big and always enabled.
+    auto* estop = addButton(Control::EmergencyStop, tr("EMERGENCY STOP (Esc)"),
+                            tr("Stops the stage at once and ends the run (always available; key: Esc)"));
+    estop->setMinimumHeight(44);
+    estop->setStyleSheet(QStringLiteral("QPushButton { background: #c62828; color: white; font-weight: bold; }"));
+    layout->addWidget(estop);
+    connect(estop, &QPushButton::clicked, this, &ControlPanel::emergencyStopRequested);
+
+    auto* prep = new QGroupBox(tr("1. Prepare"), this);
+    auto* prepLayout = new QVBoxLayout(prep);
+    auto* enable = addButton(Control::Enable, tr("Enable stage"), tr("Powers the stage drive"));
+    enable->setCheckable(true);
+    connect(enable, &QPushButton::clicked, this, [this, enable] { emit enableRequested(enable->isChecked()); });
+    auto* bias = addButton(Control::Bias, tr("Bias force sensor"),
+                           tr("Takes the present force as zero (needle free of tissue)"));
+    connect(bias, &QPushButton::clicked, this, &ControlPanel::biasRequested);
+    auto* zero = addButton(Control::Zero, tr("Zero position"), tr("Makes the present stage position 0 mm"));
+    connect(zero, &QPushButton::clicked, this, &ControlPanel::zeroRequested);
+    auto* calibrate = addButton(Control::Calibrate, tr("Calibrate sensor…"),
+                                tr("Known masses on the load cell, fit V = d·m + c"));
+    connect(calibrate, &QPushButton::clicked, this, &ControlPanel::calibrateRequested);
+    for (auto* b : {enable, bias, zero, calibrate})
+        prepLayout->addWidget(b);
+    layout->addWidget(prep);
+
+    motionBox_ = new QGroupBox(tr("2. Motion"), this);
+    auto* motionLayout = new QVBoxLayout(motionBox_);
+    auto* kinds = new QHBoxLayout;
+    linear_ = new QRadioButton(tr("Linear"), motionBox_);
+    sine_ = new QRadioButton(tr("Sinusoidal"), motionBox_);
+    linear_->setChecked(true);
+    kinds->addWidget(linear_);
+    kinds->addWidget(sine_);
+    motionLayout->addLayout(kinds);
+    motionPages_ = new QStackedWidget(motionBox_);
+    auto* linearPage = new QWidget(motionPages_);
+    auto* linearForm = new QFormLayout(linearPage);
+    linearForm->setContentsMargins(0, 0, 0, 0);
+    velocity_ = spin(linearPage, 0.1, 50.0, 4.0, 2, tr(" mm/s"));
+    depth_ = spin(linearPage, 0.5, 150.0, 30.0, 1, tr(" mm"));
+    linearForm->addRow(tr("Velocity"), velocity_);
+    linearForm->addRow(tr("Depth"), depth_);
+    auto* sinePage = new QWidget(motionPages_);
+    auto* sineForm = new QFormLayout(sinePage);
+    sineForm->setContentsMargins(0, 0, 0, 0);
+    amplitude_ = spin(sinePage, 0.1, 50.0, 10.0, 1, tr(" mm"));
+    frequency_ = spin(sinePage, 0.01, 5.0, 0.5, 2, tr(" Hz"));
+    cycles_ = new QSpinBox(sinePage);
+    cycles_->setRange(1, 100);
+    cycles_->setValue(7);
+    sineForm->addRow(tr("Amplitude"), amplitude_);
+    sineForm->addRow(tr("Frequency"), frequency_);
+    sineForm->addRow(tr("Cycles"), cycles_);
+    motionPages_->addWidget(linearPage);
+    motionPages_->addWidget(sinePage);
+    motionLayout->addWidget(motionPages_);
+    connect(sine_, &QRadioButton::toggled, this, [this](bool on) {
+        motionPages_->setCurrentIndex(on ? 1 : 0);
+        updateControls();
+    });
+    for (QDoubleSpinBox* s : {velocity_, depth_, amplitude_, frequency_})
+        connect(s, &QDoubleSpinBox::valueChanged, this, &ControlPanel::updateControls);
+    connect(cycles_, &QSpinBox::valueChanged, this, &ControlPanel::updateControls);
+    layout->addWidget(motionBox_);
+
+    auto* runBox = new QGroupBox(tr("3. Run"), this);
+    auto* runLayout = new QGridLayout(runBox);
+    auto* start = addButton(Control::StartInsertion, tr("Start insertion (moves + records)"),
+                            tr("Starts recording a new run file, then moves the needle in"));
+    start->setStyleSheet(QStringLiteral("QPushButton:enabled { font-weight: bold; }"));
+    connect(start, &QPushButton::clicked, this, &ControlPanel::startRequested);
+    auto* withdraw = addButton(Control::Withdraw, tr("Withdraw"), tr("Moves the needle back to 0 mm"));
+    connect(withdraw, &QPushButton::clicked, this, [this] { emit withdrawRequested(withdrawVelocity()); });
+    auto* stop = addButton(Control::StopMotion, tr("Stop motion (keeps recording)"),
+                           tr("Decelerates the stage; the run keeps recording until End run"));
+    connect(stop, &QPushButton::clicked, this, &ControlPanel::stopMotionRequested);
+    auto* end = addButton(Control::EndRun, tr("End run (closes the file)"),
+                          tr("Stops recording and closes the run file"));
+    connect(end, &QPushButton::clicked, this, &ControlPanel::endRunRequested);
+    runLayout->addWidget(start, 0, 0, 1, 2);
+    runLayout->addWidget(withdraw, 1, 0, 1, 2);
+    runLayout->addWidget(stop, 2, 0);
+    runLayout->addWidget(end, 2, 1);
+    auto* limitRow = new QHBoxLayout;
+    limitRow->addWidget(new QLabel(tr("Maximum force"), runBox));
+    limit_ = spin(runBox, 0.0, 20.0, 8.0, 2, tr(" N"));
+    limit_->setToolTip(tr("The stage stops at once when the force reaches this (0 = no limit: runs refused)"));
+    limit_->setObjectName(QStringLiteral("forceLimit"));
+    connect(limit_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        state_.forceLimit_N = v;
+        emit forceLimitChanged(v);
+        updateControls();
+    });
+    limitRow->addWidget(limit_, 1);
+    runLayout->addLayout(limitRow, 3, 0, 1, 2);
+    layout->addWidget(runBox);
+
+    auto* statusBox = new QGroupBox(tr("Status"), this);
+    auto* form = new QFormLayout(statusBox);
+    const std::pair<const char*, QString> rows[] = {
+        {"devices", tr("Devices")},       {"stage", tr("Stage")},         {"bias", tr("Bias done")},
+        {"zero", tr("Zero done")},        {"motion", tr("Moving")},       {"recording", tr("Recording")},
+        {"rate", tr("Sample rate")},      {"dropped", tr("Dropped")},     {"force", tr("Force")},
+        {"position", tr("Position")},     {"runtime", tr("Time in run")}, {"margin", tr("Limit margin")},
+        {"calibration", tr("Calibration")}, {"fault", tr("Fault")},
+    };
+    for (const auto& [key, title] : rows) {
+        auto* value = new QLabel(QStringLiteral("–"), statusBox);
+        value->setObjectName(QStringLiteral("status_") + QLatin1String(key));
+        value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        form->addRow(title, value);
+        status_labels_[QString::fromLatin1(key)] = value;
+    }
+    status_labels_[QStringLiteral("fault")]->setWordWrap(true);
+    layout->addWidget(statusBox);
+    layout->addStretch();
+
+    state_.forceLimit_N = limit_->value();
+    updateControls();
+}
+
+QPushButton* ControlPanel::addButton(Control control, const QString& text, const QString& help)
+{
+    auto* b = new QPushButton(text, this);
+    buttons_[control] = b;
+    help_[control] = help;
+    return b;
+}
+
+QAbstractButton* ControlPanel::button(Control control) const
+{
+    const auto it = buttons_.find(control);
+    return it == buttons_.end() ? nullptr : it->second;
+}
+
+devices::RunPlan ControlPanel::motionPlan() const
+{
+    devices::RunPlan plan;
+    plan.motion = sine_->isChecked() ? devices::RunPlan::Motion::Sine : devices::RunPlan::Motion::Linear;
+    plan.linear.velocity_mm_s = velocity_->value();
+    plan.linear.target_mm = depth_->value();
+    plan.sine.amplitude_mm = amplitude_->value();
+    plan.sine.frequency_hz = frequency_->value();
+    plan.sine.cycles = cycles_->value();
+    plan.metadata.set(QStringLiteral("motion"), motionName());
+    if (sine_->isChecked()) {
+        plan.metadata.set(QStringLiteral("amplitude_mm"), amplitude_->value());
+        plan.metadata.set(QStringLiteral("frequency_hz"), frequency_->value());
+        plan.metadata.set(QStringLiteral("cycles"), double(cycles_->value()));
+    } else {
+        plan.metadata.set(QStringLiteral("velocity_mm_s"), velocity_->value());
+        plan.metadata.set(QStringLiteral("depth_mm"), depth_->value());
+    }
+    return plan;
+}
+
+QString ControlPanel::motionName() const
+{
+    return sine_->isChecked() ? QStringLiteral("sine") : QStringLiteral("linear");
+}
+
+double ControlPanel::withdrawVelocity() const { return velocity_->value(); }
+double ControlPanel::forceLimit() const { return limit_->value(); }
+void ControlPanel::setForceLimit(double newtons) { limit_->setValue(newtons); }
+
+QString ControlPanel::motionProblem() const
+{
+    if (sine_->isChecked()) {
+        const double peak = status_.position_mm + amplitude_->value();
+        if (peak > 150.0)
+            return tr("The sine would reach %1 mm, past the stage's travel.").arg(peak, 0, 'f', 1);
+        return {};
+    }
+    if (depth_->value() <= status_.position_mm + 0.01)
+        return tr("The depth (%1 mm) is not deeper than the needle is now (%2 mm).")
+            .arg(depth_->value(), 0, 'f', 1)
+            .arg(status_.position_mm, 0, 'f', 1);
+    return {};
+}
+
+void ControlPanel::setSessionOpen(bool open)
+{
+    state_.sessionOpen = open;
+    updateControls();
+}
+
+void ControlPanel::setCalibrationName(const QString& name)
+{
+    calibrationName_ = name;
+    updateControls();
+}
+
+void ControlPanel::setStatus(const devices::EngineStatus& s)
+{
+    status_ = s;
+    state_.devicesRunning = s.running;
+    state_.fault = s.fault;
+    state_.stageEnabled = s.stageEnabled;
+    state_.biased = s.biased;
+    state_.zeroed = s.zeroed;
+    state_.moving = s.moving;
+    state_.recording = s.recording;
+    state_.calibrated = s.slope_V_per_g > 0.0 && !s.calibrationName.isEmpty();
+    updateControls();
+}
+
+void ControlPanel::updateControls()
+{
+    state_.motionProblem = motionProblem();
+    for (auto& [control, b] : buttons_) {
+        const Permission p = permission(control, state_);
+        b->setEnabled(p.enabled);
+        b->setToolTip(p.enabled ? help_[control] : help_[control] + QStringLiteral("\n") + tr("Not now: %1").arg(p.reason));
+    }
+    const Permission motion = permission(Control::MotionSettings, state_);
+    motionBox_->setEnabled(motion.enabled);
+    motionBox_->setToolTip(motion.enabled ? QString() : motion.reason);
+    auto* enable = buttons_[Control::Enable];
+    enable->setChecked(state_.stageEnabled);
+    enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("Enable stage"));
+    // Whether a withdrawal lands in a file is never left to memory.
+    buttons_[Control::Withdraw]->setText(state_.recording ? tr("Withdraw (recorded in this run)")
+                                                          : tr("Withdraw (not recorded)"));
+
+    const auto set = [this](const char* key, const QString& text, bool alarm = false) {
+        QLabel* l = status_labels_[QString::fromLatin1(key)];
+        l->setText(text);
+        l->setStyleSheet(alarm ? QStringLiteral("color: #c62828; font-weight: bold;") : QString());
+    };
+    const devices::EngineStatus& s = status_;
+    set("devices", s.running ? tr("running") : tr("stopped"), !s.running);
+    set("stage", s.stageEnabled ? tr("enabled") : tr("disabled"));
+    set("bias", s.biased ? tr("yes (%1 V)").arg(s.bias_V, 0, 'f', 4) : yesNo(false), !s.biased);
+    set("zero", yesNo(s.zeroed), !s.zeroed);
+    set("motion", s.moving ? tr("moving, %1 mm/s").arg(s.velocity_mm_s, 0, 'f', 2) : tr("at rest"));
+    set("recording", s.recording ? tr("RECORDING %1").arg(s.runPath.section(QLatin1Char('/'), -1)) : tr("not recording"));
+    set("rate", tr("%1 Hz").arg(s.rateHz, 0, 'f', 0));
+    set("dropped", tr("%1 (overruns %2)").arg(s.dropped).arg(s.overruns), s.dropped + s.overruns > 0);
+    set("force", tr("%1 N").arg(s.force_N, 0, 'f', 3));
+    set("position", tr("%1 mm").arg(s.position_mm, 0, 'f', 3));
+    set("runtime", s.recording ? tr("%1 s").arg(s.runTime_s, 0, 'f', 1) : QStringLiteral("–"));
+    const double margin = state_.forceLimit_N - s.force_N;
+    set("margin",
+        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(margin, 0, 'f', 2).arg(100.0 * margin / state_.forceLimit_N, 0, 'f', 0)
+                                : tr("no limit set"),
+        state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
+    set("calibration", s.calibrationName.isEmpty() ? tr("none") : s.calibrationName, s.calibrationName.isEmpty());
+    set("fault", s.fault.isEmpty() ? (s.forceLimitTripped ? tr("force limit tripped") : tr("none")) : s.fault,
+        !s.fault.isEmpty() || s.forceLimitTripped);
+}
+
+}  // namespace nb

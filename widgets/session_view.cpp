@@ -1,0 +1,115 @@
+#include "session_view.h"
+
+#include <QBrush>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace nb {
+
+void RunListModel::setRuns(std::vector<RunEntry> runs)
+{
+    beginResetModel();
+    runs_ = std::move(runs);
+    endResetModel();
+}
+
+int RunListModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : int(runs_.size()); }
+int RunListModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+
+QVariant RunListModel::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid() || index.row() >= int(runs_.size()))
+        return {};
+    const RunEntry& r = runs_[std::size_t(index.row())];
+    if (role == Qt::DisplayRole) {
+        switch (index.column()) {
+        case Number: return r.number;
+        case File: return r.fileName;
+        case Motion: return r.motion;
+        case State: return runStateName(r.state);
+        case Calibration: return r.calibration;
+        case Modified: return QLocale().toString(r.modified, QLocale::ShortFormat);
+        }
+    } else if (role == Qt::ToolTipRole) {
+        return r.detail.isEmpty() ? r.path : r.path + QLatin1Char('\n') + r.detail;
+    } else if (role == Qt::ForegroundRole && index.column() == State) {
+        switch (r.state) {
+        case RunState::Complete: return QBrush(QColor(30, 120, 40));
+        case RunState::StoppedByLimit:
+        case RunState::Fault:
+        case RunState::Unreadable: return QBrush(QColor(190, 30, 30));
+        case RunState::Interrupted:
+        case RunState::Recovered:
+        case RunState::Stopped: return QBrush(QColor(180, 110, 0));
+        }
+    } else if (role == Qt::UserRole) {
+        return r.path;
+    }
+    return {};
+}
+
+QVariant RunListModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case Number: return tr("#");
+    case File: return tr("File");
+    case Motion: return tr("Motion");
+    case State: return tr("State");
+    case Calibration: return tr("Calibration");
+    case Modified: return tr("Saved");
+    }
+    return {};
+}
+
+SessionView::SessionView(QWidget* parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("sessionView"));
+    header_ = new QLabel(this);
+    header_->setWordWrap(true);
+    header_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    model_ = new RunListModel(this);
+    view_ = new QTableView(this);
+    view_->setModel(model_);
+    view_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view_->verticalHeader()->setVisible(false);
+    view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    view_->horizontalHeader()->setStretchLastSection(true);
+    connect(view_, &QTableView::activated, this,
+            [this](const QModelIndex& i) { emit runActivated(i.siblingAtColumn(0).data(Qt::UserRole).toString()); });
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(header_);
+    layout->addWidget(view_, 1);
+    setSession(nullptr);
+}
+
+void SessionView::setSession(const Session* session)
+{
+    session_ = session;
+    refresh();
+}
+
+void SessionView::refresh()
+{
+    if (!session_) {
+        header_->setText(tr("No session open (Session ▸ New or Open)."));
+        model_->setRuns({});
+        return;
+    }
+    const SessionInfo& i = session_->info();
+    const auto cal = session_->activeCalibration();
+    header_->setText(tr("<b>%1</b> – %2 %3, tip %4, %5 mm, operator %6<br>protocol: %7<br>calibration: %8")
+                         .arg(session_->dir().section(QLatin1Char('/'), -1).toHtmlEscaped(), i.organ.toHtmlEscaped(),
+                              i.specimen.toHtmlEscaped(), i.tip.toHtmlEscaped())
+                         .arg(i.thickness_mm)
+                         .arg(i.operatorName.toHtmlEscaped(), i.protocol.toHtmlEscaped(),
+                              cal ? cal->name.toHtmlEscaped() : tr("none")));
+    model_->setRuns(session_->runs());
+}
+
+}  // namespace nb

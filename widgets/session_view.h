@@ -1,0 +1,55 @@
+#pragma once
+// The session's runs as a table (Qt model/view): number, file, motion, state (complete,
+// stopped by limit, fault, recovered, ...), calibration, time. Above it the specimen and
+// protocol of the session.
+
+#include "core/session.h"
+
+#include <QAbstractTableModel>
+#include <QWidget>
+#include <vector>
+
+class QLabel;
+class QTableView;
+
+namespace nb {
+
+class RunListModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column { Number, File, Motion, State, Calibration, Modified, ColumnCount };
+    using QAbstractTableModel::QAbstractTableModel;
+
+    void setRuns(std::vector<RunEntry> runs);
+    const std::vector<RunEntry>& runs() const { return runs_; }
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+private:
+    std::vector<RunEntry> runs_;
+};
+
+class SessionView : public QWidget {
+    Q_OBJECT
+public:
+    explicit SessionView(QWidget* parent = nullptr);
+    // Shows this session (re-reads its runs); nullptr shows "no session".
+    void setSession(const Session* session);
+    void refresh();
+    RunListModel* model() const { return model_; }
+    QTableView* view() const { return view_; }
+
+signals:
+    void runActivated(const QString& path);
+
+private:
+    const Session* session_ = nullptr;
+    QLabel* header_ = nullptr;
+    RunListModel* model_ = nullptr;
+    QTableView* view_ = nullptr;
+};
+
+}  // namespace nb
