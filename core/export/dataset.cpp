@@ -1,0 +1,127 @@
+#include "dataset.h"
+
+#include <QCoreApplication>
+#include <algorithm>
+
+namespace nb {
+
+namespace {
+
+QString tr(const char* s) { return QCoreApplication::translate("export", s); }
+
+}  // namespace
+
+std::vector<double> gradient(const std::vector<double>& y, const std::vector<double>& t)
+{
+    const std::size_t n = std::min(y.size(), t.size());
+    std::vector<double> d(n, 0.0);
+    if (n < 2)
+        return d;
+    auto slope = [&](std::size_t a, std::size_t b) {
+        const double dt = t[b] - t[a];
+        return dt != 0.0 ? (y[b] - y[a]) / dt : 0.0;
+    };
+    d[0] = slope(0, 1);
+    d[n - 1] = slope(n - 2, n - 1);
+    for (std::size_t i = 1; i + 1 < n; ++i)
+        d[i] = slope(i - 1, i + 1);
+    return d;
+}
+
+std::vector<SignalColumn> exportSignals(const Run& run)
+{
+    std::vector<SignalColumn> cols;
+    cols.push_back({QStringLiteral("time_s"), QStringLiteral("s"), tr("time since the start of the recording"), run.time_s});
+    cols.push_back({QStringLiteral("position_mm"), QStringLiteral("mm"), tr("needle tip depth, grows as the needle goes deeper"),
+                    run.position_mm});
+    const auto* v = run.numericColumn(QStringLiteral("velocity_mm_s"));
+    const std::vector<double> velocity = v && v->size() == run.size() ? *v : gradient(run.position_mm, run.time_s);
+    const auto* a = run.numericColumn(QStringLiteral("acceleration_mm_s2"));
+    const std::vector<double> accel = a && a->size() == run.size() ? *a : gradient(velocity, run.time_s);
+    cols.push_back({QStringLiteral("velocity_mm_s"), QStringLiteral("mm/s"),
+                    v ? tr("needle velocity, recorded") : tr("needle velocity, central differences of position"), velocity});
+    cols.push_back({QStringLiteral("acceleration_mm_s2"), QStringLiteral("mm/s^2"),
+                    a ? tr("needle acceleration, recorded") : tr("needle acceleration, central differences of velocity"),
+                    accel});
+    cols.push_back({QStringLiteral("force_N"), QStringLiteral("N"), tr("axial force, positive when the tissue pushes back"),
+                    run.force_N});
+    for (const auto& [name, values] : run.numeric) {
+        if (name == QLatin1String("velocity_mm_s") || name == QLatin1String("acceleration_mm_s2") ||
+            values.size() != run.size())
+            continue;
+        cols.push_back({name, unitFromName(name), QString(), values});
+    }
+    return cols;
+}
+
+QStringList labelTracks(const Labels& labels)
+{
+    QStringList tracks;
+    for (const Label& l : labels)
+        if (!tracks.contains(l.track))
+            tracks << l.track;
+    return tracks;
+}
+
+QStringList labelsPerSample(const Labels& labels, const std::vector<double>& time_s, const QString& track)
+{
+    QStringList out(qsizetype(time_s.size()));
+    for (const Label& l : labels) {
+        if (l.track != track)
+            continue;
+        // Samples are in time order: find the covered range by bisection, not a scan.
+        const auto first = std::lower_bound(time_s.begin(), time_s.end(), l.start_s);
+        if (l.isPoint()) {
+            if (first != time_s.end())
+                out[first - time_s.begin()] = l.label;
+            continue;
+        }
+        const auto last = std::lower_bound(first, time_s.end(), l.end_s);
+        for (auto it = first; it != last; ++it)
+            out[it - time_s.begin()] = l.label;
+    }
+    return out;
+}
+
+QString unitFromName(const QString& name)
+{
+    // Longest suffixes first so `_mm_s2` is not read as `_s2`.
+    static const std::pair<const char*, const char*> suffixes[] = {
+        {"_mm_s2", "mm/s^2"}, {"_m_s2", "m/s^2"},   {"_mm_s", "mm/s"},   {"_m_s", "m/s"},     {"_n_per_mm2", "N/mm^2"},
+        {"_n_per_mm", "N/mm"}, {"_n_per_m", "N/m"}, {"_ns_per_m2", "N s/m^2"}, {"_ns_per_m", "N s/m"},
+        {"_v_per_g", "V/g"},   {"_hz", "Hz"},       {"_ms", "ms"},       {"_mm", "mm"},       {"_kg", "kg"},
+        {"_mv", "mV"},         {"_v", "V"},         {"_n", "N"},         {"_g", "g"},         {"_s", "s"},
+        {"_m", "m"},           {"_fps", "1/s"},     {"_percent", "%"},
+    };
+    const QString lower = name.toLower();
+    for (const auto& [suffix, unit] : suffixes)
+        if (lower.endsWith(QLatin1String(suffix)))
+            return QString::fromLatin1(unit);
+    return {};
+}
+
+double syncOffset(const Run& run)
+{
+    for (const char* key : {"sync_offset_s", "video_offset_s"}) {
+        const auto v = run.meta(QString::fromLatin1(key));
+        bool ok = false;
+        const double d = v ? v->trimmed().toDouble(&ok) : 0.0;
+        if (ok)
+            return d;
+    }
+    return 0.0;
+}
+
+double videoFps(const Run& run)
+{
+    for (const char* key : {"video_fps", "fps"}) {
+        const auto v = run.meta(QString::fromLatin1(key));
+        bool ok = false;
+        const double d = v ? v->trimmed().toDouble(&ok) : 0.0;
+        if (ok && d > 0.0)
+            return d;
+    }
+    return kDefaultVideoFps;
+}
+
+}  // namespace nb

@@ -1,0 +1,95 @@
+#include "label_intervals.h"
+
+#include "csv_text.h"
+#include "dataset.h"
+#include "export_error.h"
+
+#include <QCoreApplication>
+#include <QSaveFile>
+#include <algorithm>
+
+namespace nb {
+
+long long FrameClock::frameAt(double t_s) const
+{
+    if (!frameTimes_s.empty()) {
+        // The frame on screen at t is the last one shown at or before t.
+        const auto it = std::upper_bound(frameTimes_s.begin(), frameTimes_s.end(), t_s);
+        return it == frameTimes_s.begin() ? 0 : (it - frameTimes_s.begin()) - 1;
+    }
+    // A small epsilon keeps a time exactly on a frame boundary in that frame despite rounding.
+    return static_cast<long long>(std::floor((t_s + offset_s) * fps + 1e-9));
+}
+
+FrameClock frameClockFor(const Run& run)
+{
+    FrameClock c;
+    c.fps = videoFps(run);
+    c.offset_s = syncOffset(run);
+    return c;
+}
+
+std::vector<LabelInterval> labelIntervals(const Run& run, const Labels& labels, const FrameClock& clock)
+{
+    std::vector<LabelInterval> rows;
+    rows.reserve(labels.size());
+    const auto& t = run.time_s;
+    const auto& f = run.force_N;
+    const std::size_t n = std::min(t.size(), f.size());
+    for (const Label& l : labels) {
+        LabelInterval r;
+        r.label = l.label;
+        r.track = l.track;
+        r.start_s = l.start_s;
+        r.end_s = l.end_s;
+        r.duration_s = l.end_s - l.start_s;
+        r.start_frame = clock.frameAt(l.start_s);
+        r.end_frame = clock.frameAt(l.end_s);
+        r.comment = l.comment;
+        const auto begin = t.begin();
+        const auto end = t.begin() + std::ptrdiff_t(n);
+        if (l.isPoint()) {
+            if (n > 0) {
+                auto it = std::lower_bound(begin, end, l.start_s);
+                if (it == end || (it != begin && l.start_s - *(it - 1) < *it - l.start_s))
+                    --it;
+                r.peak_force_N = r.mean_force_N = f[std::size_t(it - begin)];
+            }
+        } else {
+            const auto first = std::lower_bound(begin, end, l.start_s);
+            const auto last = std::lower_bound(first, end, l.end_s);
+            if (first != last) {
+                double peak = -std::numeric_limits<double>::infinity(), sum = 0.0;
+                for (auto it = first; it != last; ++it) {
+                    const double v = f[std::size_t(it - begin)];
+                    peak = std::max(peak, v);
+                    sum += v;
+                }
+                r.peak_force_N = peak;
+                r.mean_force_N = sum / double(last - first);
+            }
+        }
+        rows.push_back(std::move(r));
+    }
+    std::stable_sort(rows.begin(), rows.end(), [](const LabelInterval& a, const LabelInterval& b) {
+        if (a.start_s != b.start_s)
+            return a.start_s < b.start_s;
+        if (a.track != b.track)
+            return a.track < b.track;
+        return a.label < b.label;
+    });
+    return rows;
+}
+
+void writeLabelIntervalsCsv(const QString& path, const std::vector<LabelInterval>& rows)
+{
+    QByteArray out = "label,track,start_s,end_s,duration_s,start_frame,end_frame,peak_force_N,mean_force_N,comment\n";
+    for (const LabelInterval& r : rows) {
+        out += csvField(r.label) + ',' + csvField(r.track) + ',' + csvNumber(r.start_s, 6) + ',' + csvNumber(r.end_s, 6) + ',' +
+               csvNumber(r.duration_s, 6) + ',' + QByteArray::number(r.start_frame) + ',' + QByteArray::number(r.end_frame) +
+               ',' + csvNumber(r.peak_force_N, 6) + ',' + csvNumber(r.mean_force_N, 6) + ',' + csvField(r.comment) + '\n';
+    }
+    writeFileAtomically(path, out);
+}
+
+}  // namespace nb

@@ -1,0 +1,48 @@
+#pragma once
+// Labels as an interval table, one row per label with its video frames and the force in it:
+// `label,track,start_s,end_s,duration_s,start_frame,end_frame,peak_force_N,mean_force_N,comment`.
+
+#include "core/labels.h"
+#include "core/run.h"
+
+#include <QString>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace nb {
+
+struct LabelInterval {
+    QString label;
+    QString track;
+    double start_s = 0.0;
+    double end_s = 0.0;
+    double duration_s = 0.0;
+    long long start_frame = 0;
+    long long end_frame = 0;
+    // NaN when no sample falls in the interval (a point event takes its nearest sample).
+    double peak_force_N = std::numeric_limits<double>::quiet_NaN();
+    double mean_force_N = std::numeric_limits<double>::quiet_NaN();
+    QString comment;
+};
+
+// Maps recording time to a video frame: either a frame rate and an offset (video time =
+// recording time + offset) or a video index (each frame's time in recording time, sorted).
+struct FrameClock {
+    double fps = 29.97;
+    double offset_s = 0.0;
+    std::vector<double> frameTimes_s;  // when not empty, wins over fps/offset
+
+    long long frameAt(double t_s) const;
+};
+
+// The clock a run's metadata describes (sync offset, frame rate; 29.97 fps when unsaid).
+FrameClock frameClockFor(const Run& run);
+
+// Rows in time order (then track, then label).
+std::vector<LabelInterval> labelIntervals(const Run& run, const Labels& labels, const FrameClock& clock);
+
+// Writes the table as CSV (atomically). Throws ExportError.
+void writeLabelIntervalsCsv(const QString& path, const std::vector<LabelInterval>& rows);
+
+}  // namespace nb

@@ -1,0 +1,156 @@
+#include "run_csv_export.h"
+
+#include "csv_text.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+namespace nb {
+
+namespace {
+
+QString tr(const char* s) { return QCoreApplication::translate("export", s); }
+
+QJsonValue valueOf(const QString& text)
+{
+    bool ok = false;
+    const double d = text.trimmed().toDouble(&ok);
+    if (ok && std::isfinite(d))
+        return d;
+    return text;
+}
+
+QJsonObject metadataObject(const Metadata& m)
+{
+    QJsonObject o;
+    for (const auto& [key, value] : m.entries()) {
+        QJsonObject field{{QStringLiteral("value"), valueOf(value)}};
+        const QString unit = unitFromName(key);
+        if (!unit.isEmpty())
+            field.insert(QStringLiteral("unit"), unit);
+        o.insert(key, field);
+    }
+    return o;
+}
+
+// The fields of both header and footer whose key matches one of `prefixes` (footer wins).
+QJsonObject pick(const Run& run, std::initializer_list<const char*> fragments)
+{
+    QJsonObject o;
+    for (const Metadata* m : {&run.metadata, &run.footer}) {
+        for (const auto& [key, value] : m->entries()) {
+            for (const char* f : fragments) {
+                if (key.contains(QLatin1String(f), Qt::CaseInsensitive)) {
+                    o.insert(key, valueOf(value));
+                    break;
+                }
+            }
+        }
+    }
+    return o;
+}
+
+}  // namespace
+
+QString sidecarPath(const QString& csvPath)
+{
+    const QFileInfo fi(csvPath);
+    return fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".json"));
+}
+
+QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName)
+{
+    QJsonArray columns;
+    for (const SignalColumn& c : exportSignals(r.run))
+        columns.append(QJsonObject{{QStringLiteral("name"), c.name},
+                                   {QStringLiteral("unit"), c.unit},
+                                   {QStringLiteral("description"), c.description}});
+    for (const QString& track : labelTracks(r.labels))
+        columns.append(QJsonObject{{QStringLiteral("name"), QStringLiteral("label_") + track},
+                                   {QStringLiteral("unit"), QString()},
+                                   {QStringLiteral("description"), tr("label of track '%1' active at the sample").arg(track)}});
+    QJsonArray labels;
+    for (const Label& l : r.labels)
+        labels.append(QJsonObject{{QStringLiteral("track"), l.track},
+                                  {QStringLiteral("label"), l.label},
+                                  {QStringLiteral("start_s"), l.start_s},
+                                  {QStringLiteral("end_s"), l.end_s},
+                                  {QStringLiteral("comment"), l.comment}});
+    return QJsonObject{
+        {QStringLiteral("format"), QStringLiteral("needlebench-run-export")},
+        {QStringLiteral("version"), 1},
+        {QStringLiteral("run"), r.name},
+        {QStringLiteral("source"), r.sourcePath},
+        {QStringLiteral("csv"), csvFileName},
+        {QStringLiteral("samples"), double(r.run.size())},
+        {QStringLiteral("columns"), columns},
+        {QStringLiteral("metadata"), metadataObject(r.run.metadata)},
+        {QStringLiteral("footer"), metadataObject(r.run.footer)},
+        {QStringLiteral("calibration"), pick(r.run, {"calib", "slope", "v0", "bias", "tare"})},
+        {QStringLiteral("device"), pick(r.run, {"device", "sensor", "stage", "daq", "rig", "serial", "firmware"})},
+        {QStringLiteral("drops"), pick(r.run, {"drop", "lost", "overrun", "gap"})},
+        {QStringLiteral("sync"), QJsonObject{{QStringLiteral("offset_s"), syncOffset(r.run)},
+                                             {QStringLiteral("video_fps"), videoFps(r.run)},
+                                             {QStringLiteral("meaning"), QStringLiteral("video time = recording time + offset_s")}}},
+        {QStringLiteral("labels"), labels},
+    };
+}
+
+bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgress& progress)
+{
+    const std::vector<SignalColumn> cols = exportSignals(r.run);
+    const QStringList tracks = labelTracks(r.labels);
+    std::vector<QStringList> trackValues;
+    for (const QString& t : tracks)
+        trackValues.push_back(labelsPerSample(r.labels, r.run.time_s, t));
+
+    QSaveFile csv(csvPath);
+    if (!csv.open(QIODevice::WriteOnly))
+        throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+    QByteArray buf;
+    for (std::size_t c = 0; c < cols.size(); ++c)
+        buf += (c ? "," : "") + csvField(cols[c].name);
+    for (const QString& t : tracks)
+        buf += ',' + csvField(QStringLiteral("label_") + t);
+    buf += '\n';
+    const std::size_t n = r.run.size();
+    // Time and position keep micro-resolution; other signals a fixed 6 decimals too, which is
+    // below the load cell's and encoder's resolution.
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t c = 0; c < cols.size(); ++c) {
+            if (c)
+                buf += ',';
+            buf += csvNumber(cols[c].values[i], 6);
+        }
+        for (const QStringList& tv : trackValues)
+            buf += ',' + csvField(tv[qsizetype(i)]);
+        buf += '\n';
+        if (buf.size() > (1 << 20) || i + 1 == n) {
+            if (csv.write(buf) != buf.size())
+                throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+            buf.clear();
+            if (!keepGoing(progress, qint64(i + 1), qint64(n))) {
+                csv.cancelWriting();
+                return false;
+            }
+        }
+    }
+    if (!buf.isEmpty() && csv.write(buf) != buf.size())
+        throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+
+    const QString jsonPath = sidecarPath(csvPath);
+    writeFileAtomically(jsonPath,
+                        QJsonDocument(runSidecar(r, QFileInfo(csvPath).fileName())).toJson(QJsonDocument::Indented));
+    if (!csv.commit()) {
+        QFile::remove(jsonPath);
+        throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+    }
+    return true;
+}
+
+}  // namespace nb

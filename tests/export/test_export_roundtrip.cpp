@@ -1,0 +1,484 @@
+// Every exporter writes real files that are read back with independent readers: Qt's CSV
+// splitting and JSON parser, the HDF5 C library (and h5dump), Qt's XML reader.
+#include "core/export/eaf_export.h"
+#include "core/export/fit_table.h"
+#include "core/export/label_intervals.h"
+#include "core/export/run_csv_export.h"
+#include "core/export/session_hdf5.h"
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtTest>
+#include <cmath>
+#include <hdf5.h>
+
+using namespace nb;
+
+namespace {
+
+// 2 s at 500 Hz: 4 mm/s insertion with a force ramp and a drop at 1.5 s.
+DatasetRun makeRun(const QString& name, double forceScale = 1.0)
+{
+    DatasetRun r;
+    r.name = name;
+    r.sourcePath = QStringLiteral("/data/") + name + QStringLiteral(".csv");
+    r.run.metadata.set(QStringLiteral("protocol"), QStringLiteral("stiffness"));
+    r.run.metadata.set(QStringLiteral("rate_hz"), 500.0);
+    r.run.metadata.set(QStringLiteral("sync_offset_s"), 0.5);
+    r.run.metadata.set(QStringLiteral("calibration_slope_V_per_g"), 0.0012);
+    r.run.metadata.set(QStringLiteral("device_force"), QStringLiteral("LabJack U6 #320012345"));
+    r.run.footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
+    r.run.footer.set(QStringLiteral("dropped_samples"), 3.0);
+    for (int i = 0; i < 1000; ++i) {
+        const double t = i / 500.0;
+        r.run.time_s.push_back(t);
+        r.run.position_mm.push_back(4.0 * t);
+        r.run.force_N.push_back(forceScale * (t < 1.5 ? t : 0.2 * t));
+    }
+    r.labels = {
+        {QStringLiteral("insertion"), QStringLiteral("a"), 0.2, 0.6, QString()},
+        {QStringLiteral("insertion"), QStringLiteral("c"), 1.0, 1.5, QStringLiteral("steady, then \"drop\"")},
+        {QStringLiteral("events"), QStringLiteral("puncture"), 1.498, 1.498, QString()},
+    };
+    return r;
+}
+
+QStringList splitCsvLine(const QString& line)
+{
+    QStringList out;
+    QString field;
+    bool quoted = false;
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (quoted) {
+            if (c == u'"' && i + 1 < line.size() && line[i + 1] == u'"') {
+                field += c;
+                ++i;
+            } else if (c == u'"') {
+                quoted = false;
+            } else {
+                field += c;
+            }
+        } else if (c == u'"') {
+            quoted = true;
+        } else if (c == u',') {
+            out << field;
+            field.clear();
+        } else {
+            field += c;
+        }
+    }
+    out << field;
+    return out;
+}
+
+QList<QStringList> readCsv(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    QList<QStringList> rows;
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (!line.isEmpty())
+            rows << splitCsvLine(QString::fromUtf8(line));
+    return rows;
+}
+
+std::vector<double> readDoubles(hid_t file, const char* path)
+{
+    const hid_t d = H5Dopen2(file, path, H5P_DEFAULT);
+    if (d < 0)
+        return {};
+    const hid_t s = H5Dget_space(d);
+    hsize_t n = 0;
+    H5Sget_simple_extent_dims(s, &n, nullptr);
+    std::vector<double> v(n);
+    if (n)
+        H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    H5Sclose(s);
+    H5Dclose(d);
+    return v;
+}
+
+QStringList readStrings(hid_t file, const char* path)
+{
+    const hid_t d = H5Dopen2(file, path, H5P_DEFAULT);
+    if (d < 0)
+        return {};
+    const hid_t s = H5Dget_space(d);
+    hsize_t n = 0;
+    H5Sget_simple_extent_dims(s, &n, nullptr);
+    const hid_t t = H5Tcopy(H5T_C_S1);
+    H5Tset_size(t, H5T_VARIABLE);
+    H5Tset_cset(t, H5T_CSET_UTF8);
+    std::vector<char*> p(n);
+    QStringList out;
+    if (n && H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
+        for (char* c : p)
+            out << QString::fromUtf8(c);
+        H5Dvlen_reclaim(t, s, H5P_DEFAULT, p.data());
+    }
+    H5Tclose(t);
+    H5Sclose(s);
+    H5Dclose(d);
+    return out;
+}
+
+QString readStringAttr(hid_t obj, const char* name)
+{
+    const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
+    if (a < 0)
+        return QStringLiteral("<missing>");
+    const hid_t t = H5Tcopy(H5T_C_S1);
+    H5Tset_size(t, H5T_VARIABLE);
+    H5Tset_cset(t, H5T_CSET_UTF8);
+    char* p = nullptr;
+    QString out = QStringLiteral("<unreadable>");
+    if (H5Aread(a, t, &p) >= 0) {
+        out = QString::fromUtf8(p);
+        H5free_memory(p);
+    }
+    H5Tclose(t);
+    H5Aclose(a);
+    return out;
+}
+
+double readDoubleAttr(hid_t obj, const char* name)
+{
+    const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
+    if (a < 0)
+        return std::nan("");
+    double v = std::nan("");
+    H5Aread(a, H5T_NATIVE_DOUBLE, &v);
+    H5Aclose(a);
+    return v;
+}
+
+QStringList filesIn(const QString& dir) { return QDir(dir).entryList(QDir::Files | QDir::Hidden); }
+
+}  // namespace
+
+class TestExportRoundTrip : public QObject {
+    Q_OBJECT
+
+private slots:
+    void runCsvAndSidecarRoundTrip()
+    {
+        QTemporaryDir dir;
+        const DatasetRun r = makeRun(QStringLiteral("liver5_run01"));
+        const QString csv = dir.filePath(QStringLiteral("liver5_run01.csv"));
+        QVERIFY(writeRunCsv(csv, r));
+
+        const auto rows = readCsv(csv);
+        QCOMPARE(rows.size(), 1001);
+        QCOMPARE(rows[0], (QStringList{"time_s", "position_mm", "velocity_mm_s", "acceleration_mm_s2", "force_N",
+                                       "label_insertion", "label_events"}));
+        for (int i : {0, 1, 250, 749, 999}) {
+            const QStringList& row = rows[i + 1];
+            QCOMPARE(row.size(), 7);
+            QCOMPARE(row[0].toDouble(), r.run.time_s[i]);
+            QVERIFY(std::abs(row[1].toDouble() - r.run.position_mm[i]) < 1e-6);
+            QVERIFY(std::abs(row[2].toDouble() - 4.0) < 1e-6);   // derived velocity of a 4 mm/s ramp
+            QVERIFY(std::abs(row[3].toDouble()) < 1e-6);
+            QVERIFY(std::abs(row[4].toDouble() - r.run.force_N[i]) < 1e-6);
+        }
+        // Sample 250 is t = 0.5 s, inside "a"; 749 (1.498 s) is in "c" and carries the puncture.
+        QCOMPARE(rows[251][5], QStringLiteral("a"));
+        QCOMPARE(rows[300 + 1][5], QString());  // 0.6 s: the interval is half open
+        QCOMPARE(rows[750][5], QStringLiteral("c"));
+        QCOMPARE(rows[750][6], QStringLiteral("puncture"));
+        QCOMPARE(rows[751][6], QString());
+
+        QFile jf(sidecarPath(csv));
+        QVERIFY(jf.open(QIODevice::ReadOnly));
+        QJsonParseError err;
+        const QJsonObject j = QJsonDocument::fromJson(jf.readAll(), &err).object();
+        QCOMPARE(err.error, QJsonParseError::NoError);
+        QCOMPARE(j.value("csv").toString(), QStringLiteral("liver5_run01.csv"));
+        QCOMPARE(j.value("samples").toInt(), 1000);
+        const QJsonObject rate = j.value("metadata").toObject().value("rate_hz").toObject();
+        QCOMPARE(rate.value("value").toDouble(), 500.0);
+        QCOMPARE(rate.value("unit").toString(), QStringLiteral("Hz"));
+        QCOMPARE(j.value("metadata").toObject().value("calibration_slope_V_per_g").toObject().value("unit").toString(),
+                 QStringLiteral("V/g"));
+        QCOMPARE(j.value("calibration").toObject().value("calibration_slope_V_per_g").toDouble(), 0.0012);
+        QCOMPARE(j.value("device").toObject().value("device_force").toString(), QStringLiteral("LabJack U6 #320012345"));
+        QCOMPARE(j.value("drops").toObject().value("dropped_samples").toDouble(), 3.0);
+        QCOMPARE(j.value("footer").toObject().value("end_reason").toObject().value("value").toString(),
+                 QStringLiteral("completed"));
+        QCOMPARE(j.value("sync").toObject().value("offset_s").toDouble(), 0.5);
+        const QJsonArray labels = j.value("labels").toArray();
+        QCOMPARE(labels.size(), 3);
+        QCOMPARE(labels[1].toObject().value("comment").toString(), QStringLiteral("steady, then \"drop\""));
+        const QJsonArray cols = j.value("columns").toArray();
+        QCOMPARE(cols.size(), 7);
+        QCOMPARE(cols[2].toObject().value("unit").toString(), QStringLiteral("mm/s"));
+        QCOMPARE(cols[4].toObject().value("unit").toString(), QStringLiteral("N"));
+    }
+
+    void recordedVelocityIsKept()
+    {
+        QTemporaryDir dir;
+        DatasetRun r = makeRun(QStringLiteral("v"));
+        auto& v = r.run.addNumericColumn(QStringLiteral("velocity_mm_s"));
+        v.assign(r.run.size(), 7.5);
+        auto& volts = r.run.addNumericColumn(QStringLiteral("voltage_V"));
+        volts.assign(r.run.size(), 0.25);
+        const QString csv = dir.filePath(QStringLiteral("v.csv"));
+        QVERIFY(writeRunCsv(csv, r));
+        const auto rows = readCsv(csv);
+        QCOMPARE(rows[0].mid(0, 6), (QStringList{"time_s", "position_mm", "velocity_mm_s", "acceleration_mm_s2", "force_N", "voltage_V"}));
+        QCOMPARE(rows[10][2].toDouble(), 7.5);
+        QCOMPARE(rows[10][5].toDouble(), 0.25);
+    }
+
+    void cancelledCsvLeavesNothing()
+    {
+        QTemporaryDir dir;
+        DatasetRun r = makeRun(QStringLiteral("big"));
+        // Enough rows for several progress calls.
+        for (int i = 1000; i < 200000; ++i) {
+            r.run.time_s.push_back(i / 500.0);
+            r.run.position_mm.push_back(i / 125.0);
+            r.run.force_N.push_back(1.0);
+        }
+        int calls = 0;
+        const bool finished = writeRunCsv(dir.filePath(QStringLiteral("big.csv")), r, [&](qint64, qint64) { return ++calls < 2; });
+        QVERIFY(!finished);
+        QCOMPARE(calls, 2);
+        QCOMPARE(filesIn(dir.path()), QStringList());
+    }
+
+    void unwritableFolderNamesTheFile()
+    {
+        const QString path = QStringLiteral("/nonexistent-folder-nb/run.csv");
+        try {
+            writeRunCsv(path, makeRun(QStringLiteral("x")));
+            QFAIL("no error");
+        } catch (const ExportError& e) {
+            QCOMPARE(e.file(), path);
+            QVERIFY(e.message().contains(path));
+        }
+        try {
+            Dataset d;
+            d.runs.push_back(makeRun(QStringLiteral("x")));
+            writeSessionHdf5(QStringLiteral("/nonexistent-folder-nb/s.h5"), d);
+            QFAIL("no error");
+        } catch (const ExportError& e) {
+            QVERIFY(e.message().contains(QStringLiteral("/nonexistent-folder-nb/s.h5")));
+        }
+    }
+
+    void labelIntervalTable()
+    {
+        const DatasetRun r = makeRun(QStringLiteral("x"));
+        const auto rows = labelIntervals(r.run, r.labels, frameClockFor(r.run));
+        QCOMPARE(rows.size(), std::size_t(3));
+        QCOMPARE(rows[0].label, QStringLiteral("a"));
+        QCOMPARE(rows[0].duration_s, 0.6 - 0.2);
+        // video time = run time + 0.5 s at 29.97 fps
+        QCOMPARE(rows[0].start_frame, (long long)std::floor((0.2 + 0.5) * 29.97));
+        QCOMPARE(rows[0].end_frame, (long long)std::floor((0.6 + 0.5) * 29.97));
+        // force = t on [0.2, 0.6): samples 100..299, peak 299/500, mean of t
+        QVERIFY(std::abs(rows[0].peak_force_N - 299 / 500.0) < 1e-12);
+        QVERIFY(std::abs(rows[0].mean_force_N - (100 + 299) / 2.0 / 500.0) < 1e-12);
+        QCOMPARE(rows[1].label, QStringLiteral("c"));
+        QCOMPARE(rows[2].label, QStringLiteral("puncture"));
+        QCOMPARE(rows[2].duration_s, 0.0);
+        QVERIFY(std::abs(rows[2].peak_force_N - 1.498) < 1e-9);
+
+        // A video index wins over the frame rate.
+        FrameClock indexed;
+        indexed.frameTimes_s = {0.0, 0.1, 0.25, 0.5, 0.7};
+        QCOMPARE(indexed.frameAt(0.2), 1LL);
+        QCOMPARE(indexed.frameAt(0.25), 2LL);
+        QCOMPARE(indexed.frameAt(9.0), 4LL);
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("labels.csv"));
+        writeLabelIntervalsCsv(path, rows);
+        const auto csv = readCsv(path);
+        QCOMPARE(csv[0], (QStringList{"label", "track", "start_s", "end_s", "duration_s", "start_frame", "end_frame",
+                                      "peak_force_N", "mean_force_N", "comment"}));
+        QCOMPARE(csv.size(), 4);
+        QCOMPARE(csv[2][9], QStringLiteral("steady, then \"drop\""));
+        QCOMPARE(csv[1][5].toLongLong(), rows[0].start_frame);
+    }
+
+    void sessionHdf5RoundTrip()
+    {
+        QTemporaryDir dir;
+        Dataset d;
+        d.name = QStringLiteral("liver5 imaging");
+        d.metadata.set(QStringLiteral("tissue"), QStringLiteral("bovine liver 5"));
+        d.metadata.set(QStringLiteral("needle_holder_mass_kg"), 0.087);
+        d.runs.push_back(makeRun(QStringLiteral("run01")));
+        d.runs.push_back(makeRun(QStringLiteral("run/02"), 2.0));
+        d.runs.back().labels.clear();  // a run without labels still gets (empty) label columns
+        const QString path = dir.filePath(QStringLiteral("session.h5"));
+        std::vector<qint64> steps;
+        QVERIFY(writeSessionHdf5(path, d, [&](qint64 done, qint64 total) {
+            steps.push_back(done);
+            return total == 2;
+        }));
+        QCOMPARE(steps, (std::vector<qint64>{0, 1, 2}));
+        QCOMPARE(filesIn(dir.path()), QStringList{QStringLiteral("session.h5")});
+
+        const hid_t f = H5Fopen(QFile::encodeName(path).constData(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        QVERIFY(f >= 0);
+        QCOMPARE(readStringAttr(f, "format"), QStringLiteral("needlebench-session"));
+        QCOMPARE(readStringAttr(f, "tissue"), QStringLiteral("bovine liver 5"));
+        QCOMPARE(readDoubleAttr(f, "needle_holder_mass_kg"), 0.087);
+        QCOMPARE(readStringAttr(f, "needle_holder_mass_kg_units"), QStringLiteral("kg"));
+
+        const auto t = readDoubles(f, "/runs/run01/time_s");
+        QCOMPARE(t, d.runs[0].run.time_s);
+        QCOMPARE(readDoubles(f, "/runs/run01/force_N"), d.runs[0].run.force_N);
+        QCOMPARE(readDoubles(f, "/runs/run_02/force_N"), d.runs[1].run.force_N);
+        const auto v = readDoubles(f, "/runs/run01/velocity_mm_s");
+        QCOMPARE(v.size(), std::size_t(1000));
+        QVERIFY(std::abs(v[500] - 4.0) < 1e-9);
+        const hid_t ds = H5Dopen2(f, "/runs/run01/force_N", H5P_DEFAULT);
+        QCOMPARE(readStringAttr(ds, "units"), QStringLiteral("N"));
+        H5Dclose(ds);
+
+        const hid_t g = H5Gopen2(f, "/runs/run01", H5P_DEFAULT);
+        QVERIFY(g >= 0);
+        QCOMPARE(readDoubleAttr(g, "rate_hz"), 500.0);
+        QCOMPARE(readStringAttr(g, "rate_hz_units"), QStringLiteral("Hz"));
+        QCOMPARE(readStringAttr(g, "protocol"), QStringLiteral("stiffness"));
+        QCOMPARE(readStringAttr(g, "end_reason"), QStringLiteral("completed"));
+        QCOMPARE(readDoubleAttr(g, "dropped_samples"), 3.0);
+        QCOMPARE(readDoubleAttr(g, "sync_offset_s"), 0.5);
+        QCOMPARE(readStringAttr(g, "source"), QStringLiteral("/data/run01.csv"));
+        H5Gclose(g);
+        const hid_t g2 = H5Gopen2(f, "/runs/run_02", H5P_DEFAULT);
+        QCOMPARE(readStringAttr(g2, "name"), QStringLiteral("run/02"));
+        H5Gclose(g2);
+
+        QCOMPARE(readStrings(f, "/runs/run01/labels/label"), (QStringList{"a", "c", "puncture"}));
+        QCOMPARE(readStrings(f, "/runs/run01/labels/track"), (QStringList{"insertion", "insertion", "events"}));
+        QCOMPARE(readStrings(f, "/runs/run01/labels/comment")[1], QStringLiteral("steady, then \"drop\""));
+        const auto intervals = labelIntervals(d.runs[0].run, d.runs[0].labels, frameClockFor(d.runs[0].run));
+        const auto peak = readDoubles(f, "/runs/run01/labels/peak_force_N");
+        QCOMPARE(peak.size(), std::size_t(3));
+        QCOMPARE(peak[0], intervals[0].peak_force_N);
+        QCOMPARE(readDoubles(f, "/runs/run01/labels/start_s"), (std::vector<double>{0.2, 1.0, 1.498}));
+        QVERIFY(readStrings(f, "/runs/run_02/labels/label").isEmpty());
+        QCOMPARE(readDoubles(f, "/runs/run_02/labels/start_s").size(), std::size_t(0));
+        H5Fclose(f);
+
+        // h5dump, a reader that knows nothing of NeedleBench, reads it all.
+        const QString h5dump = QStandardPaths::findExecutable(QStringLiteral("h5dump"));
+        if (!h5dump.isEmpty()) {
+            QProcess p;
+            p.start(h5dump, {QStringLiteral("-A"), path});
+            QVERIFY(p.waitForFinished(30000));
+            QCOMPARE(p.exitCode(), 0);
+            const QByteArray out = p.readAllStandardOutput();
+            QVERIFY(out.contains("GROUP \"run01\""));
+            QVERIFY(out.contains("DATASET \"force_N\""));
+            QVERIFY(out.contains("\"needlebench-session\""));
+        }
+    }
+
+    void cancelledHdf5LeavesNothing()
+    {
+        QTemporaryDir dir;
+        Dataset d;
+        for (int i = 0; i < 3; ++i)
+            d.runs.push_back(makeRun(QStringLiteral("r%1").arg(i)));
+        const QString path = dir.filePath(QStringLiteral("s.h5"));
+        QVERIFY(!writeSessionHdf5(path, d, [](qint64 done, qint64) { return done < 1; }));
+        QCOMPARE(filesIn(dir.path()), QStringList());
+    }
+
+    void eafIsElanXml()
+    {
+        QTemporaryDir dir;
+        const DatasetRun r = makeRun(QStringLiteral("run01"));
+        const QString path = dir.filePath(QStringLiteral("run01.eaf"));
+        writeEaf(path, r, {dir.filePath(QStringLiteral("run01.csv")), dir.filePath(QStringLiteral("run01.mp4"))});
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QXmlStreamReader x(&f);
+        QMap<QString, qint64> timeSlots;
+        QMap<QString, QString> tierOf;  // annotation value -> tier
+        QString tier, media, linked, origin, commentParent;
+        QStringList values;
+        QStringList refs;
+        while (!x.atEnd()) {
+            x.readNext();
+            if (!x.isStartElement())
+                continue;
+            const auto a = x.attributes();
+            if (x.name() == u"TIME_SLOT")
+                timeSlots[a.value("TIME_SLOT_ID").toString()] = a.value("TIME_VALUE").toLongLong();
+            else if (x.name() == u"TIER") {
+                tier = a.value("TIER_ID").toString();
+                if (a.hasAttribute("PARENT_REF"))
+                    commentParent = a.value("PARENT_REF").toString();
+            } else if (x.name() == u"ALIGNABLE_ANNOTATION")
+                refs << a.value("TIME_SLOT_REF1").toString() + u'-' + a.value("TIME_SLOT_REF2").toString();
+            else if (x.name() == u"ANNOTATION_VALUE") {
+                const QString v = x.readElementText();
+                values << v;
+                tierOf[v] = tier;
+            } else if (x.name() == u"MEDIA_DESCRIPTOR") {
+                media = a.value("RELATIVE_MEDIA_URL").toString();
+                origin = a.value("TIME_ORIGIN").toString();
+            } else if (x.name() == u"LINKED_FILE_DESCRIPTOR")
+                linked = a.value("RELATIVE_LINK_URL").toString();
+        }
+        QVERIFY2(!x.hasError(), qPrintable(x.errorString()));
+        QCOMPARE(values, (QStringList{"a", "c", "puncture", "steady, then \"drop\""}));
+        QCOMPARE(tierOf["a"], QStringLiteral("insertion"));
+        QCOMPARE(tierOf["puncture"], QStringLiteral("events"));
+        QCOMPARE(tierOf["steady, then \"drop\""], QStringLiteral("insertion comment"));
+        QCOMPARE(commentParent, QStringLiteral("insertion"));
+        QCOMPARE(media, QStringLiteral("./run01.mp4"));
+        QCOMPARE(origin, QStringLiteral("500"));
+        QCOMPARE(linked, QStringLiteral("./run01.csv"));
+        QCOMPARE(refs.size(), 3);
+        const QStringList first = refs[0].split(u'-');
+        QCOMPARE(timeSlots[first[0]], 200);
+        QCOMPARE(timeSlots[first[1]], 600);
+        const QStringList point = refs[2].split(u'-');
+        QCOMPARE(timeSlots[point[0]], 1498);
+        QCOMPARE(timeSlots[point[1]], 1499);  // a point becomes a 1 ms annotation
+    }
+
+    void fitTableCsvAndLatex()
+    {
+        FitTable t;
+        t.caption = QStringLiteral("Pooled fits (4 mm/s)");
+        t.label = QStringLiteral("tab:stiffness");
+        t.columns = {{QStringLiteral("liver"), QStringLiteral("liver"), {}, -1, {}},
+                     {QStringLiteral("a1_N_per_mm"), QStringLiteral("a1"), QStringLiteral("N/mm"), 4, QStringLiteral("$a_1$")},
+                     {QStringLiteral("r2"), QStringLiteral("r^2 & more"), {}, 3, {}}};
+        t.rows = {{QStringLiteral("liver_1"), 0.048, 0.99512}, {QStringLiteral("pooled"), 0.05, std::nan("")}};
+        const QByteArray csv = fitTableCsv(t);
+        QCOMPARE(csv, QByteArray("liver,a1_N_per_mm,r2\nliver_1,0.0480,0.995\npooled,0.0500,\n"));
+        const QString tex = QString::fromUtf8(fitTableLatex(t));
+        QVERIFY(tex.contains(QStringLiteral("\\begin{tabular}{lrr}")));
+        QVERIFY(tex.contains(QStringLiteral("liver & $a_1$ & r\\textasciicircum{}2 \\& more \\\\")));
+        QVERIFY(tex.contains(QStringLiteral(" & [N/mm] &  \\\\")));
+        QVERIFY(tex.contains(QStringLiteral("liver\\_1 & 0.0480 & 0.995 \\\\")));
+        QVERIFY(tex.contains(QStringLiteral("pooled & 0.0500 & -- \\\\")));
+        QVERIFY(tex.contains(QStringLiteral("\\caption{Pooled fits (4 mm/s)}")));
+        QTemporaryDir dir;
+        writeFitTableLatex(dir.filePath(QStringLiteral("t.tex")), t);
+        QFile f(dir.filePath(QStringLiteral("t.tex")));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), tex.toUtf8());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestExportRoundTrip)
+#include "test_export_roundtrip.moc"
