@@ -1,0 +1,287 @@
+#include "events.h"
+
+#include "fit_error.h"
+#include "signal.h"
+
+#include <Eigen/Dense>
+#include <QCoreApplication>
+#include <algorithm>
+#include <cmath>
+
+namespace nb {
+
+namespace {
+
+struct Peak {
+    std::size_t peak = 0, trough = 0;
+    double drop = 0.0;
+};
+
+// Hysteresis ("zigzag") peak finder: a peak is confirmed once the signal falls `h` below
+// it, its trough once the signal rises `h` above that. Noise smaller than h never
+// confirms anything, so no derivative thresholds are needed.
+std::vector<Peak> findDrops(const std::vector<double>& f, double h)
+{
+    std::vector<Peak> peaks;
+    if (f.empty())
+        return peaks;
+    bool falling = false;
+    std::size_t maxI = 0, minI = 0;
+    for (std::size_t i = 1; i < f.size(); ++i) {
+        if (!falling) {
+            if (f[i] > f[maxI])
+                maxI = i;
+            else if (f[maxI] - f[i] >= h) {
+                falling = true;
+                minI = i;
+            }
+        } else {
+            if (f[i] < f[minI])
+                minI = i;
+            else if (f[i] - f[minI] >= h) {
+                peaks.push_back({maxI, minI, f[maxI] - f[minI]});
+                falling = false;
+                maxI = i;
+            }
+        }
+    }
+    if (falling)
+        peaks.push_back({maxI, minI, f[maxI] - f[minI]});
+    return peaks;
+}
+
+// Sample noise from first differences (robust to the slow trend of the force).
+double noiseFromDifferences(std::span<const double> f)
+{
+    if (f.size() < 3)
+        return 0.0;
+    std::vector<double> d;
+    d.reserve(f.size() - 1);
+    for (std::size_t i = 1; i < f.size(); ++i)
+        d.push_back(std::fabs(f[i] - f[i - 1]));
+    std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(d.size() / 2), d.end());
+    return d[d.size() / 2] / (0.6745 * std::sqrt(2.0));
+}
+
+// The sharp peak sits between samples of the smoothed signal; look for it in the raw
+// force near there, averaging a few samples before it so noise does not pick the maximum.
+std::size_t refinePeak(std::span<const double> f, std::size_t around, std::size_t radius)
+{
+    const std::size_t lo = around > radius ? around - radius : 0;
+    const std::size_t hi = std::min(f.size() - 1, around + radius);
+    constexpr std::size_t k = 5;
+    std::size_t best = around;
+    double bestValue = -INFINITY;
+    for (std::size_t i = lo; i <= hi; ++i) {
+        const std::size_t from = i >= k - 1 ? i - (k - 1) : 0;
+        double s = 0.0;
+        for (std::size_t j = from; j <= i; ++j)
+            s += f[j];
+        s /= double(i - from + 1);
+        if (s > bestValue) {
+            bestValue = s;
+            best = i;
+        }
+    }
+    return best;
+}
+
+double trailingMean(std::span<const double> f, std::size_t i, std::size_t k)
+{
+    const std::size_t from = i + 1 >= k ? i + 1 - k : 0;
+    double s = 0.0;
+    for (std::size_t j = from; j <= i; ++j)
+        s += f[j];
+    return s / double(i - from + 1);
+}
+
+struct ContactTrial {
+    double sse = INFINITY;
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+};
+
+ContactTrial tryContact(std::span<const double> pos, std::span<const double> force, double xc)
+{
+    Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < pos.size(); ++i) {
+        const double d = std::max(0.0, pos[i] - xc);
+        const Eigen::Vector3d row(1.0, d, d * d);
+        S.noalias() += row * row.transpose();
+        b.noalias() += row * force[i];
+    }
+    ContactTrial t;
+    // A 3x3 system per trial keeps the search O(n) per step; columns are 1, d, d² with d in
+    // mm, so conditioning is far from a problem here.
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(S);
+    if (ldlt.info() != Eigen::Success)
+        return t;
+    t.x = ldlt.solve(b);
+    double sse = 0.0;
+    for (std::size_t i = 0; i < pos.size(); ++i) {
+        const double d = std::max(0.0, pos[i] - xc);
+        const double r = force[i] - (t.x(0) + t.x(1) * d + t.x(2) * d * d);
+        sse += r * r;
+    }
+    t.sse = std::isfinite(sse) ? sse : INFINITY;
+    return t;
+}
+
+RunEvent eventAt(const Run& run, std::size_t i, double offset)
+{
+    return {i, run.time_s[i], run.position_mm[i], run.force_N[i] - offset};
+}
+
+}  // namespace
+
+ContactFit fitContact(std::span<const double> pos, std::span<const double> force)
+{
+    const std::size_t n = std::min(pos.size(), force.size());
+    if (n < 8)
+        throw FitError(QCoreApplication::translate("nb::fit", "too few samples before the puncture (%1) to fit the contact")
+                           .arg(n));
+    pos = pos.first(n);
+    force = force.first(n);
+    const double lo = *std::min_element(pos.begin(), pos.end());
+    // At least a few samples must lie past the contact for a1, a2 to be defined.
+    std::vector<double> sorted(pos.begin(), pos.end());
+    std::sort(sorted.begin(), sorted.end());
+    const double hi = sorted[n - 4];
+    if (!(hi > lo))
+        throw FitError(QCoreApplication::translate("nb::fit", "the needle does not move before the puncture"));
+
+    // Coarse grid, then golden section around the best cell: the error is smooth between
+    // samples but not convex over the whole stroke.
+    constexpr int grid = 200;
+    const double step = (hi - lo) / grid;
+    int best = 0;
+    double bestSse = INFINITY;
+    for (int k = 0; k <= grid; ++k) {
+        const double s = tryContact(pos, force, lo + k * step).sse;
+        if (s < bestSse) {
+            bestSse = s;
+            best = k;
+        }
+    }
+    double a = lo + std::max(0, best - 1) * step;
+    double b = lo + std::min(grid, best + 1) * step;
+    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+    double c = b - g * (b - a), d = a + g * (b - a);
+    double fc = tryContact(pos, force, c).sse, fd = tryContact(pos, force, d).sse;
+    for (int it = 0; it < 40 && (b - a) > 1e-6; ++it) {
+        if (fc < fd) {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = tryContact(pos, force, c).sse;
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = tryContact(pos, force, d).sse;
+        }
+    }
+    double xc = (a + b) / 2.0;
+    ContactTrial t = tryContact(pos, force, xc);
+    if (const double gridX = lo + best * step; bestSse < t.sse) {
+        xc = gridX;
+        t = tryContact(pos, force, xc);
+    }
+    if (!std::isfinite(t.sse))
+        throw FitError(QCoreApplication::translate("nb::fit", "the contact fit failed (degenerate samples)"));
+    ContactFit fit;
+    fit.contact_mm = xc;
+    fit.offset_N = t.x(0);
+    fit.stiffness = {t.x(1), t.x(2)};
+    fit.rms_N = std::sqrt(t.sse / double(n));
+    return fit;
+}
+
+InsertionEvents detectEvents(const Run& run, const EventOptions& options)
+{
+    const std::size_t total = run.size();
+    if (total < 20)
+        throw FitError(QCoreApplication::translate("nb::fit", "too few samples (%1) for event detection").arg(total));
+    for (std::size_t i = 0; i < total; ++i)
+        if (!std::isfinite(run.position_mm[i]) || !std::isfinite(run.force_N[i]) || !std::isfinite(run.time_s[i]))
+            throw FitError(QCoreApplication::translate("nb::fit", "sample %1 is not a finite number").arg(i + 1));
+    const std::size_t end =
+        std::size_t(std::max_element(run.position_mm.begin(), run.position_mm.end()) - run.position_mm.begin()) + 1;
+    const double travel = run.position_mm[end - 1] - run.position_mm[0];
+    const double duration = run.time_s[end - 1] - run.time_s[0];
+    if (end < 20 || !(travel > 0.0) || !(duration > 0.0))
+        throw FitError(QCoreApplication::translate("nb::fit", "the needle does not move forward"));
+
+    const std::span<const double> force(run.force_N.data(), end);
+    const std::span<const double> pos(run.position_mm.data(), end);
+    const std::span<const double> time(run.time_s.data(), end);
+    const double speed = travel / duration;
+    const int window = std::max(1, windowForDuration(time, options.smoothing_mm / speed) | 1);
+    const std::vector<double> smooth = movingAverage(force, window);
+
+    InsertionEvents ev;
+    ev.noise_N = noiseFromDifferences(force);
+    const double smoothNoise = ev.noise_N / std::sqrt(double(window));
+    const double h = std::max(options.minInternalDrop_N, 8.0 * smoothNoise);
+    const std::vector<Peak> drops = findDrops(smooth, h);
+
+    std::optional<Peak> main;
+    std::size_t mainNo = 0;
+    for (std::size_t k = 0; k < drops.size() && !main; ++k) {
+        const double base = *std::min_element(smooth.begin(), smooth.begin() + std::ptrdiff_t(drops[k].peak) + 1);
+        const double rise = smooth[drops[k].peak] - base;
+        if (drops[k].drop >= std::max(options.minPunctureDrop_N, options.punctureDropFraction * rise)) {
+            main = drops[k];
+            mainNo = k;
+        }
+    }
+    if (!main)
+        throw FitError(QCoreApplication::translate("nb::fit", "no puncture: the force never drops sharply "
+                                                               "(by %1 N or %2 % of its peak)")
+                           .arg(options.minPunctureDrop_N)
+                           .arg(options.punctureDropFraction * 100.0));
+
+    const std::size_t radius = std::size_t(window);
+    const std::size_t punctureIdx = refinePeak(force, main->peak, radius);
+    const ContactFit contact = fitContact(pos.first(punctureIdx + 1), force.first(punctureIdx + 1));
+    ev.zeroOffset_N = contact.offset_N;
+    ev.stiffness = contact.stiffness;
+    ev.stiffnessRms_N = contact.rms_N;
+
+    std::size_t ci = 0;
+    while (ci < punctureIdx && pos[ci] < contact.contact_mm)
+        ++ci;
+    ev.contact = eventAt(run, ci, ev.zeroOffset_N);
+    ev.contact.position_mm = contact.contact_mm;
+    ev.contact.force_N = smooth[ci] - ev.zeroOffset_N;
+    if (ci > 0 && pos[ci] > pos[ci - 1]) {
+        const double u = (contact.contact_mm - pos[ci - 1]) / (pos[ci] - pos[ci - 1]);
+        ev.contact.time_s = time[ci - 1] + std::clamp(u, 0.0, 1.0) * (time[ci] - time[ci - 1]);
+    }
+
+    ev.puncture = eventAt(run, punctureIdx, ev.zeroOffset_N);
+    ev.puncture.force_N = trailingMean(force, punctureIdx, 5) - ev.zeroOffset_N;
+
+    // The drop ends where the smoothed force first comes within noise of its trough.
+    std::size_t relax = main->trough;
+    for (std::size_t i = main->peak; i < main->trough; ++i) {
+        if (smooth[i] <= smooth[main->trough] + 2.0 * smoothNoise) {
+            relax = i;
+            break;
+        }
+    }
+    ev.relaxation = eventAt(run, relax, ev.zeroOffset_N);
+    ev.relaxation->force_N = smooth[relax] - ev.zeroOffset_N;
+
+    for (std::size_t k = mainNo + 1; k < drops.size(); ++k) {
+        const std::size_t i = refinePeak(force, drops[k].peak, radius);
+        RunEvent e = eventAt(run, i, ev.zeroOffset_N);
+        e.force_N = trailingMean(force, i, 5) - ev.zeroOffset_N;
+        ev.internalPunctures.push_back(e);
+    }
+    return ev;
+}
+
+}  // namespace nb

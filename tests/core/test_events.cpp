@@ -1,0 +1,134 @@
+// Event detection on synthetic constant-velocity insertions with known contact, puncture,
+// relaxation and internal punctures (Table 2 parameters, 6 mN noise, 500 Hz, 4 mm/s).
+#include "core/events.h"
+#include "core/fit_error.h"
+#include "synthetic.h"
+
+#include <QtTest>
+#include <cmath>
+
+using namespace nb;
+
+class TestEvents : public QObject {
+    Q_OBJECT
+
+    static synthetic::Insertion liver(int row)
+    {
+        synthetic::Insertion p;
+        switch (row) {
+        case 1: p.a1_N_per_mm = 0.0480; p.a2_N_per_mm2 = 0.0052; p.punctureDepth_mm = 16.5732; break;
+        case 3: p.a1_N_per_mm = 0.0371; p.a2_N_per_mm2 = 0.0107; p.punctureDepth_mm = 8.9458; break;
+        case 5: p.a1_N_per_mm = 0.0204; p.a2_N_per_mm2 = 0.0008; p.punctureDepth_mm = 10.4022; break;
+        }
+        return p;
+    }
+
+private slots:
+    void contactFitMeetsTargets_data()
+    {
+        QTest::addColumn<int>("liver");
+        QTest::addColumn<int>("seed");
+        for (int l : {1, 3})
+            for (int s = 1; s <= 5; ++s)
+                QTest::addRow("liver%d seed%d", l, s) << l << s;
+    }
+    void contactFitMeetsTargets()
+    {
+        QFETCH(int, liver);
+        QFETCH(int, seed);
+        auto p = this->liver(liver);
+        p.seed = std::uint32_t(seed);
+        const auto ev = detectEvents(synthetic::makeInsertion(p));
+        const QString got = QStringLiteral("contact %1 a1 %2 a2 %3")
+                                .arg(ev.contact.position_mm)
+                                .arg(ev.stiffness.a1_N_per_mm)
+                                .arg(ev.stiffness.a2_N_per_mm2);
+        QVERIFY2(std::fabs(ev.contact.position_mm - p.contact_mm) < 0.3, qPrintable(got));
+        QVERIFY2(std::fabs(ev.stiffness.a1_N_per_mm / p.a1_N_per_mm - 1.0) < 0.10, qPrintable(got));
+        QVERIFY2(std::fabs(ev.stiffness.a2_N_per_mm2 / p.a2_N_per_mm2 - 1.0) < 0.05, qPrintable(got));
+        QVERIFY(std::fabs(ev.zeroOffset_N - p.offset_N) < 0.003);
+        QVERIFY(std::fabs(ev.noise_N - p.noise_N) < 0.001);
+        QVERIFY(std::fabs(ev.contact.time_s - p.contact_mm / p.speed_mm_s) < 0.3 / p.speed_mm_s);
+    }
+    void punctureAndRelaxation()
+    {
+        for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+            auto p = liver(1);
+            p.seed = seed;
+            const auto ev = detectEvents(synthetic::makeInsertion(p));
+            const double peak = StiffnessModel{p.a1_N_per_mm, p.a2_N_per_mm2}(p.punctureDepth_mm);
+            QVERIFY2(std::fabs(ev.puncture.position_mm - p.puncture_mm()) < 0.1,
+                     qPrintable(QString::number(ev.puncture.position_mm)));
+            QVERIFY(std::fabs(ev.puncture.force_N - peak) < 0.03);
+            QVERIFY(std::fabs(ev.punctureDepth_mm() - p.punctureDepth_mm) < 0.35);
+            QVERIFY(ev.relaxation.has_value());
+            // The drop ends dropTravel_mm past the peak.
+            QVERIFY2(std::fabs(ev.relaxation->position_mm - (p.puncture_mm() + p.dropTravel_mm)) < 0.15,
+                     qPrintable(QString::number(ev.relaxation->position_mm)));
+            QVERIFY(ev.relaxation->force_N < 0.3 * peak);
+            QVERIFY(ev.internalPunctures.empty());
+        }
+    }
+    void internalPuncturesFound()
+    {
+        auto p = liver(1);
+        p.internal = {{4.0, 0.1}, {9.0, 0.06}};
+        const auto ev = detectEvents(synthetic::makeInsertion(p));
+        QCOMPARE(ev.internalPunctures.size(), std::size_t(2));
+        QVERIFY(std::fabs(ev.internalPunctures[0].position_mm - (p.puncture_mm() + 4.0)) < 0.15);
+        QVERIFY(std::fabs(ev.internalPunctures[1].position_mm - (p.puncture_mm() + 9.0)) < 0.15);
+        QVERIFY(ev.internalPunctures[0].time_s > ev.puncture.time_s);
+    }
+    void lowStiffnessLiverStillPunctures()
+    {
+        auto p = liver(5);
+        const auto ev = detectEvents(synthetic::makeInsertion(p));
+        QVERIFY(std::fabs(ev.puncture.position_mm - p.puncture_mm()) < 0.15);
+        QVERIFY(std::fabs(ev.contact.position_mm - p.contact_mm) < 0.5);
+    }
+    void onlyForwardStrokeCounts()
+    {
+        // The stage stops and backs out after the stroke; the samples after the deepest
+        // point must not produce events.
+        auto p = liver(1);
+        Run run = synthetic::makeInsertion(p);
+        const std::size_t n = run.size();
+        for (std::size_t i = 1; i < 500; ++i) {
+            run.time_s.push_back(run.time_s[n - 1] + double(i) / p.rate_hz);
+            run.position_mm.push_back(run.position_mm[n - 1] - 4.0 * double(i) / p.rate_hz);
+            run.force_N.push_back(run.force_N[n - 1] - 1.0);
+        }
+        const auto ev = detectEvents(run);
+        QVERIFY(ev.internalPunctures.empty());
+        QVERIFY(std::fabs(ev.puncture.position_mm - p.puncture_mm()) < 0.1);
+    }
+    void noPunctureThrows()
+    {
+        auto p = liver(1);
+        p.punctureDepth_mm = 100.0;  // never reached
+        QVERIFY_THROWS_EXCEPTION(FitError, detectEvents(synthetic::makeInsertion(p)));
+    }
+    void noMotionOrTooFewSamplesThrow()
+    {
+        Run still;
+        for (int i = 0; i < 1000; ++i) {
+            still.time_s.push_back(i * 0.002);
+            still.position_mm.push_back(3.0);
+            still.force_N.push_back(0.01 * (i % 7));
+        }
+        QVERIFY_THROWS_EXCEPTION(FitError, detectEvents(still));
+        Run tiny;
+        for (int i = 0; i < 5; ++i) {
+            tiny.time_s.push_back(i);
+            tiny.position_mm.push_back(i);
+            tiny.force_N.push_back(0);
+        }
+        QVERIFY_THROWS_EXCEPTION(FitError, detectEvents(tiny));
+        Run nan = synthetic::makeInsertion(liver(1));
+        nan.force_N[100] = std::nan("");
+        QVERIFY_THROWS_EXCEPTION(FitError, detectEvents(nan));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestEvents)
+#include "test_events.moc"
