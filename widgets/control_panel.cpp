@@ -86,6 +86,13 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     cycles_ = new QSpinBox(sinePage);
     cycles_->setRange(1, 100);
     cycles_->setValue(7);
+    velocity_->setObjectName(QStringLiteral("velocity"));
+    depth_->setObjectName(QStringLiteral("depth"));
+    amplitude_->setObjectName(QStringLiteral("amplitude"));
+    frequency_->setObjectName(QStringLiteral("frequency"));
+    cycles_->setObjectName(QStringLiteral("cycles"));
+    linear_->setObjectName(QStringLiteral("linear"));
+    sine_->setObjectName(QStringLiteral("sine"));
     sineForm->addRow(tr("Amplitude"), amplitude_);
     sineForm->addRow(tr("Frequency"), frequency_);
     sineForm->addRow(tr("Cycles"), cycles_);

@@ -1,0 +1,161 @@
+// The operator's sequence: each control enabled only when its prerequisites hold, with the
+// reason in its tooltip; the pure rules first, then the real panel driven with QTest.
+#include "widgets/control_panel.h"
+#include "widgets/interlocks.h"
+
+#include <QAbstractButton>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QSignalSpy>
+#include <QtTest>
+
+using nb::Control;
+using nb::InterlockState;
+using nb::permission;
+
+class TestInterlocks : public QObject {
+    Q_OBJECT
+private slots:
+    void sequenceOfThePanel()
+    {
+        InterlockState s;
+        s.sessionOpen = true;
+        s.calibrated = true;
+        s.forceLimit_N = 8.0;
+        // Nothing moves before the devices run; the E-stop is always there.
+        QVERIFY(!permission(Control::Enable, s).enabled);
+        QVERIFY(permission(Control::EmergencyStop, s).enabled);
+        s.devicesRunning = true;
+        QVERIFY(permission(Control::Enable, s).enabled);
+        QVERIFY(permission(Control::Bias, s).enabled);
+        QVERIFY(!permission(Control::Zero, s).enabled);
+        QVERIFY(permission(Control::Zero, s).reason.contains(QStringLiteral("Enable")));
+        QVERIFY(!permission(Control::StartInsertion, s).enabled);
+        s.stageEnabled = true;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("Bias")));
+        s.biased = true;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("Zero")));
+        QVERIFY(!permission(Control::Withdraw, s).enabled);
+        s.zeroed = true;
+        QVERIFY(permission(Control::StartInsertion, s).enabled);
+        QVERIFY(permission(Control::Withdraw, s).enabled);
+        QVERIFY(!permission(Control::StopMotion, s).enabled);
+        QVERIFY(!permission(Control::EndRun, s).enabled);
+
+        // Recording and moving: only stop and E-stop; nothing that would spoil the run.
+        s.recording = s.moving = true;
+        QVERIFY(permission(Control::StopMotion, s).enabled);
+        QVERIFY(!permission(Control::StartInsertion, s).enabled);
+        QVERIFY(!permission(Control::Bias, s).enabled);
+        QVERIFY(!permission(Control::Zero, s).enabled);
+        QVERIFY(!permission(Control::Enable, s).enabled);
+        QVERIFY(!permission(Control::MotionSettings, s).enabled);
+        QVERIFY(!permission(Control::Calibrate, s).enabled);
+        // End run does not stop the stage: it waits for Stop motion.
+        QVERIFY(!permission(Control::EndRun, s).enabled);
+        QVERIFY(permission(Control::EndRun, s).reason.contains(QStringLiteral("Stop the motion")));
+        s.moving = false;
+        QVERIFY(permission(Control::EndRun, s).enabled);
+        QVERIFY(permission(Control::Withdraw, s).enabled);
+        QVERIFY(!permission(Control::Enable, s).enabled);  // disabling mid-run would end it unrecorded
+        s.recording = false;
+        QVERIFY(permission(Control::Enable, s).enabled);
+    }
+
+    void prerequisitesOfAnInsertion()
+    {
+        InterlockState s;
+        s.devicesRunning = s.stageEnabled = s.biased = s.zeroed = true;
+        s.forceLimit_N = 8.0;
+        s.calibrated = true;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("session")));
+        s.sessionOpen = true;
+        s.calibrated = false;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("calibration")));
+        s.calibrated = true;
+        s.forceLimit_N = 0.0;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("limit")));
+        s.forceLimit_N = 8.0;
+        s.motionProblem = QStringLiteral("too deep");
+        QCOMPARE(permission(Control::StartInsertion, s).reason, QStringLiteral("too deep"));
+        s.motionProblem.clear();
+        s.fault = QStringLiteral("sensor: no reply");
+        QVERIFY(!permission(Control::StartInsertion, s).enabled);
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("no reply")));
+        QVERIFY(permission(Control::EmergencyStop, s).enabled);
+        s.recording = true;
+        QVERIFY(permission(Control::EndRun, s).enabled);  // a faulted run can still be closed
+    }
+
+    void panelFollowsTheEngineState()
+    {
+        nb::ControlPanel panel;
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QSignalSpy estop(&panel, &nb::ControlPanel::emergencyStopRequested);
+        QSignalSpy enable(&panel, &nb::ControlPanel::enableRequested);
+        QSignalSpy start(&panel, &nb::ControlPanel::startRequested);
+        auto* startButton = panel.button(Control::StartInsertion);
+        auto* estopButton = panel.button(Control::EmergencyStop);
+        QVERIFY(!startButton->isEnabled());
+        QVERIFY(estopButton->isEnabled());
+        QTest::mouseClick(estopButton, Qt::LeftButton);
+        QCOMPARE(estop.count(), 1);
+        // Clicking a disabled control does nothing.
+        QTest::mouseClick(startButton, Qt::LeftButton);
+        QCOMPARE(start.count(), 0);
+
+        nb::devices::EngineStatus s;
+        s.running = true;
+        s.slope_V_per_g = 0.012;
+        s.calibrationName = QStringLiteral("cal_1");
+        panel.setSessionOpen(true);
+        panel.setStatus(s);
+        QTest::mouseClick(panel.button(Control::Enable), Qt::LeftButton);
+        QCOMPARE(enable.count(), 1);
+        QCOMPARE(enable.first().first().toBool(), true);
+        QVERIFY(startButton->toolTip().contains(QStringLiteral("Enable the stage first")));
+        s.stageEnabled = true;
+        panel.setStatus(s);
+        QCOMPARE(panel.button(Control::Enable)->text(), QStringLiteral("Disable stage"));
+        QVERIFY(startButton->toolTip().contains(QStringLiteral("Bias")));
+        s.biased = s.zeroed = true;
+        panel.setStatus(s);
+        QVERIFY(startButton->isEnabled());
+        QVERIFY(panel.button(Control::Withdraw)->text().contains(QStringLiteral("not recorded")));
+
+        // A depth shallower than the needle already is cannot start.
+        auto* depth = panel.findChild<QDoubleSpinBox*>(QStringLiteral("depth"));
+        QVERIFY(depth);
+        s.position_mm = 40.0;
+        panel.setStatus(s);
+        QVERIFY(!startButton->isEnabled());
+        QVERIFY(startButton->toolTip().contains(QStringLiteral("not deeper")));
+        s.position_mm = 0.0;
+        panel.setStatus(s);
+        QTest::mouseClick(startButton, Qt::LeftButton);
+        QCOMPARE(start.count(), 1);
+        QCOMPARE(panel.motionPlan().linear.target_mm, depth->value());
+
+        // No force limit: no run.
+        auto* limit = panel.findChild<QDoubleSpinBox*>(QStringLiteral("forceLimit"));
+        limit->setValue(0.0);
+        QVERIFY(!startButton->isEnabled());
+        limit->setValue(5.0);
+        QVERIFY(startButton->isEnabled());
+
+        s.recording = s.moving = true;
+        s.force_N = 4.5;
+        panel.setStatus(s);
+        QVERIFY(!startButton->isEnabled());
+        QVERIFY(panel.button(Control::StopMotion)->isEnabled());
+        QVERIFY(!panel.button(Control::EndRun)->isEnabled());
+        QVERIFY(panel.button(Control::Withdraw)->text().contains(QStringLiteral("recorded in this run")));
+        QVERIFY(panel.findChild<QLabel*>(QStringLiteral("status_margin"))->text().startsWith(QStringLiteral("0.50 N")));
+        QVERIFY(!panel.findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->isEnabled());
+        QVERIFY(estopButton->isEnabled());
+    }
+};
+
+QTEST_MAIN(TestInterlocks)
+#include "test_interlocks.moc"
