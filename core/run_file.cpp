@@ -150,6 +150,9 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                                        tr("header has no '%1' column (found: %2)")
                                            .arg(QLatin1String(req), names.join(QLatin1String(", "))));
             QStringList ignored;
+            // The targets below point into run.numeric/run.text: no reallocation after this.
+            run.numeric.reserve(std::size_t(names.size()));
+            run.text.reserve(std::size_t(names.size()));
             for (const QString& n : names) {
                 if (names.count(n) > 1)
                     throw RunFileError(name, lineNo, tr("column '%1' appears twice").arg(n));

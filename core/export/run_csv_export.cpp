@@ -93,7 +93,7 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName)
         {QStringLiteral("footer"), metadataObject(r.run.footer)},
         {QStringLiteral("calibration"), pick(r.run, {"calib", "slope", "v0", "bias", "tare"})},
         {QStringLiteral("device"), pick(r.run, {"device", "sensor", "stage", "daq", "rig", "serial", "firmware"})},
-        {QStringLiteral("drops"), pick(r.run, {"drop", "lost", "overrun", "gap"})},
+        {QStringLiteral("drops"), pick(r.run, {"drop", "lost", "overrun", "gap", "late"})},
         {QStringLiteral("sync"), QJsonObject{{QStringLiteral("offset_s"), syncOffset(r.run)},
                                              {QStringLiteral("video_fps"), videoFps(r.run)},
                                              {QStringLiteral("meaning"), QStringLiteral("video time = recording time + offset_s")}}},

@@ -1,0 +1,105 @@
+#include "dataset_loader.h"
+
+#include "export_error.h"
+
+#include "core/run_file.h"
+#include "core/session.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+
+namespace nb {
+
+namespace {
+
+QString tr(const char* s) { return QCoreApplication::translate("export", s); }
+
+bool isLabelsFile(const QString& fileName) { return fileName.endsWith(QLatin1String(".labels.csv")); }
+
+}  // namespace
+
+QString labelsPathFor(const QString& runPath)
+{
+    const QFileInfo fi(runPath);
+    return fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".labels.csv"));
+}
+
+LoadedDataset loadDataset(const QString& dirPath)
+{
+    const QFileInfo info(dirPath);
+    if (!info.isDir())
+        throw ExportError(dirPath, info.exists() ? tr("not a folder") : tr("no such folder"));
+    LoadedDataset out;
+    Dataset& d = out.dataset;
+    d.name = info.fileName();
+    const QDir dir(dirPath);
+
+    QStringList runPaths;
+    if (Session::isSession(dirPath)) {
+        try {
+            const Session s = Session::open(dirPath);
+            const SessionInfo& si = s.info();
+            d.metadata.set(QStringLiteral("organ"), si.organ);
+            d.metadata.set(QStringLiteral("specimen"), si.specimen);
+            d.metadata.set(QStringLiteral("tip"), si.tip);
+            d.metadata.set(QStringLiteral("thickness_mm"), si.thickness_mm);
+            d.metadata.set(QStringLiteral("operator"), si.operatorName);
+            d.metadata.set(QStringLiteral("protocol"), si.protocol);
+            d.metadata.set(QStringLiteral("notes"), si.notes);
+            d.metadata.set(QStringLiteral("created"), si.created.toString(Qt::ISODate));
+            if (const auto cal = s.activeCalibration()) {
+                d.metadata.set(QStringLiteral("calibration"), cal->name);
+                d.metadata.set(QStringLiteral("calibration_slope_V_per_g"), cal->fit.slope_V_per_g);
+                d.metadata.set(QStringLiteral("calibration_intercept_V"), cal->fit.intercept_V);
+                d.metadata.set(QStringLiteral("calibration_r2"), cal->fit.r2);
+            }
+            for (const RunEntry& e : s.runs()) {
+                if (e.state == RunState::Unreadable)
+                    out.warnings << tr("%1: skipped, %2").arg(e.path, e.detail);
+                else
+                    runPaths << e.path;
+            }
+        } catch (const SessionError& e) {
+            out.warnings << e.message();
+        }
+    }
+    if (runPaths.isEmpty()) {
+        for (const QString& name : dir.entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name))
+            if (!isLabelsFile(name))
+                runPaths << dir.filePath(name);
+    }
+
+    QStringList used;
+    for (const QString& path : runPaths) {
+        DatasetRun r;
+        r.sourcePath = path;
+        try {
+            RunReadResult res = readRunFile(path, {.dropTruncatedLastRow = true});
+            r.run = std::move(res.run);
+            for (const QString& w : res.warnings)
+                out.warnings << w;
+        } catch (const RunFileError& e) {
+            out.warnings << tr("%1: skipped, not a run file (%2)").arg(path, e.message());
+            continue;
+        }
+        const QString labelsPath = labelsPathFor(path);
+        if (QFileInfo::exists(labelsPath)) {
+            try {
+                r.labels = readLabelsFile(labelsPath);
+            } catch (const RunFileError& e) {
+                out.warnings << tr("%1: labels ignored (%2)").arg(labelsPath, e.message());
+            }
+        }
+        // Names become file and group names: keep them unique.
+        QString name = QFileInfo(path).completeBaseName();
+        for (int k = 2; used.contains(name); ++k)
+            name = QFileInfo(path).completeBaseName() + QStringLiteral("_%1").arg(k);
+        used << name;
+        r.name = name;
+        d.runs.push_back(std::move(r));
+    }
+    return out;
+}
+
+}  // namespace nb

@@ -1,0 +1,339 @@
+#include "session_analysis.h"
+
+#include "core/fit_error.h"
+#include "core/statistics.h"
+
+#include <QCoreApplication>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace nb {
+
+namespace {
+
+QString tr(const char* s) { return QCoreApplication::translate("analysis", s); }
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// A labelled point event moves the detected one onto the nearest sample.
+void applyEventLabel(const Run& run, const Labels& labels, const QString& name, double zeroOffset, RunEvent& event)
+{
+    for (const Label& l : labels) {
+        if (l.label != name || !l.isPoint() || run.size() == 0)
+            continue;
+        const auto& t = run.time_s;
+        auto it = std::lower_bound(t.begin(), t.end(), l.start_s);
+        if (it == t.end() || (it != t.begin() && l.start_s - *(it - 1) < *it - l.start_s))
+            --it;
+        const std::size_t i = std::size_t(it - t.begin());
+        event = {i, t[i], run.position_mm[i], run.force_N[i] - zeroOffset};
+        return;
+    }
+}
+
+bool hasPhaseLabels(const Labels& labels)
+{
+    for (const Label& l : labels)
+        if (!l.isPoint() && (l.label == QLatin1String("a") || l.label == QLatin1String("c")))
+            return true;
+    return false;
+}
+
+double thicknessFor(const Run& run, const Dataset& d)
+{
+    for (const Metadata* m : {&run.footer, &run.metadata, &d.metadata})
+        if (const auto v = m->number(QStringLiteral("thickness_mm")); v && *v > 0.0)
+            return *v;
+    return 0.0;
+}
+
+void analyseStiffness(const Dataset& d, SessionAnalysis& a)
+{
+    for (const DatasetRun& r : d.runs) {
+        if (runKind(r.run) != RunKind::Insertion)
+            continue;
+        StiffnessRunResult s;
+        s.run = r.name;
+        s.group = r.run.meta(QStringLiteral("tissue")).value_or(QString());
+        s.tip = r.run.meta(QStringLiteral("tip")).value_or(QString());
+        try {
+            s.events = detectEvents(r.run);
+            applyEventLabel(r.run, r.labels, QStringLiteral("contact"), s.events.zeroOffset_N, s.events.contact);
+            applyEventLabel(r.run, r.labels, QStringLiteral("puncture"), s.events.zeroOffset_N, s.events.puncture);
+            s.segment = stiffnessSegment(r.run, s.events);
+            s.fit = fitStiffness(s.segment);
+        } catch (const FitError& e) {
+            s.error = e.message();
+            a.warnings << tr("%1: no stiffness fit (%2)").arg(r.name, e.message());
+        }
+        a.stiffness.push_back(std::move(s));
+    }
+    std::map<QString, std::vector<std::size_t>> groups;
+    for (std::size_t i = 0; i < a.stiffness.size(); ++i)
+        if (a.stiffness[i].ok())
+            groups[a.stiffness[i].group].push_back(i);
+    for (const auto& [name, idx] : groups) {
+        StiffnessGroupResult g;
+        g.group = name;
+        g.tip = a.stiffness[idx.front()].tip;
+        g.runs = idx;
+        std::vector<StiffnessSegment> segs;
+        std::vector<double> depths, forces;
+        for (std::size_t i : idx) {
+            segs.push_back(a.stiffness[i].segment);
+            depths.push_back(a.stiffness[i].events.punctureDepth_mm());
+            forces.push_back(a.stiffness[i].events.puncture.force_N);
+        }
+        try {
+            g.summary = fitStiffnessRuns(segs);
+        } catch (const FitError& e) {
+            a.warnings << tr("%1: no pooled stiffness fit (%2)").arg(name, e.message());
+            continue;
+        }
+        g.meanPunctureDepth_mm = mean(depths);
+        g.meanPunctureForce_N = mean(forces);
+        // Outliers: the run's model force at the group's median puncture depth far (3 scaled
+        // MADs) from the others', or its puncture force so; needs enough runs to say.
+        if (idx.size() >= 4) {
+            const double x = median(depths);
+            std::vector<double> f;
+            for (std::size_t i : idx)
+                f.push_back(a.stiffness[i].fit.quadratic.model(x));
+            for (const auto* values : {&f, &forces}) {
+                const double m = median(*values);
+                std::vector<double> dev;
+                for (double v : *values)
+                    dev.push_back(std::abs(v - m));
+                const double mad = 1.4826 * median(dev);
+                for (std::size_t k = 0; k < idx.size(); ++k)
+                    if (mad > 0.0 && std::abs((*values)[k] - m) > 3.0 * mad)
+                        a.stiffness[idx[k]].outlier = true;
+            }
+        }
+        a.stiffnessGroups.push_back(std::move(g));
+    }
+}
+
+void analyseFriction(const Dataset& d, SessionAnalysis& a)
+{
+    std::vector<FrictionFit> fits;
+    for (const DatasetRun& r : d.runs) {
+        if (runKind(r.run) != RunKind::Sinusoid)
+            continue;
+        FrictionRunResult f;
+        f.run = r.name;
+        try {
+            FrictionOptions o;
+            o.thickness_mm = thicknessFor(r.run, d);
+            if (hasPhaseLabels(r.labels))
+                f.phases = phasePerSample(r.labels, r.run.time_s);
+            f.fit = fitFriction(r.run, o, f.phases);
+            fits.push_back(f.fit);
+        } catch (const FitError& e) {
+            f.error = e.message();
+            a.warnings << tr("%1: no friction fit (%2)").arg(r.name, e.message());
+        }
+        a.friction.push_back(std::move(f));
+    }
+    if (!fits.empty()) {
+        a.frictionGroups = groupByFrequency(fits);
+        a.frictionOverall = overall(fits);
+    }
+}
+
+void analyseValidation(const Dataset& d, SessionAnalysis& a)
+{
+    for (const StiffnessGroupResult& g : a.stiffnessGroups) {
+        for (std::size_t i : g.runs) {
+            const StiffnessRunResult& s = a.stiffness[i];
+            const auto it = std::find_if(d.runs.begin(), d.runs.end(), [&](const DatasetRun& r) { return r.name == s.run; });
+            if (it == d.runs.end())
+                continue;
+            ValidationResult v;
+            v.run = s.run;
+            InsertionModel m;
+            m.stiffness = g.summary.pooled.quadratic.model;
+            m.contact_mm = s.events.contact.position_mm;
+            m.punctureDepth_mm = g.meanPunctureDepth_mm;
+            if (s.events.relaxation)
+                m.relaxation_mm = std::max(0.0, s.events.puncture.position_mm - s.events.relaxation->position_mm);
+            if (a.frictionOverall)
+                m.friction = a.frictionOverall->mean;
+            v.recorded.time_s = it->run.time_s;
+            v.recorded.position_mm = it->run.position_mm;
+            v.recorded.force_N = it->run.force_N;
+            for (double& f : v.recorded.force_N)
+                f -= s.events.zeroOffset_N;
+            try {
+                v.simulated = simulateInsertion(m, v.recorded.time_s, v.recorded.position_mm);
+                v.rms_N = rmsDistance(v.simulated, v.recorded);
+            } catch (const FitError& e) {
+                v.error = e.message();
+                a.warnings << tr("%1: no validation (%2)").arg(s.run, e.message());
+            }
+            a.validation.push_back(std::move(v));
+        }
+    }
+}
+
+TableColumn col(const char* key, const QString& title, const char* unit, int decimals, const char* latex = nullptr)
+{
+    return {QString::fromLatin1(key), title, QString::fromUtf8(unit), decimals, latex ? QString::fromUtf8(latex) : QString()};
+}
+
+std::vector<TableColumn> karnoppColumns()
+{
+    return {col("Cp_N_per_m", QStringLiteral("Cp"), "N/m", 4, "$C_p$"),       col("bp_Ns_per_m2", QStringLiteral("bp"), "N s/m^2", 3, "$b_p$"),
+            col("Cn_N_per_m", QStringLiteral("Cn"), "N/m", 4, "$C_n$"),       col("bn_Ns_per_m2", QStringLiteral("bn"), "N s/m^2", 3, "$b_n$"),
+            col("Dp_N_per_m", QStringLiteral("Dp"), "N/m", 4, "$D_p$"),       col("Dn_N_per_m", QStringLiteral("Dn"), "N/m", 4, "$D_n$")};
+}
+
+void appendKarnopp(std::vector<TableCell>& row, const KarnoppPerLength& k)
+{
+    for (double v : {k.Cp_N_per_m, k.bp_Ns_per_m2, k.Cn_N_per_m, k.bn_Ns_per_m2, k.Dp_N_per_m, k.Dn_N_per_m})
+        row.emplace_back(v);
+}
+
+}  // namespace
+
+RunKind runKind(const Run& run)
+{
+    const QString motion = run.meta(QStringLiteral("motion")).value_or(QString()).trimmed().toLower();
+    const QString protocol = run.meta(QStringLiteral("protocol")).value_or(QString()).trimmed().toLower();
+    if (motion == QLatin1String("sine") || motion == QLatin1String("sinusoidal") || protocol == QLatin1String("friction"))
+        return RunKind::Sinusoid;
+    if (motion == QLatin1String("linear") || protocol == QLatin1String("stiffness") || protocol == QLatin1String("internal") ||
+        protocol == QLatin1String("prostate"))
+        return RunKind::Insertion;
+    return RunKind::Other;
+}
+
+SessionAnalysis analyseDataset(const Dataset& dataset)
+{
+    SessionAnalysis a;
+    analyseStiffness(dataset, a);
+    analyseFriction(dataset, a);
+    analyseValidation(dataset, a);
+    return a;
+}
+
+FitTable stiffnessRunsTable(const SessionAnalysis& a)
+{
+    FitTable t;
+    t.caption = tr("Pre-puncture stiffness fits per run, f = a1 x + a2 x^2");
+    t.label = QStringLiteral("tab:stiffness-runs");
+    t.columns = {col("run", tr("run"), "", -1),
+                 col("tissue", tr("tissue"), "", -1),
+                 col("a1_N_per_mm", QStringLiteral("a1"), "N/mm", 4, "$a_1$"),
+                 col("a2_N_per_mm2", QStringLiteral("a2"), "N/mm^2", 4, "$a_2$"),
+                 col("rms_N", tr("rms"), "N", 4),
+                 col("r2", QStringLiteral("r2"), "", 4, "$r^2$"),
+                 col("puncture_depth_mm", tr("puncture depth"), "mm", 3),
+                 col("puncture_force_N", tr("puncture force"), "N", 4),
+                 col("outlier", tr("outlier"), "", -1)};
+    for (const StiffnessRunResult& s : a.stiffness) {
+        const double nan = std::nan("");
+        if (!s.ok()) {
+            t.rows.push_back({s.run, s.group, nan, nan, nan, nan, nan, nan, tr("not fitted")});
+            continue;
+        }
+        t.rows.push_back({s.run, s.group, s.fit.quadratic.model.a1_N_per_mm, s.fit.quadratic.model.a2_N_per_mm2,
+                          s.fit.quadratic.rms_N, s.fit.quadratic.r2, s.events.punctureDepth_mm(), s.events.puncture.force_N,
+                          s.outlier ? tr("yes") : QString()});
+    }
+    return t;
+}
+
+FitTable stiffnessPooledTable(const SessionAnalysis& a)
+{
+    FitTable t;
+    t.caption = tr("Pooled pre-puncture fits per tissue (Table 2 layout)");
+    t.label = QStringLiteral("tab:stiffness-pooled");
+    t.columns = {col("tissue", tr("tissue"), "", -1),
+                 col("tip", tr("tip"), "", -1),
+                 col("fit", tr("fit"), "", -1),
+                 col("a1_N_per_mm", QStringLiteral("a1"), "N/mm", 4, "$a_1$"),
+                 col("a2_N_per_mm2", QStringLiteral("a2"), "N/mm^2", 4, "$a_2$"),
+                 col("mean_puncture_depth_mm", tr("mean puncture depth"), "mm", 4),
+                 col("mean_puncture_force_N", tr("mean puncture force"), "N", 4),
+                 col("runs", tr("runs"), "", 0)};
+    for (const StiffnessGroupResult& g : a.stiffnessGroups) {
+        t.rows.push_back({g.group, g.tip, tr("pooled"), g.summary.pooled.quadratic.model.a1_N_per_mm,
+                          g.summary.pooled.quadratic.model.a2_N_per_mm2, g.meanPunctureDepth_mm, g.meanPunctureForce_N,
+                          double(g.runs.size())});
+        t.rows.push_back({g.group, g.tip, tr("mean of runs"), g.summary.meanOfRuns.a1_N_per_mm, g.summary.meanOfRuns.a2_N_per_mm2,
+                          g.meanPunctureDepth_mm, g.meanPunctureForce_N, double(g.runs.size())});
+    }
+    return t;
+}
+
+FitTable frictionRunsTable(const SessionAnalysis& a)
+{
+    FitTable t;
+    t.caption = tr("Karnopp friction per unit length of needle in tissue, per run");
+    t.label = QStringLiteral("tab:friction-runs");
+    t.columns = {col("run", tr("run"), "", -1), col("freq_Hz", tr("f"), "Hz", 2)};
+    for (const TableColumn& c : karnoppColumns())
+        t.columns.push_back(c);
+    t.columns.push_back(col("rms_N", tr("rms"), "N", 4));
+    t.columns.push_back(col("static_from", tr("D from"), "", -1));
+    for (const FrictionRunResult& f : a.friction) {
+        std::vector<TableCell> row{f.run};
+        if (!f.ok()) {
+            for (int i = 0; i < 8; ++i)
+                row.emplace_back(std::nan(""));
+            row.emplace_back(tr("not fitted"));
+        } else {
+            row.emplace_back(f.fit.frequency_hz);
+            appendKarnopp(row, f.fit.perLength);
+            row.emplace_back(f.fit.rms_N);
+            row.emplace_back(f.fit.staticSource);
+        }
+        t.rows.push_back(std::move(row));
+    }
+    return t;
+}
+
+FitTable frictionSummaryTable(const SessionAnalysis& a)
+{
+    FitTable t;
+    t.caption = tr("Karnopp friction per unit length, mean and standard deviation per frequency and overall (Tables 4/5 layout)");
+    t.label = QStringLiteral("tab:friction");
+    t.columns = {col("group", tr("group"), "", -1), col("statistic", tr("statistic"), "", -1), col("freq_Hz", tr("f"), "Hz", 2),
+                 col("runs", tr("runs"), "", 0)};
+    for (const TableColumn& c : karnoppColumns())
+        t.columns.push_back(c);
+    auto add = [&](const QString& name, const FrictionGroup& g) {
+        for (int k = 0; k < 2; ++k) {
+            std::vector<TableCell> row{name, k ? tr("std") : tr("mean"), g.frequency_hz, double(g.runs)};
+            appendKarnopp(row, k ? g.stdDev : g.mean);
+            t.rows.push_back(std::move(row));
+        }
+    };
+    for (const FrictionGroup& g : a.frictionGroups)
+        add(QStringLiteral("%1Hz").arg(g.frequency_hz, 0, 'g', 3), g);
+    if (a.frictionOverall)
+        add(tr("overall"), *a.frictionOverall);
+    return t;
+}
+
+FitTable validationTable(const SessionAnalysis& a)
+{
+    FitTable t;
+    t.caption = tr("Summed model against the recorded insertions (Fig. 38)");
+    t.label = QStringLiteral("tab:validation");
+    t.columns = {col("run", tr("run"), "", -1), col("rms_N", tr("rms error"), "N", 4)};
+    for (const ValidationResult& v : a.validation)
+        t.rows.push_back({v.run, v.ok() ? v.rms_N : std::nan("")});
+    return t;
+}
+
+}  // namespace nb
