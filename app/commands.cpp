@@ -8,12 +8,14 @@ namespace nb::cli {
 
 // Each command's entry point, defined in its cmd_*.cpp file.
 int cmdVersion(const QStringList& args, Io io);
+int cmdSimulate(const QStringList& args, Io io);
 int cmdExport(const QStringList& args, Io io);
 
 const std::vector<Command>& commands()
 {
     static const std::vector<Command> all{
         {QStringLiteral("version"), QCoreApplication::translate("cli", "print the version"), cmdVersion},
+        {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},
         {QStringLiteral("export"), QCoreApplication::translate("cli", "export a session as CSV, HDF5 or ELAN files"), cmdExport},
     };
     return all;

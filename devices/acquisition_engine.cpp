@@ -412,8 +412,7 @@ void AcquisitionEngine::threadMain()
             s.sensorOk = true;
             s.any = false;
             s.prevStageTime = -1.0;
-            if (s.fault.startsWith(s.dev.sensor->name()))
-                s.fault.clear();
+            // A standing fault stays until the operator enables the stage again.
         } catch (const DeviceError& e) {
             raiseFault(e.device(), e.reason(), true);
         }

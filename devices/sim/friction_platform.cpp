@@ -1,5 +1,6 @@
 #include "friction_platform.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace nb::devices::sim {
@@ -25,7 +26,8 @@ FrictionPlatform::FrictionPlatform(const TissuePreset& preset, const RigConfig& 
     : k_(preset.friction.forLength(config.thickness_mm / 1000.0, kBand_m_s)),
       m_(preset.tissueMass_kg),
       gap_(config.plateGap_mm / 1000.0),
-      damping_(2.0 * std::sqrt(k2_ * preset.tissueMass_kg))
+      damping_(2.0 * std::sqrt(k2_ * preset.tissueMass_kg)),
+      dampingB1_(2.0 * std::sqrt(k1_ * preset.tissueMass_kg))
 {
 }
 
@@ -36,7 +38,11 @@ double FrictionPlatform::plateForce(double y, double vy) const
         return 0.0;
     // b1: the slab comes to bear on the plate progressively; b2: fully against it, stiff.
     const double f = s < w1_ ? k1_ * s : k1_ * w1_ + k2_ * (s - w1_);
-    return (y > 0 ? f : -f) + damping_ * vy;
+    // Critically damped in contact (the tissue's losses bring it to rest against the plate),
+    // free in the gap. The soft region carries less than the dynamic friction, so the slab
+    // comes to rest fully against the plate (c), not ringing in b1.
+    const double losses = (s > w1_ ? damping_ : dampingB1_) * vy;
+    return (y > 0 ? f : -f) + losses;
 }
 
 void FrictionPlatform::enter(char phase, double t, GroundTruth& truth)
@@ -92,7 +98,9 @@ double FrictionPlatform::step(double t, double dt, double v_mm_s, double a_mm_s2
                 return need;
             }
         }
-        force = k_(vrel, m_ * an + plate);
+        // Inside the band the friction is static and saturates at D (eq. 15 leaves v = 0
+        // itself to either side; the sign of the load decides here).
+        force = std::fabs(vrel) < kBand_m_s / 2.0 ? std::clamp(m_ * an + plate, k_.Dn_N, k_.Dp_N) : k_(vrel, 0.0);
         vy_ += (force - plate) / m_ * dt;
         y_ += vy_ * dt;
     }

@@ -26,7 +26,7 @@ private:
     void enter(char phase, double t, GroundTruth& truth);
     KarnoppModel k_;
     double m_;
-    double gap_, w1_ = 1.0e-3, k1_ = 600.0, k2_ = 5000.0, damping_;
+    double gap_, w1_ = 1.0e-3, k1_ = 200.0, k2_ = 5000.0, damping_, dampingB1_;
     double y_ = 0.0, vy_ = 0.0;
     bool stuck_ = true;
     char phase_ = 0;

@@ -138,7 +138,7 @@ double OrganTissue::step(double t, double dt, double tip, double v_mm_s, GroundT
                     stuck_ = false;
             }
             if (!stuck_) {
-                f = k(v, kb * bristle_mm_);
+                f = std::fabs(v) < kBand_m_s / 2.0 ? std::clamp(kb * bristle_mm_, k.Dn_N, k.Dp_N) : k(v, 0.0);
                 bristle_mm_ = f / kb;
                 if (std::fabs(v) < kBand_m_s / 2.0)
                     stuck_ = true;

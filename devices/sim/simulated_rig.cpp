@@ -127,8 +127,10 @@ void SimulatedRig::World::stageCommand(const char* what, const std::function<voi
     if (stageSilent_)
         throw DeviceError(stageName(), tr("no reply for 100 ms to '%1' (cable unplugged?)").arg(QLatin1String(what)));
     // The emergency stop is honoured even when ordinary commands are refused.
-    if (stageRejects_ && !isEmergency)
+    if (stageRejects_ && !isEmergency) {
+        truth_.events.push_back({QStringLiteral("command_rejected"), t_, stage_.absolute_mm(), force_});
         throw DeviceError(stageName(), tr("rejected '%1': controller reports a fault (RJ)").arg(QLatin1String(what)));
+    }
     if (!enabled_ && !isEmergency)
         throw DeviceError(stageName(), tr("rejected '%1': driver disabled").arg(QLatin1String(what)));
     apply(stage_);

@@ -99,6 +99,7 @@ void StageDynamics::step(double dt)
     a_ = (u - c_.damping * v_) / c_.mass;
     v_ += a_ * dt;
     x_ += v_ * dt;
+    settled_ = std::fabs(r_ - x_) < 0.002 && std::fabs(v_) < 0.05;
 }
 
 }  // namespace nb::devices::sim

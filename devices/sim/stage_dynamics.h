@@ -25,7 +25,8 @@ public:
     double velocity_mm_s() const { return v_; }
     double acceleration_mm_s2() const { return a_; }
     double encoder_mm() const;
-    bool moving() const { return mode_ != Mode::Hold; }
+    // Until the reference has arrived and the axis has settled on it.
+    bool moving() const { return mode_ != Mode::Hold || !settled_; }
     double reference_mm() const { return r_ - zeroOffset_; }
     double minPosition_mm() const { return c_.minPosition_mm; }
     double maxPosition_mm() const { return c_.maxPosition_mm; }
@@ -37,6 +38,7 @@ private:
     double x_ = 0.0, v_ = 0.0, a_ = 0.0;  // plant (absolute mm)
     double r_ = 0.0, rv_ = 0.0;           // reference (absolute mm)
     double integral_ = 0.0;
+    bool settled_ = true;
     double zeroOffset_ = 0.0;
     double target_ = 0.0, speed_ = 0.0;   // linear
     double centre_ = 0.0, amplitude_ = 0.0, omega_ = 0.0, tau_ = 0.0, duration_ = 0.0;  // sine
