@@ -1,0 +1,180 @@
+// The Zaber driver over QSerialPort against the controller emulator on a pty.
+#include "devices/device_error.h"
+#include "devices/zaber/zaber_stage.h"
+#include "zaber_emulator.h"
+
+#include <QElapsedTimer>
+#include <QTest>
+#include <QThread>
+#include <memory>
+
+using namespace nb::devices;
+using nb::test::ZaberEmulator;
+
+class TestZaberStage : public QObject {
+    Q_OBJECT
+    std::unique_ptr<ZaberEmulator> emu_;
+
+    ZaberConfig config() const
+    {
+        ZaberConfig c;
+        c.port = emu_->path();
+        c.units = {10000.0, 1.6384};
+        c.replyTimeout = std::chrono::milliseconds(300);
+        return c;
+    }
+    // Polls at ~50 Hz until the stage is idle (or 5 s); returns the positions seen.
+    static std::vector<double> pollUntilIdle(ZaberStage& s)
+    {
+        std::vector<double> seen;
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < 5000) {
+            const StageState st = s.state();
+            seen.push_back(st.position_mm);
+            if (!st.moving)
+                break;
+            QThread::msleep(20);
+        }
+        return seen;
+    }
+    template <typename F>
+    static QString errorOf(F f)
+    {
+        try {
+            f();
+        } catch (const DeviceError& e) {
+            return e.message();
+        }
+        return {};
+    }
+
+private slots:
+    void init()
+    {
+        emu_ = std::make_unique<ZaberEmulator>();
+        QVERIFY(emu_->ok());
+    }
+    void cleanup() { emu_.reset(); }
+
+    void opensThroughTheSymlink()
+    {
+        ZaberStage s(config());
+        QCOMPARE(s.name(), QStringLiteral("Zaber stage on %1").arg(emu_->path()));
+        QCOMPARE(s.firmware(), QStringLiteral("7.25"));
+        QVERIFY(!s.state().enabled);
+    }
+
+    void refusesToMoveWhileDisabled()
+    {
+        ZaberStage s(config());
+        const QString e = errorOf([&] { s.moveLinear({4.0, 2.0}); });
+        QVERIFY2(e.contains(QLatin1String("disabled")), qPrintable(e));
+        QVERIFY(e.startsWith(s.name()));
+    }
+
+    void linearMoveReachesTheTarget()
+    {
+        ZaberStage s(config());
+        s.enable(true);
+        s.zero();
+        QVERIFY(s.state().homed);
+        s.moveLinear({10.0, 2.0});
+        const auto seen = pollUntilIdle(s);
+        QVERIFY(seen.size() >= 2);
+        for (std::size_t i = 1; i < seen.size(); ++i)
+            QVERIFY(seen[i] >= seen[i - 1]);
+        QCOMPARE(seen.back(), 2.0);
+        QCOMPARE(emu_->position_mm(), 2.0);
+    }
+
+    void rejectionsBecomeClearErrors()
+    {
+        ZaberStage s(config());
+        s.enable(true);
+        QString e = errorOf([&] { s.request("move abs 99999999"); });
+        QVERIFY2(e.contains(QLatin1String("out of range")), qPrintable(e));
+        e = errorOf([&] { s.request("wiggle"); });
+        QVERIFY2(e.contains(QLatin1String("does not know")), qPrintable(e));
+        e = errorOf([&] { s.moveLinear({4.0, 500.0}); });  // refused before it is sent
+        QVERIFY2(e.contains(QLatin1String("outside the travel")), qPrintable(e));
+    }
+
+    void stopAndEmergencyStopHalt()
+    {
+        ZaberStage s(config());
+        s.enable(true);
+        s.zero();
+        s.moveLinear({5.0, 50.0});
+        QThread::msleep(50);
+        s.stop();
+        StageState st = s.state();
+        QVERIFY(!st.moving);
+        QVERIFY(st.position_mm < 50.0);
+        s.moveLinear({5.0, 50.0});
+        QThread::msleep(50);
+        s.emergencyStop();
+        const double at = s.state().position_mm;
+        QThread::msleep(50);
+        QCOMPARE(s.state().position_mm, at);
+    }
+
+    void sineIsStreamedAsVelocityCommands()
+    {
+        ZaberStage s(config());
+        s.enable(true);
+        s.zero();
+        s.moveSine({1.0, 1.0, 1});
+        const auto seen = pollUntilIdle(s);
+        const auto [lo, hi] = std::minmax_element(seen.begin(), seen.end());
+        QVERIFY2(*hi > 0.5 && *hi < 1.5, qPrintable(QString::number(*hi)));
+        QVERIFY2(*lo < -0.5 && *lo > -1.5, qPrintable(QString::number(*lo)));
+        QVERIFY(emu_->velocityCommands() > 10);
+        QVERIFY(std::abs(seen.back()) < 1e-3);  // ends back at the centre
+    }
+
+    void noiseOnTheLineIsSkipped()
+    {
+        ZaberStage s(config());
+        emu_->sendNoise();
+        QCOMPARE(s.state().position_mm, 0.0);
+    }
+
+    void aSilentControllerIsNamed()
+    {
+        ZaberStage s(config());
+        emu_->setSilent(true);
+        const QString e = errorOf([&] { s.state(); });
+        QVERIFY2(e.startsWith(s.name()) && e.contains(QLatin1String("no reply")), qPrintable(e));
+    }
+
+    void unplugIsAnError()
+    {
+        ZaberStage s(config());
+        emu_->unplug();
+        const QString e = errorOf([&] { s.state(); });
+        QVERIFY2(e.startsWith(s.name()), qPrintable(e));
+    }
+
+    void stallAlertStopsTheRun()
+    {
+        ZaberStage s(config());
+        s.enable(true);
+        s.moveLinear({5.0, 50.0});
+        emu_->raiseStallFault();
+        const QString e = errorOf([&] { s.state(); });
+        QVERIFY2(e.contains(QLatin1String("FS")) && e.contains(QLatin1String("stalled")), qPrintable(e));
+        QVERIFY(!s.takeAlerts().isEmpty());
+    }
+
+    void aMissingPortIsAClearError()
+    {
+        ZaberConfig c = config();
+        c.port = QStringLiteral("/nonexistent/ttyZaber9");
+        const QString e = errorOf([&] { ZaberStage s(c); });
+        QVERIFY2(e.contains(QLatin1String("cannot open")), qPrintable(e));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestZaberStage)
+#include "test_zaber_stage.moc"
