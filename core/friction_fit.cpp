@@ -79,12 +79,20 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QS
     const std::vector<double> f = movingAverage(run.force_N, w);
 
     const double half = options.band_m_s / 2.0;
+    auto sliding = [&](std::size_t i) {
+        return std::fabs(v[i]) >= half && v[i] != 0.0 && (!usePhases || phases[qsizetype(i)] == QLatin1String("c"));
+    };
+    // The smoothed signals mix samples across a stick/slip boundary (the force jumps there
+    // from D to C), so only samples whose whole smoothing window slides are used.
+    std::vector<std::size_t> notSliding(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        notSliding[i + 1] = notSliding[i] + (sliding(i) ? 0 : 1);
+    const std::size_t reach = std::size_t(w / 2 + 1);
     std::vector<std::size_t> rows;
     std::size_t pos = 0, neg = 0;
     for (std::size_t i = trim; i < n - trim; ++i) {
-        if (std::fabs(v[i]) < half || v[i] == 0.0)
-            continue;
-        if (usePhases && phases[qsizetype(i)] != QLatin1String("c"))
+        const std::size_t lo = i >= reach ? i - reach : 0, hi = std::min(n, i + reach + 1);
+        if (notSliding[hi] - notSliding[lo] != 0)
             continue;
         rows.push_back(i);
         (v[i] > 0.0 ? pos : neg) += 1;

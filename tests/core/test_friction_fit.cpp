@@ -1,0 +1,228 @@
+// Friction identification (eqs. 16-26) on synthetic sinusoidal runs with a known Karnopp
+// model: 10 mm amplitude, 0.2-0.8 Hz, 4 mN noise, stick inside the zero-velocity band.
+#include "core/fit_error.h"
+#include "core/friction_fit.h"
+#include "core/labels.h"
+#include "core/run_file.h"
+#include "core/signal.h"
+#include "synthetic.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+
+using namespace nb;
+
+namespace {
+double rel(double got, double want) { return std::fabs(got / want - 1.0); }
+QString describe(const FrictionFit& f)
+{
+    return QStringLiteral("Cp %1 Cn %2 bp %3 bn %4 Dp %5 Dn %6 m %7")
+        .arg(f.model.Cp_N)
+        .arg(f.model.Cn_N)
+        .arg(f.model.bp_Ns_per_m)
+        .arg(f.model.bn_Ns_per_m)
+        .arg(f.model.Dp_N)
+        .arg(f.model.Dn_N)
+        .arg(f.massEstimate_kg.value_or(-99));
+}
+}  // namespace
+
+class TestFrictionFit : public QObject {
+    Q_OBJECT
+
+private slots:
+    void movingAverageAndDerivative()
+    {
+        // A symmetric window keeps a straight line exactly, also at the shrunken ends.
+        std::vector<double> line;
+        for (int i = 0; i < 50; ++i)
+            line.push_back(3.0 + 0.5 * i);
+        const auto s = movingAverage(line, 9);
+        for (std::size_t i = 0; i < line.size(); ++i)
+            QVERIFY(std::fabs(s[i] - line[i]) < 1e-9);
+        const std::vector<double> spike{0, 0, 0, 9, 0, 0, 0};
+        const auto ss = movingAverage(spike, 3);
+        QCOMPARE(ss[2], 3.0);
+        QCOMPARE(ss[3], 3.0);
+        QCOMPARE(ss[0], 0.0);
+        // Central differences on uneven time stamps: exact for a parabola at interior points.
+        std::vector<double> t{0.0, 0.1, 0.3, 0.35, 0.6, 1.0}, x;
+        for (double ti : t)
+            x.push_back(ti * ti);
+        const auto d = derivative(t, x);
+        QVERIFY(std::fabs(d[1] - (0.09 - 0.0) / 0.3) < 1e-12);
+        QVERIFY(std::fabs(d[0] - 0.1) < 1e-12);
+        QVERIFY(std::fabs(d[5] - 1.6) < 1e-12);
+        QCOMPARE(windowForDuration(t, 0.0), 1);
+    }
+    void knownMassMeetsTargets_data()
+    {
+        QTest::addColumn<double>("frequency");
+        QTest::addColumn<int>("seed");
+        for (double f : {0.2, 0.5, 0.8})
+            for (int s = 1; s <= 3; ++s)
+                QTest::addRow("%.1fHz seed%d", f, s) << f << s;
+    }
+    void knownMassMeetsTargets()
+    {
+        QFETCH(double, frequency);
+        QFETCH(int, seed);
+        synthetic::Friction p;
+        p.frequency_hz = frequency;
+        p.seed = std::uint32_t(seed);
+        FrictionOptions o;
+        o.thickness_mm = 20.0;
+        const auto fit = fitFriction(synthetic::makeFriction(p), o);
+        QVERIFY2(rel(fit.model.Cp_N, p.model.Cp_N) < 0.05 && rel(fit.model.Cn_N, p.model.Cn_N) < 0.05, qPrintable(describe(fit)));
+        QVERIFY2(rel(fit.model.bp_Ns_per_m, p.model.bp_Ns_per_m) < 0.15 && rel(fit.model.bn_Ns_per_m, p.model.bn_Ns_per_m) < 0.15,
+                 qPrintable(describe(fit)));
+        QVERIFY(!fit.massEstimate_kg);
+        QCOMPARE(fit.frequency_hz, frequency);
+        QCOMPARE(fit.staticSource, QStringLiteral("phase a"));
+        // Per length: divided by 0.02 m.
+        QVERIFY(std::fabs(fit.perLength.Cp_N_per_m - fit.model.Cp_N / 0.02) < 1e-9);
+        QVERIFY(std::fabs(fit.perLength.bn_Ns_per_m2 - fit.model.bn_Ns_per_m / 0.02) < 1e-9);
+        QVERIFY(fit.rms_N < 0.004);
+        QVERIFY(fit.positiveSamples > 500 && fit.negativeSamples > 500);
+    }
+    void estimatedMassMeetsTargets()
+    {
+        for (double f : {0.2, 0.5, 0.8}) {
+            for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+                synthetic::Friction p;
+                p.frequency_hz = f;
+                p.seed = seed;
+                FrictionOptions o;
+                o.thickness_mm = 20.0;
+                o.estimateMass = true;
+                const auto fit = fitFriction(synthetic::makeFriction(p), o);
+                QVERIFY(fit.massEstimate_kg.has_value());
+                QVERIFY2(std::fabs(*fit.massEstimate_kg - p.mass_kg) < 0.01, qPrintable(describe(fit)));
+                QVERIFY2(rel(fit.model.Cp_N, p.model.Cp_N) < 0.05 && rel(fit.model.Cn_N, p.model.Cn_N) < 0.05, qPrintable(describe(fit)));
+                QVERIFY(rel(fit.model.bp_Ns_per_m, p.model.bp_Ns_per_m) < 0.15);
+                QVERIFY(rel(fit.model.bn_Ns_per_m, p.model.bn_Ns_per_m) < 0.15);
+            }
+        }
+    }
+    void ignoringTheMassBiasesTheEstimate()
+    {
+        // The fit must actually use the mass: a heavy holder left in the force is visible.
+        synthetic::Friction p;
+        p.frequency_hz = 0.8;
+        p.mass_kg = 2.0;
+        FrictionOptions o;
+        o.thickness_mm = 20.0;
+        o.mass_kg = 2.0;
+        const auto right = fitFriction(synthetic::makeFriction(p), o);
+        o.mass_kg = 0.0;
+        const auto wrong = fitFriction(synthetic::makeFriction(p), o);
+        QVERIFY(wrong.rms_N > 5.0 * right.rms_N);
+    }
+    void staticFrictionFromPhaseAOrBand()
+    {
+        synthetic::Friction p;
+        p.frequency_hz = 0.2;
+        FrictionOptions o;
+        o.thickness_mm = 20.0;
+        const auto withPhases = fitFriction(synthetic::makeFriction(p), o);
+        QCOMPARE(withPhases.staticSource, QStringLiteral("phase a"));
+        QVERIFY2(rel(withPhases.model.Dp_N, p.model.Dp_N) < 0.05 && rel(withPhases.model.Dn_N, p.model.Dn_N) < 0.05,
+                 qPrintable(describe(withPhases)));
+        p.writePhases = false;
+        p.writeFrequency = false;
+        const auto band = fitFriction(synthetic::makeFriction(p), o);
+        QCOMPARE(band.staticSource, QStringLiteral("velocity band"));
+        QVERIFY(rel(band.model.Dp_N, p.model.Dp_N) < 0.05 && rel(band.model.Dn_N, p.model.Dn_N) < 0.05);
+        QVERIFY2(std::fabs(band.frequency_hz - 0.2) < 0.004, qPrintable(QString::number(band.frequency_hz)));
+        QVERIFY(band.perLength.Dn_N_per_m < 0.0);
+    }
+    void labelsFileSelectsPhases()
+    {
+        synthetic::Friction p;
+        p.writePhases = false;
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("labels.csv"));
+        writeLabelsFile(path, synthetic::frictionLabels(p));
+        const Run run = synthetic::makeFriction(p);
+        const QStringList phases = phasePerSample(readLabelsFile(path), run.time_s);
+        FrictionOptions o;
+        o.thickness_mm = 20.0;
+        const auto fit = fitFriction(run, o, phases);
+        QCOMPARE(fit.staticSource, QStringLiteral("phase a"));
+        QVERIFY(rel(fit.model.Cp_N, p.model.Cp_N) < 0.05);
+        // Only phase c slides in the fit: relabel the start of every sliding stretch as b1.
+        QStringList fewer = phases;
+        for (qsizetype i = 1; i < fewer.size(); ++i)
+            if (fewer[i] == QLatin1String("c") && i % 50 < 25)
+                fewer[i] = QStringLiteral("b1");
+        const auto part = fitFriction(run, o, fewer);
+        QVERIFY(part.positiveSamples < fit.positiveSamples * 3 / 4);
+        QStringList wrongSize = phases.mid(1);
+        QVERIFY_THROWS_EXCEPTION(FitError, fitFriction(run, o, wrongSize));
+    }
+    void groupsByFrequency()
+    {
+        std::vector<FrictionFit> fits;
+        for (double f : {0.8, 0.2, 0.5, 0.2, 0.8, 0.5}) {
+            synthetic::Friction p;
+            p.frequency_hz = f;
+            p.seed = std::uint32_t(fits.size() + 1);
+            p.cycles = 4;
+            FrictionOptions o;
+            o.thickness_mm = 20.0;
+            o.estimateMass = true;
+            fits.push_back(fitFriction(synthetic::makeFriction(p), o));
+        }
+        const auto groups = groupByFrequency(fits);
+        QCOMPARE(groups.size(), std::size_t(3));
+        QCOMPARE(groups[0].frequency_hz, 0.2);
+        QCOMPARE(groups[2].frequency_hz, 0.8);
+        QCOMPARE(groups[1].runs, std::size_t(2));
+        const double m = (fits[1].perLength.Cp_N_per_m + fits[3].perLength.Cp_N_per_m) / 2.0;
+        QVERIFY(std::fabs(groups[0].mean.Cp_N_per_m - m) < 1e-9);
+        const double sd = std::fabs(fits[1].perLength.Cp_N_per_m - fits[3].perLength.Cp_N_per_m) / std::sqrt(2.0);
+        QVERIFY(std::fabs(groups[0].stdDev.Cp_N_per_m - sd) < 1e-9);
+        QVERIFY(groups[0].massEstimateMean_kg.has_value());
+        const auto all = overall(fits);
+        QCOMPARE(all.runs, std::size_t(6));
+        QVERIFY(std::fabs(all.mean.Cp_N_per_m - 10.0) < 0.5);  // 0.2 N over 0.02 m
+    }
+    void badInputThrows()
+    {
+        FrictionOptions o;
+        o.thickness_mm = 20.0;
+        Run still;
+        for (int i = 0; i < 2000; ++i) {
+            still.time_s.push_back(i * 0.002);
+            still.position_mm.push_back(1.0);
+            still.force_N.push_back(0.001 * (i % 5));
+        }
+        try {
+            fitFriction(still, o);
+            QFAIL("no error");
+        } catch (const FitError& e) {
+            QVERIFY(e.message().contains(QStringLiteral("no motion")));
+        }
+        Run ramp = still;
+        for (int i = 0; i < 2000; ++i)
+            ramp.position_mm[std::size_t(i)] = i * 0.02;  // 10 mm/s one way only
+        QVERIFY_THROWS_EXCEPTION(FitError, fitFriction(ramp, o));
+        synthetic::Friction p;
+        const Run good = synthetic::makeFriction(p);
+        FrictionOptions noThickness;
+        QVERIFY_THROWS_EXCEPTION(FitError, fitFriction(good, noThickness));
+        Run tiny = good;
+        tiny.time_s.resize(150);
+        tiny.position_mm.resize(150);
+        tiny.force_N.resize(150);
+        tiny.text.clear();
+        QVERIFY_THROWS_EXCEPTION(FitError, fitFriction(tiny, o));
+        Run nan = good;
+        nan.force_N[500] = std::nan("");
+        QVERIFY_THROWS_EXCEPTION(FitError, fitFriction(nan, o));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFrictionFit)
+#include "test_friction_fit.moc"
