@@ -8,6 +8,8 @@ namespace nb::cli {
 
 // Each command's entry point, defined in its cmd_*.cpp file.
 int cmdVersion(const QStringList& args, Io io);
+int cmdDevices(const QStringList& args, Io io);
+int cmdAcquire(const QStringList& args, Io io);
 int cmdSimulate(const QStringList& args, Io io);
 int cmdExport(const QStringList& args, Io io);
 
@@ -15,6 +17,8 @@ const std::vector<Command>& commands()
 {
     static const std::vector<Command> all{
         {QStringLiteral("version"), QCoreApplication::translate("cli", "print the version"), cmdVersion},
+        {QStringLiteral("devices"), QCoreApplication::translate("cli", "list connected DAQs and serial ports"), cmdDevices},
+        {QStringLiteral("acquire"), QCoreApplication::translate("cli", "record one run on real (or simulated) devices"), cmdAcquire},
         {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},
         {QStringLiteral("export"), QCoreApplication::translate("cli", "export a session as CSV, HDF5 or ELAN files"), cmdExport},
     };

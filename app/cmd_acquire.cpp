@@ -1,0 +1,189 @@
+// `needlebench acquire`: one run on real (or simulated) devices, headless, through the same
+// acquisition engine and recorder as the workbench. The device selection is --daq/--stage,
+// falling back to the settings (devices/daq, devices/stage) and then to the simulated rig.
+
+#include "cli_support.h"
+
+#include "devices/acquisition_engine.h"
+#include "devices/device_error.h"
+#include "devices/device_spec.h"
+#include "devices/sim/rig_config.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QSettings>
+#include <QTimer>
+#include <cmath>
+#include <optional>
+
+namespace nb::cli {
+
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+}  // namespace
+
+int cmdAcquire(const QStringList& args, Io io)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption daq(QStringLiteral("daq"), tr("sim | u6 | u6:SERIAL (default: settings, else sim)"), QStringLiteral("DAQ"));
+    const QCommandLineOption stage(QStringLiteral("stage"), tr("sim | zaber:PORT (default: settings, else sim)"), QStringLiteral("STAGE"));
+    const QCommandLineOption protocol(QStringLiteral("protocol"), tr("stiffness|internal|friction|prostate (friction: sine motion)"), QStringLiteral("P"));
+    const QCommandLineOption out(QStringLiteral("out"), tr("the run file to write"), QStringLiteral("RUN.csv"));
+    const QCommandLineOption rate(QStringLiteral("rate-hz"), tr("sampling rate, 100..10000 (default 500)"), QStringLiteral("R"), QStringLiteral("500"));
+    const QCommandLineOption velocity(QStringLiteral("velocity-mm-s"), tr("insertion velocity (default 4)"), QStringLiteral("V"), QStringLiteral("4"));
+    const QCommandLineOption depth(QStringLiteral("depth-mm"), tr("insertion depth from the start position (default 40)"), QStringLiteral("D"), QStringLiteral("40"));
+    const QCommandLineOption amplitude(QStringLiteral("amplitude-mm"), tr("sine amplitude (default 10)"), QStringLiteral("A"), QStringLiteral("10"));
+    const QCommandLineOption frequency(QStringLiteral("frequency-hz"), tr("sine frequency (default 0.5)"), QStringLiteral("F"), QStringLiteral("0.5"));
+    const QCommandLineOption cycles(QStringLiteral("cycles"), tr("sine cycles (default 7)"), QStringLiteral("N"), QStringLiteral("7"));
+    const QCommandLineOption maxForce(QStringLiteral("max-force-n"), tr("force limit that stops the stage (default 8)"), QStringLiteral("F"), QStringLiteral("8"));
+    const QCommandLineOption steps(QStringLiteral("zaber-microsteps-per-mm"), tr("stage resolution (default: settings, else 20997.375)"), QStringLiteral("N"));
+    const QCommandLineOption slope(QStringLiteral("slope-v-per-g"), tr("sensor calibration slope d in V/g (default: settings, else nominal)"), QStringLiteral("D"));
+    for (const auto* o : {&daq, &stage, &protocol, &out, &rate, &velocity, &depth, &amplitude, &frequency, &cycles, &maxForce, &steps, &slope})
+        parser.addOption(*o);
+    int code = Ok;
+    if (!parseArgs(parser, QStringLiteral("acquire"), args, io, 0, 0, &code))
+        return code;
+
+    auto usage = [&](const QString& why) {
+        io.err << "needlebench acquire: " << why << "\n\n" << tr("Run 'needlebench acquire --help' for the options.") << '\n';
+        return Usage;
+    };
+    QSettings settings;
+    devices::DeviceSpec spec = devices::specFromSettings(settings);
+    if (parser.isSet(daq))
+        spec.daq = parser.value(daq);
+    if (parser.isSet(stage))
+        spec.stage = parser.value(stage);
+    if (const QString e = devices::checkDaqSpec(spec.daq); !e.isEmpty())
+        return usage(e);
+    if (const QString e = devices::checkStageSpec(spec.stage); !e.isEmpty())
+        return usage(e);
+    const QStringList protocols{QStringLiteral("stiffness"), QStringLiteral("internal"), QStringLiteral("friction"), QStringLiteral("prostate")};
+    if (!protocols.contains(parser.value(protocol)))
+        return usage(tr("--protocol must be one of %1").arg(protocols.join(QLatin1Char('|'))));
+    if (!parser.isSet(out))
+        return usage(tr("--out RUN.csv is required"));
+    QString error;
+    auto number = [&](const QCommandLineOption& o, double lo, double hi) -> std::optional<double> {
+        bool ok = false;
+        const double v = parser.value(o).toDouble(&ok);
+        if (!ok || !std::isfinite(v) || v < lo || v > hi) {
+            error = tr("--%1 must be a number in [%2, %3] (got '%4')").arg(o.names().first()).arg(lo).arg(hi).arg(parser.value(o));
+            return std::nullopt;
+        }
+        return v;
+    };
+    const auto r = number(rate, 100, 10000), v = number(velocity, 0.01, 50), d = number(depth, 0.01, 150),
+               a = number(amplitude, 0.01, 10), f = number(frequency, 0.01, 5), n = number(cycles, 1, 1000),
+               m = number(maxForce, 0.01, 20);
+    if (!r || !v || !d || !a || !f || !n || !m)
+        return usage(error);
+    if (parser.isSet(steps)) {
+        const auto s = number(steps, 1, 1e7);
+        if (!s)
+            return usage(error);
+        spec.zaberMicrostepsPerMm = *s;
+    }
+    if (parser.isSet(slope)) {
+        const auto s = number(slope, 1e-9, 1);
+        if (!s)
+            return usage(error);
+        spec.slope_V_per_g = *s;
+    }
+
+    devices::sim::RigConfig rig;
+    rig.realtime = true;
+    devices::DeviceSet set;
+    try {
+        set = devices::openDevices(spec, rig);
+    } catch (const devices::DeviceError& e) {
+        io.err << "needlebench acquire: " << e.message() << '\n';
+        return Failure;
+    }
+    devices::EngineConfig config;
+    config.rateHz = *r;
+    config.forceLimit_N = *m;
+    config.liveView = false;
+    devices::AcquisitionEngine engine(std::move(set), config);
+
+    devices::RunPlan plan;
+    plan.outPath = parser.value(out);
+    plan.metadata.set(QStringLiteral("protocol"), parser.value(protocol));
+    plan.metadata.set(QStringLiteral("daq"), spec.daq);
+    plan.metadata.set(QStringLiteral("stage"), spec.stage);
+    if (spec.stage.startsWith(QLatin1String("zaber:")))
+        // The engine reads the stage once per sensor batch (20 ms): about 50 Hz.
+        plan.metadata.set(QStringLiteral("stage_position_source"), QStringLiteral("zaber polled 50 Hz, interpolated"));
+    if (parser.value(protocol) == QLatin1String("friction")) {
+        plan.motion = devices::RunPlan::Motion::Sine;
+        plan.sine = {*a, *f, int(*n)};
+        plan.metadata.set(QStringLiteral("amplitude_mm"), *a);
+        plan.metadata.set(QStringLiteral("frequency_hz"), *f);
+        plan.metadata.set(QStringLiteral("cycles"), *n);
+    } else {
+        plan.motion = devices::RunPlan::Motion::Linear;
+        plan.linear = {*v, *d};
+        plan.metadata.set(QStringLiteral("velocity_mm_s"), *v);
+        plan.metadata.set(QStringLiteral("depth_mm"), *d);
+    }
+
+    QEventLoop loop;
+    std::optional<devices::RunSummary> summary;
+    QString failure;
+    QObject::connect(&engine, &devices::AcquisitionEngine::runEnded, &loop, [&](const devices::RunSummary& s) {
+        summary = s;
+        loop.quit();
+    });
+    QObject::connect(&engine, &devices::AcquisitionEngine::runRefused, &loop, [&](const QString& why) {
+        failure = why;
+        loop.quit();
+    });
+    QObject::connect(&engine, &devices::AcquisitionEngine::faultOccurred, &loop,
+                     [&](const QString& device, const QString& reason) { failure = device + QStringLiteral(": ") + reason; });
+    engine.start();
+    engine.enableStage(true);
+    engine.biasSensor();
+    engine.zeroStage();
+    bool started = false;
+    QElapsedTimer wall;
+    wall.start();
+    QTimer tick;
+    tick.setInterval(20);
+    QObject::connect(&tick, &QTimer::timeout, &loop, [&] {
+        const devices::EngineStatus st = engine.status();
+        if (!started && st.biased && st.zeroed && st.stageEnabled) {
+            started = true;
+            engine.startRun(plan);
+        }
+        if (!started && !st.fault.isEmpty()) {
+            failure = st.fault;
+            loop.quit();
+        }
+        if (!started && wall.elapsed() > 10000) {
+            failure = tr("the devices did not get ready within 10 s");
+            loop.quit();
+        }
+    });
+    tick.start();
+    loop.exec();
+    tick.stop();
+    engine.shutdown();
+    if (!summary) {
+        io.err << "needlebench acquire: " << failure << '\n';
+        return Failure;
+    }
+    QJsonObject result{{QStringLiteral("out"), summary->path},
+                       {QStringLiteral("end_reason"), summary->endReason},
+                       {QStringLiteral("samples"), double(summary->samples)},
+                       {QStringLiteral("dropped"), double(summary->dropped)},
+                       {QStringLiteral("device"), engine.deviceDescription()}};
+    if (!summary->fault.isEmpty())
+        result.insert(QStringLiteral("fault"), summary->fault);
+    printJson(io, result);
+    return summary->endReason == QLatin1String("fault") ? Failure : Ok;
+}
+
+}  // namespace nb::cli

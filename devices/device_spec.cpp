@@ -1,0 +1,154 @@
+#include "device_spec.h"
+
+#include "devices/device_error.h"
+#include "devices/labjack_u6/u6_force_sensor.h"
+#include "devices/sim/rig_config.h"
+#include "devices/sim/simulated_rig.h"
+#include "devices/zaber/zaber_stage.h"
+
+#include <QCoreApplication>
+#include <QSerialPortInfo>
+#include <QSettings>
+
+namespace nb::devices {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("nb::devices", text);
+}
+
+// The thesis's load cell, 12.3 mV/N, straight into the U6's differential input.
+constexpr double kBridgeSlope_V_per_g = 0.0123 * 9.81 / 1000.0;
+
+}  // namespace
+
+QString checkDaqSpec(const QString& spec)
+{
+    if (spec == QLatin1String("sim") || spec == QLatin1String("u6"))
+        return {};
+    if (spec.startsWith(QLatin1String("u6:"))) {
+        bool ok = false;
+        spec.mid(3).toULongLong(&ok);
+        return ok ? QString() : tr("'%1': the U6 serial number must be digits (see 'needlebench devices')").arg(spec);
+    }
+    return tr("unknown DAQ '%1' (sim | u6 | u6:SERIAL)").arg(spec);
+}
+
+QString checkStageSpec(const QString& spec)
+{
+    if (spec == QLatin1String("sim"))
+        return {};
+    if (spec.startsWith(QLatin1String("zaber:")) && spec.size() > 6)
+        return {};
+    return tr("unknown stage '%1' (sim | zaber:PORT)").arg(spec);
+}
+
+DeviceSpec specFromSettings(const QSettings& s)
+{
+    DeviceSpec d;
+    d.daq = s.value(QStringLiteral("devices/daq"), d.daq).toString();
+    d.stage = s.value(QStringLiteral("devices/stage"), d.stage).toString();
+    d.zaberMicrostepsPerMm = s.value(QStringLiteral("devices/zaber_microsteps_per_mm"), d.zaberMicrostepsPerMm).toDouble();
+    d.u6Channel = s.value(QStringLiteral("devices/u6_channel"), d.u6Channel).toInt();
+    d.u6GainIndex = s.value(QStringLiteral("devices/u6_gain_index"), d.u6GainIndex).toInt();
+    d.slope_V_per_g = s.value(QStringLiteral("devices/slope_V_per_g"), d.slope_V_per_g).toDouble();
+    return d;
+}
+
+void saveSpec(QSettings& s, const DeviceSpec& d)
+{
+    s.setValue(QStringLiteral("devices/daq"), d.daq);
+    s.setValue(QStringLiteral("devices/stage"), d.stage);
+    s.setValue(QStringLiteral("devices/zaber_microsteps_per_mm"), d.zaberMicrostepsPerMm);
+    s.setValue(QStringLiteral("devices/u6_channel"), d.u6Channel);
+    s.setValue(QStringLiteral("devices/u6_gain_index"), d.u6GainIndex);
+    s.setValue(QStringLiteral("devices/slope_V_per_g"), d.slope_V_per_g);
+}
+
+DeviceSet openDevices(const DeviceSpec& spec, const sim::RigConfig& simConfig)
+{
+    if (const QString e = checkDaqSpec(spec.daq); !e.isEmpty())
+        throw DeviceError(QStringLiteral("--daq"), e);
+    if (const QString e = checkStageSpec(spec.stage); !e.isEmpty())
+        throw DeviceError(QStringLiteral("--stage"), e);
+    const bool simDaq = spec.daq == QLatin1String("sim");
+    const bool simStage = spec.stage == QLatin1String("sim");
+    if (simDaq && simStage)
+        return makeSimulatedDevices(simConfig);
+
+    DeviceSet set;
+    QStringList parts;
+    if (simDaq || simStage) {
+        // Half real, half simulated: the simulated half must keep wall-clock time.
+        sim::RigConfig c = simConfig;
+        c.realtime = true;
+        DeviceSet simulated = makeSimulatedDevices(c);
+        set.rig = simulated.rig;
+        if (simDaq) {
+            set.sensor = std::move(simulated.sensor);
+            set.nominalSlope_V_per_g = simulated.nominalSlope_V_per_g;
+            parts << tr("simulated load cell");
+        } else {
+            set.stage = std::move(simulated.stage);
+            parts << tr("simulated stage");
+        }
+    }
+    if (!simDaq) {
+        U6Config c;
+        c.serial = spec.daq.mid(3);
+        c.channel = spec.u6Channel;
+        c.gainIndex = spec.u6GainIndex;
+        auto sensor = std::make_unique<U6ForceSensor>(c);
+        parts.prepend(sensor->name());
+        set.sensor = std::move(sensor);
+        set.nominalSlope_V_per_g = spec.slope_V_per_g > 0 ? spec.slope_V_per_g : kBridgeSlope_V_per_g;
+    }
+    if (!simStage) {
+        ZaberConfig c;
+        c.port = spec.stage.mid(6);
+        c.units.microstepsPerMm = spec.zaberMicrostepsPerMm;
+        auto stage = std::make_unique<ZaberStage>(c);
+        parts << stage->name();
+        set.stage = std::move(stage);
+    }
+    // A real sensor makes the (simulated) rig's own sensor truth meaningless.
+    if (!simDaq)
+        set.rig.reset();
+    set.description = parts.join(QStringLiteral(", "));
+    return set;
+}
+
+std::vector<ConnectedDevice> listDevices()
+{
+    std::vector<ConnectedDevice> out;
+    try {
+        for (const U6Found& u : findU6Devices()) {
+            ConnectedDevice d;
+            d.kind = QStringLiteral("daq");
+            d.spec = u.serial.isEmpty() ? QStringLiteral("u6") : QStringLiteral("u6:%1").arg(u.serial);
+            d.description = tr("LabJack U6 (USB bus %1 device %2)").arg(u.bus).arg(u.address);
+            d.problem = u.problem;
+            out.push_back(d);
+        }
+    } catch (const DeviceError& e) {
+        out.push_back({QStringLiteral("daq"), QString(), tr("USB"), e.reason()});
+    }
+    for (const QSerialPortInfo& p : QSerialPortInfo::availablePorts()) {
+        ConnectedDevice d;
+        d.kind = QStringLiteral("serial");
+        d.spec = QStringLiteral("zaber:%1").arg(p.systemLocation());
+        QStringList words;
+        for (const QString& w : {p.description(), p.manufacturer(), p.serialNumber()})
+            if (!w.isEmpty())
+                words << w;
+        if (p.hasVendorIdentifier())
+            words << QStringLiteral("%1:%2").arg(p.vendorIdentifier(), 4, 16, QLatin1Char('0')).arg(p.productIdentifier(), 4, 16, QLatin1Char('0'));
+        d.description = words.join(QStringLiteral(", "));
+        out.push_back(d);
+    }
+    return out;
+}
+
+}  // namespace nb::devices
