@@ -284,6 +284,7 @@ void CalibrationWizard::refit()
     } catch (const FitError& e) {
         fitLabel_->setText(e.message());
     }
+    findSuspect(points);
     updating_ = true;
     for (int r = 0; r < table_->rowCount(); ++r) {
         table_->item(r, Residual)->setText(QStringLiteral("–"));
@@ -305,10 +306,9 @@ void CalibrationWizard::refit()
                            .arg(fit_.rms_V * 1000.0, 0, 'f', 3)
                            .arg(fitRows_.size());
         if (worst >= 0)
-            text += QStringLiteral("\n") + tr("Suspect point: %1 g (residual %2 mV, %3× the rms). Untick it to leave it out.")
+            text += QStringLiteral("\n") + tr("Suspect point: %1 g lies %2× the scatter of the other points off their line. Untick it to leave it out.")
                                                 .arg(massAt(worst))
-                                                .arg(fit_.residuals_V[std::size_t(std::find(fitRows_.begin(), fitRows_.end(), worst) - fitRows_.begin())] * 1000.0, 0, 'f', 3)
-                                                .arg(std::abs(fit_.residuals_V[std::size_t(std::find(fitRows_.begin(), fitRows_.end(), worst) - fitRows_.begin())]) / fit_.rms_V, 0, 'f', 1);
+                                                .arg(worstSigmas_, 0, 'f', 0);
         fitLabel_->setText(text);
     } else if (points.size() < 2) {
         fitLabel_->setText(tr("No fit yet: measure at least two masses."));
@@ -316,16 +316,32 @@ void CalibrationWizard::refit()
     save_->setEnabled(hasFit_);
 }
 
-int CalibrationWizard::worstRow() const
+int CalibrationWizard::worstRow() const { return worst_; }
+
+void CalibrationWizard::findSuspect(const std::vector<CalibrationPoint>& points)
 {
-    // A point is suspect when it sits far off the line compared with the others.
-    if (!hasFit_ || fitRows_.size() < 4 || fit_.rms_V <= 0.0)
-        return -1;
-    std::size_t worst = 0;
-    for (std::size_t k = 1; k < fit_.residuals_V.size(); ++k)
-        if (std::abs(fit_.residuals_V[k]) > std::abs(fit_.residuals_V[worst]))
-            worst = k;
-    return std::abs(fit_.residuals_V[worst]) > 2.5 * fit_.rms_V ? fitRows_[worst] : -1;
+    // The point farthest off the line is suspect when the line through the others misses it
+    // by far more than those others scatter (a leave-one-out check: one bad point pulls the
+    // full fit towards itself and hides in its rms).
+    worst_ = -1;
+    worstSigmas_ = 0.0;
+    if (!hasFit_ || points.size() < 4)
+        return;
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < fit_.residuals_V.size(); ++i)
+        if (std::abs(fit_.residuals_V[i]) > std::abs(fit_.residuals_V[k]))
+            k = i;
+    std::vector<CalibrationPoint> others = points;
+    others.erase(others.begin() + std::ptrdiff_t(k));
+    try {
+        const CalibrationFit loo = fitCalibration(others);
+        const double miss = points[k].voltage_V - (loo.intercept_V + loo.slope_V_per_g * points[k].mass_g);
+        const double scatter = std::max(loo.rms_V, 1e-5);  // floor: the ADC's resolution, roughly
+        worstSigmas_ = std::abs(miss) / scatter;
+        if (worstSigmas_ > 6.0)
+            worst_ = fitRows_[k];
+    } catch (const FitError&) {
+    }
 }
 
 void CalibrationWizard::redraw()
@@ -341,7 +357,7 @@ void CalibrationWizard::redraw()
     for (std::size_t k = 0; hasFit_ && k < fitRows_.size(); ++k) {
         rm.push_back(massAt(fitRows_[k]));
         rv.push_back(fit_.residuals_V[k] * 1000.0);
-        if (fitRows_[k] == worstRow()) {
+        if (fitRows_[k] == worst_) {
             wm.push_back(rm.back());
             wv.push_back(rv.back());
         }

@@ -61,6 +61,7 @@ private:
     void beginRow(int row);
     void finishRow();
     void refit();
+    void findSuspect(const std::vector<CalibrationPoint>& points);
     void redraw();
     double massAt(int row) const;
     bool usedAt(int row) const;
@@ -88,6 +89,8 @@ private:
     CalibrationFit fit_;
     std::vector<int> fitRows_;  // table rows behind fit_.residuals_V
     bool updating_ = false;
+    int worst_ = -1;
+    double worstSigmas_ = 0.0;
 };
 
 }  // namespace nb

@@ -1,0 +1,263 @@
+// The whole workbench on the simulated rig, driven like an operator would: the sequence
+// from enable to a saved run file, the emergency stop key, stop motion vs end run, the
+// calibration wizard on the simulated load cell, and recovery of a run cut off by a crash.
+// Screenshots land in build-gui/screenshots/.
+#include "main_window.h"
+
+#include "core/run_file.h"
+#include "devices/acquisition_engine.h"
+#include "devices/sim/rig_config.h"
+#include "devices/sim/simulated_rig.h"
+#include "widgets/calibration_wizard.h"
+#include "widgets/control_panel.h"
+#include "widgets/force_plots.h"
+#include "widgets/session_view.h"
+
+#include <QAbstractButton>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <qcustomplot.h>
+#include <QtTest>
+
+using nb::Control;
+
+namespace {
+
+QString screenshotDir()
+{
+    const QString dir = QStringLiteral(NB_BINARY_DIR "/screenshots");
+    QDir().mkpath(dir);
+    return dir;
+}
+
+nb::WorkbenchOptions options(const QString& sessionDir, bool realtime)
+{
+    nb::WorkbenchOptions o;
+    o.realtime = realtime;
+    o.rateHz = 1000.0;
+    o.sessionDir = sessionDir;
+    o.persistSettings = false;
+    o.calibrationDwell_s = 0.2;
+    return o;
+}
+
+// Enable, bias and zero through the panel's buttons, checking the start stays locked until all are done.
+void prepare(nb::MainWindow& w)
+{
+    nb::ControlPanel* p = w.controlPanel();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().devicesRunning, 20000);
+    QAbstractButton* start = p->button(Control::StartInsertion);
+    QVERIFY(!start->isEnabled());
+    QVERIFY(!p->button(Control::Zero)->isEnabled());
+    QTest::mouseClick(p->button(Control::Enable), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().stageEnabled, 20000);
+    QVERIFY(!start->isEnabled());
+    QVERIFY(start->toolTip().contains(QStringLiteral("Bias")));
+    QTest::mouseClick(p->button(Control::Bias), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().biased, 20000);
+    QVERIFY(!start->isEnabled());
+    QTest::mouseClick(p->button(Control::Zero), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(start->isEnabled(), 20000);
+}
+
+void setMotion(nb::MainWindow& w, double velocity, double depth)
+{
+    w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->setValue(velocity);
+    w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->setValue(depth);
+}
+
+}  // namespace
+
+class TestWorkbench : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("NeedleBenchTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_workbench"));
+    }
+
+    void fullRunFromEnableToSavedFile()
+    {
+        QTemporaryDir tmp;
+        const QString dir = tmp.filePath(QStringLiteral("session"));
+        nb::MainWindow w(options(dir, true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.session());
+        setMotion(w, 10.0, 20.0);  // 2 s in real time
+        prepare(w);
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().recording, 20000);
+        QVERIFY(!w.controlPanel()->button(Control::StartInsertion)->isEnabled());
+        QVERIFY(!w.controlPanel()->button(Control::Bias)->isEnabled());
+        QTRY_VERIFY_WITH_TIMEOUT(w.plots()->sampleCount() > 1200, 20000);
+        QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_run.png")));
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("completed"));
+        QVERIFY(w.plots()->framesDrawn() > 10);
+        QVERIFY(w.plots()->eventCount() >= 2);  // contact and puncture marked
+        QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_after_run.png")));
+
+        QCOMPARE(QFileInfo(w.lastRunPath()).fileName(), QStringLiteral("run_001_linear.csv"));
+        QCOMPARE(QFileInfo(w.lastRunPath()).absolutePath(), QDir(dir).absolutePath());
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QVERIFY(r.run.size() > 1500);
+        QCOMPARE(r.run.meta(QStringLiteral("end_reason")).value_or(QString()), QStringLiteral("completed"));
+        QVERIFY(!r.run.meta(QStringLiteral("calibration")).value_or(QString()).isEmpty());
+        QCOMPARE(r.run.meta(QStringLiteral("motion")).value_or(QString()), QStringLiteral("linear"));
+        QCOMPARE(r.run.metadata.number(QStringLiteral("depth_mm")).value_or(0.0), 20.0);
+        const double deepest = *std::max_element(r.run.position_mm.begin(), r.run.position_mm.end());
+        QVERIFY2(deepest > 19.5 && deepest < 20.5, qPrintable(QString::number(deepest)));
+
+        nb::RunListModel* model = w.sessionView()->model();
+        QCOMPARE(model->rowCount(), 1);
+        QCOMPARE(model->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("complete"));
+        // The next run gets the next name.
+        QCOMPARE(QFileInfo(w.session()->nextRunPath(QStringLiteral("linear"))).fileName(), QStringLiteral("run_002_linear.csv"));
+    }
+
+    void emergencyStopKey()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        setMotion(w, 5.0, 60.0);
+        prepare(w);
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().moving, 20000);
+        // Esc works wherever the focus is: here a plot has it.
+        w.plots()->forceTimePlot()->setFocus();
+        QTest::keyClick(w.plots()->forceTimePlot(), Qt::Key_Escape);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controlPanel()->interlockState().moving, 20000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("stopped"));
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QCOMPARE(r.run.footer.value(QStringLiteral("emergency_stop"), QString()), QStringLiteral("operator"));
+        const double deepest = *std::max_element(r.run.position_mm.begin(), r.run.position_mm.end());
+        QVERIFY(deepest < 59.0);  // stopped well before the planned depth
+    }
+
+    void stopMotionKeepsRecordingUntilEndRun()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setMotion(w, 5.0, 60.0);
+        prepare(w);
+        nb::ControlPanel* p = w.controlPanel();
+        QTest::mouseClick(p->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving, 20000);
+        QVERIFY(!p->button(Control::EndRun)->isEnabled());  // End run never doubles as a stop
+        QTest::mouseClick(p->button(Control::StopMotion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().moving, 20000);
+        const std::size_t before = w.plots()->sampleCount();
+        QTRY_VERIFY_WITH_TIMEOUT(w.plots()->sampleCount() > before + 300, 20000);
+        QVERIFY(p->interlockState().recording);  // the stop did not close the run
+        QCOMPARE(w.runsEnded(), 0);
+        QVERIFY(p->button(Control::Withdraw)->text().contains(QStringLiteral("recorded in this run")));
+        QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::EndRun)->isEnabled(), 20000);
+        QTest::mouseClick(p->button(Control::EndRun), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("stopped"));
+        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("stopped"));
+    }
+
+    void calibrationWizardOnTheSimulatedSensor()
+    {
+        QTemporaryDir tmp;
+        // Real time: the wizard averages what the live stream delivers while the mass hangs.
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+        QTest::mouseClick(w.controlPanel()->button(Control::Calibrate), Qt::LeftButton);
+        nb::CalibrationWizard* wizard = w.findChild<nb::CalibrationWizard*>();
+        QVERIFY(wizard);
+        QVERIFY(QTest::qWaitForWindowExposed(wizard));
+        QCOMPARE(wizard->rowCount(), 35);  // 0 to 850 g in 25 g steps
+        wizard->setMasses(0.0, 300.0, 50.0);
+        QCOMPARE(wizard->rowCount(), 7);
+        auto* measureAll = wizard->findChildren<QPushButton*>().at(0);
+        for (QPushButton* b : wizard->findChildren<QPushButton*>())
+            if (b->text() == QStringLiteral("Measure all"))
+                measureAll = b;
+        QTest::mouseClick(measureAll, Qt::LeftButton);
+        QVERIFY(wizard->isMeasuring());
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard->isMeasuring(), 60000);
+        QVERIFY(wizard->hasFit());
+        const double nominal = nb::devices::sim::SensorChainConfig{}.slope_V_per_g();
+        QVERIFY2(std::abs(wizard->fit().slope_V_per_g - nominal) < 0.02 * nominal,
+                 qPrintable(QString::number(wizard->fit().slope_V_per_g)));
+        QVERIFY(wizard->fit().r2 > 0.999);
+        QCOMPARE(wizard->worstRow(), -1);
+
+        // A mass mislabelled by the operator (150 g row measured with 230 g on the hook).
+        wizard->setLoadMassHook([&w](double g) { w.engine()->rig()->setLoadMass_g(g == 150.0 ? 230.0 : g); });
+        wizard->table()->selectRow(3);
+        wizard->measureCurrent();
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard->isMeasuring(), 60000);
+        QCOMPARE(wizard->worstRow(), 3);
+        QVERIFY(wizard->fit().r2 < 0.999);
+        QVERIFY(wizard->grab().save(screenshotDir() + QStringLiteral("/calibration_wizard_bad_point.png")));
+        QTest::mouseClick(wizard->table()->viewport(), Qt::LeftButton, {},
+                          wizard->table()->visualRect(wizard->table()->model()->index(3, 3)).center());
+        // Unticking the point drops it from the fit (the click may land on the text, so make sure).
+        if (wizard->worstRow() == 3)
+            wizard->setPointUsed(3, false);
+        QVERIFY(wizard->fit().r2 > 0.999);
+        QCOMPARE(wizard->calibration().removed.size(), 1u);
+        QCOMPARE(wizard->calibration().points.size(), 6u);
+        QVERIFY(wizard->grab().save(screenshotDir() + QStringLiteral("/calibration_wizard.png")));
+
+        for (QPushButton* b : wizard->findChildren<QPushButton*>())
+            if (b->text() == QStringLiteral("Save and use"))
+                QTest::mouseClick(b, Qt::LeftButton);
+        const auto active = w.session()->activeCalibration();
+        QVERIFY(active);
+        QCOMPARE(active->removed.size(), 1u);
+        QTRY_COMPARE_WITH_TIMEOUT(w.engine()->status().calibrationName, active->name, 20000);
+        QVERIFY(std::abs(w.engine()->status().slope_V_per_g - active->fit.slope_V_per_g) < 1e-12);
+    }
+
+    void recoversAnInterruptedRunAtStart()
+    {
+        QTemporaryDir tmp;
+        const QString dir = tmp.filePath(QStringLiteral("s"));
+        nb::Session::create(dir, {});
+        const QString crashed = QDir(dir).filePath(QStringLiteral("run_001_linear.csv"));
+        {
+            nb::RunFileWriter writer;
+            nb::Metadata meta;
+            meta.set(QStringLiteral("motion"), QStringLiteral("linear"));
+            writer.open(crashed, meta, {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")});
+            for (int i = 0; i < 500; ++i) {
+                const double row[] = {i * 0.002, i * 0.008, 0.001 * i};
+                writer.writeRow(row);
+            }
+            writer.flush();
+            QFile f(crashed);  // the process died mid-row, before any footer
+            QVERIFY(f.open(QIODevice::Append));
+            f.write("1.0000,4.0");
+        }
+        nb::MainWindow w(options(dir, false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.recoveredRuns().size(), 1);
+        const nb::RunReadResult r = nb::readRunFile(crashed);
+        QCOMPARE(r.run.size(), 500u);
+        QCOMPARE(r.run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("recovered"));
+        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("recovered"));
+        // The next run does not overwrite it.
+        QCOMPARE(QFileInfo(w.session()->nextRunPath(QStringLiteral("linear"))).fileName(), QStringLiteral("run_002_linear.csv"));
+    }
+};
+
+QTEST_MAIN(TestWorkbench)
+#include "test_workbench.moc"
