@@ -12,6 +12,7 @@ int cmdDevices(const QStringList& args, Io io);
 int cmdAcquire(const QStringList& args, Io io);
 int cmdSimulate(const QStringList& args, Io io);
 int cmdExport(const QStringList& args, Io io);
+int cmdDemo(const QStringList& args, Io io);
 
 const std::vector<Command>& commands()
 {
@@ -21,6 +22,7 @@ const std::vector<Command>& commands()
         {QStringLiteral("acquire"), QCoreApplication::translate("cli", "record one run on real (or simulated) devices"), cmdAcquire},
         {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},
         {QStringLiteral("export"), QCoreApplication::translate("cli", "export a session as CSV, HDF5 or ELAN files"), cmdExport},
+        {QStringLiteral("demo"), QCoreApplication::translate("cli", "simulate, label, fit and export a short session"), cmdDemo, true},
     };
     return all;
 }

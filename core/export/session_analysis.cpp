@@ -33,7 +33,17 @@ void applyEventLabel(const Run& run, const Labels& labels, const QString& name, 
         auto it = std::lower_bound(t.begin(), t.end(), l.start_s);
         if (it == t.end() || (it != t.begin() && l.start_s - *(it - 1) < *it - l.start_s))
             --it;
-        const std::size_t i = std::size_t(it - t.begin());
+        std::size_t i = std::size_t(it - t.begin());
+        if (name == QLatin1String("puncture")) {
+            // A mark lands a frame or two off the peak (video, reaction): the puncture is the
+            // force peak within 50 ms of it, not whatever sample is nearest.
+            for (std::size_t j = i; j > 0 && t[j - 1] >= l.start_s - 0.05; --j)
+                if (run.force_N[j - 1] > run.force_N[i])
+                    i = j - 1;
+            for (std::size_t j = i + 1; j < t.size() && t[j] <= l.start_s + 0.05; ++j)
+                if (run.force_N[j] > run.force_N[i])
+                    i = j;
+        }
         event = {i, t[i], run.position_mm[i], run.force_N[i] - zeroOffset};
         return;
     }

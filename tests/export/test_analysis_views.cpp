@@ -1,0 +1,175 @@
+// The analysis workspace on runs recorded by the real simulator: every view is filled, follows
+// the run choice and label edits, and is grabbed to build-export/screenshots/ for a human look.
+#include "core/export/dataset_loader.h"
+#include "core/export/export_error.h"
+#include "widgets/analysis/analysis_plots.h"
+#include "widgets/analysis/analysis_workspace.h"
+#include "widgets/analysis/figure_export.h"
+
+#include <QDir>
+#include <QListWidget>
+#include <QProcess>
+#include <QStandardItemModel>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <qcustomplot.h>
+
+using namespace nb;
+
+namespace {
+
+bool simulate(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(NB_EXECUTABLE), QStringList{QStringLiteral("simulate")} + args);
+    return p.waitForFinished(60000) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+}
+
+// How many distinct colours an image has in a coarse sample: a blank or failed render has 1-2.
+int colourCount(const QImage& image)
+{
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 7)
+        for (int x = 0; x < image.width(); x += 7)
+            colours.insert(image.pixel(x, y));
+    return int(colours.size());
+}
+
+}  // namespace
+
+class TestAnalysisViews : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase()
+    {
+        const QDir d(dir_.path());
+        for (int seed = 1; seed <= 4; ++seed)
+            QVERIFY(simulate({"--protocol", "stiffness", "--tissue", "liver1", "--seed", QString::number(seed), "--out",
+                              d.filePath(QStringLiteral("run_00%1_linear.csv").arg(seed))}));
+        QVERIFY(simulate({"--protocol", "friction", "--frequency-hz", "0.5", "--cycles", "3", "--out",
+                          d.filePath(QStringLiteral("run_005_sine.csv")), "--truth", d.filePath(QStringLiteral("truth5.json"))}));
+        // Phase labels for the friction run, as an operator would mark them (a, c alternating).
+        Labels labels;
+        for (int k = 0; k < 12; ++k) {
+            const double t0 = 0.5 * k;
+            labels.push_back({QStringLiteral("phase"), k % 2 ? QStringLiteral("c") : QStringLiteral("a"), t0, t0 + 0.5, {}});
+        }
+        writeLabelsFile(d.filePath(QStringLiteral("run_005_sine.labels.csv")), labels);
+        QDir().mkpath(QStringLiteral(NB_BINARY_DIR "/screenshots"));
+    }
+
+    void viewsShowTheSession()
+    {
+        AnalysisWorkspace w;
+        w.resize(1400, 900);
+        QVERIFY(w.openSession(dir_.path()));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const SessionAnalysis& a = w.analysis();
+        QCOMPARE(a.stiffness.size(), std::size_t(4));
+        QCOMPARE(a.stiffnessGroups.size(), std::size_t(1));
+        QCOMPARE(a.stiffnessGroups[0].group, QStringLiteral("liver1"));
+        QCOMPARE(a.friction.size(), std::size_t(1));
+        QVERIFY2(a.friction[0].ok(), qPrintable(a.friction[0].error));
+        QCOMPARE(a.friction[0].fit.staticSource, QStringLiteral("phase a"));  // the labels chose the samples
+        QCOMPARE(w.stiffnessRunsModel()->rowCount(), 4);
+        QCOMPARE(w.stiffnessPooledModel()->rowCount(), 2);  // pooled + mean of runs
+        QCOMPARE(w.frictionSummaryModel()->rowCount(), 4);  // 0.5 Hz and overall, mean and std
+        QCOMPARE(w.validationModel()->rowCount(), 4);
+        QVERIFY(w.stiffnessPlot()->graphCount() >= 9);       // 4 runs x (points + fit) + pooled
+        QVERIFY(w.phasesPlot()->itemCount() >= 12);         // shaded phases
+
+        const char* names[] = {"stiffness", "friction", "validation"};
+        for (int t = 0; t < 3; ++t) {
+            w.tabs()->setCurrentIndex(t);
+            QCoreApplication::processEvents();
+            const QImage shot = w.grab().toImage();
+            QVERIFY(shot.save(QStringLiteral(NB_BINARY_DIR "/screenshots/analysis_%1.png").arg(QLatin1String(names[t]))));
+            QVERIFY(colourCount(shot) > 20);
+        }
+    }
+
+    void runChoiceAndLabelEditsUpdateResults()
+    {
+        AnalysisWorkspace w;
+        QVERIFY(w.openSession(dir_.path()));
+        QSignalSpy updated(&w, &AnalysisWorkspace::analysisUpdated);
+        // Untick the first run in the list, as the user would.
+        auto* list = w.findChild<QListWidget*>();
+        QVERIFY(list);
+        list->item(0)->setCheckState(Qt::Unchecked);
+        QCOMPARE(updated.count(), 1);
+        QCOMPARE(w.analysis().stiffness.size(), std::size_t(3));
+        QCOMPARE(w.stiffnessRunsModel()->rowCount(), 3);
+        w.setRuns({});
+        QCOMPARE(w.analysis().stiffness.size(), std::size_t(4));
+
+        // A puncture label moves the detected puncture and so the table's depth.
+        const auto before = w.analysis().stiffness[1].events;
+        const double labelled = before.puncture.time_s - 0.5;
+        const QString labels = QDir(dir_.path()).filePath(QStringLiteral("run_002_linear.labels.csv"));
+        writeLabelsFile(labels, {{QStringLiteral("events"), QStringLiteral("puncture"), labelled, labelled, {}}});
+        w.reloadLabels();
+        const auto after = w.analysis().stiffness[1].events;
+        QVERIFY(std::abs(after.puncture.time_s - labelled) < 0.01);
+        QVERIFY(after.punctureDepth_mm() < before.punctureDepth_mm() - 1.0);
+        QVERIFY(QFile::remove(labels));
+        // The watcher notices the removal by itself.
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(w.analysis().stiffness[1].events.puncture.time_s - before.puncture.time_s) < 1e-9, 10000);
+    }
+
+    void brokenLabelsKeepTheLastGoodOnes()
+    {
+        AnalysisWorkspace w;
+        QVERIFY(w.openSession(dir_.path()));
+        const QString path = QDir(dir_.path()).filePath(QStringLiteral("run_005_sine.labels.csv"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray good = f.readAll();
+        f.close();
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write("track,label,start_s,end_s,comment\nphase,a,zero,1,\n");
+        f.close();
+        w.reloadLabels();
+        QCOMPARE(w.analysis().friction[0].fit.staticSource, QStringLiteral("phase a"));
+        QVERIFY(w.findChild<QLabel*>() != nullptr);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(good);
+        f.close();
+    }
+
+    void figuresInEveryFormat()
+    {
+        const LoadedDataset loaded = loadDataset(dir_.path());
+        const SessionAnalysis a = analyseDataset(loaded.dataset);
+        QCustomPlot plot;
+        plotStiffness(&plot, a, QStringLiteral("liver1"));
+        QTemporaryDir out;
+        for (const char* ext : {"png", "svg", "pdf"}) {
+            const QString path = out.filePath(QStringLiteral("stiffness.%1").arg(QLatin1String(ext)));
+            saveFigure(&plot, path, 800, 500);
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QByteArray head = f.read(8);
+            if (QLatin1String(ext) == QLatin1String("png"))
+                QVERIFY(head.startsWith("\x89PNG"));
+            else if (QLatin1String(ext) == QLatin1String("pdf"))
+                QVERIFY(head.startsWith("%PDF"));
+            else
+                QVERIFY(f.readAll().contains("<svg"));
+        }
+        QImage png(out.filePath(QStringLiteral("stiffness.png")));
+        QCOMPARE(png.size(), QSize(800, 500));
+        QVERIFY(colourCount(png) > 10);
+        QVERIFY_THROWS_EXCEPTION(ExportError, saveFigure(&plot, out.filePath(QStringLiteral("x.bmp"))));
+        QVERIFY_THROWS_EXCEPTION(ExportError, saveFigure(&plot, QStringLiteral("/nonexistent-nb/x.png")));
+        // Only the three figures: no temporaries left behind by the failures.
+        QCOMPARE(QDir(out.path()).entryList(QDir::Files | QDir::Hidden).size(), 3);
+    }
+};
+
+QTEST_MAIN(TestAnalysisViews)
+#include "test_analysis_views.moc"

@@ -1,0 +1,234 @@
+#include "analysis_plots.h"
+
+#include "core/models.h"
+#include "core/signal.h"
+
+#include <QCoreApplication>
+#include <qcustomplot.h>
+
+namespace nb {
+
+namespace {
+
+QString tr(const char* s) { return QCoreApplication::translate("analysis", s); }
+
+void reset(QCustomPlot* plot, const QString& title, const QString& x, const QString& y)
+{
+    plot->clearGraphs();
+    plot->clearItems();
+    plot->clearPlottables();
+    if (plot->plotLayout()->rowCount() > 1 && qobject_cast<QCPTextElement*>(plot->plotLayout()->element(0, 0)))
+        static_cast<QCPTextElement*>(plot->plotLayout()->element(0, 0))->setText(title);
+    else {
+        plot->plotLayout()->insertRow(0);
+        plot->plotLayout()->addElement(0, 0, new QCPTextElement(plot, title, QFont(plot->font().family(), 11, QFont::Bold)));
+    }
+    plot->xAxis->setLabel(x);
+    plot->yAxis->setLabel(y);
+    plot->legend->setVisible(true);
+    plot->legend->setFont(QFont(plot->font().family(), 8));
+    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    plot->setObjectName(title);
+}
+
+QCPGraph* scatter(QCustomPlot* plot, const QVector<double>& x, const QVector<double>& y, const QColor& c, double size,
+                  const QString& name)
+{
+    QCPGraph* g = plot->addGraph();
+    g->setLineStyle(QCPGraph::lsNone);
+    g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, c, size));
+    g->setPen(QPen(c));
+    g->setData(x, y, true);
+    g->setName(name);
+    g->setAdaptiveSampling(true);
+    return g;
+}
+
+QCPGraph* line(QCustomPlot* plot, const QVector<double>& x, const QVector<double>& y, const QPen& pen, const QString& name)
+{
+    QCPGraph* g = plot->addGraph();
+    g->setPen(pen);
+    g->setData(x, y, true);
+    g->setName(name);
+    return g;
+}
+
+QColor runColor(int i)
+{
+    static const QColor palette[] = {QColor(31, 119, 180), QColor(44, 160, 44), QColor(148, 103, 189), QColor(140, 86, 75),
+                                     QColor(23, 190, 207), QColor(188, 189, 34), QColor(127, 127, 127), QColor(255, 127, 14)};
+    return palette[i % 8];
+}
+
+QColor phaseColor(const QString& phase)
+{
+    if (phase == QLatin1String("a"))
+        return QColor(255, 200, 80, 90);
+    if (phase == QLatin1String("b1"))
+        return QColor(120, 200, 255, 90);
+    if (phase == QLatin1String("b2"))
+        return QColor(180, 140, 255, 90);
+    if (phase == QLatin1String("c"))
+        return QColor(120, 220, 120, 90);
+    return QColor(200, 200, 200, 70);
+}
+
+}  // namespace
+
+void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& group)
+{
+    reset(plot, tr("Stiffness before puncture: %1").arg(group.isEmpty() ? tr("all runs") : group),
+          tr("depth past contact [mm]"), tr("force [N]"));
+    const StiffnessGroupResult* g = nullptr;
+    for (const auto& candidate : a.stiffnessGroups)
+        if (candidate.group == group)
+            g = &candidate;
+    if (!g) {
+        plot->replot();
+        return;
+    }
+    double maxDepth = 0.0;
+    int k = 0;
+    bool outlierNamed = false;
+    for (std::size_t i : g->runs) {
+        const StiffnessRunResult& s = a.stiffness[i];
+        QVector<double> x(s.segment.depth_mm.begin(), s.segment.depth_mm.end());
+        QVector<double> y(s.segment.force_N.begin(), s.segment.force_N.end());
+        for (double d : x)
+            maxDepth = std::max(maxDepth, d);
+        const QColor c = s.outlier ? QColor(214, 39, 40) : runColor(k++);
+        QCPGraph* dots = scatter(plot, x, y, c.lighter(130), 2.5, s.outlier ? tr("%1 (outlier)").arg(s.run) : s.run);
+        if (s.outlier)
+            outlierNamed = true;
+        (void)dots;
+        QVector<double> fx, fy;
+        const double end = x.isEmpty() ? 0.0 : x.last();
+        for (int j = 0; j <= 60; ++j) {
+            fx << end * j / 60.0;
+            fy << s.fit.quadratic.model(fx.last());
+        }
+        QCPGraph* fit = line(plot, fx, fy, QPen(c, 1.2), QString());
+        fit->removeFromLegend();
+    }
+    (void)outlierNamed;
+    QVector<double> px, py;
+    for (int j = 0; j <= 100; ++j) {
+        px << maxDepth * j / 100.0;
+        py << g->summary.pooled.quadratic.model(px.last());
+    }
+    const StiffnessModel& m = g->summary.pooled.quadratic.model;
+    line(plot, px, py, QPen(Qt::black, 3.0),
+         tr("pooled: %1 x + %2 x²").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
+    plot->rescaleAxes();
+    plot->yAxis->setRangeLower(std::min(0.0, plot->yAxis->range().lower));
+    plot->replot();
+}
+
+void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const FrictionRunResult& f)
+{
+    reset(plot, tr("Friction against velocity: %1").arg(run.name), tr("velocity [m/s]"), tr("friction force [N]"));
+    if (!f.ok() || run.run.size() < 3) {
+        plot->replot();
+        return;
+    }
+    // As the fit sees it: smoothed position differentiated, the known mass's inertia removed.
+    const int w = windowForDuration(run.run.time_s, 0.02);
+    const auto pos = movingAverage(run.run.position_mm, w);
+    const auto vel = movingAverage(derivative(run.run.time_s, pos), w);
+    const auto acc = movingAverage(derivative(run.run.time_s, vel), w);
+    const auto force = movingAverage(run.run.force_N, w);
+    QVector<double> x, y;
+    const std::size_t trim = std::min<std::size_t>(100, run.run.size() / 4);
+    for (std::size_t i = trim; i + trim < run.run.size(); ++i) {
+        x << vel[i] / 1000.0;
+        y << force[i] - kNeedleHolderMass_kg * acc[i] / 1000.0;
+    }
+    scatter(plot, x, y, QColor(31, 119, 180, 120), 2.0, tr("recorded"));
+    double vmax = 0.0;
+    for (double v : x)
+        vmax = std::max(vmax, std::abs(v));
+    QVector<double> mx, my;
+    const KarnoppModel& k = f.fit.model;
+    const double half = k.band_m_s / 2.0;
+    // The sliding branches; inside the band the model follows the applied force up to D.
+    for (int j = 0; j <= 50; ++j) {
+        const double v = -vmax + (vmax - half) * j / 50.0;
+        mx << v;
+        my << k(v, 0.0);
+    }
+    mx << -half << 0.0 << 0.0 << half;
+    my << k.Dn_N << k.Dn_N << k.Dp_N << k.Dp_N;
+    for (int j = 0; j <= 50; ++j) {
+        const double v = half + (vmax - half) * j / 50.0;
+        mx << v;
+        my << k(v, 0.0);
+    }
+    QCPCurve* curve = new QCPCurve(plot->xAxis, plot->yAxis);
+    curve->setData(mx, my);
+    curve->setPen(QPen(QColor(214, 39, 40), 2.5));
+    curve->setName(tr("Karnopp fit (%1 Hz)").arg(f.fit.frequency_hz, 0, 'f', 2));
+    plot->rescaleAxes();
+    plot->replot();
+}
+
+void plotPhases(QCustomPlot* plot, const DatasetRun& run)
+{
+    reset(plot, tr("Labelled phases: %1").arg(run.name), tr("time [s]"), tr("force [N]"));
+    QVector<double> t(run.run.time_s.begin(), run.run.time_s.end());
+    QVector<double> f(run.run.force_N.begin(), run.run.force_N.end());
+    line(plot, t, f, QPen(QColor(31, 119, 180), 1.0), tr("force"));
+    plot->rescaleAxes();
+    QStringList named;
+    for (const Label& l : run.labels) {
+        if (l.isPoint()) {
+            auto* v = new QCPItemStraightLine(plot);
+            v->point1->setCoords(l.start_s, 0);
+            v->point2->setCoords(l.start_s, 1);
+            v->setPen(QPen(Qt::darkGray, 1, Qt::DashLine));
+            continue;
+        }
+        auto* r = new QCPItemRect(plot);
+        r->topLeft->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        r->bottomRight->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        r->topLeft->setCoords(l.start_s, 0.0);
+        r->bottomRight->setCoords(l.end_s, 1.0);
+        r->setPen(Qt::NoPen);
+        r->setBrush(phaseColor(l.label));
+        r->setLayer(QStringLiteral("background"));
+        if (!named.contains(l.label)) {
+            named << l.label;
+            // A legend entry per phase: an empty graph carrying the phase's colour.
+            QCPGraph* key = plot->addGraph();
+            key->setName(tr("phase %1").arg(l.label));
+            key->setPen(QPen(phaseColor(l.label).darker(120), 8));
+        }
+    }
+    plot->replot();
+}
+
+void plotValidation(QCustomPlot* plot, const ValidationResult& v)
+{
+    reset(plot,
+          v.ok() ? tr("Model against recording: %1 (rms %2 N)").arg(v.run).arg(v.rms_N, 0, 'f', 3)
+                 : tr("Model against recording: %1 (%2)").arg(v.run, v.error),
+          tr("needle position [mm]"), tr("force [N]"));
+    QVector<double> x(v.recorded.position_mm.begin(), v.recorded.position_mm.end());
+    QVector<double> y(v.recorded.force_N.begin(), v.recorded.force_N.end());
+    // Position is not monotonic on withdrawal: a curve keeps the sample order.
+    auto* rec = new QCPCurve(plot->xAxis, plot->yAxis);
+    rec->setData(x, y);
+    rec->setPen(QPen(QColor(31, 119, 180), 1.0));
+    rec->setName(tr("recorded"));
+    if (v.ok()) {
+        QVector<double> sx(v.simulated.position_mm.begin(), v.simulated.position_mm.end());
+        QVector<double> sy(v.simulated.force_N.begin(), v.simulated.force_N.end());
+        auto* sim = new QCPCurve(plot->xAxis, plot->yAxis);
+        sim->setData(sx, sy);
+        sim->setPen(QPen(QColor(214, 39, 40), 2.0));
+        sim->setName(tr("model"));
+    }
+    plot->rescaleAxes();
+    plot->replot();
+}
+
+}  // namespace nb

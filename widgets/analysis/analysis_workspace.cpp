@@ -1,0 +1,376 @@
+#include "analysis_workspace.h"
+
+#include "analysis_plots.h"
+#include "figure_export.h"
+
+#include "core/export/dataset_loader.h"
+#include "core/export/export_error.h"
+#include "core/run_file.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStandardItemModel>
+#include <QTabWidget>
+#include <QTableView>
+#include <QVBoxLayout>
+#include <cmath>
+#include <qcustomplot.h>
+
+namespace nb {
+
+namespace {
+
+QTableView* tableView(QStandardItemModel* model, QWidget* parent)
+{
+    auto* v = new QTableView(parent);
+    v->setModel(model);
+    v->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    v->verticalHeader()->hide();
+    v->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    v->setAlternatingRowColors(true);
+    return v;
+}
+
+QCustomPlot* newPlot(QWidget* parent)
+{
+    auto* p = new QCustomPlot(parent);
+    p->setMinimumSize(360, 260);
+    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    return p;
+}
+
+}  // namespace
+
+void fillTableModel(QStandardItemModel* model, const FitTable& t)
+{
+    model->clear();
+    QStringList headers;
+    for (const TableColumn& c : t.columns)
+        headers << (c.unit.isEmpty() ? c.title : QStringLiteral("%1 [%2]").arg(c.title, c.unit));
+    model->setHorizontalHeaderLabels(headers);
+    for (const auto& row : t.rows) {
+        QList<QStandardItem*> items;
+        bool flagged = false;
+        for (std::size_t c = 0; c < t.columns.size(); ++c) {
+            auto* item = new QStandardItem;
+            if (c < row.size()) {
+                if (const auto* s = std::get_if<QString>(&row[c])) {
+                    item->setText(*s);
+                    if (c + 1 == t.columns.size() && !s->isEmpty())
+                        flagged = true;
+                } else {
+                    const double v = std::get<double>(row[c]);
+                    item->setText(std::isnan(v) ? QStringLiteral("–") : QString::number(v, 'f', std::max(0, t.columns[c].decimals)));
+                    item->setData(v, Qt::UserRole);
+                    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+                }
+            }
+            items << item;
+        }
+        if (flagged)
+            for (QStandardItem* i : items)
+                i->setBackground(QColor(255, 220, 220));
+        model->appendRow(items);
+    }
+}
+
+AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
+{
+    auto* split = new QSplitter(this);
+    auto* left = new QWidget(split);
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(new QLabel(tr("Runs in the analysis:"), left));
+    runList_ = new QListWidget(left);
+    leftLayout->addWidget(runList_, 1);
+    auto* reload = new QPushButton(tr("Reload labels"), left);
+    leftLayout->addWidget(reload);
+    status_ = new QLabel(left);
+    status_->setWordWrap(true);
+    leftLayout->addWidget(status_);
+    split->addWidget(left);
+
+    tabs_ = new QTabWidget(split);
+    stiffnessRunsModel_ = new QStandardItemModel(this);
+    stiffnessPooledModel_ = new QStandardItemModel(this);
+    frictionRunsModel_ = new QStandardItemModel(this);
+    frictionSummaryModel_ = new QStandardItemModel(this);
+    validationModel_ = new QStandardItemModel(this);
+
+    auto addTab = [&](const QString& title, QComboBox*& chooser, const QString& chooserLabel,
+                      std::initializer_list<QCustomPlot**> plots, std::initializer_list<QStandardItemModel*> models) {
+        auto* page = new QWidget(tabs_);
+        auto* v = new QVBoxLayout(page);
+        auto* bar = new QHBoxLayout;
+        bar->addWidget(new QLabel(chooserLabel, page));
+        chooser = new QComboBox(page);
+        chooser->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+        bar->addWidget(chooser);
+        bar->addStretch(1);
+        auto* fig = new QPushButton(tr("Save figure…"), page);
+        auto* tab = new QPushButton(tr("Save tables…"), page);
+        bar->addWidget(fig);
+        bar->addWidget(tab);
+        v->addLayout(bar);
+        auto* body = new QSplitter(Qt::Vertical, page);
+        auto* plotRow = new QSplitter(Qt::Horizontal, body);
+        for (QCustomPlot** p : plots) {
+            *p = newPlot(plotRow);
+            plotRow->addWidget(*p);
+        }
+        body->addWidget(plotRow);
+        for (QStandardItemModel* m : models)
+            body->addWidget(tableView(m, body));
+        body->setStretchFactor(0, 3);
+        v->addWidget(body, 1);
+        tabs_->addTab(page, title);
+        connect(fig, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentFigure);
+        connect(tab, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentTables);
+    };
+    addTab(tr("Stiffness"), stiffnessGroup_, tr("Tissue:"), {&stiffnessPlot_}, {stiffnessRunsModel_, stiffnessPooledModel_});
+    addTab(tr("Friction"), frictionRun_, tr("Run:"), {&frictionPlot_, &phasesPlot_}, {frictionRunsModel_, frictionSummaryModel_});
+    addTab(tr("Validation"), validationRun_, tr("Run:"), {&validationPlot_}, {validationModel_});
+    split->addWidget(tabs_);
+    split->setStretchFactor(1, 1);
+    split->setSizes({200, 900});
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(split);
+
+    connect(stiffnessGroup_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showStiffness);
+    connect(frictionRun_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showFriction);
+    connect(validationRun_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showValidation);
+    connect(runList_, &QListWidget::itemChanged, this, [this] {
+        if (!updatingList_)
+            recompute();
+    });
+    connect(reload, &QPushButton::clicked, this, &AnalysisWorkspace::reloadLabels);
+    // Editors save labels in bursts (temporary + rename): settle before re-reading.
+    reloadTimer_.setSingleShot(true);
+    reloadTimer_.setInterval(250);
+    connect(&reloadTimer_, &QTimer::timeout, this, &AnalysisWorkspace::reloadLabels);
+    connect(&watcher_, &QFileSystemWatcher::fileChanged, &reloadTimer_, qOverload<>(&QTimer::start));
+    connect(&watcher_, &QFileSystemWatcher::directoryChanged, &reloadTimer_, qOverload<>(&QTimer::start));
+}
+
+bool AnalysisWorkspace::openSession(const QString& dir)
+{
+    try {
+        LoadedDataset loaded = loadDataset(dir);
+        dir_ = dir;
+        setDataset(std::move(loaded.dataset));
+        if (!loaded.warnings.isEmpty())
+            status_->setText(status_->text() + QLatin1Char('\n') + loaded.warnings.join(QLatin1Char('\n')));
+        watchLabels();
+        return true;
+    } catch (const ExportError& e) {
+        status_->setText(e.message());
+        return false;
+    }
+}
+
+void AnalysisWorkspace::setDataset(Dataset dataset)
+{
+    dataset_ = std::move(dataset);
+    updatingList_ = true;
+    runList_->clear();
+    for (const DatasetRun& r : dataset_.runs) {
+        auto* item = new QListWidgetItem(r.name, runList_);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(Qt::Checked);
+    }
+    updatingList_ = false;
+    recompute();
+}
+
+void AnalysisWorkspace::setRuns(const QStringList& names)
+{
+    updatingList_ = true;
+    for (int i = 0; i < runList_->count(); ++i) {
+        QListWidgetItem* item = runList_->item(i);
+        item->setCheckState(names.isEmpty() || names.contains(item->text()) ? Qt::Checked : Qt::Unchecked);
+    }
+    updatingList_ = false;
+    recompute();
+}
+
+QStringList AnalysisWorkspace::selectedRuns() const
+{
+    QStringList out;
+    for (int i = 0; i < runList_->count(); ++i)
+        if (runList_->item(i)->checkState() == Qt::Checked)
+            out << runList_->item(i)->text();
+    return out;
+}
+
+void AnalysisWorkspace::reloadLabels()
+{
+    QStringList problems;
+    for (DatasetRun& r : dataset_.runs) {
+        if (r.sourcePath.isEmpty())
+            continue;
+        const QString path = labelsPathFor(r.sourcePath);
+        if (!QFileInfo::exists(path)) {
+            r.labels.clear();
+            continue;
+        }
+        try {
+            r.labels = readLabelsFile(path);
+        } catch (const RunFileError& e) {
+            // A labels file caught mid-save or broken: keep the last good labels and say so.
+            problems << e.message();
+        }
+    }
+    watchLabels();
+    recompute();
+    if (!problems.isEmpty())
+        status_->setText(status_->text() + QLatin1Char('\n') + problems.join(QLatin1Char('\n')));
+}
+
+void AnalysisWorkspace::watchLabels()
+{
+    if (!watcher_.files().isEmpty())
+        watcher_.removePaths(watcher_.files());
+    if (!watcher_.directories().isEmpty())
+        watcher_.removePaths(watcher_.directories());
+    if (!dir_.isEmpty())
+        watcher_.addPath(dir_);
+    for (const DatasetRun& r : dataset_.runs) {
+        const QString path = r.sourcePath.isEmpty() ? QString() : labelsPathFor(r.sourcePath);
+        if (!path.isEmpty() && QFileInfo::exists(path))
+            watcher_.addPath(path);
+    }
+}
+
+void AnalysisWorkspace::recompute()
+{
+    Dataset chosen;
+    chosen.name = dataset_.name;
+    chosen.metadata = dataset_.metadata;
+    const QStringList names = selectedRuns();
+    for (const DatasetRun& r : dataset_.runs)
+        if (names.contains(r.name))
+            chosen.runs.push_back(r);
+    analysis_ = analyseDataset(chosen);
+    status_->setText(analysis_.warnings.isEmpty()
+                         ? tr("%1 runs analysed").arg(chosen.runs.size())
+                         : tr("%1 runs analysed\n%2").arg(chosen.runs.size()).arg(analysis_.warnings.join(QLatin1Char('\n'))));
+    refreshViews();
+    emit analysisUpdated();
+}
+
+void AnalysisWorkspace::refreshViews()
+{
+    fillTableModel(stiffnessRunsModel_, stiffnessRunsTable(analysis_));
+    fillTableModel(stiffnessPooledModel_, stiffnessPooledTable(analysis_));
+    fillTableModel(frictionRunsModel_, frictionRunsTable(analysis_));
+    fillTableModel(frictionSummaryModel_, frictionSummaryTable(analysis_));
+    fillTableModel(validationModel_, validationTable(analysis_));
+
+    // Keep the user's choice in each view when it still exists.
+    auto refill = [](QComboBox* box, const QStringList& items) {
+        const QString keep = box->currentText();
+        const QSignalBlocker block(box);
+        box->clear();
+        box->addItems(items);
+        const int i = box->findText(keep);
+        box->setCurrentIndex(i >= 0 ? i : (items.isEmpty() ? -1 : 0));
+    };
+    QStringList groups, friction, validation;
+    for (const auto& g : analysis_.stiffnessGroups)
+        groups << g.group;
+    for (const auto& f : analysis_.friction)
+        friction << f.run;
+    for (const auto& v : analysis_.validation)
+        validation << v.run;
+    refill(stiffnessGroup_, groups);
+    refill(frictionRun_, friction);
+    refill(validationRun_, validation);
+    showStiffness();
+    showFriction();
+    showValidation();
+}
+
+void AnalysisWorkspace::showStiffness() { plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentText()); }
+
+void AnalysisWorkspace::showFriction()
+{
+    const QString name = frictionRun_->currentText();
+    const auto fit = std::find_if(analysis_.friction.begin(), analysis_.friction.end(),
+                                  [&](const FrictionRunResult& f) { return f.run == name; });
+    const auto run = std::find_if(dataset_.runs.begin(), dataset_.runs.end(), [&](const DatasetRun& r) { return r.name == name; });
+    if (fit == analysis_.friction.end() || run == dataset_.runs.end()) {
+        plotFrictionVelocity(frictionPlot_, DatasetRun{}, FrictionRunResult{{}, tr("no run"), {}, {}});
+        plotPhases(phasesPlot_, DatasetRun{});
+        return;
+    }
+    plotFrictionVelocity(frictionPlot_, *run, *fit);
+    plotPhases(phasesPlot_, *run);
+}
+
+void AnalysisWorkspace::showValidation()
+{
+    const QString name = validationRun_->currentText();
+    for (const ValidationResult& v : analysis_.validation) {
+        if (v.run == name) {
+            plotValidation(validationPlot_, v);
+            return;
+        }
+    }
+    plotValidation(validationPlot_, ValidationResult{{}, tr("no run"), {}, {}, 0.0});
+}
+
+void AnalysisWorkspace::exportCurrentFigure()
+{
+    const int tab = tabs_->currentIndex();
+    std::vector<QCustomPlot*> plots = tab == 0 ? std::vector<QCustomPlot*>{stiffnessPlot_}
+                                      : tab == 1 ? std::vector<QCustomPlot*>{frictionPlot_, phasesPlot_}
+                                                 : std::vector<QCustomPlot*>{validationPlot_};
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save figure"), QString(),
+                                                      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"));
+    if (path.isEmpty())
+        return;
+    try {
+        const QFileInfo fi(path);
+        for (std::size_t i = 0; i < plots.size(); ++i) {
+            const QString p = i == 0 ? path : fi.dir().filePath(QStringLiteral("%1_%2.%3").arg(fi.completeBaseName()).arg(i + 1).arg(fi.suffix()));
+            saveFigure(plots[i], p);
+        }
+    } catch (const ExportError& e) {
+        QMessageBox::warning(this, tr("Save figure"), e.message());
+    }
+}
+
+void AnalysisWorkspace::exportCurrentTables()
+{
+    const int tab = tabs_->currentIndex();
+    std::vector<std::pair<QString, FitTable>> tables;
+    if (tab == 0)
+        tables = {{QStringLiteral("stiffness_runs"), stiffnessRunsTable(analysis_)}, {QStringLiteral("stiffness_pooled"), stiffnessPooledTable(analysis_)}};
+    else if (tab == 1)
+        tables = {{QStringLiteral("friction_runs"), frictionRunsTable(analysis_)}, {QStringLiteral("friction_summary"), frictionSummaryTable(analysis_)}};
+    else
+        tables = {{QStringLiteral("validation"), validationTable(analysis_)}};
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Save tables (CSV and LaTeX) into"));
+    if (dir.isEmpty())
+        return;
+    try {
+        for (const auto& [name, table] : tables) {
+            writeFitTableCsv(QDir(dir).filePath(name + QStringLiteral(".csv")), table);
+            writeFitTableLatex(QDir(dir).filePath(name + QStringLiteral(".tex")), table);
+        }
+    } catch (const ExportError& e) {
+        QMessageBox::warning(this, tr("Save tables"), e.message());
+    }
+}
+
+}  // namespace nb

@@ -1,0 +1,96 @@
+#pragma once
+// The analysis workspace: a session's runs fitted to the thesis's models, in three views.
+// Stiffness (Fig. 23, Table 2), Friction (Figs. 34b/35, Tables 4/5), Validation (Fig. 38).
+// Runs are chosen in the list on the left; results follow label edits (labels files are
+// watched) and every figure and table can be saved (PNG/SVG/PDF, CSV/LaTeX).
+
+#include "core/export/dataset.h"
+#include "core/export/session_analysis.h"
+
+#include <QFileSystemWatcher>
+#include <QTimer>
+#include <QWidget>
+
+class QComboBox;
+class QCustomPlot;
+class QLabel;
+class QListWidget;
+class QStandardItemModel;
+class QTabWidget;
+class QTableView;
+
+namespace nb {
+
+class AnalysisWorkspace : public QWidget {
+    Q_OBJECT
+public:
+    explicit AnalysisWorkspace(QWidget* parent = nullptr);
+
+    // Loads the session folder and analyses every run. On failure shows the reason and
+    // returns false (the previous session stays).
+    bool openSession(const QString& dir);
+    // An in-memory session (runs not from files: nothing to watch).
+    void setDataset(Dataset dataset);
+    // Only these runs take part (by name); an empty list means all.
+    void setRuns(const QStringList& runNames);
+    QStringList selectedRuns() const;
+
+    const SessionAnalysis& analysis() const { return analysis_; }
+    const Dataset& dataset() const { return dataset_; }
+
+    QTabWidget* tabs() const { return tabs_; }
+    QCustomPlot* stiffnessPlot() const { return stiffnessPlot_; }
+    QCustomPlot* frictionVelocityPlot() const { return frictionPlot_; }
+    QCustomPlot* phasesPlot() const { return phasesPlot_; }
+    QCustomPlot* validationPlot() const { return validationPlot_; }
+    QStandardItemModel* stiffnessRunsModel() const { return stiffnessRunsModel_; }
+    QStandardItemModel* stiffnessPooledModel() const { return stiffnessPooledModel_; }
+    QStandardItemModel* frictionSummaryModel() const { return frictionSummaryModel_; }
+    QStandardItemModel* validationModel() const { return validationModel_; }
+
+public slots:
+    // Re-reads every run's labels file and recomputes.
+    void reloadLabels();
+
+signals:
+    void analysisUpdated();
+
+private:
+    void recompute();
+    void refreshViews();
+    void showStiffness();
+    void showFriction();
+    void showValidation();
+    void watchLabels();
+    void exportCurrentFigure();
+    void exportCurrentTables();
+
+    Dataset dataset_;
+    QString dir_;
+    SessionAnalysis analysis_;
+    QFileSystemWatcher watcher_;
+    QTimer reloadTimer_;
+
+    QListWidget* runList_ = nullptr;
+    QLabel* status_ = nullptr;
+    QTabWidget* tabs_ = nullptr;
+    QComboBox* stiffnessGroup_ = nullptr;
+    QComboBox* frictionRun_ = nullptr;
+    QComboBox* validationRun_ = nullptr;
+    QCustomPlot* stiffnessPlot_ = nullptr;
+    QCustomPlot* frictionPlot_ = nullptr;
+    QCustomPlot* phasesPlot_ = nullptr;
+    QCustomPlot* validationPlot_ = nullptr;
+    QStandardItemModel* stiffnessRunsModel_ = nullptr;
+    QStandardItemModel* stiffnessPooledModel_ = nullptr;
+    QStandardItemModel* frictionRunsModel_ = nullptr;
+    QStandardItemModel* frictionSummaryModel_ = nullptr;
+    QStandardItemModel* validationModel_ = nullptr;
+    bool updatingList_ = false;
+};
+
+// Shows a fit table in a model: headers "title [unit]", numbers right-aligned, rows whose
+// last text says so (outliers, failed fits) tinted.
+void fillTableModel(QStandardItemModel* model, const FitTable& table);
+
+}  // namespace nb
