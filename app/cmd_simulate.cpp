@@ -15,6 +15,7 @@
 #include <QJsonArray>
 #include <QSaveFile>
 #include <QTimer>
+#include <atomic>
 #include <cmath>
 #include <optional>
 
@@ -266,11 +267,21 @@ int cmdSimulate(const QStringList& args, Io io)
     });
 
     // The operator's sequence: enable, bias (needle at rest, out of tissue), zero, start.
-    engine.start();
+    // Started from the engine thread the moment the interlocks are met, so that on the
+    // simulated clock the run begins at the same simulated time on every invocation.
+    std::atomic<bool> started{false};
+    QObject::connect(
+        &engine, &devices::AcquisitionEngine::statusChanged, &engine,
+        [&](const devices::EngineStatus& st) {
+            if (st.biased && st.zeroed && st.stageEnabled && !started.exchange(true))
+                engine.startRun(plan);
+        },
+        Qt::DirectConnection);
+    // Queued before the thread starts: they run before its first sample.
     engine.enableStage(true);
     engine.biasSensor();
     engine.zeroStage();
-    bool started = false;
+    engine.start();
     QElapsedTimer wall;
     wall.start();
     QTimer tick;
@@ -278,11 +289,7 @@ int cmdSimulate(const QStringList& args, Io io)
     // Progress lines carry the engine's run time: a killed recording can be checked against them.
     QObject::connect(&tick, &QTimer::timeout, &loop, [&] {
         const devices::EngineStatus st = engine.status();
-        if (!started && st.biased && st.zeroed && st.stageEnabled) {
-            started = true;
-            engine.startRun(plan);
-        }
-        if (!st.fault.isEmpty() && !started) {
+        if (!st.fault.isEmpty() && !started.load()) {
             faultText = st.fault;
             loop.quit();
         }

@@ -66,8 +66,9 @@ struct AcquisitionEngine::State {
     double tripForce = 0.0, tripPosition = 0.0, tripTime = 0.0;
     double pendingEndAt = -1.0;  // device time
     QString pendingEndReason;
-    // Status.
+    // Status: at the status rate, and at once when an interlock or the run changes.
     Clock::time_point nextStatus;
+    bool statusDirty = false;
     std::function<void(double, double)> probe;
 };
 
@@ -358,6 +359,7 @@ void AcquisitionEngine::finishRun(const QString& reason, const QString& fault, c
     s.runOpen = false;
     s.runMotion = false;
     s.pendingEndAt = -1.0;
+    s.statusDirty = true;
     emit message(tr("run ended (%1): %2 samples, %3 dropped, %4").arg(reason).arg(written).arg(gaps + overruns).arg(s.runPath));
     emit runEnded(summary);
 }
@@ -444,6 +446,7 @@ void AcquisitionEngine::threadMain()
             } catch (const DeviceError& e) {
                 raiseFault(e.device(), e.reason(), e.device() == s.dev.sensor->name());
             }
+            s.statusDirty = true;
         }
 
         // 2. Samples.
@@ -517,6 +520,7 @@ void AcquisitionEngine::threadMain()
                     s.v0 = s.biasSum / static_cast<double>(s.biasCount);
                     s.biasing = false;
                     s.biased = true;
+                    s.statusDirty = true;
                     emit message(tr("force sensor biased: V0 = %1 V (%2 samples)").arg(s.v0, 0, 'f', 5).arg(s.biasCount));
                 }
             }
@@ -524,6 +528,7 @@ void AcquisitionEngine::threadMain()
             // The force limit: the first sample over it stops the axis, before anything else.
             if (s.biased && !s.tripped && std::fabs(out.force_N) > s.forceLimit && (s.stage.moving || s.runOpen)) {
                 s.tripped = true;
+                s.statusDirty = true;
                 s.tripForce = out.force_N;
                 s.tripPosition = out.position_mm;
                 s.tripTime = v.deviceTime_s;
@@ -578,8 +583,9 @@ void AcquisitionEngine::threadMain()
 
         // 6. Status at ~25 Hz.
         const auto now = Clock::now();
-        if (now >= s.nextStatus) {
+        if (now >= s.nextStatus || s.statusDirty) {
             s.nextStatus = now + statusPeriod;
+            s.statusDirty = false;
             EngineStatus st;
             st.running = s.sensorOk;
             st.stageEnabled = s.enabled;
