@@ -143,8 +143,10 @@ void sustained(double rateHz, double duration_s, const QString& dir)
     }
     const double received = static_cast<double>(s1.samples - s0.samples);
     std::printf("rate %.0f Hz, %.1f s wall, recording on, live ring drained at 30 Hz\n", rateHz, wall);
-    std::printf("  samples received %.0f, expected %.0f (%.4f), sensor gaps %llu, ring overruns %llu, late periods %llu\n",
-                received, rateHz * wall, received / (rateHz * wall),
+    const double span = s1.deviceTime_s - s0.deviceTime_s;
+    std::printf("  samples received %.0f; expected %.0f by the device clock (%.5f), %.0f by the wall clock (%.4f)\n",
+                received, rateHz * span, received / (rateHz * span), rateHz * wall, received / (rateHz * wall));
+    std::printf("  sensor gaps %llu, ring overruns %llu, late periods %llu\n",
                 static_cast<unsigned long long>(s1.dropped - s0.dropped),
                 static_cast<unsigned long long>(s1.overruns - s0.overruns),
                 static_cast<unsigned long long>(s1.latePeriods - s0.latePeriods));
