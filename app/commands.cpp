@@ -8,6 +8,8 @@ namespace nb::cli {
 
 // Each command's entry point, defined in its cmd_*.cpp file.
 int cmdVersion(const QStringList& args, Io io);
+int cmdFit(const QStringList& args, Io io);
+int cmdEvents(const QStringList& args, Io io);
 int cmdDevices(const QStringList& args, Io io);
 int cmdAcquire(const QStringList& args, Io io);
 int cmdSimulate(const QStringList& args, Io io);
@@ -18,6 +20,8 @@ const std::vector<Command>& commands()
 {
     static const std::vector<Command> all{
         {QStringLiteral("version"), QCoreApplication::translate("cli", "print the version"), cmdVersion},
+        {QStringLiteral("fit"), QCoreApplication::translate("cli", "fit calibration, stiffness or friction models"), cmdFit},
+        {QStringLiteral("events"), QCoreApplication::translate("cli", "find contact, punctures and relaxation in a run"), cmdEvents},
         {QStringLiteral("devices"), QCoreApplication::translate("cli", "list connected DAQs and serial ports"), cmdDevices},
         {QStringLiteral("acquire"), QCoreApplication::translate("cli", "record one run on real (or simulated) devices"), cmdAcquire},
         {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},

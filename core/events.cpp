@@ -100,7 +100,7 @@ struct ContactTrial {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
 };
 
-ContactTrial tryContact(std::span<const double> pos, std::span<const double> force, double xc)
+ContactTrial tryContact(std::span<const double> pos, std::span<const double> force, double sumSquares, double xc)
 {
     Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
     Eigen::Vector3d b = Eigen::Vector3d::Zero();
@@ -117,12 +117,8 @@ ContactTrial tryContact(std::span<const double> pos, std::span<const double> for
     if (ldlt.info() != Eigen::Success)
         return t;
     t.x = ldlt.solve(b);
-    double sse = 0.0;
-    for (std::size_t i = 0; i < pos.size(); ++i) {
-        const double d = std::max(0.0, pos[i] - xc);
-        const double r = force[i] - (t.x(0) + t.x(1) * d + t.x(2) * d * d);
-        sse += r * r;
-    }
+    // At the least-squares solution SSE = Σf² - bᵀx: no second pass over the samples.
+    const double sse = std::max(0.0, sumSquares - b.dot(t.x));
     t.sse = std::isfinite(sse) ? sse : INFINITY;
     return t;
 }
@@ -143,6 +139,9 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     pos = pos.first(n);
     force = force.first(n);
     const double lo = *std::min_element(pos.begin(), pos.end());
+    double sumSquares = 0.0;
+    for (double f : force)
+        sumSquares += f * f;
     // At least a few samples must lie past the contact for a1, a2 to be defined.
     std::vector<double> sorted(pos.begin(), pos.end());
     std::sort(sorted.begin(), sorted.end());
@@ -157,7 +156,7 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     int best = 0;
     double bestSse = INFINITY;
     for (int k = 0; k <= grid; ++k) {
-        const double s = tryContact(pos, force, lo + k * step).sse;
+        const double s = tryContact(pos, force, sumSquares, lo + k * step).sse;
         if (s < bestSse) {
             bestSse = s;
             best = k;
@@ -167,27 +166,27 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     double b = lo + std::min(grid, best + 1) * step;
     const double g = (std::sqrt(5.0) - 1.0) / 2.0;
     double c = b - g * (b - a), d = a + g * (b - a);
-    double fc = tryContact(pos, force, c).sse, fd = tryContact(pos, force, d).sse;
+    double fc = tryContact(pos, force, sumSquares, c).sse, fd = tryContact(pos, force, sumSquares, d).sse;
     for (int it = 0; it < 40 && (b - a) > 1e-6; ++it) {
         if (fc < fd) {
             b = d;
             d = c;
             fd = fc;
             c = b - g * (b - a);
-            fc = tryContact(pos, force, c).sse;
+            fc = tryContact(pos, force, sumSquares, c).sse;
         } else {
             a = c;
             c = d;
             fc = fd;
             d = a + g * (b - a);
-            fd = tryContact(pos, force, d).sse;
+            fd = tryContact(pos, force, sumSquares, d).sse;
         }
     }
     double xc = (a + b) / 2.0;
-    ContactTrial t = tryContact(pos, force, xc);
+    ContactTrial t = tryContact(pos, force, sumSquares, xc);
     if (const double gridX = lo + best * step; bestSse < t.sse) {
         xc = gridX;
-        t = tryContact(pos, force, xc);
+        t = tryContact(pos, force, sumSquares, xc);
     }
     if (!std::isfinite(t.sse))
         throw FitError(QCoreApplication::translate("nb::fit", "the contact fit failed (degenerate samples)"));
@@ -195,7 +194,13 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     fit.contact_mm = xc;
     fit.offset_N = t.x(0);
     fit.stiffness = {t.x(1), t.x(2)};
-    fit.rms_N = std::sqrt(t.sse / double(n));
+    double sse = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double d = std::max(0.0, pos[i] - xc);
+        const double r = force[i] - (t.x(0) + t.x(1) * d + t.x(2) * d * d);
+        sse += r * r;
+    }
+    fit.rms_N = std::sqrt(sse / double(n));
     return fit;
 }
 
@@ -227,25 +232,37 @@ InsertionEvents detectEvents(const Run& run, const EventOptions& options)
     const double h = std::max(options.minInternalDrop_N, 8.0 * smoothNoise);
     const std::vector<Peak> drops = findDrops(smooth, h);
 
+    // The first sharp drop after a rise is the puncture, provided the force before it
+    // really rose from the contact (checked against the fitted offset, which a rough
+    // baseline cannot give). Only the first few candidates are tried: each costs a fit.
     std::optional<Peak> main;
-    std::size_t mainNo = 0;
-    for (std::size_t k = 0; k < drops.size() && !main; ++k) {
+    std::size_t mainNo = 0, punctureIdx = 0;
+    ContactFit contact;
+    const std::size_t radius = std::size_t(window);
+    int tried = 0;
+    for (std::size_t k = 0; k < drops.size() && !main && tried < 5; ++k) {
         const double base = *std::min_element(smooth.begin(), smooth.begin() + std::ptrdiff_t(drops[k].peak) + 1);
         const double rise = smooth[drops[k].peak] - base;
-        if (drops[k].drop >= std::max(options.minPunctureDrop_N, options.punctureDropFraction * rise)) {
-            main = drops[k];
-            mainNo = k;
-        }
+        if (drops[k].drop < std::max(options.minPunctureDrop_N, options.punctureDropFraction * rise))
+            continue;
+        ++tried;
+        const std::size_t idx = refinePeak(force, drops[k].peak, radius);
+        if (idx < 8)
+            continue;
+        const ContactFit c = fitContact(pos.first(idx + 1), force.first(idx + 1));
+        const double peakForce = trailingMean(force, idx, 5) - c.offset_N;
+        if (peakForce < std::max(options.minPunctureDrop_N, 0.5 * drops[k].drop) || !(pos[idx] > c.contact_mm))
+            continue;
+        main = drops[k];
+        mainNo = k;
+        punctureIdx = idx;
+        contact = c;
     }
     if (!main)
-        throw FitError(QCoreApplication::translate("nb::fit", "no puncture: the force never drops sharply "
-                                                               "(by %1 N or %2 % of its peak)")
+        throw FitError(QCoreApplication::translate("nb::fit", "no puncture: the force never rises from contact and then "
+                                                               "drops sharply (by %1 N or %2 % of its peak)")
                            .arg(options.minPunctureDrop_N)
                            .arg(options.punctureDropFraction * 100.0));
-
-    const std::size_t radius = std::size_t(window);
-    const std::size_t punctureIdx = refinePeak(force, main->peak, radius);
-    const ContactFit contact = fitContact(pos.first(punctureIdx + 1), force.first(punctureIdx + 1));
     ev.zeroOffset_N = contact.offset_N;
     ev.stiffness = contact.stiffness;
     ev.stiffnessRms_N = contact.rms_N;

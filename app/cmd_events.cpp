@@ -1,0 +1,96 @@
+// `needlebench events RUN.csv`: contact, puncture, internal punctures and relaxation of a
+// constant-velocity insertion.
+
+#include "cli_support.h"
+
+#include "core/events.h"
+#include "core/fit_error.h"
+#include "core/run_file.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+
+namespace nb::cli {
+
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+QJsonObject eventJson(const RunEvent& e)
+{
+    return {{QStringLiteral("time_s"), e.time_s},
+            {QStringLiteral("position_mm"), e.position_mm},
+            {QStringLiteral("force_N"), e.force_N}};
+}
+
+QString eventLine(const QString& name, const RunEvent& e)
+{
+    return QStringLiteral("%1 %2 %3 %4\n")
+        .arg(name.leftJustified(18))
+        .arg(e.time_s, 9, 'f', 3)
+        .arg(e.position_mm, 11, 'f', 3)
+        .arg(e.force_N, 9, 'f', 4);
+}
+
+}  // namespace
+
+int cmdEvents(const QStringList& args, Io io)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("RUN.csv"), tr("a constant-velocity insertion run"));
+    int code = Ok;
+    if (!parseArgs(parser, QStringLiteral("events"), args, io, 1, 1, &code))
+        return code;
+    const QString path = parser.positionalArguments().first();
+    InsertionEvents ev;
+    try {
+        const RunReadResult r = readRunFile(path);
+        for (const QString& w : r.warnings)
+            io.err << tr("warning: %1\n").arg(w);
+        ev = detectEvents(r.run);
+    } catch (const RunFileError& e) {
+        io.err << "needlebench events: " << e.message() << '\n';
+        return Failure;
+    } catch (const FitError& e) {
+        io.err << "needlebench events: " << path << ": " << e.message() << '\n';
+        return Failure;
+    }
+    if (parser.isSet(json)) {
+        QJsonArray internal;
+        for (const RunEvent& e : ev.internalPunctures)
+            internal.append(eventJson(e));
+        printJson(io, {{QStringLiteral("file"), path},
+                       {QStringLiteral("contact"), eventJson(ev.contact)},
+                       {QStringLiteral("puncture"), eventJson(ev.puncture)},
+                       {QStringLiteral("puncture_depth_mm"), ev.punctureDepth_mm()},
+                       {QStringLiteral("internal_punctures"), internal},
+                       {QStringLiteral("relaxation"), ev.relaxation ? QJsonValue(eventJson(*ev.relaxation)) : QJsonValue()},
+                       {QStringLiteral("zero_offset_N"), ev.zeroOffset_N},
+                       {QStringLiteral("noise_N"), ev.noise_N},
+                       {QStringLiteral("stiffness"),
+                        QJsonObject{{QStringLiteral("a1_N_per_mm"), ev.stiffness.a1_N_per_mm},
+                                    {QStringLiteral("a2_N_per_mm2"), ev.stiffness.a2_N_per_mm2},
+                                    {QStringLiteral("rms_N"), ev.stiffnessRms_N}}}});
+        return Ok;
+    }
+    io.out << tr("events of %1 (force zeroed by %2 N, noise %3 N)\n")
+                  .arg(path)
+                  .arg(ev.zeroOffset_N, 0, 'g', 4)
+                  .arg(ev.noise_N, 0, 'g', 3);
+    io.out << tr("event                 time_s position_mm   force_N\n");
+    io.out << eventLine(tr("contact"), ev.contact);
+    io.out << eventLine(tr("puncture"), ev.puncture);
+    if (ev.relaxation)
+        io.out << eventLine(tr("relaxation"), *ev.relaxation);
+    for (const RunEvent& e : ev.internalPunctures)
+        io.out << eventLine(tr("internal puncture"), e);
+    io.out << tr("puncture depth %1 mm; stiffness a1 = %2 N/mm, a2 = %3 N/mm²\n")
+                  .arg(ev.punctureDepth_mm(), 0, 'f', 3)
+                  .arg(ev.stiffness.a1_N_per_mm, 0, 'g', 4)
+                  .arg(ev.stiffness.a2_N_per_mm2, 0, 'g', 4);
+    return Ok;
+}
+
+}  // namespace nb::cli

@@ -1,0 +1,395 @@
+// `needlebench fit calibration|stiffness|friction`: the thesis's identifications, headless.
+// The JSON keys are a contract with users' scripts; the tables are for reading.
+
+#include "cli_support.h"
+
+#include "core/calibration.h"
+#include "core/events.h"
+#include "core/fit_error.h"
+#include "core/friction_fit.h"
+#include "core/labels.h"
+#include "core/run_file.h"
+#include "core/stiffness_fit.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <cmath>
+
+namespace nb::cli {
+
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+// A failure of one input file: printed as one line naming the file, exit 1.
+struct FileFailure {
+    QString message;
+};
+
+Run loadRun(const QString& path, Io io)
+{
+    try {
+        RunReadResult r = readRunFile(path);
+        for (const QString& w : r.warnings)
+            io.err << QCoreApplication::translate("cli", "warning: %1\n").arg(w);
+        return std::move(r.run);
+    } catch (const RunFileError& e) {
+        throw FileFailure{e.message()};
+    }
+}
+
+template <typename F>
+auto onFile(const QString& path, F&& f)
+{
+    try {
+        return f();
+    } catch (const FitError& e) {
+        throw FileFailure{QStringLiteral("%1: %2").arg(path, e.message())};
+    }
+}
+
+QString num(double v, int precision = 5) { return QString::number(v, 'g', precision); }
+
+QJsonObject quadraticJson(const QuadraticStiffnessFit& q)
+{
+    return {{QStringLiteral("a1_N_per_mm"), q.model.a1_N_per_mm},
+            {QStringLiteral("a2_N_per_mm2"), q.model.a2_N_per_mm2},
+            {QStringLiteral("rms_N"), q.rms_N},
+            {QStringLiteral("r2"), q.r2}};
+}
+
+QJsonObject alternativesJson(const StiffnessFit& f)
+{
+    return {{QStringLiteral("cubic"),
+             QJsonObject{{QStringLiteral("a1_N_per_mm"), f.cubic.a1_N_per_mm},
+                         {QStringLiteral("a2_N_per_mm2"), f.cubic.a2_N_per_mm2},
+                         {QStringLiteral("a3_N_per_mm3"), f.cubic.a3_N_per_mm3},
+                         {QStringLiteral("rms_N"), f.cubic.rms_N},
+                         {QStringLiteral("r2"), f.cubic.r2}}},
+            {QStringLiteral("spring"),
+             QJsonObject{{QStringLiteral("a_per_N"), f.spring.a_per_N},
+                         {QStringLiteral("b_mm_per_N"), f.spring.b_mm_per_N},
+                         {QStringLiteral("rms_N"), f.spring.rms_N},
+                         {QStringLiteral("r2"), f.spring.r2},
+                         {QStringLiteral("converged"), f.spring.converged}}}};
+}
+
+int fitCalibrationCommand(const QStringList& args, Io io)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("FILE.csv"), tr("calibration points: columns mass_g, voltage_V"));
+    int code = Ok;
+    if (!parseArgs(parser, QStringLiteral("fit calibration"), args, io, 1, 1, &code))
+        return code;
+    const QString path = parser.positionalArguments().first();
+    std::vector<CalibrationPoint> points;
+    try {
+        points = readCalibrationFile(path);
+    } catch (const RunFileError& e) {
+        throw FileFailure{e.message()};
+    }
+    const CalibrationFit fit = onFile(path, [&] { return fitCalibration(points); });
+    if (parser.isSet(json)) {
+        QJsonArray residuals;
+        for (double r : fit.residuals_V)
+            residuals.append(r);
+        printJson(io, {{QStringLiteral("file"), path},
+                       {QStringLiteral("slope_V_per_g"), fit.slope_V_per_g},
+                       {QStringLiteral("intercept_V"), fit.intercept_V},
+                       {QStringLiteral("r2"), fit.r2},
+                       {QStringLiteral("rms_V"), fit.rms_V},
+                       {QStringLiteral("residuals_V"), residuals}});
+        return Ok;
+    }
+    io.out << tr("calibration %1: V = %2 V/g * m + %3 V   r2 = %4   rms = %5 V\n")
+                  .arg(path, num(fit.slope_V_per_g, 7), num(fit.intercept_V, 7), num(fit.r2, 7), num(fit.rms_V, 3));
+    io.out << tr("    mass_g   voltage_V  residual_V\n");
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (std::fabs(fit.residuals_V[i]) > std::fabs(fit.residuals_V[worst]))
+            worst = i;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        io.out << QStringLiteral("%1 %2 %3")
+                      .arg(points[i].mass_g, 10, 'f', 2)
+                      .arg(points[i].voltage_V, 11, 'f', 6)
+                      .arg(fit.residuals_V[i], 11, 'e', 2);
+        // Three rms is where a point stops looking like noise.
+        if (i == worst && fit.rms_V > 0.0 && std::fabs(fit.residuals_V[i]) > 3.0 * fit.rms_V)
+            io.out << tr("  <- largest residual, check this point");
+        io.out << '\n';
+    }
+    return Ok;
+}
+
+int fitStiffnessCommand(const QStringList& args, Io io)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("RUN.csv..."), tr("constant-velocity insertion runs"));
+    int code = Ok;
+    if (!parseArgs(parser, QStringLiteral("fit stiffness"), args, io, 1, -1, &code))
+        return code;
+    const QStringList files = parser.positionalArguments();
+    std::vector<InsertionEvents> events;
+    std::vector<StiffnessSegment> segments;
+    for (const QString& path : files) {
+        const Run run = loadRun(path, io);
+        events.push_back(onFile(path, [&] { return detectEvents(run); }));
+        segments.push_back(stiffnessSegment(run, events.back()));
+        onFile(path, [&] { return fitStiffness(segments.back()); });  // names the file if a run is unusable
+    }
+    const StiffnessSummary sum = fitStiffnessRuns(segments);
+
+    if (parser.isSet(json)) {
+        QJsonArray runs;
+        for (std::size_t i = 0; i < events.size(); ++i) {
+            const auto& ev = events[i];
+            const auto& f = sum.runs[i];
+            QJsonObject o = quadraticJson(f.quadratic);
+            o.insert(QStringLiteral("file"), files[qsizetype(i)]);
+            o.insert(QStringLiteral("contact_mm"), ev.contact.position_mm);
+            o.insert(QStringLiteral("puncture_mm"), ev.puncture.position_mm);
+            o.insert(QStringLiteral("puncture_depth_mm"), ev.punctureDepth_mm());
+            o.insert(QStringLiteral("puncture_force_N"), ev.puncture.force_N);
+            o.insert(QStringLiteral("zero_offset_N"), ev.zeroOffset_N);
+            o.insert(QStringLiteral("samples"), qint64(f.samples));
+            o.insert(QStringLiteral("alternatives"), alternativesJson(f));
+            runs.append(o);
+        }
+        QJsonObject pooled = quadraticJson(sum.pooled.quadratic);
+        pooled.insert(QStringLiteral("samples"), qint64(sum.pooled.samples));
+        pooled.insert(QStringLiteral("alternatives"), alternativesJson(sum.pooled));
+        printJson(io, {{QStringLiteral("runs"), runs},
+                       {QStringLiteral("pooled"), pooled},
+                       {QStringLiteral("mean_of_runs"),
+                        QJsonObject{{QStringLiteral("a1_N_per_mm"), sum.meanOfRuns.a1_N_per_mm},
+                                    {QStringLiteral("a2_N_per_mm2"), sum.meanOfRuns.a2_N_per_mm2},
+                                    {QStringLiteral("a1_std_N_per_mm"), sum.stdDevOfRuns.a1_N_per_mm},
+                                    {QStringLiteral("a2_std_N_per_mm2"), sum.stdDevOfRuns.a2_N_per_mm2}}}});
+        return Ok;
+    }
+    io.out << tr("stiffness f = a1*x + a2*x^2, x = depth past contact [mm]\n");
+    io.out << tr("run                       contact_mm puncture_mm depth_mm  force_N  a1_N/mm   a2_N/mm2  rms_N    r2\n");
+    auto row = [&](const QString& name, const QString& c, const QString& p, const QString& d, const QString& fN,
+                   const QuadraticStiffnessFit& q) {
+        io.out << name.left(25).leftJustified(25) << ' ' << c.rightJustified(10) << ' ' << p.rightJustified(11) << ' '
+               << d.rightJustified(8) << ' ' << fN.rightJustified(8) << ' ' << num(q.model.a1_N_per_mm, 4).rightJustified(9)
+               << ' ' << num(q.model.a2_N_per_mm2, 4).rightJustified(9) << ' ' << num(q.rms_N, 3).rightJustified(8) << ' '
+               << num(q.r2, 4) << '\n';
+    };
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const auto& ev = events[i];
+        row(QFileInfo(files[qsizetype(i)]).fileName(), num(ev.contact.position_mm, 4), num(ev.puncture.position_mm, 4),
+            num(ev.punctureDepth_mm(), 4), num(ev.puncture.force_N, 4), sum.runs[i].quadratic);
+    }
+    row(tr("pooled"), QString(), QString(), QString(), QString(), sum.pooled.quadratic);
+    io.out << tr("mean of runs: a1 = %1 ± %2 N/mm, a2 = %3 ± %4 N/mm²\n")
+                  .arg(num(sum.meanOfRuns.a1_N_per_mm, 4), num(sum.stdDevOfRuns.a1_N_per_mm, 2),
+                       num(sum.meanOfRuns.a2_N_per_mm2, 4), num(sum.stdDevOfRuns.a2_N_per_mm2, 2));
+    io.out << tr("alternatives (pooled): cubic rms %1 N r2 %2 (a3 = %3 N/mm³); spring x/(a x + b) rms %4 N r2 %5\n")
+                  .arg(num(sum.pooled.cubic.rms_N, 3), num(sum.pooled.cubic.r2, 4), num(sum.pooled.cubic.a3_N_per_mm3, 3),
+                       num(sum.pooled.spring.rms_N, 3), num(sum.pooled.spring.r2, 4));
+    return Ok;
+}
+
+QJsonObject perLengthJson(const KarnoppPerLength& p)
+{
+    return {{QStringLiteral("Cp_N_per_m"), p.Cp_N_per_m},     {QStringLiteral("Cn_N_per_m"), p.Cn_N_per_m},
+            {QStringLiteral("bp_Ns_per_m2"), p.bp_Ns_per_m2}, {QStringLiteral("bn_Ns_per_m2"), p.bn_Ns_per_m2},
+            {QStringLiteral("Dp_N_per_m"), p.Dp_N_per_m},     {QStringLiteral("Dn_N_per_m"), p.Dn_N_per_m}};
+}
+
+QJsonObject groupJson(const FrictionGroup& g, bool withFrequency)
+{
+    QJsonObject mean = perLengthJson(g.mean), sd = perLengthJson(g.stdDev);
+    if (g.massEstimateMean_kg) {
+        mean.insert(QStringLiteral("m_est_kg"), *g.massEstimateMean_kg);
+        sd.insert(QStringLiteral("m_est_kg"), *g.massEstimateStdDev_kg);
+    }
+    QJsonObject o{{QStringLiteral("runs"), qint64(g.runs)}, {QStringLiteral("mean"), mean}, {QStringLiteral("std"), sd}};
+    if (withFrequency)
+        o.insert(QStringLiteral("frequency_hz"), g.frequency_hz);
+    return o;
+}
+
+std::optional<double> positiveNumber(const QString& text)
+{
+    bool ok = false;
+    const double v = text.toDouble(&ok);
+    return ok && std::isfinite(v) && v > 0.0 ? std::optional<double>(v) : std::nullopt;
+}
+
+int fitFrictionCommand(const QStringList& args, Io io)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    const QCommandLineOption thickness(QStringLiteral("thickness-mm"),
+                                       tr("length of needle in tissue (slab thickness), required"), QStringLiteral("T"));
+    const QCommandLineOption mass(QStringLiteral("mass-kg"),
+                                  tr("needle holder mass removed from the force (eq. 21, default 0.087)"), QStringLiteral("M"));
+    const QCommandLineOption estimate(QStringLiteral("estimate-mass"), tr("estimate the mass with the friction (eq. 19)"));
+    const QCommandLineOption band(QStringLiteral("band-m-s"), tr("zero-velocity band width (default 0.005 = ±2.5 mm/s)"),
+                                  QStringLiteral("B"));
+    const QCommandLineOption labels(QStringLiteral("labels"),
+                                    tr("phase labels (track,label,start_s,end_s,comment) for a single run; "
+                                       "C and b then come from phase c, D from phase a. Runs may carry a 'phase' "
+                                       "column instead. Without phases the velocity band decides."),
+                                    QStringLiteral("FILE"));
+    for (const auto* o : {&json, &thickness, &mass, &estimate, &band, &labels})
+        parser.addOption(*o);
+    parser.addPositionalArgument(QStringLiteral("RUN.csv..."), tr("sinusoidal runs through a tissue slab"));
+    int code = Ok;
+    if (!parseArgs(parser, QStringLiteral("fit friction"), args, io, 1, -1, &code))
+        return code;
+    auto usage = [&](const QString& why) {
+        io.err << "needlebench fit friction: " << why << '\n'
+               << tr("Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] "
+                     "[--band-m-s B] [--labels FILE] [--json]\n");
+        return int(Usage);
+    };
+    FrictionOptions options;
+    if (!parser.isSet(thickness))
+        return usage(tr("--thickness-mm is required"));
+    if (const auto t = positiveNumber(parser.value(thickness)))
+        options.thickness_mm = *t;
+    else
+        return usage(tr("--thickness-mm: '%1' is not a positive number").arg(parser.value(thickness)));
+    if (parser.isSet(mass) && parser.isSet(estimate))
+        return usage(tr("--mass-kg and --estimate-mass exclude each other"));
+    if (parser.isSet(mass)) {
+        bool ok = false;
+        options.mass_kg = parser.value(mass).toDouble(&ok);
+        if (!ok || !std::isfinite(options.mass_kg) || options.mass_kg < 0.0)
+            return usage(tr("--mass-kg: '%1' is not a mass").arg(parser.value(mass)));
+    }
+    options.estimateMass = parser.isSet(estimate);
+    if (parser.isSet(band)) {
+        if (const auto b = positiveNumber(parser.value(band)))
+            options.band_m_s = *b;
+        else
+            return usage(tr("--band-m-s: '%1' is not a positive number").arg(parser.value(band)));
+    }
+    const QStringList files = parser.positionalArguments();
+    if (parser.isSet(labels) && files.size() != 1)
+        return usage(tr("--labels applies to a single run; give one run per call"));
+
+    std::vector<FrictionFit> fits;
+    for (const QString& path : files) {
+        const Run run = loadRun(path, io);
+        QStringList phases;
+        if (parser.isSet(labels)) {
+            try {
+                phases = phasePerSample(readLabelsFile(parser.value(labels)), run.time_s);
+            } catch (const RunFileError& e) {
+                throw FileFailure{e.message()};
+            }
+        }
+        fits.push_back(onFile(path, [&] { return fitFriction(run, options, phases); }));
+    }
+    const auto groups = groupByFrequency(fits);
+    const FrictionGroup all = overall(fits);
+
+    if (parser.isSet(json)) {
+        QJsonArray runs;
+        for (std::size_t i = 0; i < fits.size(); ++i) {
+            const FrictionFit& f = fits[i];
+            QJsonObject o{{QStringLiteral("file"), files[qsizetype(i)]},
+                          {QStringLiteral("frequency_hz"), f.frequency_hz},
+                          {QStringLiteral("Cp_N"), f.model.Cp_N},
+                          {QStringLiteral("Cn_N"), f.model.Cn_N},
+                          {QStringLiteral("bp_Ns_per_m"), f.model.bp_Ns_per_m},
+                          {QStringLiteral("bn_Ns_per_m"), f.model.bn_Ns_per_m},
+                          {QStringLiteral("Dp_N"), f.model.Dp_N},
+                          {QStringLiteral("Dn_N"), f.model.Dn_N},
+                          {QStringLiteral("rms_N"), f.rms_N},
+                          {QStringLiteral("static_source"), f.staticSource},
+                          {QStringLiteral("samples_positive"), qint64(f.positiveSamples)},
+                          {QStringLiteral("samples_negative"), qint64(f.negativeSamples)},
+                          {QStringLiteral("per_length"), perLengthJson(f.perLength)}};
+            if (f.massEstimate_kg)
+                o.insert(QStringLiteral("m_est_kg"), *f.massEstimate_kg);
+            runs.append(o);
+        }
+        QJsonArray byFrequency;
+        for (const FrictionGroup& g : groups)
+            byFrequency.append(groupJson(g, true));
+        printJson(io, {{QStringLiteral("runs"), runs},
+                       {QStringLiteral("by_frequency"), byFrequency},
+                       {QStringLiteral("overall"), groupJson(all, false)},
+                       {QStringLiteral("thickness_mm"), options.thickness_mm},
+                       {QStringLiteral("band_m_s"), options.band_m_s}});
+        return Ok;
+    }
+    io.out << tr("friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²\n")
+                  .arg(num(options.thickness_mm));
+    const bool m = options.estimateMass;
+    io.out << tr("group             statistic freq_Hz ") << (m ? tr("  m_est_kg ") : QString())
+           << tr("       Cp        Bp        Cn        Bn        Dp        Dn\n");
+    auto line = [&](const QString& group, const QString& stat, const QString& freq, std::optional<double> mass,
+                    const KarnoppPerLength& p) {
+        io.out << group.left(17).leftJustified(17) << ' ' << stat.leftJustified(9) << ' ' << freq.rightJustified(7) << ' ';
+        if (m)
+            io.out << (mass ? num(*mass, 4) : QString()).rightJustified(10) << ' ';
+        for (double v : {p.Cp_N_per_m, p.bp_Ns_per_m2, p.Cn_N_per_m, p.bn_Ns_per_m2, p.Dp_N_per_m, p.Dn_N_per_m})
+            io.out << num(v, 5).rightJustified(9) << ' ';
+        io.out << '\n';
+    };
+    for (std::size_t i = 0; i < fits.size(); ++i)
+        line(QFileInfo(files[qsizetype(i)]).fileName(), tr("run"), num(fits[i].frequency_hz, 3), fits[i].massEstimate_kg,
+             fits[i].perLength);
+    for (const FrictionGroup& g : groups) {
+        const QString name = tr("%1Hz (%2 runs)").arg(num(g.frequency_hz, 3)).arg(g.runs);
+        line(name, tr("mean"), num(g.frequency_hz, 3), g.massEstimateMean_kg, g.mean);
+        line(name, tr("std"), num(g.frequency_hz, 3), g.massEstimateStdDev_kg, g.stdDev);
+    }
+    line(tr("all (%1 runs)").arg(all.runs), tr("mean"), QString(), all.massEstimateMean_kg, all.mean);
+    line(tr("all (%1 runs)").arg(all.runs), tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev);
+    for (std::size_t i = 0; i < fits.size(); ++i)
+        io.out << tr("%1: D from %2, rms %3 N\n")
+                      .arg(QFileInfo(files[qsizetype(i)]).fileName(), fits[i].staticSource, num(fits[i].rms_N, 3));
+    return Ok;
+}
+
+void printFitUsage(QTextStream& s)
+{
+    s << tr("Usage: needlebench fit calibration FILE.csv [--json]\n"
+            "       needlebench fit stiffness RUN.csv... [--json]\n"
+            "       needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass]\n"
+            "                                [--band-m-s B] [--labels FILE] [--json]\n"
+            "'needlebench fit WHAT --help' describes each.\n");
+}
+
+}  // namespace
+
+int cmdFit(const QStringList& args, Io io)
+{
+    const QString what = args.value(0);
+    if (what == QLatin1String("--help") || what == QLatin1String("-h")) {
+        printFitUsage(io.out);
+        return Ok;
+    }
+    try {
+        if (what == QLatin1String("calibration"))
+            return fitCalibrationCommand(args.mid(1), io);
+        if (what == QLatin1String("stiffness"))
+            return fitStiffnessCommand(args.mid(1), io);
+        if (what == QLatin1String("friction"))
+            return fitFrictionCommand(args.mid(1), io);
+    } catch (const FileFailure& f) {
+        io.err << "needlebench fit " << what << ": " << f.message << '\n';
+        return Failure;
+    } catch (const FitError& e) {
+        io.err << "needlebench fit " << what << ": " << e.message() << '\n';
+        return Failure;
+    }
+    io.err << (what.isEmpty() ? tr("needlebench fit: say what to fit\n")
+                              : tr("needlebench fit: unknown fit '%1'\n").arg(what));
+    printFitUsage(io.err);
+    return Usage;
+}
+
+}  // namespace nb::cli

@@ -1,0 +1,292 @@
+// The `fit` and `events` command-line contract, through the real executable on run files
+// written to disk: JSON keys and values, tables, usage errors (exit 2), bad input (exit 1).
+#include "core/labels.h"
+#include "core/run_file.h"
+#include "synthetic.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+
+using namespace nb;
+
+class TestFitCli : public QObject {
+    Q_OBJECT
+
+    struct Result {
+        int code;
+        QString out, err;
+        QJsonObject json() const { return QJsonDocument::fromJson(out.toUtf8()).object(); }
+    };
+    static Result run(const QStringList& args)
+    {
+        QProcess p;
+        auto env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));  // headless commands need no display
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(NB_EXECUTABLE), args);
+        if (!p.waitForFinished(60000))
+            qFatal("needlebench did not finish");
+        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, QString::fromUtf8(p.readAllStandardOutput()),
+                QString::fromUtf8(p.readAllStandardError())};
+    }
+    static void write(const QString& path, const QByteArray& text)
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text);
+    }
+    static bool hasKeys(const QJsonObject& o, const QStringList& keys)
+    {
+        for (const QString& k : keys)
+            if (!o.contains(k)) {
+                qWarning("missing key %s", qPrintable(k));
+                return false;
+            }
+        return true;
+    }
+
+    QTemporaryDir dir_;
+    QString path(const char* name) const { return dir_.filePath(QString::fromUtf8(name)); }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(dir_.isValid());
+        synthetic::Insertion p;
+        p.internal = {{4.0, 0.1}};
+        writeRunFile(path("ins1.csv"), synthetic::makeInsertion(p));
+        p.seed = 2;
+        p.internal.clear();
+        writeRunFile(path("ins2.csv"), synthetic::makeInsertion(p));
+        p.punctureDepth_mm = 200.0;
+        writeRunFile(path("nopuncture.csv"), synthetic::makeInsertion(p));
+        std::uint32_t seed = 1;
+        for (double f : {0.2, 0.5, 0.8}) {
+            for (int k = 0; k < 2; ++k) {
+                synthetic::Friction q;
+                q.frequency_hz = f;
+                q.seed = seed++;
+                q.cycles = 5;
+                q.writeFrequency = k == 0;  // the other run's frequency is estimated
+                writeRunFile(dir_.filePath(QStringLiteral("fr_%1_%2.csv").arg(f).arg(k)), synthetic::makeFriction(q));
+            }
+        }
+        synthetic::Friction q;
+        q.writePhases = false;
+        writeRunFile(path("fr_nophase.csv"), synthetic::makeFriction(q));
+        writeLabelsFile(path("fr_labels.csv"), synthetic::frictionLabels(q));
+        Run still = synthetic::makeFriction(q);
+        for (double& x : still.position_mm)
+            x = 2.0;
+        writeRunFile(path("still.csv"), still);
+        const auto cal = synthetic::makeCalibration(1.2e-4, 0.015, 1e-4, 1);
+        QByteArray text = "mass_g,voltage_V\n";
+        for (std::size_t i = 0; i < cal.mass_g.size(); ++i)
+            text += QByteArray::number(cal.mass_g[i]) + ',' +
+                    QByteArray::number(cal.voltage_V[i] + (i == 7 ? 0.01 : 0.0), 'g', 10) + '\n';
+        write(path("cal.csv"), text);
+        write(path("corrupt.csv"), "time_s,position_mm,force_N\n0,0,0\n0.002,abc,0\n");
+    }
+    void calibrationJson()
+    {
+        const auto r = run({QStringLiteral("fit"), QStringLiteral("calibration"), path("cal.csv"), QStringLiteral("--json")});
+        QCOMPARE(r.code, 0);
+        const auto o = r.json();
+        QVERIFY(hasKeys(o, {QStringLiteral("slope_V_per_g"), QStringLiteral("intercept_V"), QStringLiteral("r2"),
+                            QStringLiteral("residuals_V")}));
+        QVERIFY(std::fabs(o[QStringLiteral("slope_V_per_g")].toDouble() - 1.2e-4) < 2e-6);
+        const QJsonArray res = o[QStringLiteral("residuals_V")].toArray();
+        QCOMPARE(res.size(), 35);
+        // The bad point (index 7) carries the largest residual.
+        for (int i = 0; i < res.size(); ++i)
+            if (i != 7)
+                QVERIFY(std::fabs(res[i].toDouble()) < std::fabs(res[7].toDouble()));
+        const auto table = run({QStringLiteral("fit"), QStringLiteral("calibration"), path("cal.csv")});
+        QCOMPARE(table.code, 0);
+        QVERIFY(table.out.contains(QStringLiteral("check this point")));
+    }
+    void stiffnessJson()
+    {
+        const auto r = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), path("ins2.csv"),
+                            QStringLiteral("--json")});
+        QCOMPARE(r.code, 0);
+        const auto o = r.json();
+        const QJsonArray runs = o[QStringLiteral("runs")].toArray();
+        QCOMPARE(runs.size(), 2);
+        for (const auto& v : runs) {
+            const QJsonObject ro = v.toObject();
+            QVERIFY(hasKeys(ro, {QStringLiteral("file"), QStringLiteral("contact_mm"), QStringLiteral("puncture_mm"),
+                                 QStringLiteral("puncture_depth_mm"), QStringLiteral("puncture_force_N"),
+                                 QStringLiteral("a1_N_per_mm"), QStringLiteral("a2_N_per_mm2"), QStringLiteral("rms_N"),
+                                 QStringLiteral("r2")}));
+            QVERIFY(std::fabs(ro[QStringLiteral("contact_mm")].toDouble() - 5.0) < 0.3);
+            QVERIFY(std::fabs(ro[QStringLiteral("puncture_depth_mm")].toDouble() - 16.57) < 0.35);
+            QVERIFY(std::fabs(ro[QStringLiteral("a1_N_per_mm")].toDouble() / 0.048 - 1.0) < 0.1);
+        }
+        QCOMPARE(runs[0].toObject()[QStringLiteral("file")].toString(), path("ins1.csv"));
+        const QJsonObject pooled = o[QStringLiteral("pooled")].toObject();
+        QVERIFY(hasKeys(pooled, {QStringLiteral("a1_N_per_mm"), QStringLiteral("a2_N_per_mm2"), QStringLiteral("rms_N"),
+                                 QStringLiteral("r2")}));
+        QVERIFY(std::fabs(pooled[QStringLiteral("a2_N_per_mm2")].toDouble() / 0.0052 - 1.0) < 0.05);
+        QVERIFY(pooled[QStringLiteral("alternatives")].toObject().contains(QStringLiteral("spring")));
+        QVERIFY(o.contains(QStringLiteral("mean_of_runs")));
+        const auto table = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv")});
+        QCOMPARE(table.code, 0);
+        QVERIFY(table.out.contains(QStringLiteral("pooled")));
+    }
+    void frictionJson()
+    {
+        QStringList args{QStringLiteral("fit"), QStringLiteral("friction")};
+        for (double f : {0.2, 0.5, 0.8})
+            for (int k = 0; k < 2; ++k)
+                args << dir_.filePath(QStringLiteral("fr_%1_%2.csv").arg(f).arg(k));
+        args << QStringLiteral("--thickness-mm") << QStringLiteral("20") << QStringLiteral("--estimate-mass")
+             << QStringLiteral("--json");
+        const auto r = run(args);
+        QCOMPARE(r.code, 0);
+        const auto o = r.json();
+        const QJsonArray runs = o[QStringLiteral("runs")].toArray();
+        QCOMPARE(runs.size(), 6);
+        for (const auto& v : runs) {
+            const QJsonObject ro = v.toObject();
+            QVERIFY(hasKeys(ro, {QStringLiteral("file"), QStringLiteral("frequency_hz"), QStringLiteral("Cp_N"),
+                                 QStringLiteral("Cn_N"), QStringLiteral("bp_Ns_per_m"), QStringLiteral("bn_Ns_per_m"),
+                                 QStringLiteral("Dp_N"), QStringLiteral("Dn_N"), QStringLiteral("m_est_kg"),
+                                 QStringLiteral("per_length")}));
+            QVERIFY(hasKeys(ro[QStringLiteral("per_length")].toObject(),
+                            {QStringLiteral("Cp_N_per_m"), QStringLiteral("Cn_N_per_m"), QStringLiteral("bp_Ns_per_m2"),
+                             QStringLiteral("bn_Ns_per_m2"), QStringLiteral("Dp_N_per_m"), QStringLiteral("Dn_N_per_m")}));
+            QVERIFY(std::fabs(ro[QStringLiteral("Cp_N")].toDouble() / 0.2 - 1.0) < 0.05);
+            QVERIFY(std::fabs(ro[QStringLiteral("m_est_kg")].toDouble() - 0.087) < 0.01);
+        }
+        const QJsonArray groups = o[QStringLiteral("by_frequency")].toArray();
+        QCOMPARE(groups.size(), 3);  // estimated frequencies join their metadata twins
+        QVERIFY(std::fabs(groups[1].toObject()[QStringLiteral("frequency_hz")].toDouble() - 0.5) < 0.01);
+        QCOMPARE(groups[1].toObject()[QStringLiteral("runs")].toInt(), 2);
+        const QJsonObject all = o[QStringLiteral("overall")].toObject();
+        QCOMPARE(all[QStringLiteral("runs")].toInt(), 6);
+        const QJsonObject mean = all[QStringLiteral("mean")].toObject();
+        QVERIFY(std::fabs(mean[QStringLiteral("Cp_N_per_m")].toDouble() - 10.0) < 0.5);
+        QVERIFY(mean.contains(QStringLiteral("m_est_kg")));
+        QVERIFY(all[QStringLiteral("std")].toObject().contains(QStringLiteral("bn_Ns_per_m2")));
+        // Known mass: no m_est_kg.
+        const auto known = run({QStringLiteral("fit"), QStringLiteral("friction"), args[2], QStringLiteral("--thickness-mm"),
+                                QStringLiteral("20"), QStringLiteral("--mass-kg"), QStringLiteral("0.087"), QStringLiteral("--json")});
+        QCOMPARE(known.code, 0);
+        QVERIFY(!known.json()[QStringLiteral("runs")].toArray()[0].toObject().contains(QStringLiteral("m_est_kg")));
+    }
+    void frictionWithLabelsAndTable()
+    {
+        const auto r = run({QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"), QStringLiteral("--thickness-mm"),
+                            QStringLiteral("20"), QStringLiteral("--labels"), path("fr_labels.csv"), QStringLiteral("--json")});
+        QCOMPARE(r.code, 0);
+        const QJsonObject ro = r.json()[QStringLiteral("runs")].toArray()[0].toObject();
+        QCOMPARE(ro[QStringLiteral("static_source")].toString(), QStringLiteral("phase a"));
+        QVERIFY(std::fabs(ro[QStringLiteral("Dp_N")].toDouble() / 0.3 - 1.0) < 0.1);
+        const auto band = run({QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"),
+                               QStringLiteral("--thickness-mm"), QStringLiteral("20"), QStringLiteral("--band-m-s"),
+                               QStringLiteral("0.004"), QStringLiteral("--json")});
+        QCOMPARE(band.code, 0);
+        QCOMPARE(band.json()[QStringLiteral("runs")].toArray()[0].toObject()[QStringLiteral("static_source")].toString(),
+                 QStringLiteral("velocity band"));
+        QCOMPARE(band.json()[QStringLiteral("band_m_s")].toDouble(), 0.004);
+        const auto table = run({QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"),
+                                QStringLiteral("--thickness-mm"), QStringLiteral("20")});
+        QCOMPARE(table.code, 0);
+        QVERIFY(table.out.contains(QStringLiteral("Cp")) && table.out.contains(QStringLiteral("std")));
+    }
+    void eventsJson()
+    {
+        const auto r = run({QStringLiteral("events"), path("ins1.csv"), QStringLiteral("--json")});
+        QCOMPARE(r.code, 0);
+        const auto o = r.json();
+        QVERIFY(hasKeys(o, {QStringLiteral("file"), QStringLiteral("contact"), QStringLiteral("puncture"),
+                            QStringLiteral("internal_punctures"), QStringLiteral("relaxation"), QStringLiteral("zero_offset_N")}));
+        for (const char* k : {"contact", "puncture", "relaxation"})
+            QVERIFY(hasKeys(o[QString::fromUtf8(k)].toObject(),
+                            {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")}));
+        QVERIFY(std::fabs(o[QStringLiteral("puncture")].toObject()[QStringLiteral("position_mm")].toDouble() - 21.57) < 0.1);
+        QCOMPARE(o[QStringLiteral("internal_punctures")].toArray().size(), 1);
+        QVERIFY(std::fabs(o[QStringLiteral("zero_offset_N")].toDouble() - 0.05) < 0.003);
+        const auto table = run({QStringLiteral("events"), path("ins1.csv")});
+        QCOMPARE(table.code, 0);
+        QVERIFY(table.out.contains(QStringLiteral("puncture")));
+    }
+    void badInputFailsNamingTheFile_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("named");
+        const QString ft = QStringLiteral("--thickness-mm");
+        QTest::newRow("missing run") << QStringList{QStringLiteral("events"), path("nope.csv")} << QStringLiteral("nope.csv");
+        QTest::newRow("corrupt run") << QStringList{QStringLiteral("events"), path("corrupt.csv")} << QStringLiteral("corrupt.csv");
+        QTest::newRow("no puncture") << QStringList{QStringLiteral("events"), path("nopuncture.csv")} << QStringLiteral("nopuncture.csv");
+        QTest::newRow("stiffness no puncture")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), path("nopuncture.csv")}
+            << QStringLiteral("nopuncture.csv");
+        QTest::newRow("friction without motion")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), path("still.csv"), ft, QStringLiteral("20")}
+            << QStringLiteral("still.csv");
+        QTest::newRow("friction on an insertion")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), path("ins1.csv"), ft, QStringLiteral("20")}
+            << QStringLiteral("ins1.csv");
+        QTest::newRow("missing labels")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"), ft, QStringLiteral("20"),
+                           QStringLiteral("--labels"), path("nolabels.csv")}
+            << QStringLiteral("nolabels.csv");
+        QTest::newRow("corrupt calibration")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("calibration"), path("corrupt.csv")} << QStringLiteral("corrupt.csv");
+        QTest::newRow("too few samples") << QStringList{QStringLiteral("fit"), QStringLiteral("stiffness"), path("corrupt.csv")}
+                                         << QStringLiteral("corrupt.csv");
+    }
+    void badInputFailsNamingTheFile()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, named);
+        const auto r = run(args);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(named), qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);  // one line
+        QVERIFY(r.out.isEmpty());
+    }
+    void badArgumentsAreUsageErrors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        const QString fr = path("fr_nophase.csv");
+        const QString ft = QStringLiteral("--thickness-mm");
+        QTest::newRow("fit alone") << QStringList{QStringLiteral("fit")};
+        QTest::newRow("unknown fit") << QStringList{QStringLiteral("fit"), QStringLiteral("damping")};
+        QTest::newRow("no file") << QStringList{QStringLiteral("fit"), QStringLiteral("stiffness")};
+        QTest::newRow("no thickness") << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), fr};
+        QTest::newRow("bad thickness") << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), fr, ft, QStringLiteral("-3")};
+        QTest::newRow("mass and estimate")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), fr, ft, QStringLiteral("20"),
+                           QStringLiteral("--mass-kg"), QStringLiteral("0.1"), QStringLiteral("--estimate-mass")};
+        QTest::newRow("labels for two runs")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), fr, fr, ft, QStringLiteral("20"),
+                           QStringLiteral("--labels"), path("fr_labels.csv")};
+        QTest::newRow("events two files") << QStringList{QStringLiteral("events"), fr, fr};
+        QTest::newRow("unknown option") << QStringList{QStringLiteral("events"), fr, QStringLiteral("--bogus")};
+    }
+    void badArgumentsAreUsageErrors()
+    {
+        QFETCH(QStringList, args);
+        const auto r = run(args);
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("Usage")), qPrintable(r.err));
+    }
+    void helpIsListed()
+    {
+        const auto r = run({QStringLiteral("help")});
+        QVERIFY(r.out.contains(QStringLiteral("fit")) && r.out.contains(QStringLiteral("events")));
+        QCOMPARE(run({QStringLiteral("fit"), QStringLiteral("--help")}).code, 0);
+        QCOMPARE(run({QStringLiteral("fit"), QStringLiteral("friction"), QStringLiteral("--help")}).code, 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFitCli)
+#include "test_fit_cli.moc"
