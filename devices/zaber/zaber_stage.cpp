@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QDebug>
+#include <QThread>
 #include <cmath>
 #include <numbers>
 
@@ -26,26 +27,42 @@ double nowSeconds()
 
 }  // namespace
 
-ZaberStage::ZaberStage(ZaberConfig config) : config_(std::move(config)), port_(std::make_unique<QSerialPort>())
+ZaberStage::ZaberStage(ZaberConfig config) : config_(std::move(config))
 {
+    const Message version = request("get version");
+    firmware_ = QString::fromLatin1(version.data);
+    const Message pos = request("get pos");
+    lastPos_ = config_.units.mm(pos.data.toDouble());
+    // The port is used by the acquisition thread, not the one opening the stage: a serial
+    // port's notifiers belong to the thread that opened it, so it is reopened there.
+    port_.reset();
+}
+
+void ZaberStage::ensurePort()
+{
+    if (port_ && port_->thread() == QThread::currentThread())
+        return;
+    if (port_)
+        port_.release()->deleteLater();  // belongs to another thread's event loop
+    pending_.clear();
+    port_ = std::make_unique<QSerialPort>();
     port_->setPortName(config_.port);
     port_->setBaudRate(QSerialPort::Baud115200);
     port_->setDataBits(QSerialPort::Data8);
     port_->setParity(QSerialPort::NoParity);
     port_->setStopBits(QSerialPort::OneStop);
     port_->setFlowControl(QSerialPort::NoFlowControl);
-    if (!port_->open(QIODevice::ReadWrite))
-        fail(tr("cannot open the serial port: %1").arg(port_->errorString()));
+    if (!port_->open(QIODevice::ReadWrite)) {
+        const QString why = port_->errorString();
+        port_.reset();
+        fail(tr("cannot open the serial port: %1").arg(why));
+    }
     port_->clear();
-    const Message version = request("get version");
-    firmware_ = QString::fromLatin1(version.data);
-    const Message pos = request("get pos");
-    lastPos_ = config_.units.mm(pos.data.toDouble());
 }
 
 ZaberStage::~ZaberStage()
 {
-    if (port_->isOpen() && sineActive_) {
+    if (port_ && sineActive_) {
         try {
             request("stop");
         } catch (const std::exception&) {
@@ -107,6 +124,7 @@ void ZaberStage::checkFlags(const Message& m)
 
 Message ZaberStage::request(const QByteArray& text)
 {
+    ensurePort();
     if (port_->write(command(config_.device, config_.axis, text)) < 0)
         fail(tr("writing to the serial port failed: %1").arg(port_->errorString()));
     const auto deadline = Clock::now() + config_.replyTimeout;

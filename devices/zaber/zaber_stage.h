@@ -49,6 +49,7 @@ public:
 
 private:
     [[noreturn]] void fail(const QString& reason) const;
+    void ensurePort();
     std::optional<zaber::Message> readMessage(std::chrono::steady_clock::time_point deadline);
     void checkFlags(const zaber::Message& m);
     void steerSine(double now_s, double position_mm);
