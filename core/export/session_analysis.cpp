@@ -111,7 +111,7 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a)
         g.meanPunctureDepth_mm = mean(depths);
         g.meanPunctureForce_N = mean(forces);
         // Outliers: the run's model force at the group's median puncture depth far (3 scaled
-        // MADs) from the others', or its puncture force so; needs enough runs to say.
+        // MADs, and 15 %) from the others', or its puncture force so; needs enough runs to say.
         if (idx.size() >= 4) {
             const double x = median(depths);
             std::vector<double> f;
@@ -124,7 +124,8 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a)
                     dev.push_back(std::abs(v - m));
                 const double mad = 1.4826 * median(dev);
                 for (std::size_t k = 0; k < idx.size(); ++k)
-                    if (mad > 0.0 && std::abs((*values)[k] - m) > 3.0 * mad)
+                    // The 15 % floor keeps near-identical runs (tiny MAD) from all looking odd.
+                    if (std::abs((*values)[k] - m) > std::max(3.0 * mad, 0.15 * std::abs(m)))
                         a.stiffness[idx[k]].outlier = true;
             }
         }
@@ -323,7 +324,9 @@ FitTable frictionSummaryTable(const SessionAnalysis& a)
         t.columns.push_back(c);
     auto add = [&](const QString& name, const FrictionGroup& g) {
         for (int k = 0; k < 2; ++k) {
-            std::vector<TableCell> row{name, k ? tr("std") : tr("mean"), g.frequency_hz, double(g.runs)};
+            // The overall group has no single frequency.
+            std::vector<TableCell> row{name, k ? tr("std") : tr("mean"), g.frequency_hz > 0.0 ? g.frequency_hz : std::nan(""),
+                                       double(g.runs)};
             appendKarnopp(row, k ? g.stdDev : g.mean);
             t.rows.push_back(std::move(row));
         }

@@ -7,6 +7,9 @@
 #include "widgets/analysis/figure_export.h"
 
 #include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QListWidget>
 #include <QProcess>
 #include <QStandardItemModel>
@@ -51,12 +54,18 @@ private slots:
                               d.filePath(QStringLiteral("run_00%1_linear.csv").arg(seed))}));
         QVERIFY(simulate({"--protocol", "friction", "--frequency-hz", "0.5", "--cycles", "3", "--out",
                           d.filePath(QStringLiteral("run_005_sine.csv")), "--truth", d.filePath(QStringLiteral("truth5.json"))}));
-        // Phase labels for the friction run, as an operator would mark them (a, c alternating).
+        // Phase labels for the friction run where the simulator says the phases were.
+        QFile truth(d.filePath(QStringLiteral("truth5.json")));
+        QVERIFY(truth.open(QIODevice::ReadOnly));
         Labels labels;
-        for (int k = 0; k < 12; ++k) {
-            const double t0 = 0.5 * k;
-            labels.push_back({QStringLiteral("phase"), k % 2 ? QStringLiteral("c") : QStringLiteral("a"), t0, t0 + 0.5, {}});
+        for (const QJsonValue& v : QJsonDocument::fromJson(truth.readAll()).object().value(QStringLiteral("phases")).toArray()) {
+            const QJsonObject p = v.toObject();
+            const double a = std::max(0.0, p.value(QStringLiteral("start_s")).toDouble());
+            if (p.value(QStringLiteral("end_s")).toDouble() > a)
+                labels.push_back({QStringLiteral("phase"), p.value(QStringLiteral("label")).toString(), a,
+                                  p.value(QStringLiteral("end_s")).toDouble(), {}});
         }
+        QVERIFY(labels.size() >= 12);
         writeLabelsFile(d.filePath(QStringLiteral("run_005_sine.labels.csv")), labels);
         QDir().mkpath(QStringLiteral(NB_BINARY_DIR "/screenshots"));
     }
@@ -114,7 +123,7 @@ private slots:
         writeLabelsFile(labels, {{QStringLiteral("events"), QStringLiteral("puncture"), labelled, labelled, {}}});
         w.reloadLabels();
         const auto after = w.analysis().stiffness[1].events;
-        QVERIFY(std::abs(after.puncture.time_s - labelled) < 0.01);
+        QVERIFY(std::abs(after.puncture.time_s - labelled) <= 0.0501);  // snapped to the peak within 50 ms
         QVERIFY(after.punctureDepth_mm() < before.punctureDepth_mm() - 1.0);
         QVERIFY(QFile::remove(labels));
         // The watcher notices the removal by itself.

@@ -40,7 +40,7 @@ QCPGraph* scatter(QCustomPlot* plot, const QVector<double>& x, const QVector<dou
     g->setPen(QPen(c));
     g->setData(x, y, true);
     g->setName(name);
-    g->setAdaptiveSampling(true);
+    g->setAdaptiveSampling(false);  // every recorded point is shown
     return g;
 }
 

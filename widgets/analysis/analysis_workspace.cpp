@@ -8,6 +8,7 @@
 #include "core/run_file.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -64,7 +65,9 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
             if (c < row.size()) {
                 if (const auto* s = std::get_if<QString>(&row[c])) {
                     item->setText(*s);
-                    if (c + 1 == t.columns.size() && !s->isEmpty())
+                    // Outliers and failed fits stand out; other text columns are just text.
+                    if ((t.columns[c].key == QLatin1String("outlier") && !s->isEmpty()) ||
+                        *s == QCoreApplication::translate("analysis", "not fitted"))
                         flagged = true;
                 } else {
                     const double v = std::get<double>(row[c]);
