@@ -14,6 +14,8 @@
 #include "widgets/session_view.h"
 
 #include <QActionGroup>
+#include <QRegularExpression>
+#include <algorithm>
 #include <QCloseEvent>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -67,6 +69,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     setCentralWidget(plots_);
 
     panel_ = new ControlPanel(this);
+    setWindowIcon(QIcon(QStringLiteral(":/icons/needlebench.svg")));  // after the panel registered the icons
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(panel_);
     scroll->setWidgetResizable(true);
@@ -83,6 +86,9 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     sessionDock_->setObjectName(QStringLiteral("sessionDock"));
     sessionDock_->setWidget(sessionView_);
     addDockWidget(Qt::BottomDockWidgetArea, sessionDock_);
+    // The control panel (with the E-stop and the status) gets the full height of the window.
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    resizeDocks({sessionDock_}, {190}, Qt::Vertical);
 
     statusLabel_ = new QLabel(this);
     statusBar()->addPermanentWidget(statusLabel_);
@@ -121,6 +127,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
         lastRunPath_ = path;
         plots_->clear();
         runT0_ = lastT_;
+        sessionView_->setBusyPath(path);
         showMessage(tr("Recording %1").arg(QDir::toNativeSeparators(path)));
         sessionView_->refresh();
     });
@@ -407,6 +414,7 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
 void MainWindow::onRunEnded(const devices::RunSummary& summary)
 {
     recording_ = false;
+    sessionView_->setBusyPath({});
     lastRunPath_ = summary.path;
     lastEndReason_ = summary.endReason;
     ++runsEnded_;
@@ -432,8 +440,15 @@ void MainWindow::markDetectedEvents()
     run.force_N = plots_->forces();
     try {
         const InsertionEvents events = detectEvents(run);
+        // Only a puncture that stands out from the run is marked (the start of a move gives
+        // small inertial wiggles that are not one).
+        const double peak = *std::max_element(run.force_N.begin(), run.force_N.end()) - events.zeroOffset_N;
+        if (events.puncture.force_N < std::max(0.1, 0.2 * peak) || events.puncture.position_mm <= events.contact.position_mm)
+            return;
         plots_->addEvent(events.contact.time_s, tr("contact"));
         plots_->addEvent(events.puncture.time_s, tr("puncture"));
+        for (const RunEvent& e : events.internalPunctures)
+            plots_->addEvent(e.time_s, QString());
         plots_->refresh();
     } catch (const FitError&) {
         // No puncture in this run (it stopped early or never touched tissue): nothing to mark.

@@ -57,7 +57,7 @@ CalibrationWizard::CalibrationWizard(const QString& sensorName, QWidget* parent)
     table_->verticalHeader()->setVisible(false);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setMinimumWidth(330);
+    table_->setMinimumWidth(360);
     connect(table_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
         if (updating_)
             return;
@@ -96,6 +96,10 @@ CalibrationWizard::CalibrationWizard(const QString& sensorName, QWidget* parent)
     fitLabel_->setObjectName(QStringLiteral("fitLabel"));
     fitLabel_->setWordWrap(true);
     fitLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    suspect_ = new QLabel(this);
+    suspect_->setObjectName(QStringLiteral("suspectLabel"));
+    suspect_->setWordWrap(true);
+    suspect_->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
     prompt_ = new QLabel(this);
     prompt_->setWordWrap(true);
     prompt_->setStyleSheet(QStringLiteral("font-weight: bold;"));
@@ -135,6 +139,7 @@ CalibrationWizard::CalibrationWizard(const QString& sensorName, QWidget* parent)
     layout->addLayout(massRow);
     layout->addWidget(split, 1);
     layout->addWidget(fitLabel_);
+    layout->addWidget(suspect_);
     layout->addWidget(prompt_);
     layout->addLayout(buttons);
     resize(980, 640);
@@ -147,6 +152,10 @@ void CalibrationWizard::setDwell(double seconds) { dwell_s_ = std::max(0.01, sec
 void CalibrationWizard::setMasses(double from_g, double to_g, double step_g)
 {
     stopMeasuring();
+    for (auto [box, value] : {std::pair{from_, from_g}, {to_, to_g}, {step_, step_g}}) {
+        const QSignalBlocker block(box);
+        box->setValue(value);
+    }
     updating_ = true;
     table_->setRowCount(0);
     for (double m = from_g; m <= to_g + 1e-9 && step_g > 0; m += step_g) {
@@ -305,12 +314,14 @@ void CalibrationWizard::refit()
                            .arg(fit_.r2, 0, 'f', 6)
                            .arg(fit_.rms_V * 1000.0, 0, 'f', 3)
                            .arg(fitRows_.size());
+        suspect_->clear();
         if (worst >= 0)
-            text += QStringLiteral("\n") + tr("Suspect point: %1 g lies %2× the scatter of the other points off their line. Untick it to leave it out.")
+            suspect_->setText(tr("Suspect point: %1 g lies %2× the scatter of the other points off their line. Untick it to leave it out.")
                                                 .arg(massAt(worst))
-                                                .arg(worstSigmas_, 0, 'f', 0);
+                                                .arg(worstSigmas_, 0, 'f', 0));
         fitLabel_->setText(text);
     } else if (points.size() < 2) {
+        suspect_->clear();
         fitLabel_->setText(tr("No fit yet: measure at least two masses."));
     }
     save_->setEnabled(hasFit_);
@@ -365,16 +376,26 @@ void CalibrationWizard::redraw()
     plot_->graph(0)->setData(um, uv);
     plot_->graph(1)->setData(xm, xv);
     if (hasFit_) {
-        const double lo = std::min(0.0, from_->value()), hi = std::max(to_->value(), um.isEmpty() ? 0.0 : um.back());
+        const double lo = std::min(0.0, massAt(0)), hi = massAt(table_->rowCount() - 1);
         plot_->graph(2)->setData({lo, hi}, {fit_.intercept_V + fit_.slope_V_per_g * lo, fit_.intercept_V + fit_.slope_V_per_g * hi});
     } else {
         plot_->graph(2)->data()->clear();
     }
     plot_->graph(3)->setData(rm, rv);
     plot_->graph(4)->setData(wm, wv);
-    for (int g = 0; g < plot_->graphCount(); ++g)
-        plot_->graph(g)->rescaleAxes(g != 0 && g != 3);
-    plot_->xAxis->setRange(std::min(0.0, from_->value()) - 10.0, to_->value() + 10.0);
+    double vLo = 0.0, vHi = 1.0;
+    bool any = false;
+    for (const QVector<double>* vs : {&uv, &xv}) {
+        for (double v : *vs) {
+            vLo = any ? std::min(vLo, v) : v;
+            vHi = any ? std::max(vHi, v) : v;
+            any = true;
+        }
+    }
+    const double pad = std::max(0.05 * (vHi - vLo), 0.01);
+    plot_->yAxis->setRange(vLo - pad, vHi + pad);
+    const double last = table_->rowCount() ? massAt(table_->rowCount() - 1) : 100.0;
+    plot_->xAxis->setRange(std::min(0.0, table_->rowCount() ? massAt(0) : 0.0) - 0.03 * last, 1.03 * last);
     auto* residualRect = plot_->axisRect(1);
     residualRect->axis(QCPAxis::atBottom)->setRange(plot_->xAxis->range());
     const double span = rv.isEmpty() ? 1.0 : std::max(1e-3, std::max(std::abs(*std::max_element(rv.begin(), rv.end())),

@@ -74,6 +74,7 @@ private:
     QCustomPlot* plot_ = nullptr;
     QLabel* fitLabel_ = nullptr;
     QLabel* prompt_ = nullptr;
+    QLabel* suspect_ = nullptr;
     QPushButton* measure_ = nullptr;
     QPushButton* measureAll_ = nullptr;
     QPushButton* save_ = nullptr;

@@ -4,13 +4,18 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
+#include <QGridLayout>
 #include <QGroupBox>
+#include <QIcon>
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
+
+// The icons live in a static library: their resource must be registered by hand.
+static void initResources() { Q_INIT_RESOURCE(resources); }
 
 namespace nb {
 
@@ -34,12 +39,16 @@ QString yesNo(bool on) { return on ? QObject::tr("yes") : QObject::tr("no"); }
 ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
 {
     setObjectName(QStringLiteral("controlPanel"));
+    static const bool resourcesReady = (initResources(), true);
+    Q_UNUSED(resourcesReady);
     auto* layout = new QVBoxLayout(this);
 
     // Emergency stop first, big and always enabled.
     auto* estop = addButton(Control::EmergencyStop, tr("EMERGENCY STOP (Esc)"),
                             tr("Stops the stage at once and ends the run (always available; key: Esc)"));
     estop->setMinimumHeight(44);
+    estop->setIcon(QIcon(QStringLiteral(":/icons/estop.svg")));
+    estop->setIconSize(QSize(28, 28));
     estop->setStyleSheet(QStringLiteral("QPushButton { background: #c62828; color: white; font-weight: bold; }"));
     layout->addWidget(estop);
     connect(estop, &QPushButton::clicked, this, &ControlPanel::emergencyStopRequested);
@@ -56,6 +65,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     connect(zero, &QPushButton::clicked, this, &ControlPanel::zeroRequested);
     auto* calibrate = addButton(Control::Calibrate, tr("Calibrate sensor…"),
                                 tr("Known masses on the load cell, fit V = d·m + c"));
+    calibrate->setIcon(QIcon(QStringLiteral(":/icons/calibrate.svg")));
     connect(calibrate, &QPushButton::clicked, this, &ControlPanel::calibrateRequested);
     for (auto* b : {enable, bias, zero, calibrate})
         prepLayout->addWidget(b);
@@ -113,14 +123,18 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     auto* start = addButton(Control::StartInsertion, tr("Start insertion (moves + records)"),
                             tr("Starts recording a new run file, then moves the needle in"));
     start->setStyleSheet(QStringLiteral("QPushButton:enabled { font-weight: bold; }"));
+    start->setIcon(QIcon(QStringLiteral(":/icons/record.svg")));
     connect(start, &QPushButton::clicked, this, &ControlPanel::startRequested);
     auto* withdraw = addButton(Control::Withdraw, tr("Withdraw"), tr("Moves the needle back to 0 mm"));
+    withdraw->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
     connect(withdraw, &QPushButton::clicked, this, [this] { emit withdrawRequested(withdrawVelocity()); });
     auto* stop = addButton(Control::StopMotion, tr("Stop motion (keeps recording)"),
                            tr("Decelerates the stage; the run keeps recording until End run"));
+    stop->setIcon(QIcon(QStringLiteral(":/icons/stop.svg")));
     connect(stop, &QPushButton::clicked, this, &ControlPanel::stopMotionRequested);
     auto* end = addButton(Control::EndRun, tr("End run (closes the file)"),
                           tr("Stops recording and closes the run file"));
+    end->setIcon(QIcon(QStringLiteral(":/icons/end_run.svg")));
     connect(end, &QPushButton::clicked, this, &ControlPanel::endRunRequested);
     runLayout->addWidget(start, 0, 0, 1, 2);
     runLayout->addWidget(withdraw, 1, 0, 1, 2);
@@ -141,22 +155,43 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(runBox);
 
     auto* statusBox = new QGroupBox(tr("Status"), this);
-    auto* form = new QFormLayout(statusBox);
+    auto* grid = new QGridLayout(statusBox);
+    grid->setHorizontalSpacing(8);
+    grid->setVerticalSpacing(3);
     const std::pair<const char*, QString> rows[] = {
         {"devices", tr("Devices")},       {"stage", tr("Stage")},         {"bias", tr("Bias done")},
-        {"zero", tr("Zero done")},        {"motion", tr("Moving")},       {"recording", tr("Recording")},
-        {"rate", tr("Sample rate")},      {"dropped", tr("Dropped")},     {"force", tr("Force")},
-        {"position", tr("Position")},     {"runtime", tr("Time in run")}, {"margin", tr("Limit margin")},
+        {"zero", tr("Zero done")},        {"motion", tr("Moving")},       {"rate", tr("Sample rate")},
+        {"force", tr("Force")},           {"position", tr("Position")},   {"margin", tr("Limit margin")},
+        {"dropped", tr("Dropped")},       {"recording", tr("Recording")}, {"runtime", tr("Time in run")},
         {"calibration", tr("Calibration")}, {"fault", tr("Fault")},
     };
+    int index = 0;
     for (const auto& [key, title] : rows) {
         auto* value = new QLabel(QStringLiteral("–"), statusBox);
         value->setObjectName(QStringLiteral("status_") + QLatin1String(key));
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        form->addRow(title, value);
+        auto* name = new QLabel(title + QLatin1Char(':'), statusBox);
+        name->setStyleSheet(QStringLiteral("color: palette(mid);"));
+        // Long values (file, calibration, fault) get a whole row; the rest share rows in pairs.
+        const bool wide = QByteArray(key) == "recording" || QByteArray(key) == "calibration" || QByteArray(key) == "fault";
+        const int row = index / 2;
+        if (wide) {
+            if (index % 2)
+                ++index;
+            grid->addWidget(name, index / 2, 0);
+            grid->addWidget(value, index / 2, 1, 1, 3);
+            index += 2;
+        } else {
+            grid->addWidget(name, row, (index % 2) * 2);
+            grid->addWidget(value, row, (index % 2) * 2 + 1);
+            ++index;
+        }
         status_labels_[QString::fromLatin1(key)] = value;
     }
+    grid->setColumnStretch(1, 1);
+    grid->setColumnStretch(3, 1);
     status_labels_[QStringLiteral("fault")]->setWordWrap(true);
+    status_labels_[QStringLiteral("recording")]->setWordWrap(true);
     layout->addWidget(statusBox);
     layout->addStretch();
 

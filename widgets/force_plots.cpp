@@ -67,6 +67,14 @@ ForcePlots::ForcePlots(QWidget* parent) : QWidget(parent)
 
     limitTime_ = makeLimitLine(forceTime_);
     limitCurve_ = makeLimitLine(forcePosition_);
+    limitLabel_ = new QCPItemText(forceTime_);
+    limitLabel_->position->setType(QCPItemPosition::ptAxisRectRatio);
+    limitLabel_->position->setCoords(0.99, 0.02);
+    limitLabel_->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
+    limitLabel_->setColor(QColor(200, 30, 30));
+    limitLabel_->setBrush(QBrush(QColor(255, 255, 255, 210)));
+    limitLabel_->setPadding(QMargins(3, 1, 3, 1));
+    limitLabel_->setVisible(false);
 
     // The two time plots share their time axis.
     connect(forceTime_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), positionTime_->xAxis,
@@ -148,7 +156,7 @@ void ForcePlots::clear()
     for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_}) {
         for (int i = plot->itemCount() - 1; i >= 0; --i) {
             QCPAbstractItem* item = plot->item(i);
-            if (item != limitTime_ && item != limitCurve_)
+            if (item != limitTime_ && item != limitCurve_ && item != limitLabel_)
                 plot->removeItem(item);
         }
     }
@@ -164,6 +172,7 @@ void ForcePlots::setForceLimit(double force_N)
     const bool on = force_N > 0.0;
     limitTime_->setVisible(on);
     limitCurve_->setVisible(on);
+    limitLabel_->setVisible(on);
     for (QCPItemStraightLine* line : {limitTime_, limitCurve_}) {
         line->point1->setCoords(0.0, force_N);
         line->point2->setCoords(1.0, force_N);
@@ -179,10 +188,12 @@ void ForcePlots::addEvent(double time_s, const QString& label)
         line->setPen(QPen(QColor(230, 140, 0), 1.0, Qt::DotLine));
         line->point1->setCoords(time_s, 0.0);
         line->point2->setCoords(time_s, 1.0);
+        if (label.isEmpty())
+            continue;
         auto* text = new QCPItemText(plot);
         text->position->setTypeX(QCPItemPosition::ptPlotCoords);
         text->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-        text->position->setCoords(time_s, 0.02);
+        text->position->setCoords(time_s, 0.12 + 0.08 * double(events_.size() % 3));
         text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
         text->setText(label);
         text->setColor(QColor(180, 100, 0));
@@ -196,9 +207,14 @@ void ForcePlots::addEvent(double time_s, const QString& label)
         mark->setStyle(QCPItemTracer::tsCircle);
         mark->setSize(8);
         mark->setPen(QPen(QColor(230, 140, 0), 2));
+        if (label.isEmpty()) {
+            mark->setSize(5);
+            dirty_ = true;
+            return;
+        }
         auto* text = new QCPItemText(forcePosition_);
         text->position->setCoords(x_[i], f_[i]);
-        text->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
+        text->setPositionAlignment(events_.size() % 2 ? Qt::AlignRight | Qt::AlignTop : Qt::AlignLeft | Qt::AlignBottom);
         text->setText(label);
         text->setColor(QColor(180, 100, 0));
     }
@@ -272,6 +288,14 @@ void ForcePlots::refresh()
     }
     if (follow_ && !paused_)
         applyFollowRanges();
+    if (limit_N_ > 0.0) {
+        const double latest = shown_ ? f_[shown_ - 1] : 0.0;
+        const bool above = forceTime_->yAxis->range().upper < limit_N_;
+        limitLabel_->setText(tr("limit %1 N%2 · margin %3 N")
+                                 .arg(limit_N_, 0, 'f', 2)
+                                 .arg(above ? tr(" (above the plot)") : QString())
+                                 .arg(limit_N_ - latest, 0, 'f', 2));
+    }
     for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_})
         plot->replot();
     ++frames_;
@@ -283,8 +307,11 @@ void ForcePlots::applyFollowRanges()
     const double tEnd = shown_ ? t_[shown_ - 1] : 0.0;
     const double tStart = std::max(shown_ ? t_.front() : 0.0, tEnd - window_s_);
     forceTime_->xAxis->setRange(tStart, std::max(tEnd, tStart + window_s_));
-    // The limit stays in view so the margin to it can be seen.
-    const double top = std::max(fMax_, limit_N_ > 0.0 ? limit_N_ : fMax_);
+    // The limit line comes into view once the force gets within half of it; until then a
+    // label states it, so small forces are not squashed flat by a far-away limit.
+    double top = std::max(fMax_ * 1.15, 0.2);
+    if (limit_N_ > 0.0 && fMax_ > 0.5 * limit_N_)
+        top = std::max(top, limit_N_);
     forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), top));
     positionTime_->yAxis->setRange(padded(std::min(xMin_, 0.0), xMax_));
     forcePosition_->xAxis->setRange(padded(std::min(xMin_, 0.0), xMax_));

@@ -13,6 +13,7 @@ class QCustomPlot;
 class QCPGraph;
 class QCPCurve;
 class QCPItemStraightLine;
+class QCPItemText;
 class QToolButton;
 class QLabel;
 
@@ -30,7 +31,8 @@ public:
     void clear();
     // Draws the maximum-force limit as a line on both force plots; <= 0 hides it.
     void setForceLimit(double force_N);
-    // Marks a detected event (puncture, contact, ...) at a time.
+    // Marks a detected event (puncture, contact, ...) at a time; an empty label marks it
+    // without text (minor events that would clutter the plot).
     void addEvent(double time_s, const QString& label);
 
     // Follow: the time axis shows the last followWindow() seconds and the axes track the
@@ -83,6 +85,7 @@ private:
     QCPCurve* curve_ = nullptr;
     QCPItemStraightLine* limitTime_ = nullptr;
     QCPItemStraightLine* limitCurve_ = nullptr;
+    QCPItemText* limitLabel_ = nullptr;
     QToolButton* followButton_ = nullptr;
     QToolButton* pauseButton_ = nullptr;
 

@@ -16,6 +16,13 @@ void RunListModel::setRuns(std::vector<RunEntry> runs)
     endResetModel();
 }
 
+void RunListModel::setBusyPath(const QString& path)
+{
+    busy_ = path;
+    if (!runs_.empty())
+        emit dataChanged(index(0, State), index(int(runs_.size()) - 1, State));
+}
+
 int RunListModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : int(runs_.size()); }
 int RunListModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
 
@@ -29,13 +36,16 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const
         case Number: return r.number;
         case File: return r.fileName;
         case Motion: return r.motion;
-        case State: return runStateName(r.state);
+        case State:
+            return (!busy_.isEmpty() && r.path == busy_) ? tr("recording") : runStateName(r.state);
         case Calibration: return r.calibration;
         case Modified: return QLocale().toString(r.modified, QLocale::ShortFormat);
         }
     } else if (role == Qt::ToolTipRole) {
         return r.detail.isEmpty() ? r.path : r.path + QLatin1Char('\n') + r.detail;
     } else if (role == Qt::ForegroundRole && index.column() == State) {
+        if (!busy_.isEmpty() && r.path == busy_)
+            return QBrush(QColor(20, 90, 180));
         switch (r.state) {
         case RunState::Complete: return QBrush(QColor(30, 120, 40));
         case RunState::StoppedByLimit:
@@ -94,6 +104,8 @@ void SessionView::setSession(const Session* session)
     refresh();
 }
 
+void SessionView::setBusyPath(const QString& path) { model_->setBusyPath(path); }
+
 void SessionView::refresh()
 {
     if (!session_) {
@@ -103,12 +115,18 @@ void SessionView::refresh()
     }
     const SessionInfo& i = session_->info();
     const auto cal = session_->activeCalibration();
-    header_->setText(tr("<b>%1</b> – %2 %3, tip %4, %5 mm, operator %6<br>protocol: %7<br>calibration: %8")
-                         .arg(session_->dir().section(QLatin1Char('/'), -1).toHtmlEscaped(), i.organ.toHtmlEscaped(),
-                              i.specimen.toHtmlEscaped(), i.tip.toHtmlEscaped())
-                         .arg(i.thickness_mm)
-                         .arg(i.operatorName.toHtmlEscaped(), i.protocol.toHtmlEscaped(),
-                              cal ? cal->name.toHtmlEscaped() : tr("none")));
+    QStringList specimen;
+    for (const QString& part : {i.organ, i.specimen.isEmpty() ? QString() : tr("specimen %1").arg(i.specimen),
+                                i.tip.isEmpty() ? QString() : tr("%1 tip").arg(i.tip),
+                                i.thickness_mm > 0 ? tr("%1 mm thick").arg(i.thickness_mm) : QString(),
+                                i.operatorName.isEmpty() ? QString() : tr("operator %1").arg(i.operatorName),
+                                i.protocol})
+        if (!part.isEmpty())
+            specimen << part.toHtmlEscaped();
+    header_->setText(tr("<b>%1</b> – %2<br>active calibration: %3")
+                         .arg(session_->dir().section(QLatin1Char('/'), -1).toHtmlEscaped(),
+                              specimen.isEmpty() ? tr("no specimen details") : specimen.join(QStringLiteral(", ")),
+                              cal ? cal->name.toHtmlEscaped() : tr("none saved in this session (the sensor's nominal one is used)")));
     model_->setRuns(session_->runs());
 }
 

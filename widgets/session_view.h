@@ -21,6 +21,8 @@ public:
     using QAbstractTableModel::QAbstractTableModel;
 
     void setRuns(std::vector<RunEntry> runs);
+    // The run being recorded now: shown as "recording", not as interrupted.
+    void setBusyPath(const QString& path);
     const std::vector<RunEntry>& runs() const { return runs_; }
 
     int rowCount(const QModelIndex& parent = {}) const override;
@@ -30,6 +32,7 @@ public:
 
 private:
     std::vector<RunEntry> runs_;
+    QString busy_;
 };
 
 class SessionView : public QWidget {
@@ -39,6 +42,7 @@ public:
     // Shows this session (re-reads its runs); nullptr shows "no session".
     void setSession(const Session* session);
     void refresh();
+    void setBusyPath(const QString& path);
     RunListModel* model() const { return model_; }
     QTableView* view() const { return view_; }
 

@@ -89,7 +89,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.session());
-        setMotion(w, 10.0, 20.0);  // 2 s in real time
+        setMotion(w, 10.0, 30.0);  // 3 s in real time, past the puncture of the simulated liver
         prepare(w);
         QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().recording, 20000);
@@ -110,9 +110,9 @@ private slots:
         QCOMPARE(r.run.meta(QStringLiteral("end_reason")).value_or(QString()), QStringLiteral("completed"));
         QVERIFY(!r.run.meta(QStringLiteral("calibration")).value_or(QString()).isEmpty());
         QCOMPARE(r.run.meta(QStringLiteral("motion")).value_or(QString()), QStringLiteral("linear"));
-        QCOMPARE(r.run.metadata.number(QStringLiteral("depth_mm")).value_or(0.0), 20.0);
+        QCOMPARE(r.run.metadata.number(QStringLiteral("depth_mm")).value_or(0.0), 30.0);
         const double deepest = *std::max_element(r.run.position_mm.begin(), r.run.position_mm.end());
-        QVERIFY2(deepest > 19.5 && deepest < 20.5, qPrintable(QString::number(deepest)));
+        QVERIFY2(deepest > 29.5 && deepest < 30.5, qPrintable(QString::number(deepest)));
 
         nb::RunListModel* model = w.sessionView()->model();
         QCOMPARE(model->rowCount(), 1);
