@@ -17,7 +17,8 @@ namespace nb {
 
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("nb::Session", text); }
+// Context "nb": the one lupdate gives tr() calls in free functions of this namespace.
+QString tr(const char* text) { return QCoreApplication::translate("nb", text); }
 
 const QString kSessionFile = QStringLiteral("session.json");
 const QString kCalibrationDir = QStringLiteral("calibrations");
@@ -191,11 +192,11 @@ Session Session::create(const QString& dir, const SessionInfo& info)
 {
     QDir d(dir);
     if (!d.exists() && !QDir().mkpath(dir))
-        throw SessionError(dir, tr("cannot create the folder"));
+        throw SessionError(dir, QCoreApplication::translate("nb", "cannot create the folder"));
     if (QFileInfo::exists(d.filePath(kSessionFile)))
-        throw SessionError(d.filePath(kSessionFile), tr("a session already exists here; open it instead"));
+        throw SessionError(d.filePath(kSessionFile), QCoreApplication::translate("nb", "a session already exists here; open it instead"));
     if (!d.mkpath(kCalibrationDir))
-        throw SessionError(d.filePath(kCalibrationDir), tr("cannot create the folder"));
+        throw SessionError(d.filePath(kCalibrationDir), QCoreApplication::translate("nb", "cannot create the folder"));
     Session s;
     s.dir_ = d.absolutePath();
     s.info_ = info;
@@ -211,7 +212,7 @@ Session Session::open(const QString& dir)
 {
     const QString path = QDir(dir).filePath(kSessionFile);
     if (!QFileInfo::exists(path))
-        throw SessionError(dir, tr("not a session folder (no %1)").arg(kSessionFile));
+        throw SessionError(dir, QCoreApplication::translate("nb", "not a session folder (no %1)").arg(kSessionFile));
     const QJsonObject o = readJson(path);
     Session s;
     s.dir_ = QDir(dir).absolutePath();

@@ -6,7 +6,8 @@ namespace nb {
 
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("nb::Interlocks", text); }
+// Context "nb": the one lupdate gives tr() calls in free functions of this namespace.
+QString tr(const char* text) { return QCoreApplication::translate("nb", text); }
 
 Permission allow() { return {true, {}}; }
 Permission deny(const QString& reason) { return {false, reason}; }
