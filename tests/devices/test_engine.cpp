@@ -237,7 +237,13 @@ private slots:
         QVERIFY(faults.at(0).at(0).toString().contains(device));
         QTRY_VERIFY_WITH_TIMEOUT(e->status().fault.contains(reason), 5000);
 
-        // Motion stopped within 200 ms of the fault (sim clock).
+        // Motion stopped within 200 ms of the fault (sim clock). A silent stage is stopped by
+        // its controller's watchdog, which the world may not have reached yet: wait for it.
+        auto stopped = [&] {
+            const GroundTruth t = e->rig()->truth();
+            return findEvent(t, QStringLiteral("emergency_stop")) || findEvent(t, QStringLiteral("controller_watchdog_stop"));
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(stopped(), 10000);
         const GroundTruth g = e->rig()->truth();
         const TruthEvent* f = findEvent(g, rejects ? QStringLiteral("command_rejected") : QStringLiteral("fault"));
         QVERIFY(f);
