@@ -33,14 +33,21 @@ QCPItemStraightLine* makeLimitLine(QCustomPlot* plot)
     return line;
 }
 
-// Data range with a little air, so a flat signal still gets a visible axis.
-QCPRange padded(double lo, double hi)
+// Data range with a little air; a nearly flat signal (a needle at rest, encoder noise) gets
+// at least `minSpan` so that noise is not blown up to fill the plot.
+QCPRange padded(double lo, double hi, double minSpan)
 {
-    double span = hi - lo;
-    if (span < 1e-9)
-        span = std::max(1e-3, std::abs(hi) * 0.1);
+    if (hi - lo < minSpan) {
+        const double mid = 0.5 * (lo + hi);
+        lo = mid - 0.5 * minSpan;
+        hi = mid + 0.5 * minSpan;
+    }
+    const double span = hi - lo;
     return {lo - 0.05 * span, hi + 0.05 * span};
 }
+
+constexpr double kMinForceSpan_N = 0.1;
+constexpr double kMinPositionSpan_mm = 1.0;
 
 }  // namespace
 
@@ -253,11 +260,11 @@ void ForcePlots::showAll()
     if (shown_ == 0)
         return;
     settingRanges_ = true;
-    forceTime_->xAxis->setRange(padded(t_.front(), t_[shown_ - 1]));
-    forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), std::max(fMax_, limit_N_)));
-    positionTime_->yAxis->setRange(padded(xMin_, xMax_));
-    forcePosition_->xAxis->setRange(padded(xMin_, xMax_));
-    forcePosition_->yAxis->setRange(padded(std::min(fMin_, 0.0), std::max(fMax_, limit_N_)));
+    forceTime_->xAxis->setRange(padded(t_.front(), t_[shown_ - 1], 0.1));
+    forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), std::max(fMax_, limit_N_), kMinForceSpan_N));
+    positionTime_->yAxis->setRange(padded(xMin_, xMax_, kMinPositionSpan_mm));
+    forcePosition_->xAxis->setRange(padded(xMin_, xMax_, kMinPositionSpan_mm));
+    forcePosition_->yAxis->setRange(padded(std::min(fMin_, 0.0), std::max(fMax_, limit_N_), kMinForceSpan_N));
     settingRanges_ = false;
     for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_})
         plot->replot();
@@ -312,10 +319,10 @@ void ForcePlots::applyFollowRanges()
     double top = std::max(fMax_ * 1.15, 0.2);
     if (limit_N_ > 0.0 && fMax_ > 0.5 * limit_N_)
         top = std::max(top, limit_N_);
-    forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), top));
-    positionTime_->yAxis->setRange(padded(std::min(xMin_, 0.0), xMax_));
-    forcePosition_->xAxis->setRange(padded(std::min(xMin_, 0.0), xMax_));
-    forcePosition_->yAxis->setRange(padded(std::min(fMin_, 0.0), top));
+    forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), top, kMinForceSpan_N));
+    positionTime_->yAxis->setRange(padded(std::min(xMin_, 0.0), xMax_, kMinPositionSpan_mm));
+    forcePosition_->xAxis->setRange(padded(std::min(xMin_, 0.0), xMax_, kMinPositionSpan_mm));
+    forcePosition_->yAxis->setRange(padded(std::min(fMin_, 0.0), top, kMinForceSpan_N));
     settingRanges_ = false;
 }
 

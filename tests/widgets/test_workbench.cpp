@@ -3,6 +3,7 @@
 // calibration wizard on the simulated load cell, and recovery of a run cut off by a crash.
 // Screenshots land in build-gui/screenshots/.
 #include "main_window.h"
+#include "translation.h"
 
 #include "core/run_file.h"
 #include "devices/acquisition_engine.h"
@@ -19,6 +20,7 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTranslator>
 #include <qcustomplot.h>
 #include <QtTest>
 
@@ -256,6 +258,30 @@ private slots:
         QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("recovered"));
         // The next run does not overwrite it.
         QCOMPARE(QFileInfo(w.session()->nextRunPath(QStringLiteral("linear"))).fileName(), QStringLiteral("run_002_linear.csv"));
+    }
+
+    // Last: the German translation, chosen as in the Language menu, reaches the widgets.
+    void germanTranslation()
+    {
+        QVERIFY(nb::availableLanguages().contains(QStringLiteral("de")));
+        nb::setPreferredLanguage(QStringLiteral("de"));
+        QCOMPARE(nb::preferredLanguage(), QStringLiteral("de"));
+        nb::installTranslation(*QCoreApplication::instance());
+        QTemporaryDir tmp;
+        {
+            nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), false));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QCOMPARE(w.controlPanel()->button(Control::EmergencyStop)->text(), QStringLiteral("NOT-HALT (Esc)"));
+            QCOMPARE(w.controlPanel()->button(Control::EndRun)->text(), QStringLiteral("Lauf beenden (schließt die Datei)"));
+            QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+            // Interlock reasons (free functions) are translated too.
+            QVERIFY(w.controlPanel()->button(Control::StartInsertion)->toolTip().contains(QStringLiteral("Zuerst die Achse einschalten")));
+            QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_de.png")));
+        }
+        for (QTranslator* t : QCoreApplication::instance()->findChildren<QTranslator*>())
+            QCoreApplication::removeTranslator(t);
+        nb::setPreferredLanguage(QStringLiteral("en"));
     }
 };
 
