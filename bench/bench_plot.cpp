@@ -100,6 +100,18 @@ double curvePlot(QCustomPlot& plot, const Series& s, bool reduce, int repeats)
     });
 }
 
+// The reduction alone (no plot), to tell its cost from the drawing's.
+double reduceOnly(const Series& s, int channels, int repeats)
+{
+    return medianMs(repeats, [&] {
+        const std::span<const double> both[] = {s.x, s.f};
+        const auto idx = nb::minMaxIndices(s.t, std::span<const std::span<const double>>(both).last(std::size_t(channels)),
+                                           s.t.front(), s.t.back(), 1150);
+        if (idx.empty())
+            std::abort();
+    });
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -120,7 +132,7 @@ int main(int argc, char** argv)
     app.processEvents();
 
     std::printf("replot 1200x600 offscreen, median of repeats, ms (reduce + hand over + draw)\n");
-    std::printf("%-10s %-16s %12s %12s %8s\n", "points", "plot", "reduced", "unreduced", "ratio");
+    std::printf("%-10s %-16s %12s %12s %8s %14s\n", "points", "plot", "reduced", "unreduced", "ratio", "reduce only");
     for (double n : {1e5, 1e6, 1e7}) {
         if (n > maxPoints)
             break;
@@ -130,10 +142,10 @@ int main(int argc, char** argv)
         const int slowRepeats = n >= 1e7 ? 1 : (n >= 1e6 ? 3 : 5);
         const double tr = timePlot(timePlotWidget, s, true, repeats);
         const double tu = timePlot(timePlotWidget, s, false, slowRepeats);
-        std::printf("%-10.0e %-16s %12.2f %12.2f %7.0fx\n", n, "force-time", tr, tu, tu / tr);
+        std::printf("%-10.0e %-16s %12.2f %12.2f %7.0fx %14.2f\n", n, "force-time", tr, tu, tu / tr, reduceOnly(s, 1, repeats));
         const double cr = curvePlot(curveWidget, s, true, repeats);
         const double cu = curvePlot(curveWidget, s, false, slowRepeats);
-        std::printf("%-10.0e %-16s %12.2f %12.2f %7.0fx\n", n, "force-position", cr, cu, cu / cr);
+        std::printf("%-10.0e %-16s %12.2f %12.2f %7.0fx %14.2f\n", n, "force-position", cr, cu, cu / cr, reduceOnly(s, 2, repeats));
         std::fflush(stdout);
     }
     return 0;

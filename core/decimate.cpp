@@ -34,31 +34,38 @@ std::vector<std::size_t> minMaxIndices(std::span<const double> time,
     out.reserve(budget + 2);
     const double width = (t1 > t0) ? (t1 - t0) / columns : 1.0;
     const std::size_t nch = channels.size();
-    std::vector<std::size_t> lo(nch), hi(nch), picks;
+    std::vector<std::size_t> picks;
     picks.reserve(2 + 2 * nch);
+    const double* tp = time.data();
     std::size_t i = first;
     while (i < last) {
         // Column of sample i ends at the next multiple of `width` past it; the samples
-        // before t0 and after t1 form their own columns.
-        const double end = t0 + (std::floor((time[i] - t0) / width) + 1.0) * width;
-        for (std::size_t c = 0; c < nch; ++c)
-            lo[c] = hi[c] = i;
-        std::size_t j = i + 1;
-        for (; j < last && time[j] < end; ++j) {
-            for (std::size_t c = 0; c < nch; ++c) {
-                const double v = channels[c][j];
-                if (v < channels[c][lo[c]])
-                    lo[c] = j;
-                else if (v > channels[c][hi[c]])
-                    hi[c] = j;
-            }
-        }
+        // before t0 and after t1 form their own columns. The end is found by bisection and
+        // each channel scanned in its own tight loop: this is the hot path of every redraw.
+        const double end = t0 + (std::floor((tp[i] - t0) / width) + 1.0) * width;
+        std::size_t j = std::size_t(std::lower_bound(tp + i + 1, tp + last, end) - tp);
+        if (j == i)
+            j = i + 1;
         picks.clear();
         picks.push_back(i);
         picks.push_back(j - 1);
         for (std::size_t c = 0; c < nch; ++c) {
-            picks.push_back(lo[c]);
-            picks.push_back(hi[c]);
+            const double* v = channels[c].data();
+            double vlo = v[i], vhi = v[i];
+            std::size_t lo = i, hi = i;
+            for (std::size_t k = i + 1; k < j; ++k) {
+                const double x = v[k];
+                if (x < vlo) {
+                    vlo = x;
+                    lo = k;
+                }
+                if (x > vhi) {
+                    vhi = x;
+                    hi = k;
+                }
+            }
+            picks.push_back(lo);
+            picks.push_back(hi);
         }
         std::sort(picks.begin(), picks.end());
         picks.erase(std::unique(picks.begin(), picks.end()), picks.end());
