@@ -171,6 +171,27 @@ private slots:
         QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("stopped"));
     }
 
+    void forceLimitStopsTheRunAndSaysSo()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setMotion(w, 10.0, 40.0);
+        w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("forceLimit"))->setValue(0.5);
+        prepare(w);
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("force_limit"));
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controlPanel()->interlockState().moving, 20000);
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        const double deepest = *std::max_element(r.run.position_mm.begin(), r.run.position_mm.end());
+        QVERIFY(deepest < 30.0);
+        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(),
+                 QStringLiteral("stopped by force limit"));
+        QVERIFY(w.plots()->eventCount() >= 1);  // the trip is marked on the plots
+    }
+
     void calibrationWizardOnTheSimulatedSensor()
     {
         QTemporaryDir tmp;
