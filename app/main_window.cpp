@@ -151,6 +151,11 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
         restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
         if (settings.contains(QStringLiteral("run/forceLimit_N")))
             panel_->setForceLimit(settings.value(QStringLiteral("run/forceLimit_N")).toDouble());
+        for (QDoubleSpinBox* box : panel_->findChildren<QDoubleSpinBox*>()) {
+            const QString key = QStringLiteral("motion/") + box->objectName();
+            if (box->objectName() != QLatin1String("forceLimit") && settings.contains(key))
+                box->setValue(settings.value(key).toDouble());
+        }
     } else {
         resize(1400, 860);
     }
@@ -477,6 +482,9 @@ void MainWindow::closeEvent(QCloseEvent* event)
         settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
         settings.setValue(QStringLiteral("window/state"), saveState());
         settings.setValue(QStringLiteral("run/forceLimit_N"), panel_->forceLimit());
+        for (QDoubleSpinBox* box : panel_->findChildren<QDoubleSpinBox*>())
+            if (box->objectName() != QLatin1String("forceLimit"))
+                settings.setValue(QStringLiteral("motion/") + box->objectName(), box->value());
     }
     QMainWindow::closeEvent(event);
 }
