@@ -12,9 +12,11 @@ int cmdFit(const QStringList& args, Io io);
 int cmdEvents(const QStringList& args, Io io);
 int cmdDevices(const QStringList& args, Io io);
 int cmdAcquire(const QStringList& args, Io io);
-int cmdSimulate(const QStringList& args, Io io);
 int cmdExport(const QStringList& args, Io io);
 int cmdDemo(const QStringList& args, Io io);
+int cmdSimulate(const QStringList& args, Io io);
+int cmdVideoInfo(const QStringList& args, Io io);
+int cmdFrame(const QStringList& args, Io io);
 
 const std::vector<Command>& commands()
 {
@@ -24,9 +26,11 @@ const std::vector<Command>& commands()
         {QStringLiteral("events"), QCoreApplication::translate("cli", "find contact, punctures and relaxation in a run"), cmdEvents},
         {QStringLiteral("devices"), QCoreApplication::translate("cli", "list connected DAQs and serial ports"), cmdDevices},
         {QStringLiteral("acquire"), QCoreApplication::translate("cli", "record one run on real (or simulated) devices"), cmdAcquire},
-        {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},
         {QStringLiteral("export"), QCoreApplication::translate("cli", "export a session as CSV, HDF5 or ELAN files"), cmdExport},
         {QStringLiteral("demo"), QCoreApplication::translate("cli", "simulate, label, fit and export a short session"), cmdDemo, true},
+        {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},
+        {QStringLiteral("video-info"), QCoreApplication::translate("cli", "index a video: frames, rate, duplicates"), cmdVideoInfo},
+        {QStringLiteral("frame"), QCoreApplication::translate("cli", "write one exact video frame as an image"), cmdFrame},
     };
     return all;
 }

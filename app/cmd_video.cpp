@@ -1,0 +1,125 @@
+// `needlebench video-info FILE [--json]` and `needlebench frame FILE --index N --out IMAGE [--json]`.
+#include "cli_support.h"
+
+#include "devices/video/frame_index.h"
+#include "devices/video/frame_reader.h"
+#include "devices/video/video_error.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <opencv2/imgcodecs.hpp>
+
+namespace nb::cli {
+
+using nb::devices::FrameIndex;
+
+static QString tr(const char* s) { return QCoreApplication::translate("cli", s); }
+
+static QJsonObject infoJson(const FrameIndex& index)
+{
+    QJsonObject o;
+    o[QStringLiteral("frames")] = index.size();
+    o[QStringLiteral("fps_nominal")] = index.fpsNominal;
+    o[QStringLiteral("duration_s")] = index.duration_s();
+    o[QStringLiteral("codec")] = index.codec;
+    o[QStringLiteral("width")] = index.width;
+    o[QStringLiteral("height")] = index.height;
+    o[QStringLiteral("variable_frame_rate")] = index.variableFrameRate();
+    o[QStringLiteral("duplicate_frames")] = index.duplicateCount();
+    o[QStringLiteral("keyframes_known")] = index.keyframesKnown;
+    int keys = 0;
+    for (const auto& f : index.frames)
+        keys += f.keyframe ? 1 : 0;
+    o[QStringLiteral("keyframes")] = keys;
+    QJsonArray warnings;
+    for (const QString& w : index.warnings)
+        warnings.append(w);
+    o[QStringLiteral("warnings")] = warnings;
+    return o;
+}
+
+int cmdVideoInfo(const QStringList& args, Io io)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(tr("Index a video file frame by frame and describe it."));
+    parser.addPositionalArgument(QStringLiteral("FILE"), tr("the video file"));
+    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    parser.addOption(json);
+    int code = Ok;
+    if (!parseArgs(parser, QStringLiteral("video-info"), args, io, 1, 1, &code))
+        return code;
+    const QString path = parser.positionalArguments().first();
+    try {
+        const FrameIndex index = nb::devices::buildFrameIndex(path);
+        for (const QString& w : index.warnings)
+            io.err << tr("warning: %1: %2").arg(path, w) << '\n';
+        if (parser.isSet(json)) {
+            printJson(io, infoJson(index));
+        } else {
+            io.out << tr("file:        %1\n").arg(path) << tr("codec:       %1\n").arg(index.codec)
+                   << tr("size:        %1x%2\n").arg(index.width).arg(index.height)
+                   << tr("frames:      %1\n").arg(index.size())
+                   << tr("rate:        %1 frames/s nominal%2\n")
+                          .arg(index.fpsNominal, 0, 'f', 3)
+                          .arg(index.variableFrameRate() ? tr(", variable") : QString())
+                   << tr("duration:    %1 s\n").arg(index.duration_s(), 0, 'f', 3)
+                   << tr("duplicates:  %1\n").arg(index.duplicateCount());
+        }
+        return Ok;
+    } catch (const nb::devices::VideoError& e) {
+        io.err << "needlebench video-info: " << e.message() << '\n';
+        return Failure;
+    }
+}
+
+int cmdFrame(const QStringList& args, Io io)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(tr("Write frame N (N-th in presentation order, from 0) of a video as an image."));
+    parser.addPositionalArgument(QStringLiteral("FILE"), tr("the video file"));
+    const QCommandLineOption indexOpt(QStringLiteral("index"), tr("frame number, from 0"), QStringLiteral("N"));
+    const QCommandLineOption outOpt(QStringLiteral("out"), tr("image to write (.png)"), QStringLiteral("IMAGE"));
+    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    parser.addOptions({indexOpt, outOpt, json});
+    int code = Ok;
+    if (!parseArgs(parser, QStringLiteral("frame"), args, io, 1, 1, &code))
+        return code;
+    bool ok = false;
+    const int n = parser.value(indexOpt).toInt(&ok);
+    if (!parser.isSet(indexOpt) || !ok || n < 0 || !parser.isSet(outOpt)) {
+        io.err << tr("needlebench frame: --index N (a whole number >= 0) and --out IMAGE are required\n\n")
+               << parser.helpText();
+        return Usage;
+    }
+    const QString path = parser.positionalArguments().first();
+    const QString out = parser.value(outOpt);
+    try {
+        nb::devices::FrameReader reader(nb::devices::buildFrameIndex(path), 4);
+        const auto frame = reader.read(n);
+        bool written = false;
+        try {
+            written = cv::imwrite(out.toStdString(), frame.image);
+        } catch (const cv::Exception& e) {
+            io.err << tr("needlebench frame: %1: %2\n").arg(out, QString::fromStdString(e.msg));
+            return Failure;
+        }
+        if (!written) {
+            io.err << tr("needlebench frame: %1: cannot write the image\n").arg(out);
+            return Failure;
+        }
+        if (parser.isSet(json)) {
+            QJsonObject o;
+            o[QStringLiteral("index")] = frame.index;
+            o[QStringLiteral("time_s")] = frame.time_s;
+            printJson(io, o);
+        } else {
+            io.out << tr("frame %1 at %2 s written to %3\n").arg(frame.index).arg(frame.time_s, 0, 'f', 6).arg(out);
+        }
+        return Ok;
+    } catch (const nb::devices::VideoError& e) {
+        io.err << "needlebench frame: " << e.message() << '\n';
+        return Failure;
+    }
+}
+
+}  // namespace nb::cli

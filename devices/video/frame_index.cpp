@@ -1,0 +1,190 @@
+#include "frame_index.h"
+
+#include "keyframe_probe.h"
+#include "video_error.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace nb::devices {
+
+static QString tr(const char* s) { return QCoreApplication::translate("video", s); }
+
+double FrameIndex::frameDuration() const
+{
+    if (medianInterval_s > 0)
+        return medianInterval_s;
+    if (frames.size() < 2)
+        return fpsNominal > 0 ? 1.0 / fpsNominal : 1.0 / 30.0;
+    std::vector<double> d;
+    d.reserve(frames.size() - 1);
+    for (std::size_t i = 1; i < frames.size(); ++i)
+        d.push_back(frames[i].time_s - frames[i - 1].time_s);
+    std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+    return d[d.size() / 2];
+}
+
+double FrameIndex::duration_s() const
+{
+    if (frames.empty())
+        return 0.0;
+    return frames.back().time_s - frames.front().time_s + frameDuration();
+}
+
+void FrameIndex::updateStats()
+{
+    medianInterval_s = 0.0;
+    medianInterval_s = frameDuration();
+}
+
+bool FrameIndex::variableFrameRate() const
+{
+    if (frames.size() < 3)
+        return false;
+    const double median = frameDuration();
+    // Containers with millisecond time bases (MKV) jitter by 1 ms at 29.97 frames/s.
+    const double tolerance = std::max(0.0015, 0.05 * median);
+    for (std::size_t i = 1; i < frames.size(); ++i)
+        if (std::abs(frames[i].time_s - frames[i - 1].time_s - median) > tolerance)
+            return true;
+    return false;
+}
+
+int FrameIndex::duplicateCount() const
+{
+    return int(std::count_if(frames.begin(), frames.end(), [](const FrameInfo& f) { return f.duplicate; }));
+}
+
+int FrameIndex::frameAt(double t) const
+{
+    if (frames.empty())
+        return -1;
+    auto it = std::upper_bound(frames.begin(), frames.end(), t + 1e-9,
+                               [](double v, const FrameInfo& f) { return v < f.time_s; });
+    return it == frames.begin() ? 0 : int(it - frames.begin()) - 1;
+}
+
+std::optional<int> FrameIndex::frameWithTime(double t) const
+{
+    if (frames.empty() || !timestampsMonotonic)
+        return std::nullopt;
+    auto it = std::lower_bound(frames.begin(), frames.end(), t,
+                               [](const FrameInfo& f, double v) { return f.time_s < v; });
+    int best = -1;
+    double bestDiff = 1e300;
+    for (auto c : {it, it == frames.begin() ? it : it - 1}) {
+        if (c == frames.end())
+            continue;
+        const double diff = std::abs(c->time_s - t);
+        if (diff < bestDiff) {
+            bestDiff = diff;
+            best = int(c - frames.begin());
+        }
+    }
+    if (best < 0 || bestDiff > 0.25 * frameDuration() + 1e-6)
+        return std::nullopt;
+    return best;
+}
+
+int FrameIndex::keyframeAtOrBefore(int n) const
+{
+    for (int i = std::min(n, size() - 1); i > 0; --i)
+        if (frames[std::size_t(i)].keyframe)
+            return i;
+    return 0;
+}
+
+FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, const std::atomic_bool* cancel)
+{
+    const QFileInfo fi(path);
+    if (!fi.exists())
+        throw VideoError(path, tr("no such file"));
+    if (!fi.isFile() || !fi.isReadable())
+        throw VideoError(path, tr("not a readable file"));
+    if (fi.size() == 0)
+        throw VideoError(path, tr("the file is empty"));
+
+    cv::VideoCapture cap;
+    try {
+        cap.open(path.toStdString(), cv::CAP_FFMPEG);
+    } catch (const cv::Exception& e) {
+        throw VideoError(path, tr("cannot open as video: %1").arg(QString::fromStdString(e.what())));
+    }
+    if (!cap.isOpened())
+        throw VideoError(path, tr("cannot open as video (not a video file, or a format FFmpeg does not read)"));
+
+    FrameIndex index;
+    index.path = path;
+    index.width = int(cap.get(cv::CAP_PROP_FRAME_WIDTH));
+    index.height = int(cap.get(cv::CAP_PROP_FRAME_HEIGHT));
+    index.fpsNominal = cap.get(cv::CAP_PROP_FPS);
+    index.containerFrames = std::max(0, int(cap.get(cv::CAP_PROP_FRAME_COUNT)));
+    const int fourcc = int(cap.get(cv::CAP_PROP_FOURCC));
+    for (int i = 0; i < 4; ++i) {
+        const char c = char((fourcc >> (8 * i)) & 0xff);
+        if (c > ' ')
+            index.codec += QLatin1Char(c);
+    }
+
+    cv::Mat previous, current;
+    while (!(cancel && cancel->load())) {
+        if (!cap.grab())
+            break;
+        FrameInfo f;
+        f.time_s = cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
+        if (cap.retrieve(current) && !current.empty()) {
+            // Lossy codecs re-encode a repeated picture with a little coding noise (mean
+            // change ~0.1 grey level); a real picture change, even sensor noise alone, is far
+            // above this.
+            f.duplicate = !previous.empty() && previous.size == current.size &&
+                          cv::norm(previous, current, cv::NORM_L1) / double(current.total() * current.channels()) < 0.25;
+            std::swap(previous, current);
+        }
+        if (!index.frames.empty() && f.time_s == 0.0 && index.frames.back().time_s > 0.0) {
+            // OpenCV reports 0 for the frames drained from a B-frame decoder at the end of
+            // the file; they follow the previous frame at the usual interval.
+            const std::size_t k = index.frames.size();
+            const double step = k >= 2 ? index.frames[k - 1].time_s - index.frames[k - 2].time_s
+                                       : 1.0 / std::max(1.0, index.fpsNominal);
+            f.time_s = index.frames.back().time_s + step;
+            f.timeEstimated = true;
+        }
+        if (!index.frames.empty() && f.time_s <= index.frames.back().time_s)
+            index.timestampsMonotonic = false;
+        index.frames.push_back(f);
+        if (progress && index.frames.size() % 25 == 0)
+            progress(index.size(), index.containerFrames);
+    }
+    if (index.frames.empty())
+        throw VideoError(path, tr("no frame could be decoded (truncated or corrupt file?)"));
+    if (progress)
+        progress(index.size(), index.containerFrames);
+    if (!(cancel && cancel->load()) && index.containerFrames > 0 && index.size() < index.containerFrames * 0.98 - 1)
+        index.warnings << tr("the file ends early: %1 of %2 frames are readable (truncated?)")
+                              .arg(index.size())
+                              .arg(index.containerFrames);
+    if (!index.timestampsMonotonic)
+        index.warnings << tr("frame timestamps are not increasing: frames are reached by decoding from the start");
+
+    index.timeOrigin_s = index.frames.front().time_s;
+    for (FrameInfo& f : index.frames)
+        f.time_s -= index.timeOrigin_s;
+    index.updateStats();
+    index.frames.front().keyframe = true;
+    if (const auto probe = probeKeyframes(path)) {
+        if (!probe->codec.isEmpty())
+            index.codec = probe->codec;
+        for (double k : probe->keyframes_s)
+            if (const auto n = index.frameWithTime(k - index.timeOrigin_s))
+                index.frames[std::size_t(*n)].keyframe = true;
+        index.keyframesKnown = probe->keyframes_s.size() > 0;
+    }
+    return index;
+}
+
+}  // namespace nb::devices

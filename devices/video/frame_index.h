@@ -1,0 +1,64 @@
+#pragma once
+// The frame index of one video file: every frame in presentation order with its true
+// timestamp, keyframe flag and duplicate flag. Built once (slow: decodes the whole file),
+// then every frame-exact access relies on it. OpenCV's own seek assumes a constant frame
+// rate; the index is what lets the reader check where a seek really landed.
+
+#include <QString>
+#include <QStringList>
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace nb::devices {
+
+struct FrameInfo {
+    double time_s = 0.0;     // presentation time, as the decoder reports it
+    bool keyframe = false;   // a safe point to start decoding from
+    bool duplicate = false;  // the previous picture again (identical up to coding noise)
+    bool timeEstimated = false;  // decoder gave no timestamp (frames drained at the end)
+};
+
+struct FrameIndex {
+    QString path;
+    QString codec;
+    int width = 0;
+    int height = 0;
+    double fpsNominal = 0.0;      // what the container claims
+    int containerFrames = 0;      // what the container claims (0 when unknown)
+    bool keyframesKnown = false;  // false: only frame 0 is flagged (no ffprobe)
+    bool timestampsMonotonic = true;
+    QStringList warnings;         // e.g. a truncated file: what was readable
+    std::vector<FrameInfo> frames;
+    // Decoder time of frame 0: AVI with B-frames reports every frame late by the decoder's
+    // delay; times in `frames` start at 0 for the first frame.
+    double timeOrigin_s = 0.0;
+    double medianInterval_s = 0.0;  // set by updateStats(); frameDuration() uses it
+
+    // Recomputes the cached median interval after `frames` changed.
+    void updateStats();
+
+    int size() const { return int(frames.size()); }
+    double frameDuration() const;  // median interval (1/fps when fewer than 2 frames)
+    double duration_s() const;     // end of the last frame's display
+    bool variableFrameRate() const;
+    int duplicateCount() const;
+    // The frame on screen at time t (the last frame starting at or before t; 0 before the start).
+    int frameAt(double t) const;
+    // The frame whose timestamp is t, within a quarter of the shortest interval.
+    std::optional<int> frameWithTime(double t) const;
+    // The last keyframe at or before frame n.
+    int keyframeAtOrBefore(int n) const;
+};
+
+// Progress: frames indexed so far and the expected total (0 when unknown).
+using IndexProgress = std::function<void(int done, int expected)>;
+
+// Decodes the whole file. Throws VideoError when the file cannot be opened or holds no
+// readable frame; a file that ends early keeps the frames read so far and says so in
+// `warnings`. `cancel` (may be null) stops early with what was indexed.
+FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress = {},
+                           const std::atomic_bool* cancel = nullptr);
+
+}  // namespace nb::devices

@@ -1,0 +1,139 @@
+#include "frame_reader.h"
+
+#include "video_error.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace nb::devices {
+
+static QString tr(const char* s) { return QCoreApplication::translate("video", s); }
+
+FrameReader::FrameReader(FrameIndex index, int cacheFrames) : index_(std::move(index)), cache_(cacheFrames)
+{
+    if (index_.frames.empty())
+        throw VideoError(index_.path, tr("the video has no indexed frames"));
+    if (index_.medianInterval_s <= 0)
+        index_.updateStats();
+    firstFrameNumber_ = int(std::llround(index_.timeOrigin_s * index_.fpsNominal));
+    reopen();
+    stats_.sequentialResets = 0;
+}
+
+void FrameReader::reopen()
+{
+    cap_.release();
+    if (!cap_.open(index_.path.toStdString(), cv::CAP_FFMPEG))
+        throw VideoError(index_.path, tr("cannot reopen the video (moved or deleted?)"));
+    current_ = -1;
+    fresh_ = true;
+    ++stats_.sequentialResets;
+}
+
+int FrameReader::grabNext()
+{
+    if (!cap_.grab())
+        return -1;
+    // Counting is exact while decoding on from a known frame; after a seek only the
+    // timestamp tells where we are.
+    const int counted = (current_ >= 0 || fresh_) ? current_ + 1 : -2;
+    fresh_ = false;
+    if (index_.timestampsMonotonic) {
+        const double t = cap_.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
+        // A zero time past the start is OpenCV's "no timestamp" (drained frames).
+        if (t > 0.0 || counted == 0) {
+            if (const auto j = index_.frameWithTime(t - index_.timeOrigin_s)) {
+                current_ = *j;
+                return current_;
+            }
+        }
+    }
+    current_ = counted < 0 ? -1 : counted;
+    return counted;
+}
+
+bool FrameReader::forwardIsCheaper(int from, int to) const
+{
+    if (to - from <= 12)
+        return true;
+    if (!index_.keyframesKnown)
+        return to - from <= 30;
+    // A seek decodes from the keyframe before the target anyway; without a keyframe in
+    // between, decoding on from here costs no more.
+    return index_.keyframeAtOrBefore(to) <= from;
+}
+
+void FrameReader::seekTo(int n)
+{
+    if (!index_.timestampsMonotonic || n == 0) {
+        reopen();
+        return;
+    }
+    const double fps = index_.fpsNominal > 0 ? index_.fpsNominal : 1.0 / index_.frameDuration();
+    // OpenCV numbers frames by timestamp × nominal rate; on a constant-rate file this is n.
+    long long target = std::llround((index_.frames[std::size_t(n)].time_s + index_.timeOrigin_s) * fps) - firstFrameNumber_;
+    for (int attempt = 0; attempt < 5; ++attempt) {
+        if (target <= 0)
+            break;
+        current_ = -1;
+        fresh_ = false;
+        cap_.set(cv::CAP_PROP_POS_FRAMES, double(target));
+        ++stats_.seeks;
+        const int j = grabNext();
+        if (j >= 0 && j <= n)
+            return;
+        ++stats_.retries;
+        target -= (j > n ? (j - n) : 0) + 1 + 8 * attempt;
+    }
+    reopen();
+}
+
+DecodedFrame FrameReader::read(int n)
+{
+    if (n < 0 || n >= index_.size())
+        throw VideoError(index_.path, tr("frame %1 does not exist (the video has %2 frames)").arg(n).arg(index_.size()));
+    const double time = index_.frames[std::size_t(n)].time_s;
+    if (auto img = cache_.get(n)) {
+        ++stats_.cacheHits;
+        return {n, time, *img};
+    }
+    if (current_ < 0 || current_ > n || !forwardIsCheaper(current_, n))
+        seekTo(n);
+    auto decodeForward = [&] {
+        while (current_ < n) {
+            const int j = grabNext();
+            if (j < 0 || j > n)
+                return false;
+        }
+        return true;
+    };
+    // After a seek the decoder may not give back the last frames of a file (B-frames
+    // drained at the end); decoding from the start always does.
+    if (!decodeForward()) {
+        reopen();
+        if (!decodeForward())
+            throw VideoError(index_.path, tr("frame %1 could not be decoded (truncated or changed file?)").arg(n));
+    }
+    cv::Mat image;
+    if (!cap_.retrieve(image) || image.empty())
+        throw VideoError(index_.path, tr("frame %1 could not be decoded").arg(n));
+    cache_.put(n, image);
+    return {n, time, image};
+}
+
+int FrameReader::fillCache(int from, int to, int budget)
+{
+    from = std::max(0, from);
+    to = std::min(to, index_.size() - 1);
+    int decoded = 0;
+    for (int i = from; i <= to && (budget < 0 || decoded < budget); ++i) {
+        if (cache_.contains(i))
+            continue;
+        read(i);
+        ++decoded;
+    }
+    return decoded;
+}
+
+}  // namespace nb::devices

@@ -1,0 +1,65 @@
+#include "keyframe_probe.h"
+
+#include <QProcess>
+#include <QStandardPaths>
+
+namespace nb::devices {
+
+static std::optional<QByteArray> runProbe(const QString& exe, const QStringList& args)
+{
+    QProcess p;
+    p.start(exe, args);
+    if (!p.waitForStarted(5000))
+        return std::nullopt;
+    if (!p.waitForFinished(120000)) {
+        p.kill();
+        p.waitForFinished(1000);
+        return std::nullopt;
+    }
+    if (p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0)
+        return std::nullopt;
+    return p.readAllStandardOutput();
+}
+
+std::optional<ProbeResult> probeKeyframes(const QString& path)
+{
+    const QString exe = QStandardPaths::findExecutable(QStringLiteral("ffprobe"));
+    if (exe.isEmpty())
+        return std::nullopt;
+    const auto stream = runProbe(exe, {QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
+                                       QStringLiteral("v:0"), QStringLiteral("-show_entries"),
+                                       QStringLiteral("stream=codec_name,start_time"), QStringLiteral("-of"),
+                                       QStringLiteral("default=noprint_wrappers=1"), path});
+    if (!stream)
+        return std::nullopt;
+    ProbeResult r;
+    double start = 0.0;
+    for (const QByteArray& line : stream->split('\n')) {
+        if (line.startsWith("codec_name="))
+            r.codec = QString::fromUtf8(line.mid(11)).trimmed();
+        else if (line.startsWith("start_time=")) {
+            bool ok = false;
+            const double s = line.mid(11).trimmed().toDouble(&ok);
+            if (ok)
+                start = s;  // OpenCV reports time relative to the stream's start
+        }
+    }
+    const auto packets = runProbe(exe, {QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
+                                        QStringLiteral("v:0"), QStringLiteral("-show_entries"),
+                                        QStringLiteral("packet=pts_time,flags"), QStringLiteral("-of"),
+                                        QStringLiteral("csv=p=0"), path});
+    if (!packets)
+        return std::nullopt;
+    for (const QByteArray& line : packets->split('\n')) {
+        const QList<QByteArray> f = line.trimmed().split(',');
+        if (f.size() < 2 || !f[1].startsWith('K'))
+            continue;
+        bool ok = false;
+        const double t = f[0].toDouble(&ok);
+        if (ok)  // "N/A" (AVI without timestamps) is skipped: no usable keyframe time
+            r.keyframes_s.push_back(t - start);
+    }
+    return r;
+}
+
+}  // namespace nb::devices

@@ -1,0 +1,19 @@
+#pragma once
+// Keyframe times from the `ffprobe` tool (part of Debian's ffmpeg package): OpenCV 4.6 does
+// not expose the keyframe flag of its FFmpeg backend. Absent tool or unusable output gives
+// nullopt and the index falls back to "frame 0 only".
+
+#include <QString>
+#include <optional>
+#include <vector>
+
+namespace nb::devices {
+
+struct ProbeResult {
+    QString codec;                    // e.g. "h264"
+    std::vector<double> keyframes_s;  // relative to the stream start, as OpenCV reports time
+};
+
+std::optional<ProbeResult> probeKeyframes(const QString& path);
+
+}  // namespace nb::devices

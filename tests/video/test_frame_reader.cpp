@@ -1,0 +1,250 @@
+// Frame-exact access on real encoded files: every frame read back (in random order, backwards,
+// and sequentially) must show its own number and carry its true timestamp.
+#include "video_fixtures.h"
+
+#include "devices/video/frame_index.h"
+#include "devices/video/frame_reader.h"
+#include "devices/video/video_error.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <opencv2/videoio.hpp>
+#include <random>
+
+using namespace nb::devices;
+using namespace nb::test;
+
+class TestFrameReader : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString path(const QString& name) const { return dir_.filePath(name); }
+
+    // Reads every frame in a shuffled order, then backwards one by one.
+    void checkAllFrames(const QString& file, const std::vector<int>& codes, const std::vector<double>& times)
+    {
+        FrameIndex index = buildFrameIndex(file);
+        QCOMPARE(index.size(), int(codes.size()));
+        for (int i = 0; i < index.size(); ++i)
+            QVERIFY2(std::abs(index.frames[std::size_t(i)].time_s - times[std::size_t(i)]) < 0.0016,
+                     qPrintable(QStringLiteral("frame %1 at %2 s, expected %3 s").arg(i).arg(index.frames[std::size_t(i)].time_s).arg(times[std::size_t(i)])));
+        FrameReader reader(index, 8);
+        std::vector<int> order = sequence(index.size());
+        std::mt19937 rng(7);
+        std::shuffle(order.begin(), order.end(), rng);
+        for (int n : order) {
+            const DecodedFrame f = reader.read(n);
+            QCOMPARE(f.index, n);
+            QVERIFY2(readCode(f.image) == codes[std::size_t(n)],
+                     qPrintable(QStringLiteral("%1: asked frame %2, got code %3").arg(file).arg(n).arg(readCode(f.image))));
+            QCOMPARE(f.time_s, index.frames[std::size_t(n)].time_s);
+        }
+        reader.cache().clear();
+        for (int n = index.size() - 1; n >= 0; --n)
+            QCOMPARE(readCode(reader.read(n).image), codes[std::size_t(n)]);
+    }
+
+    static std::vector<double> cfrTimes(int n, double fps)
+    {
+        std::vector<double> t(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i)
+            t[std::size_t(i)] = i / fps;
+        return t;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        if (!haveFfmpeg())
+            QSKIP("the ffmpeg tool is needed to make the test videos");
+        QVERIFY(dir_.isValid());
+    }
+
+    void formats_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QStringList>("encode");
+        QTest::addColumn<int>("width");
+        QTest::addColumn<int>("height");
+        QTest::addColumn<QString>("rate");
+        const QStringList x264{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        QTest::newRow("h264-bframes.mp4") << "a.mp4" << x264 << 320 << 240 << "30";
+        QTest::newRow("h264-bframes.mkv") << "a.mkv" << x264 << 320 << 240 << "30000/1001";
+        QTest::newRow("h264-bframes.avi") << "a.avi" << x264 << 320 << 240 << "30";
+        QTest::newRow("mpeg4-bframes.avi") << "b.avi" << QStringList{"-c:v", "mpeg4", "-q:v", "3", "-bf", "2", "-g", "24"} << 320 << 240 << "25";
+        QTest::newRow("mjpeg.avi") << "c.avi" << QStringList{"-c:v", "mjpeg", "-q:v", "3", "-pix_fmt", "yuvj420p"} << 320 << 240 << "30";
+        QTest::newRow("ffv1.mkv") << "d.mkv" << QStringList{"-c:v", "ffv1"} << 320 << 240 << "30";
+        QTest::newRow("dv") << "e.dv" << QStringList{"-c:v", "dvvideo", "-pix_fmt", "yuv411p"} << 720 << 480 << "30000/1001";
+    }
+
+    void formats()
+    {
+        QFETCH(QString, file);
+        QFETCH(QStringList, encode);
+        QFETCH(int, width);
+        QFETCH(int, height);
+        QFETCH(QString, rate);
+        VideoSpec spec;
+        spec.width = width;
+        spec.height = height;
+        spec.rate = rate;
+        spec.codes = sequence(75);
+        spec.encodeArgs = encode;
+        const QString err = writeVideo(path(file), spec);
+        QVERIFY2(err.isEmpty(), qPrintable(err));
+        const QStringList parts = rate.split('/');
+        const double fps = parts.size() == 2 ? parts[0].toDouble() / parts[1].toDouble() : rate.toDouble();
+        checkAllFrames(path(file), spec.codes, cfrTimes(75, fps));
+        if (QTest::currentTestFailed())
+            return;
+        const FrameIndex index = buildFrameIndex(path(file));
+        QVERIFY(!index.variableFrameRate());
+        QCOMPARE(index.duplicateCount(), 0);
+        QCOMPARE(index.width, width);
+        QVERIFY(std::abs(index.duration_s() - 75 / fps) < 0.002);
+    }
+
+    void keyframesFromProbe()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(100);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        QVERIFY(writeVideo(path("k.mp4"), spec).isEmpty());
+        const FrameIndex index = buildFrameIndex(path("k.mp4"));
+        if (!index.keyframesKnown)
+            QSKIP("ffprobe is not installed: keyframes unknown");
+        for (int i = 0; i < index.size(); ++i)
+            QCOMPARE(index.frames[std::size_t(i)].keyframe, i % 30 == 0);
+        QCOMPARE(index.keyframeAtOrBefore(59), 30);
+        QCOMPARE(index.codec, QStringLiteral("h264"));
+    }
+
+    void variableFrameRate_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("mp4") << "vfr.mp4";
+        QTest::newRow("mkv") << "vfr.mkv";
+    }
+
+    // Every tenth frame is followed by a gap of half a frame, and 12 frame periods are
+    // missing after frame 59 (a dropped stretch): OpenCV's frame seek, which assumes a
+    // constant rate, lands on wrong frames; the reader must not.
+    void variableFrameRate()
+    {
+        QFETCH(QString, file);
+        VideoSpec spec;
+        spec.codes = sequence(120);
+        // Time base 1/600 s: a frame period is 20 ticks, half a period 10, all exact.
+        spec.filterArgs = QStringList{"-vf", "settb=1/600,setpts=(N+floor(N/10)*0.5+floor(N/60)*12)*20", "-fps_mode", "passthrough",
+                                      "-enc_time_base", "1/600"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "40", "-bf", "2", "-pix_fmt", "yuv420p",
+                                      "-video_track_timescale", "600"};
+        if (file.endsWith(".mkv"))
+            spec.encodeArgs.mid(0, 8).swap(spec.encodeArgs);
+        const QString err = writeVideo(path(file), spec);
+        QVERIFY2(err.isEmpty(), qPrintable(err));
+        std::vector<double> times(120);
+        for (int n = 0; n < 120; ++n)
+            times[std::size_t(n)] = (n + std::floor(n / 10) * 0.5 + (n >= 60 ? 12 : 0)) / 30.0;
+        checkAllFrames(path(file), spec.codes, times);
+        if (QTest::currentTestFailed())
+            return;
+        const FrameIndex index = buildFrameIndex(path(file));
+        QVERIFY(index.variableFrameRate());
+        QCOMPARE(index.frameAt(times[55] + 0.001), 55);
+
+        // The point of the index: plain OpenCV seeking gets some of these frames wrong.
+        cv::VideoCapture cap(path(file).toStdString(), cv::CAP_FFMPEG);
+        int wrong = 0;
+        for (int n = 20; n < 120; n += 7) {
+            cap.set(cv::CAP_PROP_POS_FRAMES, n);
+            cv::Mat m;
+            cap.read(m);
+            wrong += readCode(m) != n ? 1 : 0;
+        }
+        QVERIFY(wrong > 0);
+    }
+
+    void duplicatesFlagged()
+    {
+        VideoSpec spec;
+        for (int i = 0; i < 60; ++i)
+            spec.codes.push_back(i % 6 == 5 ? spec.codes.back() : i);  // every sixth frame repeats
+        spec.encodeArgs = QStringList{"-c:v", "ffv1"};
+        QVERIFY(writeVideo(path("dup.mkv"), spec).isEmpty());
+        const FrameIndex index = buildFrameIndex(path("dup.mkv"));
+        QCOMPARE(index.size(), 60);
+        QCOMPARE(index.duplicateCount(), 10);
+        for (int i = 0; i < 60; ++i)
+            QCOMPARE(index.frames[std::size_t(i)].duplicate, i % 6 == 5);
+    }
+
+    void truncatedFileKeepsReadableFrames()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(90);
+        spec.encodeArgs = QStringList{"-c:v", "mjpeg", "-q:v", "3", "-pix_fmt", "yuvj420p"};
+        QVERIFY(writeVideo(path("full.avi"), spec).isEmpty());
+        QFile full(path("full.avi"));
+        QVERIFY(full.open(QIODevice::ReadOnly));
+        QFile cut(path("cut.avi"));
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(full.read(full.size() * 6 / 10));
+        cut.close();
+        const FrameIndex index = buildFrameIndex(path("cut.avi"));
+        QVERIFY(index.size() > 10);
+        QVERIFY(index.size() < 90);
+        QVERIFY(!index.warnings.isEmpty());
+        QVERIFY(index.warnings.join(' ').contains("truncated"));
+        FrameReader reader(index);
+        // The last frame may be cut short (decoders then repeat the previous picture).
+        for (int n = index.size() - 2; n >= 0; n -= 5)
+            QCOMPARE(readCode(reader.read(n).image), n);
+        const int last = readCode(reader.read(index.size() - 1).image);
+        QVERIFY2(last == index.size() - 1 || last == index.size() - 2 || last == -1,
+                 qPrintable(QStringLiteral("last frame shows %1").arg(last)));
+        QVERIFY_THROWS_EXCEPTION(VideoError, reader.read(index.size()));
+    }
+
+    void unreadableFilesSayWhy()
+    {
+        QFile junk(path("junk.mp4"));
+        QVERIFY(junk.open(QIODevice::WriteOnly));
+        junk.write(QByteArray(5000, 'x'));
+        junk.close();
+        try {
+            buildFrameIndex(path("junk.mp4"));
+            QFAIL("junk accepted as video");
+        } catch (const VideoError& e) {
+            QCOMPARE(e.file(), path("junk.mp4"));
+            QVERIFY(!e.reason().isEmpty());
+        }
+        try {
+            buildFrameIndex(path("missing.mp4"));
+            QFAIL("missing file accepted");
+        } catch (const VideoError& e) {
+            QVERIFY(e.message().contains("missing.mp4"));
+            QVERIFY(e.message().contains("no such file"));
+        }
+        // An MP4 cut before its index (moov) cannot be opened: a clear error, no crash.
+        VideoSpec spec;
+        spec.codes = sequence(30);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-pix_fmt", "yuv420p"};
+        QVERIFY(writeVideo(path("m.mp4"), spec).isEmpty());
+        QFile m(path("m.mp4"));
+        QVERIFY(m.open(QIODevice::ReadOnly));
+        QFile cut(path("mcut.mp4"));
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(m.read(m.size() / 2));
+        cut.close();
+        try {
+            const FrameIndex index = buildFrameIndex(path("mcut.mp4"));
+            QVERIFY(index.size() < 30 && !index.warnings.isEmpty());
+        } catch (const VideoError& e) {
+            QVERIFY(e.message().contains("mcut.mp4"));
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFrameReader)
+#include "test_frame_reader.moc"

@@ -1,0 +1,97 @@
+// The video commands' contracts, run as real processes: video-info and frame.
+#include "video_fixtures.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace nb::test;
+
+struct Result {
+    int code;
+    QByteArray out, err;
+};
+
+static Result run(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(NB_EXECUTABLE), args);
+    p.waitForFinished(120000);
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
+}
+
+class TestVideoCli : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString vfr_;
+
+private slots:
+    void initTestCase()
+    {
+        if (!haveFfmpeg())
+            QSKIP("the ffmpeg tool is needed to make the test videos");
+        vfr_ = dir_.filePath("vfr.mp4");
+        VideoSpec spec;
+        for (int i = 0; i < 90; ++i)
+            spec.codes.push_back(i % 9 == 8 ? spec.codes.back() : i);  // every ninth frame repeats
+        // A stretch of 10 frame periods missing after frame 44 makes the rate variable.
+        spec.filterArgs = QStringList{"-vf", "settb=1/600,setpts=(N+floor(N/45)*10)*20", "-fps_mode", "passthrough",
+                                      "-enc_time_base", "1/600"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-pix_fmt", "yuv420p",
+                                      "-video_track_timescale", "600"};
+        const QString err = writeVideo(vfr_, spec);
+        QVERIFY2(err.isEmpty(), qPrintable(err));
+    }
+
+    void videoInfoJson()
+    {
+        const Result r = run({"video-info", vfr_, "--json"});
+        QCOMPARE(r.code, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        for (const char* key : {"frames", "fps_nominal", "duration_s", "codec", "width", "height", "variable_frame_rate",
+                                "duplicate_frames"})
+            QVERIFY2(o.contains(QLatin1String(key)), key);
+        QCOMPARE(o["frames"].toInt(), 90);
+        QCOMPARE(o["width"].toInt(), 320);
+        QCOMPARE(o["height"].toInt(), 240);
+        QCOMPARE(o["variable_frame_rate"].toBool(), true);
+        QCOMPARE(o["duplicate_frames"].toInt(), 10);  // frames 8, 17, ..., 89
+        QCOMPARE(o["codec"].toString(), QStringLiteral("h264"));
+        QVERIFY(std::abs(o["duration_s"].toDouble() - 100 / 30.0) < 0.002);
+    }
+
+    void frameWritesTheExactFrame()
+    {
+        for (int n : {0, 44, 45, 46, 80, 89}) {
+            const QString png = dir_.filePath(QStringLiteral("f%1.png").arg(n));
+            const Result r = run({"frame", vfr_, "--index", QString::number(n), "--out", png, "--json"});
+            QCOMPARE(r.code, 0);
+            const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+            QCOMPARE(o["index"].toInt(), n);
+            const double expected = (n + (n >= 45 ? 10 : 0)) / 30.0;
+            QVERIFY(std::abs(o["time_s"].toDouble() - expected) < 0.001);
+            const int code = readCode(QImage(png));
+            QCOMPARE(code, n % 9 == 8 ? n - 1 : n);
+        }
+    }
+
+    void badInput()
+    {
+        QCOMPARE(run({"frame", vfr_, "--out", dir_.filePath("x.png")}).code, 2);  // no --index
+        QCOMPARE(run({"frame", vfr_, "--index", "-3", "--out", dir_.filePath("x.png")}).code, 2);
+        QCOMPARE(run({"video-info"}).code, 2);
+        const Result beyond = run({"frame", vfr_, "--index", "90", "--out", dir_.filePath("x.png")});
+        QCOMPARE(beyond.code, 1);
+        QVERIFY(beyond.err.contains("frame 90 does not exist"));
+        const Result missing = run({"video-info", dir_.filePath("none.mp4")});
+        QCOMPARE(missing.code, 1);
+        QVERIFY(missing.err.contains("none.mp4"));
+        const Result unwritable = run({"frame", vfr_, "--index", "3", "--out", dir_.filePath("no/such/dir/x.png")});
+        QCOMPARE(unwritable.code, 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestVideoCli)
+#include "test_video_cli.moc"

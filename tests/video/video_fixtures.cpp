@@ -1,0 +1,88 @@
+#include "video_fixtures.h"
+
+#include <QProcess>
+#include <QStandardPaths>
+#include <opencv2/imgproc.hpp>
+
+namespace nb::test {
+
+bool haveFfmpeg() { return !QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty(); }
+
+std::vector<int> sequence(int n)
+{
+    std::vector<int> v(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+        v[std::size_t(i)] = i;
+    return v;
+}
+
+static QByteArray frameBytes(int w, int h, int code)
+{
+    QByteArray gray(w * h, char(16));
+    const int bar = w / kCodeBits;
+    for (int b = 0; b < kCodeBits; ++b) {
+        const bool on = (code >> (kCodeBits - 1 - b)) & 1;
+        for (int y = h / 8; y < h - h / 8; ++y)
+            for (int x = b * bar + 2; x < (b + 1) * bar - 2; ++x)
+                gray[y * w + x] = char(on ? 235 : 16);
+    }
+    return gray;
+}
+
+QString writeVideo(const QString& path, const VideoSpec& spec)
+{
+    QProcess p;
+    QStringList args{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"),
+                     QStringLiteral("-f"), QStringLiteral("rawvideo"), QStringLiteral("-pix_fmt"),
+                     QStringLiteral("gray"), QStringLiteral("-s"),
+                     QStringLiteral("%1x%2").arg(spec.width).arg(spec.height), QStringLiteral("-r"), spec.rate,
+                     QStringLiteral("-i"), QStringLiteral("-")};
+    args << spec.filterArgs << spec.encodeArgs << path;
+    p.start(QStringLiteral("ffmpeg"), args);
+    if (!p.waitForStarted(10000))
+        return QStringLiteral("ffmpeg did not start");
+    for (int code : spec.codes) {
+        p.write(frameBytes(spec.width, spec.height, code));
+        while (p.bytesToWrite() > 0)
+            if (!p.waitForBytesWritten(30000))
+                return QStringLiteral("ffmpeg stopped reading: ") + QString::fromUtf8(p.readAllStandardError());
+    }
+    p.closeWriteChannel();
+    if (!p.waitForFinished(120000))
+        return QStringLiteral("ffmpeg timed out");
+    if (p.exitCode() != 0)
+        return QString::fromUtf8(p.readAllStandardError());
+    return {};
+}
+
+int readCode(const cv::Mat& bgr)
+{
+    if (bgr.empty())
+        return -1;
+    cv::Mat gray;
+    if (bgr.channels() == 3)
+        cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
+    else
+        gray = bgr;
+    const int w = gray.cols, h = gray.rows, bar = w / kCodeBits;
+    int code = 0;
+    for (int b = 0; b < kCodeBits; ++b) {
+        const cv::Rect box(b * bar + bar / 2 - 2, h / 2 - h / 8, 4, h / 4);
+        const double m = cv::mean(gray(box))[0];
+        if (m > 100 && m < 150)
+            return -1;  // neither black nor white: not our stripes
+        code = (code << 1) | (m >= 128 ? 1 : 0);
+    }
+    return code;
+}
+
+int readCode(const QImage& image)
+{
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB888);
+    cv::Mat m(rgb.height(), rgb.width(), CV_8UC3, const_cast<uchar*>(rgb.constBits()), size_t(rgb.bytesPerLine()));
+    cv::Mat bgr;
+    cv::cvtColor(m, bgr, cv::COLOR_RGB2BGR);
+    return readCode(bgr);
+}
+
+}  // namespace nb::test

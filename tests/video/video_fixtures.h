@@ -1,0 +1,38 @@
+#pragma once
+// Real encoded test videos whose frames carry a number in their pixels (a 12-bit stripe
+// code across the frame), so a test can tell exactly which frame a decoder returned.
+
+#include <QImage>
+#include <QString>
+#include <QStringList>
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace nb::test {
+
+constexpr int kCodeBits = 12;
+
+// True when the `ffmpeg` tool is on PATH.
+bool haveFfmpeg();
+
+struct VideoSpec {
+    int width = 320;
+    int height = 240;
+    QString rate = QStringLiteral("30");  // input frame rate as ffmpeg reads it
+    std::vector<int> codes;               // the number shown in each frame, in order
+    QStringList encodeArgs;               // e.g. -c:v libx264 -g 30 -bf 2
+    QStringList filterArgs;               // e.g. -vf setpts=... -fps_mode passthrough
+};
+
+// Encodes `spec` to `path` with the ffmpeg tool; returns an empty string on success, else
+// ffmpeg's complaint.
+QString writeVideo(const QString& path, const VideoSpec& spec);
+
+// Codes 0..n-1.
+std::vector<int> sequence(int n);
+
+// Reads the stripe code back (-1 when the stripes are not readable).
+int readCode(const cv::Mat& bgr);
+int readCode(const QImage& image);
+
+}  // namespace nb::test
