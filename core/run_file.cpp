@@ -107,8 +107,10 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
 
     std::vector<Kind> kinds;
     QStringList columnNames;
-    std::vector<std::vector<double>*> numericTargets;
-    std::vector<std::vector<QString>*> textTargets;
+    // Indices into run.numeric / run.text in file-column order (indices, not pointers:
+    // those vectors grow while the header is read).
+    std::vector<std::size_t> numericTargets;
+    std::vector<std::size_t> textTargets;
     std::vector<std::string_view> fields;
     bool haveHeader = false;
     bool dataEnded = false;
@@ -150,9 +152,6 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                                        tr("header has no '%1' column (found: %2)")
                                            .arg(QLatin1String(req), names.join(QLatin1String(", "))));
             QStringList ignored;
-            // The targets below point into run.numeric/run.text: no reallocation after this.
-            run.numeric.reserve(std::size_t(names.size()));
-            run.text.reserve(std::size_t(names.size()));
             for (const QString& n : names) {
                 if (names.count(n) > 1)
                     throw RunFileError(name, lineNo, tr("column '%1' appears twice").arg(n));
@@ -164,10 +163,12 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                     kinds.push_back(Kind::Force);
                 else if (knownNumericColumns().contains(n)) {
                     kinds.push_back(Kind::Numeric);
-                    numericTargets.push_back(&run.addNumericColumn(n));
+                    run.addNumericColumn(n);
+                    numericTargets.push_back(run.numeric.size() - 1);
                 } else if (knownTextColumns().contains(n)) {
                     kinds.push_back(Kind::Text);
-                    textTargets.push_back(&run.addTextColumn(n));
+                    run.addTextColumn(n);
+                    textTargets.push_back(run.text.size() - 1);
                 } else {
                     kinds.push_back(Kind::Ignored);
                     ignored << n;
@@ -200,7 +201,7 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
             if (k == Kind::Ignored)
                 continue;
             if (k == Kind::Text) {
-                textTargets[ti++]->push_back(QString::fromUtf8(fields[c]));
+                run.text[textTargets[ti++]].second.push_back(QString::fromUtf8(fields[c]));
                 continue;
             }
             double v = std::numeric_limits<double>::quiet_NaN();
@@ -230,7 +231,7 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                 break;
             case Kind::Position: run.position_mm.push_back(v); break;
             case Kind::Force: run.force_N.push_back(v); break;
-            case Kind::Numeric: numericTargets[ni++]->push_back(v); break;
+            case Kind::Numeric: run.numeric[numericTargets[ni++]].second.push_back(v); break;
             default: break;
             }
         }

@@ -68,6 +68,26 @@ private slots:
         QVERIFY(back.warnings.isEmpty());
     }
 
+    void keepsManyOptionalColumnsInFileOrder()
+    {
+        const QString path = write(QStringLiteral("many.csv"),
+                                   "time_s,position_mm,force_N,velocity_mm_s,voltage_V,seq,device_time_s,"
+                                   "tissue_position_mm,phase,event\n"
+                                   "0,0,0,4,0.01,0,0.5,0.1,a,contact\n"
+                                   "0.002,0.008,0.02,4.1,0.02,1,0.502,0.2,b1,\n");
+        const auto r = readRunFile(path);
+        QCOMPARE(r.run.numeric.size(), std::size_t(5));
+        QCOMPARE(r.run.numeric[0].first, QStringLiteral("velocity_mm_s"));
+        QCOMPARE(r.run.numericColumn(QStringLiteral("velocity_mm_s"))->at(1), 4.1);
+        QCOMPARE(r.run.numericColumn(QStringLiteral("voltage_V"))->at(1), 0.02);
+        QCOMPARE(r.run.numericColumn(QStringLiteral("seq"))->at(1), 1.0);
+        QCOMPARE(r.run.numericColumn(QStringLiteral("device_time_s"))->at(0), 0.5);
+        QCOMPARE(r.run.numericColumn(QStringLiteral("tissue_position_mm"))->at(1), 0.2);
+        QCOMPARE(r.run.textColumn(QStringLiteral("phase"))->at(1), QStringLiteral("b1"));
+        QCOMPARE(r.run.textColumn(QStringLiteral("event"))->at(0), QStringLiteral("contact"));
+        QCOMPARE(r.run.textColumn(QStringLiteral("event"))->at(1), QString());
+    }
+
     void streamingWriterMatchesReader()
     {
         const QString path = dir_.filePath(QStringLiteral("stream.csv"));
