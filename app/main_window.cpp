@@ -162,15 +162,14 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     engine_->setForceLimit(panel_->forceLimit());
     plots_->setForceLimit(panel_->forceLimit());
 
+    // The session given, else the last one, else a fresh one: a run always has a folder.
     QString dir = options_.sessionDir;
-    if (dir.isEmpty() && options_.persistSettings)
+    if (dir.isEmpty() && options_.persistSettings && Session::isSession(settings.value(QStringLiteral("session/last")).toString()))
         dir = settings.value(QStringLiteral("session/last")).toString();
     if (!dir.isEmpty() && Session::isSession(dir))
         openSession(dir);
-    else if (!dir.isEmpty() || !options_.persistSettings)
-        createSession(dir.isEmpty() ? QDir(defaultSessionRoot()).filePath(QDateTime::currentDateTime().toString(QStringLiteral("'session_'yyyyMMdd_HHmmss"))) : dir, {});
     else
-        createSession(QDir(defaultSessionRoot()).filePath(QDateTime::currentDateTime().toString(QStringLiteral("'session_'yyyyMMdd_HHmmss"))), {});
+        createSession(dir.isEmpty() ? QDir(defaultSessionRoot()).filePath(QDateTime::currentDateTime().toString(QStringLiteral("'session_'yyyyMMdd_HHmmss"))) : dir, {});
 
     drainTimer_ = new QTimer(this);
     drainTimer_->setInterval(25);  // 40 frames/s at most
@@ -409,11 +408,14 @@ void MainWindow::drain()
 void MainWindow::onStatus(const devices::EngineStatus& s)
 {
     panel_->setStatus(s);
-    statusLabel_->setText(tr("%1 Hz · %2 samples · dropped %3 · %4 frames drawn")
+    statusLabel_->setText(tr("%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn")
+                              .arg(engine_->deviceDescription())
                               .arg(s.rateHz, 0, 'f', 0)
                               .arg(s.samples)
                               .arg(s.dropped + s.overruns)
                               .arg(plots_->framesDrawn()));
+    if (!s.realtimeWarning.isEmpty())
+        statusLabel_->setToolTip(s.realtimeWarning);
 }
 
 void MainWindow::onRunEnded(const devices::RunSummary& summary)

@@ -305,7 +305,11 @@ void ControlPanel::updateControls()
     const auto set = [this](const char* key, const QString& text, bool alarm = false) {
         QLabel* l = status_labels_[QString::fromLatin1(key)];
         l->setText(text);
-        l->setStyleSheet(alarm ? QStringLiteral("color: #c62828; font-weight: bold;") : QString());
+        // Re-polishing a style sheet is not free and this runs at the status rate (25 Hz).
+        if (l->property("alarm").toBool() != alarm || !l->property("alarm").isValid()) {
+            l->setProperty("alarm", alarm);
+            l->setStyleSheet(alarm ? QStringLiteral("color: #c62828; font-weight: bold;") : QString());
+        }
     };
     const devices::EngineStatus& s = status_;
     set("devices", s.running ? tr("running") : tr("stopped"), !s.running);
