@@ -6,6 +6,8 @@
 
 #include "devices/acquisition_engine.h"
 #include "devices/device_set.h"
+#include "core/run_file.h"
+#include "devices/sim/imaging_render.h"
 #include "devices/sim/simulated_rig.h"
 
 #include <QCoreApplication>
@@ -34,6 +36,8 @@ struct SimulateOptions {
     devices::SineMotion sine;
     double maxForce_N = 8.0;
     QString out, truth;
+    QString video;          // --video: the rendered imaging view
+    double videoOffset_s = 0.0;
 };
 
 struct OptionSet {
@@ -53,11 +57,13 @@ struct OptionSet {
     QCommandLineOption realtime{QStringLiteral("realtime"), tr("run on the wall clock (default: as fast as possible)")};
     QCommandLineOption truth{QStringLiteral("truth"), tr("write the ground truth as JSON"), QStringLiteral("FILE.json")};
     QCommandLineOption out{QStringLiteral("out"), tr("the run file to write"), QStringLiteral("RUN.csv")};
+    QCommandLineOption video{QStringLiteral("video"), tr("also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)"), QStringLiteral("FILE")};
+    QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), tr("the video starts this long before the recording (default 0)"), QStringLiteral("S"), QStringLiteral("0")};
 
     void addTo(QCommandLineParser& p) const
     {
         for (const auto* o : {&protocol, &tissue, &tip, &seed, &rate, &velocity, &depth, &amplitude, &frequency,
-                              &cycles, &thickness, &bone, &maxForce, &realtime, &truth, &out})
+                              &cycles, &thickness, &bone, &maxForce, &realtime, &truth, &out, &video, &videoOffset})
             p.addOption(*o);
     }
 };
@@ -88,6 +94,13 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
         return tr("--out RUN.csv is required");
     s.out = p.value(o.out);
     s.truth = p.value(o.truth);
+    s.video = p.value(o.video);
+    {
+        bool ok = false;
+        s.videoOffset_s = p.value(o.videoOffset).toDouble(&ok);
+        if (!ok || s.videoOffset_s < 0 || s.videoOffset_s > 600)
+            return tr("--video-offset-s wants seconds between 0 and 600");
+    }
 
     const bool internal = s.protocol == QLatin1String("internal");
     const bool friction = s.protocol == QLatin1String("friction");
@@ -326,6 +339,21 @@ int cmdSimulate(const QStringList& args, Io io)
             }
         }
         truth = truthOnRunTime(rig->truthJson(), origin);
+    }
+    if (!s.video.isEmpty()) {
+        try {
+            devices::sim::ImagingOptions io_;
+            io_.leadIn_s = s.videoOffset_s;
+            const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(readRunFile(s.out).run, s.video, io_);
+            truth.insert(QStringLiteral("video"), QJsonObject{{QStringLiteral("file"), s.video},
+                                                             {QStringLiteral("offset_s"), vt.offset_s},
+                                                             {QStringLiteral("fps"), vt.fps},
+                                                             {QStringLiteral("frames"), vt.frames}});
+            truth.insert(QStringLiteral("video_offset_s"), vt.offset_s);
+        } catch (const std::exception& e) {
+            io.err << "needlebench simulate: " << QString::fromUtf8(e.what()) << '\n';
+            return Failure;
+        }
     }
     if (!s.truth.isEmpty()) {
         QSaveFile tf(s.truth);

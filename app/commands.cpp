@@ -17,6 +17,8 @@ int cmdDemo(const QStringList& args, Io io);
 int cmdSimulate(const QStringList& args, Io io);
 int cmdVideoInfo(const QStringList& args, Io io);
 int cmdFrame(const QStringList& args, Io io);
+int cmdSync(const QStringList& args, Io io);
+int cmdLabels(const QStringList& args, Io io);
 
 const std::vector<Command>& commands()
 {
@@ -31,6 +33,8 @@ const std::vector<Command>& commands()
         {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},
         {QStringLiteral("video-info"), QCoreApplication::translate("cli", "index a video: frames, rate, duplicates"), cmdVideoInfo},
         {QStringLiteral("frame"), QCoreApplication::translate("cli", "write one exact video frame as an image"), cmdFrame},
+        {QStringLiteral("sync"), QCoreApplication::translate("cli", "find the video's offset to a run (motion vs needle speed)"), cmdSync},
+        {QStringLiteral("labels"), QCoreApplication::translate("cli", "suggest phase and event labels for a run"), cmdLabels},
     };
     return all;
 }

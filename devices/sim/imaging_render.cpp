@@ -54,8 +54,10 @@ ImagingRenderer::ImagingRenderer(const Run& run, const ImagingOptions& options) 
     minPos_ = *lo;
     thickness_mm_ = run.metadata.number(QStringLiteral("thickness_mm")).value_or(30.0);
     const bool sine = run.metadata.value(QStringLiteral("protocol"), QString()) == QLatin1String("friction");
-    // The needle passes through the slab on the platform; elsewhere it enters from above.
-    surface_mm_ = sine ? 0.5 * (*lo + *hi) - 0.5 * thickness_mm_ : *lo + 0.25 * (*hi - *lo);
+    // On the platform the needle has passed fully through the slab (its tip moves below it);
+    // elsewhere it enters from above.
+    surface_mm_ = sine ? *lo - thickness_mm_ - 4.0 : *lo + 0.25 * (*hi - *lo);
+    minPos_ = std::min(minPos_, surface_mm_ - 4.0);
     const double span = std::max(*hi, surface_mm_ + thickness_mm_) - minPos_ + 10.0;
     ppm_ = (o_.height - 60) / std::max(span, 1.0);
     textureRows_ = o_.height * 3;

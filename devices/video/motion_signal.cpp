@@ -2,6 +2,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -30,14 +31,23 @@ MotionSignal computeMotionSignal(FrameReader& reader, QRect roi, const std::func
         cv::Mat roiImage = f.image(r & cv::Rect(0, 0, f.image.cols, f.image.rows));
         cv::Mat gray;
         cv::cvtColor(roiImage, gray, cv::COLOR_BGR2GRAY);
-        // Averaging over small blocks keeps real motion and drops most pixel noise.
         cv::Mat small;
-        cv::resize(gray, small, cv::Size(std::max(1, gray.cols / 4), std::max(1, gray.rows / 4)), 0, 0, cv::INTER_AREA);
+        cv::GaussianBlur(gray, small, cv::Size(5, 5), 1.2);
         small.convertTo(small, CV_32F);
         if (!previous.empty() && previous.size() == small.size()) {
+            // Count the pixels that changed clearly more than the picture's noise (estimated
+            // from the median change), so a thin needle moving in a noisy fluoro picture
+            // still stands out and the measure grows with the distance moved.
+            cv::Mat diff = cv::abs(small - previous);
+            cv::Mat sample;
+            cv::resize(diff, sample, cv::Size(std::max(1, diff.cols / 4), std::max(1, diff.rows / 4)), 0, 0, cv::INTER_NEAREST);
+            std::vector<float> v(sample.begin<float>(), sample.end<float>());
+            std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+            const double sigma = 1.4826 * v[v.size() / 2];
+            cv::Mat changed = diff > std::max(6.0 * sigma, 6.0);
             const double dt = std::max(1e-6, f.time_s - previousTime);
             out.time_s.push_back(0.5 * (f.time_s + previousTime));
-            out.value.push_back(cv::mean(cv::abs(small - previous))[0] / dt);
+            out.value.push_back(double(cv::countNonZero(changed)) / double(changed.total()) / dt);
         }
         previous = small;
         previousTime = f.time_s;

@@ -1,0 +1,146 @@
+#include "label_suggest.h"
+
+#include "events.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+namespace nb {
+
+namespace {
+
+std::vector<double> velocity(const Run& run)
+{
+    const std::size_t n = run.size();
+    std::vector<double> v(n, 0.0);
+    if (const auto* col = run.numericColumn(QStringLiteral("velocity_mm_s"))) {
+        v = *col;
+    } else {
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t a = i == 0 ? 0 : i - 1, b = std::min(n - 1, i + 1);
+            v[i] = (run.position_mm[b] - run.position_mm[a]) / std::max(1e-9, run.time_s[b] - run.time_s[a]);
+        }
+    }
+    // Light smoothing (about 20 ms) so noise does not make false turning points.
+    const double rate = n > 1 ? (n - 1) / std::max(1e-9, run.time_s.back() - run.time_s.front()) : 1.0;
+    const int half = std::max(1, int(0.01 * rate));
+    std::vector<double> s(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t a = i >= std::size_t(half) ? i - half : 0, b = std::min(n - 1, i + half);
+        double sum = 0;
+        for (std::size_t k = a; k <= b; ++k)
+            sum += v[k];
+        s[i] = sum / double(b - a + 1);
+    }
+    return s;
+}
+
+// Half-cycles [start, end) between turning points, with their direction.
+struct HalfCycle {
+    std::size_t start, end;
+    int direction;
+};
+
+std::vector<HalfCycle> halfCycles(const std::vector<double>& v, double band)
+{
+    std::vector<HalfCycle> out;
+    int dir = 0;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const int d = v[i] > band / 2 ? 1 : (v[i] < -band / 2 ? -1 : 0);
+        if (d == 0 || d == dir)
+            continue;
+        // The turning point is where the velocity crossed zero before this sample.
+        std::size_t turn = i;
+        while (turn > start && v[turn - 1] * d > 0)
+            --turn;
+        if (dir != 0)
+            out.push_back({start, turn, dir});
+        start = turn;
+        dir = d;
+    }
+    if (dir != 0) {
+        std::size_t end = v.size();
+        while (end > start + 1 && std::abs(v[end - 1]) < band / 2)
+            --end;  // the needle at rest after the last stroke belongs to no phase
+        out.push_back({start, end, dir});
+    }
+    return out;
+}
+
+}  // namespace
+
+Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
+{
+    Labels out;
+    if (run.size() < 10)
+        return out;
+    const std::vector<double> v = velocity(run);
+    for (const HalfCycle& h : halfCycles(v, o.zeroBand_mm_s)) {
+        if (h.end <= h.start + 4)
+            continue;
+        const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
+        const double t0 = run.time_s[h.start], t1 = run.time_s[h.end - 1];
+        std::size_t aEnd = h.start;
+        while (aEnd < h.end && std::abs(v[aEnd]) < o.zeroBand_mm_s / 2)
+            ++aEnd;
+        // The force's plateau: the median over the half-cycle's middle part.
+        const std::size_t len = h.end - h.start;
+        std::vector<double> mid(run.force_N.begin() + std::ptrdiff_t(h.start + len * 3 / 10),
+                                run.force_N.begin() + std::ptrdiff_t(h.start + len * 7 / 10));
+        std::nth_element(mid.begin(), mid.begin() + std::ptrdiff_t(mid.size() / 2), mid.end());
+        const double plateau = mid.empty() ? run.force_N[h.start] : mid[mid.size() / 2];
+        const double step = std::abs(run.force_N[h.start] - plateau);
+        std::size_t cStart = aEnd;
+        while (cStart < h.end && std::abs(run.force_N[cStart] - plateau) > o.settledFraction * step)
+            ++cStart;
+        cStart = std::min(std::max(cStart, aEnd), h.end - 1);
+        const double ta = run.time_s[std::min(aEnd, h.end - 1)], tc = run.time_s[cStart];
+        if (ta > t0)
+            out.push_back({track, QStringLiteral("a"), t0, ta, QStringLiteral("suggested")});
+        if (tc > ta) {
+            const double tm = 0.5 * (ta + tc);
+            out.push_back({track, QStringLiteral("b1"), ta, tm, QStringLiteral("suggested")});
+            out.push_back({track, QStringLiteral("b2"), tm, tc, QStringLiteral("suggested")});
+        }
+        if (t1 > tc)
+            out.push_back({track, QStringLiteral("c"), tc, t1, QStringLiteral("suggested")});
+    }
+    return out;
+}
+
+Labels suggestEventLabels(const Run& run)
+{
+    Labels out;
+    try {
+        const InsertionEvents e = detectEvents(run);
+        auto point = [&](const QString& name, double t) {
+            out.push_back({QStringLiteral("events"), name, t, t, QStringLiteral("suggested")});
+        };
+        point(QStringLiteral("contact"), e.contact.time_s);
+        point(QStringLiteral("puncture"), e.puncture.time_s);
+        if (e.relaxation)
+            point(QStringLiteral("relaxation"), e.relaxation->time_s);
+        for (const RunEvent& p : e.internalPunctures)
+            point(QStringLiteral("internal puncture"), p.time_s);
+    } catch (const std::exception&) {
+        // No puncture found (or too few samples): nothing to suggest.
+    }
+    return out;
+}
+
+Labels suggestLabels(const Run& run, const SuggestOptions& options)
+{
+    const QString protocol = run.metadata.value(QStringLiteral("protocol"), QString());
+    if (protocol == QLatin1String("friction"))
+        return suggestPhaseLabels(run, options);
+    if (!protocol.isEmpty())
+        return suggestEventLabels(run);
+    // No protocol named: several turning points mean a sinusoid.
+    const Labels phases = suggestPhaseLabels(run, options);
+    const auto turns = std::count_if(phases.begin(), phases.end(), [](const Label& l) { return l.label == QLatin1String("c"); });
+    return turns >= 3 ? phases : suggestEventLabels(run);
+}
+
+}  // namespace nb

@@ -1,0 +1,70 @@
+#pragma once
+// One timeline for the video and the force record, in recording time:
+//   video time = (1 + drift) · recording time + offset
+// The offset is set by marking one event in both, or found by correlating a motion signal
+// from the video with the needle's speed, coarse to fine, anchored on the motion onset
+// (a sinusoid repeats, so correlation alone has many equal peaks).
+
+#include "run.h"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace nb {
+
+struct TimelineMapping {
+    double offset_s = 0.0;
+    double drift = 0.0;  // relative clock-rate error of the video, e.g. 1e-4
+
+    double toVideo(double recording_s) const { return (1.0 + drift) * recording_s + offset_s; }
+    double toRecording(double video_s) const { return (video_s - offset_s) / (1.0 + drift); }
+    // The mapping that puts `video_s` and `recording_s` on the same instant (same drift).
+    static TimelineMapping fromEvent(double recording_s, double video_s, double drift = 0.0)
+    {
+        return {video_s - (1.0 + drift) * recording_s, drift};
+    }
+    void nudge(int frames, double frameDuration_s) { offset_s += frames * frameDuration_s; }
+    friend bool operator==(const TimelineMapping&, const TimelineMapping&) = default;
+};
+
+// A sampled signal; NaN values are masked (e.g. duplicate video frames).
+struct TimeSignal {
+    std::vector<double> time_s;
+    std::vector<double> value;
+};
+
+// |needle velocity| in mm/s: the run's velocity_mm_s column when present, else the
+// derivative of position, smoothed over `smoothing_s`.
+TimeSignal needleSpeed(const Run& run, double smoothing_s = 0.03);
+
+// First time the signal rises clearly above its resting level (the median of its first
+// `restWindow_s`): above rest + `fraction` · (95th percentile − rest). nullopt when it never does.
+std::optional<double> motionOnset(const TimeSignal& s, double fraction = 0.25, double restWindow_s = 0.5);
+
+struct SyncOptions {
+    double maxOffset_s = 20.0;    // search offsets in [-max, +max]
+    double coarseStep_s = 0.05;
+    double fineStep_s = 0.001;
+    bool anchorOnOnset = true;
+    double anchorWindow_s = 0.3;  // the accepted peak lies this close to the onset estimate
+};
+
+struct SyncResult {
+    double offset_s = 0.0;         // video time minus recording time
+    double correlation = 0.0;      // Pearson r at offset_s
+    double confidence = 0.0;       // 0..1
+    std::optional<double> onsetOffset_s;  // from the two motion onsets alone
+    std::vector<std::pair<double, double>> curve;  // coarse scan: (offset, r), for display
+    int pairs = 0;                 // samples compared at offset_s
+};
+
+// `videoMotion` in video time, `speed` in recording time. Throws std::invalid_argument when
+// either signal is too short to compare.
+SyncResult synchronise(const TimeSignal& videoMotion, const TimeSignal& speed, const SyncOptions& options = {});
+
+// Pearson correlation of the motion with the speed shifted by `offset_s` (speed is 0 outside
+// the recording: the rig rests). Returns r and the number of pairs.
+std::pair<double, int> correlationAt(const TimeSignal& videoMotion, const TimeSignal& speed, double offset_s);
+
+}  // namespace nb

@@ -1,0 +1,135 @@
+// Synchronisation: the timeline mapping, and the automatic offset on a video rendered from a
+// simulated friction run started a known time after the video (real processes, real files).
+#include "core/label_suggest.h"
+#include "core/labels.h"
+#include "core/run_file.h"
+#include "core/sync.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+static QJsonObject runJson(const QStringList& args, int* code = nullptr)
+{
+    QProcess p;
+    p.start(QStringLiteral(NB_EXECUTABLE), args);
+    p.waitForFinished(240000);
+    if (code)
+        *code = p.exitCode();
+    return QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+}
+
+class TestSync : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString run_, video_, truth_;
+
+private slots:
+    void mapping()
+    {
+        nb::TimelineMapping m = nb::TimelineMapping::fromEvent(1.5, 4.0);
+        QCOMPARE(m.offset_s, 2.5);
+        QCOMPARE(m.toVideo(10.0), 12.5);
+        QCOMPARE(m.toRecording(12.5), 10.0);
+        m.nudge(-3, 1.0 / 30);
+        QVERIFY(std::abs(m.offset_s - 2.4) < 1e-12);
+        const nb::TimelineMapping d{1.0, 1e-3};
+        QVERIFY(std::abs(d.toRecording(d.toVideo(123.0)) - 123.0) < 1e-9);
+        QVERIFY(std::abs(d.toVideo(1000.0) - 1002.0) < 1e-9);
+    }
+
+    void onsetAndCorrelationOnSynthetic()
+    {
+        // A half-sine burst of speed starting at 3 s; "video motion" the same, 1.25 s later, noisy.
+        nb::TimeSignal speed, motion;
+        for (int i = 0; i < 5000; ++i) {
+            const double t = i * 0.002;
+            speed.time_s.push_back(t);
+            speed.value.push_back(t > 3 && t < 8 ? std::abs(std::sin((t - 3) * M_PI)) * 30 : 0.0);
+        }
+        for (int k = 0; k < 400; ++k) {
+            const double tv = k / 29.97;
+            const double tr = tv - 1.25;
+            motion.time_s.push_back(tv);
+            motion.value.push_back((tr > 3 && tr < 8 ? std::abs(std::sin((tr - 3) * M_PI)) : 0.0) + 0.05 * ((k * 7919) % 13) / 13.0);
+        }
+        motion.value[100] = std::numeric_limits<double>::quiet_NaN();  // a masked duplicate
+        const nb::SyncResult r = nb::synchronise(motion, speed);
+        QVERIFY2(std::abs(r.offset_s - 1.25) < 0.01, qPrintable(QString::number(r.offset_s)));
+        QVERIFY(r.confidence > 0.8);
+        QVERIFY(r.onsetOffset_s && std::abs(*r.onsetOffset_s - 1.25) < 0.05);
+        // Without the onset anchor the periodic signal may lock a period off; with it, not.
+        QVERIFY(!r.curve.empty());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, nb::synchronise({}, speed));
+    }
+
+    void renderedSimulatedRun()
+    {
+        run_ = dir_.filePath("fr.csv");
+        video_ = dir_.filePath("fr.avi");
+        truth_ = dir_.filePath("fr.json");
+        int code = -1;
+        runJson({"simulate", "--protocol", "friction", "--tissue", "liver7", "--cycles", "3", "--out", run_, "--truth",
+                 truth_, "--video", video_, "--video-offset-s", "1.7"},
+                &code);
+        QCOMPARE(code, 0);
+        QFile tf(truth_);
+        QVERIFY(tf.open(QIODevice::ReadOnly));
+        const QJsonObject truth = QJsonDocument::fromJson(tf.readAll()).object();
+        const double offset = truth["video_offset_s"].toDouble();
+        QVERIFY(std::abs(offset - 1.7) < 0.01);
+        QVERIFY(!truth["phases"].toArray().isEmpty());
+
+        // The operator draws the region around the needle tip in the middle pane.
+        const QJsonObject r = runJson({"sync", run_, video_, "--roi", "240,300,240,180", "--json"}, &code);
+        QCOMPARE(code, 0);
+        QVERIFY2(std::abs(r["offset_s"].toDouble() - offset) < 1.0 / 29.97,
+                 qPrintable(QStringLiteral("found %1 s, truth %2 s").arg(r["offset_s"].toDouble()).arg(offset)));
+        QVERIFY(r["confidence"].toDouble() > 0.7);
+
+        runJson({"sync", run_, video_, "--roi", "1,2,3"}, &code);
+        QCOMPARE(code, 2);
+        runJson({"sync", run_, dir_.filePath("none.avi")}, &code);
+        QCOMPARE(code, 1);
+    }
+
+    // Suggested phases against the simulator's truth: the suggested c (dynamic friction)
+    // intervals lie mostly inside true c.
+    void suggestionsAgainstTruth()
+    {
+        if (run_.isEmpty())
+            QSKIP("needs the simulated run");
+        int code = -1;
+        const QString out = dir_.filePath("fr.labels.csv");
+        runJson({"labels", "suggest", run_, "--out", out}, &code);
+        QCOMPARE(code, 0);
+        const nb::Labels labels = nb::readLabelsFile(out);
+        QFile tf(truth_);
+        QVERIFY(tf.open(QIODevice::ReadOnly));
+        const QJsonArray phases = QJsonDocument::fromJson(tf.readAll()).object()["phases"].toArray();
+        double inside = 0, total = 0;
+        int cCount = 0;
+        for (const nb::Label& l : labels) {
+            if (l.label != "c")
+                continue;
+            ++cCount;
+            total += l.end_s - l.start_s;
+            for (const auto& p : phases) {
+                const QJsonObject o = p.toObject();
+                if (o["label"].toString() != "c")
+                    continue;
+                inside += std::max(0.0, std::min(l.end_s, o["end_s"].toDouble()) - std::max(l.start_s, o["start_s"].toDouble()));
+            }
+        }
+        QVERIFY(cCount >= 5);  // 3 cycles: 6 half-cycles
+        QVERIFY2(inside / total > 0.6, qPrintable(QString::number(inside / total)));
+        for (const nb::Label& l : labels)
+            QVERIFY(l.track == "insertion" || l.track == "withdrawal");
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSync)
+#include "test_sync.moc"
