@@ -1,0 +1,182 @@
+// The review workspace driven like an operator: real simulated run and rendered video,
+// hotkeys, undo/redo, edge drag, frame steps, auto sync; saves a screenshot.
+#include "core/labels.h"
+#include "widgets/label_model.h"
+#include "widgets/review_workspace.h"
+#include "widgets/timeline.h"
+#include "widgets/video_view.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using nb::Label;
+
+class TestReviewWorkspace : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString run_, video_;
+    double truthOffset_ = 0.0;
+
+    static bool has(const nb::Labels& labels, const QString& track, const QString& name, double s, double e)
+    {
+        for (const Label& l : labels)
+            if (l.track == track && l.label == name && std::abs(l.start_s - s) < 1e-6 && std::abs(l.end_s - e) < 1e-6)
+                return true;
+        return false;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        run_ = dir_.filePath("run.csv");
+        video_ = dir_.filePath("run.avi");
+        QProcess p;
+        p.start(QStringLiteral(NB_EXECUTABLE),
+                {"simulate", "--protocol", "friction", "--tissue", "liver7", "--cycles", "2", "--out", run_, "--truth",
+                 dir_.filePath("truth.json"), "--video", video_, "--video-offset-s", "1.2"});
+        QVERIFY(p.waitForFinished(240000));
+        QCOMPARE(p.exitCode(), 0);
+        QFile tf(dir_.filePath("truth.json"));
+        QVERIFY(tf.open(QIODevice::ReadOnly));
+        truthOffset_ = QJsonDocument::fromJson(tf.readAll()).object()["video_offset_s"].toDouble();
+    }
+
+    void labellingWithHotkeysAndUndo()
+    {
+        nb::ReviewWorkspace ws;
+        ws.resize(1200, 800);
+        ws.show();
+        QVERIFY(ws.openRun(run_));
+        auto* model = ws.labelModel();
+        QCOMPARE(model->labels().size(), std::size_t(0));
+
+        ws.setCursorTime(0.2);
+        QTest::keyClick(&ws, Qt::Key_1);  // insertion a starts
+        ws.setCursorTime(0.4);
+        QTest::keyClick(&ws, Qt::Key_2);  // a ends, b1 starts
+        ws.setCursorTime(0.5);
+        QTest::keyClick(&ws, Qt::Key_2);  // b1 ends
+        QCOMPARE(model->labels().size(), std::size_t(2));
+        QVERIFY(has(model->labels(), "insertion", "a", 0.2, 0.4));
+        QVERIFY(has(model->labels(), "insertion", "b1", 0.4, 0.5));
+        // Saved beside the run after every change.
+        QCOMPARE(nb::readLabelsFile(dir_.filePath("run.labels.csv")), model->labels());
+
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(model->labels().size(), std::size_t(1));
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(model->labels().size(), std::size_t(0));
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QTest::keyClick(&ws, Qt::Key_Y, Qt::ControlModifier);
+        QCOMPARE(model->labels().size(), std::size_t(2));
+        QCOMPARE(nb::readLabelsFile(dir_.filePath("run.labels.csv")).size(), std::size_t(2));
+
+        // An overlapping phase is refused and the operator told.
+        ws.setCursorTime(0.3);
+        QTest::keyClick(&ws, Qt::Key_3);
+        ws.setCursorTime(0.45);
+        QTest::keyClick(&ws, Qt::Key_3);
+        QCOMPARE(model->labels().size(), std::size_t(2));
+        QVERIFY(ws.status().contains("overlaps"));
+
+        // Split a at 0.3, delete the right half, undo the delete.
+        ws.setCursorTime(0.3);
+        QTest::keyClick(&ws, Qt::Key_S);
+        QVERIFY(has(model->labels(), "insertion", "a", 0.2, 0.3));
+        QVERIFY(has(model->labels(), "insertion", "a", 0.3, 0.4));
+        ws.setCursorTime(0.35);
+        QTest::keyClick(&ws, Qt::Key_Delete);
+        QVERIFY(!has(model->labels(), "insertion", "a", 0.3, 0.4));
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(has(model->labels(), "insertion", "a", 0.3, 0.4));
+
+        // Withdrawal track and a point-free protocol: key 5 is withdrawal a.
+        ws.setCursorTime(1.0);
+        QTest::keyClick(&ws, Qt::Key_5);
+        ws.setCursorTime(1.2);
+        QTest::keyClick(&ws, Qt::Key_5);
+        QVERIFY(has(model->labels(), "withdrawal", "a", 1.0, 1.2));
+
+        // Drag the end of b1 (0.5 s) to the right with the mouse: one undoable edit.
+        nb::Timeline* tl = ws.timeline();
+        const int y = tl->rowTop("insertion") + tl->rowHeight() / 2;
+        const int x0 = tl->xOf(0.5), x1 = tl->xOf(0.7);
+        QTest::mousePress(tl, Qt::LeftButton, {}, QPoint(x0, y));
+        QTest::mouseMove(tl, QPoint((x0 + x1) / 2, y));
+        QTest::mouseMove(tl, QPoint(x1, y));
+        QTest::mouseRelease(tl, Qt::LeftButton, {}, QPoint(x1, y));
+        bool moved = false;
+        for (const Label& l : model->labels())
+            moved |= l.label == "b1" && std::abs(l.end_s - 0.7) < 0.02 && l.start_s == 0.4;
+        QVERIFY(moved);
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(has(model->labels(), "insertion", "b1", 0.4, 0.5));
+    }
+
+    void videoFollowsTheCursorAndSyncs()
+    {
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QVERIFY(ws.openRun(run_));
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        QSignalSpy shown(&ws, &nb::ReviewWorkspace::frameShown);
+        ws.openVideo(video_);
+        QVERIFY(opened.wait(60000));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == 0, 20000);
+
+        // Offset 0: recording time t shows video frame floor(t·29.97).
+        ws.setCursorTime(1.0);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), 29, 20000);
+        QTest::keyClick(&ws, Qt::Key_Right);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), 30, 20000);
+        QTest::keyClick(&ws, Qt::Key_Right, Qt::ShiftModifier);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), 40, 20000);
+        QTest::keyClick(&ws, Qt::Key_Left);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), 39, 20000);
+
+        // Automatic sync on the region around the needle tip in the middle pane.
+        ws.videoView()->setRoi(QRect(240, 300, 240, 180));
+        QSignalSpy synced(&ws, &nb::ReviewWorkspace::syncFinished);
+        ws.startAutoSync();
+        QVERIFY(synced.wait(120000));
+        QVERIFY(ws.pendingSync().has_value());
+        QVERIFY2(std::abs(ws.pendingSync()->offset_s - truthOffset_) < 1.0 / 29.97,
+                 qPrintable(QString::number(ws.pendingSync()->offset_s)));
+        ws.acceptSync();
+        QVERIFY(std::abs(ws.mapping().offset_s - truthOffset_) < 1.0 / 29.97);
+        ws.setCursorTime(1.0);  // now shows video time 1.0 + offset
+        const int expected = int(std::floor((1.0 + ws.mapping().offset_s) * 29.97 + 1e-9));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), expected, 20000);
+
+        ws.suggestLabels();
+        QVERIFY(ws.labelModel()->labels().size() > 8);
+        ws.setCursorTime(2.3);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == int(std::floor((2.3 + ws.mapping().offset_s) * 29.97 + 1e-9)), 20000);
+        QTest::qWait(200);
+        const QString shots = QStringLiteral(NB_BINARY_DIR "/screenshots");
+        QDir().mkpath(shots);
+        QVERIFY(ws.grab().save(shots + "/review_workspace.png"));
+    }
+
+    void badFilesAreReported()
+    {
+        nb::ReviewWorkspace ws;
+        QVERIFY(!ws.openRun(dir_.filePath("missing.csv")));
+        QVERIFY(ws.status().contains("missing.csv"));
+        QSignalSpy failed(ws.decoder(), &nb::devices::VideoDecoder::failed);
+        ws.openVideo(dir_.filePath("missing.avi"));
+        QVERIFY(failed.wait(20000));
+        QVERIFY(failed.first().first().toString().contains("missing.avi"));
+    }
+};
+
+QTEST_MAIN(TestReviewWorkspace)
+#include "test_review_workspace.moc"

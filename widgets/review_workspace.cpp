@@ -1,0 +1,511 @@
+#include "review_workspace.h"
+
+#include "label_commands.h"
+#include "label_model.h"
+#include "timeline.h"
+#include "video_view.h"
+
+#include "core/label_suggest.h"
+#include "core/labels.h"
+#include "core/run_file.h"
+#include "devices/video/frame_reader.h"
+#include "devices/video/motion_signal.h"
+#include "devices/video/video_error.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTimer>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace nb {
+
+static QString labelsPathFor(const QString& runPath)
+{
+    QString p = runPath;
+    if (p.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
+        p.chop(4);
+    return p + QStringLiteral(".labels.csv");
+}
+
+ReviewWorkspace::ReviewWorkspace(QWidget* parent)
+    : QWidget(parent), model_(new LabelModel(this)), undo_(new QUndoStack(this)), decoder_(new devices::VideoDecoder(this))
+{
+    setFocusPolicy(Qt::StrongFocus);
+    buildUi();
+    connect(decoder_, &devices::VideoDecoder::indexProgress, this, [this](int done, int expected) {
+        video_->setMessage(expected > 0 ? tr("Indexing the video: %1 of %2 frames").arg(done).arg(expected)
+                                        : tr("Indexing the video: %1 frames").arg(done));
+    });
+    connect(decoder_, &devices::VideoDecoder::opened, this, [this](devices::FrameIndexPtr index) {
+        index_ = index;
+        for (const QString& w : index->warnings)
+            showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
+        if (run_.size() == 0)
+            timeline_->setRange(0.0, index->duration_s());
+        requested_ = -1;
+        requestFrameForCursor();
+        emit videoOpened();
+    });
+    connect(decoder_, &devices::VideoDecoder::failed, this, [this](const QString& message) {
+        video_->setMessage(message);
+        showStatus(message);
+    });
+    connect(decoder_, &devices::VideoDecoder::frameReady, this, [this](int n, double t, const QImage& image) {
+        frame_ = n;
+        video_->setFrame(image, n, t);
+        emit frameShown(n);
+    });
+    connect(model_, &LabelModel::labelsChanged, this, [this] {
+        updateShading();
+        saveLabels();
+    });
+    connect(&syncWatcher_, &QFutureWatcher<SyncResult>::finished, this, [this] {
+        try {
+            pendingSync_ = syncWatcher_.result();
+        } catch (const std::exception& e) {
+            pendingSync_.reset();
+            showStatus(tr("Automatic sync failed: %1").arg(QString::fromUtf8(e.what())));
+        }
+        updateSyncUi();
+        emit syncFinished();
+    });
+}
+
+ReviewWorkspace::~ReviewWorkspace() { syncWatcher_.waitForFinished(); }
+
+void ReviewWorkspace::buildUi()
+{
+    video_ = new VideoView(this);
+    video_->setFocusPolicy(Qt::NoFocus);
+    plot_ = new QCustomPlot(this);
+    plot_->setFocusPolicy(Qt::NoFocus);
+    plot_->addGraph();
+    plot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
+    plot_->xAxis->setLabel(tr("recording time [s]"));
+    plot_->yAxis->setLabel(tr("force [N]"));
+    plotCursor_ = new QCPItemStraightLine(plot_);
+    plotCursor_->setPen(QPen(QColor(220, 0, 0), 1.5));
+    plotCursor_->point1->setCoords(0, 0);
+    plotCursor_->point2->setCoords(0, 1);
+    plot_->setMinimumHeight(160);
+    connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) {
+        setCursorTime(plot_->xAxis->pixelToCoord(e->position().x()));
+    });
+
+    timeline_ = new Timeline(model_, undo_, this);
+    timeline_->setFocusPolicy(Qt::NoFocus);
+    connect(timeline_, &Timeline::cursorMoved, this, &ReviewWorkspace::setCursorTime);
+
+    // Transport.
+    auto* transport = new QHBoxLayout;
+    auto button = [&](const QString& text, const QString& tip, auto slot) {
+        auto* b = new QPushButton(text, this);
+        b->setToolTip(tip);
+        b->setFocusPolicy(Qt::NoFocus);
+        connect(b, &QPushButton::clicked, this, slot);
+        transport->addWidget(b);
+        return b;
+    };
+    button(tr("−10"), tr("ten frames back (Shift+Left)"), [this] { stepFrames(-10); });
+    button(tr("−1"), tr("one frame back (Left)"), [this] { stepFrames(-1); });
+    playButton_ = button(tr("Play"), tr("play / pause (Space)"), [this] { setPlaying(!isPlaying()); });
+    button(tr("+1"), tr("one frame forward (Right)"), [this] { stepFrames(1); });
+    button(tr("+10"), tr("ten frames forward (Shift+Right)"), [this] { stepFrames(10); });
+    speedBox_ = new QComboBox(this);
+    speedBox_->setFocusPolicy(Qt::NoFocus);
+    for (double s : {0.1, 0.25, 0.5, 1.0, 1.5, 2.0})
+        speedBox_->addItem(tr("%1×").arg(s), s);
+    speedBox_->setCurrentIndex(3);
+    connect(speedBox_, &QComboBox::currentIndexChanged, this, [this] { speed_ = speedBox_->currentData().toDouble(); });
+    transport->addWidget(speedBox_);
+    auto* jump = new QDoubleSpinBox(this);
+    jump->setRange(-1e6, 1e6);
+    jump->setDecimals(3);
+    jump->setSuffix(tr(" s"));
+    jump->setToolTip(tr("jump to a recording time"));
+    connect(jump, &QDoubleSpinBox::editingFinished, this, [this, jump] { setCursorTime(jump->value()); });
+    transport->addWidget(new QLabel(tr("go to"), this));
+    transport->addWidget(jump);
+    transport->addStretch();
+
+    // Synchronisation.
+    auto* sync = new QHBoxLayout;
+    sync->addWidget(new QLabel(tr("video offset"), this));
+    offsetBox_ = new QDoubleSpinBox(this);
+    offsetBox_->setRange(-3600, 3600);
+    offsetBox_->setDecimals(4);
+    offsetBox_->setSingleStep(0.001);
+    offsetBox_->setSuffix(tr(" s"));
+    offsetBox_->setToolTip(tr("video time = recording time + offset"));
+    connect(offsetBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (std::abs(v - mapping_.offset_s) > 1e-7) {
+            mapping_.offset_s = v;
+            requestFrameForCursor();
+        }
+    });
+    sync->addWidget(offsetBox_);
+    auto syncButton = [&](const QString& text, const QString& tip, auto slot) {
+        auto* b = new QPushButton(text, this);
+        b->setToolTip(tip);
+        b->setFocusPolicy(Qt::NoFocus);
+        connect(b, &QPushButton::clicked, this, slot);
+        sync->addWidget(b);
+        return b;
+    };
+    auto frameDuration = [this] { return index_ ? index_->frameDuration() : 1.0 / 29.97; };
+    syncButton(tr("−1 frame"), tr("nudge the offset by one frame"), [this, frameDuration] {
+        TimelineMapping m = mapping_;
+        m.nudge(-1, frameDuration());
+        setMapping(m);
+    });
+    syncButton(tr("+1 frame"), tr("nudge the offset by one frame"), [this, frameDuration] {
+        TimelineMapping m = mapping_;
+        m.nudge(1, frameDuration());
+        setMapping(m);
+    });
+    syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] {
+        markRecording_ = cursor_;
+        if (markVideo_)
+            setMapping(TimelineMapping::fromEvent(*markRecording_, *markVideo_, mapping_.drift));
+        showStatus(tr("Event marked in the force record at %1 s%2").arg(cursor_, 0, 'f', 3)
+                       .arg(markVideo_ ? tr("; offset set") : tr("; now step the video to it and mark it there")));
+    });
+    syncButton(tr("Mark event in video"), tr("the event is in the frame shown"), [this] {
+        if (!index_ || frame_ < 0)
+            return;
+        markVideo_ = index_->frames[std::size_t(frame_)].time_s;
+        if (markRecording_)
+            setMapping(TimelineMapping::fromEvent(*markRecording_, *markVideo_, mapping_.drift));
+        showStatus(tr("Event marked in the video at %1 s%2").arg(*markVideo_, 0, 'f', 3)
+                       .arg(markRecording_ ? tr("; offset set") : tr("; now mark it in the force record")));
+    });
+    syncButton(tr("Auto sync"), tr("correlate motion in the drawn region with the needle speed"), [this] { startAutoSync(); });
+    syncLabel_ = new QLabel(this);
+    sync->addWidget(syncLabel_);
+    acceptButton_ = syncButton(tr("Accept"), tr("use the offset found"), [this] { acceptSync(); });
+    rejectButton_ = syncButton(tr("Reject"), tr("keep the current offset"), [this] { rejectSync(); });
+    sync->addStretch();
+
+    // Labels.
+    auto* labels = new QHBoxLayout;
+    auto* suggest = new QPushButton(tr("Suggest labels"), this);
+    suggest->setFocusPolicy(Qt::NoFocus);
+    connect(suggest, &QPushButton::clicked, this, &ReviewWorkspace::suggestLabels);
+    labels->addWidget(suggest);
+    keysHelp_ = new QLabel(this);
+    keysHelp_->setWordWrap(true);
+    labels->addWidget(keysHelp_, 1);
+    status_ = new QLabel(this);
+    status_->setWordWrap(true);
+
+    auto* top = new QSplitter(Qt::Horizontal, this);
+    top->addWidget(video_);
+    top->addWidget(plot_);
+    top->setStretchFactor(0, 1);
+    top->setStretchFactor(1, 1);
+    top->setSizes({1000, 1000});  // half each: the force needs as much width as the picture
+    plot_->setMinimumWidth(320);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(top, 1);
+    layout->addLayout(transport);
+    layout->addWidget(timeline_);
+    layout->addLayout(labels);
+    layout->addLayout(sync);
+    layout->addWidget(status_);
+
+    playTimer_ = new QTimer(this);
+    playTimer_->setInterval(15);
+    connect(playTimer_, &QTimer::timeout, this, [this] {
+        setCursorTime(playStartCursor_ + playClock_.elapsed() / 1000.0 * speed_);
+        const double end = run_.size() ? run_.time_s.back()
+                                       : (index_ ? mapping_.toRecording(index_->frames.back().time_s) : 0.0);
+        if (cursor_ >= end)
+            setPlaying(false);
+    });
+    updateSyncUi();
+    model_->setDefinitions(protocolLabelSet(QStringLiteral("friction")));
+    updateShading();
+}
+
+void ReviewWorkspace::showStatus(const QString& text) { status_->setText(text); }
+QString ReviewWorkspace::status() const { return status_->text(); }
+
+bool ReviewWorkspace::openRun(const QString& path)
+{
+    try {
+        Run run = readRunFile(path).run;
+        Labels labels;
+        const QString lp = labelsPathFor(path);
+        if (QFileInfo::exists(lp))
+            labels = readLabelsFile(lp);
+        run_ = std::move(run);
+        runPath_.clear();  // no saving while loading
+        const QString protocol = run_.metadata.value(QStringLiteral("protocol"), QString());
+        model_->setDefinitions(protocolLabelSet(protocol == QLatin1String("friction") ? protocol : QStringLiteral("stiffness")));
+        model_->setLabels(labels);
+        runPath_ = path;
+        undo_->clear();
+        pending_.clear();
+        QVector<double> t(run_.time_s.begin(), run_.time_s.end()), f(run_.force_N.begin(), run_.force_N.end());
+        plot_->graph(0)->setData(t, f, true);
+        plot_->rescaleAxes();
+        plot_->yAxis->scaleRange(1.1);
+        timeline_->setRange(run_.time_s.front(), run_.time_s.back());
+        QStringList keys;
+        for (const LabelDef& d : model_->definitions())
+            keys << QStringLiteral("%1 %2/%3").arg(QKeySequence(d.key).toString(QKeySequence::NativeText), d.track, d.label);
+        keysHelp_->setText(tr("Keys: %1 · S split · Del delete · Ctrl+Z undo").arg(keys.join(QStringLiteral(", "))));
+        updateShading();
+        setCursorTime(run_.time_s.front());
+        showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size()));
+        return true;
+    } catch (const RunFileError& e) {
+        showStatus(e.message());
+        return false;
+    }
+}
+
+void ReviewWorkspace::openVideo(const QString& path)
+{
+    videoPath_ = path;
+    index_.reset();
+    frame_ = -1;
+    video_->setMessage(tr("Indexing the video…"));
+    decoder_->open(path);
+}
+
+void ReviewWorkspace::setCursorTime(double t)
+{
+    if (run_.size())
+        t = std::clamp(t, run_.time_s.front(), run_.time_s.back());
+    cursor_ = t;
+    timeline_->setCursorTime(t);
+    for (auto& [track, p] : pending_)
+        timeline_->setPending(track, p.first, p.second);
+    plotCursor_->point1->setCoords(t, 0);
+    plotCursor_->point2->setCoords(t, 1);
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+    requestFrameForCursor();
+}
+
+void ReviewWorkspace::requestFrameForCursor()
+{
+    if (!index_)
+        return;
+    const int n = index_->frameAt(mapping_.toVideo(cursor_));
+    if (n != requested_) {
+        requested_ = n;
+        decoder_->requestFrame(n);
+    }
+}
+
+void ReviewWorkspace::stepFrames(int n)
+{
+    if (!index_) {
+        setCursorTime(cursor_ + n * 0.002);
+        return;
+    }
+    const int from = requested_ >= 0 ? requested_ : index_->frameAt(mapping_.toVideo(cursor_));
+    const int to = std::clamp(from + n, 0, index_->size() - 1);
+    // Land the cursor inside the frame (its start), so the frame shown is exactly `to`.
+    setCursorTime(mapping_.toRecording(index_->frames[std::size_t(to)].time_s + 1e-6));
+}
+
+void ReviewWorkspace::setPlaying(bool on)
+{
+    if (on) {
+        playStartCursor_ = cursor_;
+        playClock_.start();
+        playTimer_->start();
+    } else {
+        playTimer_->stop();
+    }
+    playButton_->setText(on ? tr("Pause") : tr("Play"));
+}
+
+bool ReviewWorkspace::isPlaying() const { return playTimer_->isActive(); }
+
+void ReviewWorkspace::setSpeed(double factor)
+{
+    speed_ = std::clamp(factor, 0.1, 2.0);
+    playStartCursor_ = cursor_;
+    playClock_.restart();
+}
+
+void ReviewWorkspace::setMapping(const TimelineMapping& m)
+{
+    mapping_ = m;
+    const QSignalBlocker block(offsetBox_);
+    offsetBox_->setValue(m.offset_s);
+    requested_ = -1;
+    requestFrameForCursor();
+}
+
+void ReviewWorkspace::handleLabelKey(int key)
+{
+    const LabelDef* def = model_->definitionForKey(key);
+    if (!def)
+        return;
+    timeline_->setCurrentTrack(def->track);
+    if (def->point) {
+        undo_->push(new AddLabelCommand(model_, Label{def->track, def->label, cursor_, cursor_, {}}));
+        return;
+    }
+    const auto it = pending_.find(def->track);
+    if (it != pending_.end()) {
+        const auto [label, start] = it->second;
+        pending_.erase(it);
+        timeline_->setPending(def->track, {}, std::nullopt);
+        const Label l{def->track, label, std::min(start, cursor_), std::max(start, cursor_), {}};
+        if (l.end_s > l.start_s) {
+            if (model_->canPlace(l))
+                undo_->push(new AddLabelCommand(model_, l));
+            else
+                showStatus(tr("%1 overlaps another phase on %2: not added").arg(label, def->track));
+        }
+        if (label == def->label)
+            return;  // the same key closes the phase
+    }
+    pending_[def->track] = {def->label, cursor_};
+    timeline_->setPending(def->track, def->label, cursor_);
+}
+
+void ReviewWorkspace::keyPressEvent(QKeyEvent* e)
+{
+    const bool ctrl = e->modifiers() & Qt::ControlModifier;
+    const bool shift = e->modifiers() & Qt::ShiftModifier;
+    if (ctrl && e->key() == Qt::Key_Z) {
+        shift ? undo_->redo() : undo_->undo();
+    } else if (ctrl && e->key() == Qt::Key_Y) {
+        undo_->redo();
+    } else if (e->key() == Qt::Key_Left || e->key() == Qt::Key_Right) {
+        stepFrames((e->key() == Qt::Key_Left ? -1 : 1) * (shift ? 10 : 1));
+    } else if (e->key() == Qt::Key_Space) {
+        setPlaying(!isPlaying());
+    } else if (e->key() == Qt::Key_Delete || e->key() == Qt::Key_Backspace) {
+        const QString track = timeline_->currentTrack();
+        const Label* target = model_->intervalAt(track, cursor_);
+        if (!target) {  // the nearest point event within a frame
+            for (const Label& l : model_->labels())
+                if (l.isPoint() && l.track == track && std::abs(l.start_s - cursor_) < 0.02)
+                    target = &l;
+        }
+        if (target)
+            undo_->push(new RemoveLabelCommand(model_, *target));
+    } else if (e->key() == Qt::Key_S && !ctrl) {
+        if (const Label* l = model_->intervalAt(timeline_->currentTrack(), cursor_))
+            undo_->push(new SplitLabelCommand(model_, *l, cursor_));
+    } else if (!ctrl && model_->definitionForKey(e->key())) {
+        handleLabelKey(e->key());
+    } else {
+        QWidget::keyPressEvent(e);
+    }
+}
+
+void ReviewWorkspace::updateShading()
+{
+    // Rectangles behind the force curve, one per labelled phase.
+    for (int i = plot_->itemCount() - 1; i >= 0; --i)
+        if (auto* r = qobject_cast<QCPItemRect*>(plot_->item(i)))
+            plot_->removeItem(r);
+    for (const Label& l : model_->labels()) {
+        if (l.isPoint())
+            continue;
+        auto* r = new QCPItemRect(plot_);
+        r->setLayer(QStringLiteral("background"));
+        r->topLeft->setTypeX(QCPItemPosition::ptPlotCoords);
+        r->topLeft->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        r->bottomRight->setTypeX(QCPItemPosition::ptPlotCoords);
+        r->bottomRight->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        r->topLeft->setCoords(l.start_s, 0.0);
+        r->bottomRight->setCoords(l.end_s, 1.0);
+        QColor c = model_->colorOf(l);
+        c.setAlpha(l.track == QLatin1String("withdrawal") ? 45 : 70);
+        r->setBrush(c);
+        r->setPen(Qt::NoPen);
+    }
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void ReviewWorkspace::saveLabels()
+{
+    if (runPath_.isEmpty())
+        return;
+    try {
+        writeLabelsFile(labelsPathFor(runPath_), model_->labels());
+    } catch (const RunFileError& e) {
+        showStatus(tr("Labels not saved: %1").arg(e.message()));
+    }
+}
+
+void ReviewWorkspace::suggestLabels()
+{
+    if (run_.size() == 0)
+        return;
+    const Labels suggested = nb::suggestLabels(run_);
+    undo_->beginMacro(tr("suggest labels"));
+    for (const Label& l : suggested)
+        if (model_->canPlace(l))
+            undo_->push(new AddLabelCommand(model_, l));
+    undo_->endMacro();
+    showStatus(tr("%1 labels suggested from the data: check and correct them").arg(suggested.size()));
+}
+
+void ReviewWorkspace::startAutoSync()
+{
+    if (!index_ || run_.size() == 0 || syncWatcher_.isRunning()) {
+        showStatus(tr("Open a run and a video first"));
+        return;
+    }
+    syncLabel_->setText(tr("correlating…"));
+    const devices::FrameIndex index = *index_;
+    const QRect roi = video_->roi();
+    const TimeSignal speed = needleSpeed(run_);
+    syncWatcher_.setFuture(QtConcurrent::run([index, roi, speed] {
+        devices::FrameReader reader(index, 8);
+        const devices::MotionSignal m = devices::computeMotionSignal(reader, roi);
+        return synchronise({m.time_s, m.value}, speed);
+    }));
+}
+
+void ReviewWorkspace::updateSyncUi()
+{
+    acceptButton_->setEnabled(pendingSync_.has_value());
+    rejectButton_->setEnabled(pendingSync_.has_value());
+    if (pendingSync_)
+        syncLabel_->setText(tr("found %1 s (confidence %2, r = %3)")
+                                .arg(pendingSync_->offset_s, 0, 'f', 3)
+                                .arg(pendingSync_->confidence, 0, 'f', 2)
+                                .arg(pendingSync_->correlation, 0, 'f', 2));
+    else
+        syncLabel_->clear();
+}
+
+void ReviewWorkspace::acceptSync()
+{
+    if (!pendingSync_)
+        return;
+    setMapping({pendingSync_->offset_s, mapping_.drift});
+    pendingSync_.reset();
+    updateSyncUi();
+}
+
+void ReviewWorkspace::rejectSync()
+{
+    pendingSync_.reset();
+    updateSyncUi();
+}
+
+}  // namespace nb

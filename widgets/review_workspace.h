@@ -1,0 +1,125 @@
+#pragma once
+// Video review: the video, the force plot and the label timeline on one cursor in recording
+// time (video time = recording time + offset, sync.h). Step, play at 0.1x-2x, scrub; set the
+// offset by hand (nudge by a frame), by marking one event in both, or automatically; label
+// phases and events with one hotkey each, undo/redo without limit. Labels are saved with the
+// run (RUN.labels.csv beside RUN.csv) after every change.
+//
+// Keys: 1-4 / 5-8 insertion / withdrawal a, b1, b2, c (friction; press to start a phase,
+// the next key closes it and starts the next, the same key closes it); C P R I events
+// (stiffness); Left/Right one frame (Shift: ten); Space play/pause; S split; Delete delete;
+// Ctrl+Z undo; Ctrl+Shift+Z or Ctrl+Y redo.
+
+#include "core/run.h"
+#include "core/sync.h"
+#include "devices/video/video_decoder.h"
+
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QWidget>
+
+#include <map>
+#include <optional>
+
+class QCPItemStraightLine;
+class QCustomPlot;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QTimer;
+class QUndoStack;
+
+namespace nb {
+
+class LabelModel;
+class Timeline;
+class VideoView;
+
+class ReviewWorkspace : public QWidget {
+    Q_OBJECT
+public:
+    explicit ReviewWorkspace(QWidget* parent = nullptr);
+    ~ReviewWorkspace() override;
+
+    // Both report problems in the workspace (status line) and return false.
+    bool openRun(const QString& path);
+    void openVideo(const QString& path);  // asynchronous: indexing, then the first frame
+
+    double cursorTime() const { return cursor_; }
+    void setCursorTime(double recording_s);
+    void stepFrames(int n);
+    void setPlaying(bool on);
+    bool isPlaying() const;
+    void setSpeed(double factor);  // 0.1 .. 2
+    TimelineMapping mapping() const { return mapping_; }
+    void setMapping(const TimelineMapping& m);
+    int currentFrame() const { return frame_; }
+    QString status() const;
+
+    LabelModel* labelModel() const { return model_; }
+    QUndoStack* undoStack() const { return undo_; }
+    Timeline* timeline() const { return timeline_; }
+    VideoView* videoView() const { return video_; }
+    devices::VideoDecoder* decoder() const { return decoder_; }
+
+    // Applies the labels suggested from the data (one undoable step).
+    void suggestLabels();
+    // Runs automatic synchronisation in the background; the result waits for accept/reject.
+    void startAutoSync();
+    std::optional<SyncResult> pendingSync() const { return pendingSync_; }
+    void acceptSync();
+    void rejectSync();
+
+signals:
+    void frameShown(int index);
+    void videoOpened();
+    void syncFinished();
+
+protected:
+    void keyPressEvent(QKeyEvent* e) override;
+
+private:
+    void buildUi();
+    void handleLabelKey(int key);
+    void updateShading();
+    void showStatus(const QString& text);
+    void saveLabels();
+    void requestFrameForCursor();
+    void updateSyncUi();
+
+    Run run_;
+    QString runPath_;
+    TimelineMapping mapping_;
+    double cursor_ = 0.0;
+    int frame_ = -1, requested_ = -1;
+    devices::FrameIndexPtr index_;
+    QString videoPath_;
+    std::map<QString, std::pair<QString, double>> pending_;  // track -> (label, start)
+    std::optional<double> markRecording_, markVideo_;
+    std::optional<SyncResult> pendingSync_;
+    double speed_ = 1.0;
+    double playStartCursor_ = 0.0;
+    QElapsedTimer playClock_;
+    bool loadingLabels_ = false;
+
+    LabelModel* model_;
+    QUndoStack* undo_;
+    devices::VideoDecoder* decoder_;
+    VideoView* video_ = nullptr;
+    QCustomPlot* plot_ = nullptr;
+    QCPItemStraightLine* plotCursor_ = nullptr;
+    Timeline* timeline_ = nullptr;
+    QTimer* playTimer_ = nullptr;
+    QPushButton* playButton_ = nullptr;
+    QComboBox* speedBox_ = nullptr;
+    QDoubleSpinBox* offsetBox_ = nullptr;
+    QLabel* syncLabel_ = nullptr;
+    QPushButton* acceptButton_ = nullptr;
+    QPushButton* rejectButton_ = nullptr;
+    QLabel* status_ = nullptr;
+    QLabel* keysHelp_ = nullptr;
+    QFutureWatcher<SyncResult> syncWatcher_;
+};
+
+}  // namespace nb

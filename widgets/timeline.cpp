@@ -1,0 +1,179 @@
+#include "timeline.h"
+
+#include "label_commands.h"
+#include "label_model.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QUndoStack>
+
+#include <algorithm>
+
+namespace nb {
+
+Timeline::Timeline(LabelModel* model, QUndoStack* undo, QWidget* parent) : QWidget(parent), model_(model), undo_(undo)
+{
+    setMouseTracking(true);
+    setMinimumHeight(60);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    connect(model_, &LabelModel::labelsChanged, this, [this] {
+        updateGeometry();
+        update();
+    });
+    const QStringList t = model_->tracks();
+    if (!t.isEmpty())
+        currentTrack_ = t.first();
+}
+
+QSize Timeline::sizeHint() const { return {600, 8 + rowHeight() * int(std::max<qsizetype>(1, model_->tracks().size())) + 18}; }
+
+void Timeline::setRange(double s, double e)
+{
+    start_ = s;
+    end_ = e > s ? e : s + 1.0;
+    update();
+}
+
+void Timeline::setCursorTime(double t)
+{
+    cursor_ = t;
+    update();
+}
+
+void Timeline::setCurrentTrack(const QString& track)
+{
+    currentTrack_ = track;
+    update();
+}
+
+void Timeline::setPending(const QString& track, const QString& label, std::optional<double> start)
+{
+    if (start)
+        pending_ = Pending{track, label, *start};
+    else
+        pending_.reset();
+    update();
+}
+
+int Timeline::xOf(double t) const { return kLeft + int((t - start_) / (end_ - start_) * (width() - kLeft - 8)); }
+double Timeline::timeAt(int x) const { return start_ + double(x - kLeft) / std::max(1, width() - kLeft - 8) * (end_ - start_); }
+int Timeline::rowTop(const QString& track) const { return 4 + rowHeight() * int(model_->tracks().indexOf(track)); }
+
+QString Timeline::trackAt(int y) const
+{
+    const QStringList t = model_->tracks();
+    const int i = (y - 4) / rowHeight();
+    return i >= 0 && i < t.size() ? t[i] : QString();
+}
+
+void Timeline::paintEvent(QPaintEvent*)
+{
+    QPainter p(this);
+    p.fillRect(rect(), palette().base());
+    const QStringList tracks = model_->tracks();
+    for (const QString& track : tracks) {
+        const int y = rowTop(track);
+        if (track == currentTrack_)
+            p.fillRect(QRect(0, y, width(), rowHeight()), palette().alternateBase());
+        p.setPen(palette().text().color());
+        p.drawText(QRect(4, y, kLeft - 8, rowHeight()), Qt::AlignVCenter | Qt::AlignLeft, track);
+        p.setPen(palette().mid().color());
+        p.drawLine(kLeft, y + rowHeight() - 1, width(), y + rowHeight() - 1);
+    }
+    p.setClipRect(QRect(kLeft, 0, width() - kLeft, height()));
+    for (const Label& l : model_->labels()) {
+        const Label& shown = drag_ && l == drag_->original ? drag_->current : l;
+        const int y = rowTop(l.track);
+        const QColor c = model_->colorOf(l);
+        if (shown.isPoint()) {
+            const int x = xOf(shown.start_s);
+            p.setPen(QPen(c, 2));
+            p.drawLine(x, y + 2, x, y + rowHeight() - 3);
+            p.drawText(x + 3, y + rowHeight() - 6, l.label);
+        } else {
+            const QRect r(QPoint(xOf(shown.start_s), y + 3), QPoint(xOf(shown.end_s), y + rowHeight() - 4));
+            p.fillRect(r, c.lighter(130));
+            p.setPen(c.darker(140));
+            p.drawRect(r);
+            p.setPen(Qt::black);
+            p.drawText(r, Qt::AlignCenter, l.label);
+        }
+    }
+    if (pending_) {
+        const int y = rowTop(pending_->track);
+        p.setPen(QPen(palette().text().color(), 1, Qt::DashLine));
+        p.drawRect(QRect(QPoint(xOf(pending_->start), y + 3), QPoint(xOf(cursor_), y + rowHeight() - 4)));
+        p.drawText(xOf(pending_->start) + 3, y + rowHeight() - 7, pending_->label + QStringLiteral("…"));
+    }
+    // Time axis.
+    const int axisY = 4 + rowHeight() * int(tracks.size());
+    p.setPen(palette().text().color());
+    const double span = end_ - start_;
+    const double step = span > 60 ? 10 : span > 20 ? 5 : span > 8 ? 1 : span > 2 ? 0.5 : 0.1;
+    for (double t = std::ceil(start_ / step) * step; t <= end_; t += step) {
+        const int x = xOf(t);
+        p.drawLine(x, axisY, x, axisY + 4);
+        p.drawText(x + 2, axisY + 14, QString::number(t, 'g', 4));
+    }
+    p.setPen(QPen(QColor(220, 0, 0), 2));
+    p.drawLine(xOf(cursor_), 0, xOf(cursor_), height());
+}
+
+void Timeline::mousePressEvent(QMouseEvent* e)
+{
+    const QPoint pos = e->position().toPoint();
+    const QString track = trackAt(pos.y());
+    if (!track.isEmpty())
+        setCurrentTrack(track);
+    // An interval edge within 4 px starts a drag.
+    for (const Label& l : model_->labels()) {
+        if (l.isPoint() || l.track != track)
+            continue;
+        for (bool startEdge : {true, false}) {
+            if (std::abs(xOf(startEdge ? l.start_s : l.end_s) - pos.x()) <= 4) {
+                drag_ = Drag{l, startEdge, l};
+                return;
+            }
+        }
+    }
+    scrubbing_ = true;
+    cursor_ = timeAt(pos.x());
+    emit cursorMoved(cursor_);
+    update();
+}
+
+void Timeline::mouseMoveEvent(QMouseEvent* e)
+{
+    const int x = int(e->position().x());
+    if (drag_) {
+        const double t = timeAt(x);
+        if (drag_->startEdge)
+            drag_->current.start_s = std::min(t, drag_->current.end_s - 1e-3);
+        else
+            drag_->current.end_s = std::max(t, drag_->current.start_s + 1e-3);
+        update();
+    } else if (scrubbing_) {
+        cursor_ = timeAt(x);
+        emit cursorMoved(cursor_);
+        update();
+    } else {
+        bool nearEdge = false;
+        for (const Label& l : model_->labels())
+            if (!l.isPoint() && l.track == trackAt(int(e->position().y())))
+                nearEdge |= std::abs(xOf(l.start_s) - x) <= 4 || std::abs(xOf(l.end_s) - x) <= 4;
+        setCursor(nearEdge ? Qt::SizeHorCursor : Qt::ArrowCursor);
+    }
+}
+
+void Timeline::mouseReleaseEvent(QMouseEvent*)
+{
+    if (drag_) {
+        if (!(drag_->current == drag_->original) && model_->canPlace(drag_->current, &drag_->original))
+            undo_->push(new EditLabelCommand(model_, drag_->original, drag_->current));
+        drag_.reset();
+        update();
+    }
+    scrubbing_ = false;
+}
+
+}  // namespace nb

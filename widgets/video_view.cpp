@@ -1,0 +1,102 @@
+#include "video_view.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+
+namespace nb {
+
+VideoView::VideoView(QWidget* parent) : QWidget(parent)
+{
+    setMinimumSize(240, 160);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    message_ = tr("No video. Open one to review it with the force record.");
+}
+
+void VideoView::setFrame(const QImage& image, int index, double time_s)
+{
+    image_ = image;
+    index_ = index;
+    time_ = time_s;
+    message_.clear();
+    update();
+}
+
+void VideoView::setMessage(const QString& text)
+{
+    message_ = text;
+    update();
+}
+
+void VideoView::setRoi(const QRect& roi)
+{
+    roi_ = roi;
+    update();
+    emit roiChanged(roi_);
+}
+
+QRect VideoView::target() const
+{
+    if (image_.isNull())
+        return rect();
+    const QSize s = image_.size().scaled(size(), Qt::KeepAspectRatio);
+    return QRect(QPoint((width() - s.width()) / 2, (height() - s.height()) / 2), s);
+}
+
+QPoint VideoView::toVideo(QPoint w) const
+{
+    const QRect t = target();
+    if (image_.isNull() || t.width() == 0 || t.height() == 0)
+        return {};
+    return {int((w.x() - t.x()) * double(image_.width()) / t.width()), int((w.y() - t.y()) * double(image_.height()) / t.height())};
+}
+
+void VideoView::paintEvent(QPaintEvent*)
+{
+    QPainter p(this);
+    p.fillRect(rect(), Qt::black);
+    if (!message_.isEmpty() || image_.isNull()) {
+        p.setPen(Qt::lightGray);
+        p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, message_);
+        return;
+    }
+    const QRect t = target();
+    p.setRenderHint(QPainter::SmoothPixmapTransform);
+    p.drawImage(t, image_);
+    if (!roi_.isEmpty()) {
+        const double sx = double(t.width()) / image_.width(), sy = double(t.height()) / image_.height();
+        p.setPen(QPen(QColor(255, 200, 0), 1, Qt::DashLine));
+        p.drawRect(QRectF(t.x() + roi_.x() * sx, t.y() + roi_.y() * sy, roi_.width() * sx, roi_.height() * sy));
+    }
+    const QString caption = tr("frame %1   %2 s").arg(index_).arg(time_, 0, 'f', 3);
+    p.setPen(Qt::white);
+    p.fillRect(QRect(t.x() + 4, t.y() + 4, p.fontMetrics().horizontalAdvance(caption) + 8, p.fontMetrics().height() + 4),
+               QColor(0, 0, 0, 150));
+    p.drawText(t.x() + 8, t.y() + 6 + p.fontMetrics().ascent(), caption);
+}
+
+void VideoView::mousePressEvent(QMouseEvent* e)
+{
+    if (image_.isNull())
+        return;
+    dragStart_ = toVideo(e->position().toPoint());
+    dragging_ = true;
+}
+
+void VideoView::mouseMoveEvent(QMouseEvent* e)
+{
+    if (!dragging_)
+        return;
+    roi_ = QRect(dragStart_, toVideo(e->position().toPoint())).normalized() & image_.rect();
+    update();
+}
+
+void VideoView::mouseReleaseEvent(QMouseEvent* e)
+{
+    if (!dragging_)
+        return;
+    dragging_ = false;
+    const QRect r = QRect(dragStart_, toVideo(e->position().toPoint())).normalized() & image_.rect();
+    setRoi(r.width() > 4 && r.height() > 4 ? r : QRect());  // a click clears the region
+}
+
+}  // namespace nb

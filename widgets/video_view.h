@@ -1,0 +1,43 @@
+#pragma once
+// Shows the current video frame, scaled to fit with its aspect kept, with frame number and
+// time; the user drags a rectangle to set the region used for the motion signal (sync).
+
+#include <QImage>
+#include <QRect>
+#include <QWidget>
+
+namespace nb {
+
+class VideoView : public QWidget {
+    Q_OBJECT
+public:
+    explicit VideoView(QWidget* parent = nullptr);
+    void setFrame(const QImage& image, int index, double time_s);
+    void setMessage(const QString& text);  // shown instead of a frame (no video, indexing...)
+    QRect roi() const { return roi_; }     // in video pixels; empty = whole frame
+    void setRoi(const QRect& roi);
+    int frameIndex() const { return index_; }
+    QSize sizeHint() const override { return {480, 320}; }
+
+signals:
+    void roiChanged(const QRect& roi);
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void mousePressEvent(QMouseEvent*) override;
+    void mouseMoveEvent(QMouseEvent*) override;
+    void mouseReleaseEvent(QMouseEvent*) override;
+
+private:
+    QRect target() const;  // where the frame is drawn
+    QPoint toVideo(QPoint widget) const;
+    QImage image_;
+    int index_ = -1;
+    double time_ = 0.0;
+    QString message_;
+    QRect roi_;
+    QPoint dragStart_;
+    bool dragging_ = false;
+};
+
+}  // namespace nb
