@@ -128,7 +128,7 @@ void ReviewWorkspace::buildUi()
     for (double s : {0.1, 0.25, 0.5, 1.0, 1.5, 2.0})
         speedBox_->addItem(tr("%1×").arg(s), s);
     speedBox_->setCurrentIndex(3);
-    connect(speedBox_, &QComboBox::currentIndexChanged, this, [this] { speed_ = speedBox_->currentData().toDouble(); });
+    connect(speedBox_, &QComboBox::currentIndexChanged, this, [this] { setSpeed(speedBox_->currentData().toDouble()); });
     transport->addWidget(speedBox_);
     auto* jump = new QDoubleSpinBox(this);
     jump->setRange(-1e6, 1e6);
@@ -136,6 +136,8 @@ void ReviewWorkspace::buildUi()
     jump->setSuffix(tr(" s"));
     jump->setToolTip(tr("jump to a recording time"));
     connect(jump, &QDoubleSpinBox::editingFinished, this, [this, jump] { setCursorTime(jump->value()); });
+    jumpBox_ = jump;
+    jump->setFocusPolicy(Qt::ClickFocus);  // the workspace keeps the keyboard for the hotkeys
     transport->addWidget(new QLabel(tr("go to"), this));
     transport->addWidget(jump);
     transport->addStretch();
@@ -144,6 +146,7 @@ void ReviewWorkspace::buildUi()
     auto* sync = new QHBoxLayout;
     sync->addWidget(new QLabel(tr("video offset"), this));
     offsetBox_ = new QDoubleSpinBox(this);
+    offsetBox_->setFocusPolicy(Qt::ClickFocus);
     offsetBox_->setRange(-3600, 3600);
     offsetBox_->setDecimals(4);
     offsetBox_->setSingleStep(0.001);
@@ -156,6 +159,19 @@ void ReviewWorkspace::buildUi()
         }
     });
     sync->addWidget(offsetBox_);
+    driftBox_ = new QDoubleSpinBox(this);
+    driftBox_->setFocusPolicy(Qt::ClickFocus);
+    driftBox_->setRange(-10000, 10000);
+    driftBox_->setDecimals(1);
+    driftBox_->setSuffix(tr(" ppm"));
+    driftBox_->setToolTip(tr("clock drift of the video against the force record (video runs fast: positive)"));
+    connect(driftBox_, &QDoubleSpinBox::valueChanged, this, [this](double ppm) {
+        mapping_.drift = ppm * 1e-6;
+        requested_ = -1;
+        requestFrameForCursor();
+    });
+    sync->addWidget(new QLabel(tr("drift"), this));
+    sync->addWidget(driftBox_);
     auto syncButton = [&](const QString& text, const QString& tip, auto slot) {
         auto* b = new QPushButton(text, this);
         b->setToolTip(tip);
@@ -193,6 +209,8 @@ void ReviewWorkspace::buildUi()
     });
     syncButton(tr("Auto sync"), tr("correlate motion in the drawn region with the needle speed"), [this] { startAutoSync(); });
     syncLabel_ = new QLabel(this);
+    syncLabel_->setToolTip(tr("r: correlation of the video motion with the needle speed at the offset found; "
+                              "confidence also weighs agreement with the motion onsets"));
     sync->addWidget(syncLabel_);
     acceptButton_ = syncButton(tr("Accept"), tr("use the offset found"), [this] { acceptSync(); });
     rejectButton_ = syncButton(tr("Reject"), tr("keep the current offset"), [this] { rejectSync(); });
@@ -292,6 +310,10 @@ void ReviewWorkspace::setCursorTime(double t)
         t = std::clamp(t, run_.time_s.front(), run_.time_s.back());
     cursor_ = t;
     timeline_->setCursorTime(t);
+    {
+        const QSignalBlocker block(jumpBox_);
+        jumpBox_->setValue(t);
+    }
     for (auto& [track, p] : pending_)
         timeline_->setPending(track, p.first, p.second);
     plotCursor_->point1->setCoords(t, 0);
@@ -347,8 +369,9 @@ void ReviewWorkspace::setSpeed(double factor)
 void ReviewWorkspace::setMapping(const TimelineMapping& m)
 {
     mapping_ = m;
-    const QSignalBlocker block(offsetBox_);
+    const QSignalBlocker block(offsetBox_), blockDrift(driftBox_);
     offsetBox_->setValue(m.offset_s);
+    driftBox_->setValue(m.drift * 1e6);
     requested_ = -1;
     requestFrameForCursor();
 }

@@ -114,6 +114,8 @@ private:
     QPushButton* playButton_ = nullptr;
     QComboBox* speedBox_ = nullptr;
     QDoubleSpinBox* offsetBox_ = nullptr;
+    QDoubleSpinBox* driftBox_ = nullptr;
+    QDoubleSpinBox* jumpBox_ = nullptr;
     QLabel* syncLabel_ = nullptr;
     QPushButton* acceptButton_ = nullptr;
     QPushButton* rejectButton_ = nullptr;
