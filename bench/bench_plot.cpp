@@ -126,12 +126,15 @@ int main(int argc, char** argv)
     QApplication app(argc, argv);
     const double maxPoints = argc > 1 ? std::atof(argv[1]) : 1e7;
 
+    // Drawn as the workbench draws them: 1 px lines without antialiasing (force_plots.cpp).
     QCustomPlot timePlotWidget;
     timePlotWidget.resize(1200, 600);
+    timePlotWidget.setNotAntialiasedElements(QCP::aePlottables);
     timePlotWidget.addGraph()->setAdaptiveSampling(false);
     timePlotWidget.show();
     QCustomPlot curveWidget;
     curveWidget.resize(1200, 600);
+    curveWidget.setNotAntialiasedElements(QCP::aePlottables);
     new QCPCurve(curveWidget.xAxis, curveWidget.yAxis);
     curveWidget.show();
     app.processEvents();

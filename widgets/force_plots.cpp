@@ -20,6 +20,10 @@ QCustomPlot* makePlot(QWidget* parent, const QString& xLabel, const QString& yLa
     plot->yAxis->setLabel(yLabel);
     plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot->setNoAntialiasingOnDrag(true);
+    // Live curves are thin 1 px lines without antialiasing: the raster engine's fast path.
+    // A reduced force-position curve of a long sine run is made of long zigzags; drawn
+    // antialiased they cost tens of milliseconds per frame.
+    plot->setNotAntialiasedElements(QCP::aePlottables);
     plot->setMinimumSize(240, 150);
     return plot;
 }
@@ -61,15 +65,15 @@ ForcePlots::ForcePlots(QWidget* parent) : QWidget(parent)
     forcePosition_->setObjectName(QStringLiteral("forcePositionPlot"));
 
     forceGraph_ = forceTime_->addGraph();
-    forceGraph_->setPen(QPen(QColor(20, 90, 180), 1.2));
+    forceGraph_->setPen(QPen(QColor(20, 90, 180), 1));
     forceGraph_->setAdaptiveSampling(false);  // reduced here already
     forceGraph_->setName(tr("force"));
     positionGraph_ = positionTime_->addGraph();
-    positionGraph_->setPen(QPen(QColor(30, 140, 60), 1.2));
+    positionGraph_->setPen(QPen(QColor(30, 140, 60), 1));
     positionGraph_->setAdaptiveSampling(false);
     positionGraph_->setName(tr("position"));
     curve_ = new QCPCurve(forcePosition_->xAxis, forcePosition_->yAxis);
-    curve_->setPen(QPen(QColor(120, 40, 160), 1.2));
+    curve_->setPen(QPen(QColor(120, 40, 160), 1));
     curve_->setName(tr("force vs position"));
 
     limitTime_ = makeLimitLine(forceTime_);
