@@ -10,6 +10,7 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <qcustomplot.h>
 
@@ -347,7 +348,13 @@ void CalibrationWizard::findSuspect(const std::vector<CalibrationPoint>& points)
     try {
         const CalibrationFit loo = fitCalibration(others);
         const double miss = points[k].voltage_V - (loo.intercept_V + loo.slope_V_per_g * points[k].mass_g);
-        const double scatter = std::max(loo.rms_V, 1e-5);  // floor: the ADC's resolution, roughly
+        // Scatter below 0.01 % of the calibrated span is ADC quantisation, not a bad point.
+        double lo = points.front().mass_g, hi = lo;
+        for (const CalibrationPoint& p : points) {
+            lo = std::min(lo, p.mass_g);
+            hi = std::max(hi, p.mass_g);
+        }
+        const double scatter = std::max({loo.rms_V, 1e-4 * std::abs(loo.slope_V_per_g) * (hi - lo), 1e-6});
         worstSigmas_ = std::abs(miss) / scatter;
         if (worstSigmas_ > 6.0)
             worst_ = fitRows_[k];
