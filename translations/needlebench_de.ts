@@ -40,7 +40,7 @@
         <translation>zu viele Argumente</translation>
     </message>
     <message>
-        <location filename="../app/commands.cpp" line="+24" />
+        <location filename="../app/commands.cpp" line="+26" />
         <source>print the version</source>
         <translation>die Version ausgeben</translation>
     </message>
@@ -88,6 +88,16 @@
         <location line="+1" />
         <source>write one exact video frame as an image</source>
         <translation>ein exaktes Videobild als Bilddatei schreiben</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>find the video's offset to a run (motion vs needle speed)</source>
+        <translation>den Versatz eines Videos zu einem Lauf finden (Bewegung gegen Nadelgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>suggest phase and event labels for a run</source>
+        <translation>Phasen- und Ereignis-Labels für einen Lauf vorschlagen</translation>
     </message>
     <message>
         <location line="+17" />
@@ -808,6 +818,14 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>nb::AddLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="+13" />
+        <source>add %1</source>
+        <translation>%1 hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
         <location filename="../widgets/analysis/analysis_workspace.cpp" line="+24" />
@@ -898,7 +916,7 @@ Befehle:
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+25" />
+        <location filename="../widgets/calibration_wizard.cpp" line="+26" />
         <source>Calibrate force sensor – %1</source>
         <translation>Kraftsensor kalibrieren – %1</translation>
     </message>
@@ -1320,7 +1338,7 @@ Befehle:
         <translation>Zurückziehen (nicht aufgezeichnet)</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+12" />
         <source>running</source>
         <translation>läuft</translation>
     </message>
@@ -1412,9 +1430,17 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>nb::EditLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="+15" />
+        <source>edit %1</source>
+        <translation>%1 bearbeiten</translation>
+    </message>
+</context>
+<context>
     <name>nb::ForcePlots</name>
     <message>
-        <location filename="../widgets/force_plots.cpp" line="+49" />
+        <location filename="../widgets/force_plots.cpp" line="+60" />
         <location line="+1" />
         <source>time [s]</source>
         <translation>Zeit [s]</translation>
@@ -1488,6 +1514,34 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>nb::LabelModel</name>
+    <message>
+        <location filename="../widgets/label_model.cpp" line="+55" />
+        <source>track</source>
+        <translation>Spur</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>start [s]</source>
+        <translation>Beginn [s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>end [s]</source>
+        <translation>Ende [s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>comment</source>
+        <translation>Kommentar</translation>
+    </message>
+</context>
+<context>
     <name>nb::MainWindow</name>
     <message>
         <location filename="../app/main_window.cpp" line="+57" />
@@ -1550,7 +1604,7 @@ Befehle:
         <translation>Kraftgrenze</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+49" />
         <source>&amp;Session</source>
         <translation>&amp;Sitzung</translation>
     </message>
@@ -1710,11 +1764,11 @@ Befehle:
     </message>
     <message>
         <location line="+54" />
-        <source>%1 Hz · %2 samples · dropped %3 · %4 frames drawn</source>
-        <translation>%1 Hz · %2 Messwerte · %3 verloren · %4 Bilder gezeichnet</translation>
+        <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
+        <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+19" />
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
@@ -1739,9 +1793,304 @@ Befehle:
         <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
     </message>
     <message>
-        <location line="-277" />
+        <location line="-280" />
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
+    </message>
+</context>
+<context>
+    <name>nb::RemoveLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="-8" />
+        <source>delete %1</source>
+        <translation>%1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>nb::ReviewWorkspace</name>
+    <message>
+        <location filename="../widgets/review_workspace.cpp" line="+48" />
+        <source>Indexing the video: %1 of %2 frames</source>
+        <translation>Video wird indiziert: %1 von %2 Bildern</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Indexing the video: %1 frames</source>
+        <translation>Video wird indiziert: %1 Bilder</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Automatic sync failed: %1</source>
+        <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>recording time [s]</source>
+        <translation>Aufzeichnungszeit [s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>force [N]</source>
+        <translation>Kraft [N]</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>−10</source>
+        <translation>−10</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>ten frames back (Shift+Left)</source>
+        <translation>zehn Bilder zurück (Umschalt+Links)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>−1</source>
+        <translation>−1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>one frame back (Left)</source>
+        <translation>ein Bild zurück (Links)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+234" />
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location line="-234" />
+        <source>play / pause (Space)</source>
+        <translation>Abspielen / Pause (Leertaste)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>+1</source>
+        <translation>+1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>one frame forward (Right)</source>
+        <translation>ein Bild vor (Rechts)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>+10</source>
+        <translation>+10</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>ten frames forward (Shift+Right)</source>
+        <translation>zehn Bilder vor (Umschalt+Rechts)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <location line="+17" />
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="-16" />
+        <source>jump to a recording time</source>
+        <translation>zu einer Aufzeichnungszeit springen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>go to</source>
+        <translation>gehe zu</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>video offset</source>
+        <translation>Videoversatz</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>video time = recording time + offset</source>
+        <translation>Videozeit = Aufzeichnungszeit + Versatz</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source> ppm</source>
+        <translation> ppm</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>clock drift of the video against the force record (video runs fast: positive)</source>
+        <translation>Taktdrift des Videos gegenüber der Kraftaufzeichnung (Video läuft schneller: positiv)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>drift</source>
+        <translation>Drift</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>−1 frame</source>
+        <translation>−1 Bild</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <location line="+5" />
+        <source>nudge the offset by one frame</source>
+        <translation>den Versatz um ein Bild verschieben</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+1 frame</source>
+        <translation>+1 Bild</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Mark event in force</source>
+        <translation>Ereignis in der Kraft markieren</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>the event is at the cursor in the force record</source>
+        <translation>das Ereignis liegt am Cursor in der Kraftaufzeichnung</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Event marked in the force record at %1 s%2</source>
+        <translation>Ereignis in der Kraftaufzeichnung bei %1 s markiert%2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+9" />
+        <source>; offset set</source>
+        <translation>; Versatz gesetzt</translation>
+    </message>
+    <message>
+        <location line="-9" />
+        <source>; now step the video to it and mark it there</source>
+        <translation>; jetzt das Video dorthin schalten und es dort markieren</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Mark event in video</source>
+        <translation>Ereignis im Video markieren</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>the event is in the frame shown</source>
+        <translation>das Ereignis ist im gezeigten Bild</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Event marked in the video at %1 s%2</source>
+        <translation>Ereignis im Video bei %1 s markiert%2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>; now mark it in the force record</source>
+        <translation>; jetzt in der Kraftaufzeichnung markieren</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Auto sync</source>
+        <translation>Automatisch synchronisieren</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>correlate motion in the drawn region with the needle speed</source>
+        <translation>die Bewegung im markierten Bereich mit der Nadelgeschwindigkeit korrelieren</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>r: correlation of the video motion with the needle speed at the offset found; confidence also weighs agreement with the motion onsets</source>
+        <translation>r: Korrelation der Videobewegung mit der Nadelgeschwindigkeit beim gefundenen Versatz; die Konfidenz berücksichtigt auch die Übereinstimmung mit den Bewegungsanfängen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Accept</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>use the offset found</source>
+        <translation>den gefundenen Versatz verwenden</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Reject</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>keep the current offset</source>
+        <translation>den aktuellen Versatz behalten</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Suggest labels</source>
+        <translation>Labels vorschlagen</translation>
+    </message>
+    <message>
+        <location line="+66" />
+        <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
+        <translation>Tasten: %1 · S teilen · Entf löschen · Strg+Z rückgängig</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1: %2 samples, %3 labels</source>
+        <translation>%1: %2 Messwerte, %3 Labels</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Indexing the video…</source>
+        <translation>Video wird indiziert…</translation>
+    </message>
+    <message>
+        <location line="+54" />
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="+42" />
+        <source>%1 overlaps another phase on %2: not added</source>
+        <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
+    </message>
+    <message>
+        <location line="+73" />
+        <source>Labels not saved: %1</source>
+        <translation>Labels nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>suggest labels</source>
+        <translation>Labels vorschlagen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 labels suggested from the data: check and correct them</source>
+        <translation>%1 Labels aus den Daten vorgeschlagen: bitte prüfen und korrigieren</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Open a run and a video first</source>
+        <translation>Zuerst einen Lauf und ein Video öffnen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>correlating…</source>
+        <translation>korreliere…</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>found %1 s (confidence %2, r = %3)</source>
+        <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
 </context>
 <context>
@@ -1836,6 +2185,27 @@ Befehle:
         <location line="+1" />
         <source>none saved in this session (the sensor's nominal one is used)</source>
         <translation>keine in dieser Sitzung gespeichert (die Nennkalibrierung des Sensors wird verwendet)</translation>
+    </message>
+</context>
+<context>
+    <name>nb::SplitLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="+18" />
+        <source>split %1</source>
+        <translation>%1 teilen</translation>
+    </message>
+</context>
+<context>
+    <name>nb::VideoView</name>
+    <message>
+        <location filename="../widgets/video_view.cpp" line="+12" />
+        <source>No video. Open one to review it with the force record.</source>
+        <translation>Kein Video. Öffnen Sie eines, um es mit der Kraftaufzeichnung zu sichten.</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>frame %1   %2 s</source>
+        <translation>Bild %1   %2 s</translation>
     </message>
 </context>
 <context>
@@ -1970,7 +2340,7 @@ Befehle:
     </message>
     <message>
         <location line="+2" />
-        <location filename="../app/cmd_simulate.cpp" line="+88" />
+        <location filename="../app/cmd_simulate.cpp" line="+94" />
         <source>--out RUN.csv is required</source>
         <translation>--out LAUF.csv ist erforderlich</translation>
     </message>
@@ -2154,6 +2524,7 @@ Befehle:
         <location filename="../app/cmd_fit.cpp" line="+46" />
         <location line="+49" />
         <location line="+99" />
+        <location filename="../app/cmd_sync.cpp" line="+28" />
         <location filename="../app/cmd_video.cpp" line="+46" />
         <location line="+36" />
         <source>print JSON</source>
@@ -2511,7 +2882,12 @@ Befehle:
         <translation>unbekanntes Protokoll '%1' (%2)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+10" />
+        <source>--video-offset-s wants seconds between 0 and 600</source>
+        <translation>--video-offset-s erwartet Sekunden zwischen 0 und 600</translation>
+    </message>
+    <message>
+        <location line="+11" />
         <source>unknown tissue '%1' (%2)</source>
         <translation>unbekanntes Gewebe '%1' (%2)</translation>
     </message>
@@ -2576,7 +2952,7 @@ Befehle:
         <translation>der Lauf wurde nicht innerhalb von 30 Minuten fertig</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+48" />
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -2695,11 +3071,129 @@ Befehle:
         <translation>Bild %1 bei %2 s nach %3 geschrieben
 </translation>
     </message>
+    <message>
+        <location filename="../app/cmd_labels.cpp" line="+18" />
+        <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
+        <translation>Labels eines Laufs. Aktionen: suggest (Phasen oder Ereignisse aus den Daten).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>suggest</source>
+        <translation>suggest</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location filename="../app/cmd_sync.cpp" line="-6" />
+        <source>the run file</source>
+        <translation>die Laufdatei</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>labels file to write (default RUN.labels.csv)</source>
+        <translation>zu schreibende Label-Datei (Standard LAUF.labels.csv)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>print the labels as JSON</source>
+        <translation>die Labels als JSON ausgeben</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>needlebench labels: unknown action '%1' (suggest)
+
+</source>
+        <translation>needlebench labels: unbekannte Aktion '%1' (suggest)
+
+</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>%1 labels suggested, written to %2
+</source>
+        <translation>%1 Labels vorgeschlagen, nach %2 geschrieben
+</translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_sync.cpp" line="-1" />
+        <source>Find the video's offset to the force record (video time = recording time + offset).</source>
+        <translation>Den Versatz des Videos zur Kraftaufzeichnung finden (Videozeit = Aufzeichnungszeit + Versatz).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the video of the run</source>
+        <translation>das Video des Laufs</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>region of the picture that moves with the needle, in pixels</source>
+        <translation>Bildbereich, der sich mit der Nadel bewegt, in Pixeln</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>largest offset to consider, seconds (default 20)</source>
+        <translation>größter zu prüfender Versatz in Sekunden (Standard 20)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
+
+</source>
+        <translation>needlebench sync: --roi erwartet x,y,w,h in ganzen Pixeln, w und h &gt; 0
+
+</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>needlebench sync: --max-offset wants a positive number of seconds
+</source>
+        <translation>needlebench sync: --max-offset erwartet eine positive Anzahl Sekunden
+</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
+</source>
+        <translation>needlebench sync: --roi %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6
+</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>offset:      %1 s (video time minus recording time)
+</source>
+        <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
+</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>confidence:  %1
+</source>
+        <translation>Konfidenz:   %1
+</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>correlation: %1
+</source>
+        <translation>Korrelation: %1
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>onsets say:  %1 s
+</source>
+        <translation>Bewegungsanfänge: %1 s
+</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>cannot synchronise: %1</source>
+        <translation>Synchronisierung nicht möglich: %1</translation>
+    </message>
 </context>
 <context>
     <name>nb::cli::OptionSet</name>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-294" />
+        <location filename="../app/cmd_simulate.cpp" line="-318" />
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -2777,6 +3271,16 @@ Befehle:
         <location line="+1" />
         <source>the run file to write</source>
         <translation>die zu schreibende Laufdatei</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)</source>
+        <translation>auch die Bildgebungsansicht rendern (29,97 Bilder/s; .avi, .mkv oder .mp4)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the video starts this long before the recording (default 0)</source>
+        <translation>das Video beginnt so lange vor der Aufzeichnung (Standard 0)</translation>
     </message>
 </context>
 <context>
@@ -2902,7 +3406,7 @@ Befehle:
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+45" />
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
@@ -3128,7 +3632,7 @@ Befehle:
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+21" />
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation>Bild %1 konnte nicht dekodiert werden (Datei abgeschnitten oder verändert?)</translation>
     </message>
@@ -3330,7 +3834,7 @@ Befehle:
 <context>
     <name>nb::devices::sim</name>
     <message>
-        <location filename="../devices/sim/imaging_render.cpp" line="+135" />
+        <location filename="../devices/sim/imaging_render.cpp" line="+137" />
         <source>the run has too few samples to render</source>
         <translation>der Lauf hat zu wenige Messwerte zum Zeichnen</translation>
     </message>

@@ -40,7 +40,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/commands.cpp" line="+24"/>
+        <location filename="../app/commands.cpp" line="+26"/>
         <source>print the version</source>
         <translation type="unfinished"></translation>
     </message>
@@ -87,6 +87,16 @@
     <message>
         <location line="+1"/>
         <source>write one exact video frame as an image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find the video&apos;s offset to a run (motion vs needle speed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>suggest phase and event labels for a run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -797,6 +807,14 @@ Commands:
     </message>
 </context>
 <context>
+    <name>nb::AddLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="+13"/>
+        <source>add %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
         <location filename="../widgets/analysis/analysis_workspace.cpp" line="+24"/>
@@ -886,7 +904,7 @@ Commands:
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+25"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+26"/>
         <source>Calibrate force sensor – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1308,7 +1326,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>running</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1400,9 +1418,17 @@ Commands:
     </message>
 </context>
 <context>
+    <name>nb::EditLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="+15"/>
+        <source>edit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>nb::ForcePlots</name>
     <message>
-        <location filename="../widgets/force_plots.cpp" line="+49"/>
+        <location filename="../widgets/force_plots.cpp" line="+60"/>
         <location line="+1"/>
         <source>time [s]</source>
         <translation type="unfinished"></translation>
@@ -1476,6 +1502,34 @@ Commands:
     </message>
 </context>
 <context>
+    <name>nb::LabelModel</name>
+    <message>
+        <location filename="../widgets/label_model.cpp" line="+55"/>
+        <source>track</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>label</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>start [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>end [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>comment</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>nb::MainWindow</name>
     <message>
         <location filename="../app/main_window.cpp" line="+57"/>
@@ -1538,7 +1592,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+49"/>
         <source>&amp;Session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1700,11 +1754,11 @@ Commands:
     </message>
     <message>
         <location line="+54"/>
-        <source>%1 Hz · %2 samples · dropped %3 · %4 frames drawn</source>
+        <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1729,8 +1783,303 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-280"/>
         <source>&amp;Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::RemoveLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="-8"/>
+        <source>delete %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::ReviewWorkspace</name>
+    <message>
+        <location filename="../widgets/review_workspace.cpp" line="+48"/>
+        <source>Indexing the video: %1 of %2 frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Indexing the video: %1 frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Automatic sync failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>recording time [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force [N]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>−10</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ten frames back (Shift+Left)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>−1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>one frame back (Left)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+234"/>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-234"/>
+        <source>play / pause (Space)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>one frame forward (Right)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+10</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ten frames forward (Shift+Right)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+17"/>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>jump to a recording time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>go to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>video offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>video time = recording time + offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source> ppm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clock drift of the video against the force record (video runs fast: positive)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>drift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>−1 frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+5"/>
+        <source>nudge the offset by one frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>+1 frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Mark event in force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the event is at the cursor in the force record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Event marked in the force record at %1 s%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+9"/>
+        <source>; offset set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-9"/>
+        <source>; now step the video to it and mark it there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mark event in video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the event is in the frame shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Event marked in the video at %1 s%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; now mark it in the force record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Auto sync</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>correlate motion in the drawn region with the needle speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>r: correlation of the video motion with the needle speed at the offset found; confidence also weighs agreement with the motion onsets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Accept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>use the offset found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reject</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>keep the current offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Suggest labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 samples, %3 labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Indexing the video…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>%1 overlaps another phase on %2: not added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>Labels not saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>suggest labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 labels suggested from the data: check and correct them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Open a run and a video first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>correlating…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1825,6 +2174,27 @@ Commands:
     <message>
         <location line="+1"/>
         <source>none saved in this session (the sensor&apos;s nominal one is used)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::SplitLabelCommand</name>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="+18"/>
+        <source>split %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::VideoView</name>
+    <message>
+        <location filename="../widgets/video_view.cpp" line="+12"/>
+        <source>No video. Open one to review it with the force record.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>frame %1   %2 s</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1960,7 +2330,7 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+88"/>
+        <location filename="../app/cmd_simulate.cpp" line="+94"/>
         <source>--out RUN.csv is required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2143,6 +2513,7 @@ Commands:
         <location filename="../app/cmd_fit.cpp" line="+46"/>
         <location line="+49"/>
         <location line="+99"/>
+        <location filename="../app/cmd_sync.cpp" line="+28"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -2479,7 +2850,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
+        <source>--video-offset-s wants seconds between 0 and 600</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>unknown tissue &apos;%1&apos; (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2544,7 +2920,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+48"/>
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2651,11 +3027,118 @@ Commands:
 </source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../app/cmd_labels.cpp" line="+18"/>
+        <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>suggest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_sync.cpp" line="-6"/>
+        <source>the run file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>labels file to write (default RUN.labels.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>print the labels as JSON</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
+
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 labels suggested, written to %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_sync.cpp" line="-1"/>
+        <source>Find the video&apos;s offset to the force record (video time = recording time + offset).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the video of the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>region of the picture that moves with the needle, in pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>largest offset to consider, seconds (default 20)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
+
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>needlebench sync: --max-offset wants a positive number of seconds
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>offset:      %1 s (video time minus recording time)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>confidence:  %1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>correlation: %1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>onsets say:  %1 s
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>cannot synchronise: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::cli::OptionSet</name>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-294"/>
+        <location filename="../app/cmd_simulate.cpp" line="-318"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2732,6 +3215,16 @@ Commands:
     <message>
         <location line="+1"/>
         <source>the run file to write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the video starts this long before the recording (default 0)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2858,7 +3351,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+45"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3084,7 +3577,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+21"/>
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3286,7 +3779,7 @@ Commands:
 <context>
     <name>nb::devices::sim</name>
     <message>
-        <location filename="../devices/sim/imaging_render.cpp" line="+135"/>
+        <location filename="../devices/sim/imaging_render.cpp" line="+137"/>
         <source>the run has too few samples to render</source>
         <translation type="unfinished"></translation>
     </message>
