@@ -21,10 +21,11 @@ Permission permission(Control control, const InterlockState& s)
     if (control == Control::StopMotion)
         return s.moving ? allow() : deny(tr("The stage is not moving."));
 
-    if (!s.devicesRunning)
-        return deny(tr("The devices are not running."));
+    // The fault first: it is the cause when the devices have stopped as well.
     if (!s.fault.isEmpty() && control != Control::EndRun && control != Control::ForceLimit)
         return deny(tr("Device fault: %1").arg(s.fault));
+    if (!s.devicesRunning)
+        return deny(tr("The devices are not running."));
 
     switch (control) {
     case Control::Enable:

@@ -192,6 +192,31 @@ private slots:
         QVERIFY(w.plots()->eventCount() >= 1);  // the trip is marked on the plots
     }
 
+    void sensorUnpluggedDuringARun()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setMotion(w, 5.0, 60.0);
+        prepare(w);
+        nb::ControlPanel* p = w.controlPanel();
+        QTest::mouseClick(p->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.plots()->sampleCount() > 500, 20000);
+        w.engine()->rig()->injectFault(nb::devices::sim::Fault::SensorSilent);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("fault"));
+        QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().fault.isEmpty(), 20000);
+        // What was recorded is kept and readable; nothing but the E-stop invites a new run.
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QVERIFY(r.run.size() >= 500);
+        QVERIFY(!p->button(Control::StartInsertion)->isEnabled());
+        QVERIFY(p->button(Control::StartInsertion)->toolTip().contains(QStringLiteral("fault")));
+        QVERIFY(p->button(Control::EmergencyStop)->isEnabled());
+        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("fault"));
+    }
+
     void calibrationWizardOnTheSimulatedSensor()
     {
         QTemporaryDir tmp;
