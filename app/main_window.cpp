@@ -408,6 +408,8 @@ void MainWindow::drain()
 void MainWindow::onStatus(const devices::EngineStatus& s)
 {
     panel_->setStatus(s);
+    if (wizard_)
+        wizard_->setDeviceTime(s.deviceTime_s);
     statusLabel_->setText(tr("%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn")
                               .arg(engine_->deviceDescription())
                               .arg(s.rateHz, 0, 'f', 0)

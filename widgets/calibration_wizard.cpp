@@ -223,6 +223,7 @@ void CalibrationWizard::beginRow(int row)
     const bool was = measuringRow_ >= 0;
     measuringRow_ = row;
     startTime_ = -1.0;
+    notBefore_ = deviceNow_;
     sum_ = 0.0;
     count_ = 0;
     table_->selectRow(row);
@@ -236,7 +237,7 @@ void CalibrationWizard::beginRow(int row)
 
 void CalibrationWizard::addSample(double time_s, double volts)
 {
-    if (measuringRow_ < 0)
+    if (measuringRow_ < 0 || time_s < notBefore_)
         return;
     if (startTime_ < 0.0)
         startTime_ = time_s;

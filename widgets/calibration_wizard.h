@@ -34,6 +34,9 @@ public:
 
     // The live stream: device time and voltage of each sample.
     void addSample(double time_s, double volts);
+    // The device clock now (from the engine's status): samples older than the moment a mass
+    // was hung, still queued in the live ring, are not averaged into it.
+    void setDeviceTime(double time_s) { deviceNow_ = time_s; }
 
     bool isMeasuring() const { return measuringRow_ >= 0; }
     int rowCount() const;
@@ -84,6 +87,8 @@ private:
     int measuringRow_ = -1;
     bool all_ = false;
     double startTime_ = -1.0;
+    double deviceNow_ = -1.0;
+    double notBefore_ = -1.0;
     double sum_ = 0.0;
     int count_ = 0;
     bool hasFit_ = false;
