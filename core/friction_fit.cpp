@@ -14,6 +14,9 @@ namespace nb {
 namespace {
 
 
+// Samples after a sticking stretch still searched for its break-away force.
+constexpr std::size_t kBreakAwaySamples = 2;
+
 struct Extremes {
     double max = -INFINITY, min = INFINITY;
 };
@@ -142,35 +145,50 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QS
     fit.positiveSamples = pos;
     fit.negativeSamples = neg;
 
-    // Static friction: the extreme friction force in each sticking stretch (phase a, else
-    // the zero-velocity band around a turning point), averaged over stretches. A 3-sample
-    // average only: the stretches are short and a wider window would flatten the peaks.
+    // Static friction (models.md sec. 5): D_p is the force at which the tissue lets go when
+    // motion starts in the + direction, D_n when it starts in the - direction. So each
+    // sticking stretch (phase a, else the zero-velocity band around a turning point) gives
+    // its extreme in the direction of the motion that follows it; the other extreme is the
+    // force left over from the previous direction, not a static limit. A 3-sample average
+    // only: the stretches are short and a wider window would flatten the peaks.
     const std::vector<double> f3 = movingAverage(run.force_N, 3);
-    std::vector<double> maxima, minima;
-    std::optional<Extremes> current;
-    auto close = [&] {
-        if (current) {
-            maxima.push_back(current->max);
-            minima.push_back(current->min);
-            current.reset();
-        }
+    const std::size_t last = n - trim;
+    auto sticking = [&](std::size_t i) {
+        return usePhases ? phases[qsizetype(i)] == QLatin1String("a") : std::fabs(v[i]) < half;
     };
-    for (std::size_t i = trim; i < n - trim; ++i) {
-        const bool sticking = usePhases ? phases[qsizetype(i)] == QLatin1String("a") : std::fabs(v[i]) < half;
-        if (!sticking) {
-            close();
+    std::vector<double> breakawayP, breakawayN;
+    for (std::size_t i = trim; i < last;) {
+        if (!sticking(i)) {
+            ++i;
             continue;
         }
-        if (!current)
-            current = Extremes{};
-        const double g = f3[i] - mass * a[i];
-        current->max = std::max(current->max, g);
-        current->min = std::min(current->min, g);
+        Extremes e;
+        for (; i < last && sticking(i); ++i) {
+            const double g = f3[i] - mass * a[i];
+            e.max = std::max(e.max, g);
+            e.min = std::min(e.min, g);
+        }
+        // A stretch cut off by the end of the data never reached its break-away.
+        if (i == last)
+            break;
+        // The break-away is the stretch's end: the force there, the extreme, lands on
+        // either side of the label boundary (and the 3-sample average needs both sides).
+        for (std::size_t j = i; j < std::min(last, i + kBreakAwaySamples); ++j) {
+            const double g = f3[j] - mass * a[j];
+            e.max = std::max(e.max, g);
+            e.min = std::min(e.min, g);
+        }
+        // The direction that follows: the first sample after the stretch moving clearly.
+        std::size_t k = i;
+        while (k < last && (std::fabs(v[k]) < half || v[k] == 0.0))
+            ++k;
+        if (k == last)
+            break;
+        (v[k] > 0.0 ? breakawayP : breakawayN).push_back(v[k] > 0.0 ? e.max : e.min);
     }
-    close();
-    if (!maxima.empty()) {
-        fit.model.Dp_N = mean(maxima);
-        fit.model.Dn_N = mean(minima);
+    if (!breakawayP.empty() && !breakawayN.empty()) {
+        fit.model.Dp_N = mean(breakawayP);
+        fit.model.Dn_N = mean(breakawayN);
         fit.staticSource = usePhases ? QStringLiteral("phase a") : QStringLiteral("velocity band");
     } else {
         fit.staticSource = QStringLiteral("none");

@@ -10,6 +10,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
+#include <random>
 
 using namespace nb;
 
@@ -25,6 +26,46 @@ QString describe(const FrictionFit& f)
         .arg(f.model.Dp_N)
         .arg(f.model.Dn_N)
         .arg(f.massEstimate_kg.value_or(-99));
+}
+
+// A run shaped like the thesis's and the simulated rig's (Figs. 31, 32), unlike
+// synthetic::makeFriction whose stick straddles the turning point: the needle slides up to
+// each turning point, then sticks (phase a) while the force goes from the previous
+// direction's sliding force to the new direction's static limit, reached where the tissue
+// lets go once the needle moves at `releaseSpeed`. So each stretch reaches only the limit
+// of the motion that follows it.
+Run breakAwayRun(const KarnoppModel& k, double releaseSpeed_m_s, std::uint32_t seed)
+{
+    const double A = 10.0, f = 0.5, rate = 500.0, w = 2.0 * M_PI * f;
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, 0.004);
+    Run run;
+    auto& phase = run.addTextColumn(QStringLiteral("phase"));
+    double held = 0.0;  // force when the stretch began
+    for (int i = 0; i <= int(8.0 / f * rate); ++i) {
+        const double t = i / rate;
+        const double x = A * std::sin(w * t);
+        const double v = A * w * std::cos(w * t) / 1000.0;
+        const double acc = -A * w * w * std::sin(w * t) / 1000.0;
+        // Turning points of the sine: phase a from there until |v| reaches the release speed.
+        const double sinceTurn = std::fmod(t + 0.25 / f, 0.5 / f);
+        const double stickTime = std::asin(releaseSpeed_m_s / (A * w / 1000.0)) / w;
+        const bool sticking = t > 0.25 / f && sinceTurn < stickTime;
+        double friction;
+        if (sticking) {
+            const double limit = v > 0.0 ? k.Dp_N : k.Dn_N;
+            friction = held + (limit - held) * std::sin(w * sinceTurn) / std::sin(w * stickTime);
+        } else {
+            friction = v > 0.0 ? k.Cp_N + k.bp_Ns_per_m * v : -k.Cn_N + k.bn_Ns_per_m * v;
+            held = v > 0.0 ? k.Cp_N : -k.Cn_N;
+        }
+        run.time_s.push_back(t);
+        run.position_mm.push_back(std::round(x / 0.0015) * 0.0015);
+        run.force_N.push_back(kNeedleHolderMass_kg * acc + friction + noise(rng));
+        phase.push_back(sticking ? QStringLiteral("a") : QStringLiteral("c"));
+    }
+    run.metadata.set(QStringLiteral("frequency_hz"), f);
+    return run;
 }
 }  // namespace
 
@@ -136,6 +177,29 @@ private slots:
         QVERIFY(rel(band.model.Dp_N, p.model.Dp_N) < 0.05 && rel(band.model.Dn_N, p.model.Dn_N) < 0.05);
         QVERIFY2(std::fabs(band.frequency_hz - 0.2) < 0.004, qPrintable(QString::number(band.frequency_hz)));
         QVERIFY(band.perLength.Dn_N_per_m < 0.0);
+    }
+    void staticFrictionPerDirection()
+    {
+        // Asymmetric limits: each must come from the break-aways in its own direction.
+        // Averaging both extremes of every stretch read Dp 17 % and Dn 26 % low here.
+        const KarnoppModel k{0.20, 0.22, 4.0, 3.5, 0.30, -0.45, 0.005};
+        FrictionOptions o;
+        o.thickness_mm = 20.0;
+        for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+            const Run run = breakAwayRun(k, 0.010, seed);
+            const auto fit = fitFriction(run, o);
+            QCOMPARE(fit.staticSource, QStringLiteral("phase a"));
+            QVERIFY2(rel(fit.model.Dp_N, k.Dp_N) < 0.06 && rel(fit.model.Dn_N, k.Dn_N) < 0.06, qPrintable(describe(fit)));
+            QVERIFY2(rel(fit.model.Cp_N, k.Cp_N) < 0.05 && rel(fit.model.Cn_N, k.Cn_N) < 0.05, qPrintable(describe(fit)));
+            // Without phases a band that holds the whole stick (±10.5 mm/s) gives the same.
+            Run bare = run;
+            bare.text.clear();
+            FrictionOptions wide = o;
+            wide.band_m_s = 0.021;
+            const auto band = fitFriction(bare, wide);
+            QCOMPARE(band.staticSource, QStringLiteral("velocity band"));
+            QVERIFY2(rel(band.model.Dp_N, k.Dp_N) < 0.06 && rel(band.model.Dn_N, k.Dn_N) < 0.06, qPrintable(describe(band)));
+        }
     }
     void labelsFileSelectsPhases()
     {
