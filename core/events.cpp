@@ -100,28 +100,89 @@ struct ContactTrial {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
 };
 
-ContactTrial tryContact(std::span<const double> pos, std::span<const double> force, double sumSquares, double xc)
-{
-    Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d b = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i < pos.size(); ++i) {
-        const double d = std::max(0.0, pos[i] - xc);
-        const Eigen::Vector3d row(1.0, d, d * d);
-        S.noalias() += row * row.transpose();
-        b.noalias() += row * force[i];
+// Each trial contact x_c needs the normal equations of  f ≈ o + a1·d + a2·d²,  d = max(0, x - x_c):
+// sums of d^0..d^4 and f·d^0..d^2. Only samples past x_c have d > 0, a suffix once sorted by
+// position, and Σ(x - x_c)^k expands into suffix sums of x^j; so after an O(n log n) set-up
+// every trial is a binary search and a 3x3 solve instead of a pass over the samples.
+// Positions are taken about the middle of the stroke so the expanded powers stay small
+// (mm, a few tens) and the cancellation in the binomial sums is harmless.
+class ContactMoments {
+public:
+    ContactMoments(std::span<const double> pos, std::span<const double> force)
+        : n_(pos.size())
+    {
+        const auto [lo, hi] = std::minmax_element(pos.begin(), pos.end());
+        origin_ = (*lo + *hi) / 2.0;
+        std::vector<std::size_t> order(n_);
+        for (std::size_t i = 0; i < n_; ++i)
+            order[i] = i;
+        std::sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) { return pos[l] < pos[r]; });
+        sorted_.resize(n_);
+        for (auto& m : xPow_)
+            m.assign(n_ + 1, 0.0);
+        for (auto& m : fxPow_)
+            m.assign(n_ + 1, 0.0);
+        for (std::size_t r = n_; r-- > 0;) {
+            const std::size_t i = order[r];
+            const double u = pos[i] - origin_;
+            sorted_[r] = u;
+            double p = 1.0;
+            for (int k = 0; k < 5; ++k) {
+                xPow_[k][r] = xPow_[k][r + 1] + p;
+                if (k < 3)
+                    fxPow_[k][r] = fxPow_[k][r + 1] + force[i] * p;
+                p *= u;
+            }
+        }
+        for (double f : force) {
+            sumF_ += f;
+            sumSquares_ += f * f;
+        }
     }
-    ContactTrial t;
-    // A 3x3 system per trial keeps the search O(n) per step; columns are 1, d, d² with d in
-    // mm, so conditioning is far from a problem here.
-    const Eigen::LDLT<Eigen::Matrix3d> ldlt(S);
-    if (ldlt.info() != Eigen::Success)
+
+    ContactTrial trial(double xc) const
+    {
+        const double c = xc - origin_;
+        const std::size_t r = std::size_t(std::upper_bound(sorted_.begin(), sorted_.end(), c) - sorted_.begin());
+        // Σ_{x > x_c} (u - c)^k from the suffix sums of u^j (binomial expansion).
+        double d[5], fd[3];
+        const double m = -c;
+        const double mp[5] = {1.0, m, m * m, m * m * m, m * m * m * m};
+        constexpr double binom[5][5] = {{1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
+        for (int k = 0; k < 5; ++k) {
+            d[k] = 0.0;
+            for (int j = 0; j <= k; ++j)
+                d[k] += binom[k][j] * xPow_[j][r] * mp[k - j];
+            if (k < 3) {
+                fd[k] = 0.0;
+                for (int j = 0; j <= k; ++j)
+                    fd[k] += binom[k][j] * fxPow_[j][r] * mp[k - j];
+            }
+        }
+        Eigen::Matrix3d S;
+        S << double(n_), d[1], d[2],
+             d[1], d[2], d[3],
+             d[2], d[3], d[4];
+        const Eigen::Vector3d b(sumF_, fd[1], fd[2]);
+        ContactTrial t;
+        // Columns 1, d, d² with d in mm: the normal equations are well enough conditioned.
+        const Eigen::LDLT<Eigen::Matrix3d> ldlt(S);
+        if (ldlt.info() != Eigen::Success || r + 3 > n_)
+            return t;
+        t.x = ldlt.solve(b);
+        // At the least-squares solution SSE = Σf² - bᵀx.
+        const double sse = std::max(0.0, sumSquares_ - b.dot(t.x));
+        t.sse = std::isfinite(sse) ? sse : INFINITY;
         return t;
-    t.x = ldlt.solve(b);
-    // At the least-squares solution SSE = Σf² - bᵀx: no second pass over the samples.
-    const double sse = std::max(0.0, sumSquares - b.dot(t.x));
-    t.sse = std::isfinite(sse) ? sse : INFINITY;
-    return t;
-}
+    }
+
+private:
+    std::size_t n_;
+    double origin_ = 0.0, sumF_ = 0.0, sumSquares_ = 0.0;
+    std::vector<double> sorted_;
+    std::vector<double> xPow_[5];   // suffix sums of u^k over the sorted samples
+    std::vector<double> fxPow_[3];  // suffix sums of f·u^k
+};
 
 RunEvent eventAt(const Run& run, std::size_t i, double offset)
 {
@@ -139,15 +200,14 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     pos = pos.first(n);
     force = force.first(n);
     const double lo = *std::min_element(pos.begin(), pos.end());
-    double sumSquares = 0.0;
-    for (double f : force)
-        sumSquares += f * f;
     // At least a few samples must lie past the contact for a1, a2 to be defined.
     std::vector<double> sorted(pos.begin(), pos.end());
     std::sort(sorted.begin(), sorted.end());
     const double hi = sorted[n - 4];
     if (!(hi > lo))
         throw FitError(QCoreApplication::translate("nb::fit", "the needle does not move before the puncture"));
+    const ContactMoments moments(pos, force);
+    auto tryContact = [&](double xc) { return moments.trial(xc); };
 
     // Coarse grid, then golden section around the best cell: the error is smooth between
     // samples but not convex over the whole stroke.
@@ -156,7 +216,7 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     int best = 0;
     double bestSse = INFINITY;
     for (int k = 0; k <= grid; ++k) {
-        const double s = tryContact(pos, force, sumSquares, lo + k * step).sse;
+        const double s = tryContact(lo + k * step).sse;
         if (s < bestSse) {
             bestSse = s;
             best = k;
@@ -166,27 +226,27 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     double b = lo + std::min(grid, best + 1) * step;
     const double g = (std::sqrt(5.0) - 1.0) / 2.0;
     double c = b - g * (b - a), d = a + g * (b - a);
-    double fc = tryContact(pos, force, sumSquares, c).sse, fd = tryContact(pos, force, sumSquares, d).sse;
+    double fc = tryContact(c).sse, fd = tryContact(d).sse;
     for (int it = 0; it < 40 && (b - a) > 1e-6; ++it) {
         if (fc < fd) {
             b = d;
             d = c;
             fd = fc;
             c = b - g * (b - a);
-            fc = tryContact(pos, force, sumSquares, c).sse;
+            fc = tryContact(c).sse;
         } else {
             a = c;
             c = d;
             fc = fd;
             d = a + g * (b - a);
-            fd = tryContact(pos, force, sumSquares, d).sse;
+            fd = tryContact(d).sse;
         }
     }
     double xc = (a + b) / 2.0;
-    ContactTrial t = tryContact(pos, force, sumSquares, xc);
+    ContactTrial t = tryContact(xc);
     if (const double gridX = lo + best * step; bestSse < t.sse) {
         xc = gridX;
-        t = tryContact(pos, force, sumSquares, xc);
+        t = tryContact(xc);
     }
     if (!std::isfinite(t.sse))
         throw FitError(QCoreApplication::translate("nb::fit", "the contact fit failed (degenerate samples)"));

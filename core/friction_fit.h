@@ -30,8 +30,9 @@ struct FrictionFit {
     double frequency_hz = 0.0;       // metadata `frequency_hz`, else estimated from position
     double rms_N = 0.0;              // of the sliding-sample residuals
     std::size_t positiveSamples = 0, negativeSamples = 0;
-    // Where D came from: "phase a" (labels) or "velocity band" (extreme friction force inside
-    // the band around each turning point, averaged over turning points).
+    // Where D came from: "phase a" (labels) or "velocity band" (the band around each turning
+    // point); D_p averages the largest force of the stretches followed by + motion, D_n the
+    // smallest of those followed by - motion; "none" when a direction has no such stretch.
     QString staticSource;
 };
 

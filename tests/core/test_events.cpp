@@ -4,6 +4,7 @@
 #include "core/fit_error.h"
 #include "synthetic.h"
 
+#include <Eigen/Dense>
 #include <QtTest>
 #include <cmath>
 
@@ -49,6 +50,46 @@ private slots:
         QVERIFY(std::fabs(ev.zeroOffset_N - p.offset_N) < 0.003);
         QVERIFY(std::fabs(ev.noise_N - p.noise_N) < 0.001);
         QVERIFY(std::fabs(ev.contact.time_s - p.contact_mm / p.speed_mm_s) < 0.3 / p.speed_mm_s);
+    }
+    void contactSearchMatchesDirectLeastSquares()
+    {
+        // The search works on precomputed moments of samples sorted by position: check it
+        // against a plain least-squares solve over the samples, on positions that go back
+        // and forth (backlash) and repeat (a coarse encoder), far from the origin.
+        auto p = liver(3);
+        p.start_mm = 100.0;
+        p.contact_mm = 104.0;
+        p.end_mm = 125.0;
+        const Run run = synthetic::makeInsertion(p);
+        std::vector<double> pos, force;
+        for (std::size_t i = 0; i < run.size() && run.position_mm[i] < p.puncture_mm() - 0.5; ++i) {
+            pos.push_back(std::round((run.position_mm[i] + (i % 7 == 3 ? -0.02 : 0.0)) / 0.01) * 0.01);
+            force.push_back(run.force_N[i]);
+        }
+        const ContactFit fit = fitContact(pos, force);
+        auto direct = [&](double xc) {
+            Eigen::MatrixXd A(Eigen::Index(pos.size()), 3);
+            Eigen::VectorXd y(Eigen::Index(pos.size()));
+            for (std::size_t i = 0; i < pos.size(); ++i) {
+                const double d = std::max(0.0, pos[i] - xc);
+                A.row(Eigen::Index(i)) << 1.0, d, d * d;
+                y(Eigen::Index(i)) = force[i];
+            }
+            const Eigen::Vector3d x = A.colPivHouseholderQr().solve(y);
+            return std::pair{x, (y - A * x).squaredNorm()};
+        };
+        const auto [x, sse] = direct(fit.contact_mm);
+        const QString got = QStringLiteral("contact %1 offset %2/%3 a1 %4/%5 a2 %6/%7")
+                                .arg(fit.contact_mm).arg(fit.offset_N).arg(x(0)).arg(fit.stiffness.a1_N_per_mm).arg(x(1))
+                                .arg(fit.stiffness.a2_N_per_mm2).arg(x(2));
+        QVERIFY2(std::fabs(fit.offset_N - x(0)) < 1e-9 && std::fabs(fit.stiffness.a1_N_per_mm - x(1)) < 1e-9 &&
+                     std::fabs(fit.stiffness.a2_N_per_mm2 - x(2)) < 1e-9,
+                 qPrintable(got));
+        QVERIFY(std::fabs(fit.rms_N - std::sqrt(sse / double(pos.size()))) < 1e-12);
+        // A minimum of the direct error too: no neighbour does better.
+        for (double dx : {-0.2, -0.05, -0.01, 0.01, 0.05, 0.2})
+            QVERIFY2(direct(fit.contact_mm + dx).second >= sse * (1.0 - 1e-9), qPrintable(got + QStringLiteral(" dx %1").arg(dx)));
+        QVERIFY2(std::fabs(fit.contact_mm - p.contact_mm) < 0.3, qPrintable(got));
     }
     void punctureAndRelaxation()
     {
