@@ -1,17 +1,26 @@
 // `needlebench demo --out DIR [--short]`: a whole session headless, as fast as the machine
 // allows. Simulates stiffness runs on two liver presets and friction runs at 0.2/0.5/0.8 Hz
-// (with rendered imaging video when the simulator offers it), suggests labels, fits every
-// model, and writes the run CSVs, the HDF5 file, the fit tables and the figures.
-// The other commands are called in-process through the registry, as a user would chain them.
+// with rendered imaging video, synchronises each video from its motion, suggests labels,
+// fits every model, and writes the run CSVs, the HDF5 file, the fit tables and the figures.
+// Everything runs in-process: `simulate` through the command registry, the rest as calls.
 
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "core/export/dataset_loader.h"
 #include "core/export/label_intervals.h"
 #include "core/export/run_csv_export.h"
 #include "core/export/session_analysis.h"
 #include "core/export/session_hdf5.h"
+#include "core/label_suggest.h"
+#include "core/run_file.h"
 #include "core/session.h"
+#include "core/sync.h"
+#include "devices/sim/imaging_render.h"
+#include "devices/video/frame_index.h"
+#include "devices/video/frame_reader.h"
+#include "devices/video/motion_signal.h"
+#include "devices/video/video_error.h"
 #include "widgets/analysis/analysis_plots.h"
 #include "widgets/analysis/figure_export.h"
 
@@ -21,13 +30,36 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <optional>
 #include <qcustomplot.h>
 
 namespace nb::cli {
 
 namespace {
 
-QString tr(const char* s) { return QCoreApplication::translate("cli", s); }
+// Seven cycles as in the thesis; the slowest (0.2 Hz) then lasts 35 s.
+constexpr int kFrictionCycles = 7;
+
+// Smaller than the console's 720x480 and MJPEG: the demo renders, writes and reads back
+// about 1800 frames of incompressible noise, which H.264 at full size takes minutes for.
+devices::sim::ImagingOptions demoImaging()
+{
+    devices::sim::ImagingOptions o;
+    o.width = 360;
+    o.height = 240;
+    return o;
+}
+
+// The needle is drawn 3 px wide down the middle of the renderer's centre pane, which holds
+// the full needle (the outer slices show a faint trace). A strip just that wide sees the tip
+// come and go and little of the tissue speckle beside it, whose stick-slip would otherwise
+// blur the correlation (a 60 px strip put the offset 150-300 ms off, this one a frame).
+QRect needleRegion(const devices::sim::ImagingOptions& o)
+{
+    const int pane = o.width / 3;
+    const int centre = pane + pane / 2;
+    return QRect(centre - 2, 0, 4, o.height);
+}
 
 const Command* findCommand(const QString& name)
 {
@@ -57,34 +89,6 @@ int runQuiet(const QString& name, const QStringList& args, QString* output)
     return code;
 }
 
-// The simulator's own record of what happened, as labels: what `labels suggest` would give
-// on a perfect day. Used only when that command is not available.
-Labels labelsFromTruth(const QString& truthPath)
-{
-    Labels labels;
-    QFile f(truthPath);
-    if (!f.open(QIODevice::ReadOnly))
-        return labels;
-    const QJsonObject t = QJsonDocument::fromJson(f.readAll()).object();
-    for (const QJsonValue& v : t.value(QStringLiteral("phases")).toArray()) {
-        const QJsonObject p = v.toObject();
-        const double a = std::max(0.0, p.value(QStringLiteral("start_s")).toDouble());
-        const double b = p.value(QStringLiteral("end_s")).toDouble();
-        if (b > a)
-            labels.push_back({p.value(QStringLiteral("track")).toString(QStringLiteral("phase")), p.value(QStringLiteral("label")).toString(), a, b, {}});
-    }
-    for (const QJsonValue& v : t.value(QStringLiteral("events")).toArray()) {
-        const QJsonObject e = v.toObject();
-        const double time = e.value(QStringLiteral("time_s")).toDouble();
-        QString name = e.value(QStringLiteral("name")).toString();
-        if (name == QLatin1String("relaxed"))
-            name = QStringLiteral("relaxation");
-        if (time >= 0.0 && !name.isEmpty())
-            labels.push_back({QStringLiteral("events"), name, time, time, {}});
-    }
-    return labels;
-}
-
 struct Step {
     QString protocol, tissue;
     double frequency_hz = 0.0;
@@ -96,16 +100,16 @@ struct Step {
 int cmdDemo(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Simulate, label, fit and export a short session in one go."));
-    const QCommandLineOption out(QStringLiteral("out"), tr("the folder to write everything into"), QStringLiteral("DIR"));
-    const QCommandLineOption shortOpt(QStringLiteral("short"), tr("a shorter session (one run per condition, fewer cycles)"));
+    parser.setApplicationDescription(TrCli::tr("Simulate, label, fit and export a short session in one go."));
+    const QCommandLineOption out(QStringLiteral("out"), TrCli::tr("the folder to write everything into"), QStringLiteral("DIR"));
+    const QCommandLineOption shortOpt(QStringLiteral("short"), TrCli::tr("a shorter session (one run per condition, fewer cycles)"));
     parser.addOption(out);
     parser.addOption(shortOpt);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("demo"), args, io, 0, 0, &code))
         return code;
     if (parser.value(out).isEmpty()) {
-        io.err << "needlebench demo: " << tr("--out DIR is required") << "\n\n" << tr("Run 'needlebench demo --help' for the options.") << '\n';
+        io.err << "needlebench demo: " << TrCli::tr("--out DIR is required") << "\n\n" << TrCli::tr("Run 'needlebench demo --help' for the options.") << '\n';
         return Usage;
     }
     const bool shortRun = parser.isSet(shortOpt);
@@ -118,12 +122,12 @@ int cmdDemo(const QStringList& args, Io io)
     };
 
     if (!QDir().mkpath(root.path())) {
-        io.err << "needlebench demo: " << tr("%1: cannot create the folder").arg(root.path()) << '\n';
+        io.err << "needlebench demo: " << TrCli::tr("%1: cannot create the folder").arg(root.path()) << '\n';
         return Failure;
     }
     const QString sessionDir = root.filePath(QStringLiteral("session"));
     if (QFileInfo::exists(sessionDir) && !QDir(sessionDir).isEmpty()) {
-        io.err << "needlebench demo: " << tr("%1 already holds a session; choose an empty --out folder").arg(sessionDir) << '\n';
+        io.err << "needlebench demo: " << TrCli::tr("%1 already holds a session; choose an empty --out folder").arg(sessionDir) << '\n';
         return Failure;
     }
     SessionInfo info;
@@ -141,7 +145,7 @@ int cmdDemo(const QStringList& args, Io io)
             throw std::runtime_error(e.message().toStdString());
         }
     }();
-    step(tr("session folder %1").arg(sessionDir));
+    step(TrCli::tr("session folder %1").arg(sessionDir));
 
     // Two liver presets for stiffness (beveled, 4 mm/s), the friction slab at three frequencies.
     std::vector<Step> plan;
@@ -152,8 +156,14 @@ int cmdDemo(const QStringList& args, Io io)
     for (double f : shortRun ? std::vector<double>{0.5} : std::vector<double>{0.2, 0.5, 0.8})
         plan.push_back({QStringLiteral("friction"), QStringLiteral("liver7"), f, 1});
 
-    bool videoSupported = true;
-    QStringList labelSources;
+    struct VideoReport {
+        QString run, video;
+        int frames = 0;
+        double trueOffset_s = 0.0;
+        std::optional<SyncResult> sync;
+        QString syncProblem;
+    };
+    std::vector<VideoReport> videos;
     for (std::size_t i = 0; i < plan.size(); ++i) {
         const Step& s = plan[i];
         const bool friction = s.protocol == QLatin1String("friction");
@@ -166,56 +176,104 @@ int cmdDemo(const QStringList& args, Io io)
                             QStringLiteral("--truth"), truth};
         if (friction)
             simArgs << QStringLiteral("--frequency-hz") << QString::number(s.frequency_hz) << QStringLiteral("--cycles")
-                    << QString::number(shortRun ? 3 : 7);
+                    << QString::number(shortRun ? 3 : kFrictionCycles);
         QString output;
-        int rc = Failure;
-        if (friction && videoSupported) {
-            rc = runQuiet(QStringLiteral("simulate"),
-                          simArgs + QStringList{QStringLiteral("--video"), fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".mp4"))},
-                          &output);
-            if (rc == Usage) {
-                videoSupported = false;  // this build's simulator renders no video: record without
-                step(tr("note: the simulator offers no --video here; friction runs are recorded without imaging video"));
-            }
-        }
-        if (!friction || !videoSupported)
-            rc = runQuiet(QStringLiteral("simulate"), simArgs, &output);
-        if (rc != Ok) {
-            io.err << "needlebench demo: " << tr("simulating %1 failed:\n%2").arg(runPath, output) << '\n';
+        if (runQuiet(QStringLiteral("simulate"), simArgs, &output) != Ok) {
+            io.err << "needlebench demo: " << TrCli::tr("simulating %1 failed:\n%2").arg(runPath, output) << '\n';
             return Failure;
         }
-        step(tr("simulated %1 (%2, %3)")
+        step(TrCli::tr("simulated %1 (%2, %3)")
                  .arg(fi.fileName(), s.tissue,
-                      friction ? tr("sine %1 Hz").arg(s.frequency_hz) : tr("insertion 4 mm/s")));
+                      friction ? TrCli::tr("sine %1 Hz").arg(s.frequency_hz) : TrCli::tr("insertion 4 mm/s")));
 
-        // Labels: the labelling command when this build has it, else the simulator's record.
+        Run run;
+        try {
+            run = readRunFile(runPath).run;
+        } catch (const RunFileError& e) {
+            io.err << "needlebench demo: " << e.message() << '\n';
+            return Failure;
+        }
+
+        if (friction) {
+            // The imaging console is started by hand a little before the recording: a lead-in
+            // that differs per run, so that the synchronisation has something to find.
+            VideoReport v;
+            v.run = fi.fileName();
+            v.video = fi.completeBaseName() + QStringLiteral(".avi");
+            const QString videoPath = fi.dir().filePath(v.video);
+            devices::sim::ImagingOptions vo = demoImaging();
+            vo.leadIn_s = 0.6 + 0.35 * double(videos.size());
+            vo.seed = unsigned(s.seed + int(i));
+            try {
+                const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(run, videoPath, vo);
+                v.frames = vt.frames;
+                v.trueOffset_s = vt.offset_s;
+            } catch (const devices::VideoError& e) {
+                io.err << "needlebench demo: " << e.message() << '\n';
+                return Failure;
+            }
+            step(TrCli::tr("rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)")
+                     .arg(v.video).arg(v.frames).arg(vo.leadIn_s, 0, 'f', 2));
+
+            // Found the way a user would: the needle's motion in the video against its speed.
+            try {
+                devices::FrameReader reader(devices::buildFrameIndex(videoPath), 8);
+                const devices::MotionSignal motion = devices::computeMotionSignal(reader, needleRegion(vo));
+                SyncOptions so;
+                so.maxOffset_s = 5.0;
+                v.sync = synchronise({motion.time_s, motion.value}, needleSpeed(run), so);
+            } catch (const devices::VideoError& e) {
+                v.syncProblem = e.message();
+            } catch (const std::invalid_argument& e) {
+                v.syncProblem = QString::fromUtf8(e.what());
+            }
+            run.metadata.set(QStringLiteral("video_file"), v.video);
+            run.metadata.set(QStringLiteral("video_fps"), vo.fps);
+            if (v.sync) {
+                run.metadata.set(QStringLiteral("sync_offset_s"), v.sync->offset_s);
+                run.metadata.set(QStringLiteral("sync_confidence"), v.sync->confidence);
+                run.metadata.set(QStringLiteral("sync_method"), QStringLiteral("video motion vs needle speed (needlebench demo)"));
+                step(TrCli::tr("synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5")
+                         .arg(v.video)
+                         .arg(v.sync->offset_s, 0, 'f', 3)
+                         .arg(v.trueOffset_s, 0, 'f', 3)
+                         .arg((v.sync->offset_s - v.trueOffset_s) * vo.fps, 0, 'f', 1)
+                         .arg(v.sync->confidence, 0, 'f', 2));
+            } else {
+                step(TrCli::tr("note: could not synchronise %1 (%2); its frames are numbered without an offset")
+                         .arg(v.video, v.syncProblem));
+            }
+            try {
+                writeRunFile(runPath, run);
+            } catch (const RunFileError& e) {
+                io.err << "needlebench demo: " << e.message() << '\n';
+                return Failure;
+            }
+            videos.push_back(v);
+        }
+
+        const Labels labels = suggestLabels(run);
         const QString labelsPath = labelsPathFor(runPath);
-        QString how;
-        if (findCommand(QStringLiteral("labels"))) {
-            QString lout;
-            const int lrc = runQuiet(QStringLiteral("labels"),
-                                     {QStringLiteral("suggest"), runPath, QStringLiteral("--out"), labelsPath}, &lout);
-            if (lrc == Ok && QFileInfo::exists(labelsPath))
-                how = tr("labels suggest");
-            else
-                step(tr("note: labels suggest failed for %1: %2").arg(fi.fileName(), lout.section(QLatin1Char('\n'), 0, 0)));
+        try {
+            writeLabelsFile(labelsPath, labels);
+        } catch (const RunFileError& e) {
+            io.err << "needlebench demo: " << e.message() << '\n';
+            return Failure;
         }
-        if (how.isEmpty()) {
-            writeLabelsFile(labelsPath, labelsFromTruth(truth));
-            how = tr("the simulator's record (no labels suggest in this build)");
-        }
-        labelSources << how;
-        step(tr("labelled %1 from %2").arg(fi.fileName(), how));
+        step(TrCli::tr("labelled %1: %2 suggested labels (%3)")
+                 .arg(fi.fileName())
+                 .arg(labels.size())
+                 .arg(friction ? TrCli::tr("phases a, b1, b2, c per half-cycle") : TrCli::tr("contact, puncture, relaxation events")));
     }
 
     LoadedDataset loaded = loadDataset(sessionDir);
     for (const QString& w : loaded.warnings)
-        io.err << tr("warning: %1").arg(w) << '\n';
+        io.err << TrCli::tr("warning: %1").arg(w) << '\n';
     const Dataset& d = loaded.dataset;
     const SessionAnalysis a = analyseDataset(d);
     for (const QString& w : a.warnings)
-        io.err << tr("warning: %1").arg(w) << '\n';
-    step(tr("fitted %1 stiffness runs in %2 groups, %3 friction runs, %4 validations")
+        io.err << TrCli::tr("warning: %1").arg(w) << '\n';
+    step(TrCli::tr("fitted %1 stiffness runs in %2 groups, %3 friction runs, %4 validations")
              .arg(a.stiffness.size()).arg(a.stiffnessGroups.size()).arg(a.friction.size()).arg(a.validation.size()));
 
     const QString csvDir = root.filePath(QStringLiteral("csv"));
@@ -226,11 +284,11 @@ int cmdDemo(const QStringList& args, Io io)
         writeLabelIntervalsCsv(QDir(csvDir).filePath(r.name + QStringLiteral(".intervals.csv")),
                                labelIntervals(r.run, r.labels, frameClockFor(r.run)));
     }
-    step(tr("wrote %1 run CSVs with JSON sidecars and label interval tables").arg(d.runs.size()));
+    step(TrCli::tr("wrote %1 run CSVs with JSON sidecars and label interval tables").arg(d.runs.size()));
 
     const QString h5 = root.filePath(QStringLiteral("session.h5"));
     writeSessionHdf5(h5, d);
-    step(tr("wrote %1").arg(h5));
+    step(TrCli::tr("wrote %1").arg(h5));
 
     const QString tablesDir = root.filePath(QStringLiteral("tables"));
     QDir().mkpath(tablesDir);
@@ -243,7 +301,7 @@ int cmdDemo(const QStringList& args, Io io)
         writeFitTableCsv(QDir(tablesDir).filePath(name + QStringLiteral(".csv")), table);
         writeFitTableLatex(QDir(tablesDir).filePath(name + QStringLiteral(".tex")), table);
     }
-    step(tr("wrote %1 fit tables (CSV and LaTeX)").arg(tables.size()));
+    step(TrCli::tr("wrote %1 fit tables (CSV and LaTeX)").arg(tables.size()));
 
     const QString figDir = root.filePath(QStringLiteral("figures"));
     QDir().mkpath(figDir);
@@ -269,17 +327,35 @@ int cmdDemo(const QStringList& args, Io io)
         saveFigure(&plot, QDir(figDir).filePath(QStringLiteral("validation_%1.png").arg(v.run)));
         ++figures;
     }
-    step(tr("wrote %1 figures").arg(figures));
+    step(TrCli::tr("wrote %1 figures").arg(figures));
 
-    io.out << '\n' << tr("Demo finished in %1 s. Where everything went:").arg(clock.elapsed() / 1000.0, 0, 'f', 1) << '\n'
-           << tr("  session (run files + labels): %1").arg(sessionDir) << '\n'
-           << tr("  run CSVs + JSON sidecars:     %1").arg(csvDir) << '\n'
-           << tr("  HDF5 (all runs):              %1").arg(h5) << '\n'
-           << tr("  fit tables (CSV, LaTeX):      %1").arg(tablesDir) << '\n'
-           << tr("  figures (PNG):                %1").arg(figDir) << '\n'
-           << tr("  simulator ground truth:       %1").arg(root.filePath(QStringLiteral("truth"))) << '\n';
+    io.out << '\n' << TrCli::tr("Demo finished in %1 s. Where everything went:").arg(clock.elapsed() / 1000.0, 0, 'f', 1) << '\n'
+           << TrCli::tr("  session (run files + labels): %1").arg(sessionDir) << '\n'
+           << TrCli::tr("  run CSVs + JSON sidecars:     %1").arg(csvDir) << '\n'
+           << TrCli::tr("  HDF5 (all runs):              %1").arg(h5) << '\n'
+           << TrCli::tr("  fit tables (CSV, LaTeX):      %1").arg(tablesDir) << '\n'
+           << TrCli::tr("  figures (PNG):                %1").arg(figDir) << '\n'
+           << TrCli::tr("  simulator ground truth:       %1").arg(root.filePath(QStringLiteral("truth"))) << '\n';
+    for (const VideoReport& v : videos) {
+        if (v.sync)
+            io.out << TrCli::tr("  video %1 (%2 frames): sync offset %3 s found, %4 s true, %5 ms off, confidence %6")
+                          .arg(QDir(sessionDir).filePath(v.video))
+                          .arg(v.frames)
+                          .arg(v.sync->offset_s, 0, 'f', 3)
+                          .arg(v.trueOffset_s, 0, 'f', 3)
+                          .arg((v.sync->offset_s - v.trueOffset_s) * 1000.0, 0, 'f', 0)
+                          .arg(v.sync->confidence, 0, 'f', 2)
+                   << '\n';
+        else
+            io.out << TrCli::tr("  video %1 (%2 frames): not synchronised (%3); true offset %4 s")
+                          .arg(QDir(sessionDir).filePath(v.video))
+                          .arg(v.frames)
+                          .arg(v.syncProblem)
+                          .arg(v.trueOffset_s, 0, 'f', 3)
+                   << '\n';
+    }
     for (const StiffnessGroupResult& g : a.stiffnessGroups)
-        io.out << tr("  stiffness %1: a1 = %2 N/mm, a2 = %3 N/mm², puncture at %4 mm, %5 N")
+        io.out << TrCli::tr("  stiffness %1: a1 = %2 N/mm, a2 = %3 N/mm², puncture at %4 mm, %5 N")
                       .arg(g.group)
                       .arg(g.summary.pooled.quadratic.model.a1_N_per_mm, 0, 'f', 4)
                       .arg(g.summary.pooled.quadratic.model.a2_N_per_mm2, 0, 'f', 4)
@@ -287,7 +363,7 @@ int cmdDemo(const QStringList& args, Io io)
                       .arg(g.meanPunctureForce_N, 0, 'f', 3)
                << '\n';
     if (a.frictionOverall)
-        io.out << tr("  friction overall: Cp = %1 N/m, Cn = %2 N/m, bp = %3 N s/m², bn = %4 N s/m²")
+        io.out << TrCli::tr("  friction overall: Cp = %1 N/m, Cn = %2 N/m, bp = %3 N s/m², bn = %4 N s/m²")
                       .arg(a.frictionOverall->mean.Cp_N_per_m, 0, 'f', 2)
                       .arg(a.frictionOverall->mean.Cn_N_per_m, 0, 'f', 2)
                       .arg(a.frictionOverall->mean.bp_Ns_per_m2, 0, 'f', 1)

@@ -96,6 +96,7 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName)
         {QStringLiteral("drops"), pick(r.run, {"drop", "lost", "overrun", "gap", "late"})},
         {QStringLiteral("sync"), QJsonObject{{QStringLiteral("offset_s"), syncOffset(r.run)},
                                              {QStringLiteral("video_fps"), videoFps(r.run)},
+                                             {QStringLiteral("video_file"), r.run.meta(QStringLiteral("video_file")).value_or(QString())},
                                              {QStringLiteral("meaning"), QStringLiteral("video time = recording time + offset_s")}}},
         {QStringLiteral("labels"), labels},
     };

@@ -1,14 +1,19 @@
 // The demo and export commands end to end, through the real executable as a user runs them.
 #include "core/export/run_csv_export.h"
+#include "core/labels.h"
+#include "core/run_file.h"
 
 #include <QDir>
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <QtTest>
+#include <algorithm>
+#include <cmath>
 #include <hdf5.h>
 
 namespace {
@@ -53,6 +58,49 @@ private slots:
         const QStringList csvs = QDir(d.filePath(QStringLiteral("csv"))).entryList({QStringLiteral("*.json")}, QDir::Files);
         QCOMPARE(csvs.size(), 3);
 
+        // Labels are the ones suggested from the data, not the simulator's record.
+        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("labelled run_001_linear.csv: \\d+ suggested labels"))), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("labelled run_003_sine.csv: \\d+ suggested labels"))), qPrintable(r.out));
+        const nb::Labels sineLabels = nb::readLabelsFile(d.filePath(QStringLiteral("session/run_003_sine.labels.csv")));
+        QVERIFY(sineLabels.size() >= 8);  // a, b1, b2, c over several half-cycles
+        QStringList phases;
+        for (const nb::Label& l : sineLabels) {
+            QCOMPARE(l.comment, QStringLiteral("suggested"));
+            phases << l.label;
+        }
+        for (const char* phase : {"a", "b1", "b2", "c"})
+            QVERIFY2(phases.contains(QLatin1String(phase)), phase);
+        const nb::Labels events = nb::readLabelsFile(d.filePath(QStringLiteral("session/run_001_linear.labels.csv")));
+        QVERIFY(std::any_of(events.begin(), events.end(), [](const nb::Label& l) { return l.label == QLatin1String("puncture"); }));
+
+        // The friction run has its imaging video, a real file a user's tools open, as long as the run.
+        const QString video = d.filePath(QStringLiteral("session/run_003_sine.avi"));
+        const Result vi = run({QStringLiteral("video-info"), QStringLiteral("--json"), video});
+        QVERIFY2(vi.code == 0, qPrintable(vi.err));
+        const QJsonObject v = QJsonDocument::fromJson(vi.out.toUtf8()).object();
+        const nb::Run sine = nb::readRunFile(d.filePath(QStringLiteral("session/run_003_sine.csv"))).run;
+        const double runDuration = sine.time_s.back() - sine.time_s.front();
+        QVERIFY(runDuration > 5.0);  // 3 cycles at 0.5 Hz
+        const int frames = v.value(QStringLiteral("frames")).toInt();
+        // The video starts before the recording and runs on after it: at most ~2 s more.
+        QVERIFY2(frames >= runDuration * 29.97 && frames <= (runDuration + 2.0) * 29.97,
+                 qPrintable(QStringLiteral("%1 frames for %2 s").arg(frames).arg(runDuration)));
+        QVERIFY(std::abs(v.value(QStringLiteral("duration_s")).toDouble() * 29.97 - frames) < 2.0);
+
+        // The video was synchronised: the offset found is within two frames of the truth the
+        // demo reports, and the run file names the video.
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("sync offset (-?[0-9.]+) s found, (-?[0-9.]+) s true")).match(r.out);
+        QVERIFY2(m.hasMatch(), qPrintable(r.out));
+        const double found = m.captured(1).toDouble(), truth = m.captured(2).toDouble();
+        QVERIFY2(std::abs(found - truth) < 2.0 / 29.97, qPrintable(m.captured(0)));
+        QCOMPARE(sine.meta(QStringLiteral("video_file")).value_or(QString()), QStringLiteral("run_003_sine.avi"));
+        QVERIFY(std::abs(sine.metadata.number(QStringLiteral("sync_offset_s")).value_or(-1.0) - found) < 0.0015);
+        QFile sidecar(d.filePath(QStringLiteral("csv/run_003_sine.json")));
+        QVERIFY(sidecar.open(QIODevice::ReadOnly));
+        const QJsonObject sync = QJsonDocument::fromJson(sidecar.readAll()).object().value(QStringLiteral("sync")).toObject();
+        QVERIFY(std::abs(sync.value(QStringLiteral("offset_s")).toDouble() - found) < 0.0015);
+        QCOMPARE(sync.value(QStringLiteral("video_file")).toString(), QStringLiteral("run_003_sine.avi"));
+
         // The HDF5 file holds the three runs with their forces.
         const hid_t f = H5Fopen(QFile::encodeName(d.filePath(QStringLiteral("session.h5"))).constData(), H5F_ACC_RDONLY, H5P_DEFAULT);
         QVERIFY(f >= 0);
@@ -61,6 +109,27 @@ private slots:
         QVERIFY(H5Gget_info(g, &info) >= 0);
         QCOMPARE(int(info.nlinks), 3);
         H5Gclose(g);
+        // ... and the sine run carries its video's name and sync offset as attributes.
+        const hid_t sg = H5Gopen2(f, "/runs/run_003_sine", H5P_DEFAULT);
+        QVERIFY(sg >= 0);
+        double offset = -1.0;
+        const hid_t oa = H5Aopen(sg, "sync_offset_s", H5P_DEFAULT);
+        QVERIFY(oa >= 0);
+        QVERIFY(H5Aread(oa, H5T_NATIVE_DOUBLE, &offset) >= 0);
+        H5Aclose(oa);
+        QVERIFY(std::abs(offset - found) < 0.0015);
+        const hid_t va = H5Aopen(sg, "video_file", H5P_DEFAULT);
+        QVERIFY(va >= 0);
+        const hid_t strType = H5Tcopy(H5T_C_S1);
+        H5Tset_size(strType, H5T_VARIABLE);
+        H5Tset_cset(strType, H5T_CSET_UTF8);
+        char* name = nullptr;
+        QVERIFY(H5Aread(va, strType, &name) >= 0);
+        QCOMPARE(QString::fromUtf8(name), QStringLiteral("run_003_sine.avi"));
+        H5free_memory(name);
+        H5Tclose(strType);
+        H5Aclose(va);
+        H5Gclose(sg);
         H5Fclose(f);
 
         // Stiffness tables: the pooled fits of both livers, with positive puncture forces.
