@@ -170,7 +170,22 @@ public:
         if (ldlt.info() != Eigen::Success || r + 3 > n_)
             return t;
         t.x = ldlt.solve(b);
-        // At the least-squares solution SSE = Σf² - bᵀx.
+        // The capsule only pushes back: a1 < 0 would make the force dip below the offset
+        // just past contact. Where noise hides the first ~0.2 mm of a mostly quadratic
+        // force, that dip lets an early contact with a1 < 0 fit as well as the true one
+        // (liver 2), so the bound a1 >= 0 is active then: solve for offset and a2 alone.
+        if (t.x(1) < 0.0) {
+            Eigen::Matrix2d S2;
+            S2 << double(n_), d[2], d[2], d[4];
+            const Eigen::Vector2d b2(sumF_, fd[2]);
+            const Eigen::LDLT<Eigen::Matrix2d> l2(S2);
+            if (l2.info() != Eigen::Success)
+                return t;
+            const Eigen::Vector2d x2 = l2.solve(b2);
+            t.x = Eigen::Vector3d(x2(0), 0.0, x2(1));
+        }
+        // At the least-squares solution SSE = Σf² - bᵀx (also with a1 held at 0: b(1) is
+        // then multiplied by 0).
         const double sse = std::max(0.0, sumSquares_ - b.dot(t.x));
         t.sse = std::isfinite(sse) ? sse : INFINITY;
         return t;

@@ -91,6 +91,25 @@ private slots:
             QVERIFY2(direct(fit.contact_mm + dx).second >= sse * (1.0 - 1e-9), qPrintable(got + QStringLiteral(" dx %1").arg(dx)));
         QVERIFY2(std::fabs(fit.contact_mm - p.contact_mm) < 0.3, qPrintable(got));
     }
+    void mostlyQuadraticCapsuleKeepsContact()
+    {
+        // Liver 2: a1 carries ~7 % of the puncture force, so the first ~0.2 mm past contact
+        // are below the noise; the contact must not slide early with a negative a1.
+        for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+            synthetic::Insertion p;
+            p.a1_N_per_mm = 0.0020;
+            p.a2_N_per_mm2 = 0.0023;
+            p.punctureDepth_mm = 22.3838;
+            p.end_mm = 40.0;
+            p.seed = seed;
+            const auto ev = detectEvents(synthetic::makeInsertion(p));
+            const QString got = QStringLiteral("seed %1 contact %2 a1 %3 a2 %4").arg(seed).arg(ev.contact.position_mm)
+                                    .arg(ev.stiffness.a1_N_per_mm).arg(ev.stiffness.a2_N_per_mm2);
+            QVERIFY2(ev.stiffness.a1_N_per_mm >= 0.0, qPrintable(got));
+            QVERIFY2(std::fabs(ev.contact.position_mm - p.contact_mm) < 0.4, qPrintable(got));
+            QVERIFY2(std::fabs(ev.stiffness.a2_N_per_mm2 / p.a2_N_per_mm2 - 1.0) < 0.05, qPrintable(got));
+        }
+    }
     void punctureAndRelaxation()
     {
         for (std::uint32_t seed = 1; seed <= 3; ++seed) {
