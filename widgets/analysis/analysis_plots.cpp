@@ -4,6 +4,7 @@
 #include "core/signal.h"
 
 #include <QCoreApplication>
+#include <algorithm>
 #include <qcustomplot.h>
 
 namespace nb {
@@ -27,6 +28,7 @@ void reset(QCustomPlot* plot, const QString& title, const QString& x, const QStr
     plot->yAxis->setLabel(y);
     plot->legend->setVisible(true);
     plot->legend->setFont(QFont(plot->font().family(), 8));
+    plot->legend->setFillOrder(QCPLayoutGrid::foRowsFirst, true);  // plotPhases lays it out in a row
     plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
     plot->setObjectName(title);
 }
@@ -92,12 +94,19 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
     bool outlierNamed = false;
     for (std::size_t i : g->runs) {
         const StiffnessRunResult& s = a.stiffness[i];
-        QVector<double> x(s.segment.depth_mm.begin(), s.segment.depth_mm.end());
-        QVector<double> y(s.segment.force_N.begin(), s.segment.force_N.end());
+        // At most ~150 dots per run: thousands of 2 px dots merge into one line under the fits
+        // and neither the runs nor an outlier can be told apart.
+        const std::size_t n = s.segment.depth_mm.size();
+        const std::size_t stride = std::max<std::size_t>(1, n / 150);
+        QVector<double> x, y;
+        for (std::size_t j = 0; j < n; j += stride) {
+            x << s.segment.depth_mm[j];
+            y << s.segment.force_N[j];
+        }
         for (double d : x)
             maxDepth = std::max(maxDepth, d);
         const QColor c = s.outlier ? QColor(214, 39, 40) : runColor(k++);
-        QCPGraph* dots = scatter(plot, x, y, c.lighter(130), 2.5, s.outlier ? tr("%1 (outlier)").arg(s.run) : s.run);
+        QCPGraph* dots = scatter(plot, x, y, c, 5.0, s.outlier ? tr("%1 (outlier)").arg(s.run) : s.run);
         if (s.outlier)
             outlierNamed = true;
         (void)dots;
@@ -107,7 +116,7 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
             fx << end * j / 60.0;
             fy << s.fit.quadratic.model(fx.last());
         }
-        QCPGraph* fit = line(plot, fx, fy, QPen(c, 1.2), QString());
+        QCPGraph* fit = line(plot, fx, fy, QPen(c.lighter(120), 1.0), QString());
         fit->removeFromLegend();
     }
     (void)outlierNamed;
@@ -117,8 +126,8 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
         py << g->summary.pooled.quadratic.model(px.last());
     }
     const StiffnessModel& m = g->summary.pooled.quadratic.model;
-    line(plot, px, py, QPen(Qt::black, 3.0),
-         tr("pooled: %1 x + %2 x²").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
+    line(plot, px, py, QPen(Qt::black, 2.0, Qt::DashLine),
+         tr("pooled fit: F = %1 x + %2 x² (F in N, x in mm)").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
     plot->rescaleAxes();
     plot->yAxis->setRangeLower(std::min(0.0, plot->yAxis->range().lower));
     plot->replot();
@@ -180,6 +189,8 @@ void plotPhases(QCustomPlot* plot, const DatasetRun& run)
     plot->rescaleAxes();
     QStringList named;
     for (const Label& l : run.labels) {
+        if (!l.isPoint() && !named.contains(l.label))
+            named << l.label;
         if (l.isPoint()) {
             auto* v = new QCPItemStraightLine(plot);
             v->point1->setCoords(l.start_s, 0);
@@ -195,14 +206,19 @@ void plotPhases(QCustomPlot* plot, const DatasetRun& run)
         r->setPen(Qt::NoPen);
         r->setBrush(phaseColor(l.label));
         r->setLayer(QStringLiteral("background"));
-        if (!named.contains(l.label)) {
-            named << l.label;
-            // A legend entry per phase: an empty graph carrying the phase's colour.
-            QCPGraph* key = plot->addGraph();
-            key->setName(tr("phase %1").arg(l.label));
-            key->setPen(QPen(phaseColor(l.label).darker(120), 8));
-        }
     }
+    // Legend entries in the phases' own order (a, b1, b2, c), not that of the first label seen.
+    std::sort(named.begin(), named.end());
+    for (const QString& phase : named) {
+        // An empty graph carrying the phase's colour.
+        QCPGraph* key = plot->addGraph();
+        key->setName(tr("phase %1").arg(phase));
+        key->setPen(QPen(phaseColor(phase).darker(120), 8));
+    }
+    // The force fills the whole width: the legend goes in one row in headroom above it.
+    plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    const QCPRange y = plot->yAxis->range();
+    plot->yAxis->setRange(y.lower, y.upper + 0.18 * y.size());
     plot->replot();
 }
 
@@ -217,15 +233,16 @@ void plotValidation(QCustomPlot* plot, const ValidationResult& v)
     // Position is not monotonic on withdrawal: a curve keeps the sample order.
     auto* rec = new QCPCurve(plot->xAxis, plot->yAxis);
     rec->setData(x, y);
-    rec->setPen(QPen(QColor(31, 119, 180), 1.0));
+    rec->setPen(QPen(QColor(31, 119, 180), 1.5));
     rec->setName(tr("recorded"));
     if (v.ok()) {
         QVector<double> sx(v.simulated.position_mm.begin(), v.simulated.position_mm.end());
         QVector<double> sy(v.simulated.force_N.begin(), v.simulated.force_N.end());
         auto* sim = new QCPCurve(plot->xAxis, plot->yAxis);
         sim->setData(sx, sy);
-        sim->setPen(QPen(QColor(214, 39, 40), 2.0));
-        sim->setName(tr("model"));
+        // Dashed on top: where model and recording agree both stay visible.
+        sim->setPen(QPen(QColor(214, 39, 40), 2.0, Qt::DashLine));
+        sim->setName(tr("summed model"));
     }
     plot->rescaleAxes();
     plot->replot();
