@@ -3,6 +3,7 @@
 // falling back to the settings (devices/daq, devices/stage) and then to the simulated rig.
 
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "devices/acquisition_engine.h"
 #include "devices/device_error.h"
@@ -19,28 +20,22 @@
 
 namespace nb::cli {
 
-namespace {
-
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
-
-}  // namespace
-
 int cmdAcquire(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    const QCommandLineOption daq(QStringLiteral("daq"), tr("sim | u6 | u6:SERIAL (default: settings, else sim)"), QStringLiteral("DAQ"));
-    const QCommandLineOption stage(QStringLiteral("stage"), tr("sim | zaber:PORT (default: settings, else sim)"), QStringLiteral("STAGE"));
-    const QCommandLineOption protocol(QStringLiteral("protocol"), tr("stiffness|internal|friction|prostate (friction: sine motion)"), QStringLiteral("P"));
-    const QCommandLineOption out(QStringLiteral("out"), tr("the run file to write"), QStringLiteral("RUN.csv"));
-    const QCommandLineOption rate(QStringLiteral("rate-hz"), tr("sampling rate, 100..10000 (default 500)"), QStringLiteral("R"), QStringLiteral("500"));
-    const QCommandLineOption velocity(QStringLiteral("velocity-mm-s"), tr("insertion velocity (default 4)"), QStringLiteral("V"), QStringLiteral("4"));
-    const QCommandLineOption depth(QStringLiteral("depth-mm"), tr("insertion depth from the start position (default 40)"), QStringLiteral("D"), QStringLiteral("40"));
-    const QCommandLineOption amplitude(QStringLiteral("amplitude-mm"), tr("sine amplitude (default 10)"), QStringLiteral("A"), QStringLiteral("10"));
-    const QCommandLineOption frequency(QStringLiteral("frequency-hz"), tr("sine frequency (default 0.5)"), QStringLiteral("F"), QStringLiteral("0.5"));
-    const QCommandLineOption cycles(QStringLiteral("cycles"), tr("sine cycles (default 7)"), QStringLiteral("N"), QStringLiteral("7"));
-    const QCommandLineOption maxForce(QStringLiteral("max-force-n"), tr("force limit that stops the stage (default 8)"), QStringLiteral("F"), QStringLiteral("8"));
-    const QCommandLineOption steps(QStringLiteral("zaber-microsteps-per-mm"), tr("stage resolution (default: settings, else 20997.375)"), QStringLiteral("N"));
-    const QCommandLineOption slope(QStringLiteral("slope-v-per-g"), tr("sensor calibration slope d in V/g (default: settings, else nominal)"), QStringLiteral("D"));
+    const QCommandLineOption daq(QStringLiteral("daq"), nb::TrCli::tr("sim | u6 | u6:SERIAL (default: settings, else sim)"), QStringLiteral("DAQ"));
+    const QCommandLineOption stage(QStringLiteral("stage"), nb::TrCli::tr("sim | zaber:PORT (default: settings, else sim)"), QStringLiteral("STAGE"));
+    const QCommandLineOption protocol(QStringLiteral("protocol"), nb::TrCli::tr("stiffness|internal|friction|prostate (friction: sine motion)"), QStringLiteral("P"));
+    const QCommandLineOption out(QStringLiteral("out"), nb::TrCli::tr("the run file to write"), QStringLiteral("RUN.csv"));
+    const QCommandLineOption rate(QStringLiteral("rate-hz"), nb::TrCli::tr("sampling rate, 100..10000 (default 500)"), QStringLiteral("R"), QStringLiteral("500"));
+    const QCommandLineOption velocity(QStringLiteral("velocity-mm-s"), nb::TrCli::tr("insertion velocity (default 4)"), QStringLiteral("V"), QStringLiteral("4"));
+    const QCommandLineOption depth(QStringLiteral("depth-mm"), nb::TrCli::tr("insertion depth from the start position (default 40)"), QStringLiteral("D"), QStringLiteral("40"));
+    const QCommandLineOption amplitude(QStringLiteral("amplitude-mm"), nb::TrCli::tr("sine amplitude (default 10)"), QStringLiteral("A"), QStringLiteral("10"));
+    const QCommandLineOption frequency(QStringLiteral("frequency-hz"), nb::TrCli::tr("sine frequency (default 0.5)"), QStringLiteral("F"), QStringLiteral("0.5"));
+    const QCommandLineOption cycles(QStringLiteral("cycles"), nb::TrCli::tr("sine cycles (default 7)"), QStringLiteral("N"), QStringLiteral("7"));
+    const QCommandLineOption maxForce(QStringLiteral("max-force-n"), nb::TrCli::tr("force limit that stops the stage (default 8)"), QStringLiteral("F"), QStringLiteral("8"));
+    const QCommandLineOption steps(QStringLiteral("zaber-microsteps-per-mm"), nb::TrCli::tr("stage resolution (default: settings, else 20997.375)"), QStringLiteral("N"));
+    const QCommandLineOption slope(QStringLiteral("slope-v-per-g"), nb::TrCli::tr("sensor calibration slope d in V/g (default: settings, else nominal)"), QStringLiteral("D"));
     for (const auto* o : {&daq, &stage, &protocol, &out, &rate, &velocity, &depth, &amplitude, &frequency, &cycles, &maxForce, &steps, &slope})
         parser.addOption(*o);
     int code = Ok;
@@ -48,7 +43,7 @@ int cmdAcquire(const QStringList& args, Io io)
         return code;
 
     auto usage = [&](const QString& why) {
-        io.err << "needlebench acquire: " << why << "\n\n" << tr("Run 'needlebench acquire --help' for the options.") << '\n';
+        io.err << "needlebench acquire: " << why << "\n\n" << nb::TrCli::tr("Run 'needlebench acquire --help' for the options.") << '\n';
         return Usage;
     };
     QSettings settings;
@@ -63,15 +58,15 @@ int cmdAcquire(const QStringList& args, Io io)
         return usage(e);
     const QStringList protocols{QStringLiteral("stiffness"), QStringLiteral("internal"), QStringLiteral("friction"), QStringLiteral("prostate")};
     if (!protocols.contains(parser.value(protocol)))
-        return usage(tr("--protocol must be one of %1").arg(protocols.join(QLatin1Char('|'))));
+        return usage(nb::TrCli::tr("--protocol must be one of %1").arg(protocols.join(QLatin1Char('|'))));
     if (!parser.isSet(out))
-        return usage(tr("--out RUN.csv is required"));
+        return usage(nb::TrCli::tr("--out RUN.csv is required"));
     QString error;
     auto number = [&](const QCommandLineOption& o, double lo, double hi) -> std::optional<double> {
         bool ok = false;
         const double v = parser.value(o).toDouble(&ok);
         if (!ok || !std::isfinite(v) || v < lo || v > hi) {
-            error = tr("--%1 must be a number in [%2, %3] (got '%4')").arg(o.names().first()).arg(lo).arg(hi).arg(parser.value(o));
+            error = nb::TrCli::tr("--%1 must be a number in [%2, %3] (got '%4')").arg(o.names().first()).arg(lo).arg(hi).arg(parser.value(o));
             return std::nullopt;
         }
         return v;
@@ -163,7 +158,7 @@ int cmdAcquire(const QStringList& args, Io io)
             loop.quit();
         }
         if (!started && wall.elapsed() > 10000) {
-            failure = tr("the devices did not get ready within 10 s");
+            failure = nb::TrCli::tr("the devices did not get ready within 10 s");
             loop.quit();
         }
     });

@@ -100,16 +100,16 @@ struct Step {
 int cmdDemo(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(TrCli::tr("Simulate, label, fit and export a short session in one go."));
-    const QCommandLineOption out(QStringLiteral("out"), TrCli::tr("the folder to write everything into"), QStringLiteral("DIR"));
-    const QCommandLineOption shortOpt(QStringLiteral("short"), TrCli::tr("a shorter session (one run per condition, fewer cycles)"));
+    parser.setApplicationDescription(nb::TrCli::tr("Simulate, label, fit and export a short session in one go."));
+    const QCommandLineOption out(QStringLiteral("out"), nb::TrCli::tr("the folder to write everything into"), QStringLiteral("DIR"));
+    const QCommandLineOption shortOpt(QStringLiteral("short"), nb::TrCli::tr("a shorter session (one run per condition, fewer cycles)"));
     parser.addOption(out);
     parser.addOption(shortOpt);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("demo"), args, io, 0, 0, &code))
         return code;
     if (parser.value(out).isEmpty()) {
-        io.err << "needlebench demo: " << TrCli::tr("--out DIR is required") << "\n\n" << TrCli::tr("Run 'needlebench demo --help' for the options.") << '\n';
+        io.err << "needlebench demo: " << nb::TrCli::tr("--out DIR is required") << "\n\n" << nb::TrCli::tr("Run 'needlebench demo --help' for the options.") << '\n';
         return Usage;
     }
     const bool shortRun = parser.isSet(shortOpt);
@@ -122,12 +122,12 @@ int cmdDemo(const QStringList& args, Io io)
     };
 
     if (!QDir().mkpath(root.path())) {
-        io.err << "needlebench demo: " << TrCli::tr("%1: cannot create the folder").arg(root.path()) << '\n';
+        io.err << "needlebench demo: " << nb::TrCli::tr("%1: cannot create the folder").arg(root.path()) << '\n';
         return Failure;
     }
     const QString sessionDir = root.filePath(QStringLiteral("session"));
     if (QFileInfo::exists(sessionDir) && !QDir(sessionDir).isEmpty()) {
-        io.err << "needlebench demo: " << TrCli::tr("%1 already holds a session; choose an empty --out folder").arg(sessionDir) << '\n';
+        io.err << "needlebench demo: " << nb::TrCli::tr("%1 already holds a session; choose an empty --out folder").arg(sessionDir) << '\n';
         return Failure;
     }
     SessionInfo info;
@@ -145,7 +145,7 @@ int cmdDemo(const QStringList& args, Io io)
             throw std::runtime_error(e.message().toStdString());
         }
     }();
-    step(TrCli::tr("session folder %1").arg(sessionDir));
+    step(nb::TrCli::tr("session folder %1").arg(sessionDir));
 
     // Two liver presets for stiffness (beveled, 4 mm/s), the friction slab at three frequencies.
     std::vector<Step> plan;
@@ -179,12 +179,12 @@ int cmdDemo(const QStringList& args, Io io)
                     << QString::number(shortRun ? 3 : kFrictionCycles);
         QString output;
         if (runQuiet(QStringLiteral("simulate"), simArgs, &output) != Ok) {
-            io.err << "needlebench demo: " << TrCli::tr("simulating %1 failed:\n%2").arg(runPath, output) << '\n';
+            io.err << "needlebench demo: " << nb::TrCli::tr("simulating %1 failed:\n%2").arg(runPath, output) << '\n';
             return Failure;
         }
-        step(TrCli::tr("simulated %1 (%2, %3)")
+        step(nb::TrCli::tr("simulated %1 (%2, %3)")
                  .arg(fi.fileName(), s.tissue,
-                      friction ? TrCli::tr("sine %1 Hz").arg(s.frequency_hz) : TrCli::tr("insertion 4 mm/s")));
+                      friction ? nb::TrCli::tr("sine %1 Hz").arg(s.frequency_hz) : nb::TrCli::tr("insertion 4 mm/s")));
 
         Run run;
         try {
@@ -212,7 +212,7 @@ int cmdDemo(const QStringList& args, Io io)
                 io.err << "needlebench demo: " << e.message() << '\n';
                 return Failure;
             }
-            step(TrCli::tr("rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)")
+            step(nb::TrCli::tr("rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)")
                      .arg(v.video).arg(v.frames).arg(vo.leadIn_s, 0, 'f', 2));
 
             // Found the way a user would: the needle's motion in the video against its speed.
@@ -233,14 +233,14 @@ int cmdDemo(const QStringList& args, Io io)
                 run.metadata.set(QStringLiteral("sync_offset_s"), v.sync->offset_s);
                 run.metadata.set(QStringLiteral("sync_confidence"), v.sync->confidence);
                 run.metadata.set(QStringLiteral("sync_method"), QStringLiteral("video motion vs needle speed (needlebench demo)"));
-                step(TrCli::tr("synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5")
+                step(nb::TrCli::tr("synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5")
                          .arg(v.video)
                          .arg(v.sync->offset_s, 0, 'f', 3)
                          .arg(v.trueOffset_s, 0, 'f', 3)
                          .arg((v.sync->offset_s - v.trueOffset_s) * vo.fps, 0, 'f', 1)
                          .arg(v.sync->confidence, 0, 'f', 2));
             } else {
-                step(TrCli::tr("note: could not synchronise %1 (%2); its frames are numbered without an offset")
+                step(nb::TrCli::tr("note: could not synchronise %1 (%2); its frames are numbered without an offset")
                          .arg(v.video, v.syncProblem));
             }
             try {
@@ -260,20 +260,20 @@ int cmdDemo(const QStringList& args, Io io)
             io.err << "needlebench demo: " << e.message() << '\n';
             return Failure;
         }
-        step(TrCli::tr("labelled %1: %2 suggested labels (%3)")
+        step(nb::TrCli::tr("labelled %1: %2 suggested labels (%3)")
                  .arg(fi.fileName())
                  .arg(labels.size())
-                 .arg(friction ? TrCli::tr("phases a, b1, b2, c per half-cycle") : TrCli::tr("contact, puncture, relaxation events")));
+                 .arg(friction ? nb::TrCli::tr("phases a, b1, b2, c per half-cycle") : nb::TrCli::tr("contact, puncture, relaxation events")));
     }
 
     LoadedDataset loaded = loadDataset(sessionDir);
     for (const QString& w : loaded.warnings)
-        io.err << TrCli::tr("warning: %1").arg(w) << '\n';
+        io.err << nb::TrCli::tr("warning: %1").arg(w) << '\n';
     const Dataset& d = loaded.dataset;
     const SessionAnalysis a = analyseDataset(d);
     for (const QString& w : a.warnings)
-        io.err << TrCli::tr("warning: %1").arg(w) << '\n';
-    step(TrCli::tr("fitted %1 stiffness runs in %2 groups, %3 friction runs, %4 validations")
+        io.err << nb::TrCli::tr("warning: %1").arg(w) << '\n';
+    step(nb::TrCli::tr("fitted %1 stiffness runs in %2 groups, %3 friction runs, %4 validations")
              .arg(a.stiffness.size()).arg(a.stiffnessGroups.size()).arg(a.friction.size()).arg(a.validation.size()));
 
     const QString csvDir = root.filePath(QStringLiteral("csv"));
@@ -284,11 +284,11 @@ int cmdDemo(const QStringList& args, Io io)
         writeLabelIntervalsCsv(QDir(csvDir).filePath(r.name + QStringLiteral(".intervals.csv")),
                                labelIntervals(r.run, r.labels, frameClockFor(r.run)));
     }
-    step(TrCli::tr("wrote %1 run CSVs with JSON sidecars and label interval tables").arg(d.runs.size()));
+    step(nb::TrCli::tr("wrote %1 run CSVs with JSON sidecars and label interval tables").arg(d.runs.size()));
 
     const QString h5 = root.filePath(QStringLiteral("session.h5"));
     writeSessionHdf5(h5, d);
-    step(TrCli::tr("wrote %1").arg(h5));
+    step(nb::TrCli::tr("wrote %1").arg(h5));
 
     const QString tablesDir = root.filePath(QStringLiteral("tables"));
     QDir().mkpath(tablesDir);
@@ -301,7 +301,7 @@ int cmdDemo(const QStringList& args, Io io)
         writeFitTableCsv(QDir(tablesDir).filePath(name + QStringLiteral(".csv")), table);
         writeFitTableLatex(QDir(tablesDir).filePath(name + QStringLiteral(".tex")), table);
     }
-    step(TrCli::tr("wrote %1 fit tables (CSV and LaTeX)").arg(tables.size()));
+    step(nb::TrCli::tr("wrote %1 fit tables (CSV and LaTeX)").arg(tables.size()));
 
     const QString figDir = root.filePath(QStringLiteral("figures"));
     QDir().mkpath(figDir);
@@ -327,18 +327,18 @@ int cmdDemo(const QStringList& args, Io io)
         saveFigure(&plot, QDir(figDir).filePath(QStringLiteral("validation_%1.png").arg(v.run)));
         ++figures;
     }
-    step(TrCli::tr("wrote %1 figures").arg(figures));
+    step(nb::TrCli::tr("wrote %1 figures").arg(figures));
 
-    io.out << '\n' << TrCli::tr("Demo finished in %1 s. Where everything went:").arg(clock.elapsed() / 1000.0, 0, 'f', 1) << '\n'
-           << TrCli::tr("  session (run files + labels): %1").arg(sessionDir) << '\n'
-           << TrCli::tr("  run CSVs + JSON sidecars:     %1").arg(csvDir) << '\n'
-           << TrCli::tr("  HDF5 (all runs):              %1").arg(h5) << '\n'
-           << TrCli::tr("  fit tables (CSV, LaTeX):      %1").arg(tablesDir) << '\n'
-           << TrCli::tr("  figures (PNG):                %1").arg(figDir) << '\n'
-           << TrCli::tr("  simulator ground truth:       %1").arg(root.filePath(QStringLiteral("truth"))) << '\n';
+    io.out << '\n' << nb::TrCli::tr("Demo finished in %1 s. Where everything went:").arg(clock.elapsed() / 1000.0, 0, 'f', 1) << '\n'
+           << nb::TrCli::tr("  session (run files + labels): %1").arg(sessionDir) << '\n'
+           << nb::TrCli::tr("  run CSVs + JSON sidecars:     %1").arg(csvDir) << '\n'
+           << nb::TrCli::tr("  HDF5 (all runs):              %1").arg(h5) << '\n'
+           << nb::TrCli::tr("  fit tables (CSV, LaTeX):      %1").arg(tablesDir) << '\n'
+           << nb::TrCli::tr("  figures (PNG):                %1").arg(figDir) << '\n'
+           << nb::TrCli::tr("  simulator ground truth:       %1").arg(root.filePath(QStringLiteral("truth"))) << '\n';
     for (const VideoReport& v : videos) {
         if (v.sync)
-            io.out << TrCli::tr("  video %1 (%2 frames): sync offset %3 s found, %4 s true, %5 ms off, confidence %6")
+            io.out << nb::TrCli::tr("  video %1 (%2 frames): sync offset %3 s found, %4 s true, %5 ms off, confidence %6")
                           .arg(QDir(sessionDir).filePath(v.video))
                           .arg(v.frames)
                           .arg(v.sync->offset_s, 0, 'f', 3)
@@ -347,7 +347,7 @@ int cmdDemo(const QStringList& args, Io io)
                           .arg(v.sync->confidence, 0, 'f', 2)
                    << '\n';
         else
-            io.out << TrCli::tr("  video %1 (%2 frames): not synchronised (%3); true offset %4 s")
+            io.out << nb::TrCli::tr("  video %1 (%2 frames): not synchronised (%3); true offset %4 s")
                           .arg(QDir(sessionDir).filePath(v.video))
                           .arg(v.frames)
                           .arg(v.syncProblem)
@@ -355,7 +355,7 @@ int cmdDemo(const QStringList& args, Io io)
                    << '\n';
     }
     for (const StiffnessGroupResult& g : a.stiffnessGroups)
-        io.out << TrCli::tr("  stiffness %1: a1 = %2 N/mm, a2 = %3 N/mm², puncture at %4 mm, %5 N")
+        io.out << nb::TrCli::tr("  stiffness %1: a1 = %2 N/mm, a2 = %3 N/mm², puncture at %4 mm, %5 N")
                       .arg(g.group)
                       .arg(g.summary.pooled.quadratic.model.a1_N_per_mm, 0, 'f', 4)
                       .arg(g.summary.pooled.quadratic.model.a2_N_per_mm2, 0, 'f', 4)
@@ -363,7 +363,7 @@ int cmdDemo(const QStringList& args, Io io)
                       .arg(g.meanPunctureForce_N, 0, 'f', 3)
                << '\n';
     if (a.frictionOverall)
-        io.out << TrCli::tr("  friction overall: Cp = %1 N/m, Cn = %2 N/m, bp = %3 N s/m², bn = %4 N s/m²")
+        io.out << nb::TrCli::tr("  friction overall: Cp = %1 N/m, Cn = %2 N/m, bp = %3 N s/m², bn = %4 N s/m²")
                       .arg(a.frictionOverall->mean.Cp_N_per_m, 0, 'f', 2)
                       .arg(a.frictionOverall->mean.Cn_N_per_m, 0, 'f', 2)
                       .arg(a.frictionOverall->mean.bp_Ns_per_m2, 0, 'f', 1)

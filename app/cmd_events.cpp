@@ -2,6 +2,7 @@
 // constant-velocity insertion.
 
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "core/events.h"
 #include "core/fit_error.h"
@@ -13,8 +14,6 @@
 namespace nb::cli {
 
 namespace {
-
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
 
 QJsonObject eventJson(const RunEvent& e)
 {
@@ -37,9 +36,9 @@ QString eventLine(const QString& name, const RunEvent& e)
 int cmdEvents(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("RUN.csv"), tr("a constant-velocity insertion run"));
+    parser.addPositionalArgument(QStringLiteral("RUN.csv"), nb::TrCli::tr("a constant-velocity insertion run"));
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("events"), args, io, 1, 1, &code))
         return code;
@@ -48,7 +47,7 @@ int cmdEvents(const QStringList& args, Io io)
     try {
         const RunReadResult r = readRunFile(path);
         for (const QString& w : r.warnings)
-            io.err << tr("warning: %1\n").arg(w);
+            io.err << nb::TrCli::tr("warning: %1\n").arg(w);
         ev = detectEvents(r.run);
     } catch (const RunFileError& e) {
         io.err << "needlebench events: " << e.message() << '\n';
@@ -75,18 +74,18 @@ int cmdEvents(const QStringList& args, Io io)
                                     {QStringLiteral("rms_N"), ev.stiffnessRms_N}}}});
         return Ok;
     }
-    io.out << tr("events of %1 (force zeroed by %2 N, noise %3 N)\n")
+    io.out << nb::TrCli::tr("events of %1 (force zeroed by %2 N, noise %3 N)\n")
                   .arg(path)
                   .arg(ev.zeroOffset_N, 0, 'g', 4)
                   .arg(ev.noise_N, 0, 'g', 3);
-    io.out << tr("event                 time_s position_mm   force_N\n");
-    io.out << eventLine(tr("contact"), ev.contact);
-    io.out << eventLine(tr("puncture"), ev.puncture);
+    io.out << nb::TrCli::tr("event                 time_s position_mm   force_N\n");
+    io.out << eventLine(nb::TrCli::tr("contact"), ev.contact);
+    io.out << eventLine(nb::TrCli::tr("puncture"), ev.puncture);
     if (ev.relaxation)
-        io.out << eventLine(tr("relaxation"), *ev.relaxation);
+        io.out << eventLine(nb::TrCli::tr("relaxation"), *ev.relaxation);
     for (const RunEvent& e : ev.internalPunctures)
-        io.out << eventLine(tr("internal puncture"), e);
-    io.out << tr("puncture depth %1 mm; stiffness a1 = %2 N/mm, a2 = %3 N/mm²\n")
+        io.out << eventLine(nb::TrCli::tr("internal puncture"), e);
+    io.out << nb::TrCli::tr("puncture depth %1 mm; stiffness a1 = %2 N/mm, a2 = %3 N/mm²\n")
                   .arg(ev.punctureDepth_mm(), 0, 'f', 3)
                   .arg(ev.stiffness.a1_N_per_mm, 0, 'g', 4)
                   .arg(ev.stiffness.a2_N_per_mm2, 0, 'g', 4);

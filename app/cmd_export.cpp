@@ -3,6 +3,7 @@
 // Ctrl-C cancels between chunks and leaves no half-written file behind.
 
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "core/export/dataset_loader.h"
 #include "core/export/eaf_export.h"
@@ -19,8 +20,6 @@
 namespace nb::cli {
 
 namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("cli", s); }
 
 volatile std::sig_atomic_t interrupted = 0;
 void onInterrupt(int) { interrupted = 1; }
@@ -52,14 +51,14 @@ QString videoFor(const DatasetRun& r)
 int cmdExport(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Export a session's runs, labels and metadata."));
-    parser.addPositionalArgument(QStringLiteral("SESSION_DIR"), tr("a session folder (or any folder of run files)"));
+    parser.setApplicationDescription(nb::TrCli::tr("Export a session's runs, labels and metadata."));
+    parser.addPositionalArgument(QStringLiteral("SESSION_DIR"), nb::TrCli::tr("a session folder (or any folder of run files)"));
     const QCommandLineOption format(QStringLiteral("format"),
-                                    tr("csv: a CSV + JSON sidecar + label interval table per run (OUT is a folder); "
+                                    nb::TrCli::tr("csv: a CSV + JSON sidecar + label interval table per run (OUT is a folder); "
                                        "hdf5: one HDF5 file (OUT is the file); eaf: an ELAN document per run with its "
                                        "force CSV linked (OUT is a folder)"),
                                     QStringLiteral("csv|hdf5|eaf"));
-    const QCommandLineOption out(QStringLiteral("out"), tr("where to write"), QStringLiteral("PATH"));
+    const QCommandLineOption out(QStringLiteral("out"), nb::TrCli::tr("where to write"), QStringLiteral("PATH"));
     parser.addOption(format);
     parser.addOption(out);
     int code = Ok;
@@ -68,13 +67,13 @@ int cmdExport(const QStringList& args, Io io)
     const QString fmt = parser.value(format);
     if (fmt != QLatin1String("csv") && fmt != QLatin1String("hdf5") && fmt != QLatin1String("eaf")) {
         io.err << "needlebench export: "
-               << (fmt.isEmpty() ? tr("--format is required (csv|hdf5|eaf)") : tr("unknown format '%1' (csv|hdf5|eaf)").arg(fmt))
-               << "\n\n" << tr("Run 'needlebench export --help' for the options.") << '\n';
+               << (fmt.isEmpty() ? nb::TrCli::tr("--format is required (csv|hdf5|eaf)") : nb::TrCli::tr("unknown format '%1' (csv|hdf5|eaf)").arg(fmt))
+               << "\n\n" << nb::TrCli::tr("Run 'needlebench export --help' for the options.") << '\n';
         return Usage;
     }
     if (parser.value(out).isEmpty()) {
-        io.err << "needlebench export: " << tr("--out PATH is required") << "\n\n"
-               << tr("Run 'needlebench export --help' for the options.") << '\n';
+        io.err << "needlebench export: " << nb::TrCli::tr("--out PATH is required") << "\n\n"
+               << nb::TrCli::tr("Run 'needlebench export --help' for the options.") << '\n';
         return Usage;
     }
     const QString dir = parser.positionalArguments().first();
@@ -88,10 +87,10 @@ int cmdExport(const QStringList& args, Io io)
         return Failure;
     }
     for (const QString& w : loaded.warnings)
-        io.err << tr("warning: %1").arg(w) << '\n';
+        io.err << nb::TrCli::tr("warning: %1").arg(w) << '\n';
     const Dataset& d = loaded.dataset;
     if (d.runs.empty()) {
-        io.err << "needlebench export: " << tr("%1: no run files (*.csv with time_s,position_mm,force_N)").arg(dir) << '\n';
+        io.err << "needlebench export: " << nb::TrCli::tr("%1: no run files (*.csv with time_s,position_mm,force_N)").arg(dir) << '\n';
         return Failure;
     }
 
@@ -102,7 +101,7 @@ int cmdExport(const QStringList& args, Io io)
     QStringList written;
     try {
         if (fmt == QLatin1String("hdf5")) {
-            io.out << tr("writing %1 runs to %2").arg(d.runs.size()).arg(target) << '\n';
+            io.out << nb::TrCli::tr("writing %1 runs to %2").arg(d.runs.size()).arg(target) << '\n';
             io.out.flush();
             if (!writeSessionHdf5(target, d, [&](qint64 done, qint64 total) {
                     if (done > 0) {
@@ -111,13 +110,13 @@ int cmdExport(const QStringList& args, Io io)
                     }
                     return progress(done, total);
                 })) {
-                io.err << "needlebench export: " << tr("cancelled; %1 was not written").arg(target) << '\n';
+                io.err << "needlebench export: " << nb::TrCli::tr("cancelled; %1 was not written").arg(target) << '\n';
                 return Failure;
             }
             written << target;
         } else {
             if (!QDir().mkpath(target)) {
-                io.err << "needlebench export: " << tr("%1: cannot create the folder").arg(target) << '\n';
+                io.err << "needlebench export: " << nb::TrCli::tr("%1: cannot create the folder").arg(target) << '\n';
                 return Failure;
             }
             const QDir outDir(target);
@@ -127,7 +126,7 @@ int cmdExport(const QStringList& args, Io io)
                 io.out.flush();
                 const QString csv = outDir.filePath(r.name + QStringLiteral(".csv"));
                 if (!writeRunCsv(csv, r, progress)) {
-                    io.err << "needlebench export: " << tr("cancelled after %1 of %2 runs; %3 was not written")
+                    io.err << "needlebench export: " << nb::TrCli::tr("cancelled after %1 of %2 runs; %3 was not written")
                                                             .arg(i).arg(d.runs.size()).arg(csv) << '\n';
                     return Failure;
                 }
@@ -147,7 +146,7 @@ int cmdExport(const QStringList& args, Io io)
         io.err << "needlebench export: " << e.message() << '\n';
         return Failure;
     }
-    io.out << tr("exported %1 runs from %2 as %3: %4 files").arg(d.runs.size()).arg(dir, fmt).arg(written.size()) << '\n';
+    io.out << nb::TrCli::tr("exported %1 runs from %2 as %3: %4 files").arg(d.runs.size()).arg(dir, fmt).arg(written.size()) << '\n';
     return Ok;
 }
 

@@ -2,6 +2,7 @@
 // The JSON keys are a contract with users' scripts; the tables are for reading.
 
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "core/calibration.h"
 #include "core/events.h"
@@ -19,8 +20,6 @@
 namespace nb::cli {
 
 namespace {
-
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
 
 // A failure of one input file: printed as one line naming the file, exit 1.
 struct FileFailure {
@@ -78,9 +77,9 @@ QJsonObject alternativesJson(const StiffnessFit& f)
 int fitCalibrationCommand(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("FILE.csv"), tr("calibration points: columns mass_g, voltage_V"));
+    parser.addPositionalArgument(QStringLiteral("FILE.csv"), nb::TrCli::tr("calibration points: columns mass_g, voltage_V"));
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("fit calibration"), args, io, 1, 1, &code))
         return code;
@@ -104,9 +103,9 @@ int fitCalibrationCommand(const QStringList& args, Io io)
                        {QStringLiteral("residuals_V"), residuals}});
         return Ok;
     }
-    io.out << tr("calibration %1: V = %2 V/g * m + %3 V   r2 = %4   rms = %5 V\n")
+    io.out << nb::TrCli::tr("calibration %1: V = %2 V/g * m + %3 V   r2 = %4   rms = %5 V\n")
                   .arg(path, num(fit.slope_V_per_g, 7), num(fit.intercept_V, 7), num(fit.r2, 7), num(fit.rms_V, 3));
-    io.out << tr("    mass_g   voltage_V  residual_V\n");
+    io.out << nb::TrCli::tr("    mass_g   voltage_V  residual_V\n");
     std::size_t worst = 0;
     for (std::size_t i = 0; i < points.size(); ++i)
         if (std::fabs(fit.residuals_V[i]) > std::fabs(fit.residuals_V[worst]))
@@ -118,7 +117,7 @@ int fitCalibrationCommand(const QStringList& args, Io io)
                       .arg(fit.residuals_V[i], 11, 'e', 2);
         // Three rms is where a point stops looking like noise.
         if (i == worst && fit.rms_V > 0.0 && std::fabs(fit.residuals_V[i]) > 3.0 * fit.rms_V)
-            io.out << tr("  <- largest residual, check this point");
+            io.out << nb::TrCli::tr("  <- largest residual, check this point");
         io.out << '\n';
     }
     return Ok;
@@ -127,9 +126,9 @@ int fitCalibrationCommand(const QStringList& args, Io io)
 int fitStiffnessCommand(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("RUN.csv..."), tr("constant-velocity insertion runs"));
+    parser.addPositionalArgument(QStringLiteral("RUN.csv..."), nb::TrCli::tr("constant-velocity insertion runs"));
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("fit stiffness"), args, io, 1, -1, &code))
         return code;
@@ -172,8 +171,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
                                     {QStringLiteral("a2_std_N_per_mm2"), sum.stdDevOfRuns.a2_N_per_mm2}}}});
         return Ok;
     }
-    io.out << tr("stiffness f = a1*x + a2*x^2, x = depth past contact [mm]\n");
-    io.out << tr("run                       contact_mm puncture_mm depth_mm  force_N  a1_N/mm   a2_N/mm2  rms_N    r2\n");
+    io.out << nb::TrCli::tr("stiffness f = a1*x + a2*x^2, x = depth past contact [mm]\n");
+    io.out << nb::TrCli::tr("run                       contact_mm puncture_mm depth_mm  force_N  a1_N/mm   a2_N/mm2  rms_N    r2\n");
     auto row = [&](const QString& name, const QString& c, const QString& p, const QString& d, const QString& fN,
                    const QuadraticStiffnessFit& q) {
         io.out << name.left(25).leftJustified(25) << ' ' << c.rightJustified(10) << ' ' << p.rightJustified(11) << ' '
@@ -186,11 +185,11 @@ int fitStiffnessCommand(const QStringList& args, Io io)
         row(QFileInfo(files[qsizetype(i)]).fileName(), num(ev.contact.position_mm, 4), num(ev.puncture.position_mm, 4),
             num(ev.punctureDepth_mm(), 4), num(ev.puncture.force_N, 4), sum.runs[i].quadratic);
     }
-    row(tr("pooled"), QString(), QString(), QString(), QString(), sum.pooled.quadratic);
-    io.out << tr("mean of runs: a1 = %1 ± %2 N/mm, a2 = %3 ± %4 N/mm²\n")
+    row(nb::TrCli::tr("pooled"), QString(), QString(), QString(), QString(), sum.pooled.quadratic);
+    io.out << nb::TrCli::tr("mean of runs: a1 = %1 ± %2 N/mm, a2 = %3 ± %4 N/mm²\n")
                   .arg(num(sum.meanOfRuns.a1_N_per_mm, 4), num(sum.stdDevOfRuns.a1_N_per_mm, 2),
                        num(sum.meanOfRuns.a2_N_per_mm2, 4), num(sum.stdDevOfRuns.a2_N_per_mm2, 2));
-    io.out << tr("alternatives (pooled): cubic rms %1 N r2 %2 (a3 = %3 N/mm³); spring x/(a x + b) rms %4 N r2 %5\n")
+    io.out << nb::TrCli::tr("alternatives (pooled): cubic rms %1 N r2 %2 (a3 = %3 N/mm³); spring x/(a x + b) rms %4 N r2 %5\n")
                   .arg(num(sum.pooled.cubic.rms_N, 3), num(sum.pooled.cubic.r2, 4), num(sum.pooled.cubic.a3_N_per_mm3, 3),
                        num(sum.pooled.spring.rms_N, 3), num(sum.pooled.spring.r2, 4));
     return Ok;
@@ -226,56 +225,56 @@ std::optional<double> positiveNumber(const QString& text)
 int fitFrictionCommand(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     const QCommandLineOption thickness(QStringLiteral("thickness-mm"),
-                                       tr("length of needle in tissue (slab thickness), required"), QStringLiteral("T"));
+                                       nb::TrCli::tr("length of needle in tissue (slab thickness), required"), QStringLiteral("T"));
     const QCommandLineOption mass(QStringLiteral("mass-kg"),
-                                  tr("needle holder mass removed from the force (eq. 21, default 0.087)"), QStringLiteral("M"));
-    const QCommandLineOption estimate(QStringLiteral("estimate-mass"), tr("estimate the mass with the friction (eq. 19)"));
-    const QCommandLineOption band(QStringLiteral("band-m-s"), tr("zero-velocity band width (default 0.005 = ±2.5 mm/s)"),
+                                  nb::TrCli::tr("needle holder mass removed from the force (eq. 21, default 0.087)"), QStringLiteral("M"));
+    const QCommandLineOption estimate(QStringLiteral("estimate-mass"), nb::TrCli::tr("estimate the mass with the friction (eq. 19)"));
+    const QCommandLineOption band(QStringLiteral("band-m-s"), nb::TrCli::tr("zero-velocity band width (default 0.005 = ±2.5 mm/s)"),
                                   QStringLiteral("B"));
     const QCommandLineOption labels(QStringLiteral("labels"),
-                                    tr("phase labels (track,label,start_s,end_s,comment) for a single run; "
+                                    nb::TrCli::tr("phase labels (track,label,start_s,end_s,comment) for a single run; "
                                        "C and b then come from phase c, D from phase a. Runs may carry a 'phase' "
                                        "column instead. Without phases the velocity band decides."),
                                     QStringLiteral("FILE"));
     for (const auto* o : {&json, &thickness, &mass, &estimate, &band, &labels})
         parser.addOption(*o);
-    parser.addPositionalArgument(QStringLiteral("RUN.csv..."), tr("sinusoidal runs through a tissue slab"));
+    parser.addPositionalArgument(QStringLiteral("RUN.csv..."), nb::TrCli::tr("sinusoidal runs through a tissue slab"));
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("fit friction"), args, io, 1, -1, &code))
         return code;
     auto usage = [&](const QString& why) {
         io.err << "needlebench fit friction: " << why << '\n'
-               << tr("Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] "
+               << nb::TrCli::tr("Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] "
                      "[--band-m-s B] [--labels FILE] [--json]\n");
         return int(Usage);
     };
     FrictionOptions options;
     if (!parser.isSet(thickness))
-        return usage(tr("--thickness-mm is required"));
+        return usage(nb::TrCli::tr("--thickness-mm is required"));
     if (const auto t = positiveNumber(parser.value(thickness)))
         options.thickness_mm = *t;
     else
-        return usage(tr("--thickness-mm: '%1' is not a positive number").arg(parser.value(thickness)));
+        return usage(nb::TrCli::tr("--thickness-mm: '%1' is not a positive number").arg(parser.value(thickness)));
     if (parser.isSet(mass) && parser.isSet(estimate))
-        return usage(tr("--mass-kg and --estimate-mass exclude each other"));
+        return usage(nb::TrCli::tr("--mass-kg and --estimate-mass exclude each other"));
     if (parser.isSet(mass)) {
         bool ok = false;
         options.mass_kg = parser.value(mass).toDouble(&ok);
         if (!ok || !std::isfinite(options.mass_kg) || options.mass_kg < 0.0)
-            return usage(tr("--mass-kg: '%1' is not a mass").arg(parser.value(mass)));
+            return usage(nb::TrCli::tr("--mass-kg: '%1' is not a mass").arg(parser.value(mass)));
     }
     options.estimateMass = parser.isSet(estimate);
     if (parser.isSet(band)) {
         if (const auto b = positiveNumber(parser.value(band)))
             options.band_m_s = *b;
         else
-            return usage(tr("--band-m-s: '%1' is not a positive number").arg(parser.value(band)));
+            return usage(nb::TrCli::tr("--band-m-s: '%1' is not a positive number").arg(parser.value(band)));
     }
     const QStringList files = parser.positionalArguments();
     if (parser.isSet(labels) && files.size() != 1)
-        return usage(tr("--labels applies to a single run; give one run per call"));
+        return usage(nb::TrCli::tr("--labels applies to a single run; give one run per call"));
 
     std::vector<FrictionFit> fits;
     for (const QString& path : files) {
@@ -324,11 +323,11 @@ int fitFrictionCommand(const QStringList& args, Io io)
                        {QStringLiteral("band_m_s"), options.band_m_s}});
         return Ok;
     }
-    io.out << tr("friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²\n")
+    io.out << nb::TrCli::tr("friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²\n")
                   .arg(num(options.thickness_mm));
     const bool m = options.estimateMass;
-    io.out << tr("group             statistic freq_Hz ") << (m ? tr("  m_est_kg ") : QString())
-           << tr("       Cp        Bp        Cn        Bn        Dp        Dn\n");
+    io.out << nb::TrCli::tr("group             statistic freq_Hz ") << (m ? nb::TrCli::tr("  m_est_kg ") : QString())
+           << nb::TrCli::tr("       Cp        Bp        Cn        Bn        Dp        Dn\n");
     auto line = [&](const QString& group, const QString& stat, const QString& freq, std::optional<double> mass,
                     const KarnoppPerLength& p) {
         io.out << group.left(17).leftJustified(17) << ' ' << stat.leftJustified(9) << ' ' << freq.rightJustified(7) << ' ';
@@ -339,24 +338,24 @@ int fitFrictionCommand(const QStringList& args, Io io)
         io.out << '\n';
     };
     for (std::size_t i = 0; i < fits.size(); ++i)
-        line(QFileInfo(files[qsizetype(i)]).fileName(), tr("run"), num(fits[i].frequency_hz, 3), fits[i].massEstimate_kg,
+        line(QFileInfo(files[qsizetype(i)]).fileName(), nb::TrCli::tr("run"), num(fits[i].frequency_hz, 3), fits[i].massEstimate_kg,
              fits[i].perLength);
     for (const FrictionGroup& g : groups) {
-        const QString name = tr("%1Hz (%2 runs)").arg(num(g.frequency_hz, 3)).arg(g.runs);
-        line(name, tr("mean"), num(g.frequency_hz, 3), g.massEstimateMean_kg, g.mean);
-        line(name, tr("std"), num(g.frequency_hz, 3), g.massEstimateStdDev_kg, g.stdDev);
+        const QString name = nb::TrCli::tr("%1Hz (%2 runs)").arg(num(g.frequency_hz, 3)).arg(g.runs);
+        line(name, nb::TrCli::tr("mean"), num(g.frequency_hz, 3), g.massEstimateMean_kg, g.mean);
+        line(name, nb::TrCli::tr("std"), num(g.frequency_hz, 3), g.massEstimateStdDev_kg, g.stdDev);
     }
-    line(tr("all (%1 runs)").arg(all.runs), tr("mean"), QString(), all.massEstimateMean_kg, all.mean);
-    line(tr("all (%1 runs)").arg(all.runs), tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev);
+    line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("mean"), QString(), all.massEstimateMean_kg, all.mean);
+    line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev);
     for (std::size_t i = 0; i < fits.size(); ++i)
-        io.out << tr("%1: D from %2, rms %3 N\n")
+        io.out << nb::TrCli::tr("%1: D from %2, rms %3 N\n")
                       .arg(QFileInfo(files[qsizetype(i)]).fileName(), fits[i].staticSource, num(fits[i].rms_N, 3));
     return Ok;
 }
 
 void printFitUsage(QTextStream& s)
 {
-    s << tr("Usage: needlebench fit calibration FILE.csv [--json]\n"
+    s << nb::TrCli::tr("Usage: needlebench fit calibration FILE.csv [--json]\n"
             "       needlebench fit stiffness RUN.csv... [--json]\n"
             "       needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass]\n"
             "                                [--band-m-s B] [--labels FILE] [--json]\n"
@@ -386,8 +385,8 @@ int cmdFit(const QStringList& args, Io io)
         io.err << "needlebench fit " << what << ": " << e.message() << '\n';
         return Failure;
     }
-    io.err << (what.isEmpty() ? tr("needlebench fit: say what to fit\n")
-                              : tr("needlebench fit: unknown fit '%1'\n").arg(what));
+    io.err << (what.isEmpty() ? nb::TrCli::tr("needlebench fit: say what to fit\n")
+                              : nb::TrCli::tr("needlebench fit: unknown fit '%1'\n").arg(what));
     printFitUsage(io.err);
     return Usage;
 }

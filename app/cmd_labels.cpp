@@ -1,6 +1,7 @@
 // `needlebench labels suggest RUN.csv --out LABELS.csv`: labels suggested from the data, in
 // the labels file format `track,label,start_s,end_s,comment`.
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "core/label_suggest.h"
 #include "core/run_file.h"
@@ -10,23 +11,21 @@
 
 namespace nb::cli {
 
-static QString tr(const char* s) { return QCoreApplication::translate("cli", s); }
-
 int cmdLabels(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Labels of a run. Actions: suggest (phases or events from the data)."));
-    parser.addPositionalArgument(QStringLiteral("ACTION"), tr("suggest"));
-    parser.addPositionalArgument(QStringLiteral("RUN.csv"), tr("the run file"));
-    const QCommandLineOption out(QStringLiteral("out"), tr("labels file to write (default RUN.labels.csv)"),
+    parser.setApplicationDescription(nb::TrCli::tr("Labels of a run. Actions: suggest (phases or events from the data)."));
+    parser.addPositionalArgument(QStringLiteral("ACTION"), nb::TrCli::tr("suggest"));
+    parser.addPositionalArgument(QStringLiteral("RUN.csv"), nb::TrCli::tr("the run file"));
+    const QCommandLineOption out(QStringLiteral("out"), nb::TrCli::tr("labels file to write (default RUN.labels.csv)"),
                                  QStringLiteral("LABELS.csv"));
-    const QCommandLineOption json(QStringLiteral("json"), tr("print the labels as JSON"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print the labels as JSON"));
     parser.addOptions({out, json});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("labels"), args, io, 2, 2, &code))
         return code;
     if (parser.positionalArguments()[0] != QLatin1String("suggest")) {
-        io.err << tr("needlebench labels: unknown action '%1' (suggest)\n\n").arg(parser.positionalArguments()[0])
+        io.err << nb::TrCli::tr("needlebench labels: unknown action '%1' (suggest)\n\n").arg(parser.positionalArguments()[0])
                << parser.helpText();
         return Usage;
     }
@@ -52,7 +51,7 @@ int cmdLabels(const QStringList& args, Io io)
                                      {QStringLiteral("comment"), l.comment}});
             printJson(io, QJsonObject{{QStringLiteral("labels"), a}, {QStringLiteral("out"), outPath}});
         } else {
-            io.out << tr("%1 labels suggested, written to %2\n").arg(labels.size()).arg(outPath);
+            io.out << nb::TrCli::tr("%1 labels suggested, written to %2\n").arg(labels.size()).arg(outPath);
         }
         return Ok;
     } catch (const RunFileError& e) {

@@ -3,6 +3,7 @@
 // place (addOptions/readOptions) so that more (e.g. --video) slot in without touching the run.
 
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "devices/acquisition_engine.h"
 #include "devices/device_set.h"
@@ -25,8 +26,6 @@ namespace nb::cli {
 
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
-
 struct SimulateOptions {
     QString protocol;
     devices::sim::RigConfig rig;
@@ -41,24 +40,24 @@ struct SimulateOptions {
 };
 
 struct OptionSet {
-    QCommandLineOption protocol{QStringLiteral("protocol"), tr("stiffness|internal|friction|prostate"), QStringLiteral("P")};
-    QCommandLineOption tissue{QStringLiteral("tissue"), tr("liver1|liver2|liver3|liver5|liver7|prostate"), QStringLiteral("T")};
-    QCommandLineOption tip{QStringLiteral("tip"), tr("beveled|diamond|blunt"), QStringLiteral("TIP")};
-    QCommandLineOption seed{QStringLiteral("seed"), tr("random seed (default 1)"), QStringLiteral("N"), QStringLiteral("1")};
-    QCommandLineOption rate{QStringLiteral("rate-hz"), tr("sampling rate, 100..10000 (default 500)"), QStringLiteral("R"), QStringLiteral("500")};
-    QCommandLineOption velocity{QStringLiteral("velocity-mm-s"), tr("insertion velocity (default 4, internal 2.5)"), QStringLiteral("V")};
-    QCommandLineOption depth{QStringLiteral("depth-mm"), tr("insertion depth from the start position (default 40)"), QStringLiteral("D")};
-    QCommandLineOption amplitude{QStringLiteral("amplitude-mm"), tr("sine amplitude (default 10)"), QStringLiteral("A"), QStringLiteral("10")};
-    QCommandLineOption frequency{QStringLiteral("frequency-hz"), tr("sine frequency (default 0.5)"), QStringLiteral("F"), QStringLiteral("0.5")};
-    QCommandLineOption cycles{QStringLiteral("cycles"), tr("sine cycles (default 7)"), QStringLiteral("N"), QStringLiteral("7")};
-    QCommandLineOption thickness{QStringLiteral("thickness-mm"), tr("tissue slab thickness on the friction platform (default 30)"), QStringLiteral("T"), QStringLiteral("30")};
-    QCommandLineOption bone{QStringLiteral("bone-depth-mm"), tr("bone this far below the surface (very stiff)"), QStringLiteral("D")};
-    QCommandLineOption maxForce{QStringLiteral("max-force-n"), tr("force limit that stops the stage (default 8)"), QStringLiteral("F"), QStringLiteral("8")};
-    QCommandLineOption realtime{QStringLiteral("realtime"), tr("run on the wall clock (default: as fast as possible)")};
-    QCommandLineOption truth{QStringLiteral("truth"), tr("write the ground truth as JSON"), QStringLiteral("FILE.json")};
-    QCommandLineOption out{QStringLiteral("out"), tr("the run file to write"), QStringLiteral("RUN.csv")};
-    QCommandLineOption video{QStringLiteral("video"), tr("also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)"), QStringLiteral("FILE")};
-    QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), tr("the video starts this long before the recording (default 0)"), QStringLiteral("S"), QStringLiteral("0")};
+    QCommandLineOption protocol{QStringLiteral("protocol"), nb::TrCli::tr("stiffness|internal|friction|prostate"), QStringLiteral("P")};
+    QCommandLineOption tissue{QStringLiteral("tissue"), nb::TrCli::tr("liver1|liver2|liver3|liver5|liver7|prostate"), QStringLiteral("T")};
+    QCommandLineOption tip{QStringLiteral("tip"), nb::TrCli::tr("beveled|diamond|blunt"), QStringLiteral("TIP")};
+    QCommandLineOption seed{QStringLiteral("seed"), nb::TrCli::tr("random seed (default 1)"), QStringLiteral("N"), QStringLiteral("1")};
+    QCommandLineOption rate{QStringLiteral("rate-hz"), nb::TrCli::tr("sampling rate, 100..10000 (default 500)"), QStringLiteral("R"), QStringLiteral("500")};
+    QCommandLineOption velocity{QStringLiteral("velocity-mm-s"), nb::TrCli::tr("insertion velocity (default 4, internal 2.5)"), QStringLiteral("V")};
+    QCommandLineOption depth{QStringLiteral("depth-mm"), nb::TrCli::tr("insertion depth from the start position (default 40)"), QStringLiteral("D")};
+    QCommandLineOption amplitude{QStringLiteral("amplitude-mm"), nb::TrCli::tr("sine amplitude (default 10)"), QStringLiteral("A"), QStringLiteral("10")};
+    QCommandLineOption frequency{QStringLiteral("frequency-hz"), nb::TrCli::tr("sine frequency (default 0.5)"), QStringLiteral("F"), QStringLiteral("0.5")};
+    QCommandLineOption cycles{QStringLiteral("cycles"), nb::TrCli::tr("sine cycles (default 7)"), QStringLiteral("N"), QStringLiteral("7")};
+    QCommandLineOption thickness{QStringLiteral("thickness-mm"), nb::TrCli::tr("tissue slab thickness on the friction platform (default 30)"), QStringLiteral("T"), QStringLiteral("30")};
+    QCommandLineOption bone{QStringLiteral("bone-depth-mm"), nb::TrCli::tr("bone this far below the surface (very stiff)"), QStringLiteral("D")};
+    QCommandLineOption maxForce{QStringLiteral("max-force-n"), nb::TrCli::tr("force limit that stops the stage (default 8)"), QStringLiteral("F"), QStringLiteral("8")};
+    QCommandLineOption realtime{QStringLiteral("realtime"), nb::TrCli::tr("run on the wall clock (default: as fast as possible)")};
+    QCommandLineOption truth{QStringLiteral("truth"), nb::TrCli::tr("write the ground truth as JSON"), QStringLiteral("FILE.json")};
+    QCommandLineOption out{QStringLiteral("out"), nb::TrCli::tr("the run file to write"), QStringLiteral("RUN.csv")};
+    QCommandLineOption video{QStringLiteral("video"), nb::TrCli::tr("also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)"), QStringLiteral("FILE")};
+    QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), nb::TrCli::tr("the video starts this long before the recording (default 0)"), QStringLiteral("S"), QStringLiteral("0")};
 
     void addTo(QCommandLineParser& p) const
     {
@@ -73,7 +72,7 @@ std::optional<double> number(const QCommandLineParser& p, const QCommandLineOpti
     bool ok = false;
     const double v = p.value(o).toDouble(&ok);
     if (!ok || !std::isfinite(v)) {
-        *error = tr("--%1: '%2' is not a number").arg(o.names().first(), p.value(o));
+        *error = nb::TrCli::tr("--%1: '%2' is not a number").arg(o.names().first(), p.value(o));
         return std::nullopt;
     }
     return v;
@@ -88,10 +87,10 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
     const QStringList protocols{QStringLiteral("stiffness"), QStringLiteral("internal"), QStringLiteral("friction"),
                                 QStringLiteral("prostate")};
     if (!protocols.contains(s.protocol))
-        return s.protocol.isEmpty() ? tr("--protocol is required (%1)").arg(protocols.join(QLatin1Char('|')))
-                                    : tr("unknown protocol '%1' (%2)").arg(s.protocol, protocols.join(QLatin1Char('|')));
+        return s.protocol.isEmpty() ? nb::TrCli::tr("--protocol is required (%1)").arg(protocols.join(QLatin1Char('|')))
+                                    : nb::TrCli::tr("unknown protocol '%1' (%2)").arg(s.protocol, protocols.join(QLatin1Char('|')));
     if (!p.isSet(o.out))
-        return tr("--out RUN.csv is required");
+        return nb::TrCli::tr("--out RUN.csv is required");
     s.out = p.value(o.out);
     s.truth = p.value(o.truth);
     s.video = p.value(o.video);
@@ -99,7 +98,7 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
         bool ok = false;
         s.videoOffset_s = p.value(o.videoOffset).toDouble(&ok);
         if (!ok || s.videoOffset_s < 0 || s.videoOffset_s > 600)
-            return tr("--video-offset-s wants seconds between 0 and 600");
+            return nb::TrCli::tr("--video-offset-s wants seconds between 0 and 600");
     }
 
     const bool internal = s.protocol == QLatin1String("internal");
@@ -110,11 +109,11 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
                    : (internal || friction) ? QStringLiteral("liver7")
                                      : QStringLiteral("liver1");
     if (!tissueNames().contains(s.rig.tissue))
-        return tr("unknown tissue '%1' (%2)").arg(s.rig.tissue, tissueNames().join(QLatin1Char('|')));
+        return nb::TrCli::tr("unknown tissue '%1' (%2)").arg(s.rig.tissue, tissueNames().join(QLatin1Char('|')));
     if (p.isSet(o.tip)) {
         const auto tip = tipFromName(p.value(o.tip));
         if (!tip)
-            return tr("unknown tip '%1' (beveled|diamond|blunt)").arg(p.value(o.tip));
+            return nb::TrCli::tr("unknown tip '%1' (beveled|diamond|blunt)").arg(p.value(o.tip));
         s.rig.tip = *tip;
     } else {
         // The thesis's pairings: blunt for capsule-free tissue, diamond for livers 5, 7 and the prostate.
@@ -126,14 +125,14 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
     bool ok = false;
     s.rig.seed = p.value(o.seed).toULongLong(&ok);
     if (!ok)
-        return tr("--seed: '%1' is not a non-negative integer").arg(p.value(o.seed));
+        return nb::TrCli::tr("--seed: '%1' is not a non-negative integer").arg(p.value(o.seed));
     s.rig.realtime = p.isSet(o.realtime);
 
     auto rate = number(p, o.rate, &error);
     if (!rate)
         return error;
     if (*rate < 100.0 || *rate > 10000.0)
-        return tr("--rate-hz must be between 100 and 10000 (got %1)").arg(*rate);
+        return nb::TrCli::tr("--rate-hz must be between 100 and 10000 (got %1)").arg(*rate);
     s.rateHz = *rate;
     s.velocity_mm_s = internal ? 2.5 : 4.0;
     if (p.isSet(o.velocity)) {
@@ -141,7 +140,7 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
         if (!v)
             return error;
         if (*v <= 0.0 || *v > s.rig.stage.maxVelocity_mm_s)
-            return tr("--velocity-mm-s must be in (0, %1]").arg(s.rig.stage.maxVelocity_mm_s);
+            return nb::TrCli::tr("--velocity-mm-s must be in (0, %1]").arg(s.rig.stage.maxVelocity_mm_s);
         s.velocity_mm_s = *v;
     }
     if (p.isSet(o.depth)) {
@@ -149,7 +148,7 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
         if (!d)
             return error;
         if (*d <= 0.0 || *d > s.rig.stage.maxPosition_mm)
-            return tr("--depth-mm must be in (0, %1]").arg(s.rig.stage.maxPosition_mm);
+            return nb::TrCli::tr("--depth-mm must be in (0, %1]").arg(s.rig.stage.maxPosition_mm);
         s.depth_mm = *d;
     }
     auto a = number(p, o.amplitude, &error);
@@ -159,16 +158,16 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
     if (!m)
         return error;
     if (*a <= 0.0 || *a > -s.rig.stage.minPosition_mm)
-        return tr("--amplitude-mm must be in (0, %1]").arg(-s.rig.stage.minPosition_mm);
+        return nb::TrCli::tr("--amplitude-mm must be in (0, %1]").arg(-s.rig.stage.minPosition_mm);
     if (*f <= 0.0 || *f > 5.0)
-        return tr("--frequency-hz must be in (0, 5]");
+        return nb::TrCli::tr("--frequency-hz must be in (0, 5]");
     if (*t <= 0.0)
-        return tr("--thickness-mm must be positive");
+        return nb::TrCli::tr("--thickness-mm must be positive");
     if (*m <= 0.0)
-        return tr("--max-force-n must be positive");
+        return nb::TrCli::tr("--max-force-n must be positive");
     const int cycles = p.value(o.cycles).toInt(&ok);
     if (!ok || cycles < 1)
-        return tr("--cycles must be a positive integer");
+        return nb::TrCli::tr("--cycles must be a positive integer");
     s.sine = {*a, *f, cycles};
     s.rig.thickness_mm = *t;
     s.maxForce_N = *m;
@@ -239,7 +238,7 @@ int cmdSimulate(const QStringList& args, Io io)
         return code;
     SimulateOptions s;
     if (const QString error = readOptions(parser, o, s); !error.isEmpty()) {
-        io.err << "needlebench simulate: " << error << "\n\n" << tr("Run 'needlebench simulate --help' for the options.") << '\n';
+        io.err << "needlebench simulate: " << error << "\n\n" << nb::TrCli::tr("Run 'needlebench simulate --help' for the options.") << '\n';
         return Usage;
     }
 
@@ -311,7 +310,7 @@ int cmdSimulate(const QStringList& args, Io io)
             io.out.flush();
         }
         if (wall.elapsed() > 30 * 60 * 1000) {
-            faultText = tr("the run did not finish within 30 minutes");
+            faultText = nb::TrCli::tr("the run did not finish within 30 minutes");
             engine.endRun();
         }
     });
@@ -359,7 +358,7 @@ int cmdSimulate(const QStringList& args, Io io)
         QSaveFile tf(s.truth);
         if (!tf.open(QIODevice::WriteOnly) || tf.write(QJsonDocument(truth).toJson(QJsonDocument::Indented)) < 0 ||
             !tf.commit()) {
-            io.err << "needlebench simulate: " << tr("cannot write %1: %2").arg(s.truth, tf.errorString()) << '\n';
+            io.err << "needlebench simulate: " << nb::TrCli::tr("cannot write %1: %2").arg(s.truth, tf.errorString()) << '\n';
             return Failure;
         }
     }

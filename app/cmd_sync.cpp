@@ -1,6 +1,7 @@
 // `needlebench sync RUN.csv VIDEO [--roi x,y,w,h] [--json]`: finds the offset between the
 // video and the force record by correlating video motion with the needle's speed.
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "core/run_file.h"
 #include "core/sync.h"
@@ -13,19 +14,17 @@
 
 namespace nb::cli {
 
-static QString tr(const char* s) { return QCoreApplication::translate("cli", s); }
-
 int cmdSync(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Find the video's offset to the force record (video time = recording time + offset)."));
-    parser.addPositionalArgument(QStringLiteral("RUN.csv"), tr("the run file"));
-    parser.addPositionalArgument(QStringLiteral("VIDEO"), tr("the video of the run"));
-    const QCommandLineOption roi(QStringLiteral("roi"), tr("region of the picture that moves with the needle, in pixels"),
+    parser.setApplicationDescription(nb::TrCli::tr("Find the video's offset to the force record (video time = recording time + offset)."));
+    parser.addPositionalArgument(QStringLiteral("RUN.csv"), nb::TrCli::tr("the run file"));
+    parser.addPositionalArgument(QStringLiteral("VIDEO"), nb::TrCli::tr("the video of the run"));
+    const QCommandLineOption roi(QStringLiteral("roi"), nb::TrCli::tr("region of the picture that moves with the needle, in pixels"),
                                  QStringLiteral("x,y,w,h"));
-    const QCommandLineOption maxOffset(QStringLiteral("max-offset"), tr("largest offset to consider, seconds (default 20)"),
+    const QCommandLineOption maxOffset(QStringLiteral("max-offset"), nb::TrCli::tr("largest offset to consider, seconds (default 20)"),
                                        QStringLiteral("S"), QStringLiteral("20"));
-    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     parser.addOptions({roi, maxOffset, json});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("sync"), args, io, 2, 2, &code))
@@ -38,7 +37,7 @@ int cmdSync(const QStringList& args, Io io)
         for (int i = 0; ok && i < 4; ++i)
             v[i] = p[i].trimmed().toInt(&ok);
         if (!ok || v[2] <= 0 || v[3] <= 0) {
-            io.err << tr("needlebench sync: --roi wants x,y,w,h in whole pixels, w and h > 0\n\n") << parser.helpText();
+            io.err << nb::TrCli::tr("needlebench sync: --roi wants x,y,w,h in whole pixels, w and h > 0\n\n") << parser.helpText();
             return Usage;
         }
         region = QRect(v[0], v[1], v[2], v[3]);
@@ -47,7 +46,7 @@ int cmdSync(const QStringList& args, Io io)
     SyncOptions options;
     options.maxOffset_s = parser.value(maxOffset).toDouble(&ok);
     if (!ok || options.maxOffset_s <= 0) {
-        io.err << tr("needlebench sync: --max-offset wants a positive number of seconds\n");
+        io.err << nb::TrCli::tr("needlebench sync: --max-offset wants a positive number of seconds\n");
         return Usage;
     }
     const QString runPath = parser.positionalArguments()[0], videoPath = parser.positionalArguments()[1];
@@ -55,7 +54,7 @@ int cmdSync(const QStringList& args, Io io)
         const Run run = readRunFile(runPath).run;
         devices::FrameReader reader(devices::buildFrameIndex(videoPath), 8);
         if (!region.isEmpty() && !QRect(0, 0, reader.index().width, reader.index().height).contains(region)) {
-            io.err << tr("needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture\n")
+            io.err << nb::TrCli::tr("needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture\n")
                           .arg(region.x()).arg(region.y()).arg(region.width()).arg(region.height())
                           .arg(reader.index().width).arg(reader.index().height);
             return Usage;
@@ -72,11 +71,11 @@ int cmdSync(const QStringList& args, Io io)
             o[QStringLiteral("frames")] = reader.index().size();
             printJson(io, o);
         } else {
-            io.out << tr("offset:      %1 s (video time minus recording time)\n").arg(r.offset_s, 0, 'f', 4)
-                   << tr("confidence:  %1\n").arg(r.confidence, 0, 'f', 2)
-                   << tr("correlation: %1\n").arg(r.correlation, 0, 'f', 3);
+            io.out << nb::TrCli::tr("offset:      %1 s (video time minus recording time)\n").arg(r.offset_s, 0, 'f', 4)
+                   << nb::TrCli::tr("confidence:  %1\n").arg(r.confidence, 0, 'f', 2)
+                   << nb::TrCli::tr("correlation: %1\n").arg(r.correlation, 0, 'f', 3);
             if (r.onsetOffset_s)
-                io.out << tr("onsets say:  %1 s\n").arg(*r.onsetOffset_s, 0, 'f', 4);
+                io.out << nb::TrCli::tr("onsets say:  %1 s\n").arg(*r.onsetOffset_s, 0, 'f', 4);
         }
         return Ok;
     } catch (const RunFileError& e) {
@@ -84,7 +83,7 @@ int cmdSync(const QStringList& args, Io io)
     } catch (const devices::VideoError& e) {
         io.err << "needlebench sync: " << e.message() << '\n';
     } catch (const std::invalid_argument& e) {
-        io.err << "needlebench sync: " << tr("cannot synchronise: %1").arg(QString::fromUtf8(e.what())) << '\n';
+        io.err << "needlebench sync: " << nb::TrCli::tr("cannot synchronise: %1").arg(QString::fromUtf8(e.what())) << '\n';
     }
     return Failure;
 }

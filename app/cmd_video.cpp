@@ -1,5 +1,6 @@
 // `needlebench video-info FILE [--json]` and `needlebench frame FILE --index N --out IMAGE [--json]`.
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "devices/video/frame_index.h"
 #include "devices/video/frame_reader.h"
@@ -12,8 +13,6 @@
 namespace nb::cli {
 
 using nb::devices::FrameIndex;
-
-static QString tr(const char* s) { return QCoreApplication::translate("cli", s); }
 
 static QJsonObject infoJson(const FrameIndex& index)
 {
@@ -41,9 +40,9 @@ static QJsonObject infoJson(const FrameIndex& index)
 int cmdVideoInfo(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Index a video file frame by frame and describe it."));
-    parser.addPositionalArgument(QStringLiteral("FILE"), tr("the video file"));
-    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    parser.setApplicationDescription(nb::TrCli::tr("Index a video file frame by frame and describe it."));
+    parser.addPositionalArgument(QStringLiteral("FILE"), nb::TrCli::tr("the video file"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     parser.addOption(json);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("video-info"), args, io, 1, 1, &code))
@@ -52,18 +51,18 @@ int cmdVideoInfo(const QStringList& args, Io io)
     try {
         const FrameIndex index = nb::devices::buildFrameIndex(path);
         for (const QString& w : index.warnings)
-            io.err << tr("warning: %1: %2").arg(path, w) << '\n';
+            io.err << nb::TrCli::tr("warning: %1: %2").arg(path, w) << '\n';
         if (parser.isSet(json)) {
             printJson(io, infoJson(index));
         } else {
-            io.out << tr("file:        %1\n").arg(path) << tr("codec:       %1\n").arg(index.codec)
-                   << tr("size:        %1x%2\n").arg(index.width).arg(index.height)
-                   << tr("frames:      %1\n").arg(index.size())
-                   << tr("rate:        %1 frames/s nominal%2\n")
+            io.out << nb::TrCli::tr("file:        %1\n").arg(path) << nb::TrCli::tr("codec:       %1\n").arg(index.codec)
+                   << nb::TrCli::tr("size:        %1x%2\n").arg(index.width).arg(index.height)
+                   << nb::TrCli::tr("frames:      %1\n").arg(index.size())
+                   << nb::TrCli::tr("rate:        %1 frames/s nominal%2\n")
                           .arg(index.fpsNominal, 0, 'f', 3)
-                          .arg(index.variableFrameRate() ? tr(", variable") : QString())
-                   << tr("duration:    %1 s\n").arg(index.duration_s(), 0, 'f', 3)
-                   << tr("duplicates:  %1\n").arg(index.duplicateCount());
+                          .arg(index.variableFrameRate() ? nb::TrCli::tr(", variable") : QString())
+                   << nb::TrCli::tr("duration:    %1 s\n").arg(index.duration_s(), 0, 'f', 3)
+                   << nb::TrCli::tr("duplicates:  %1\n").arg(index.duplicateCount());
         }
         return Ok;
     } catch (const nb::devices::VideoError& e) {
@@ -75,11 +74,11 @@ int cmdVideoInfo(const QStringList& args, Io io)
 int cmdFrame(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Write frame N (N-th in presentation order, from 0) of a video as an image."));
-    parser.addPositionalArgument(QStringLiteral("FILE"), tr("the video file"));
-    const QCommandLineOption indexOpt(QStringLiteral("index"), tr("frame number, from 0"), QStringLiteral("N"));
-    const QCommandLineOption outOpt(QStringLiteral("out"), tr("image to write (.png)"), QStringLiteral("IMAGE"));
-    const QCommandLineOption json(QStringLiteral("json"), tr("print JSON"));
+    parser.setApplicationDescription(nb::TrCli::tr("Write frame N (N-th in presentation order, from 0) of a video as an image."));
+    parser.addPositionalArgument(QStringLiteral("FILE"), nb::TrCli::tr("the video file"));
+    const QCommandLineOption indexOpt(QStringLiteral("index"), nb::TrCli::tr("frame number, from 0"), QStringLiteral("N"));
+    const QCommandLineOption outOpt(QStringLiteral("out"), nb::TrCli::tr("image to write (.png)"), QStringLiteral("IMAGE"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     parser.addOptions({indexOpt, outOpt, json});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("frame"), args, io, 1, 1, &code))
@@ -87,7 +86,7 @@ int cmdFrame(const QStringList& args, Io io)
     bool ok = false;
     const int n = parser.value(indexOpt).toInt(&ok);
     if (!parser.isSet(indexOpt) || !ok || n < 0 || !parser.isSet(outOpt)) {
-        io.err << tr("needlebench frame: --index N (a whole number >= 0) and --out IMAGE are required\n\n")
+        io.err << nb::TrCli::tr("needlebench frame: --index N (a whole number >= 0) and --out IMAGE are required\n\n")
                << parser.helpText();
         return Usage;
     }
@@ -100,11 +99,11 @@ int cmdFrame(const QStringList& args, Io io)
         try {
             written = cv::imwrite(out.toStdString(), frame.image);
         } catch (const cv::Exception& e) {
-            io.err << tr("needlebench frame: %1: %2\n").arg(out, QString::fromStdString(e.msg));
+            io.err << nb::TrCli::tr("needlebench frame: %1: %2\n").arg(out, QString::fromStdString(e.msg));
             return Failure;
         }
         if (!written) {
-            io.err << tr("needlebench frame: %1: cannot write the image\n").arg(out);
+            io.err << nb::TrCli::tr("needlebench frame: %1: cannot write the image\n").arg(out);
             return Failure;
         }
         if (parser.isSet(json)) {
@@ -113,7 +112,7 @@ int cmdFrame(const QStringList& args, Io io)
             o[QStringLiteral("time_s")] = frame.time_s;
             printJson(io, o);
         } else {
-            io.out << tr("frame %1 at %2 s written to %3\n").arg(frame.index).arg(frame.time_s, 0, 'f', 6).arg(out);
+            io.out << nb::TrCli::tr("frame %1 at %2 s written to %3\n").arg(frame.index).arg(frame.time_s, 0, 'f', 6).arg(out);
         }
         return Ok;
     } catch (const nb::devices::VideoError& e) {

@@ -5,12 +5,16 @@
 #include "core/events.h"
 #include "core/fit_error.h"
 #include "devices/acquisition_engine.h"
+#include "devices/device_error.h"
 #include "devices/device_set.h"
+#include "devices/device_spec.h"
 #include "devices/sim/rig_config.h"
 #include "devices/sim/simulated_rig.h"
 #include "widgets/calibration_wizard.h"
 #include "widgets/control_panel.h"
 #include "widgets/force_plots.h"
+#include "widgets/analysis/analysis_workspace.h"
+#include "widgets/review_workspace.h"
 #include "widgets/session_view.h"
 
 #include <QActionGroup>
@@ -23,6 +27,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -36,6 +41,7 @@
 #include <QShortcut>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 
 namespace nb {
@@ -58,15 +64,35 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
 
     devices::sim::RigConfig rig;
     rig.realtime = options_.realtime;
-    devices::DeviceSet devices = devices::makeSimulatedDevices(rig);
+    devices::DeviceSet devices;
+    QString deviceProblem;
+    if (options_.devicesFromSettings) {
+        try {
+            devices = devices::openDevices(devices::specFromSettings(QSettings()), rig);
+        } catch (const devices::DeviceError& e) {
+            // Never leave the operator without a window: say what failed and use the simulated rig.
+            deviceProblem = e.message();
+        }
+    }
+    if (!devices.stage || !devices.sensor)
+        devices = devices::makeSimulatedDevices(rig);
     nominalSensor_ = devices.description;
     devices::EngineConfig config;
     config.rateHz = options_.rateHz;
     config.realtimeScheduling = options_.realtime;
     engine_ = std::make_unique<devices::AcquisitionEngine>(std::move(devices), config);
 
+    // Record live, review video against the force, analyse the session: one window, three tabs.
     plots_ = new ForcePlots(this);
-    setCentralWidget(plots_);
+    review_ = new ReviewWorkspace(this);
+    analysis_ = new AnalysisWorkspace(this);
+    tabs_ = new QTabWidget(this);
+    tabs_->setObjectName(QStringLiteral("workspaces"));
+    tabs_->setDocumentMode(true);
+    tabs_->addTab(plots_, tr("&Record"));
+    tabs_->addTab(review_, tr("Re&view"));
+    tabs_->addTab(analysis_, tr("&Analysis"));
+    setCentralWidget(tabs_);
 
     panel_ = new ControlPanel(this);
     setWindowIcon(QIcon(QStringLiteral(":/icons/needlebench.svg")));  // after the panel registered the icons
@@ -92,6 +118,9 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
 
     statusLabel_ = new QLabel(this);
     statusBar()->addPermanentWidget(statusLabel_);
+    connect(sessionView_, &SessionView::runActivated, this, &MainWindow::reviewRun);
+    if (!deviceProblem.isEmpty())
+        showMessage(tr("Could not open the configured devices (%1); using the simulated rig.").arg(deviceProblem), true);
 
     // The emergency stop answers Esc wherever the focus is, in any window of the application.
     auto* estop = new QShortcut(QKeySequence(Qt::Key_Escape), this);
@@ -246,10 +275,27 @@ bool MainWindow::openSession(const QString& dir)
         engine_->setCalibration(cal->fit.slope_V_per_g, cal->name);
     panel_->setSessionOpen(true);
     sessionView_->setSession(&*session_);
+    analysis_->openSession(session_->dir());
     setWindowTitle(tr("NeedleBench – %1").arg(QDir::toNativeSeparators(session_->dir())));
     if (options_.persistSettings)
         QSettings().setValue(QStringLiteral("session/last"), session_->dir());
     return true;
+}
+
+void MainWindow::reviewRun(const QString& path)
+{
+    if (!review_->openRun(path))
+        return;
+    // A run's imaging video is stored beside it under the same name.
+    const QFileInfo run(path);
+    for (const char* ext : {"mp4", "mkv", "avi"}) {
+        const QString video = run.dir().filePath(run.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
+        if (QFileInfo::exists(video)) {
+            review_->openVideo(video);
+            break;
+        }
+    }
+    tabs_->setCurrentWidget(review_);
 }
 
 bool MainWindow::createSession(const QString& dir, const SessionInfo& info)
@@ -439,6 +485,8 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
     if (runIsLinear_)
         markDetectedEvents();
     sessionView_->refresh();
+    if (session_)
+        analysis_->openSession(session_->dir());
 }
 
 void MainWindow::markDetectedEvents()

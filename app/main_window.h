@@ -11,6 +11,7 @@
 class QLabel;
 class QTimer;
 class QDockWidget;
+class QTabWidget;
 
 namespace nb {
 
@@ -24,6 +25,8 @@ class ControlPanel;
 class ForcePlots;
 class SessionView;
 class CalibrationWizard;
+class ReviewWorkspace;
+class AnalysisWorkspace;
 
 struct WorkbenchOptions {
     bool realtime = true;             // false: the simulated rig runs as fast as it can (tests)
@@ -31,6 +34,9 @@ struct WorkbenchOptions {
     QString sessionDir;               // open (or create) this session; empty: the last one, else a new one
     double calibrationDwell_s = 2.0;  // averaging per mass in the calibration wizard
     bool persistSettings = true;      // restore and save window layout and settings
+    // Devices from the settings (devices/daq, devices/stage: see devices/device_spec.h); off in
+    // tests, which always run on the simulated rig.
+    bool devicesFromSettings = true;
 };
 
 // The workbench window: the control panel and status (left), the live plots (centre), the
@@ -45,6 +51,11 @@ public:
     ControlPanel* controlPanel() const { return panel_; }
     ForcePlots* plots() const { return plots_; }
     SessionView* sessionView() const { return sessionView_; }
+    ReviewWorkspace* reviewWorkspace() const { return review_; }
+    AnalysisWorkspace* analysisWorkspace() const { return analysis_; }
+    QTabWidget* workspaces() const { return tabs_; }
+    // Opens a recorded run in the review workspace (with its video, when one lies beside it).
+    void reviewRun(const QString& path);
     devices::AcquisitionEngine* engine() const { return engine_.get(); }
     const Session* session() const { return session_ ? &*session_ : nullptr; }
     // Runs recovered when the session was opened (file names).
@@ -79,6 +90,9 @@ private:
     std::optional<Session> session_;
     ControlPanel* panel_ = nullptr;
     ForcePlots* plots_ = nullptr;
+    QTabWidget* tabs_ = nullptr;
+    ReviewWorkspace* review_ = nullptr;
+    AnalysisWorkspace* analysis_ = nullptr;
     SessionView* sessionView_ = nullptr;
     QDockWidget* panelDock_ = nullptr;
     QDockWidget* sessionDock_ = nullptr;

@@ -1,4 +1,5 @@
 #include "labels.h"
+#include "core/tr.h"
 
 #include "run_file.h"
 
@@ -9,8 +10,6 @@
 namespace nb {
 
 namespace {
-
-QString tr(const char* s) { return QString::fromUtf8(s); }
 
 // Splits one CSV line, honouring "..." quoting with "" as an escaped quote.
 QStringList splitCsv(const QString& line)
@@ -58,7 +57,7 @@ Labels readLabelsFile(const QString& path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw RunFileError(path, 0, tr("cannot open: %1").arg(file.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot open: %1").arg(file.errorString()));
     QString text = QString::fromUtf8(file.readAll());
     if (text.startsWith(QChar(0xFEFF)))
         text.remove(0, 1);
@@ -80,7 +79,7 @@ Labels readLabelsFile(const QString& path)
                 col[k] = int(f.indexOf(QLatin1String(names[k])));
             for (int k = 0; k < 4; ++k)
                 if (col[k] < 0)
-                    throw RunFileError(path, i + 1, tr("header has no '%1' column").arg(QLatin1String(names[k])));
+                    throw RunFileError(path, i + 1, nb::TrCore::tr("header has no '%1' column").arg(QLatin1String(names[k])));
             continue;
         }
         auto field = [&](int k) { return col[k] >= 0 && col[k] < f.size() ? f[col[k]] : QString(); };
@@ -92,15 +91,15 @@ Labels readLabelsFile(const QString& path)
         l.end_s = field(3).toDouble(&ok2);
         l.comment = field(4);
         if (!ok1 || !ok2 || !std::isfinite(l.start_s) || !std::isfinite(l.end_s))
-            throw RunFileError(path, i + 1, tr("start_s and end_s must be numbers"));
+            throw RunFileError(path, i + 1, nb::TrCore::tr("start_s and end_s must be numbers"));
         if (l.end_s < l.start_s)
-            throw RunFileError(path, i + 1, tr("end_s %1 is before start_s %2").arg(l.end_s).arg(l.start_s));
+            throw RunFileError(path, i + 1, nb::TrCore::tr("end_s %1 is before start_s %2").arg(l.end_s).arg(l.start_s));
         if (l.label.isEmpty())
-            throw RunFileError(path, i + 1, tr("empty label"));
+            throw RunFileError(path, i + 1, nb::TrCore::tr("empty label"));
         labels.push_back(std::move(l));
     }
     if (!haveHeader)
-        throw RunFileError(path, 0, tr("no header row (expected track,label,start_s,end_s,comment)"));
+        throw RunFileError(path, 0, nb::TrCore::tr("no header row (expected track,label,start_s,end_s,comment)"));
     return labels;
 }
 
@@ -108,7 +107,7 @@ void writeLabelsFile(const QString& path, const Labels& labels)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
     QByteArray out = "track,label,start_s,end_s,comment\n";
     for (const Label& l : labels)
         out += QStringLiteral("%1,%2,%3,%4,%5\n")
@@ -119,7 +118,7 @@ void writeLabelsFile(const QString& path, const Labels& labels)
                    .toUtf8();
     file.write(out);
     if (!file.commit())
-        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
 }
 
 QStringList phasePerSample(const Labels& labels, const std::vector<double>& time_s, const QString& track)

@@ -1,4 +1,5 @@
 #include "run_file.h"
+#include "core/tr.h"
 
 #include <QSaveFile>
 #include <charconv>
@@ -10,8 +11,6 @@ namespace nb {
 namespace {
 
 constexpr const char* kRequired[] = {"time_s", "position_mm", "force_N"};
-
-QString tr(const char* text) { return QString::fromUtf8(text); }
 
 // Splits one CSV line on commas (the format has no quoting: metadata lives in `#` lines,
 // text columns hold labels without commas). Trims surrounding blanks.
@@ -91,7 +90,7 @@ RunReadResult readRunFile(const QString& path, const RunReadOptions& options)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw RunFileError(path, 0, tr("cannot open: %1").arg(file.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot open: %1").arg(file.errorString()));
     return parseRunText(file.readAll(), path, options);
 }
 
@@ -103,7 +102,7 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
     if (text.starts_with("\xEF\xBB\xBF"))
         text.remove_prefix(3);
     if (text.find('\0') != std::string_view::npos)
-        throw RunFileError(name, 0, tr("binary data, not a text run file"));
+        throw RunFileError(name, 0, nb::TrCore::tr("binary data, not a text run file"));
 
     std::vector<Kind> kinds;
     QStringList columnNames;
@@ -149,12 +148,12 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
             for (const char* req : kRequired)
                 if (!names.contains(QLatin1String(req)))
                     throw RunFileError(name, lineNo,
-                                       tr("header has no '%1' column (found: %2)")
+                                       nb::TrCore::tr("header has no '%1' column (found: %2)")
                                            .arg(QLatin1String(req), names.join(QLatin1String(", "))));
             QStringList ignored;
             for (const QString& n : names) {
                 if (names.count(n) > 1)
-                    throw RunFileError(name, lineNo, tr("column '%1' appears twice").arg(n));
+                    throw RunFileError(name, lineNo, nb::TrCore::tr("column '%1' appears twice").arg(n));
                 if (n == QLatin1String("time_s"))
                     kinds.push_back(Kind::Time);
                 else if (n == QLatin1String("position_mm"))
@@ -175,24 +174,24 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                 }
             }
             if (!ignored.isEmpty())
-                result.warnings << tr("%1: ignored unknown columns: %2").arg(name, ignored.join(QLatin1String(", ")));
+                result.warnings << nb::TrCore::tr("%1: ignored unknown columns: %2").arg(name, ignored.join(QLatin1String(", ")));
             continue;
         }
 
         if (dataEnded)
-            throw RunFileError(name, lineNo, tr("sample row after the closing metadata"));
+            throw RunFileError(name, lineNo, nb::TrCore::tr("sample row after the closing metadata"));
         if (fields.size() != kinds.size()) {
             if (lastLineUnterminated && options.dropTruncatedLastRow) {
-                result.warnings << tr("%1:%2: dropped a partial last row (recording was interrupted)")
+                result.warnings << nb::TrCore::tr("%1:%2: dropped a partial last row (recording was interrupted)")
                                        .arg(name)
                                        .arg(lineNo);
                 break;
             }
             throw RunFileError(name, lineNo,
-                               tr("expected %1 fields, found %2%3")
+                               nb::TrCore::tr("expected %1 fields, found %2%3")
                                    .arg(kinds.size())
                                    .arg(fields.size())
-                                   .arg(lastLineUnterminated ? tr(" (file ends mid-row: interrupted recording?)")
+                                   .arg(lastLineUnterminated ? nb::TrCore::tr(" (file ends mid-row: interrupted recording?)")
                                                              : QString()));
         }
         std::size_t ni = 0, ti = 0;
@@ -209,13 +208,13 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                 const bool optionalEmpty = k == Kind::Numeric && fields[c].empty();
                 if (!optionalEmpty) {
                     if (lastLineUnterminated && options.dropTruncatedLastRow) {
-                        result.warnings << tr("%1:%2: dropped a partial last row (recording was interrupted)")
+                        result.warnings << nb::TrCore::tr("%1:%2: dropped a partial last row (recording was interrupted)")
                                                .arg(name)
                                                .arg(lineNo);
                         goto done;
                     }
                     throw RunFileError(name, lineNo,
-                                       tr("column %1 ('%2'): '%3' is not a number")
+                                       nb::TrCore::tr("column %1 ('%2'): '%3' is not a number")
                                            .arg(c + 1)
                                            .arg(columnNames[static_cast<qsizetype>(c)])
                                            .arg(QString::fromUtf8(fields[c])));
@@ -225,7 +224,7 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
             case Kind::Time:
                 if (!(v > lastTime))
                     throw RunFileError(name, lineNo,
-                                       tr("time_s %1 does not increase (previous %2)").arg(v).arg(lastTime));
+                                       nb::TrCore::tr("time_s %1 does not increase (previous %2)").arg(v).arg(lastTime));
                 lastTime = v;
                 run.time_s.push_back(v);
                 break;
@@ -238,7 +237,7 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
     }
 done:
     if (!haveHeader)
-        throw RunFileError(name, 0, bytes.isEmpty() ? tr("file is empty") : tr("no header row"));
+        throw RunFileError(name, 0, bytes.isEmpty() ? nb::TrCore::tr("file is empty") : nb::TrCore::tr("no header row"));
     // A dropped partial row may have left some columns one longer than others.
     const std::size_t n = run.time_s.size();
     run.position_mm.resize(std::min(run.position_mm.size(), n));
@@ -290,7 +289,7 @@ void writeRunFile(const QString& path, const Run& run)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
     QByteArray out = metadataBlock(run.metadata);
     QStringList header{QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")};
     std::vector<int> decimals{decimalsFor(header[0]), 6, 6};
@@ -327,7 +326,7 @@ void writeRunFile(const QString& path, const Run& run)
     out += metadataBlock(run.footer);
     file.write(out);
     if (!file.commit())
-        throw RunFileError(path, 0, tr("cannot write: %1").arg(file.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
 }
 
 RunFileWriter::~RunFileWriter()
@@ -344,7 +343,7 @@ void RunFileWriter::open(const QString& path, const Metadata& metadata, const QS
     path_ = path;
     file_.setFileName(path);
     if (!file_.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered))
-        throw RunFileError(path, 0, tr("cannot write: %1").arg(file_.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file_.errorString()));
     decimals_.clear();
     for (const QString& c : numericColumns)
         decimals_.push_back(decimalsFor(c));
@@ -379,7 +378,7 @@ void RunFileWriter::writeBuffer()
         return;
     const qint64 written = file_.write(buffer_);
     if (written != buffer_.size())
-        throw RunFileError(path_, 0, tr("write failed: %1").arg(file_.errorString()));
+        throw RunFileError(path_, 0, nb::TrCore::tr("write failed: %1").arg(file_.errorString()));
     buffer_.clear();
 }
 

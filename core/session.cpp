@@ -1,4 +1,5 @@
 #include "session.h"
+#include "core/tr.h"
 
 #include "core/run_file.h"
 
@@ -16,9 +17,6 @@
 namespace nb {
 
 namespace {
-
-// Context "nb": the one lupdate gives tr() calls in free functions of this namespace.
-QString tr(const char* text) { return QCoreApplication::translate("nb", text); }
 
 const QString kSessionFile = QStringLiteral("session.json");
 const QString kCalibrationDir = QStringLiteral("calibrations");
@@ -41,9 +39,9 @@ QJsonObject readJson(const QString& path)
     QJsonParseError error;
     const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
     if (error.error != QJsonParseError::NoError)
-        throw SessionError(path, tr("not valid JSON at byte %1: %2").arg(error.offset).arg(error.errorString()));
+        throw SessionError(path, nb::TrCore::tr("not valid JSON at byte %1: %2").arg(error.offset).arg(error.errorString()));
     if (!doc.isObject())
-        throw SessionError(path, tr("expected a JSON object"));
+        throw SessionError(path, nb::TrCore::tr("expected a JSON object"));
     return doc.object();
 }
 
@@ -110,13 +108,13 @@ RunState runStateForEndReason(const QString& r)
 QString runStateName(RunState state)
 {
     switch (state) {
-    case RunState::Interrupted: return tr("interrupted");
-    case RunState::Complete: return tr("complete");
-    case RunState::Stopped: return tr("stopped");
-    case RunState::StoppedByLimit: return tr("stopped by force limit");
-    case RunState::Fault: return tr("fault");
-    case RunState::Recovered: return tr("recovered");
-    case RunState::Unreadable: return tr("unreadable");
+    case RunState::Interrupted: return nb::TrCore::tr("interrupted");
+    case RunState::Complete: return nb::TrCore::tr("complete");
+    case RunState::Stopped: return nb::TrCore::tr("stopped");
+    case RunState::StoppedByLimit: return nb::TrCore::tr("stopped by force limit");
+    case RunState::Fault: return nb::TrCore::tr("fault");
+    case RunState::Recovered: return nb::TrCore::tr("recovered");
+    case RunState::Unreadable: return nb::TrCore::tr("unreadable");
     }
     return {};
 }
@@ -153,7 +151,7 @@ RunEntry inspectRun(const QString& path)
     }
     if (!sawHeader) {
         e.state = RunState::Unreadable;
-        e.detail = tr("no header row");
+        e.detail = nb::TrCore::tr("no header row");
         return e;
     }
     // Tail: the footer is the run of `# key: value` lines at the very end.

@@ -1,4 +1,5 @@
 #include "device_spec.h"
+#include "core/tr.h"
 
 #include "devices/device_error.h"
 #include "devices/labjack_u6/u6_force_sensor.h"
@@ -14,11 +15,6 @@ namespace nb::devices {
 
 namespace {
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("nb::devices", text);
-}
-
 // The thesis's load cell, 12.3 mV/N, straight into the U6's differential input.
 constexpr double kBridgeSlope_V_per_g = 0.0123 * 9.81 / 1000.0;
 
@@ -31,9 +27,9 @@ QString checkDaqSpec(const QString& spec)
     if (spec.startsWith(QLatin1String("u6:"))) {
         bool ok = false;
         spec.mid(3).toULongLong(&ok);
-        return ok ? QString() : tr("'%1': the U6 serial number must be digits (see 'needlebench devices')").arg(spec);
+        return ok ? QString() : nb::TrDevices::tr("'%1': the U6 serial number must be digits (see 'needlebench devices')").arg(spec);
     }
-    return tr("unknown DAQ '%1' (sim | u6 | u6:SERIAL)").arg(spec);
+    return nb::TrDevices::tr("unknown DAQ '%1' (sim | u6 | u6:SERIAL)").arg(spec);
 }
 
 QString checkStageSpec(const QString& spec)
@@ -42,7 +38,7 @@ QString checkStageSpec(const QString& spec)
         return {};
     if (spec.startsWith(QLatin1String("zaber:")) && spec.size() > 6)
         return {};
-    return tr("unknown stage '%1' (sim | zaber:PORT)").arg(spec);
+    return nb::TrDevices::tr("unknown stage '%1' (sim | zaber:PORT)").arg(spec);
 }
 
 DeviceSpec specFromSettings(const QSettings& s)
@@ -89,10 +85,10 @@ DeviceSet openDevices(const DeviceSpec& spec, const sim::RigConfig& simConfig)
         if (simDaq) {
             set.sensor = std::move(simulated.sensor);
             set.nominalSlope_V_per_g = simulated.nominalSlope_V_per_g;
-            parts << tr("simulated load cell");
+            parts << nb::TrDevices::tr("simulated load cell");
         } else {
             set.stage = std::move(simulated.stage);
-            parts << tr("simulated stage");
+            parts << nb::TrDevices::tr("simulated stage");
         }
     }
     if (!simDaq) {
@@ -128,12 +124,12 @@ std::vector<ConnectedDevice> listDevices()
             ConnectedDevice d;
             d.kind = QStringLiteral("daq");
             d.spec = u.serial.isEmpty() ? QStringLiteral("u6") : QStringLiteral("u6:%1").arg(u.serial);
-            d.description = tr("LabJack U6 (USB bus %1 device %2)").arg(u.bus).arg(u.address);
+            d.description = nb::TrDevices::tr("LabJack U6 (USB bus %1 device %2)").arg(u.bus).arg(u.address);
             d.problem = u.problem;
             out.push_back(d);
         }
     } catch (const DeviceError& e) {
-        out.push_back({QStringLiteral("daq"), QString(), tr("USB"), e.reason()});
+        out.push_back({QStringLiteral("daq"), QString(), nb::TrDevices::tr("USB"), e.reason()});
     }
     for (const QSerialPortInfo& p : QSerialPortInfo::availablePorts()) {
         ConnectedDevice d;

@@ -1,4 +1,5 @@
 #include "realtime.h"
+#include "core/tr.h"
 
 #include <QCoreApplication>
 #include <cerrno>
@@ -10,7 +11,6 @@
 namespace nb::devices {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("nb::devices::realtime", text); }
 
 bool underSanitizer()
 {
@@ -35,18 +35,18 @@ RealtimeResult makeCurrentThreadRealtime(int priority)
     if (err == 0) {
         r.fifo = true;
     } else {
-        problems << tr("real-time scheduling (SCHED_FIFO) not permitted: %1; sample timing may jitter "
+        problems << nb::TrDevices::tr("real-time scheduling (SCHED_FIFO) not permitted: %1; sample timing may jitter "
                        "(grant rtprio in /etc/security/limits.conf or CAP_SYS_NICE)")
                         .arg(QString::fromLocal8Bit(std::strerror(err)));
     }
     // ASan reserves terabytes of shadow memory: locking it all would exhaust RAM.
     if (underSanitizer()) {
-        problems << tr("memory not locked (sanitizer build)");
+        problems << nb::TrDevices::tr("memory not locked (sanitizer build)");
     } else if (r.fifo) {
         if (mlockall(MCL_CURRENT | MCL_FUTURE) == 0)
             r.memoryLocked = true;
         else
-            problems << tr("memory could not be locked (mlockall: %1); page faults may delay samples")
+            problems << nb::TrDevices::tr("memory could not be locked (mlockall: %1); page faults may delay samples")
                             .arg(QString::fromLocal8Bit(std::strerror(errno)));
     }
     r.warning = problems.join(QStringLiteral("; "));

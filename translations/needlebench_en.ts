@@ -152,7 +152,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="+35"/>
+        <location filename="../app/cmd_fit.cpp" line="+34"/>
         <source>warning: %1
 </source>
         <translation type="unfinished"></translation>
@@ -170,627 +170,7 @@ Commands:
 <context>
     <name>nb</name>
     <message>
-        <location filename="../core/labels.cpp" line="+61"/>
-        <location filename="../core/run_file.cpp" line="+94"/>
-        <source>cannot open: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+22"/>
-        <source>header has no &apos;%1&apos; column</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>start_s and end_s must be numbers</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>end_s %1 is before start_s %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>empty label</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>no header row (expected track,label,start_s,end_s,comment)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/run_file.cpp" line="+12"/>
-        <source>binary data, not a text run file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+46"/>
-        <source>header has no &apos;%1&apos; column (found: %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>column &apos;%1&apos; appears twice</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>%1: ignored unknown columns: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>sample row after the closing metadata</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <location line="+26"/>
-        <source>%1:%2: dropped a partial last row (recording was interrupted)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-20"/>
-        <source>expected %1 fields, found %2%3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source> (file ends mid-row: interrupted recording?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>column %1 (&apos;%2&apos;): &apos;%3&apos; is not a number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>time_s %1 does not increase (previous %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>file is empty</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <location filename="../core/session.cpp" line="+156"/>
-        <source>no header row</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/export/run_csv_export.cpp" line="+76"/>
-        <source>label of track &apos;%1&apos; active at the sample</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+38"/>
-        <location line="+21"/>
-        <location line="+9"/>
-        <location line="+7"/>
-        <location filename="../core/labels.cpp" line="+8"/>
-        <location line="+11"/>
-        <location filename="../core/run_file.cpp" line="+52"/>
-        <location line="+37"/>
-        <source>cannot write: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+80"/>
-        <source>Stiffness before puncture: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>all runs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>depth past contact [mm]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <location line="+95"/>
-        <location line="+38"/>
-        <source>force [N]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-114"/>
-        <source>%1 (outlier)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>pooled: %1 x + %2 x²</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Friction against velocity: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>velocity [m/s]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>friction force [N]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <location line="+75"/>
-        <source>recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-52"/>
-        <source>Karnopp fit (%1 Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Labelled phases: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>time [s]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>phase %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Model against recording: %1 (rms %2 N)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Model against recording: %1 (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>needle position [mm]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/analysis/figure_export.cpp" line="+43"/>
-        <source>unknown figure format &apos;%1&apos; (png, svg or pdf)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>could not render the figure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>cannot write the figure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/interlocks.cpp" line="+22"/>
-        <source>The stage is not moving.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>The devices are not running.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Device fault: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <location line="+48"/>
-        <source>Stop the motion first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-46"/>
-        <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Bias needs the stage at rest.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Biasing during a run would shift its forces; end the run first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <location line="+14"/>
-        <location line="+18"/>
-        <source>Enable the stage first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-30"/>
-        <source>Zeroing needs the stage at rest.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Zeroing during a run would shift its positions; end the run first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The motion of a run is fixed while it records or moves.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Open or create a session first: the run needs a folder.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Bias the force sensor first (needle free of tissue).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+16"/>
-        <source>Zero the stage position first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-14"/>
-        <source>No active calibration: calibrate the sensor or choose a calibration.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Set a maximum-force limit first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>A run is already recording: end it first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+24"/>
-        <source>The stage is moving.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-10"/>
-        <source>No run is recording.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Stop the motion first: End run closes the file, it does not stop the stage.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Calibration changes the forces of a run; end the run first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/export/dataset.cpp" line="+34"/>
-        <source>time since the start of the recording</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>needle tip depth, grows as the needle goes deeper</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>needle velocity, recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>needle velocity, central differences of position</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>needle acceleration, recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>needle acceleration, central differences of velocity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>axial force, positive when the tissue pushes back</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+32"/>
-        <source>not a folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>no such folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+27"/>
-        <source>%1: skipped, %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+24"/>
-        <source>%1: skipped, not a run file (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>%1: labels ignored (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/export/session_analysis.cpp" line="+85"/>
-        <source>%1: no stiffness fit (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>%1: no pooled stiffness fit (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+45"/>
-        <source>%1: no friction fit (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+38"/>
-        <source>%1: no validation (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+51"/>
-        <source>Pre-puncture stiffness fits per run, f = a1 x + a2 x^2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+50"/>
-        <location line="+52"/>
-        <source>run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-101"/>
-        <location line="+26"/>
-        <source>tissue</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-23"/>
-        <location line="+49"/>
-        <source>rms</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-47"/>
-        <source>puncture depth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>puncture force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>outlier</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <location line="+48"/>
-        <source>not fitted</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-43"/>
-        <source>yes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Pooled pre-puncture fits per tissue (Table 2 layout)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>tip</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>mean puncture depth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>mean puncture force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+44"/>
-        <source>runs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-42"/>
-        <source>pooled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>mean of runs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Karnopp friction per unit length of needle in tissue, per run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+27"/>
-        <source>f</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-23"/>
-        <source>D from</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>Karnopp friction per unit length, mean and standard deviation per frequency and overall (Tables 4/5 layout)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>group</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>statistic</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>std</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>mean</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>overall</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Summed model against the recorded insertions (Fig. 38)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>rms error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/export/session_hdf5.cpp" line="+235"/>
-        <source>cannot create the file (is the folder writable?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+20"/>
-        <source>flush the file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>cannot rename the finished file into place: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/session.cpp" line="-112"/>
-        <source>not valid JSON at byte %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>expected a JSON object</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+67"/>
-        <source>interrupted</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>complete</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>stopped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>stopped by force limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fault</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>recovered</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>unreadable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+76"/>
+        <location filename="../core/session.cpp" line="+193"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>
@@ -803,14 +183,6 @@ Commands:
     <message>
         <location line="+18"/>
         <source>not a session folder (no %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::AddLabelCommand</name>
-    <message>
-        <location filename="../widgets/label_commands.cpp" line="+13"/>
-        <source>add %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -976,12 +348,12 @@ Commands:
     </message>
     <message>
         <location line="+17"/>
-        <location line="+230"/>
+        <location line="+231"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-218"/>
+        <location line="-219"/>
         <source>Measure selected mass</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1021,7 +393,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+116"/>
         <source>Measuring %1 g for %2 s…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1418,14 +790,6 @@ Commands:
     </message>
 </context>
 <context>
-    <name>nb::EditLabelCommand</name>
-    <message>
-        <location filename="../widgets/label_commands.cpp" line="+15"/>
-        <source>edit %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>nb::ForcePlots</name>
     <message>
         <location filename="../widgets/force_plots.cpp" line="+60"/>
@@ -1532,12 +896,27 @@ Commands:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+57"/>
+        <location filename="../app/main_window.cpp" line="+63"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
+        <source>&amp;Record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re&amp;view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Control panel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1547,7 +926,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+12"/>
+        <source>Could not open the configured devices (%1); using the simulated rig.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>withdraw</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1666,12 +1050,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>NeedleBench – %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+27"/>
         <location line="+9"/>
         <source>New session</source>
         <translation type="unfinished"></translation>
@@ -1753,7 +1137,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+56"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1763,7 +1147,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>contact</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1783,16 +1167,8 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-301"/>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::RemoveLabelCommand</name>
-    <message>
-        <location filename="../widgets/label_commands.cpp" line="-8"/>
-        <source>delete %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2084,19 +1460,6 @@ Commands:
     </message>
 </context>
 <context>
-    <name>nb::RunFileWriter</name>
-    <message>
-        <location filename="../core/run_file.cpp" line="+17"/>
-        <source>cannot write: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+35"/>
-        <source>write failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>nb::RunListModel</name>
     <message>
         <location filename="../widgets/session_view.cpp" line="+40"/>
@@ -2178,83 +1541,9 @@ Commands:
     </message>
 </context>
 <context>
-    <name>nb::SplitLabelCommand</name>
+    <name>nb::TrCli</name>
     <message>
-        <location filename="../widgets/label_commands.cpp" line="+18"/>
-        <source>split %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::VideoView</name>
-    <message>
-        <location filename="../widgets/video_view.cpp" line="+12"/>
-        <source>No video. Open one to review it with the force record.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+58"/>
-        <source>frame %1   %2 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::Writer</name>
-    <message>
-        <location filename="../core/export/session_hdf5.cpp" line="-216"/>
-        <source>HDF5 could not %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+24"/>
-        <location line="+14"/>
-        <source>create attribute &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-10"/>
-        <location line="+12"/>
-        <source>write attribute &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+25"/>
-        <source>set up compression for &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>create dataset &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <location line="+11"/>
-        <location line="+15"/>
-        <source>write dataset &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>create group &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+24"/>
-        <source>one row per label; frames from the sync offset and frame rate of the run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <location line="+1"/>
-        <source>NaN when no sample lies in the interval</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::cli</name>
-    <message>
-        <location filename="../app/cmd_acquire.cpp" line="+31"/>
+        <location filename="../app/cmd_acquire.cpp" line="+26"/>
         <source>sim | u6 | u6:SERIAL (default: settings, else sim)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2270,11 +1559,13 @@ Commands:
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+58"/>
         <source>the run file to write</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="-11"/>
         <source>sampling rate, 100..10000 (default 500)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2285,26 +1576,31 @@ Commands:
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+2"/>
         <source>insertion depth from the start position (default 40)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+1"/>
         <source>sine amplitude (default 10)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+1"/>
         <source>sine frequency (default 0.5)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+1"/>
         <source>sine cycles (default 7)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+3"/>
         <source>force limit that stops the stage (default 8)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2330,7 +1626,7 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+94"/>
+        <location filename="../app/cmd_simulate.cpp" line="+38"/>
         <source>--out RUN.csv is required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2345,7 +1641,108 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="+99"/>
+        <location filename="../app/cmd_events.cpp" line="+39"/>
+        <location filename="../app/cmd_fit.cpp" line="+46"/>
+        <location line="+49"/>
+        <location line="+99"/>
+        <location filename="../app/cmd_sync.cpp" line="+27"/>
+        <location filename="../app/cmd_video.cpp" line="+45"/>
+        <location line="+36"/>
+        <source>print JSON</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a constant-velocity insertion run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>warning: %1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>events of %1 (force zeroed by %2 N, noise %3 N)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>event                 time_s position_mm   force_N
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>relaxation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>internal puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>puncture depth %1 mm; stiffness a1 = %2 N/mm, a2 = %3 N/mm²
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_export.cpp" line="+54"/>
+        <source>Export a session&apos;s runs, labels and metadata.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a session folder (or any folder of run files)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>csv: a CSV + JSON sidecar + label interval table per run (OUT is a folder); hdf5: one HDF5 file (OUT is the file); eaf: an ELAN document per run with its force CSV linked (OUT is a folder)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>where to write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>--format is required (csv|hdf5|eaf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>unknown format &apos;%1&apos; (csv|hdf5|eaf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+5"/>
+        <source>Run &apos;needlebench export --help&apos; for the options.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>--out PATH is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_demo.cpp" line="+103"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2370,13 +1767,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
-        <location filename="../app/cmd_export.cpp" line="+120"/>
-        <source>%1: cannot create the folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+18"/>
         <source>%1 already holds a session; choose an empty --out folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2387,11 +1778,6 @@ Commands:
     </message>
     <message>
         <location line="+34"/>
-        <source>note: the simulator offers no --video here; friction runs are recorded without imaging video</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
         <source>simulating %1 failed:
 %2</source>
         <translation type="unfinished"></translation>
@@ -2412,29 +1798,39 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>labels suggest</source>
+        <location line="+28"/>
+        <source>rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>note: labels suggest failed for %1: %2</source>
+        <location line="+21"/>
+        <source>synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the simulator&apos;s record (no labels suggest in this build)</source>
+        <location line="+7"/>
+        <source>note: could not synchronise %1 (%2); its frames are numbered without an offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>labelled %1: %2 suggested labels (%3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>labelled %1 from %2</source>
+        <source>phases a, b1, b2, c per half-cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>contact, puncture, relaxation events</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+5"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="-29"/>
+        <location filename="../app/cmd_export.cpp" line="+15"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2499,7 +1895,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>  video %1 (%2 frames): sync offset %3 s found, %4 s true, %5 ms off, confidence %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>  video %1 (%2 frames): not synchronised (%3); true offset %4 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>  stiffness %1: a1 = %2 N/mm, a2 = %3 N/mm², puncture at %4 mm, %5 N</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2509,108 +1915,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+46"/>
-        <location line="+49"/>
-        <location line="+99"/>
-        <location filename="../app/cmd_sync.cpp" line="+28"/>
-        <location filename="../app/cmd_video.cpp" line="+46"/>
-        <location line="+36"/>
-        <source>print JSON</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>a constant-velocity insertion run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>warning: %1
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+27"/>
-        <source>events of %1 (force zeroed by %2 N, noise %3 N)
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>event                 time_s position_mm   force_N
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>puncture</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>relaxation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>internal puncture</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>puncture depth %1 mm; stiffness a1 = %2 N/mm, a2 = %3 N/mm²
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_export.cpp" line="-36"/>
-        <source>Export a session&apos;s runs, labels and metadata.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>a session folder (or any folder of run files)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>csv: a CSV + JSON sidecar + label interval table per run (OUT is a folder); hdf5: one HDF5 file (OUT is the file); eaf: an ELAN document per run with its force CSV linked (OUT is a folder)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>where to write</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>--format is required (csv|hdf5|eaf)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>unknown format &apos;%1&apos; (csv|hdf5|eaf)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+5"/>
-        <source>Run &apos;needlebench export --help&apos; for the options.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-1"/>
-        <source>--out PATH is required</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location filename="../app/cmd_export.cpp" line="+3"/>
         <source>%1: no run files (*.csv with time_s,position_mm,force_N)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2625,7 +1930,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../app/cmd_demo.cpp" line="-241"/>
+        <location filename="../app/cmd_export.cpp" line="+6"/>
+        <source>%1: cannot create the folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_export.cpp" line="+10"/>
         <source>cancelled after %1 of %2 runs; %3 was not written</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2835,7 +2146,101 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-18"/>
+        <location filename="../app/cmd_labels.cpp" line="+17"/>
+        <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>suggest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_sync.cpp" line="-6"/>
+        <source>the run file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>labels file to write (default RUN.labels.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>print the labels as JSON</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
+
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 labels suggested, written to %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_simulate.cpp" line="-50"/>
+        <source>stiffness|internal|friction|prostate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>liver1|liver2|liver3|liver5|liver7|prostate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beveled|diamond|blunt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>random seed (default 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>insertion velocity (default 4, internal 2.5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>tissue slab thickness on the friction platform (default 30)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bone this far below the surface (very stiff)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>run on the wall clock (default: as fast as possible)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write the ground truth as JSON</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the video starts this long before the recording (default 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2922,6 +2327,74 @@ Commands:
     <message>
         <location line="+48"/>
         <source>cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_sync.cpp" line="-1"/>
+        <source>Find the video&apos;s offset to the force record (video time = recording time + offset).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the video of the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>region of the picture that moves with the needle, in pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>largest offset to consider, seconds (default 20)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
+
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>needlebench sync: --max-offset wants a positive number of seconds
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>offset:      %1 s (video time minus recording time)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>confidence:  %1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>correlation: %1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>onsets say:  %1 s
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>cannot synchronise: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3027,221 +2500,467 @@ Commands:
 </source>
         <translation type="unfinished"></translation>
     </message>
+</context>
+<context>
+    <name>nb::TrCore</name>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+18"/>
-        <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
+        <location filename="../core/export/dataset.cpp" line="+29"/>
+        <source>time since the start of the recording</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>suggest</source>
+        <source>needle tip depth, grows as the needle goes deeper</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location filename="../app/cmd_sync.cpp" line="-6"/>
-        <source>the run file</source>
+        <location line="+7"/>
+        <source>needle velocity, recorded</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>labels file to write (default RUN.labels.csv)</source>
+        <location line="+0"/>
+        <source>needle velocity, central differences of position</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>print the labels as JSON</source>
+        <source>needle acceleration, recorded</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
-
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+26"/>
-        <source>%1 labels suggested, written to %2
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_sync.cpp" line="-1"/>
-        <source>Find the video&apos;s offset to the force record (video time = recording time + offset).</source>
+        <location line="+0"/>
+        <source>needle acceleration, central differences of velocity</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>the video of the run</source>
+        <source>axial force, positive when the tissue pushes back</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>region of the picture that moves with the needle, in pixels</source>
+        <location filename="../core/export/dataset_loader.cpp" line="+31"/>
+        <source>not a folder</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>largest offset to consider, seconds (default 20)</source>
+        <location line="+0"/>
+        <source>no such folder</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
-
-</source>
+        <location line="+27"/>
+        <source>%1: skipped, %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+24"/>
+        <source>%1: skipped, not a run file (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: labels ignored (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/export/run_csv_export.cpp" line="+75"/>
+        <source>label of track &apos;%1&apos; active at the sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <location line="+21"/>
         <location line="+9"/>
-        <source>needlebench sync: --max-offset wants a positive number of seconds
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
+        <location line="+7"/>
+        <location filename="../core/labels.cpp" line="+110"/>
+        <location line="+11"/>
+        <location filename="../core/run_file.cpp" line="+292"/>
+        <location line="+37"/>
         <location line="+17"/>
-        <source>offset:      %1 s (video time minus recording time)
-</source>
+        <source>cannot write: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>confidence:  %1
-</source>
+        <location filename="../core/export/session_analysis.cpp" line="+84"/>
+        <source>%1: no stiffness fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>correlation: %1
-</source>
+        <location line="+23"/>
+        <source>%1: no pooled stiffness fit (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>%1: no friction fit (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>%1: no validation (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>Pre-puncture stiffness fits per run, f = a1 x + a2 x^2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>onsets say:  %1 s
-</source>
+        <location line="+50"/>
+        <location line="+52"/>
+        <source>run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-101"/>
+        <location line="+26"/>
+        <source>tissue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-23"/>
+        <location line="+49"/>
+        <source>rms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>puncture depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>puncture force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>outlier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+48"/>
+        <source>not fitted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-43"/>
+        <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+8"/>
-        <source>cannot synchronise: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::cli::OptionSet</name>
-    <message>
-        <location filename="../app/cmd_simulate.cpp" line="-318"/>
-        <source>stiffness|internal|friction|prostate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>liver1|liver2|liver3|liver5|liver7|prostate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>beveled|diamond|blunt</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>random seed (default 1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sampling rate, 100..10000 (default 500)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>insertion velocity (default 4, internal 2.5)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>insertion depth from the start position (default 40)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sine amplitude (default 10)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sine frequency (default 0.5)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sine cycles (default 7)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>tissue slab thickness on the friction platform (default 30)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>bone this far below the surface (very stiff)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>force limit that stops the stage (default 8)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>run on the wall clock (default: as fast as possible)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>write the ground truth as JSON</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the run file to write</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the video starts this long before the recording (default 0)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices</name>
-    <message>
-        <location filename="../devices/device_set.cpp" line="+16"/>
-        <source>simulated rig (%1, %2 tip, seed %3%4)</source>
+        <source>Pooled pre-puncture fits per tissue (Table 2 layout)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>, simulated clock</source>
+        <source>tip</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/device_spec.cpp" line="+34"/>
+        <location line="+1"/>
+        <source>fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>mean puncture depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mean puncture force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+44"/>
+        <source>runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-42"/>
+        <source>pooled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>mean of runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Karnopp friction per unit length of needle in tissue, per run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+27"/>
+        <source>f</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-23"/>
+        <source>D from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Karnopp friction per unit length, mean and standard deviation per frequency and overall (Tables 4/5 layout)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>group</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>statistic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>mean</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>overall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Summed model against the recorded insertions (Fig. 38)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rms error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/export/session_hdf5.cpp" line="+46"/>
+        <source>HDF5 could not %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <location line="+14"/>
+        <source>create attribute &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <location line="+12"/>
+        <source>write attribute &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>set up compression for &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>create dataset &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+11"/>
+        <location line="+15"/>
+        <source>write dataset &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>create group &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>one row per label; frames from the sync offset and frame rate of the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location line="+1"/>
+        <source>NaN when no sample lies in the interval</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>cannot create the file (is the folder writable?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>flush the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>cannot rename the finished file into place: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/labels.cpp" line="-61"/>
+        <location filename="../core/run_file.cpp" line="-253"/>
+        <source>cannot open: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>header has no &apos;%1&apos; column</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>start_s and end_s must be numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>end_s %1 is before start_s %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>empty label</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no header row (expected track,label,start_s,end_s,comment)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/run_file.cpp" line="+12"/>
+        <source>binary data, not a text run file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>header has no &apos;%1&apos; column (found: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>column &apos;%1&apos; appears twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1: ignored unknown columns: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>sample row after the closing metadata</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+26"/>
+        <source>%1:%2: dropped a partial last row (recording was interrupted)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <source>expected %1 fields, found %2%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> (file ends mid-row: interrupted recording?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>column %1 (&apos;%2&apos;): &apos;%3&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>time_s %1 does not increase (previous %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>file is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../core/session.cpp" line="-59"/>
+        <source>no header row</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+141"/>
+        <source>write failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/session.cpp" line="-112"/>
+        <source>not valid JSON at byte %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>expected a JSON object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>interrupted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>complete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped by force limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recovered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unreadable</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::TrDevices</name>
+    <message>
+        <location filename="../devices/device_spec.cpp" line="+30"/>
         <source>&apos;%1&apos;: the U6 serial number must be digits (see &apos;needlebench devices&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3257,11 +2976,13 @@ Commands:
     </message>
     <message>
         <location line="+47"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+45"/>
         <source>simulated load cell</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="-1"/>
         <source>simulated stage</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3276,7 +2997,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="+44"/>
+        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="+26"/>
+        <source>cannot start libusb: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>sending a command failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3311,6 +3037,169 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+69"/>
+        <source>bus %1 device %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>not found on USB (is it plugged in?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>reading calibration block %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>calibration memory looks corrupt (gain %1 slope %2 V/count)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>unplugged (the USB device is gone)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location filename="../devices/labjack_u6/u6_protocol.cpp" line="+177"/>
+        <source>short reply (%1 of %2 bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>StreamStop failed with device error %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>StreamConfig rejected with device error %1 (rate %2 Hz too high for this resolution?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>StreamStart failed with device error %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>StreamStop answered device error %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+145"/>
+        <source>read while not streaming</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unplugged during the stream (USB device gone); samples up to %1 s were received</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stream read failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>USB transfer overflow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no stream data for %1 ms (cable unplugged or device stalled?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>stream transfer of %1 bytes is not whole packets; the rest is dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>dropped a stream packet: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 corrupt stream packets in a row (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 stream packet(s) lost before packet %2 (%3 samples)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>device stream buffer overflowed (backlog %1); the device is recovering</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>device recovered from an overflow; %1 samples were lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stream error %1 reported by the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../devices/labjack_u6/u6_protocol.cpp" line="+5"/>
+        <source>the device reported a checksum error in our command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unexpected reply header %1 %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+23"/>
+        <source>reply checksum mismatch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <source>short reply (%1 of 4 bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unexpected reply %1 to command %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>ConfigU6 failed with device error %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>reading calibration failed with device error %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>short stream packet (%1 bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not a stream data packet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stream packet checksum mismatch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../devices/realtime.cpp" line="+38"/>
         <source>real-time scheduling (SCHED_FIFO) not permitted: %1; sample timing may jitter (grant rtprio in /etc/security/limits.conf or CAP_SYS_NICE)</source>
         <translation type="unfinished"></translation>
@@ -3326,7 +3215,78 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/video/frame_index.cpp" line="+106"/>
+        <location filename="../devices/sim/imaging_render.cpp" line="+136"/>
+        <source>the run has too few samples to render</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>unknown video type &apos;.%1&apos; (use .avi, .mkv or .mp4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write a video here (folder missing or not writable, or no encoder)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the video could not be written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../devices/sim/simulated_rig.cpp" line="-65"/>
+        <source>no reply for 100 ms to &apos;%1&apos; (cable unplugged?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rejected &apos;%1&apos;: controller reports a fault (RJ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>rejected &apos;%1&apos;: driver disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+15"/>
+        <source>no reply for 100 ms (cable unplugged?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>rejected &apos;driver enable&apos;: controller reports a fault (RJ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>stream start failed: LIBUSB_ERROR_IO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>stream error: USB transfer failed (LIBUSB_ERROR_IO)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>no samples for %1 ms (cable unplugged?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>target %1 mm is outside the travel (%2 to %3 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>unknown tissue &apos;%1&apos; (known: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../devices/video/frame_index.cpp" line="+105"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3363,6 +3323,368 @@ Commands:
     <message>
         <location line="+4"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../devices/video/frame_reader.cpp" line="+15"/>
+        <source>the video has no indexed frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>cannot reopen the video (moved or deleted?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>frame %1 does not exist (the video has %2 frames)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>frame %1 could not be decoded (truncated or changed file?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>frame %1 could not be decoded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../devices/zaber/zaber_stage.cpp" line="+54"/>
+        <source>cannot open the serial port: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Zaber stage on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>ignored a garbled line: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>serial port failed: %1 (cable unplugged?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>controller fault %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>writing to the serial port failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no reply to &apos;%1&apos; within %2 ms (cable unplugged or controller off?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>&apos;%1&apos; rejected: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>target %1 mm is outside the travel %2..%3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>speed must be positive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>sine %1 mm at %2 Hz needs %3 mm/s, above the %4 mm/s limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>sine of %1 mm around %2 mm leaves the travel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>position reply is not a number: &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::TrViews</name>
+    <message>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+81"/>
+        <source>Stiffness before puncture: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>all runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>depth past contact [mm]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+102"/>
+        <location line="+45"/>
+        <source>force [N]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-121"/>
+        <source>%1 (outlier)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>pooled fit: F = %1 x + %2 x² (F in N, x in mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Friction against velocity: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>velocity [m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>friction force [N]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <location line="+82"/>
+        <source>recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-59"/>
+        <source>Karnopp fit (%1 Hz)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Labelled phases: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>phase %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Model against recording: %1 (rms %2 N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model against recording: %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>needle position [mm]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>summed model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/analysis/figure_export.cpp" line="+38"/>
+        <source>unknown figure format &apos;%1&apos; (png, svg or pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>could not render the figure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>cannot write the figure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/interlocks.cpp" line="+20"/>
+        <source>The stage is not moving.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Device fault: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The devices are not running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+48"/>
+        <source>Stop the motion first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-46"/>
+        <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bias needs the stage at rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Biasing during a run would shift its forces; end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+14"/>
+        <location line="+18"/>
+        <source>Enable the stage first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Zeroing needs the stage at rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zeroing during a run would shift its positions; end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The motion of a run is fixed while it records or moves.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open or create a session first: the run needs a folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bias the force sensor first (needle free of tissue).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+16"/>
+        <source>Zero the stage position first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-14"/>
+        <source>No active calibration: calibrate the sensor or choose a calibration.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Set a maximum-force limit first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A run is already recording: end it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+24"/>
+        <source>The stage is moving.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>No run is recording.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the motion first: End run closes the file, it does not stop the stage.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Calibration changes the forces of a run; end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/label_commands.cpp" line="+12"/>
+        <source>add %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>delete %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>edit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>split %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::VideoView</name>
+    <message>
+        <location filename="../widgets/video_view.cpp" line="+12"/>
+        <source>No video. Open one to review it with the force record.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>frame %1   %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::devices</name>
+    <message>
+        <location filename="../devices/device_set.cpp" line="+16"/>
+        <source>simulated rig (%1, %2 tip, seed %3%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, simulated clock</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3552,384 +3874,10 @@ Commands:
     </message>
 </context>
 <context>
-    <name>nb::devices::Context</name>
-    <message>
-        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="-45"/>
-        <source>cannot start libusb: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::FrameReader</name>
-    <message>
-        <location filename="../devices/video/frame_reader.cpp" line="+16"/>
-        <source>the video has no indexed frames</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>cannot reopen the video (moved or deleted?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+67"/>
-        <source>frame %1 does not exist (the video has %2 frames)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>frame %1 could not be decoded (truncated or changed file?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>frame %1 could not be decoded</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>nb::devices::Recorder</name>
     <message>
         <location filename="../devices/recorder.cpp" line="+53"/>
         <source>a run is already being recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::U6ForceSensor</name>
-    <message>
-        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="+114"/>
-        <source>bus %1 device %2: %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>not found on USB (is it plugged in?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>reading calibration block %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>calibration memory looks corrupt (gain %1 slope %2 V/count)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+41"/>
-        <source>unplugged (the USB device is gone)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>short reply (%1 of %2 bytes)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>StreamStop failed with device error %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>StreamConfig rejected with device error %1 (rate %2 Hz too high for this resolution?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>StreamStart failed with device error %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+24"/>
-        <source>StreamStop answered device error %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>read while not streaming</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>unplugged during the stream (USB device gone); samples up to %1 s were received</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>stream read failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>USB transfer overflow</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>no stream data for %1 ms (cable unplugged or device stalled?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>stream transfer of %1 bytes is not whole packets; the rest is dropped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>dropped a stream packet: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>%1 corrupt stream packets in a row (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>%1 stream packet(s) lost before packet %2 (%3 samples)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>device stream buffer overflowed (backlog %1); the device is recovering</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>device recovered from an overflow; %1 samples were lost</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>stream error %1 reported by the device</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::ZaberStage</name>
-    <message>
-        <location filename="../devices/zaber/zaber_stage.cpp" line="+58"/>
-        <source>cannot open the serial port: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>Zaber stage on %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+24"/>
-        <source>ignored a garbled line: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>serial port failed: %1 (cable unplugged?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>controller fault %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>writing to the serial port failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>no reply to &apos;%1&apos; within %2 ms (cable unplugged or controller off?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>&apos;%1&apos; rejected: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+28"/>
-        <source>target %1 mm is outside the travel %2..%3 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>speed must be positive</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>sine %1 mm at %2 Hz needs %3 mm/s, above the %4 mm/s limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>sine of %1 mm around %2 mm leaves the travel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+46"/>
-        <source>position reply is not a number: &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::sim</name>
-    <message>
-        <location filename="../devices/sim/imaging_render.cpp" line="+137"/>
-        <source>the run has too few samples to render</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>unknown video type &apos;.%1&apos; (use .avi, .mkv or .mp4)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>cannot write a video here (folder missing or not writable, or no encoder)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>the video could not be written</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::sim::SimStage</name>
-    <message>
-        <location filename="../devices/sim/simulated_rig.cpp" line="+315"/>
-        <source>target %1 mm is outside the travel (%2 to %3 mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::sim::SimulatedRig</name>
-    <message>
-        <location line="+31"/>
-        <source>unknown tissue &apos;%1&apos; (known: %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::sim::SimulatedRig::World</name>
-    <message>
-        <location line="-298"/>
-        <source>simulated stage</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>simulated load cell</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+79"/>
-        <source>no reply for 100 ms to &apos;%1&apos; (cable unplugged?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>rejected &apos;%1&apos;: controller reports a fault (RJ)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>rejected &apos;%1&apos;: driver disabled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <location line="+15"/>
-        <source>no reply for 100 ms (cable unplugged?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-13"/>
-        <source>rejected &apos;driver enable&apos;: controller reports a fault (RJ)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>stream start failed: LIBUSB_ERROR_IO</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+25"/>
-        <source>read while not streaming</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>stream error: USB transfer failed (LIBUSB_ERROR_IO)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>no samples for %1 ms (cable unplugged?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::u6</name>
-    <message>
-        <location filename="../devices/labjack_u6/u6_protocol.cpp" line="+181"/>
-        <source>short reply (%1 of %2 bytes)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the device reported a checksum error in our command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>unexpected reply header %1 %2 %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <location line="+23"/>
-        <source>reply checksum mismatch</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-11"/>
-        <source>short reply (%1 of 4 bytes)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>unexpected reply %1 to command %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+19"/>
-        <source>ConfigU6 failed with device error %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>reading calibration failed with device error %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+61"/>
-        <source>short stream packet (%1 bytes)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>not a stream data packet</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>stream packet checksum mismatch</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3976,17 +3924,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/events.cpp" line="+137"/>
+        <location filename="../core/events.cpp" line="+213"/>
         <source>too few samples before the puncture (%1) to fit the contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
         <source>the needle does not move before the puncture</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>the contact fit failed (degenerate samples)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3997,7 +3945,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+61"/>
+        <location filename="../core/friction_fit.cpp" line="+64"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1,4 +1,5 @@
 #include "label_commands.h"
+#include "core/tr.h"
 
 #include "label_model.h"
 
@@ -6,18 +7,16 @@
 
 namespace nb {
 
-static QString tr(const char* s) { return QCoreApplication::translate("LabelCommands", s); }
-
 AddLabelCommand::AddLabelCommand(LabelModel* model, Label label) : model_(model), label_(std::move(label))
 {
-    setText(tr("add %1").arg(label_.label));
+    setText(nb::TrViews::tr("add %1").arg(label_.label));
 }
 void AddLabelCommand::redo() { setObsolete(!model_->insertLabel(label_)); }
 void AddLabelCommand::undo() { model_->removeLabel(label_); }
 
 RemoveLabelCommand::RemoveLabelCommand(LabelModel* model, Label label) : model_(model), label_(std::move(label))
 {
-    setText(tr("delete %1").arg(label_.label));
+    setText(nb::TrViews::tr("delete %1").arg(label_.label));
 }
 void RemoveLabelCommand::redo() { setObsolete(!model_->removeLabel(label_)); }
 void RemoveLabelCommand::undo() { model_->insertLabel(label_); }
@@ -25,7 +24,7 @@ void RemoveLabelCommand::undo() { model_->insertLabel(label_); }
 EditLabelCommand::EditLabelCommand(LabelModel* model, Label before, Label after)
     : model_(model), before_(std::move(before)), after_(std::move(after))
 {
-    setText(tr("edit %1").arg(before_.label));
+    setText(nb::TrViews::tr("edit %1").arg(before_.label));
 }
 void EditLabelCommand::redo() { setObsolete(!model_->replaceLabel(before_, after_)); }
 void EditLabelCommand::undo() { model_->replaceLabel(after_, before_); }
@@ -35,7 +34,7 @@ SplitLabelCommand::SplitLabelCommand(LabelModel* model, Label label, double t) :
     left_ = right_ = whole_;
     left_.end_s = t;
     right_.start_s = t;
-    setText(tr("split %1").arg(whole_.label));
+    setText(nb::TrViews::tr("split %1").arg(whole_.label));
 }
 void SplitLabelCommand::redo()
 {

@@ -1,15 +1,10 @@
 #include "dataset.h"
+#include "core/tr.h"
 
 #include <QCoreApplication>
 #include <algorithm>
 
 namespace nb {
-
-namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("export", s); }
-
-}  // namespace
 
 std::vector<double> gradient(const std::vector<double>& y, const std::vector<double>& t)
 {
@@ -31,19 +26,19 @@ std::vector<double> gradient(const std::vector<double>& y, const std::vector<dou
 std::vector<SignalColumn> exportSignals(const Run& run)
 {
     std::vector<SignalColumn> cols;
-    cols.push_back({QStringLiteral("time_s"), QStringLiteral("s"), tr("time since the start of the recording"), run.time_s});
-    cols.push_back({QStringLiteral("position_mm"), QStringLiteral("mm"), tr("needle tip depth, grows as the needle goes deeper"),
+    cols.push_back({QStringLiteral("time_s"), QStringLiteral("s"), nb::TrCore::tr("time since the start of the recording"), run.time_s});
+    cols.push_back({QStringLiteral("position_mm"), QStringLiteral("mm"), nb::TrCore::tr("needle tip depth, grows as the needle goes deeper"),
                     run.position_mm});
     const auto* v = run.numericColumn(QStringLiteral("velocity_mm_s"));
     const std::vector<double> velocity = v && v->size() == run.size() ? *v : gradient(run.position_mm, run.time_s);
     const auto* a = run.numericColumn(QStringLiteral("acceleration_mm_s2"));
     const std::vector<double> accel = a && a->size() == run.size() ? *a : gradient(velocity, run.time_s);
     cols.push_back({QStringLiteral("velocity_mm_s"), QStringLiteral("mm/s"),
-                    v ? tr("needle velocity, recorded") : tr("needle velocity, central differences of position"), velocity});
+                    v ? nb::TrCore::tr("needle velocity, recorded") : nb::TrCore::tr("needle velocity, central differences of position"), velocity});
     cols.push_back({QStringLiteral("acceleration_mm_s2"), QStringLiteral("mm/s^2"),
-                    a ? tr("needle acceleration, recorded") : tr("needle acceleration, central differences of velocity"),
+                    a ? nb::TrCore::tr("needle acceleration, recorded") : nb::TrCore::tr("needle acceleration, central differences of velocity"),
                     accel});
-    cols.push_back({QStringLiteral("force_N"), QStringLiteral("N"), tr("axial force, positive when the tissue pushes back"),
+    cols.push_back({QStringLiteral("force_N"), QStringLiteral("N"), nb::TrCore::tr("axial force, positive when the tissue pushes back"),
                     run.force_N});
     for (const auto& [name, values] : run.numeric) {
         if (name == QLatin1String("velocity_mm_s") || name == QLatin1String("acceleration_mm_s2") ||

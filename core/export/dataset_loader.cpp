@@ -1,4 +1,5 @@
 #include "dataset_loader.h"
+#include "core/tr.h"
 
 #include "export_error.h"
 
@@ -12,8 +13,6 @@
 namespace nb {
 
 namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("export", s); }
 
 bool isLabelsFile(const QString& fileName) { return fileName.endsWith(QLatin1String(".labels.csv")); }
 
@@ -29,7 +28,7 @@ LoadedDataset loadDataset(const QString& dirPath)
 {
     const QFileInfo info(dirPath);
     if (!info.isDir())
-        throw ExportError(dirPath, info.exists() ? tr("not a folder") : tr("no such folder"));
+        throw ExportError(dirPath, info.exists() ? nb::TrCore::tr("not a folder") : nb::TrCore::tr("no such folder"));
     LoadedDataset out;
     Dataset& d = out.dataset;
     d.name = info.fileName();
@@ -56,7 +55,7 @@ LoadedDataset loadDataset(const QString& dirPath)
             }
             for (const RunEntry& e : s.runs()) {
                 if (e.state == RunState::Unreadable)
-                    out.warnings << tr("%1: skipped, %2").arg(e.path, e.detail);
+                    out.warnings << nb::TrCore::tr("%1: skipped, %2").arg(e.path, e.detail);
                 else
                     runPaths << e.path;
             }
@@ -80,7 +79,7 @@ LoadedDataset loadDataset(const QString& dirPath)
             for (const QString& w : res.warnings)
                 out.warnings << w;
         } catch (const RunFileError& e) {
-            out.warnings << tr("%1: skipped, not a run file (%2)").arg(path, e.message());
+            out.warnings << nb::TrCore::tr("%1: skipped, not a run file (%2)").arg(path, e.message());
             continue;
         }
         const QString labelsPath = labelsPathFor(path);
@@ -88,7 +87,7 @@ LoadedDataset loadDataset(const QString& dirPath)
             try {
                 r.labels = readLabelsFile(labelsPath);
             } catch (const RunFileError& e) {
-                out.warnings << tr("%1: labels ignored (%2)").arg(labelsPath, e.message());
+                out.warnings << nb::TrCore::tr("%1: labels ignored (%2)").arg(labelsPath, e.message());
             }
         }
         // Names become file and group names: keep them unique.

@@ -1,4 +1,5 @@
 #include "run_csv_export.h"
+#include "core/tr.h"
 
 #include "csv_text.h"
 
@@ -13,8 +14,6 @@
 namespace nb {
 
 namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("export", s); }
 
 QJsonValue valueOf(const QString& text)
 {
@@ -73,7 +72,7 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName)
     for (const QString& track : labelTracks(r.labels))
         columns.append(QJsonObject{{QStringLiteral("name"), QStringLiteral("label_") + track},
                                    {QStringLiteral("unit"), QString()},
-                                   {QStringLiteral("description"), tr("label of track '%1' active at the sample").arg(track)}});
+                                   {QStringLiteral("description"), nb::TrCore::tr("label of track '%1' active at the sample").arg(track)}});
     QJsonArray labels;
     for (const Label& l : r.labels)
         labels.append(QJsonObject{{QStringLiteral("track"), l.track},
@@ -112,7 +111,7 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
 
     QSaveFile csv(csvPath);
     if (!csv.open(QIODevice::WriteOnly))
-        throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+        throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
     QByteArray buf;
     for (std::size_t c = 0; c < cols.size(); ++c)
         buf += (c ? "," : "") + csvField(cols[c].name);
@@ -133,7 +132,7 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
         buf += '\n';
         if (buf.size() > (1 << 20) || i + 1 == n) {
             if (csv.write(buf) != buf.size())
-                throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+                throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
             buf.clear();
             if (!keepGoing(progress, qint64(i + 1), qint64(n))) {
                 csv.cancelWriting();
@@ -142,14 +141,14 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
         }
     }
     if (!buf.isEmpty() && csv.write(buf) != buf.size())
-        throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+        throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
 
     const QString jsonPath = sidecarPath(csvPath);
     writeFileAtomically(jsonPath,
                         QJsonDocument(runSidecar(r, QFileInfo(csvPath).fileName())).toJson(QJsonDocument::Indented));
     if (!csv.commit()) {
         QFile::remove(jsonPath);
-        throw ExportError(csvPath, tr("cannot write: %1").arg(csv.errorString()));
+        throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
     }
     return true;
 }

@@ -1,4 +1,5 @@
 #include "session_analysis.h"
+#include "core/tr.h"
 
 #include "core/fit_error.h"
 #include "core/statistics.h"
@@ -11,8 +12,6 @@
 namespace nb {
 
 namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("analysis", s); }
 
 double median(std::vector<double> v)
 {
@@ -82,7 +81,7 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a)
             s.fit = fitStiffness(s.segment);
         } catch (const FitError& e) {
             s.error = e.message();
-            a.warnings << tr("%1: no stiffness fit (%2)").arg(r.name, e.message());
+            a.warnings << nb::TrCore::tr("%1: no stiffness fit (%2)").arg(r.name, e.message());
         }
         a.stiffness.push_back(std::move(s));
     }
@@ -105,7 +104,7 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a)
         try {
             g.summary = fitStiffnessRuns(segs);
         } catch (const FitError& e) {
-            a.warnings << tr("%1: no pooled stiffness fit (%2)").arg(name, e.message());
+            a.warnings << nb::TrCore::tr("%1: no pooled stiffness fit (%2)").arg(name, e.message());
             continue;
         }
         g.meanPunctureDepth_mm = mean(depths);
@@ -150,7 +149,7 @@ void analyseFriction(const Dataset& d, SessionAnalysis& a)
             fits.push_back(f.fit);
         } catch (const FitError& e) {
             f.error = e.message();
-            a.warnings << tr("%1: no friction fit (%2)").arg(r.name, e.message());
+            a.warnings << nb::TrCore::tr("%1: no friction fit (%2)").arg(r.name, e.message());
         }
         a.friction.push_back(std::move(f));
     }
@@ -188,7 +187,7 @@ void analyseValidation(const Dataset& d, SessionAnalysis& a)
                 v.rms_N = rmsDistance(v.simulated, v.recorded);
             } catch (const FitError& e) {
                 v.error = e.message();
-                a.warnings << tr("%1: no validation (%2)").arg(s.run, e.message());
+                a.warnings << nb::TrCore::tr("%1: no validation (%2)").arg(s.run, e.message());
             }
             a.validation.push_back(std::move(v));
         }
@@ -239,26 +238,26 @@ SessionAnalysis analyseDataset(const Dataset& dataset)
 FitTable stiffnessRunsTable(const SessionAnalysis& a)
 {
     FitTable t;
-    t.caption = tr("Pre-puncture stiffness fits per run, f = a1 x + a2 x^2");
+    t.caption = nb::TrCore::tr("Pre-puncture stiffness fits per run, f = a1 x + a2 x^2");
     t.label = QStringLiteral("tab:stiffness-runs");
-    t.columns = {col("run", tr("run"), "", -1),
-                 col("tissue", tr("tissue"), "", -1),
+    t.columns = {col("run", nb::TrCore::tr("run"), "", -1),
+                 col("tissue", nb::TrCore::tr("tissue"), "", -1),
                  col("a1_N_per_mm", QStringLiteral("a1"), "N/mm", 4, "$a_1$"),
                  col("a2_N_per_mm2", QStringLiteral("a2"), "N/mm^2", 4, "$a_2$"),
-                 col("rms_N", tr("rms"), "N", 4),
+                 col("rms_N", nb::TrCore::tr("rms"), "N", 4),
                  col("r2", QStringLiteral("r2"), "", 4, "$r^2$"),
-                 col("puncture_depth_mm", tr("puncture depth"), "mm", 3),
-                 col("puncture_force_N", tr("puncture force"), "N", 4),
-                 col("outlier", tr("outlier"), "", -1)};
+                 col("puncture_depth_mm", nb::TrCore::tr("puncture depth"), "mm", 3),
+                 col("puncture_force_N", nb::TrCore::tr("puncture force"), "N", 4),
+                 col("outlier", nb::TrCore::tr("outlier"), "", -1)};
     for (const StiffnessRunResult& s : a.stiffness) {
         const double nan = std::nan("");
         if (!s.ok()) {
-            t.rows.push_back({s.run, s.group, nan, nan, nan, nan, nan, nan, tr("not fitted")});
+            t.rows.push_back({s.run, s.group, nan, nan, nan, nan, nan, nan, nb::TrCore::tr("not fitted")});
             continue;
         }
         t.rows.push_back({s.run, s.group, s.fit.quadratic.model.a1_N_per_mm, s.fit.quadratic.model.a2_N_per_mm2,
                           s.fit.quadratic.rms_N, s.fit.quadratic.r2, s.events.punctureDepth_mm(), s.events.puncture.force_N,
-                          s.outlier ? tr("yes") : QString()});
+                          s.outlier ? nb::TrCore::tr("yes") : QString()});
     }
     return t;
 }
@@ -266,21 +265,21 @@ FitTable stiffnessRunsTable(const SessionAnalysis& a)
 FitTable stiffnessPooledTable(const SessionAnalysis& a)
 {
     FitTable t;
-    t.caption = tr("Pooled pre-puncture fits per tissue (Table 2 layout)");
+    t.caption = nb::TrCore::tr("Pooled pre-puncture fits per tissue (Table 2 layout)");
     t.label = QStringLiteral("tab:stiffness-pooled");
-    t.columns = {col("tissue", tr("tissue"), "", -1),
-                 col("tip", tr("tip"), "", -1),
-                 col("fit", tr("fit"), "", -1),
+    t.columns = {col("tissue", nb::TrCore::tr("tissue"), "", -1),
+                 col("tip", nb::TrCore::tr("tip"), "", -1),
+                 col("fit", nb::TrCore::tr("fit"), "", -1),
                  col("a1_N_per_mm", QStringLiteral("a1"), "N/mm", 4, "$a_1$"),
                  col("a2_N_per_mm2", QStringLiteral("a2"), "N/mm^2", 4, "$a_2$"),
-                 col("mean_puncture_depth_mm", tr("mean puncture depth"), "mm", 4),
-                 col("mean_puncture_force_N", tr("mean puncture force"), "N", 4),
-                 col("runs", tr("runs"), "", 0)};
+                 col("mean_puncture_depth_mm", nb::TrCore::tr("mean puncture depth"), "mm", 4),
+                 col("mean_puncture_force_N", nb::TrCore::tr("mean puncture force"), "N", 4),
+                 col("runs", nb::TrCore::tr("runs"), "", 0)};
     for (const StiffnessGroupResult& g : a.stiffnessGroups) {
-        t.rows.push_back({g.group, g.tip, tr("pooled"), g.summary.pooled.quadratic.model.a1_N_per_mm,
+        t.rows.push_back({g.group, g.tip, nb::TrCore::tr("pooled"), g.summary.pooled.quadratic.model.a1_N_per_mm,
                           g.summary.pooled.quadratic.model.a2_N_per_mm2, g.meanPunctureDepth_mm, g.meanPunctureForce_N,
                           double(g.runs.size())});
-        t.rows.push_back({g.group, g.tip, tr("mean of runs"), g.summary.meanOfRuns.a1_N_per_mm, g.summary.meanOfRuns.a2_N_per_mm2,
+        t.rows.push_back({g.group, g.tip, nb::TrCore::tr("mean of runs"), g.summary.meanOfRuns.a1_N_per_mm, g.summary.meanOfRuns.a2_N_per_mm2,
                           g.meanPunctureDepth_mm, g.meanPunctureForce_N, double(g.runs.size())});
     }
     return t;
@@ -289,19 +288,19 @@ FitTable stiffnessPooledTable(const SessionAnalysis& a)
 FitTable frictionRunsTable(const SessionAnalysis& a)
 {
     FitTable t;
-    t.caption = tr("Karnopp friction per unit length of needle in tissue, per run");
+    t.caption = nb::TrCore::tr("Karnopp friction per unit length of needle in tissue, per run");
     t.label = QStringLiteral("tab:friction-runs");
-    t.columns = {col("run", tr("run"), "", -1), col("freq_Hz", tr("f"), "Hz", 2)};
+    t.columns = {col("run", nb::TrCore::tr("run"), "", -1), col("freq_Hz", nb::TrCore::tr("f"), "Hz", 2)};
     for (const TableColumn& c : karnoppColumns())
         t.columns.push_back(c);
-    t.columns.push_back(col("rms_N", tr("rms"), "N", 4));
-    t.columns.push_back(col("static_from", tr("D from"), "", -1));
+    t.columns.push_back(col("rms_N", nb::TrCore::tr("rms"), "N", 4));
+    t.columns.push_back(col("static_from", nb::TrCore::tr("D from"), "", -1));
     for (const FrictionRunResult& f : a.friction) {
         std::vector<TableCell> row{f.run};
         if (!f.ok()) {
             for (int i = 0; i < 8; ++i)
                 row.emplace_back(std::nan(""));
-            row.emplace_back(tr("not fitted"));
+            row.emplace_back(nb::TrCore::tr("not fitted"));
         } else {
             row.emplace_back(f.fit.frequency_hz);
             appendKarnopp(row, f.fit.perLength);
@@ -316,16 +315,16 @@ FitTable frictionRunsTable(const SessionAnalysis& a)
 FitTable frictionSummaryTable(const SessionAnalysis& a)
 {
     FitTable t;
-    t.caption = tr("Karnopp friction per unit length, mean and standard deviation per frequency and overall (Tables 4/5 layout)");
+    t.caption = nb::TrCore::tr("Karnopp friction per unit length, mean and standard deviation per frequency and overall (Tables 4/5 layout)");
     t.label = QStringLiteral("tab:friction");
-    t.columns = {col("group", tr("group"), "", -1), col("statistic", tr("statistic"), "", -1), col("freq_Hz", tr("f"), "Hz", 2),
-                 col("runs", tr("runs"), "", 0)};
+    t.columns = {col("group", nb::TrCore::tr("group"), "", -1), col("statistic", nb::TrCore::tr("statistic"), "", -1), col("freq_Hz", nb::TrCore::tr("f"), "Hz", 2),
+                 col("runs", nb::TrCore::tr("runs"), "", 0)};
     for (const TableColumn& c : karnoppColumns())
         t.columns.push_back(c);
     auto add = [&](const QString& name, const FrictionGroup& g) {
         for (int k = 0; k < 2; ++k) {
             // The overall group has no single frequency.
-            std::vector<TableCell> row{name, k ? tr("std") : tr("mean"), g.frequency_hz > 0.0 ? g.frequency_hz : std::nan(""),
+            std::vector<TableCell> row{name, k ? nb::TrCore::tr("std") : nb::TrCore::tr("mean"), g.frequency_hz > 0.0 ? g.frequency_hz : std::nan(""),
                                        double(g.runs)};
             appendKarnopp(row, k ? g.stdDev : g.mean);
             t.rows.push_back(std::move(row));
@@ -334,16 +333,16 @@ FitTable frictionSummaryTable(const SessionAnalysis& a)
     for (const FrictionGroup& g : a.frictionGroups)
         add(QStringLiteral("%1Hz").arg(g.frequency_hz, 0, 'g', 3), g);
     if (a.frictionOverall)
-        add(tr("overall"), *a.frictionOverall);
+        add(nb::TrCore::tr("overall"), *a.frictionOverall);
     return t;
 }
 
 FitTable validationTable(const SessionAnalysis& a)
 {
     FitTable t;
-    t.caption = tr("Summed model against the recorded insertions (Fig. 38)");
+    t.caption = nb::TrCore::tr("Summed model against the recorded insertions (Fig. 38)");
     t.label = QStringLiteral("tab:validation");
-    t.columns = {col("run", tr("run"), "", -1), col("rms_N", tr("rms error"), "N", 4)};
+    t.columns = {col("run", nb::TrCore::tr("run"), "", -1), col("rms_N", nb::TrCore::tr("rms error"), "N", 4)};
     for (const ValidationResult& v : a.validation)
         t.rows.push_back({v.run, v.ok() ? v.rms_N : std::nan("")});
     return t;

@@ -1,4 +1,5 @@
 #include "session_hdf5.h"
+#include "core/tr.h"
 
 #include "label_intervals.h"
 
@@ -14,8 +15,6 @@
 namespace nb {
 
 namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("export", s); }
 
 // Owns one HDF5 identifier and closes it with the matching H5*close.
 class Handle {
@@ -44,7 +43,7 @@ public:
     void check(bool ok, const QString& what) const
     {
         if (!ok)
-            throw ExportError(path_, tr("HDF5 could not %1").arg(what));
+            throw ExportError(path_, nb::TrCore::tr("HDF5 could not %1").arg(what));
     }
 
     hid_t checked(hid_t id, const QString& what) const
@@ -68,11 +67,11 @@ public:
         if (H5Aexists(obj, n.constData()) > 0)
             H5Adelete(obj, n.constData());
         const Handle attr(checked(H5Acreate2(obj, n.constData(), type, space, H5P_DEFAULT, H5P_DEFAULT),
-                                  tr("create attribute '%1'").arg(name)),
+                                  nb::TrCore::tr("create attribute '%1'").arg(name)),
                           H5Aclose);
         const QByteArray v = value.toUtf8();
         const char* p = v.constData();
-        check(H5Awrite(attr, type, &p) >= 0, tr("write attribute '%1'").arg(name));
+        check(H5Awrite(attr, type, &p) >= 0, nb::TrCore::tr("write attribute '%1'").arg(name));
     }
 
     void attribute(hid_t obj, const QString& name, double value) const
@@ -82,9 +81,9 @@ public:
         if (H5Aexists(obj, n.constData()) > 0)
             H5Adelete(obj, n.constData());
         const Handle attr(checked(H5Acreate2(obj, n.constData(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT),
-                                  tr("create attribute '%1'").arg(name)),
+                                  nb::TrCore::tr("create attribute '%1'").arg(name)),
                           H5Aclose);
-        check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value) >= 0, tr("write attribute '%1'").arg(name));
+        check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value) >= 0, nb::TrCore::tr("write attribute '%1'").arg(name));
     }
 
     // A metadata field as a number when it reads as one, plus its unit.
@@ -109,10 +108,10 @@ public:
         // Compress large signals; chunking needs a non-empty dataset.
         if (n > 1024 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
             const hsize_t chunk[1] = {hsize_t(std::min<std::size_t>(n, 16384))};
-            check(H5Pset_chunk(dcpl, 1, chunk) >= 0 && H5Pset_deflate(dcpl, 4) >= 0, tr("set up compression for '%1'").arg(name));
+            check(H5Pset_chunk(dcpl, 1, chunk) >= 0 && H5Pset_deflate(dcpl, 4) >= 0, nb::TrCore::tr("set up compression for '%1'").arg(name));
         }
         return Handle(checked(H5Dcreate2(group, name.toUtf8().constData(), fileType, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
-                              tr("create dataset '%1'").arg(name)),
+                              nb::TrCore::tr("create dataset '%1'").arg(name)),
                       H5Dclose);
     }
 
@@ -122,7 +121,7 @@ public:
         const Handle d = dataset(group, name, H5T_IEEE_F64LE, values.size());
         if (!values.empty())
             check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0,
-                  tr("write dataset '%1'").arg(name));
+                  nb::TrCore::tr("write dataset '%1'").arg(name));
         attribute(d, QStringLiteral("units"), unit);
         if (!description.isEmpty())
             attribute(d, QStringLiteral("description"), description);
@@ -133,7 +132,7 @@ public:
         const Handle d = dataset(group, name, H5T_STD_I64LE, values.size());
         if (!values.empty())
             check(H5Dwrite(d, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0,
-                  tr("write dataset '%1'").arg(name));
+                  nb::TrCore::tr("write dataset '%1'").arg(name));
     }
 
     void strings(hid_t group, const QString& name, const QStringList& values) const
@@ -148,13 +147,13 @@ public:
         for (const QByteArray& b : bytes)
             ptrs.push_back(b.constData());
         if (!ptrs.empty())
-            check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) >= 0, tr("write dataset '%1'").arg(name));
+            check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) >= 0, nb::TrCore::tr("write dataset '%1'").arg(name));
     }
 
     Handle group(hid_t parent, const QString& name) const
     {
         return Handle(checked(H5Gcreate2(parent, name.toUtf8().constData(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                              tr("create group '%1'").arg(name)),
+                              nb::TrCore::tr("create group '%1'").arg(name)),
                       H5Gclose);
     }
 
@@ -178,7 +177,7 @@ public:
         const auto rows = labelIntervals(r.run, r.labels, frameClockFor(r.run));
         const Handle lg = group(g, QStringLiteral("labels"));
         attribute(lg, QStringLiteral("description"),
-                  tr("one row per label; frames from the sync offset and frame rate of the run"));
+                  nb::TrCore::tr("one row per label; frames from the sync offset and frame rate of the run"));
         QStringList label, track, comment;
         std::vector<double> start, end, duration, peak, mean;
         std::vector<long long> f0, f1;
@@ -201,8 +200,8 @@ public:
         doubles(lg, QStringLiteral("duration_s"), duration, QStringLiteral("s"), {});
         integers(lg, QStringLiteral("start_frame"), f0);
         integers(lg, QStringLiteral("end_frame"), f1);
-        doubles(lg, QStringLiteral("peak_force_N"), peak, QStringLiteral("N"), tr("NaN when no sample lies in the interval"));
-        doubles(lg, QStringLiteral("mean_force_N"), mean, QStringLiteral("N"), tr("NaN when no sample lies in the interval"));
+        doubles(lg, QStringLiteral("peak_force_N"), peak, QStringLiteral("N"), nb::TrCore::tr("NaN when no sample lies in the interval"));
+        doubles(lg, QStringLiteral("mean_force_N"), mean, QStringLiteral("N"), nb::TrCore::tr("NaN when no sample lies in the interval"));
         strings(lg, QStringLiteral("comment"), comment);
     }
 
@@ -232,7 +231,7 @@ bool writeSessionHdf5(const QString& path, const Dataset& dataset, const ExportP
         const Writer w(path);
         const Handle file(H5Fcreate(tempName.constData(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
         if (!file.valid())
-            throw ExportError(path, tr("cannot create the file (is the folder writable?)"));
+            throw ExportError(path, nb::TrCore::tr("cannot create the file (is the folder writable?)"));
         auto cleanup = qScopeGuard([&] {
             if (!done)
                 QFile::remove(temp);
@@ -252,7 +251,7 @@ bool writeSessionHdf5(const QString& path, const Dataset& dataset, const ExportP
             if (!keepGoing(progress, qint64(i + 1), total))
                 return false;
         }
-        w.check(H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0, tr("flush the file"));
+        w.check(H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0, nb::TrCore::tr("flush the file"));
         done = true;
         cleanup.dismiss();
     }
@@ -260,7 +259,7 @@ bool writeSessionHdf5(const QString& path, const Dataset& dataset, const ExportP
     std::filesystem::rename(std::filesystem::path(tempName.toStdString()), std::filesystem::path(QFile::encodeName(path).toStdString()), ec);
     if (ec) {
         QFile::remove(temp);
-        throw ExportError(path, tr("cannot rename the finished file into place: %1").arg(QString::fromStdString(ec.message())));
+        throw ExportError(path, nb::TrCore::tr("cannot rename the finished file into place: %1").arg(QString::fromStdString(ec.message())));
     }
     return true;
 }

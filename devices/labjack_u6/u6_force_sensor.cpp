@@ -1,4 +1,5 @@
 #include "u6_force_sensor.h"
+#include "core/tr.h"
 
 #include "devices/device_error.h"
 
@@ -12,11 +13,6 @@ using namespace u6;
 
 namespace {
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("U6ForceSensor", text);
-}
-
 QString usbText(int code)
 {
     return QString::fromLatin1(libusb_error_name(code));
@@ -27,7 +23,7 @@ struct Context {
     Context()
     {
         if (int rc = libusb_init(&ctx); rc != 0)
-            throw DeviceError(QStringLiteral("LabJack U6"), tr("cannot start libusb: %1").arg(usbText(rc)));
+            throw DeviceError(QStringLiteral("LabJack U6"), nb::TrDevices::tr("cannot start libusb: %1").arg(usbText(rc)));
     }
     ~Context() { libusb_exit(ctx); }
     Context(const Context&) = delete;
@@ -41,14 +37,14 @@ int exchange(libusb_device_handle* h, const Bytes& packet, Bytes& reply, unsigne
     int rc = libusb_bulk_transfer(h, kEpCommandOut, const_cast<std::uint8_t*>(packet.data()), int(packet.size()),
                                   &done, timeoutMs);
     if (rc != 0) {
-        *why = tr("sending a command failed: %1").arg(usbText(rc));
+        *why = nb::TrDevices::tr("sending a command failed: %1").arg(usbText(rc));
         return rc;
     }
     reply.assign(kMaxPacket, 0);
     rc = libusb_bulk_transfer(h, kEpCommandIn, reply.data(), int(reply.size()), &done, timeoutMs);
     if (rc != 0) {
-        *why = rc == LIBUSB_ERROR_TIMEOUT ? tr("no reply for %1 ms (cable unplugged?)").arg(timeoutMs)
-                                          : tr("reading a reply failed: %1").arg(usbText(rc));
+        *why = rc == LIBUSB_ERROR_TIMEOUT ? nb::TrDevices::tr("no reply for %1 ms (cable unplugged?)").arg(timeoutMs)
+                                          : nb::TrDevices::tr("reading a reply failed: %1").arg(usbText(rc));
         return rc;
     }
     reply.resize(std::size_t(done));
@@ -66,13 +62,13 @@ libusb_device_handle* openAndIdentify(libusb_device* dev, DeviceInfo& info, unsi
 {
     libusb_device_handle* h = nullptr;
     if (int rc = libusb_open(dev, &h); rc != 0) {
-        *why = rc == LIBUSB_ERROR_ACCESS ? tr("no permission to open it (install the udev rule for 0cd5:0006)")
-                                         : tr("cannot open it: %1").arg(usbText(rc));
+        *why = rc == LIBUSB_ERROR_ACCESS ? nb::TrDevices::tr("no permission to open it (install the udev rule for 0cd5:0006)")
+                                         : nb::TrDevices::tr("cannot open it: %1").arg(usbText(rc));
         return nullptr;
     }
     libusb_set_auto_detach_kernel_driver(h, 1);
     if (int rc = libusb_claim_interface(h, 0); rc != 0) {
-        *why = rc == LIBUSB_ERROR_BUSY ? tr("in use by another program") : tr("cannot claim it: %1").arg(usbText(rc));
+        *why = rc == LIBUSB_ERROR_BUSY ? nb::TrDevices::tr("in use by another program") : nb::TrDevices::tr("cannot claim it: %1").arg(usbText(rc));
         libusb_close(h);
         return nullptr;
     }
@@ -141,7 +137,7 @@ U6ForceSensor::U6ForceSensor(U6Config config) : config_(std::move(config)), usb_
         DeviceInfo info;
         libusb_device_handle* h = openAndIdentify(list[i], info, unsigned(config_.commandTimeout.count()), &why);
         if (!h) {
-            problems << tr("bus %1 device %2: %3")
+            problems << nb::TrDevices::tr("bus %1 device %2: %3")
                             .arg(libusb_get_bus_number(list[i]))
                             .arg(libusb_get_device_address(list[i]))
                             .arg(why);
@@ -158,14 +154,14 @@ U6ForceSensor::U6ForceSensor(U6Config config) : config_(std::move(config)), usb_
     if (n > 0)
         libusb_free_device_list(list, 1);
     if (!usb_->handle)
-        throw DeviceError(who, problems.isEmpty() ? tr("not found on USB (is it plugged in?)") : problems.join(QStringLiteral("; ")));
+        throw DeviceError(who, problems.isEmpty() ? nb::TrDevices::tr("not found on USB (is it plugged in?)") : problems.join(QStringLiteral("; ")));
 
     std::array<std::array<std::uint8_t, 32>, kCalBlocks> blocks{};
     for (int b = 0; b < kCalBlocks; ++b) {
         QString why;
         const auto block = parseReadCalReply(command(readCalCommand(b), 40), &why);
         if (!block)
-            fail(tr("reading calibration block %1: %2").arg(b).arg(why));
+            fail(nb::TrDevices::tr("reading calibration block %1: %2").arg(b).arg(why));
         blocks[std::size_t(b)] = *block;
     }
     cal_ = Calibration::fromBlocks(blocks);
@@ -173,7 +169,7 @@ U6ForceSensor::U6ForceSensor(U6Config config) : config_(std::move(config)), usb_
         const GainCalibration& gc = cal_.gains[std::size_t(g)];
         const double nominal = Calibration::nominal().gains[std::size_t(g)].positiveSlope;
         if (!(gc.positiveSlope > 0.5 * nominal && gc.positiveSlope < 2 * nominal))
-            fail(tr("calibration memory looks corrupt (gain %1 slope %2 V/count)").arg(g).arg(gc.positiveSlope));
+            fail(nb::TrDevices::tr("calibration memory looks corrupt (gain %1 slope %2 V/count)").arg(g).arg(gc.positiveSlope));
     }
 }
 
@@ -214,11 +210,11 @@ Bytes U6ForceSensor::command(const Bytes& packet, int replyLength)
     QString why;
     const int rc = exchange(usb_->handle, packet, reply, unsigned(config_.commandTimeout.count()), &why);
     if (rc == LIBUSB_ERROR_NO_DEVICE)
-        fail(tr("unplugged (the USB device is gone)"));
+        fail(nb::TrDevices::tr("unplugged (the USB device is gone)"));
     if (rc != 0)
         fail(why);
     if (int(reply.size()) < replyLength)
-        fail(tr("short reply (%1 of %2 bytes)").arg(reply.size()).arg(replyLength));
+        fail(nb::TrDevices::tr("short reply (%1 of %2 bytes)").arg(reply.size()).arg(replyLength));
     return reply;
 }
 
@@ -232,7 +228,7 @@ double U6ForceSensor::start(double rateHz)
     if (!stopped.ok)
         fail(stopped.error);
     if (stopped.errorCode != 0 && stopped.errorCode != kErrStreamNotRunning)
-        fail(tr("StreamStop failed with device error %1").arg(stopped.errorCode));
+        fail(nb::TrDevices::tr("StreamStop failed with device error %1").arg(stopped.errorCode));
     // Drop stale stream packets from such a stream.
     {
         std::uint8_t junk[kMaxPacket * 16];
@@ -250,14 +246,14 @@ double U6ForceSensor::start(double rateHz)
     if (!r.ok)
         fail(r.error);
     if (r.errorCode != 0)
-        fail(tr("StreamConfig rejected with device error %1 (rate %2 Hz too high for this resolution?)")
+        fail(nb::TrDevices::tr("StreamConfig rejected with device error %1 (rate %2 Hz too high for this resolution?)")
                  .arg(r.errorCode)
                  .arg(rateHz));
     r = checkNormalReply(command(streamStartCommand(), 4), kStreamStart);
     if (!r.ok)
         fail(r.error);
     if (r.errorCode != 0)
-        fail(tr("StreamStart failed with device error %1").arg(r.errorCode));
+        fail(nb::TrDevices::tr("StreamStart failed with device error %1").arg(r.errorCode));
 
     const int size = streamPacketSize(settings_.samplesPerPacket);
     // Full-size packets can be read several per transfer (about 20 ms worth); a shorter
@@ -281,13 +277,13 @@ void U6ForceSensor::stop()
     streaming_ = false;
     const Reply r = checkNormalReply(command(streamStopCommand(), 4), kStreamStop);
     if (r.ok && r.errorCode != 0 && r.errorCode != kErrStreamNotRunning)
-        warn(tr("StreamStop answered device error %1").arg(r.errorCode));
+        warn(nb::TrDevices::tr("StreamStop answered device error %1").arg(r.errorCode));
 }
 
 void U6ForceSensor::read(std::vector<VoltageSample>& out, std::chrono::milliseconds timeout)
 {
     if (!streaming_)
-        fail(tr("read while not streaming"));
+        fail(nb::TrDevices::tr("read while not streaming"));
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     const std::size_t before = out.size();
     const int size = streamPacketSize(settings_.samplesPerPacket);
@@ -303,16 +299,16 @@ void U6ForceSensor::read(std::vector<VoltageSample>& out, std::chrono::milliseco
         }
         if (rc == LIBUSB_ERROR_NO_DEVICE) {
             streaming_ = false;
-            fail(tr("unplugged during the stream (USB device gone); samples up to %1 s were received")
+            fail(nb::TrDevices::tr("unplugged during the stream (USB device gone); samples up to %1 s were received")
                      .arg(double(nextIndex_) / settings_.scanRateHz(), 0, 'f', 3));
         }
         if (rc != 0 && rc != LIBUSB_ERROR_TIMEOUT && rc != LIBUSB_ERROR_OVERFLOW)
-            fail(tr("stream read failed: %1").arg(usbText(rc)));
+            fail(nb::TrDevices::tr("stream read failed: %1").arg(usbText(rc)));
         if (rc == LIBUSB_ERROR_OVERFLOW)
-            warn(tr("USB transfer overflow"));
+            warn(nb::TrDevices::tr("USB transfer overflow"));
         const auto silent = std::chrono::steady_clock::now() - lastData_;
         if (silent >= config_.stallTimeout)
-            fail(tr("no stream data for %1 ms (cable unplugged or device stalled?)")
+            fail(nb::TrDevices::tr("no stream data for %1 ms (cable unplugged or device stalled?)")
                      .arg(std::chrono::duration_cast<std::chrono::milliseconds>(silent).count()));
     } while (out.size() == before && std::chrono::steady_clock::now() < deadline);
 }
@@ -323,16 +319,16 @@ void U6ForceSensor::consume(const std::uint8_t* data, int length, std::vector<Vo
     const int channels = int(settings_.channels.size());
     const double rate = settings_.scanRateHz();
     if (length % size != 0)
-        warn(tr("stream transfer of %1 bytes is not whole packets; the rest is dropped").arg(length));
+        warn(nb::TrDevices::tr("stream transfer of %1 bytes is not whole packets; the rest is dropped").arg(length));
     for (int at = 0; at + size <= length; at += size) {
         QString why;
         const auto p = parseStreamPacket(std::span(data + at, std::size_t(size)), settings_.samplesPerPacket, &why);
         if (!p) {
             ++badPackets_;
-            warn(tr("dropped a stream packet: %1").arg(why));
+            warn(nb::TrDevices::tr("dropped a stream packet: %1").arg(why));
             // The counter of the next good packet tells how much this cost.
             if (++badInARow_ >= 20)
-                fail(tr("%1 corrupt stream packets in a row (%2)").arg(badInARow_).arg(why));
+                fail(nb::TrDevices::tr("%1 corrupt stream packets in a row (%2)").arg(badInARow_).arg(why));
             continue;
         }
         badInARow_ = 0;
@@ -344,7 +340,7 @@ void U6ForceSensor::consume(const std::uint8_t* data, int length, std::vector<Vo
                 const std::uint64_t scans = std::uint64_t(gap * settings_.samplesPerPacket / channels);
                 lostSamples_ += scans;
                 nextIndex_ += scans;
-                warn(tr("%1 stream packet(s) lost before packet %2 (%3 samples)").arg(gap).arg(p->counter).arg(scans));
+                warn(nb::TrDevices::tr("%1 stream packet(s) lost before packet %2 (%3 samples)").arg(gap).arg(p->counter).arg(scans));
             }
         }
         haveCounter_ = true;
@@ -352,13 +348,13 @@ void U6ForceSensor::consume(const std::uint8_t* data, int length, std::vector<Vo
         backlog_ = p->backlog;
         if (p->errorCode == kErrStreamOverflow) {
             ++overflows_;
-            warn(tr("device stream buffer overflowed (backlog %1); the device is recovering").arg(p->backlog));
+            warn(nb::TrDevices::tr("device stream buffer overflowed (backlog %1); the device is recovering").arg(p->backlog));
         } else if (p->errorCode == kErrStreamRecovered) {
             lostSamples_ += p->scansLost;
             nextIndex_ += p->scansLost;
-            warn(tr("device recovered from an overflow; %1 samples were lost").arg(p->scansLost));
+            warn(nb::TrDevices::tr("device recovered from an overflow; %1 samples were lost").arg(p->scansLost));
         } else if (p->errorCode != 0) {
-            fail(tr("stream error %1 reported by the device").arg(p->errorCode));
+            fail(nb::TrDevices::tr("stream error %1 reported by the device").arg(p->errorCode));
         }
         for (int i = 0; i < settings_.samplesPerPacket; i += channels) {
             const std::uint64_t index = nextIndex_++;

@@ -1,4 +1,5 @@
 #include "u6_protocol.h"
+#include "core/tr.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -7,11 +8,6 @@
 namespace nb::devices::u6 {
 
 namespace {
-
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("u6", text);
-}
 
 void put16(Bytes& b, std::size_t at, std::uint16_t v)
 {
@@ -178,23 +174,23 @@ Reply checkExtendedReply(std::span<const std::uint8_t> r, std::uint8_t extCmd, i
 {
     Reply out;
     if (int(r.size()) < expectedLength) {
-        out.error = tr("short reply (%1 of %2 bytes)").arg(r.size()).arg(expectedLength);
+        out.error = nb::TrDevices::tr("short reply (%1 of %2 bytes)").arg(r.size()).arg(expectedLength);
         return out;
     }
     r = r.first(std::size_t(expectedLength));
     if (r[1] == 0xB8) {  // the U6 answers a bad checksum with a "bad checksum" packet
-        out.error = tr("the device reported a checksum error in our command");
+        out.error = nb::TrDevices::tr("the device reported a checksum error in our command");
         return out;
     }
     if (r[1] != kExtended || r[3] != extCmd || 6 + 2 * r[2] != expectedLength) {
-        out.error = tr("unexpected reply header %1 %2 %3")
+        out.error = nb::TrDevices::tr("unexpected reply header %1 %2 %3")
                         .arg(r[1], 2, 16, QLatin1Char('0'))
                         .arg(r[2], 2, 16, QLatin1Char('0'))
                         .arg(r[3], 2, 16, QLatin1Char('0'));
         return out;
     }
     if (!extendedChecksumOk(r)) {
-        out.error = tr("reply checksum mismatch");
+        out.error = nb::TrDevices::tr("reply checksum mismatch");
         return out;
     }
     out.errorCode = r[6];
@@ -206,18 +202,18 @@ Reply checkNormalReply(std::span<const std::uint8_t> r, std::uint8_t cmd)
 {
     Reply out;
     if (r.size() < 4) {
-        out.error = tr("short reply (%1 of 4 bytes)").arg(r.size());
+        out.error = nb::TrDevices::tr("short reply (%1 of 4 bytes)").arg(r.size());
         return out;
     }
     r = r.first(4);
     if (r[1] != std::uint8_t(cmd + 1)) {
-        out.error = tr("unexpected reply %1 to command %2")
+        out.error = nb::TrDevices::tr("unexpected reply %1 to command %2")
                         .arg(r[1], 2, 16, QLatin1Char('0'))
                         .arg(cmd, 2, 16, QLatin1Char('0'));
         return out;
     }
     if (!normalChecksumOk(r)) {
-        out.error = tr("reply checksum mismatch");
+        out.error = nb::TrDevices::tr("reply checksum mismatch");
         return out;
     }
     out.errorCode = r[2];
@@ -230,7 +226,7 @@ std::optional<DeviceInfo> parseConfigU6Reply(std::span<const std::uint8_t> r, QS
     const Reply rep = checkExtendedReply(r, kExtConfigU6, 38);
     if (!rep.ok || rep.errorCode != 0) {
         if (why)
-            *why = rep.ok ? tr("ConfigU6 failed with device error %1").arg(rep.errorCode) : rep.error;
+            *why = rep.ok ? nb::TrDevices::tr("ConfigU6 failed with device error %1").arg(rep.errorCode) : rep.error;
         return std::nullopt;
     }
     DeviceInfo d;
@@ -246,7 +242,7 @@ std::optional<std::array<std::uint8_t, 32>> parseReadCalReply(std::span<const st
     const Reply rep = checkExtendedReply(r, kExtReadCal, 40);
     if (!rep.ok || rep.errorCode != 0) {
         if (why)
-            *why = rep.ok ? tr("reading calibration failed with device error %1").arg(rep.errorCode) : rep.error;
+            *why = rep.ok ? nb::TrDevices::tr("reading calibration failed with device error %1").arg(rep.errorCode) : rep.error;
         return std::nullopt;
     }
     std::array<std::uint8_t, 32> block{};
@@ -307,12 +303,12 @@ std::optional<StreamPacket> parseStreamPacket(std::span<const std::uint8_t> p, i
         return std::nullopt;
     };
     if (int(p.size()) < streamPacketSize(n))
-        return fail(tr("short stream packet (%1 bytes)").arg(p.size()));
+        return fail(nb::TrDevices::tr("short stream packet (%1 bytes)").arg(p.size()));
     p = p.first(std::size_t(streamPacketSize(n)));
     if (p[1] != kStreamDataCmd || p[3] != kStreamDataExt || p[2] != 4 + n)
-        return fail(tr("not a stream data packet"));
+        return fail(nb::TrDevices::tr("not a stream data packet"));
     if (!extendedChecksumOk(p))
-        return fail(tr("stream packet checksum mismatch"));
+        return fail(nb::TrDevices::tr("stream packet checksum mismatch"));
     StreamPacket s;
     s.counter = p[10];
     s.errorCode = p[11];

@@ -1,4 +1,5 @@
 #include "imaging_render.h"
+#include "core/tr.h"
 
 #include "devices/video/video_error.h"
 
@@ -13,8 +14,6 @@
 #include <random>
 
 namespace nb::devices::sim {
-
-static QString tr(const char* s) { return QCoreApplication::translate("video", s); }
 
 std::vector<double> tissuePositions(const Run& run, double play_mm)
 {
@@ -134,7 +133,7 @@ void ImagingRenderer::render(double t, int frameNumber, cv::Mat& out) const
 ImagingTruth renderImagingVideo(const Run& run, const QString& path, const ImagingOptions& options)
 {
     if (run.size() < 2)
-        throw VideoError(path, tr("the run has too few samples to render"));
+        throw VideoError(path, nb::TrDevices::tr("the run has too few samples to render"));
     const QString ext = QFileInfo(path).suffix().toLower();
     std::vector<int> fourccs;
     if (ext == QLatin1String("avi"))
@@ -144,7 +143,7 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
     else if (ext == QLatin1String("mp4"))
         fourccs = {cv::VideoWriter::fourcc('a', 'v', 'c', '1'), cv::VideoWriter::fourcc('m', 'p', '4', 'v')};
     else
-        throw VideoError(path, tr("unknown video type '.%1' (use .avi, .mkv or .mp4)").arg(ext));
+        throw VideoError(path, nb::TrDevices::tr("unknown video type '.%1' (use .avi, .mkv or .mp4)").arg(ext));
     cv::VideoWriter writer;
     for (int fourcc : fourccs) {
         try {
@@ -154,7 +153,7 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
         }
     }
     if (!writer.isOpened())
-        throw VideoError(path, tr("cannot write a video here (folder missing or not writable, or no encoder)"));
+        throw VideoError(path, nb::TrDevices::tr("cannot write a video here (folder missing or not writable, or no encoder)"));
     ImagingRenderer renderer(run, options);
     ImagingTruth truth;
     truth.offset_s = options.leadIn_s - run.time_s.front();
@@ -170,7 +169,7 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
     writer.release();
     truth.frames = frames;
     if (!QFileInfo(path).exists() || QFileInfo(path).size() == 0)
-        throw VideoError(path, tr("the video could not be written"));
+        throw VideoError(path, nb::TrDevices::tr("the video could not be written"));
     return truth;
 }
 

@@ -1,4 +1,5 @@
 #include "simulated_rig.h"
+#include "core/tr.h"
 
 #include "devices/device_error.h"
 #include "devices/sim/rig_world.h"
@@ -17,11 +18,6 @@ namespace {
 constexpr double kPhysicsStep_s = 1.0e-4;
 constexpr double kSilentTimeout_s = 0.1;        // the sensor reports silence after this
 constexpr double kControllerWatchdog_s = 0.1;   // the controller holds when the host goes quiet
-
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("nb::devices::sim::SimulatedRig", text);
-}
 
 void sleepUntil(std::chrono::steady_clock::time_point when)
 {
@@ -45,8 +41,8 @@ SimulatedRig::World::World(const RigConfig& config, const TissuePreset& tissue)
     wall0_ = std::chrono::steady_clock::now();
 }
 
-QString SimulatedRig::World::stageName() const { return tr("simulated stage"); }
-QString SimulatedRig::World::sensorName() const { return tr("simulated load cell"); }
+QString SimulatedRig::World::stageName() const { return nb::TrDevices::tr("simulated stage"); }
+QString SimulatedRig::World::sensorName() const { return nb::TrDevices::tr("simulated load cell"); }
 
 double SimulatedRig::World::wallSim() const
 {
@@ -125,14 +121,14 @@ void SimulatedRig::World::stageCommand(const char* what, const std::function<voi
 {
     std::lock_guard lock(m_);
     if (stageSilent_)
-        throw DeviceError(stageName(), tr("no reply for 100 ms to '%1' (cable unplugged?)").arg(QLatin1String(what)));
+        throw DeviceError(stageName(), nb::TrDevices::tr("no reply for 100 ms to '%1' (cable unplugged?)").arg(QLatin1String(what)));
     // The emergency stop is honoured even when ordinary commands are refused.
     if (stageRejects_ && !isEmergency) {
         truth_.events.push_back({QStringLiteral("command_rejected"), t_, stage_.absolute_mm(), force_});
-        throw DeviceError(stageName(), tr("rejected '%1': controller reports a fault (RJ)").arg(QLatin1String(what)));
+        throw DeviceError(stageName(), nb::TrDevices::tr("rejected '%1': controller reports a fault (RJ)").arg(QLatin1String(what)));
     }
     if (!enabled_ && !isEmergency)
-        throw DeviceError(stageName(), tr("rejected '%1': driver disabled").arg(QLatin1String(what)));
+        throw DeviceError(stageName(), nb::TrDevices::tr("rejected '%1': driver disabled").arg(QLatin1String(what)));
     apply(stage_);
     if (isEmergency)
         truth_.events.push_back({QStringLiteral("emergency_stop"), t_, stage_.absolute_mm(), force_});
@@ -142,9 +138,9 @@ void SimulatedRig::World::stageEnable(bool on)
 {
     std::lock_guard lock(m_);
     if (stageSilent_)
-        throw DeviceError(stageName(), tr("no reply for 100 ms (cable unplugged?)"));
+        throw DeviceError(stageName(), nb::TrDevices::tr("no reply for 100 ms (cable unplugged?)"));
     if (stageRejects_)
-        throw DeviceError(stageName(), tr("rejected 'driver enable': controller reports a fault (RJ)"));
+        throw DeviceError(stageName(), nb::TrDevices::tr("rejected 'driver enable': controller reports a fault (RJ)"));
     if (!on)
         stage_.emergencyStop();
     enabled_ = on;
@@ -157,7 +153,7 @@ StageState SimulatedRig::World::stageState()
     if (c_.realtime)
         advanceTo(std::max(t_, wallSim()));
     if (stageSilent_)
-        throw DeviceError(stageName(), tr("no reply for 100 ms (cable unplugged?)"));
+        throw DeviceError(stageName(), nb::TrDevices::tr("no reply for 100 ms (cable unplugged?)"));
     return {stage_.encoder_mm(), stage_.velocity_mm_s(), enabled_, stage_.moving(), homed_};
 }
 
@@ -165,7 +161,7 @@ double SimulatedRig::World::sensorStart(double rateHz)
 {
     std::lock_guard lock(m_);
     if (sensorError_)
-        throw DeviceError(sensorName(), tr("stream start failed: LIBUSB_ERROR_IO"));
+        throw DeviceError(sensorName(), nb::TrDevices::tr("stream start failed: LIBUSB_ERROR_IO"));
     rate_ = std::clamp(rateHz, 1.0, 50000.0);
     t0_ = t_;
     next_ = 0;
@@ -190,11 +186,11 @@ void SimulatedRig::World::sensorRead(std::vector<VoltageSample>& out, std::chron
     for (;;) {
         std::unique_lock lock(m_);
         if (!streaming_)
-            throw DeviceError(sensorName(), tr("read while not streaming"));
+            throw DeviceError(sensorName(), nb::TrDevices::tr("read while not streaming"));
         const double tNext = t0_ + static_cast<double>(next_) / rate_;
         const double now = c_.realtime ? wallSim() : tNext;
         if (sensorError_)
-            throw DeviceError(sensorName(), tr("stream error: USB transfer failed (LIBUSB_ERROR_IO)"));
+            throw DeviceError(sensorName(), nb::TrDevices::tr("stream error: USB transfer failed (LIBUSB_ERROR_IO)"));
         if (sensorSilent_) {
             // Nothing arrives; the world goes on. Samples due meanwhile are lost.
             if (silentSince_ < 0)
@@ -203,7 +199,7 @@ void SimulatedRig::World::sensorRead(std::vector<VoltageSample>& out, std::chron
             advanceTo(std::max(t_, until));
             next_ = static_cast<std::uint64_t>(std::ceil((t_ - t0_) * rate_));
             if (t_ - silentSince_ >= kSilentTimeout_s)
-                throw DeviceError(sensorName(), tr("no samples for %1 ms (cable unplugged?)").arg(qRound((t_ - silentSince_) * 1000)));
+                throw DeviceError(sensorName(), nb::TrDevices::tr("no samples for %1 ms (cable unplugged?)").arg(qRound((t_ - silentSince_) * 1000)));
             lock.unlock();
             if (c_.realtime)
                 std::this_thread::sleep_for(std::min(timeout, std::chrono::milliseconds(10)));
@@ -312,7 +308,7 @@ private:
     void checkTarget(double mm) const
     {
         if (mm < minPosition_mm() || mm > maxPosition_mm())
-            throw DeviceError(name(), tr("target %1 mm is outside the travel (%2 to %3 mm)")
+            throw DeviceError(name(), nb::TrDevices::tr("target %1 mm is outside the travel (%2 to %3 mm)")
                                           .arg(mm, 0, 'f', 3)
                                           .arg(minPosition_mm())
                                           .arg(maxPosition_mm()));
@@ -343,7 +339,7 @@ SimulatedRig::SimulatedRig(RigConfig config) : config_(std::move(config))
     auto preset = tissuePreset(config_.tissue, config_.tip);
     if (!preset)
         throw std::invalid_argument(
-            tr("unknown tissue '%1' (known: %2)").arg(config_.tissue, tissueNames().join(QStringLiteral(", "))).toStdString());
+            nb::TrDevices::tr("unknown tissue '%1' (known: %2)").arg(config_.tissue, tissueNames().join(QStringLiteral(", "))).toStdString());
     tissue_ = *preset;
     world_ = std::make_unique<World>(config_, tissue_);
 }

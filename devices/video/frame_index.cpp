@@ -1,4 +1,5 @@
 #include "frame_index.h"
+#include "core/tr.h"
 
 #include "keyframe_probe.h"
 #include "video_error.h"
@@ -12,8 +13,6 @@
 #include <cmath>
 
 namespace nb::devices {
-
-static QString tr(const char* s) { return QCoreApplication::translate("video", s); }
 
 double FrameIndex::frameDuration() const
 {
@@ -103,20 +102,20 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
 {
     const QFileInfo fi(path);
     if (!fi.exists())
-        throw VideoError(path, tr("no such file"));
+        throw VideoError(path, nb::TrDevices::tr("no such file"));
     if (!fi.isFile() || !fi.isReadable())
-        throw VideoError(path, tr("not a readable file"));
+        throw VideoError(path, nb::TrDevices::tr("not a readable file"));
     if (fi.size() == 0)
-        throw VideoError(path, tr("the file is empty"));
+        throw VideoError(path, nb::TrDevices::tr("the file is empty"));
 
     cv::VideoCapture cap;
     try {
         cap.open(path.toStdString(), cv::CAP_FFMPEG);
     } catch (const cv::Exception& e) {
-        throw VideoError(path, tr("cannot open as video: %1").arg(QString::fromStdString(e.what())));
+        throw VideoError(path, nb::TrDevices::tr("cannot open as video: %1").arg(QString::fromStdString(e.what())));
     }
     if (!cap.isOpened())
-        throw VideoError(path, tr("cannot open as video (not a video file, or a format FFmpeg does not read)"));
+        throw VideoError(path, nb::TrDevices::tr("cannot open as video (not a video file, or a format FFmpeg does not read)"));
 
     FrameIndex index;
     index.path = path;
@@ -161,15 +160,15 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
             progress(index.size(), index.containerFrames);
     }
     if (index.frames.empty())
-        throw VideoError(path, tr("no frame could be decoded (truncated or corrupt file?)"));
+        throw VideoError(path, nb::TrDevices::tr("no frame could be decoded (truncated or corrupt file?)"));
     if (progress)
         progress(index.size(), index.containerFrames);
     if (!(cancel && cancel->load()) && index.containerFrames > 0 && index.size() < index.containerFrames * 0.98 - 1)
-        index.warnings << tr("the file ends early: %1 of %2 frames are readable (truncated?)")
+        index.warnings << nb::TrDevices::tr("the file ends early: %1 of %2 frames are readable (truncated?)")
                               .arg(index.size())
                               .arg(index.containerFrames);
     if (!index.timestampsMonotonic)
-        index.warnings << tr("frame timestamps are not increasing: frames are reached by decoding from the start");
+        index.warnings << nb::TrDevices::tr("frame timestamps are not increasing: frames are reached by decoding from the start");
 
     index.timeOrigin_s = index.frames.front().time_s;
     for (FrameInfo& f : index.frames)

@@ -1,4 +1,5 @@
 #include "frame_reader.h"
+#include "core/tr.h"
 
 #include "video_error.h"
 
@@ -8,12 +9,10 @@
 
 namespace nb::devices {
 
-static QString tr(const char* s) { return QCoreApplication::translate("video", s); }
-
 FrameReader::FrameReader(FrameIndex index, int cacheFrames) : index_(std::move(index)), cache_(cacheFrames)
 {
     if (index_.frames.empty())
-        throw VideoError(index_.path, tr("the video has no indexed frames"));
+        throw VideoError(index_.path, nb::TrDevices::tr("the video has no indexed frames"));
     if (index_.medianInterval_s <= 0)
         index_.updateStats();
     firstFrameNumber_ = int(std::llround(index_.timeOrigin_s * index_.fpsNominal));
@@ -25,7 +24,7 @@ void FrameReader::reopen()
 {
     cap_.release();
     if (!cap_.open(index_.path.toStdString(), cv::CAP_FFMPEG))
-        throw VideoError(index_.path, tr("cannot reopen the video (moved or deleted?)"));
+        throw VideoError(index_.path, nb::TrDevices::tr("cannot reopen the video (moved or deleted?)"));
     current_ = -1;
     fresh_ = true;
     ++stats_.sequentialResets;
@@ -92,7 +91,7 @@ void FrameReader::seekTo(int n)
 DecodedFrame FrameReader::read(int n)
 {
     if (n < 0 || n >= index_.size())
-        throw VideoError(index_.path, tr("frame %1 does not exist (the video has %2 frames)").arg(n).arg(index_.size()));
+        throw VideoError(index_.path, nb::TrDevices::tr("frame %1 does not exist (the video has %2 frames)").arg(n).arg(index_.size()));
     const double time = index_.frames[std::size_t(n)].time_s;
     if (auto img = cache_.get(n)) {
         ++stats_.cacheHits;
@@ -113,11 +112,11 @@ DecodedFrame FrameReader::read(int n)
     if (!decodeForward()) {
         reopen();
         if (!decodeForward())
-            throw VideoError(index_.path, tr("frame %1 could not be decoded (truncated or changed file?)").arg(n));
+            throw VideoError(index_.path, nb::TrDevices::tr("frame %1 could not be decoded (truncated or changed file?)").arg(n));
     }
     cv::Mat image;
     if (!cap_.retrieve(image) || image.empty())
-        throw VideoError(index_.path, tr("frame %1 could not be decoded").arg(n));
+        throw VideoError(index_.path, nb::TrDevices::tr("frame %1 could not be decoded").arg(n));
     cache_.put(n, image);
     return {n, time, image};
 }

@@ -1,4 +1,5 @@
 #include "zaber_stage.h"
+#include "core/tr.h"
 
 #include "devices/device_error.h"
 
@@ -14,11 +15,6 @@ using namespace zaber;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("ZaberStage", text);
-}
 
 double nowSeconds()
 {
@@ -55,7 +51,7 @@ void ZaberStage::ensurePort()
     if (!port_->open(QIODevice::ReadWrite)) {
         const QString why = port_->errorString();
         port_.reset();
-        fail(tr("cannot open the serial port: %1").arg(why));
+        fail(nb::TrDevices::tr("cannot open the serial port: %1").arg(why));
     }
     port_->clear();
 }
@@ -73,7 +69,7 @@ ZaberStage::~ZaberStage()
 
 QString ZaberStage::name() const
 {
-    return tr("Zaber stage on %1").arg(config_.port);
+    return nb::TrDevices::tr("Zaber stage on %1").arg(config_.port);
 }
 
 void ZaberStage::fail(const QString& reason) const
@@ -97,7 +93,7 @@ std::optional<Message> ZaberStage::readMessage(Clock::time_point deadline)
                 continue;
             if (auto m = parse(line))
                 return m;
-            qWarning().noquote() << name() << tr("ignored a garbled line: %1").arg(QString::fromLatin1(line.trimmed()));
+            qWarning().noquote() << name() << nb::TrDevices::tr("ignored a garbled line: %1").arg(QString::fromLatin1(line.trimmed()));
             continue;
         }
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
@@ -105,7 +101,7 @@ std::optional<Message> ZaberStage::readMessage(Clock::time_point deadline)
             return std::nullopt;
         if (!port_->waitForReadyRead(int(left))) {
             if (port_->error() != QSerialPort::NoError && port_->error() != QSerialPort::TimeoutError)
-                fail(tr("serial port failed: %1 (cable unplugged?)").arg(port_->errorString()));
+                fail(nb::TrDevices::tr("serial port failed: %1 (cable unplugged?)").arg(port_->errorString()));
             if (Clock::now() >= deadline)
                 return std::nullopt;
         }
@@ -118,7 +114,7 @@ void ZaberStage::checkFlags(const Message& m)
     const QString fault = faultText(m.warning);
     if (!fault.isEmpty()) {
         sineActive_ = false;
-        fail(tr("controller fault %1: %2").arg(QString::fromLatin1(m.warning), fault));
+        fail(nb::TrDevices::tr("controller fault %1: %2").arg(QString::fromLatin1(m.warning), fault));
     }
 }
 
@@ -126,14 +122,14 @@ Message ZaberStage::request(const QByteArray& text)
 {
     ensurePort();
     if (port_->write(command(config_.device, config_.axis, text)) < 0)
-        fail(tr("writing to the serial port failed: %1").arg(port_->errorString()));
+        fail(nb::TrDevices::tr("writing to the serial port failed: %1").arg(port_->errorString()));
     const auto deadline = Clock::now() + config_.replyTimeout;
     // Writes on a serial port complete asynchronously; flush so the command leaves now.
     port_->flush();
     for (;;) {
         const auto m = readMessage(deadline);
         if (!m)
-            fail(tr("no reply to '%1' within %2 ms (cable unplugged or controller off?)")
+            fail(nb::TrDevices::tr("no reply to '%1' within %2 ms (cable unplugged or controller off?)")
                      .arg(QString::fromLatin1(text))
                      .arg(config_.replyTimeout.count()));
         if (m->type == '!') {
@@ -146,7 +142,7 @@ Message ZaberStage::request(const QByteArray& text)
         if (m->rejected) {
             if (m->data == "DRIVERDISABLED")
                 enabled_ = false;
-            fail(tr("'%1' rejected: %2").arg(QString::fromLatin1(text), rejectionText(m->data)));
+            fail(nb::TrDevices::tr("'%1' rejected: %2").arg(QString::fromLatin1(text), rejectionText(m->data)));
         }
         checkFlags(*m);
         return *m;
@@ -174,13 +170,13 @@ void ZaberStage::zero()
 void ZaberStage::moveLinear(const LinearMotion& motion)
 {
     if (motion.target_mm < config_.minPosition_mm || motion.target_mm > config_.maxPosition_mm)
-        fail(tr("target %1 mm is outside the travel %2..%3 mm")
+        fail(nb::TrDevices::tr("target %1 mm is outside the travel %2..%3 mm")
                  .arg(motion.target_mm)
                  .arg(config_.minPosition_mm)
                  .arg(config_.maxPosition_mm));
     const double speed = std::min(std::abs(motion.velocity_mm_s), config_.maxSpeed_mm_s);
     if (speed <= 0.0)
-        fail(tr("speed must be positive"));
+        fail(nb::TrDevices::tr("speed must be positive"));
     sineActive_ = false;
     request("set maxspeed " + QByteArray::number(qlonglong(config_.units.speedData(speed))));
     request("move abs " + QByteArray::number(qlonglong(config_.units.steps(motion.target_mm))));
@@ -190,7 +186,7 @@ void ZaberStage::moveSine(const SineMotion& motion)
 {
     const double peakSpeed = 2.0 * std::numbers::pi * motion.frequency_hz * motion.amplitude_mm;
     if (motion.frequency_hz <= 0.0 || motion.cycles <= 0 || peakSpeed > config_.maxSpeed_mm_s)
-        fail(tr("sine %1 mm at %2 Hz needs %3 mm/s, above the %4 mm/s limit")
+        fail(nb::TrDevices::tr("sine %1 mm at %2 Hz needs %3 mm/s, above the %4 mm/s limit")
                  .arg(motion.amplitude_mm)
                  .arg(motion.frequency_hz)
                  .arg(peakSpeed, 0, 'f', 1)
@@ -198,7 +194,7 @@ void ZaberStage::moveSine(const SineMotion& motion)
     const Message pos = request("get pos");
     sineCentre_ = config_.units.mm(pos.data.toDouble());
     if (sineCentre_ - motion.amplitude_mm < config_.minPosition_mm || sineCentre_ + motion.amplitude_mm > config_.maxPosition_mm)
-        fail(tr("sine of %1 mm around %2 mm leaves the travel").arg(motion.amplitude_mm).arg(sineCentre_));
+        fail(nb::TrDevices::tr("sine of %1 mm around %2 mm leaves the travel").arg(motion.amplitude_mm).arg(sineCentre_));
     // Velocity moves accelerate at the controller's own limit; give them headroom.
     request("set maxspeed " + QByteArray::number(qlonglong(config_.units.speedData(config_.maxSpeed_mm_s))));
     sine_ = motion;
@@ -244,7 +240,7 @@ StageState ZaberStage::state()
     bool ok = false;
     const double steps = m.data.toDouble(&ok);
     if (!ok)
-        fail(tr("position reply is not a number: '%1'").arg(QString::fromLatin1(m.data)));
+        fail(nb::TrDevices::tr("position reply is not a number: '%1'").arg(QString::fromLatin1(m.data)));
     const double pos = config_.units.mm(steps);
     if (lastPos_s_ >= 0 && now > lastPos_s_)
         velocity_ = (pos - lastPos_) / (now - lastPos_s_);

@@ -1,4 +1,5 @@
 #include "analysis_plots.h"
+#include "core/tr.h"
 
 #include "core/models.h"
 #include "core/signal.h"
@@ -10,8 +11,6 @@
 namespace nb {
 
 namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("analysis", s); }
 
 void reset(QCustomPlot* plot, const QString& title, const QString& x, const QString& y)
 {
@@ -79,8 +78,8 @@ QColor phaseColor(const QString& phase)
 
 void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& group)
 {
-    reset(plot, tr("Stiffness before puncture: %1").arg(group.isEmpty() ? tr("all runs") : group),
-          tr("depth past contact [mm]"), tr("force [N]"));
+    reset(plot, nb::TrViews::tr("Stiffness before puncture: %1").arg(group.isEmpty() ? nb::TrViews::tr("all runs") : group),
+          nb::TrViews::tr("depth past contact [mm]"), nb::TrViews::tr("force [N]"));
     const StiffnessGroupResult* g = nullptr;
     for (const auto& candidate : a.stiffnessGroups)
         if (candidate.group == group)
@@ -106,7 +105,7 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
         for (double d : x)
             maxDepth = std::max(maxDepth, d);
         const QColor c = s.outlier ? QColor(214, 39, 40) : runColor(k++);
-        QCPGraph* dots = scatter(plot, x, y, c, 5.0, s.outlier ? tr("%1 (outlier)").arg(s.run) : s.run);
+        QCPGraph* dots = scatter(plot, x, y, c, 5.0, s.outlier ? nb::TrViews::tr("%1 (outlier)").arg(s.run) : s.run);
         if (s.outlier)
             outlierNamed = true;
         (void)dots;
@@ -127,7 +126,7 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
     }
     const StiffnessModel& m = g->summary.pooled.quadratic.model;
     line(plot, px, py, QPen(Qt::black, 2.0, Qt::DashLine),
-         tr("pooled fit: F = %1 x + %2 x² (F in N, x in mm)").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
+         nb::TrViews::tr("pooled fit: F = %1 x + %2 x² (F in N, x in mm)").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
     plot->rescaleAxes();
     plot->yAxis->setRangeLower(std::min(0.0, plot->yAxis->range().lower));
     plot->replot();
@@ -135,7 +134,7 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
 
 void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const FrictionRunResult& f)
 {
-    reset(plot, tr("Friction against velocity: %1").arg(run.name), tr("velocity [m/s]"), tr("friction force [N]"));
+    reset(plot, nb::TrViews::tr("Friction against velocity: %1").arg(run.name), nb::TrViews::tr("velocity [m/s]"), nb::TrViews::tr("friction force [N]"));
     if (!f.ok() || run.run.size() < 3) {
         plot->replot();
         return;
@@ -152,7 +151,7 @@ void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const Fricti
         x << vel[i] / 1000.0;
         y << force[i] - kNeedleHolderMass_kg * acc[i] / 1000.0;
     }
-    scatter(plot, x, y, QColor(31, 119, 180, 120), 2.0, tr("recorded"));
+    scatter(plot, x, y, QColor(31, 119, 180, 120), 2.0, nb::TrViews::tr("recorded"));
     double vmax = 0.0;
     for (double v : x)
         vmax = std::max(vmax, std::abs(v));
@@ -175,17 +174,17 @@ void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const Fricti
     QCPCurve* curve = new QCPCurve(plot->xAxis, plot->yAxis);
     curve->setData(mx, my);
     curve->setPen(QPen(QColor(214, 39, 40), 2.5));
-    curve->setName(tr("Karnopp fit (%1 Hz)").arg(f.fit.frequency_hz, 0, 'f', 2));
+    curve->setName(nb::TrViews::tr("Karnopp fit (%1 Hz)").arg(f.fit.frequency_hz, 0, 'f', 2));
     plot->rescaleAxes();
     plot->replot();
 }
 
 void plotPhases(QCustomPlot* plot, const DatasetRun& run)
 {
-    reset(plot, tr("Labelled phases: %1").arg(run.name), tr("time [s]"), tr("force [N]"));
+    reset(plot, nb::TrViews::tr("Labelled phases: %1").arg(run.name), nb::TrViews::tr("time [s]"), nb::TrViews::tr("force [N]"));
     QVector<double> t(run.run.time_s.begin(), run.run.time_s.end());
     QVector<double> f(run.run.force_N.begin(), run.run.force_N.end());
-    line(plot, t, f, QPen(QColor(31, 119, 180), 1.0), tr("force"));
+    line(plot, t, f, QPen(QColor(31, 119, 180), 1.0), nb::TrViews::tr("force"));
     plot->rescaleAxes();
     QStringList named;
     for (const Label& l : run.labels) {
@@ -212,7 +211,7 @@ void plotPhases(QCustomPlot* plot, const DatasetRun& run)
     for (const QString& phase : named) {
         // An empty graph carrying the phase's colour.
         QCPGraph* key = plot->addGraph();
-        key->setName(tr("phase %1").arg(phase));
+        key->setName(nb::TrViews::tr("phase %1").arg(phase));
         key->setPen(QPen(phaseColor(phase).darker(120), 8));
     }
     // The force fills the whole width: the legend goes in one row in headroom above it.
@@ -225,16 +224,16 @@ void plotPhases(QCustomPlot* plot, const DatasetRun& run)
 void plotValidation(QCustomPlot* plot, const ValidationResult& v)
 {
     reset(plot,
-          v.ok() ? tr("Model against recording: %1 (rms %2 N)").arg(v.run).arg(v.rms_N, 0, 'f', 3)
-                 : tr("Model against recording: %1 (%2)").arg(v.run, v.error),
-          tr("needle position [mm]"), tr("force [N]"));
+          v.ok() ? nb::TrViews::tr("Model against recording: %1 (rms %2 N)").arg(v.run).arg(v.rms_N, 0, 'f', 3)
+                 : nb::TrViews::tr("Model against recording: %1 (%2)").arg(v.run, v.error),
+          nb::TrViews::tr("needle position [mm]"), nb::TrViews::tr("force [N]"));
     QVector<double> x(v.recorded.position_mm.begin(), v.recorded.position_mm.end());
     QVector<double> y(v.recorded.force_N.begin(), v.recorded.force_N.end());
     // Position is not monotonic on withdrawal: a curve keeps the sample order.
     auto* rec = new QCPCurve(plot->xAxis, plot->yAxis);
     rec->setData(x, y);
     rec->setPen(QPen(QColor(31, 119, 180), 1.5));
-    rec->setName(tr("recorded"));
+    rec->setName(nb::TrViews::tr("recorded"));
     if (v.ok()) {
         QVector<double> sx(v.simulated.position_mm.begin(), v.simulated.position_mm.end());
         QVector<double> sy(v.simulated.force_N.begin(), v.simulated.force_N.end());
@@ -242,7 +241,7 @@ void plotValidation(QCustomPlot* plot, const ValidationResult& v)
         sim->setData(sx, sy);
         // Dashed on top: where model and recording agree both stay visible.
         sim->setPen(QPen(QColor(214, 39, 40), 2.0, Qt::DashLine));
-        sim->setName(tr("summed model"));
+        sim->setName(nb::TrViews::tr("summed model"));
     }
     plot->rescaleAxes();
     plot->replot();

@@ -1,4 +1,5 @@
 #include "figure_export.h"
+#include "core/tr.h"
 
 #include "core/export/export_error.h"
 
@@ -10,12 +11,6 @@
 #include <qcustomplot.h>
 
 namespace nb {
-
-namespace {
-
-QString tr(const char* s) { return QCoreApplication::translate("analysis", s); }
-
-}  // namespace
 
 void saveFigure(QCustomPlot* plot, const QString& path, int width, int height)
 {
@@ -40,16 +35,16 @@ void saveFigure(QCustomPlot* plot, const QString& path, int width, int height)
             ok = painter.end();
         }
     } else {
-        throw ExportError(path, tr("unknown figure format '%1' (png, svg or pdf)").arg(suffix));
+        throw ExportError(path, nb::TrViews::tr("unknown figure format '%1' (png, svg or pdf)").arg(suffix));
     }
     if (!ok || !QFileInfo(temp).exists() || QFileInfo(temp).size() == 0) {
         QFile::remove(temp);
-        throw ExportError(path, tr("could not render the figure"));
+        throw ExportError(path, nb::TrViews::tr("could not render the figure"));
     }
     QFile::remove(path);
     if (!QFile::rename(temp, path)) {
         QFile::remove(temp);
-        throw ExportError(path, tr("cannot write the figure"));
+        throw ExportError(path, nb::TrViews::tr("cannot write the figure"));
     }
 }
 
