@@ -215,6 +215,15 @@ void ReviewWorkspace::buildUi()
     acceptButton_ = syncButton(tr("Accept"), tr("use the offset found"), [this] { acceptSync(); });
     rejectButton_ = syncButton(tr("Reject"), tr("keep the current offset"), [this] { rejectSync(); });
     sync->addStretch();
+    syncPlot_ = new QCustomPlot(this);
+    syncPlot_->setFocusPolicy(Qt::NoFocus);
+    syncPlot_->setFixedHeight(130);
+    syncPlot_->addGraph();
+    syncPlot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
+    syncPlot_->xAxis->setLabel(tr("video offset [s]"));
+    syncPlot_->yAxis->setLabel(tr("correlation r"));
+    syncMarker_ = new QCPItemStraightLine(syncPlot_);
+    syncMarker_->setPen(QPen(QColor(220, 0, 0), 1.5, Qt::DashLine));
 
     // Labels.
     auto* labels = new QHBoxLayout;
@@ -241,6 +250,7 @@ void ReviewWorkspace::buildUi()
     layout->addWidget(timeline_);
     layout->addLayout(labels);
     layout->addLayout(sync);
+    layout->addWidget(syncPlot_);
     layout->addWidget(status_);
 
     playTimer_ = new QTimer(this);
@@ -507,13 +517,26 @@ void ReviewWorkspace::updateSyncUi()
 {
     acceptButton_->setEnabled(pendingSync_.has_value());
     rejectButton_->setEnabled(pendingSync_.has_value());
-    if (pendingSync_)
-        syncLabel_->setText(tr("found %1 s (confidence %2, r = %3)")
-                                .arg(pendingSync_->offset_s, 0, 'f', 3)
-                                .arg(pendingSync_->confidence, 0, 'f', 2)
-                                .arg(pendingSync_->correlation, 0, 'f', 2));
-    else
+    syncPlot_->setVisible(pendingSync_.has_value());
+    if (!pendingSync_) {
         syncLabel_->clear();
+        return;
+    }
+    syncLabel_->setText(tr("found %1 s (confidence %2, r = %3)")
+                            .arg(pendingSync_->offset_s, 0, 'f', 3)
+                            .arg(pendingSync_->confidence, 0, 'f', 2)
+                            .arg(pendingSync_->correlation, 0, 'f', 2));
+    QVector<double> offsets, r;
+    for (const auto& [o, c] : pendingSync_->curve) {
+        offsets << o;
+        r << c;
+    }
+    syncPlot_->graph(0)->setData(offsets, r, true);
+    syncPlot_->rescaleAxes();
+    syncPlot_->yAxis->scaleRange(1.1);
+    syncMarker_->point1->setCoords(pendingSync_->offset_s, 0);
+    syncMarker_->point2->setCoords(pendingSync_->offset_s, 1);
+    syncPlot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void ReviewWorkspace::acceptSync()

@@ -70,6 +70,9 @@ public:
     std::optional<SyncResult> pendingSync() const { return pendingSync_; }
     void acceptSync();
     void rejectSync();
+    // Correlation against offset of the pending automatic sync, the offset found marked;
+    // visible from the end of Auto sync until Accept/Reject.
+    QCustomPlot* syncPlot() const { return syncPlot_; }
 
 signals:
     void frameShown(int index);
@@ -117,6 +120,8 @@ private:
     QDoubleSpinBox* driftBox_ = nullptr;
     QDoubleSpinBox* jumpBox_ = nullptr;
     QLabel* syncLabel_ = nullptr;
+    QCustomPlot* syncPlot_ = nullptr;
+    QCPItemStraightLine* syncMarker_ = nullptr;
     QPushButton* acceptButton_ = nullptr;
     QPushButton* rejectButton_ = nullptr;
     QLabel* status_ = nullptr;

@@ -15,6 +15,7 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+#include <qcustomplot.h>
 
 using nb::Label;
 
@@ -150,8 +151,22 @@ private slots:
         QVERIFY(ws.pendingSync().has_value());
         QVERIFY2(std::abs(ws.pendingSync()->offset_s - truthOffset_) < 1.0 / 29.97,
                  qPrintable(QString::number(ws.pendingSync()->offset_s)));
+        // The correlation curve is shown, its peak at the offset reported, until accepted.
+        QCustomPlot* plot = ws.syncPlot();
+        QVERIFY(plot->isVisible());
+        QVERIFY(plot->graph(0)->dataCount() > 100);
+        auto peak = plot->graph(0)->data()->constBegin();
+        for (auto it = peak; it != plot->graph(0)->data()->constEnd(); ++it)
+            if (it->value > peak->value)
+                peak = it;
+        QVERIFY2(std::abs(peak->key - ws.pendingSync()->offset_s) <= 0.05 + 1e-9,
+                 qPrintable(QString("peak %1, offset %2").arg(peak->key).arg(ws.pendingSync()->offset_s)));
+        auto* marker = qobject_cast<QCPItemStraightLine*>(plot->item(0));
+        QVERIFY(marker);
+        QCOMPARE(marker->point1->coords().x(), ws.pendingSync()->offset_s);
         ws.acceptSync();
         QVERIFY(std::abs(ws.mapping().offset_s - truthOffset_) < 1.0 / 29.97);
+        QVERIFY(!plot->isVisible());
         ws.setCursorTime(1.0);  // now shows video time 1.0 + offset
         const int expected = int(std::floor((1.0 + ws.mapping().offset_s) * 29.97 + 1e-9));
         QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), expected, 20000);
