@@ -1,5 +1,7 @@
 #include "label_model.h"
 
+#include <QSettings>
+
 #include <algorithm>
 
 namespace nb {
@@ -21,6 +23,38 @@ QList<LabelDef> protocolLabelSet(const QString& protocol)
     defs.append({QStringLiteral("events"), QStringLiteral("relaxation"), true, Qt::Key_R, QColor(66, 133, 244)});
     defs.append({QStringLiteral("events"), QStringLiteral("internal puncture"), true, Qt::Key_I, QColor(171, 71, 188)});
     return defs;
+}
+
+static QString settingsGroup(const QString& protocol) { return QStringLiteral("labelSets/") + protocol; }
+
+QList<LabelDef> savedLabelSet(const QString& protocol)
+{
+    QSettings settings;
+    const int n = settings.beginReadArray(settingsGroup(protocol));
+    QList<LabelDef> defs;
+    for (int i = 0; i < n; ++i) {
+        settings.setArrayIndex(i);
+        defs.append({settings.value("track").toString(), settings.value("label").toString(), settings.value("point").toBool(),
+                     settings.value("key").toInt(), settings.value("color").value<QColor>()});
+    }
+    settings.endArray();
+    return defs.isEmpty() ? protocolLabelSet(protocol) : defs;
+}
+
+void saveLabelSet(const QString& protocol, const QList<LabelDef>& defs)
+{
+    QSettings settings;
+    settings.remove(settingsGroup(protocol));
+    settings.beginWriteArray(settingsGroup(protocol), int(defs.size()));
+    for (int i = 0; i < defs.size(); ++i) {
+        settings.setArrayIndex(i);
+        settings.setValue("track", defs[i].track);
+        settings.setValue("label", defs[i].label);
+        settings.setValue("point", defs[i].point);
+        settings.setValue("key", defs[i].key);
+        settings.setValue("color", defs[i].color);
+    }
+    settings.endArray();
 }
 
 LabelModel::LabelModel(QObject* parent) : QAbstractTableModel(parent), defs_(protocolLabelSet(QStringLiteral("friction"))) {}

@@ -23,6 +23,10 @@ struct LabelDef {
 // "friction": a, b1, b2, c on the insertion and withdrawal tracks (keys 1-4, 5-8);
 // "stiffness" (and anything else): contact C, puncture P, relaxation R, internal puncture I.
 QList<LabelDef> protocolLabelSet(const QString& protocol);
+// The protocol's label set as last edited by the operator (QSettings "labelSets/<protocol>"),
+// else protocolLabelSet(protocol); saveLabelSet() stores an edited set.
+QList<LabelDef> savedLabelSet(const QString& protocol);
+void saveLabelSet(const QString& protocol, const QList<LabelDef>& defs);
 
 class LabelModel : public QAbstractTableModel {
     Q_OBJECT

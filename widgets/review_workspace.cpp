@@ -2,6 +2,7 @@
 
 #include "label_commands.h"
 #include "label_model.h"
+#include "label_set_dialog.h"
 #include "timeline.h"
 #include "video_view.h"
 
@@ -231,6 +232,11 @@ void ReviewWorkspace::buildUi()
     suggest->setFocusPolicy(Qt::NoFocus);
     connect(suggest, &QPushButton::clicked, this, &ReviewWorkspace::suggestLabels);
     labels->addWidget(suggest);
+    auto* editSet = new QPushButton(tr("Edit label set…"), this);
+    editSet->setFocusPolicy(Qt::NoFocus);
+    editSet->setToolTip(tr("add, rename or remove the labels of this protocol and their hotkeys"));
+    connect(editSet, &QPushButton::clicked, this, &ReviewWorkspace::editLabelSet);
+    labels->addWidget(editSet);
     keysHelp_ = new QLabel(this);
     keysHelp_->setWordWrap(true);
     labels->addWidget(keysHelp_, 1);
@@ -263,8 +269,36 @@ void ReviewWorkspace::buildUi()
             setPlaying(false);
     });
     updateSyncUi();
-    model_->setDefinitions(protocolLabelSet(QStringLiteral("friction")));
+    model_->setDefinitions(savedLabelSet(protocol_));
+    updateKeysHelp();
     updateShading();
+}
+
+void ReviewWorkspace::updateKeysHelp()
+{
+    QStringList keys;
+    for (const LabelDef& d : model_->definitions())
+        keys << QStringLiteral("%1 %2/%3").arg(QKeySequence(d.key).toString(QKeySequence::NativeText), d.track, d.label);
+    keysHelp_->setText(tr("Keys: %1 · S split · Del delete · Ctrl+Z undo").arg(keys.join(QStringLiteral(", "))));
+}
+
+LabelSetDialog* ReviewWorkspace::editLabelSet()
+{
+    auto* dialog = new LabelSetDialog(protocol_, model_->definitions(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        const QList<LabelDef> defs = dialog->definitions();
+        // A phase being marked may belong to a label that is gone.
+        for (const auto& [track, p] : pending_)
+            timeline_->setPending(track, {}, std::nullopt);
+        pending_.clear();
+        model_->setDefinitions(defs);
+        saveLabelSet(protocol_, defs);
+        updateKeysHelp();
+        showStatus(tr("Label set of %1 saved: %2 labels").arg(protocol_).arg(defs.size()));
+    });
+    dialog->open();
+    return dialog;
 }
 
 void ReviewWorkspace::showStatus(const QString& text) { status_->setText(text); }
@@ -281,7 +315,8 @@ bool ReviewWorkspace::openRun(const QString& path)
         run_ = std::move(run);
         runPath_.clear();  // no saving while loading
         const QString protocol = run_.metadata.value(QStringLiteral("protocol"), QString());
-        model_->setDefinitions(protocolLabelSet(protocol == QLatin1String("friction") ? protocol : QStringLiteral("stiffness")));
+        protocol_ = protocol == QLatin1String("friction") ? protocol : QStringLiteral("stiffness");
+        model_->setDefinitions(savedLabelSet(protocol_));
         model_->setLabels(labels);
         runPath_ = path;
         undo_->clear();
@@ -291,10 +326,7 @@ bool ReviewWorkspace::openRun(const QString& path)
         plot_->rescaleAxes();
         plot_->yAxis->scaleRange(1.1);
         timeline_->setRange(run_.time_s.front(), run_.time_s.back());
-        QStringList keys;
-        for (const LabelDef& d : model_->definitions())
-            keys << QStringLiteral("%1 %2/%3").arg(QKeySequence(d.key).toString(QKeySequence::NativeText), d.track, d.label);
-        keysHelp_->setText(tr("Keys: %1 · S split · Del delete · Ctrl+Z undo").arg(keys.join(QStringLiteral(", "))));
+        updateKeysHelp();
         updateShading();
         setCursorTime(run_.time_s.front());
         showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size()));

@@ -33,6 +33,7 @@ class QUndoStack;
 namespace nb {
 
 class LabelModel;
+class LabelSetDialog;
 class Timeline;
 class VideoView;
 
@@ -65,6 +66,9 @@ public:
 
     // Applies the labels suggested from the data (one undoable step).
     void suggestLabels();
+    // Opens the label-set editor for the run's protocol (not blocking); accepting it changes
+    // the hotkeys at once and keeps the set in QSettings for the protocol.
+    LabelSetDialog* editLabelSet();
     // Runs automatic synchronisation in the background; the result waits for accept/reject.
     void startAutoSync();
     std::optional<SyncResult> pendingSync() const { return pendingSync_; }
@@ -90,9 +94,11 @@ private:
     void saveLabels();
     void requestFrameForCursor();
     void updateSyncUi();
+    void updateKeysHelp();
 
     Run run_;
     QString runPath_;
+    QString protocol_ = QStringLiteral("friction");
     TimelineMapping mapping_;
     double cursor_ = 0.0;
     int frame_ = -1, requested_ = -1;

@@ -2,15 +2,23 @@
 // hotkeys, undo/redo, edge drag, frame steps, auto sync; saves a screenshot.
 #include "core/labels.h"
 #include "widgets/label_model.h"
+#include "widgets/label_set_dialog.h"
 #include "widgets/review_workspace.h"
 #include "widgets/timeline.h"
 #include "widgets/video_view.h"
 
+#include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QPointer>
 #include <QProcess>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTableWidget>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -36,6 +44,10 @@ class TestReviewWorkspace : public QObject {
 private slots:
     void initTestCase()
     {
+        // Edited label sets live in QSettings: keep the test's apart and start from the defaults.
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("NeedleBenchTest");
+        QSettings().remove("labelSets");
         run_ = dir_.filePath("run.csv");
         video_ = dir_.filePath("run.avi");
         QProcess p;
@@ -119,6 +131,64 @@ private slots:
         QVERIFY(moved);
         QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier);
         QVERIFY(has(model->labels(), "insertion", "b1", 0.4, 0.5));
+    }
+
+    void labelSetEditedInTheDialog()
+    {
+        nb::ReviewWorkspace ws;
+        ws.resize(1200, 800);
+        ws.show();
+        QVERIFY(ws.openRun(run_));
+        QPointer<nb::LabelSetDialog> dialog = ws.editLabelSet();
+        QVERIFY(dialog->isVisible());
+        QTableWidget* table = dialog->table();
+        const int rows = table->rowCount();
+        QCOMPARE(rows, 8);
+        QPushButton* add = nullptr;
+        for (QPushButton* b : dialog->findChildren<QPushButton*>())
+            if (b->text() == "Add label")
+                add = b;
+        QVERIFY(add);
+        QTest::mouseClick(add, Qt::LeftButton);
+        QCOMPARE(table->rowCount(), rows + 1);
+        table->item(rows, nb::LabelSetDialog::Track)->setText("events");
+        table->item(rows, nb::LabelSetDialog::Name)->setText("bubble");
+        static_cast<QComboBox*>(table->cellWidget(rows, nb::LabelSetDialog::Kind))->setCurrentIndex(1);
+        QPushButton* ok = dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+
+        // Refused: a hotkey another label has, a key the workspace uses, a duplicate name.
+        table->item(rows, nb::LabelSetDialog::Hotkey)->setText("3");
+        QTest::mouseClick(ok, Qt::LeftButton);
+        QVERIFY(dialog->isVisible());
+        QVERIFY2(dialog->problem().contains("insertion/b2"), qPrintable(dialog->problem()));
+        table->item(rows, nb::LabelSetDialog::Hotkey)->setText("S");
+        QTest::mouseClick(ok, Qt::LeftButton);
+        QVERIFY(dialog->isVisible());
+        QVERIFY2(dialog->problem().contains("split"), qPrintable(dialog->problem()));
+        table->item(rows, nb::LabelSetDialog::Hotkey)->setText("B");
+        table->item(rows, nb::LabelSetDialog::Track)->setText("insertion");
+        table->item(rows, nb::LabelSetDialog::Name)->setText("a");
+        QTest::mouseClick(ok, Qt::LeftButton);
+        QVERIFY(dialog->isVisible());
+        QVERIFY2(dialog->problem().contains("twice"), qPrintable(dialog->problem()));
+        QVERIFY(!ws.labelModel()->definitionForKey(Qt::Key_B));
+
+        table->item(rows, nb::LabelSetDialog::Track)->setText("events");
+        table->item(rows, nb::LabelSetDialog::Name)->setText("bubble");
+        QTest::mouseClick(ok, Qt::LeftButton);
+        QTRY_VERIFY(!dialog);
+
+        // The new hotkey places the new point label at the cursor, on its own track.
+        ws.setCursorTime(0.8);
+        QTest::keyClick(&ws, Qt::Key_B);
+        QVERIFY(has(ws.labelModel()->labels(), "events", "bubble", 0.8, 0.8));
+        QVERIFY(ws.labelModel()->tracks().contains("events"));
+        // Kept for the protocol: the next workspace has it too.
+        QCOMPARE(nb::savedLabelSet("friction").size(), qsizetype(rows + 1));
+        nb::ReviewWorkspace other;
+        QVERIFY(other.openRun(run_));
+        QVERIFY(other.labelModel()->definitionForKey(Qt::Key_B));
+        QSettings().remove("labelSets");
     }
 
     void videoFollowsTheCursorAndSyncs()
