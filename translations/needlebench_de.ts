@@ -880,7 +880,7 @@ Befehle:
 <context>
     <name>nb::LabelModel</name>
     <message>
-        <location filename="../widgets/label_model.cpp" line="+55"/>
+        <location filename="../widgets/label_model.cpp" line="+89"/>
         <source>track</source>
         <translation>Spur</translation>
     </message>
@@ -903,6 +903,114 @@ Befehle:
         <location line="+1"/>
         <source>comment</source>
         <translation>Kommentar</translation>
+    </message>
+</context>
+<context>
+    <name>nb::LabelSetDialog</name>
+    <message>
+        <location filename="../widgets/label_set_dialog.cpp" line="+23"/>
+        <source>Label set: %1</source>
+        <translation>Label-Satz: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>track</source>
+        <translation>Spur</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>hotkey</source>
+        <translation>Taste</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Add label</source>
+        <translation>Label hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>new label</source>
+        <translation>neues Label</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Remove label</source>
+        <translation>Label entfernen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Renaming a label does not rename the labels already placed.</source>
+        <translation>Das Umbenennen eines Labels benennt bereits gesetzte Labels nicht um.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>interval</source>
+        <translation>Intervall</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>one frame back</source>
+        <translation>ein Bild zurück</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>one frame forward</source>
+        <translation>ein Bild vor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>play / pause</source>
+        <translation>Wiedergabe / Pause</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>split</source>
+        <translation>teilen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delete</source>
+        <translation>löschen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Row %1: a label needs a track and a name.</source>
+        <translation>Zeile %1: Ein Label braucht eine Spur und einen Namen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the hotkey must be one key without Ctrl, Shift or Alt.</source>
+        <translation>%1: Die Taste muss eine einzelne Taste ohne Strg, Umschalt oder Alt sein.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the key %2 already means “%3” in the review workspace.</source>
+        <translation>%1: Die Taste %2 bedeutet in der Sichtung bereits „%3“.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is in the set twice.</source>
+        <translation>%1 ist zweimal im Satz.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The key %1 is given to both %2/%3 and %4.</source>
+        <translation>Die Taste %1 ist sowohl %2/%3 als auch %4 zugewiesen.</translation>
     </message>
 </context>
 <context>
@@ -1188,7 +1296,7 @@ Befehle:
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+48"/>
+        <location filename="../widgets/review_workspace.cpp" line="+49"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -1239,12 +1347,12 @@ Befehle:
     </message>
     <message>
         <location line="+1"/>
-        <location line="+234"/>
+        <location line="+275"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-234"/>
+        <location line="-275"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -1412,17 +1520,42 @@ Befehle:
         <translation>den aktuellen Versatz behalten</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>video offset [s]</source>
+        <translation>Videoversatz [s]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>correlation r</source>
+        <translation>Korrelation r</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Suggest labels</source>
         <translation>Labels vorschlagen</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+4"/>
+        <source>Edit label set…</source>
+        <translation>Label-Satz bearbeiten…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>add, rename or remove the labels of this protocol and their hotkeys</source>
+        <translation>Labels dieses Protokolls und ihre Tasten hinzufügen, umbenennen oder entfernen</translation>
+    </message>
+    <message>
+        <location line="+45"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation>Tasten: %1 · S teilen · Entf löschen · Strg+Z rückgängig</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+16"/>
+        <source>Label set of %1 saved: %2 labels</source>
+        <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
@@ -1467,7 +1600,7 @@ Befehle:
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>

@@ -30,7 +30,7 @@ LabelSetDialog::LabelSetDialog(const QString& protocol, const QList<LabelDef>& d
 
     auto* add = new QPushButton(tr("Add label"), this);
     connect(add, &QPushButton::clicked, this, [this] {
-        const QString track = table_->rowCount() ? table_->item(table_->rowCount() - 1, Track)->text() : tr("events");
+        const QString track = table_->rowCount() ? table_->item(table_->rowCount() - 1, Track)->text() : QStringLiteral("events");  // a track name is data: never translated
         addRow({track, tr("new label"), true, 0, kNewColors[table_->rowCount() % std::size(kNewColors)]});
         table_->setCurrentCell(table_->rowCount() - 1, Name);
     });
