@@ -130,7 +130,7 @@ double OrganTissue::step(double t, double dt, double tip, double v_mm_s, GroundT
         if (length_m > 0.0) {
             const KarnoppModel k = p_.friction.forLength(length_m, kBand_m_s);
             const double kb = kBristle_N_per_mm_per_m * length_m;
-            double f;
+            double f = 0.0;  // always set below; GCC cannot see that stuck_ flips between the two branches
             if (stuck_) {
                 bristle_mm_ += v_mm_s * dt;
                 f = kb * bristle_mm_;
