@@ -1,27 +1,12 @@
 #include "dataset.h"
+
+#include "core/signal.h"
 #include "core/tr.h"
 
 #include <QCoreApplication>
 #include <algorithm>
 
 namespace nb {
-
-std::vector<double> gradient(const std::vector<double>& y, const std::vector<double>& t)
-{
-    const std::size_t n = std::min(y.size(), t.size());
-    std::vector<double> d(n, 0.0);
-    if (n < 2)
-        return d;
-    auto slope = [&](std::size_t a, std::size_t b) {
-        const double dt = t[b] - t[a];
-        return dt != 0.0 ? (y[b] - y[a]) / dt : 0.0;
-    };
-    d[0] = slope(0, 1);
-    d[n - 1] = slope(n - 2, n - 1);
-    for (std::size_t i = 1; i + 1 < n; ++i)
-        d[i] = slope(i - 1, i + 1);
-    return d;
-}
 
 std::vector<SignalColumn> exportSignals(const Run& run)
 {
@@ -30,9 +15,9 @@ std::vector<SignalColumn> exportSignals(const Run& run)
     cols.push_back({QStringLiteral("position_mm"), QStringLiteral("mm"), nb::TrCore::tr("needle tip depth, grows as the needle goes deeper"),
                     run.position_mm});
     const auto* v = run.numericColumn(QStringLiteral("velocity_mm_s"));
-    const std::vector<double> velocity = v && v->size() == run.size() ? *v : gradient(run.position_mm, run.time_s);
+    const std::vector<double> velocity = v && v->size() == run.size() ? *v : derivative(run.time_s, run.position_mm);
     const auto* a = run.numericColumn(QStringLiteral("acceleration_mm_s2"));
-    const std::vector<double> accel = a && a->size() == run.size() ? *a : gradient(velocity, run.time_s);
+    const std::vector<double> accel = a && a->size() == run.size() ? *a : derivative(run.time_s, velocity);
     cols.push_back({QStringLiteral("velocity_mm_s"), QStringLiteral("mm/s"),
                     v ? nb::TrCore::tr("needle velocity, recorded") : nb::TrCore::tr("needle velocity, central differences of position"), velocity});
     cols.push_back({QStringLiteral("acceleration_mm_s2"), QStringLiteral("mm/s^2"),

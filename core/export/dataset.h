@@ -37,9 +37,6 @@ struct SignalColumn {
 // differences of position (np.gradient-like, so no sample is lost at the ends).
 std::vector<SignalColumn> exportSignals(const Run& run);
 
-// Derivative of `y` against `t` by central differences (one-sided at the ends).
-std::vector<double> gradient(const std::vector<double>& y, const std::vector<double>& t);
-
 // Label tracks in order of first appearance.
 QStringList labelTracks(const Labels& labels);
 
