@@ -28,6 +28,25 @@ class TestSync : public QObject {
     QString run_, video_, truth_;
 
 private slots:
+    // One simulated friction run with its rendered video (offset 1.7 s), shared by the tests below.
+    void initTestCase()
+    {
+        run_ = dir_.filePath("fr.csv");
+        video_ = dir_.filePath("fr.avi");
+        truth_ = dir_.filePath("fr.json");
+        int code = -1;
+        runJson({"simulate", "--protocol", "friction", "--tissue", "liver7", "--cycles", "3", "--out", run_, "--truth",
+                 truth_, "--video", video_, "--video-offset-s", "1.7"},
+                &code);
+        QCOMPARE(code, 0);
+        QFile tf(truth_);
+        QVERIFY(tf.open(QIODevice::ReadOnly));
+        const QJsonObject truth = QJsonDocument::fromJson(tf.readAll()).object();
+        const double offset = truth["video_offset_s"].toDouble();
+        QVERIFY(std::abs(offset - 1.7) < 0.01);
+        QVERIFY(!truth["phases"].toArray().isEmpty());
+    }
+
     void mapping()
     {
         nb::TimelineMapping m = nb::TimelineMapping::fromEvent(1.5, 4.0);
@@ -68,20 +87,10 @@ private slots:
 
     void renderedSimulatedRun()
     {
-        run_ = dir_.filePath("fr.csv");
-        video_ = dir_.filePath("fr.avi");
-        truth_ = dir_.filePath("fr.json");
         int code = -1;
-        runJson({"simulate", "--protocol", "friction", "--tissue", "liver7", "--cycles", "3", "--out", run_, "--truth",
-                 truth_, "--video", video_, "--video-offset-s", "1.7"},
-                &code);
-        QCOMPARE(code, 0);
         QFile tf(truth_);
         QVERIFY(tf.open(QIODevice::ReadOnly));
-        const QJsonObject truth = QJsonDocument::fromJson(tf.readAll()).object();
-        const double offset = truth["video_offset_s"].toDouble();
-        QVERIFY(std::abs(offset - 1.7) < 0.01);
-        QVERIFY(!truth["phases"].toArray().isEmpty());
+        const double offset = QJsonDocument::fromJson(tf.readAll()).object()["video_offset_s"].toDouble();
 
         // The operator draws the region around the needle tip in the middle pane.
         const QJsonObject r = runJson({"sync", run_, video_, "--roi", "240,300,240,180", "--json"}, &code);
@@ -100,8 +109,6 @@ private slots:
     // intervals lie mostly inside true c.
     void suggestionsAgainstTruth()
     {
-        if (run_.isEmpty())
-            QSKIP("needs the simulated run");
         int code = -1;
         const QString out = dir_.filePath("fr.labels.csv");
         runJson({"labels", "suggest", run_, "--out", out}, &code);
