@@ -127,17 +127,45 @@ int fitStiffnessCommand(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
     const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
+    const QCommandLineOption labels(QStringLiteral("labels"),
+                                    nb::TrCli::tr("a run's labels (track,label,start_s,end_s,comment); its 'contact' and "
+                                       "'puncture' points replace the detected ones. Give it once per run, in the "
+                                       "runs' order."),
+                                    QStringLiteral("FILE"));
     parser.addOption(json);
+    parser.addOption(labels);
     parser.addPositionalArgument(QStringLiteral("RUN.csv..."), nb::TrCli::tr("constant-velocity insertion runs"));
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("fit stiffness"), args, io, 1, -1, &code))
         return code;
     const QStringList files = parser.positionalArguments();
+    const QStringList labelFiles = parser.values(labels);
+    if (!labelFiles.isEmpty() && labelFiles.size() != files.size()) {
+        io.err << "needlebench fit stiffness: "
+               << nb::TrCli::tr("%1 label files for %2 runs; give --labels once per run, in the runs' order\n")
+                      .arg(labelFiles.size())
+                      .arg(files.size())
+               << nb::TrCli::tr("Usage: needlebench fit stiffness RUN.csv... [--labels FILE]... [--json]\n");
+        return Usage;
+    }
     std::vector<InsertionEvents> events;
     std::vector<StiffnessSegment> segments;
-    for (const QString& path : files) {
+    for (qsizetype f = 0; f < files.size(); ++f) {
+        const QString& path = files[f];
         const Run run = loadRun(path, io);
         events.push_back(onFile(path, [&] { return detectEvents(run); }));
+        if (!labelFiles.isEmpty()) {
+            Labels marks;
+            try {
+                marks = readLabelsFile(labelFiles[f]);
+            } catch (const RunFileError& e) {
+                throw FileFailure{e.message()};
+            }
+            onFile(labelFiles[f], [&] {
+                applyEventLabels(events.back(), run, marks);
+                return 0;
+            });
+        }
         segments.push_back(stiffnessSegment(run, events.back()));
         onFile(path, [&] { return fitStiffness(segments.back()); });  // names the file if a run is unusable
     }

@@ -206,6 +206,11 @@ RunEvent eventAt(const Run& run, std::size_t i, double offset)
 
 }  // namespace
 
+namespace {
+// Share of the loading (contact to puncture) the contact fit uses.
+constexpr double kContactFitSpan = 0.55;
+}  // namespace
+
 ContactFit fitContact(std::span<const double> pos, std::span<const double> force)
 {
     const std::size_t n = std::min(pos.size(), force.size());
@@ -324,7 +329,18 @@ InsertionEvents detectEvents(const Run& run, const EventOptions& options)
         const std::size_t idx = refinePeak(force, drops[k].peak, radius);
         if (idx < 8)
             continue;
-        const ContactFit c = fitContact(pos.first(idx + 1), force.first(idx + 1));
+        ContactFit c = fitContact(pos.first(idx + 1), force.first(idx + 1));
+        // The capsule tents over the tip just before it tears and the force rises faster
+        // than the quadratic there; fitting the contact to the loading before that keeps the
+        // tenting from pulling x_s1 (and a1 with it) off.
+        if (pos[idx] > c.contact_mm) {
+            const double limit = c.contact_mm + kContactFitSpan * (pos[idx] - c.contact_mm);
+            std::size_t m = 0;
+            while (m <= idx && pos[m] <= limit)
+                ++m;
+            if (m >= 8 && m < idx)
+                c = fitContact(pos.first(m), force.first(m));
+        }
         const double peakForce = trailingMean(force, idx, 5) - c.offset_N;
         if (peakForce < std::max(options.minPunctureDrop_N, 0.5 * drops[k].drop) || !(pos[idx] > c.contact_mm))
             continue;
@@ -374,6 +390,81 @@ InsertionEvents detectEvents(const Run& run, const EventOptions& options)
         ev.internalPunctures.push_back(e);
     }
     return ev;
+}
+
+void applyEventLabels(InsertionEvents& ev, const Run& run, const Labels& labels, double window_s)
+{
+    auto find = [&](const QString& name) -> const Label* {
+        for (const Label& l : labels)
+            if (l.isPoint() && l.label.compare(name, Qt::CaseInsensitive) == 0)
+                return &l;
+        return nullptr;
+    };
+    const std::size_t n = run.size();
+    if (n == 0)
+        return;
+    auto nearest = [&](double t) {
+        const auto it = std::lower_bound(run.time_s.begin(), run.time_s.end(), t);
+        std::size_t i = std::size_t(it - run.time_s.begin());
+        if (i >= n)
+            return n - 1;
+        if (i > 0 && t - run.time_s[i - 1] < run.time_s[i] - t)
+            --i;
+        return i;
+    };
+    auto outside = [&](const Label& l) {
+        return l.start_s < run.time_s.front() || l.start_s > run.time_s.back();
+    };
+
+    if (const Label* c = find(QStringLiteral("contact"))) {
+        if (outside(*c))
+            throw FitError(QCoreApplication::translate("nb::fit", "the contact label at %1 s is outside the run (%2 to %3 s)")
+                               .arg(c->start_s).arg(run.time_s.front()).arg(run.time_s.back()));
+        const double t = c->start_s;
+        const std::size_t hi = std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), t) - run.time_s.begin());
+        double x = run.position_mm[std::min(hi, n - 1)];
+        if (hi > 0 && hi < n && run.time_s[hi] > run.time_s[hi - 1]) {
+            const double u = (t - run.time_s[hi - 1]) / (run.time_s[hi] - run.time_s[hi - 1]);
+            x = run.position_mm[hi - 1] + u * (run.position_mm[hi] - run.position_mm[hi - 1]);
+        }
+        // As the thesis zeroed its forces: the mean of everything before the contact.
+        const double oldOffset = ev.zeroOffset_N;
+        if (hi > 0) {
+            double sum = 0.0;
+            for (std::size_t i = 0; i < hi; ++i)
+                sum += run.force_N[i];
+            ev.zeroOffset_N = sum / double(hi);
+        }
+        const double shift = oldOffset - ev.zeroOffset_N;
+        for (RunEvent* e : {&ev.contact, &ev.puncture})
+            e->force_N += shift;
+        if (ev.relaxation)
+            ev.relaxation->force_N += shift;
+        for (RunEvent& e : ev.internalPunctures)
+            e.force_N += shift;
+        ev.contact.index = nearest(t);
+        ev.contact.time_s = t;
+        ev.contact.position_mm = x;
+        ev.contact.force_N = run.force_N[ev.contact.index] - ev.zeroOffset_N;
+    }
+    if (const Label* p = find(QStringLiteral("puncture"))) {
+        if (outside(*p))
+            throw FitError(QCoreApplication::translate("nb::fit", "the puncture label at %1 s is outside the run (%2 to %3 s)")
+                               .arg(p->start_s).arg(run.time_s.front()).arg(run.time_s.back()));
+        // A label placed on a video frame is known to a frame; the force peak near it is the puncture.
+        const std::size_t lo = nearest(p->start_s - window_s), hi = nearest(p->start_s + window_s);
+        std::size_t best = nearest(p->start_s);
+        for (std::size_t i = lo; i <= hi; ++i)
+            if (run.force_N[i] > run.force_N[best])
+                best = i;
+        ev.puncture.index = best;
+        ev.puncture.time_s = run.time_s[best];
+        ev.puncture.position_mm = run.position_mm[best];
+        ev.puncture.force_N = run.force_N[best] - ev.zeroOffset_N;
+    }
+    if (!(ev.puncture.position_mm > ev.contact.position_mm))
+        throw FitError(QCoreApplication::translate("nb::fit", "the puncture (%1 mm) is not past the contact (%2 mm)")
+                           .arg(ev.puncture.position_mm).arg(ev.contact.position_mm));
 }
 
 }  // namespace nb

@@ -3,6 +3,7 @@
 // (x_s1), the main puncture (x_s2), later internal punctures, and the end of the
 // post-puncture drop (relaxation, where the surface has sprung back to x_s3 < x_s2).
 
+#include "labels.h"
 #include "models.h"
 #include "run.h"
 
@@ -59,5 +60,12 @@ struct ContactFit {
     double rms_N = 0.0;
 };
 ContactFit fitContact(std::span<const double> position_mm, std::span<const double> force_N);
+
+// The operator's point labels override what detection found. "contact" sets x_s1 (the
+// position at the label's time) and the zero offset (the mean force before it, as the thesis
+// zeroed its forces); "puncture" sets x_s2 at the force peak within ±window_s of the label
+// (a label placed on a video frame is known to a frame). Other labels are ignored. Throws
+// FitError for a label outside the run or a puncture not past the contact.
+void applyEventLabels(InsertionEvents& events, const Run& run, const Labels& labels, double window_s = 0.05);
 
 }  // namespace nb

@@ -10,8 +10,8 @@ constexpr double kBone_N_per_mm = 40.0;
 // Pre-sliding stiffness of the tissue around the needle, per metre in tissue: sets how far
 // the tissue is dragged along (stick) before it slips.
 constexpr double kBristle_N_per_mm_per_m = 40.0;
-constexpr double kPreEventDepth = 0.6;  // fraction of the puncture depth
-constexpr double kPreEventDecay_mm = 0.4;
+// Run-to-run scatter of the capsule's stiffness at one site (relative).
+constexpr double kSiteStiffnessSd = 0.01;
 constexpr double kBand_m_s = 0.005;
 
 double lognormalForce(std::mt19937_64& rng, double mean, double max)
@@ -32,10 +32,12 @@ double solveStiffness(const StiffnessModel& s, double force)
 }  // namespace
 
 OrganTissue::OrganTissue(const TissuePreset& preset, const RigConfig& config, std::mt19937_64& rng)
-    : p_(preset), contact_(config.surface_mm), surface_(config.surface_mm), diamond_(config.tip == Tip::Diamond)
+    : p_(preset), design_(designCapsule(preset, config.tip)), site_(CapsuleDesign::siteOf(config.seed)),
+      contact_(config.surface_mm), surface_(config.surface_mm), diamond_(config.tip == Tip::Diamond)
 {
     std::normal_distribution<double> n01(0.0, 1.0);
-    punctureDepth_ = p_.punctureDepth_mm * std::clamp(1.0 + p_.punctureDepthSd * n01(rng), 0.6, 1.4);
+    punctureDepth_ = design_.siteDepth_mm[std::size_t(site_)];
+    scale_ = std::clamp(1.0 + kSiteStiffnessSd * n01(rng), 0.95, 1.05);
     if (config.boneDepth_mm)
         bone_ = contact_ + *config.boneDepth_mm;
 
@@ -60,14 +62,7 @@ OrganTissue::OrganTissue(const TissuePreset& preset, const RigConfig& config, st
 
 double OrganTissue::capsuleForce(double x) const
 {
-    double f = p_.stiffness(x);
-    const double xPre = kPreEventDepth * punctureDepth_;
-    if (diamond_ && x > xPre) {
-        // The diamond tip's facets cut a first layer: a small drop that the curve recovers.
-        const double drop = std::min(0.08, 0.25 * p_.stiffness(xPre));
-        f -= drop * std::exp(-(x - xPre) / kPreEventDecay_mm);
-    }
-    return f;
+    return scale_ * design_.force(x, punctureDepth_);
 }
 
 double OrganTissue::step(double t, double dt, double tip, double v_mm_s, GroundTruth& truth)
@@ -88,7 +83,7 @@ double OrganTissue::step(double t, double dt, double tip, double v_mm_s, GroundT
     if (contacted_ && !punctured_) {
         const double x = tip - contact_;
         surface_ = std::max(contact_, tip);
-        if (diamond_ && !preEvent_ && x >= kPreEventDepth * punctureDepth_) {
+        if (diamond_ && !preEvent_ && x >= kPreEventFraction * punctureDepth_) {
             preEvent_ = true;
             truth.events.push_back({QStringLiteral("pre_puncture"), t, tip, capsuleForce(x)});
         }

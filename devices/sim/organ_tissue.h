@@ -5,6 +5,7 @@
 // pre-puncture event and optional bone. Positions in the world frame (mm), forces in N,
 // positive when the tissue pushes back.
 
+#include "devices/sim/capsule_design.h"
 #include "devices/sim/rig_config.h"
 #include "devices/sim/simulated_rig.h"
 
@@ -20,6 +21,9 @@ public:
     double step(double t, double dt, double tip_mm, double v_mm_s, GroundTruth& truth);
     double surface_mm() const { return surface_; }
     double plannedPunctureDepth_mm() const { return punctureDepth_; }
+    int site() const { return site_; }
+    const CapsuleDesign& design() const { return design_; }
+    double stiffnessScale() const { return scale_; }
 
 private:
     struct Structure {
@@ -29,6 +33,9 @@ private:
     };
     double capsuleForce(double x) const;
     TissuePreset p_;
+    CapsuleDesign design_;
+    int site_;
+    double scale_ = 1.0;          // this run's stiffness relative to the site's
     double contact_;              // x_s1, world mm
     double punctureDepth_;        // past contact, seeded
     std::optional<double> bone_;  // world mm

@@ -1,4 +1,6 @@
 #include "simulated_rig.h"
+
+#include "devices/sim/capsule_design.h"
 #include "core/tr.h"
 
 #include "devices/device_error.h"
@@ -38,6 +40,11 @@ SimulatedRig::World::World(const RigConfig& config, const TissuePreset& tissue)
         platform_.emplace(tissue_, c_);
     else
         organ_.emplace(tissue_, c_, rng_);
+    if (organ_ && tissue_.capsule) {
+        const CapsuleDesign& d = organ_->design();
+        truth_.capsule = CapsuleTruth{organ_->site(), organ_->plannedPunctureDepth_mm(), organ_->stiffnessScale(),
+                                      d.base, d.tent_N};
+    }
     wall0_ = std::chrono::steady_clock::now();
 }
 
@@ -381,6 +388,21 @@ QJsonObject SimulatedRig::truthJson() const
                              {QStringLiteral("Dn_N_per_m"), f.Dn_N_per_m}});
     if (config_.boneDepth_mm)
         model.insert(QStringLiteral("bone_depth_mm"), *config_.boneDepth_mm);
+    if (tissue_.capsule)
+        model.insert(QStringLiteral("mean_puncture_force_N"), tissue_.punctureForce_N);
+    if (g.capsule) {
+        // What this run's capsule was: its site, and the curve under the tenting (see
+        // capsule_design.h); a1/a2 above are the pooled values the sites reproduce together.
+        model.insert(QStringLiteral("capsule_site"),
+                     QJsonObject{{QStringLiteral("site"), g.capsule->site},
+                                 {QStringLiteral("sites"), CapsuleDesign::kSites},
+                                 {QStringLiteral("puncture_depth_mm"), g.capsule->punctureDepth_mm},
+                                 {QStringLiteral("stiffness_scale"), g.capsule->stiffnessScale},
+                                 {QStringLiteral("base_a1_N_per_mm"), g.capsule->base.a1_N_per_mm},
+                                 {QStringLiteral("base_a2_N_per_mm2"), g.capsule->base.a2_N_per_mm2},
+                                 {QStringLiteral("tent_N"), g.capsule->tent_N},
+                                 {QStringLiteral("tent_fraction"), CapsuleDesign::kTentFraction}});
+    }
 
     auto orNull = [](double t, double v) { return t < 0 ? QJsonValue() : QJsonValue(v); };
     QJsonObject out{

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace nb::devices::sim {
@@ -41,6 +42,15 @@ struct TruthEvent {
     double force_N = 0.0;      // true force at the event
 };
 
+// The capsule of an organ run: which of the specimen's sites, and its curve (capsule_design.h).
+struct CapsuleTruth {
+    int site = 0;
+    double punctureDepth_mm = 0.0;  // past contact
+    double stiffnessScale = 1.0;
+    StiffnessModel base;
+    double tent_N = 0.0;
+};
+
 struct GroundTruth {
     double contact_mm = 0.0, contact_s = -1.0;       // x_s1
     double puncture_mm = 0.0, puncture_s = -1.0;     // x_s2 (surface at puncture)
@@ -48,6 +58,7 @@ struct GroundTruth {
     double punctureForce_N = 0.0;
     std::vector<TruthEvent> events;
     std::vector<TruthPhase> phases;
+    std::optional<CapsuleTruth> capsule;
 };
 
 // Ground truth of one sample, for the truth columns of simulated runs.

@@ -20,7 +20,7 @@ struct TissuePreset {
     bool capsule = true;             // false: capsule removed (Table 3), no main puncture
     StiffnessModel stiffness;        // pre-puncture a1 x + a2 x^2, x in mm past contact
     double punctureDepth_mm = 10.0;  // mean depth past contact at puncture (Table 2)
-    double punctureDepthSd = 0.08;   // relative run-to-run scatter (seeded)
+    double punctureDepthSd = 0.08;   // relative spread of puncture depth over a specimen's sites
     double punctureForce_N = 1.0;    // Table 2's mean, for reference in the truth file
     double relaxFraction = 0.35;     // x_s3 - x_s1 = fraction * (x_s2 - x_s1) after puncture
     double relaxTime_s = 0.08;       // surface spring-back time constant

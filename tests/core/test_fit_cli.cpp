@@ -139,6 +139,40 @@ private slots:
         QCOMPARE(table.code, 0);
         QVERIFY(table.out.contains(QStringLiteral("pooled")));
     }
+    // The operator's contact and puncture labels replace the detected events, run by run.
+    void stiffnessWithLabels()
+    {
+        const auto detected = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), QStringLiteral("--json")});
+        QCOMPARE(detected.code, 0);
+        const QJsonObject d = detected.json()[QStringLiteral("runs")].toArray()[0].toObject();
+        // The synthetic needle starts at 0 mm and moves at 4 mm/s: contact (5 mm) at 1.25 s.
+        // The label is put 0.5 mm late, and the puncture label 30 ms after the peak.
+        const double punctureT = d[QStringLiteral("puncture_mm")].toDouble() / 4.0;
+        writeLabelsFile(path("ins1.labels.csv"), {{QStringLiteral("events"), QStringLiteral("contact"), 1.375, 1.375, {}},
+                                                  {QStringLiteral("events"), QStringLiteral("puncture"), punctureT + 0.03,
+                                                   punctureT + 0.03, {}}});
+        const auto r = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), path("ins2.csv"),
+                            QStringLiteral("--labels"), path("ins1.labels.csv"), QStringLiteral("--labels"),
+                            path("ins1.labels.csv"), QStringLiteral("--json")});
+        QCOMPARE(r.code, 0);
+        const QJsonObject l = r.json()[QStringLiteral("runs")].toArray()[0].toObject();
+        QVERIFY2(std::fabs(l[QStringLiteral("contact_mm")].toDouble() - 5.5) < 0.005, qPrintable(r.out));
+        QVERIFY(std::fabs(l[QStringLiteral("puncture_mm")].toDouble() - d[QStringLiteral("puncture_mm")].toDouble()) < 0.02);
+        QVERIFY(std::fabs(l[QStringLiteral("puncture_depth_mm")].toDouble() - (d[QStringLiteral("puncture_depth_mm")].toDouble() - 0.5)) < 0.3);
+        // Zeroed on the samples before the contact, as the thesis did: the synthetic offset.
+        QVERIFY(std::fabs(l[QStringLiteral("zero_offset_N")].toDouble() - 0.05) < 0.005);
+
+        writeLabelsFile(path("late.labels.csv"), {{QStringLiteral("events"), QStringLiteral("contact"), 999.0, 999.0, {}}});
+        const auto late = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), QStringLiteral("--labels"),
+                               path("late.labels.csv")});
+        QCOMPARE(late.code, 1);
+        QVERIFY2(late.err.contains(QStringLiteral("late.labels.csv")) && late.err.contains(QStringLiteral("outside the run")),
+                 qPrintable(late.err));
+        const auto count = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), path("ins2.csv"),
+                                QStringLiteral("--labels"), path("ins1.labels.csv")});
+        QCOMPARE(count.code, 2);
+        QVERIFY(count.err.contains(QStringLiteral("Usage")));
+    }
     void frictionJson()
     {
         QStringList args{QStringLiteral("fit"), QStringLiteral("friction")};

@@ -1,13 +1,16 @@
 // The simulated rig reproduces the thesis's tables when its runs are analysed with the
-// project's own fits: Table 2 (capsule stiffness, 5 seeds per liver, within 15 %) and
-// Table 5 (friction per length on the platform, mass removed, phases from the truth, 20 %).
+// project's own fits: Table 2 (capsule stiffness and puncture, 5 seeds per liver, within
+// 15 %) and Table 5 (friction per length on the platform, mass removed, phases from the truth, 20 %).
 #include "engine_fixture.h"
 
-#include "core/events.h"
 #include "core/friction_fit.h"
+#include "core/labels.h"
 #include "core/run_file.h"
-#include "core/stiffness_fit.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <cmath>
 
@@ -35,6 +38,34 @@ bool within(double value, double expected, double tolerance)
     return std::fabs(value - expected) <= tolerance * std::fabs(expected);
 }
 
+QString percent(double value, double expected)
+{
+    return QString::number(100.0 * (value - expected) / expected, 'f', 1);
+}
+
+struct Cli {
+    int code = -1;
+    QString out, err;
+};
+
+Cli cli(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(NB_EXECUTABLE), args);
+    if (!p.waitForFinished(120000))
+        qFatal("needlebench %s did not finish", qPrintable(args.join(QLatin1Char(' '))));
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, QString::fromUtf8(p.readAllStandardOutput()),
+            QString::fromUtf8(p.readAllStandardError())};
+}
+
+QJsonObject readJson(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(f.readAll()).object();
+}
+
 }  // namespace
 
 class TestSimReproduction : public QObject {
@@ -45,51 +76,76 @@ private slots:
     void table2Stiffness_data()
     {
         QTest::addColumn<QString>("tissue");
-        QTest::addColumn<int>("tip");
+        QTest::addColumn<QString>("tip");
         QTest::addColumn<double>("a1");
         QTest::addColumn<double>("a2");
         QTest::addColumn<double>("depth");
-        QTest::newRow("liver1") << "liver1" << int(Tip::Beveled) << 0.0480 << 0.0052 << 16.5732;
-        QTest::newRow("liver2") << "liver2" << int(Tip::Beveled) << 0.0020 << 0.0023 << 22.3838;
-        QTest::newRow("liver3") << "liver3" << int(Tip::Beveled) << 0.0371 << 0.0107 << 8.9458;
-        QTest::newRow("liver5") << "liver5" << int(Tip::Diamond) << 0.0204 << 0.0008 << 10.4022;
-        QTest::newRow("liver7") << "liver7" << int(Tip::Diamond) << 0.0042 << 0.0133 << 8.0068;
+        QTest::addColumn<double>("force");
+        QTest::newRow("liver1") << "liver1" << "beveled" << 0.0480 << 0.0052 << 16.5732 << 2.3888;
+        QTest::newRow("liver2") << "liver2" << "beveled" << 0.0020 << 0.0023 << 22.3838 << 1.2597;
+        QTest::newRow("liver3") << "liver3" << "beveled" << 0.0371 << 0.0107 << 8.9458 << 1.4370;
+        QTest::newRow("liver5") << "liver5" << "diamond" << 0.0204 << 0.0008 << 10.4022 << 0.5352;
+        QTest::newRow("liver7") << "liver7" << "diamond" << 0.0042 << 0.0133 << 8.0068 << 1.1283;
     }
+    // Five insertions per liver through the real executables, as a user's script would run
+    // them: `needlebench simulate`, then `needlebench fit stiffness --json`. Table 2's
+    // positions are relative to the liver surface, which the thesis knew; here the operator's
+    // contact label comes from the simulation's truth (the contact they would mark on the
+    // video), and the fit must then give a1, a2, the mean puncture depth and force within 15 %.
+    // The same runs fitted with the detected contact alone must land within 15 % too, except
+    // a1 of liver 7 and liver 2, whose linear term carries 4 % of the force and is decided by
+    // where the contact is put to a few hundredths of a millimetre.
     void table2Stiffness()
     {
         QFETCH(QString, tissue);
-        QFETCH(int, tip);
+        QFETCH(QString, tip);
         QFETCH(double, a1);
         QFETCH(double, a2);
         QFETCH(double, depth);
-        std::vector<nb::StiffnessSegment> segments;
-        double depthSum = 0.0;
-        for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-            RigConfig rig = nbtest::fastRig(tissue, static_cast<Tip>(tip));
-            rig.seed = seed;
-            RunPlan plan;
-            plan.linear = {4.0, 45.0};
-            const nb::Run run = record(rig, plan, dir_.filePath(QStringLiteral("%1_%2.csv").arg(tissue).arg(seed)));
-            const nb::InsertionEvents ev = nb::detectEvents(run);
-            depthSum += ev.punctureDepth_mm();
-            segments.push_back(nb::stiffnessSegment(run, ev));
+        QFETCH(double, force);
+        QStringList runs, labelArgs;
+        for (int seed = 1; seed <= 5; ++seed) {
+            const QString base = dir_.filePath(QStringLiteral("%1_%2").arg(tissue).arg(seed));
+            const Cli sim = cli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+                                 QStringLiteral("--tissue"), tissue, QStringLiteral("--tip"), tip, QStringLiteral("--seed"),
+                                 QString::number(seed), QStringLiteral("--truth"), base + QStringLiteral(".truth.json"),
+                                 QStringLiteral("--out"), base + QStringLiteral(".csv")});
+            QVERIFY2(sim.code == 0, qPrintable(sim.err));
+            const QJsonObject truth = readJson(base + QStringLiteral(".truth.json"));
+            QVERIFY(truth.value(QStringLiteral("contact_s")).isDouble());
+            const double t = truth.value(QStringLiteral("contact_s")).toDouble();
+            nb::writeLabelsFile(base + QStringLiteral(".labels.csv"),
+                                {{QStringLiteral("events"), QStringLiteral("contact"), t, t, QString()}});
+            runs << base + QStringLiteral(".csv");
+            labelArgs << QStringLiteral("--labels") << base + QStringLiteral(".labels.csv");
         }
-        const nb::StiffnessSummary s = nb::fitStiffnessRuns(segments);
-        const nb::StiffnessModel& m = s.pooled.quadratic.model;
-        const QString got = QStringLiteral("a1 %1 a2 %2 depth %3").arg(m.a1_N_per_mm).arg(m.a2_N_per_mm2).arg(depthSum / 5);
-        qInfo("%s: %s", qPrintable(tissue), qPrintable(got));
-        // The fitted force over the loaded half of the range matches Table 2's within 15 %,
-        // and each coefficient does where its term carries at least a third of the force at
-        // puncture (a term that carries little is poorly determined by any fit: a1 of
-        // livers 2 and 7, a2 of liver 5).
-        for (double x : {0.5 * depth, 0.75 * depth, depth})
-            QVERIFY2(within(m(x), a1 * x + a2 * x * x, 0.15), qPrintable(got));
-        const double total = a1 * depth + a2 * depth * depth;
-        if (a1 * depth >= total / 3)
-            QVERIFY2(within(m.a1_N_per_mm, a1, 0.15), qPrintable(got));
-        if (a2 * depth * depth >= total / 3)
-            QVERIFY2(within(m.a2_N_per_mm2, a2, 0.15), qPrintable(got));
-        QVERIFY2(within(depthSum / 5, depth, 0.15), qPrintable(got));
+        for (const bool labelled : {true, false}) {
+            const Cli fit = cli(QStringList{QStringLiteral("fit"), QStringLiteral("stiffness"), QStringLiteral("--json")} + runs +
+                                (labelled ? labelArgs : QStringList()));
+            QVERIFY2(fit.code == 0, qPrintable(fit.err));
+            const QJsonObject o = QJsonDocument::fromJson(fit.out.toUtf8()).object();
+            const QJsonObject pooled = o.value(QStringLiteral("pooled")).toObject();
+            const double fa1 = pooled.value(QStringLiteral("a1_N_per_mm")).toDouble();
+            const double fa2 = pooled.value(QStringLiteral("a2_N_per_mm2")).toDouble();
+            double depthSum = 0.0, forceSum = 0.0;
+            const QJsonArray perRun = o.value(QStringLiteral("runs")).toArray();
+            QCOMPARE(perRun.size(), 5);
+            for (const QJsonValue& r : perRun) {
+                depthSum += r.toObject().value(QStringLiteral("puncture_depth_mm")).toDouble();
+                forceSum += r.toObject().value(QStringLiteral("puncture_force_N")).toDouble();
+            }
+            const QString got = QStringLiteral("%1 contact: a1 %2 (%3 %) a2 %4 (%5 %) depth %6 (%7 %) force %8 (%9 %)")
+                                    .arg(labelled ? QStringLiteral("labelled") : QStringLiteral("detected"))
+                                    .arg(fa1).arg(percent(fa1, a1)).arg(fa2).arg(percent(fa2, a2))
+                                    .arg(depthSum / 5).arg(percent(depthSum / 5, depth))
+                                    .arg(forceSum / 5).arg(percent(forceSum / 5, force));
+            qInfo("%s %s", qPrintable(tissue), qPrintable(got));
+            if (labelled || a1 * depth >= 0.1 * (a1 * depth + a2 * depth * depth))
+                QVERIFY2(within(fa1, a1, 0.15), qPrintable(got));
+            QVERIFY2(within(fa2, a2, 0.15), qPrintable(got));
+            QVERIFY2(within(depthSum / 5, depth, 0.15), qPrintable(got));
+            QVERIFY2(within(forceSum / 5, force, 0.15), qPrintable(got));
+        }
     }
 
     void table5Friction()
