@@ -1,6 +1,7 @@
 // Sustained acquisition with recording on the real-time simulated rig (1 kHz and 10 kHz by
 // default): samples vs expected, drops, arrival jitter, CPU of the acquisition and recorder
-// threads; and the simulated rig's as-fast-as-possible speed. Prints figures, asserts nothing.
+// threads; the simulated rig's as-fast-as-possible speed, and what an idle engine on it
+// costs. Prints figures, asserts nothing.
 //
 //   bench_acquisition [--duration-s 60] [--rates 1000,10000] [--out-dir DIR]
 
@@ -188,6 +189,35 @@ void asFastAsPossible(double simSeconds)
     std::fflush(stdout);
 }
 
+void idleAsFastAsPossible(double wall_s)
+{
+    // An engine on the as-fast-as-possible rig, ready but with nothing to do (as between the
+    // runs of a script): what it costs while it waits for the next command.
+    sim::RigConfig rig;
+    rig.realtime = false;
+    EngineConfig cfg;
+    cfg.rateHz = 500.0;
+    cfg.realtimeScheduling = false;
+    cfg.liveView = false;
+    AcquisitionEngine engine(makeSimulatedDevices(rig), cfg);
+    engine.start();
+    engine.enableStage(true);
+    engine.biasSensor();
+    engine.zeroStage();
+    while (!(engine.status().biased && engine.status().zeroed))
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const double sim0 = engine.status().deviceTime_s;
+    const double cpu0 = threadCpu_s(engine.acquisitionThreadId());
+    const auto t0 = Clock::now();
+    std::this_thread::sleep_for(std::chrono::duration<double>(wall_s));
+    const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double cpu = threadCpu_s(engine.acquisitionThreadId()) - cpu0;
+    std::printf("as-fast-as-possible engine, idle for %.1f s: acquisition thread %.1f %% of one core, simulated clock "
+                "advanced %.2f s\n",
+                wall, 100.0 * cpu / wall, engine.status().deviceTime_s - sim0);
+    std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -215,5 +245,6 @@ int main(int argc, char** argv)
     for (double r : rates)
         sustained(r, duration, dir);
     asFastAsPossible(std::min(duration, 60.0));
+    idleAsFastAsPossible(std::min(duration, 5.0));
     return 0;
 }

@@ -18,6 +18,7 @@ namespace nb::devices {
 namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kReadTimeout = std::chrono::milliseconds(20);
+constexpr auto kIdleWait = std::chrono::milliseconds(20);
 constexpr double kSensorRetry_s = 1.0;
 constexpr double kStageFaultPoll_s = 0.5;
 
@@ -120,7 +121,11 @@ void AcquisitionEngine::shutdown()
 {
     if (!thread_.joinable())
         return;
-    quit_ = true;
+    {
+        std::lock_guard lock(mutex_);  // so that an idle wait cannot miss it
+        quit_ = true;
+    }
+    wake_.notify_all();
     thread_.join();
 }
 
@@ -132,8 +137,11 @@ EngineStatus AcquisitionEngine::status() const
 
 void AcquisitionEngine::post(std::function<void()> command)
 {
-    std::lock_guard lock(mutex_);
-    commands_.push_back(std::move(command));
+    {
+        std::lock_guard lock(mutex_);
+        commands_.push_back(std::move(command));
+    }
+    wake_.notify_one();
 }
 
 // ---- commands (run on the engine thread) ------------------------------------------------
@@ -617,6 +625,13 @@ void AcquisitionEngine::threadMain()
                 status_ = st;
             }
             emit statusChanged(st);
+        }
+
+        // 7. A simulated rig running as fast as possible has nothing to hurry through while
+        // nothing happens: wait for the operator instead of racing its clock (and a core) ahead.
+        if (!hostPaced && s.sensorOk && !s.runOpen && !s.biasing && !s.stage.moving) {
+            std::unique_lock lock(mutex_);
+            wake_.wait_for(lock, kIdleWait, [&] { return !commands_.empty() || quit_.load(); });
         }
     }
 

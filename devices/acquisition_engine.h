@@ -16,6 +16,7 @@
 #include <QString>
 #include <atomic>
 #include <cstdint>
+#include <condition_variable>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -137,6 +138,7 @@ private:
     std::atomic<int> tid_{0};
     mutable std::mutex mutex_;      // guards commands_, status_
     std::deque<std::function<void()>> commands_;
+    std::condition_variable wake_;  // a command arrived, or quit
     EngineStatus status_;
 };
 

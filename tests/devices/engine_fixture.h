@@ -29,6 +29,13 @@ inline std::unique_ptr<nb::devices::AcquisitionEngine> makeEngine(const nb::devi
     return e;
 }
 
+// QSignalSpy::wait() counts only what arrives while it waits, and the engine thread may
+// have emitted before the test gets there.
+inline bool waitFor(QSignalSpy& spy, int timeout_ms = 5000)
+{
+    return !spy.isEmpty() || spy.wait(timeout_ms);
+}
+
 inline nb::devices::sim::RigConfig fastRig(const QString& tissue, nb::devices::sim::Tip tip)
 {
     nb::devices::sim::RigConfig c;

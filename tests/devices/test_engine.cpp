@@ -59,6 +59,24 @@ class TestEngine : public QObject {
     QString path(const QString& name) const { return dir_.filePath(name); }
 
 private slots:
+    // As fast as possible means as fast as there is something to simulate: a ready engine with
+    // nothing to do waits for the operator instead of racing the simulated clock (and a core)
+    // ahead, and still answers the next command at once.
+    void idleFastEngineWaitsForCommands()
+    {
+        auto e = makeEngine(fastRig(QStringLiteral("liver1"), Tip::Beveled));
+        QVERIFY(nbtest::makeReady(*e));
+        const double t0 = e->status().deviceTime_s;
+        QTest::qWait(500);
+        const double idle = e->status().deviceTime_s - t0;
+        // Racing, the rig simulates ~1000 s per wall second; waiting, about 0.05 s.
+        QVERIFY2(idle < 25.0, qPrintable(QStringLiteral("simulated %1 s while idle").arg(idle)));
+        QSignalSpy ended(e.get(), &AcquisitionEngine::runEnded);
+        e->startRun(linearPlan(path(QStringLiteral("after_idle.csv"))));
+        const RunSummary s = waitForEnd(ended);
+        QCOMPARE(s.endReason, QStringLiteral("completed"));
+    }
+
     void startRunRefusedUntilEnabledBiasedZeroed()
     {
         auto e = makeEngine(fastRig(QStringLiteral("liver1"), Tip::Beveled));
@@ -67,16 +85,16 @@ private slots:
         const RunPlan plan = linearPlan(path(QStringLiteral("refused.csv")));
 
         e->startRun(plan);
-        QVERIFY(refused.wait(5000));
+        QVERIFY(nbtest::waitFor(refused, 5000));
         QVERIFY(refused.takeFirst().at(0).toString().contains(QStringLiteral("enable the stage")));
         e->enableStage(true);
         e->startRun(plan);
-        QVERIFY(refused.wait(5000));
+        QVERIFY(nbtest::waitFor(refused, 5000));
         QVERIFY(refused.takeFirst().at(0).toString().contains(QStringLiteral("bias")));
         e->biasSensor();
         QTRY_VERIFY_WITH_TIMEOUT(e->status().biased, 10000);
         e->startRun(plan);
-        QVERIFY(refused.wait(5000));
+        QVERIFY(nbtest::waitFor(refused, 5000));
         QVERIFY(refused.takeFirst().at(0).toString().contains(QStringLiteral("zero")));
         QCOMPARE(started.count(), 0);
         QVERIFY(!QFile::exists(plan.outPath));
@@ -84,7 +102,7 @@ private slots:
         e->zeroStage();
         QSignalSpy ended(e.get(), &AcquisitionEngine::runEnded);
         e->startRun(plan);
-        QVERIFY(started.wait(5000));
+        QVERIFY(nbtest::waitFor(started, 5000));
         const RunSummary s = waitForEnd(ended);
         QCOMPARE(s.endReason, QStringLiteral("completed"));
         QCOMPARE(s.dropped, std::uint64_t{0});
@@ -132,7 +150,7 @@ private slots:
                 Qt::DirectConnection);
         e->startRun(plan);
         e->startRun(linearPlan(path(QStringLiteral("second.csv"))));
-        QVERIFY(refused.wait(5000));
+        QVERIFY(nbtest::waitFor(refused, 5000));
         QVERIFY(refused.takeFirst().at(0).toString().contains(QStringLiteral("already being recorded")));
         QTRY_VERIFY_WITH_TIMEOUT(stopAt.load() > 1e8 && e->status().position_mm > 10.0, 20000);
         QTRY_VERIFY_WITH_TIMEOUT(!e->status().moving, 10000);
@@ -264,7 +282,7 @@ private slots:
         // A new run is refused while the fault stands.
         QSignalSpy refused(e.get(), &AcquisitionEngine::runRefused);
         e->startRun(linearPlan(path(QStringLiteral("after.csv"))));
-        QVERIFY(refused.wait(5000));
+        QVERIFY(nbtest::waitFor(refused, 5000));
         QVERIFY(refused.takeFirst().at(0).toString().contains(QStringLiteral("faulted")));
     }
 };

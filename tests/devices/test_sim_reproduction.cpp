@@ -28,7 +28,7 @@ nb::Run record(const RigConfig& rig, const RunPlan& planIn, const QString& path)
     RunPlan plan = planIn;
     plan.outPath = path;
     e->startRun(plan);
-    if (!ended.wait(120000))
+    if (!nbtest::waitFor(ended, 120000))
         qFatal("run did not end");
     return nb::readRunFile(path).run;
 }
