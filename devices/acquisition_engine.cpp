@@ -581,7 +581,9 @@ void AcquisitionEngine::threadMain()
             } else if (s.runMotion) {
                 if (s.stage.moving)
                     s.sawMoving = true;
-                else if (s.sawMoving) {
+                else if (s.sawMoving && !batch.empty()) {
+                    // Only with samples in hand: the read-back that shows the stop is put on
+                    // the last of them, so the run ends at the position where the axis did.
                     s.runMotion = false;
                     if (s.endWhenDone)
                         finishRun(QStringLiteral("completed"), {});
