@@ -1790,7 +1790,7 @@ Befehle:
         <location filename="../app/cmd_events.cpp" line="+39"/>
         <location filename="../app/cmd_fit.cpp" line="+46"/>
         <location line="+49"/>
-        <location line="+99"/>
+        <location line="+127"/>
         <location filename="../app/cmd_sync.cpp" line="+27"/>
         <location filename="../app/cmd_video.cpp" line="+45"/>
         <location line="+36"/>
@@ -2097,7 +2097,7 @@ Befehle:
         <translation>%1 Läufe aus %2 als %3 exportiert: %4 Dateien</translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="-146"/>
+        <location filename="../app/cmd_fit.cpp" line="-174"/>
         <source>calibration points: columns mass_g, voltage_V</source>
         <translation>Kalibrierpunkte: Spalten mass_g, voltage_V</translation>
     </message>
@@ -2122,11 +2122,30 @@ Befehle:
     </message>
     <message>
         <location line="+11"/>
+        <source>a run&apos;s labels (track,label,start_s,end_s,comment); its &apos;contact&apos; and &apos;puncture&apos; points replace the detected ones. Give it once per run, in the runs&apos; order.</source>
+        <translation>die Markierungen eines Laufs (track,label,start_s,end_s,comment); ihre Punkte „contact“ und „puncture“ ersetzen die erkannten. Einmal je Lauf angeben, in der Reihenfolge der Läufe.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>constant-velocity insertion runs</source>
         <translation>Einstichläufe mit konstanter Geschwindigkeit</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+8"/>
+        <source>%1 label files for %2 runs; give --labels once per run, in the runs&apos; order
+</source>
+        <translation>%1 Markierungsdateien für %2 Läufe; --labels einmal je Lauf angeben, in der Reihenfolge der Läufe
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Usage: needlebench fit stiffness RUN.csv... [--labels FILE]... [--json]
+</source>
+        <translation>Aufruf: needlebench fit stiffness LAUF.csv... [--labels DATEI]... [--json]
+</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation>Steifigkeit f = a1*x + a2*x^2, x = Tiefe nach dem Kontakt [mm]
@@ -2695,7 +2714,7 @@ Befehle:
 <context>
     <name>nb::TrCore</name>
     <message>
-        <location filename="../core/export/dataset.cpp" line="+29"/>
+        <location filename="../core/export/dataset.cpp" line="+14"/>
         <source>time since the start of the recording</source>
         <translation>Zeit seit Beginn der Aufzeichnung</translation>
     </message>
@@ -3167,7 +3186,7 @@ Befehle:
     </message>
     <message>
         <location line="+47"/>
-        <location filename="../devices/sim/simulated_rig.cpp" line="+45"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+52"/>
         <source>simulated load cell</source>
         <translation>simulierte Kraftmessdose</translation>
     </message>
@@ -3882,12 +3901,12 @@ Befehle:
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+89"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+90"/>
         <source>nominal (device)</source>
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+70"/>
         <source>stage enabled; fault cleared</source>
         <translation>Achse eingeschaltet; Fehler zurückgesetzt</translation>
     </message>
@@ -4115,7 +4134,7 @@ Befehle:
         <translation>leere Datei (erwartet: Kopfzeile mass_g,voltage_V)</translation>
     </message>
     <message>
-        <location filename="../core/events.cpp" line="+213"/>
+        <location filename="../core/events.cpp" line="+218"/>
         <source>too few samples before the puncture (%1) to fit the contact</source>
         <translation>zu wenige Messwerte vor dem Durchstich (%1), um den Kontakt zu fitten</translation>
     </message>
@@ -4146,9 +4165,24 @@ Befehle:
         <translation>die Nadel bewegt sich nicht vorwärts</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+53"/>
         <source>no puncture: the force never rises from contact and then drops sharply (by %1 N or %2 % of its peak)</source>
         <translation>kein Durchstich: die Kraft steigt nach dem Kontakt nie an und fällt dann steil ab (um %1 N oder %2 % ihres Maximums)</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>the contact label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation>die Kontakt-Markierung bei %1 s liegt außerhalb des Laufs (%2 bis %3 s)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>the puncture label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation>die Durchstich-Markierung bei %1 s liegt außerhalb des Laufs (%2 bis %3 s)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the puncture (%1 mm) is not past the contact (%2 mm)</source>
+        <translation>der Durchstich (%1 mm) liegt nicht hinter dem Kontakt (%2 mm)</translation>
     </message>
     <message>
         <location filename="../core/friction_fit.cpp" line="-8"/>

@@ -1777,7 +1777,7 @@ Commands:
         <location filename="../app/cmd_events.cpp" line="+39"/>
         <location filename="../app/cmd_fit.cpp" line="+46"/>
         <location line="+49"/>
-        <location line="+99"/>
+        <location line="+127"/>
         <location filename="../app/cmd_sync.cpp" line="+27"/>
         <location filename="../app/cmd_video.cpp" line="+45"/>
         <location line="+36"/>
@@ -2079,7 +2079,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="-146"/>
+        <location filename="../app/cmd_fit.cpp" line="-174"/>
         <source>calibration points: columns mass_g, voltage_V</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2102,11 +2102,28 @@ Commands:
     </message>
     <message>
         <location line="+11"/>
+        <source>a run&apos;s labels (track,label,start_s,end_s,comment); its &apos;contact&apos; and &apos;puncture&apos; points replace the detected ones. Give it once per run, in the runs&apos; order.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>constant-velocity insertion runs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+8"/>
+        <source>%1 label files for %2 runs; give --labels once per run, in the runs&apos; order
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Usage: needlebench fit stiffness RUN.csv... [--labels FILE]... [--json]
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation type="unfinished"></translation>
@@ -2637,7 +2654,7 @@ Commands:
 <context>
     <name>nb::TrCore</name>
     <message>
-        <location filename="../core/export/dataset.cpp" line="+29"/>
+        <location filename="../core/export/dataset.cpp" line="+14"/>
         <source>time since the start of the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3109,7 +3126,7 @@ Commands:
     </message>
     <message>
         <location line="+47"/>
-        <location filename="../devices/sim/simulated_rig.cpp" line="+45"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+52"/>
         <source>simulated load cell</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3824,12 +3841,12 @@ Commands:
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+89"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+90"/>
         <source>nominal (device)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+70"/>
         <source>stage enabled; fault cleared</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4057,7 +4074,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/events.cpp" line="+213"/>
+        <location filename="../core/events.cpp" line="+218"/>
         <source>too few samples before the puncture (%1) to fit the contact</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4088,8 +4105,23 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+53"/>
         <source>no puncture: the force never rises from contact and then drops sharply (by %1 N or %2 % of its peak)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>the contact label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>the puncture label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the puncture (%1 mm) is not past the contact (%2 mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
