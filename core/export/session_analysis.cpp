@@ -22,32 +22,6 @@ double median(std::vector<double> v)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// A labelled point event moves the detected one onto the nearest sample.
-void applyEventLabel(const Run& run, const Labels& labels, const QString& name, double zeroOffset, RunEvent& event)
-{
-    for (const Label& l : labels) {
-        if (l.label != name || !l.isPoint() || run.size() == 0)
-            continue;
-        const auto& t = run.time_s;
-        auto it = std::lower_bound(t.begin(), t.end(), l.start_s);
-        if (it == t.end() || (it != t.begin() && l.start_s - *(it - 1) < *it - l.start_s))
-            --it;
-        std::size_t i = std::size_t(it - t.begin());
-        if (name == QLatin1String("puncture")) {
-            // A mark lands a frame or two off the peak (video, reaction): the puncture is the
-            // force peak within 50 ms of it, not whatever sample is nearest.
-            for (std::size_t j = i; j > 0 && t[j - 1] >= l.start_s - 0.05; --j)
-                if (run.force_N[j - 1] > run.force_N[i])
-                    i = j - 1;
-            for (std::size_t j = i + 1; j < t.size() && t[j] <= l.start_s + 0.05; ++j)
-                if (run.force_N[j] > run.force_N[i])
-                    i = j;
-        }
-        event = {i, t[i], run.position_mm[i], run.force_N[i] - zeroOffset};
-        return;
-    }
-}
-
 bool hasPhaseLabels(const Labels& labels)
 {
     for (const Label& l : labels)
@@ -75,8 +49,7 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a)
         s.tip = r.run.meta(QStringLiteral("tip")).value_or(QString());
         try {
             s.events = detectEvents(r.run);
-            applyEventLabel(r.run, r.labels, QStringLiteral("contact"), s.events.zeroOffset_N, s.events.contact);
-            applyEventLabel(r.run, r.labels, QStringLiteral("puncture"), s.events.zeroOffset_N, s.events.puncture);
+            applyEventLabels(s.events, r.run, r.labels);
             s.segment = stiffnessSegment(r.run, s.events);
             s.fit = fitStiffness(s.segment);
         } catch (const FitError& e) {
