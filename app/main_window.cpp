@@ -12,6 +12,7 @@
 #include "devices/sim/simulated_rig.h"
 #include "widgets/calibration_wizard.h"
 #include "widgets/control_panel.h"
+#include "widgets/device_dialog.h"
 #include "widgets/force_plots.h"
 #include "widgets/analysis/analysis_workspace.h"
 #include "widgets/review_workspace.h"
@@ -62,25 +63,9 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(tr("NeedleBench"));
 
-    devices::sim::RigConfig rig;
-    rig.realtime = options_.realtime;
-    devices::DeviceSet devices;
     QString deviceProblem;
-    if (options_.devicesFromSettings) {
-        try {
-            devices = devices::openDevices(devices::specFromSettings(QSettings()), rig);
-        } catch (const devices::DeviceError& e) {
-            // Never leave the operator without a window: say what failed and use the simulated rig.
-            deviceProblem = e.message();
-        }
-    }
-    if (!devices.stage || !devices.sensor)
-        devices = devices::makeSimulatedDevices(rig);
-    nominalSensor_ = devices.description;
-    devices::EngineConfig config;
-    config.rateHz = options_.rateHz;
-    config.realtimeScheduling = options_.realtime;
-    engine_ = std::make_unique<devices::AcquisitionEngine>(std::move(devices), config);
+    engine_ = makeEngine(options_.devicesFromSettings ? std::optional(devices::specFromSettings(QSettings())) : std::nullopt,
+                         &deviceProblem);
 
     // Record live, review video against the force, analyse the session: one window, three tabs.
     plots_ = new ForcePlots(this);
@@ -127,11 +112,11 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     estop->setContext(Qt::ApplicationShortcut);
     connect(estop, &QShortcut::activated, panel_, &ControlPanel::emergencyStopRequested);
 
-    devices::AcquisitionEngine* e = engine_.get();
-    connect(panel_, &ControlPanel::enableRequested, e, &devices::AcquisitionEngine::enableStage);
-    connect(panel_, &ControlPanel::biasRequested, e, &devices::AcquisitionEngine::biasSensor);
-    connect(panel_, &ControlPanel::zeroRequested, e, &devices::AcquisitionEngine::zeroStage);
-    connect(panel_, &ControlPanel::forceLimitChanged, e, &devices::AcquisitionEngine::setForceLimit);
+    // Through engine_ each time: the operator may switch devices, and so the engine.
+    connect(panel_, &ControlPanel::enableRequested, this, [this](bool on) { engine_->enableStage(on); });
+    connect(panel_, &ControlPanel::biasRequested, this, [this] { engine_->biasSensor(); });
+    connect(panel_, &ControlPanel::zeroRequested, this, [this] { engine_->zeroStage(); });
+    connect(panel_, &ControlPanel::forceLimitChanged, this, [this](double limit) { engine_->setForceLimit(limit); });
     connect(panel_, &ControlPanel::forceLimitChanged, plots_, &ForcePlots::setForceLimit);
     connect(panel_, &ControlPanel::startRequested, this, &MainWindow::startRun);
     connect(panel_, &ControlPanel::withdrawRequested, this, [this](double v) {
@@ -142,7 +127,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
         engine_->stopMotion();
         plots_->addEvent(lastT_ - runT0_, tr("stop"));
     });
-    connect(panel_, &ControlPanel::endRunRequested, e, &devices::AcquisitionEngine::endRun);
+    connect(panel_, &ControlPanel::endRunRequested, this, [this] { engine_->endRun(); });
     connect(panel_, &ControlPanel::emergencyStopRequested, this, [this] {
         engine_->emergencyStop();
         plots_->addEvent(lastT_ - runT0_, tr("E-STOP"));
@@ -150,28 +135,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     });
     connect(panel_, &ControlPanel::calibrateRequested, this, &MainWindow::openCalibrationWizard);
 
-    connect(e, &devices::AcquisitionEngine::statusChanged, this, &MainWindow::onStatus);
-    connect(e, &devices::AcquisitionEngine::runStarted, this, [this](const QString& path) {
-        recording_ = true;
-        lastRunPath_ = path;
-        plots_->clear();
-        runT0_ = lastT_;
-        sessionView_->setBusyPath(path);
-        showMessage(tr("Recording %1").arg(QDir::toNativeSeparators(path)));
-        sessionView_->refresh();
-    });
-    connect(e, &devices::AcquisitionEngine::runEnded, this, &MainWindow::onRunEnded);
-    connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) { showMessage(why, true); });
-    connect(e, &devices::AcquisitionEngine::faultOccurred, this, [this](const QString& device, const QString& reason) {
-        showMessage(tr("Fault: %1: %2").arg(device, reason), true);
-        plots_->addEvent(lastT_ - runT0_, tr("fault"));
-    });
-    connect(e, &devices::AcquisitionEngine::forceLimitTripped, this, [this](double force, double position) {
-        showMessage(tr("Force limit tripped at %1 N, %2 mm: the stage was stopped").arg(force, 0, 'f', 2).arg(position, 0, 'f', 2), true);
-        plots_->addEvent(lastT_ - runT0_, tr("force limit"));
-    });
-    connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
-
+    attachEngine();
     buildMenus();
 
     QSettings settings;
@@ -207,6 +171,96 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     engine_->start();
 }
 
+std::unique_ptr<devices::AcquisitionEngine> MainWindow::makeEngine(const std::optional<devices::DeviceSpec>& spec,
+                                                                   QString* problem, std::optional<double> forceLimit_N)
+{
+    devices::sim::RigConfig rig;
+    rig.realtime = options_.realtime;
+    devices::DeviceSet devices;
+    if (spec) {
+        try {
+            devices = devices::openDevices(*spec, rig);
+        } catch (const devices::DeviceError& e) {
+            // Never leave the operator without a rig: say what failed and use the simulated one.
+            *problem = e.message();
+        }
+    }
+    if (!devices.stage || !devices.sensor)
+        devices = devices::makeSimulatedDevices(rig);
+    nominalSensor_ = devices.description;
+    devices::EngineConfig config;
+    config.rateHz = options_.rateHz;
+    config.realtimeScheduling = options_.realtime;
+    if (forceLimit_N)
+        config.forceLimit_N = *forceLimit_N;
+    return std::make_unique<devices::AcquisitionEngine>(std::move(devices), config);
+}
+
+void MainWindow::attachEngine()
+{
+    devices::AcquisitionEngine* e = engine_.get();
+    connect(e, &devices::AcquisitionEngine::statusChanged, this, &MainWindow::onStatus);
+    connect(e, &devices::AcquisitionEngine::runStarted, this, [this](const QString& path) {
+        recording_ = true;
+        lastRunPath_ = path;
+        plots_->clear();
+        runT0_ = lastT_;
+        sessionView_->setBusyPath(path);
+        showMessage(tr("Recording %1").arg(QDir::toNativeSeparators(path)));
+        sessionView_->refresh();
+    });
+    connect(e, &devices::AcquisitionEngine::runEnded, this, &MainWindow::onRunEnded);
+    connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) { showMessage(why, true); });
+    connect(e, &devices::AcquisitionEngine::faultOccurred, this, [this](const QString& device, const QString& reason) {
+        showMessage(tr("Fault: %1: %2").arg(device, reason), true);
+        plots_->addEvent(lastT_ - runT0_, tr("fault"));
+    });
+    connect(e, &devices::AcquisitionEngine::forceLimitTripped, this, [this](double force, double position) {
+        showMessage(tr("Force limit tripped at %1 N, %2 mm: the stage was stopped").arg(force, 0, 'f', 2).arg(position, 0, 'f', 2), true);
+        plots_->addEvent(lastT_ - runT0_, tr("force limit"));
+    });
+    connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+
+}
+
+void MainWindow::chooseDevices()
+{
+    DeviceDialog dialog(devices::specFromSettings(QSettings()), [] { return devices::listDevices(); }, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    {
+        QSettings settings;
+        devices::saveSpec(settings, dialog.spec());
+    }
+    switchDevices(dialog.spec());
+}
+
+bool MainWindow::switchDevices(const devices::DeviceSpec& spec)
+{
+    if (engine_->status().recording) {
+        showMessage(tr("Devices not changed: end the run first."), true);
+        return false;
+    }
+    if (wizard_) {
+        showMessage(tr("Devices not changed: close the calibration wizard first."), true);
+        return false;
+    }
+    engine_->shutdown();  // stops the axis and the stream, and lets go of the hardware
+    QString problem;
+    engine_ = makeEngine(spec, &problem, panel_->forceLimit());
+    attachEngine();
+    if (session_)
+        if (const auto cal = session_->activeCalibration())
+            engine_->setCalibration(cal->fit.slope_V_per_g, cal->name);
+    engine_->start();
+    if (!problem.isEmpty()) {
+        showMessage(tr("Could not open the chosen devices (%1); using the simulated rig.").arg(problem), true);
+        return false;
+    }
+    showMessage(tr("Devices: %1").arg(engine_->deviceDescription()));
+    return true;
+}
+
 MainWindow::~MainWindow()
 {
     drainTimer_->stop();
@@ -222,6 +276,9 @@ void MainWindow::buildMenus()
     sessionMenu->addAction(tr("&Open session…"), QKeySequence::Open, this, &MainWindow::openSessionDialog);
     sessionMenu->addSeparator();
     sessionMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    auto* devicesMenu = menuBar()->addMenu(tr("&Devices"));
+    devicesMenu->addAction(tr("&Choose devices…"), this, &MainWindow::chooseDevices);
 
     auto* calibration = menuBar()->addMenu(tr("&Calibration"));
     calibration->addAction(tr("&Calibrate force sensor…"), this, &MainWindow::openCalibrationWizard);

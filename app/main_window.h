@@ -17,6 +17,7 @@ namespace nb {
 
 namespace devices {
 class AcquisitionEngine;
+struct DeviceSpec;
 struct EngineStatus;
 struct RunSummary;
 struct Sample;
@@ -70,12 +71,23 @@ public:
     // The non-modal calibration wizard, fed from the live stream.
     CalibrationWizard* openCalibrationWizard();
     void useCalibration(const StoredCalibration& calibration);
+    // Devices ▸ Choose devices…: the dialog, then switchDevices() with the choice.
+    void chooseDevices();
+    // Replaces the engine with one on `spec`'s devices (the simulated rig for any that cannot be
+    // opened, with a message). Refused while a run records or the calibration wizard is open.
+    // True when every chosen device opened.
+    bool switchDevices(const devices::DeviceSpec& spec);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
     void buildMenus();
+    // A new engine on `spec` (nullopt: the simulated rig); `problem` says why it fell back.
+    std::unique_ptr<devices::AcquisitionEngine> makeEngine(const std::optional<devices::DeviceSpec>& spec, QString* problem,
+                                                           std::optional<double> forceLimit_N = std::nullopt);
+    // Connects the engine's signals to the window and hands it the settings the window holds.
+    void attachEngine();
     void drain();
     void onStatus(const devices::EngineStatus& status);
     void onRunEnded(const devices::RunSummary& summary);

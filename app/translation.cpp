@@ -23,11 +23,12 @@ void setPreferredLanguage(const QString& code) { QSettings().setValue(QStringLit
 void installTranslation(QCoreApplication& app)
 {
     const QString lang = preferredLanguage();
-    if (lang == QLatin1String("en"))
-        return;
+    // English is the source language; its .qm only holds the plural forms ("1 run", "2 runs").
     auto* own = new QTranslator(&app);
     if (own->load(QStringLiteral(":/i18n/needlebench_%1.qm").arg(lang)))
         app.installTranslator(own);
+    if (lang == QLatin1String("en"))
+        return;
     auto* qt = new QTranslator(&app);
     if (qt->load(QStringLiteral("qtbase_%1").arg(lang), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         app.installTranslator(qt);

@@ -153,7 +153,7 @@ void sustained(double rateHz, double duration_s, const QString& dir)
                 static_cast<unsigned long long>(s1.latePeriods - s0.latePeriods));
     std::printf("  run file: %llu samples written, %llu dropped (%s)\n", static_cast<unsigned long long>(summary.samples),
                 static_cast<unsigned long long>(summary.dropped), qPrintable(summary.path));
-    std::printf("  arrival latency ms: p50 %.3f  p99 %.3f  max %.3f   (batch interval ms: p50 %.3f p99 %.3f max %.3f)\n",
+    std::printf("  period jitter (arrival after the device clock) ms: p50 %.3f  p99 %.3f  max %.3f   (batch interval ms: p50 %.3f p99 %.3f max %.3f)\n",
                 percentile(latency, 0.5), percentile(latency, 0.99), percentile(latency, 1.0), percentile(interval, 0.5),
                 percentile(interval, 0.99), percentile(interval, 1.0));
     std::printf("  CPU: acquisition thread %.1f %%, recorder thread %.1f %% of one core\n", 100.0 * cpuA / wall,

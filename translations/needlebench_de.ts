@@ -802,6 +802,161 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>nb::DeviceDialog</name>
+    <message>
+        <location filename="../widgets/device_dialog.cpp" line="+37"/>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>serial number, e.g. 360012345</source>
+        <translation>Seriennummer, z. B. 360012345</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Analog input (differential with the next one)</source>
+        <translation>Analogeingang (differentiell mit dem nächsten)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>×1 (±10 V)</source>
+        <translation>×1 (±10 V)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>×10 (±1 V)</source>
+        <translation>×10 (±1 V)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>×100 (±100 mV)</source>
+        <translation>×100 (±100 mV)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>×1000 (±10 mV)</source>
+        <translation>×1000 (±10 mV)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>serial port, e.g. /dev/ttyUSB0</source>
+        <translation>serielle Schnittstelle, z. B. /dev/ttyUSB0</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The axis&apos;s micro-steps per millimetre (from its data sheet)</source>
+        <translation>Mikroschritte der Achse je Millimeter (aus ihrem Datenblatt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Force sensor (DAQ)</source>
+        <translation>Kraftsensor (Messwerterfassung)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+6"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Serial number</source>
+        <translation>Seriennummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Input</source>
+        <translation>Eingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Range</source>
+        <translation>Messbereich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Insertion stage</source>
+        <translation>Einstichachse</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Port</source>
+        <translation>Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Micro-steps per mm</source>
+        <translation>Mikroschritte je mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Rescan</source>
+        <translation>&amp;Neu suchen</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Simulated rig</source>
+        <translation>Simulierter Prüfstand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LabJack U6, the first found</source>
+        <translation>LabJack U6, der erste gefundene</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Simulated stage</source>
+        <translation>Simulierte Achse</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Zaber on %1</source>
+        <translation>Zaber an %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>LabJack U6 by serial number…</source>
+        <translation>LabJack U6 nach Seriennummer…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zaber on another port…</source>
+        <translation>Zaber an anderer Schnittstelle…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Found %n LabJack U6(s)</source>
+        <translation>
+            <numerusform>%n LabJack U6 gefunden</numerusform>
+            <numerusform>%n LabJack U6 gefunden</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+0"/>
+        <source>%n serial port(s)</source>
+        <translation>
+            <numerusform>%n serielle Schnittstelle</numerusform>
+            <numerusform>%n serielle Schnittstellen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Type the U6&apos;s serial number, or choose a listed one.</source>
+        <translation>Geben Sie die Seriennummer des U6 ein oder wählen Sie einen aufgeführten.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Type the stage&apos;s serial port (zaber:PORT), or choose a listed one.</source>
+        <translation>Geben Sie die serielle Schnittstelle der Achse ein (zaber:PORT) oder wählen Sie eine aufgeführte.</translation>
+    </message>
+</context>
+<context>
     <name>nb::ForcePlots</name>
     <message>
         <location filename="../widgets/force_plots.cpp" line="+60"/>
@@ -1016,12 +1171,12 @@ Befehle:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+63"/>
+        <location filename="../app/main_window.cpp" line="+64"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+13"/>
         <source>&amp;Record</source>
         <translation>&amp;Aufnahme</translation>
     </message>
@@ -1071,7 +1226,7 @@ Befehle:
         <translation>Not-Halt</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+75"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1096,7 +1251,27 @@ Befehle:
         <translation>Kraftgrenze</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+21"/>
+        <source>Devices not changed: end the run first.</source>
+        <translation>Geräte nicht gewechselt: beenden Sie zuerst den Lauf.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Devices not changed: close the calibration wizard first.</source>
+        <translation>Geräte nicht gewechselt: schließen Sie zuerst den Kalibrierassistenten.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Could not open the chosen devices (%1); using the simulated rig.</source>
+        <translation>Die gewählten Geräte ließen sich nicht öffnen (%1); der simulierte Prüfstand wird verwendet.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Devices: %1</source>
+        <translation>Geräte: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>&amp;Session</source>
         <translation>&amp;Sitzung</translation>
     </message>
@@ -1112,6 +1287,16 @@ Befehle:
     </message>
     <message>
         <location line="+4"/>
+        <source>&amp;Devices</source>
+        <translation>&amp;Geräte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Choose devices…</source>
+        <translation>Geräte &amp;wählen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Calibration</source>
         <translation>&amp;Kalibrierung</translation>
     </message>
@@ -1288,7 +1473,7 @@ Befehle:
         <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-304"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2792,7 +2977,7 @@ Befehle:
         <translation>kann nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+84"/>
+        <location filename="../core/export/session_analysis.cpp" line="+57"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation>%1: kein Steifigkeitsfit (%2)</translation>
     </message>

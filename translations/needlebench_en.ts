@@ -790,6 +790,161 @@ Commands:
     </message>
 </context>
 <context>
+    <name>nb::DeviceDialog</name>
+    <message>
+        <location filename="../widgets/device_dialog.cpp" line="+37"/>
+        <source>Devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>serial number, e.g. 360012345</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Analog input (differential with the next one)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>×1 (±10 V)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>×10 (±1 V)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>×100 (±100 mV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>×1000 (±10 mV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>serial port, e.g. /dev/ttyUSB0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The axis&apos;s micro-steps per millimetre (from its data sheet)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Force sensor (DAQ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+6"/>
+        <source>Device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Serial number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Insertion stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Micro-steps per mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Rescan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Simulated rig</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LabJack U6, the first found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Simulated stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Zaber on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>LabJack U6 by serial number…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zaber on another port…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Found %n LabJack U6(s)</source>
+        <translation>
+            <numerusform>Found %n LabJack U6</numerusform>
+            <numerusform>Found %n LabJack U6s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+0"/>
+        <source>%n serial port(s)</source>
+        <translation>
+            <numerusform>%n serial port</numerusform>
+            <numerusform>%n serial ports</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Type the U6&apos;s serial number, or choose a listed one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Type the stage&apos;s serial port (zaber:PORT), or choose a listed one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>nb::ForcePlots</name>
     <message>
         <location filename="../widgets/force_plots.cpp" line="+60"/>
@@ -1004,12 +1159,12 @@ Commands:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+63"/>
+        <location filename="../app/main_window.cpp" line="+64"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+13"/>
         <source>&amp;Record</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1059,7 +1214,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+75"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1084,7 +1239,27 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+21"/>
+        <source>Devices not changed: end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Devices not changed: close the calibration wizard first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Could not open the chosen devices (%1); using the simulated rig.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Devices: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>&amp;Session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1100,6 +1275,16 @@ Commands:
     </message>
     <message>
         <location line="+4"/>
+        <source>&amp;Devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Choose devices…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Calibration</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1136,9 +1321,9 @@ Commands:
     <message numerus="yes">
         <location line="+13"/>
         <source>Recovered %n interrupted run(s): %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Recovered %n interrupted run: %1</numerusform>
+            <numerusform>Recovered %n interrupted runs: %1</numerusform>
         </translation>
     </message>
     <message>
@@ -1275,7 +1460,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-304"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2732,7 +2917,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+84"/>
+        <location filename="../core/export/session_analysis.cpp" line="+57"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>

@@ -11,10 +11,16 @@
 #include "devices/sim/simulated_rig.h"
 #include "widgets/calibration_wizard.h"
 #include "widgets/control_panel.h"
+#include "widgets/device_dialog.h"
 #include "widgets/force_plots.h"
 #include "widgets/session_view.h"
 
 #include <QAbstractButton>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QStatusBar>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QPushButton>
@@ -204,13 +210,17 @@ private slots:
         QTest::mouseClick(p->button(Control::StartInsertion), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving, 20000);
         QTRY_VERIFY_WITH_TIMEOUT(w.plots()->sampleCount() > 500, 20000);
+        const double beforeFault_s = w.engine()->status().runTime_s;  // recorded by now, on the device clock
         w.engine()->rig()->injectFault(nb::devices::sim::Fault::SensorSilent);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
         QCOMPARE(w.lastEndReason(), QStringLiteral("fault"));
         QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().fault.isEmpty(), 20000);
         // What was recorded is kept and readable; nothing but the E-stop invites a new run.
         const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
-        QVERIFY(r.run.size() >= 500);
+        QVERIFY2(beforeFault_s > 0.3 && r.run.size() > 0 && r.run.time_s.back() >= beforeFault_s,
+                 qPrintable(QStringLiteral("%1 samples to %2 s; %3 s recorded before the fault")
+                                .arg(r.run.size()).arg(r.run.size() ? r.run.time_s.back() : 0.0).arg(beforeFault_s)));
+        QVERIFY(r.run.size() >= std::size_t(beforeFault_s * 1000.0 * 0.999));  // 1 kHz, nothing lost
         QVERIFY(!p->button(Control::StartInsertion)->isEnabled());
         QVERIFY(p->button(Control::StartInsertion)->toolTip().contains(QStringLiteral("fault")));
         QVERIFY(p->button(Control::EmergencyStop)->isEnabled());
@@ -329,6 +339,99 @@ private slots:
         for (QTranslator* t : QCoreApplication::instance()->findChildren<QTranslator*>())
             QCoreApplication::removeTranslator(t);
         nb::setPreferredLanguage(QStringLiteral("en"));
+    }
+
+    // Devices ▸ Choose devices…: what is connected is listed, the choice becomes a device spec,
+    // and an incomplete choice is refused inside the dialog.
+    void deviceDialogBuildsTheSpec()
+    {
+        using nb::devices::ConnectedDevice;
+        const auto lister = [] {
+            return std::vector<ConnectedDevice>{
+                {QStringLiteral("daq"), QStringLiteral("u6:360012345"), QStringLiteral("LabJack U6 (USB bus 1 device 4)"), {}},
+                {QStringLiteral("daq"), QString(), QStringLiteral("USB"), QStringLiteral("no permission for /dev/bus/usb")},
+                {QStringLiteral("serial"), QStringLiteral("zaber:/dev/ttyUSB0"), QStringLiteral("FT232R USB UART"), {}}};
+        };
+        nb::DeviceDialog d(nb::devices::DeviceSpec{}, lister);
+        auto* daq = d.findChild<QComboBox*>(QStringLiteral("daq"));
+        auto* stage = d.findChild<QComboBox*>(QStringLiteral("stage"));
+        QVERIFY(daq && stage);
+        QCOMPARE(daq->count(), 4);    // simulated, first U6, the listed U6, by serial number
+        QCOMPARE(stage->count(), 3);  // simulated, the listed port, another port
+        QCOMPARE(daq->currentData().toString(), QStringLiteral("sim"));
+        QVERIFY(!d.findChild<QSpinBox*>(QStringLiteral("u6Channel"))->isEnabled());
+        const QString found = d.findChild<QLabel*>(QStringLiteral("found"))->text();
+        QVERIFY2(found.contains(QStringLiteral("no permission")) && found.contains(QLatin1Char('1')), qPrintable(found));
+
+        daq->setCurrentIndex(daq->findData(QStringLiteral("u6:360012345")));
+        stage->setCurrentIndex(stage->findData(QStringLiteral("zaber:/dev/ttyUSB0")));
+        QVERIFY(d.findChild<QSpinBox*>(QStringLiteral("u6Channel"))->isEnabled());
+        d.findChild<QComboBox*>(QStringLiteral("u6Gain"))->setCurrentIndex(1);
+        d.findChild<QDoubleSpinBox*>(QStringLiteral("zaberMicrosteps"))->setValue(10000.0);
+        nb::devices::DeviceSpec s = d.spec();
+        QCOMPARE(s.daq, QStringLiteral("u6:360012345"));
+        QCOMPARE(s.stage, QStringLiteral("zaber:/dev/ttyUSB0"));
+        QCOMPARE(s.u6GainIndex, 1);
+        QCOMPARE(s.zaberMicrostepsPerMm, 10000.0);
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        QVERIFY(d.grab().save(screenshotDir() + QStringLiteral("/device_dialog.png")));
+        d.accept();
+        QCOMPARE(d.result(), int(QDialog::Accepted));
+
+        // What is not connected now is kept, typed in; an empty port is refused with a reason.
+        s.daq = QStringLiteral("u6:42");
+        s.stage = QStringLiteral("zaber:/dev/ttyS9");
+        nb::DeviceDialog again(s, lister);
+        QCOMPARE(again.spec().daq, QStringLiteral("u6:42"));
+        QCOMPARE(again.spec().stage, QStringLiteral("zaber:/dev/ttyS9"));
+        QCOMPARE(again.spec().u6GainIndex, 1);
+        again.findChild<QLineEdit*>(QStringLiteral("stagePort"))->clear();
+        again.show();
+        again.accept();
+        QVERIFY(again.isVisible());
+        QVERIFY2(again.problem().contains(QStringLiteral("zaber:")), qPrintable(again.problem()));
+        QVERIFY(again.findChild<QLabel*>(QStringLiteral("error"))->isVisible());
+    }
+
+    // Switching devices replaces the engine: a stage or a DAQ that cannot be opened falls back
+    // to the simulated rig with a message naming it, and the simulated rig chosen again works
+    // through the panel. Never mid-run.
+    void switchingDevices()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+
+        nb::devices::DeviceSpec spec;
+        spec.stage = QStringLiteral("zaber:/dev/ttyNoSuchPort");
+        QVERIFY(!w.switchDevices(spec));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("ttyNoSuchPort")),
+                 qPrintable(w.statusBar()->currentMessage()));
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().running, 20000);
+
+        spec.stage = QStringLiteral("sim");
+        spec.daq = QStringLiteral("u6:999999999");
+        QVERIFY(!w.switchDevices(spec));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("999999999")),
+                 qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY(w.engine()->deviceDescription().contains(QStringLiteral("simulated")));
+        QVERIFY(!w.controlPanel()->button(Control::StartInsertion)->isEnabled());
+
+        spec.daq = QStringLiteral("sim");
+        QVERIFY(w.switchDevices(spec));
+        setMotion(w, 5.0, 60.0);
+        prepare(w);
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().recording, 20000);
+        nb::devices::AcquisitionEngine* recordingEngine = w.engine();
+        QVERIFY(!w.switchDevices(spec));
+        QCOMPARE(w.engine(), recordingEngine);
+        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("end the run")));
+        w.controlPanel()->button(Control::EmergencyStop)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
     }
 };
 
