@@ -1,22 +1,13 @@
 // The command-line contract: the real executable, run as a user's script would.
 #include <QProcess>
+#include "support/needlebench_cli.h"
+
 #include <QtTest>
 
 class TestCli : public QObject {
     Q_OBJECT
 
-    struct Result {
-        int code;
-        QString out, err;
-    };
-    static Result run(const QStringList& args)
-    {
-        QProcess p;
-        p.start(QStringLiteral(NB_EXECUTABLE), args);
-        if (!p.waitForFinished(60000))
-            qFatal("needlebench did not finish");
-        return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
-    }
+    static nbtest::CliResult run(const QStringList& args) { return nbtest::runCli(args); }
 
 private slots:
     void unknownCommandPrintsUsageAndFails()

@@ -2,12 +2,12 @@
 // written to disk: JSON keys and values, tables, usage errors (exit 2), bad input (exit 1).
 #include "core/labels.h"
 #include "core/run_file.h"
+#include "support/needlebench_cli.h"
 #include "synthetic.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
@@ -17,23 +17,7 @@ using namespace nb;
 class TestFitCli : public QObject {
     Q_OBJECT
 
-    struct Result {
-        int code;
-        QString out, err;
-        QJsonObject json() const { return QJsonDocument::fromJson(out.toUtf8()).object(); }
-    };
-    static Result run(const QStringList& args)
-    {
-        QProcess p;
-        auto env = QProcessEnvironment::systemEnvironment();
-        env.remove(QStringLiteral("DISPLAY"));  // headless commands need no display
-        p.setProcessEnvironment(env);
-        p.start(QStringLiteral(NB_EXECUTABLE), args);
-        if (!p.waitForFinished(60000))
-            qFatal("needlebench did not finish");
-        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, QString::fromUtf8(p.readAllStandardOutput()),
-                QString::fromUtf8(p.readAllStandardError())};
-    }
+    static nbtest::CliResult run(const QStringList& args) { return nbtest::runCli(args); }
     static void write(const QString& path, const QByteArray& text)
     {
         QFile f(path);

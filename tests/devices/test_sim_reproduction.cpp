@@ -2,15 +2,14 @@
 // project's own fits: Table 2 (capsule stiffness and puncture, 5 seeds per liver, within
 // 15 %) and Table 5 (friction per length on the platform, mass removed, phases from the truth, 20 %).
 #include "engine_fixture.h"
+#include "support/needlebench_cli.h"
 
 #include "core/friction_fit.h"
 #include "core/labels.h"
 #include "core/run_file.h"
 
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <cmath>
 
@@ -41,29 +40,6 @@ bool within(double value, double expected, double tolerance)
 QString percent(double value, double expected)
 {
     return QString::number(100.0 * (value - expected) / expected, 'f', 1);
-}
-
-struct Cli {
-    int code = -1;
-    QString out, err;
-};
-
-Cli cli(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(NB_EXECUTABLE), args);
-    if (!p.waitForFinished(120000))
-        qFatal("needlebench %s did not finish", qPrintable(args.join(QLatin1Char(' '))));
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, QString::fromUtf8(p.readAllStandardOutput()),
-            QString::fromUtf8(p.readAllStandardError())};
-}
-
-QJsonObject readJson(const QString& path)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(f.readAll()).object();
 }
 
 }  // namespace
@@ -106,12 +82,12 @@ private slots:
         QStringList runs, labelArgs;
         for (int seed = 1; seed <= 5; ++seed) {
             const QString base = dir_.filePath(QStringLiteral("%1_%2").arg(tissue).arg(seed));
-            const Cli sim = cli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+            const nbtest::CliResult sim = nbtest::runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
                                  QStringLiteral("--tissue"), tissue, QStringLiteral("--tip"), tip, QStringLiteral("--seed"),
                                  QString::number(seed), QStringLiteral("--truth"), base + QStringLiteral(".truth.json"),
                                  QStringLiteral("--out"), base + QStringLiteral(".csv")});
             QVERIFY2(sim.code == 0, qPrintable(sim.err));
-            const QJsonObject truth = readJson(base + QStringLiteral(".truth.json"));
+            const QJsonObject truth = nbtest::readJsonFile(base + QStringLiteral(".truth.json"));
             QVERIFY(truth.value(QStringLiteral("contact_s")).isDouble());
             const double t = truth.value(QStringLiteral("contact_s")).toDouble();
             nb::writeLabelsFile(base + QStringLiteral(".labels.csv"),
@@ -120,10 +96,10 @@ private slots:
             labelArgs << QStringLiteral("--labels") << base + QStringLiteral(".labels.csv");
         }
         for (const bool labelled : {true, false}) {
-            const Cli fit = cli(QStringList{QStringLiteral("fit"), QStringLiteral("stiffness"), QStringLiteral("--json")} + runs +
+            const nbtest::CliResult fit = nbtest::runCli(QStringList{QStringLiteral("fit"), QStringLiteral("stiffness"), QStringLiteral("--json")} + runs +
                                 (labelled ? labelArgs : QStringList()));
             QVERIFY2(fit.code == 0, qPrintable(fit.err));
-            const QJsonObject o = QJsonDocument::fromJson(fit.out.toUtf8()).object();
+            const QJsonObject o = fit.json();
             const QJsonObject pooled = o.value(QStringLiteral("pooled")).toObject();
             const double fa1 = pooled.value(QStringLiteral("a1_N_per_mm")).toDouble();
             const double fa2 = pooled.value(QStringLiteral("a2_N_per_mm2")).toDouble();

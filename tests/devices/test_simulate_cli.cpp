@@ -1,6 +1,7 @@
 // `needlebench simulate`: the real executable, as users' scripts run it, including a
 // recording killed with SIGKILL mid-run.
 #include "core/run_file.h"
+#include "support/needlebench_cli.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -12,31 +13,9 @@
 #include <csignal>
 
 namespace {
-struct Result {
-    int code;
-    QString out, err;
-};
-
-Result run(const QStringList& args)
+nbtest::CliResult run(const QStringList& args)
 {
-    QProcess p;
-    p.start(QStringLiteral(NB_EXECUTABLE), QStringList{QStringLiteral("simulate")} + args);
-    if (!p.waitForFinished(120000))
-        qFatal("needlebench simulate did not finish");
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
-}
-
-QJsonObject jsonOf(const QString& text)
-{
-    return QJsonDocument::fromJson(text.mid(text.indexOf(QLatin1Char('{'))).toUtf8()).object();
-}
-
-QJsonObject readJson(const QString& path)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(f.readAll()).object();
+    return nbtest::runCli(QStringList{QStringLiteral("simulate")} + args);
 }
 }  // namespace
 
@@ -63,7 +42,7 @@ private slots:
     {
         QFETCH(QStringList, args);
         QFETCH(QString, message);
-        const Result r = run(args);
+        const nbtest::CliResult r = run(args);
         QCOMPARE(r.code, 2);
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
         QVERIFY(!QFile::exists(path(QStringLiteral("x.csv"))));
@@ -72,10 +51,10 @@ private slots:
     void stiffnessRunWithTruth()
     {
         const QString out = path(QStringLiteral("stiff.csv")), truth = path(QStringLiteral("stiff.json"));
-        const Result r = run({"--protocol", "stiffness", "--tissue", "liver1", "--seed", "4", "--depth-mm", "35",
+        const nbtest::CliResult r = run({"--protocol", "stiffness", "--tissue", "liver1", "--seed", "4", "--depth-mm", "35",
                               "--truth", truth, "--out", out});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        const QJsonObject summary = jsonOf(r.out);
+        const QJsonObject summary = r.json();
         QCOMPARE(summary.value(QStringLiteral("end_reason")).toString(), QStringLiteral("completed"));
         QCOMPARE(summary.value(QStringLiteral("dropped")).toInt(), 0);
 
@@ -87,7 +66,7 @@ private slots:
         QCOMPARE(*run.meta(QStringLiteral("seed")), QStringLiteral("4"));
         QCOMPARE(static_cast<int>(run.size()), summary.value(QStringLiteral("samples")).toInt());
 
-        const QJsonObject t = readJson(truth);
+        const QJsonObject t = nbtest::readJsonFile(truth);
         QCOMPARE(t.value(QStringLiteral("model")).toObject().value(QStringLiteral("a1_N_per_mm")).toDouble(), 0.0480);
         const double tp = t.value(QStringLiteral("puncture_s")).toDouble();
         const double fp = t.value(QStringLiteral("puncture_force_N")).toDouble();
@@ -106,7 +85,7 @@ private slots:
         // On the simulated clock the operator's sequence lands at the same simulated times,
         // so a seed reproduces the run byte for byte; another seed does not.
         auto bytes = [&](const QString& seed, const QString& name) {
-            const Result r = run({"--protocol", "stiffness", "--tissue", "liver3", "--depth-mm", "20", "--seed", seed, "--out", path(name)});
+            const nbtest::CliResult r = run({"--protocol", "stiffness", "--tissue", "liver3", "--depth-mm", "20", "--seed", seed, "--out", path(name)});
             QFile f(path(name));
             return r.code == 0 && f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
         };
@@ -119,7 +98,7 @@ private slots:
     void frictionRunHasPhaseTruth()
     {
         const QString out = path(QStringLiteral("fric.csv")), truth = path(QStringLiteral("fric.json"));
-        const Result r = run({"--protocol", "friction", "--cycles", "2", "--frequency-hz", "0.8", "--thickness-mm", "25",
+        const nbtest::CliResult r = run({"--protocol", "friction", "--cycles", "2", "--frequency-hz", "0.8", "--thickness-mm", "25",
                               "--truth", truth, "--out", out});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const auto file = nb::readRunFile(out);
@@ -127,7 +106,7 @@ private slots:
         QCOMPARE(*file.run.meta(QStringLiteral("thickness_mm")), QStringLiteral("25"));
         const auto* phase = file.run.textColumn(QStringLiteral("phase"));
         QVERIFY(phase);
-        const QJsonArray phases = readJson(truth).value(QStringLiteral("phases")).toArray();
+        const QJsonArray phases = nbtest::readJsonFile(truth).value(QStringLiteral("phases")).toArray();
         QVERIFY(phases.size() >= 12);
         for (const auto& v : phases) {
             const QJsonObject p = v.toObject();
@@ -142,10 +121,10 @@ private slots:
     void forceLimitAtBone()
     {
         const QString out = path(QStringLiteral("bone.csv"));
-        const Result r = run({"--protocol", "stiffness", "--tissue", "liver2", "--bone-depth-mm", "30", "--max-force-n", "4",
+        const nbtest::CliResult r = run({"--protocol", "stiffness", "--tissue", "liver2", "--bone-depth-mm", "30", "--max-force-n", "4",
                               "--depth-mm", "60", "--out", out});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QCOMPARE(jsonOf(r.out).value(QStringLiteral("end_reason")).toString(), QStringLiteral("force_limit"));
+        QCOMPARE(r.json().value(QStringLiteral("end_reason")).toString(), QStringLiteral("force_limit"));
         const auto file = nb::readRunFile(out);
         QCOMPARE(*file.run.meta(QStringLiteral("end_reason")), QStringLiteral("force_limit"));
         QVERIFY(file.run.meta(QStringLiteral("force_limit_tripped_s")).has_value());

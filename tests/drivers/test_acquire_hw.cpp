@@ -3,6 +3,7 @@
 #include <umockdev.h>  // before Qt: Qt's "signals" macro breaks gio's headers
 
 #include "core/run_file.h"
+#include "support/needlebench_cli.h"
 #include "u6_emulator.h"
 #include "umockdev_harness.h"
 #include "zaber_emulator.h"
@@ -26,20 +27,7 @@ class TestAcquireHw : public QObject {
     std::unique_ptr<ZaberEmulator> zaber_;
     QTemporaryDir dir_;
 
-    struct Result {
-        int code = -1;
-        QByteArray out, err;
-    };
-    Result run(const QStringList& args)
-    {
-        QProcess p;
-        p.start(QStringLiteral(NB_EXECUTABLE), args);
-        if (!p.waitForFinished(60000)) {
-            p.kill();
-            p.waitForFinished();
-        }
-        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
-    }
+    static nbtest::CliResult run(const QStringList& args) { return nbtest::runCli(args, 60000); }
 
 private slots:
     void init()
@@ -65,25 +53,25 @@ private slots:
 
     void devicesListsTheU6()
     {
-        const Result r = run({QStringLiteral("devices"), QStringLiteral("--json")});
+        const nbtest::CliResult r = run({QStringLiteral("devices"), QStringLiteral("--json")});
         QCOMPARE(r.code, 0);
-        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
-        QVERIFY2(r.out.contains("u6:360012345"), r.out.constData());
+        const QJsonObject o = r.json();
+        QVERIFY2(r.out.contains("u6:360012345"), qPrintable(r.out));
         QVERIFY(o.value(QStringLiteral("stages")).isArray());
     }
 
     void acquiresARunFromBothDevices()
     {
         const QString out = dir_.filePath(QStringLiteral("run.csv"));
-        const Result r = run({QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("u6:360012345"),
+        const nbtest::CliResult r = run({QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("u6:360012345"),
                               QStringLiteral("--stage"), QStringLiteral("zaber:") + zaber_->path(),
                               QStringLiteral("--zaber-microsteps-per-mm"), QStringLiteral("10000"),
                               QStringLiteral("--protocol"), QStringLiteral("stiffness"), QStringLiteral("--depth-mm"),
                               QStringLiteral("3"), QStringLiteral("--velocity-mm-s"), QStringLiteral("10"),
                               QStringLiteral("--rate-hz"), QStringLiteral("1000"), QStringLiteral("--out"), out});
-        QVERIFY2(r.code == 0, (r.out + r.err).constData());
-        QVERIFY2(!r.out.isEmpty(), r.err.constData());
-        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(!r.out.isEmpty(), qPrintable(r.err));
+        const QJsonObject o = r.json();
         QCOMPARE(o.value(QStringLiteral("end_reason")).toString(), QStringLiteral("completed"));
         QCOMPARE(o.value(QStringLiteral("dropped")).toDouble(), 0.0);
         QVERIFY(o.value(QStringLiteral("device")).toString().contains(QLatin1String("LabJack U6 #360012345")));
@@ -104,16 +92,16 @@ private slots:
     void aFailingDaqIsNamed()
     {
         u6_->setStalled(true);
-        const Result r = run({QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("u6"), QStringLiteral("--stage"),
+        const nbtest::CliResult r = run({QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("u6"), QStringLiteral("--stage"),
                               QStringLiteral("zaber:") + zaber_->path(), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
                               QStringLiteral("--out"), dir_.filePath(QStringLiteral("never.csv"))});
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains("LabJack U6"), r.err.constData());
+        QVERIFY2(r.err.contains("LabJack U6"), qPrintable(r.err));
     }
 
     void badSpecsAreUsageErrors()
     {
-        const Result r = run({QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("ni6009"), QStringLiteral("--protocol"),
+        const nbtest::CliResult r = run({QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("ni6009"), QStringLiteral("--protocol"),
                               QStringLiteral("stiffness"), QStringLiteral("--out"), dir_.filePath(QStringLiteral("x.csv"))});
         QCOMPARE(r.code, 2);
         QVERIFY(r.err.contains("unknown DAQ"));

@@ -2,6 +2,7 @@
 // the run choice and label edits, and is grabbed to build-export/screenshots/ for a human look.
 #include "core/export/dataset_loader.h"
 #include "core/export/export_error.h"
+#include "support/needlebench_cli.h"
 #include "widgets/analysis/analysis_plots.h"
 #include "widgets/analysis/analysis_workspace.h"
 #include "widgets/analysis/figure_export.h"
@@ -11,7 +12,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QListWidget>
-#include <QProcess>
 #include <QStandardItemModel>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -24,9 +24,7 @@ namespace {
 
 bool simulate(const QStringList& args)
 {
-    QProcess p;
-    p.start(QStringLiteral(NB_EXECUTABLE), QStringList{QStringLiteral("simulate")} + args);
-    return p.waitForFinished(60000) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+    return nbtest::runCli(QStringList{QStringLiteral("simulate")} + args, 60000).code == 0;
 }
 
 // How many distinct colours an image has in a coarse sample: a blank or failed render has 1-2.

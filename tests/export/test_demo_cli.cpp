@@ -2,12 +2,12 @@
 #include "core/export/run_csv_export.h"
 #include "core/labels.h"
 #include "core/run_file.h"
+#include "support/needlebench_cli.h"
 
 #include <QDir>
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
@@ -18,21 +18,9 @@
 
 namespace {
 
-struct Result {
-    int code;
-    QString out, err;
-};
-
-Result run(const QStringList& args)
+nbtest::CliResult run(const QStringList& args)
 {
-    QProcess p;
-    auto env = QProcessEnvironment::systemEnvironment();
-    env.remove(QStringLiteral("DISPLAY"));  // must not need a display
-    p.setProcessEnvironment(env);
-    p.start(QStringLiteral(NB_EXECUTABLE), args);
-    if (!p.waitForFinished(120000))
-        qFatal("needlebench did not finish");
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+    return nbtest::runCli(args);
 }
 
 }  // namespace
@@ -47,7 +35,7 @@ private slots:
 
     void demoRunsAShortSession()
     {
-        const Result r = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), demo_});
+        const nbtest::CliResult r = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), demo_});
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
         QVERIFY(r.out.contains(QStringLiteral("simulated run_001_linear.csv")));
         QVERIFY(r.out.contains(QStringLiteral("Where everything went")));
@@ -75,7 +63,7 @@ private slots:
 
         // The friction run has its imaging video, a real file a user's tools open, as long as the run.
         const QString video = d.filePath(QStringLiteral("session/run_003_sine.avi"));
-        const Result vi = run({QStringLiteral("video-info"), QStringLiteral("--json"), video});
+        const nbtest::CliResult vi = run({QStringLiteral("video-info"), QStringLiteral("--json"), video});
         QVERIFY2(vi.code == 0, qPrintable(vi.err));
         const QJsonObject v = QJsonDocument::fromJson(vi.out.toUtf8()).object();
         const nb::Run sine = nb::readRunFile(d.filePath(QStringLiteral("session/run_003_sine.csv"))).run;
@@ -153,7 +141,7 @@ private slots:
 
     void demoRefusesAUsedFolder()
     {
-        const Result r = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), demo_});
+        const nbtest::CliResult r = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), demo_});
         QCOMPARE(r.code, 1);
         QVERIFY(r.err.contains(QStringLiteral("already holds a session")));
     }
@@ -162,7 +150,7 @@ private slots:
     {
         const QString session = QDir(demo_).filePath(QStringLiteral("session"));
         const QDir out(dir_.filePath(QStringLiteral("exported")));
-        Result r = run({QStringLiteral("export"), session, QStringLiteral("--format"), QStringLiteral("csv"), QStringLiteral("--out"),
+        nbtest::CliResult r = run({QStringLiteral("export"), session, QStringLiteral("--format"), QStringLiteral("csv"), QStringLiteral("--out"),
                         out.filePath(QStringLiteral("csv"))});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const QString csv = out.filePath(QStringLiteral("csv/run_001_linear.csv"));
@@ -195,7 +183,7 @@ private slots:
 
     void exportRejectsBadArguments()
     {
-        Result r = run({QStringLiteral("export"), demo_, QStringLiteral("--format"), QStringLiteral("xlsx"), QStringLiteral("--out"), QStringLiteral("x")});
+        nbtest::CliResult r = run({QStringLiteral("export"), demo_, QStringLiteral("--format"), QStringLiteral("xlsx"), QStringLiteral("--out"), QStringLiteral("x")});
         QCOMPARE(r.code, 2);
         QVERIFY(r.err.contains(QStringLiteral("unknown format 'xlsx'")));
         r = run({QStringLiteral("export"), demo_, QStringLiteral("--format"), QStringLiteral("csv")});

@@ -4,22 +4,20 @@
 #include "core/labels.h"
 #include "core/run_file.h"
 #include "core/sync.h"
+#include "support/needlebench_cli.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
 static QJsonObject runJson(const QStringList& args, int* code = nullptr)
 {
-    QProcess p;
-    p.start(QStringLiteral(NB_EXECUTABLE), args);
-    p.waitForFinished(240000);
+    const nbtest::CliResult r = nbtest::runCli(args, 240000);
     if (code)
-        *code = p.exitCode();
-    return QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+        *code = r.code;
+    return r.json();
 }
 
 class TestSync : public QObject {

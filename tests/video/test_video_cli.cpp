@@ -1,25 +1,17 @@
 // The video commands' contracts, run as real processes: video-info and frame.
 #include "video_fixtures.h"
+#include "support/needlebench_cli.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
 using namespace nb::test;
 
-struct Result {
-    int code;
-    QByteArray out, err;
-};
-
-static Result run(const QStringList& args)
+static nbtest::CliResult run(const QStringList& args)
 {
-    QProcess p;
-    p.start(QStringLiteral(NB_EXECUTABLE), args);
-    p.waitForFinished(120000);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
+    return nbtest::runCli(args);
 }
 
 class TestVideoCli : public QObject {
@@ -47,9 +39,9 @@ private slots:
 
     void videoInfoJson()
     {
-        const Result r = run({"video-info", vfr_, "--json"});
+        const nbtest::CliResult r = run({"video-info", vfr_, "--json"});
         QCOMPARE(r.code, 0);
-        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        const QJsonObject o = r.json();
         for (const char* key : {"frames", "fps_nominal", "duration_s", "codec", "width", "height", "variable_frame_rate",
                                 "duplicate_frames"})
             QVERIFY2(o.contains(QLatin1String(key)), key);
@@ -66,9 +58,9 @@ private slots:
     {
         for (int n : {0, 44, 45, 46, 80, 89}) {
             const QString png = dir_.filePath(QStringLiteral("f%1.png").arg(n));
-            const Result r = run({"frame", vfr_, "--index", QString::number(n), "--out", png, "--json"});
+            const nbtest::CliResult r = run({"frame", vfr_, "--index", QString::number(n), "--out", png, "--json"});
             QCOMPARE(r.code, 0);
-            const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+            const QJsonObject o = r.json();
             QCOMPARE(o["index"].toInt(), n);
             const double expected = (n + (n >= 45 ? 10 : 0)) / 30.0;
             QVERIFY(std::abs(o["time_s"].toDouble() - expected) < 0.001);
@@ -82,13 +74,13 @@ private slots:
         QCOMPARE(run({"frame", vfr_, "--out", dir_.filePath("x.png")}).code, 2);  // no --index
         QCOMPARE(run({"frame", vfr_, "--index", "-3", "--out", dir_.filePath("x.png")}).code, 2);
         QCOMPARE(run({"video-info"}).code, 2);
-        const Result beyond = run({"frame", vfr_, "--index", "90", "--out", dir_.filePath("x.png")});
+        const nbtest::CliResult beyond = run({"frame", vfr_, "--index", "90", "--out", dir_.filePath("x.png")});
         QCOMPARE(beyond.code, 1);
         QVERIFY(beyond.err.contains("frame 90 does not exist"));
-        const Result missing = run({"video-info", dir_.filePath("none.mp4")});
+        const nbtest::CliResult missing = run({"video-info", dir_.filePath("none.mp4")});
         QCOMPARE(missing.code, 1);
         QVERIFY(missing.err.contains("none.mp4"));
-        const Result unwritable = run({"frame", vfr_, "--index", "3", "--out", dir_.filePath("no/such/dir/x.png")});
+        const nbtest::CliResult unwritable = run({"frame", vfr_, "--index", "3", "--out", dir_.filePath("no/such/dir/x.png")});
         QCOMPARE(unwritable.code, 1);
     }
 };
