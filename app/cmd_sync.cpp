@@ -5,6 +5,7 @@
 
 #include "core/run_file.h"
 #include "core/sync.h"
+#include "devices/video/frame_index_store.h"
 #include "devices/video/frame_reader.h"
 #include "devices/video/motion_signal.h"
 #include "devices/video/video_error.h"
@@ -52,7 +53,7 @@ int cmdSync(const QStringList& args, Io io)
     const QString runPath = parser.positionalArguments()[0], videoPath = parser.positionalArguments()[1];
     try {
         const Run run = readRunFile(runPath).run;
-        devices::FrameReader reader(devices::buildFrameIndex(videoPath), 8);
+        devices::FrameReader reader(devices::loadOrBuildFrameIndex(videoPath), 8);
         if (!region.isEmpty() && !QRect(0, 0, reader.index().width, reader.index().height).contains(region)) {
             io.err << nb::TrCli::tr("needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture\n")
                           .arg(region.x()).arg(region.y()).arg(region.width()).arg(region.height())

@@ -3,6 +3,7 @@
 #include "core/tr.h"
 
 #include "devices/video/frame_index.h"
+#include "devices/video/frame_index_store.h"
 #include "devices/video/frame_reader.h"
 #include "devices/video/video_error.h"
 
@@ -49,7 +50,7 @@ int cmdVideoInfo(const QStringList& args, Io io)
         return code;
     const QString path = parser.positionalArguments().first();
     try {
-        const FrameIndex index = nb::devices::buildFrameIndex(path);
+        const FrameIndex index = nb::devices::loadOrBuildFrameIndex(path);
         for (const QString& w : index.warnings)
             io.err << nb::TrCli::tr("warning: %1: %2").arg(path, w) << '\n';
         if (parser.isSet(json)) {
@@ -93,7 +94,7 @@ int cmdFrame(const QStringList& args, Io io)
     const QString path = parser.positionalArguments().first();
     const QString out = parser.value(outOpt);
     try {
-        nb::devices::FrameReader reader(nb::devices::buildFrameIndex(path), 4);
+        nb::devices::FrameReader reader(nb::devices::loadOrBuildFrameIndex(path), 4);
         const auto frame = reader.read(n);
         bool written = false;
         try {

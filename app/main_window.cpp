@@ -16,6 +16,7 @@
 #include "widgets/force_plots.h"
 #include "widgets/analysis/analysis_workspace.h"
 #include "widgets/review_workspace.h"
+#include "widgets/session_info_dialog.h"
 #include "widgets/session_view.h"
 
 #include <QActionGroup>
@@ -23,20 +24,14 @@
 #include <algorithm>
 #include <QCloseEvent>
 #include <QDialog>
-#include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
-#include <QHBoxLayout>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPlainTextEdit>
-#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QShortcut>
@@ -274,6 +269,7 @@ void MainWindow::buildMenus()
     auto* sessionMenu = menuBar()->addMenu(tr("&Session"));
     sessionMenu->addAction(tr("&New session…"), QKeySequence::New, this, &MainWindow::newSessionDialog);
     sessionMenu->addAction(tr("&Open session…"), QKeySequence::Open, this, &MainWindow::openSessionDialog);
+    sessionMenu->addAction(tr("Session &details…"), this, &MainWindow::editSessionDetails);
     sessionMenu->addSeparator();
     sessionMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -368,55 +364,37 @@ bool MainWindow::createSession(const QString& dir, const SessionInfo& info)
 
 void MainWindow::newSessionDialog()
 {
-    QDialog dialog(this);
-    dialog.setWindowTitle(tr("New session"));
-    auto* form = new QFormLayout(&dialog);
-    auto* organ = new QLineEdit(&dialog);
-    auto* specimen = new QLineEdit(&dialog);
-    auto* tip = new QLineEdit(&dialog);
-    tip->setPlaceholderText(tr("beveled, blunt, diamond"));
-    auto* thickness = new QDoubleSpinBox(&dialog);
-    thickness->setRange(0, 500);
-    thickness->setSuffix(tr(" mm"));
-    auto* op = new QLineEdit(&dialog);
-    auto* protocol = new QLineEdit(&dialog);
-    protocol->setPlaceholderText(tr("overall stiffness, friction, …"));
-    auto* notes = new QPlainTextEdit(&dialog);
-    auto* folder = new QLineEdit(defaultSessionRoot(), &dialog);
-    auto* browse = new QPushButton(tr("Browse…"), &dialog);
-    connect(browse, &QPushButton::clicked, &dialog, [&] {
-        const QString d = QFileDialog::getExistingDirectory(&dialog, tr("Parent folder"), folder->text());
-        if (!d.isEmpty())
-            folder->setText(d);
-    });
-    auto* folderRow = new QHBoxLayout;
-    folderRow->addWidget(folder, 1);
-    folderRow->addWidget(browse);
-    form->addRow(tr("Organ"), organ);
-    form->addRow(tr("Specimen number"), specimen);
-    form->addRow(tr("Needle tip"), tip);
-    form->addRow(tr("Thickness"), thickness);
-    form->addRow(tr("Operator"), op);
-    form->addRow(tr("Protocol"), protocol);
-    form->addRow(tr("Notes"), notes);
-    form->addRow(tr("Parent folder"), folderRow);
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
-    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-    form->addRow(buttons);
+    SessionInfoDialog dialog(SessionInfoDialog::Mode::New, {}, defaultSessionRoot(), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    SessionInfo info;
-    info.organ = organ->text();
-    info.specimen = specimen->text();
-    info.tip = tip->text();
-    info.thickness_mm = thickness->value();
-    info.operatorName = op->text();
-    info.protocol = protocol->text();
-    info.notes = notes->toPlainText();
+    const SessionInfo info = dialog.info();
     QString name = QStringLiteral("%1_%2_%3").arg(info.organ, info.specimen, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd_HHmmss")));
     name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("_"));
-    createSession(QDir(folder->text()).filePath(name), info);
+    createSession(QDir(dialog.parentFolder()).filePath(name), info);
+}
+
+void MainWindow::editSessionDetails()
+{
+    if (!session_)
+        return;
+    SessionInfoDialog dialog(SessionInfoDialog::Mode::Edit, session_->info(), {}, this);
+    if (dialog.exec() == QDialog::Accepted)
+        setSessionInfo(dialog.info());
+}
+
+bool MainWindow::setSessionInfo(const SessionInfo& info)
+{
+    if (!session_)
+        return false;
+    try {
+        session_->setInfo(info);
+    } catch (const SessionError& e) {
+        QMessageBox::warning(this, tr("Session details"), e.message());
+        return false;
+    }
+    showMessage(tr("Session details saved; the next runs carry them."));
+    sessionView_->refresh();
+    return true;
 }
 
 void MainWindow::openSessionDialog()

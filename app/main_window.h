@@ -68,6 +68,10 @@ public:
     // Opens a session folder (recovering interrupted runs); false with a message on error.
     bool openSession(const QString& dir);
     bool createSession(const QString& dir, const SessionInfo& info);
+    // Session ▸ Details…: the dialog, then setSessionInfo() with what was entered.
+    void editSessionDetails();
+    // Saves the open session's details (false with a message when it cannot).
+    bool setSessionInfo(const SessionInfo& info);
     // The non-modal calibration wizard, fed from the live stream.
     CalibrationWizard* openCalibrationWizard();
     void useCalibration(const StoredCalibration& calibration);

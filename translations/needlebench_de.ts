@@ -1171,7 +1171,7 @@ Befehle:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+64"/>
+        <location filename="../app/main_window.cpp" line="+59"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1286,6 +1286,11 @@ Befehle:
         <translation>Sitzung ö&amp;ffnen…</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Session &amp;details…</source>
+        <translation>Sitzungs&amp;details…</translation>
+    </message>
+    <message>
         <location line="+4"/>
         <source>&amp;Devices</source>
         <translation>&amp;Geräte</translation>
@@ -1362,73 +1367,21 @@ Befehle:
     </message>
     <message>
         <location line="+27"/>
-        <location line="+9"/>
         <source>New session</source>
         <translation>Neue Sitzung</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>beveled, blunt, diamond</source>
-        <translation>angeschliffen, stumpf, Diamant</translation>
+        <location line="+33"/>
+        <source>Session details</source>
+        <translation>Sitzungsdetails</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source> mm</source>
-        <translation> mm</translation>
+        <source>Session details saved; the next runs carry them.</source>
+        <translation>Sitzungsdetails gespeichert; die nächsten Läufe tragen sie.</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>overall stiffness, friction, …</source>
-        <translation>Gesamtsteifigkeit, Reibung, …</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Browse…</source>
-        <translation>Durchsuchen…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+14"/>
-        <source>Parent folder</source>
-        <translation>Übergeordneter Ordner</translation>
-    </message>
-    <message>
-        <location line="-7"/>
-        <source>Organ</source>
-        <translation>Organ</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Specimen number</source>
-        <translation>Probennummer</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Needle tip</source>
-        <translation>Nadelspitze</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Thickness</source>
-        <translation>Dicke</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Operator</source>
-        <translation>Bediener</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Protocol</source>
-        <translation>Protokoll</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Notes</source>
-        <translation>Notizen</translation>
-    </message>
-    <message>
-        <location line="+23"/>
+        <location line="+7"/>
         <source>Open session folder</source>
         <translation>Sitzungsordner öffnen</translation>
     </message>
@@ -1473,7 +1426,7 @@ Befehle:
         <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
     </message>
     <message>
-        <location line="-304"/>
+        <location line="-286"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1829,9 +1782,83 @@ Befehle:
     </message>
 </context>
 <context>
+    <name>nb::SessionInfoDialog</name>
+    <message>
+        <location filename="../widgets/session_info_dialog.cpp" line="+20"/>
+        <source>New session</source>
+        <translation>Neue Sitzung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Session details</source>
+        <translation>Sitzungsdetails</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Slab thickness on the friction platform; 0 for a whole organ</source>
+        <translation>Dicke der Gewebescheibe auf der Reibungsplattform; 0 für ein ganzes Organ</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>overall stiffness, friction, …</source>
+        <translation>Gesamtsteifigkeit, Reibung, …</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Organ</source>
+        <translation>Organ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specimen number</source>
+        <translation>Probennummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Needle tip</source>
+        <translation>Nadelspitze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thickness</source>
+        <translation>Dicke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operator</source>
+        <translation>Bediener</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Notes</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+7"/>
+        <source>Parent folder</source>
+        <translation>Übergeordneter Ordner</translation>
+    </message>
+</context>
+<context>
     <name>nb::SessionView</name>
     <message>
-        <location line="+38"/>
+        <location filename="../widgets/session_view.cpp" line="+38"/>
         <source>No session open (Session ▸ New or Open).</source>
         <translation>Keine Sitzung geöffnet (Sitzung ▸ Neu oder Öffnen).</translation>
     </message>
@@ -1976,8 +2003,8 @@ Befehle:
         <location filename="../app/cmd_fit.cpp" line="+46"/>
         <location line="+49"/>
         <location line="+127"/>
-        <location filename="../app/cmd_sync.cpp" line="+27"/>
-        <location filename="../app/cmd_video.cpp" line="+45"/>
+        <location filename="../app/cmd_sync.cpp" line="+28"/>
+        <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
         <translation>JSON ausgeben</translation>

@@ -1159,7 +1159,7 @@ Commands:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+64"/>
+        <location filename="../app/main_window.cpp" line="+59"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1274,6 +1274,11 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Session &amp;details…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+4"/>
         <source>&amp;Devices</source>
         <translation type="unfinished"></translation>
@@ -1349,73 +1354,21 @@ Commands:
     </message>
     <message>
         <location line="+27"/>
-        <location line="+9"/>
         <source>New session</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>beveled, blunt, diamond</source>
+        <location line="+33"/>
+        <source>Session details</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
-        <source> mm</source>
+        <source>Session details saved; the next runs carry them.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>overall stiffness, friction, …</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Browse…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+14"/>
-        <source>Parent folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-7"/>
-        <source>Organ</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Specimen number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Needle tip</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Thickness</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Operator</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Protocol</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Notes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+23"/>
+        <location line="+7"/>
         <source>Open session folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1460,7 +1413,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-304"/>
+        <location line="-286"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1816,9 +1769,83 @@ Commands:
     </message>
 </context>
 <context>
+    <name>nb::SessionInfoDialog</name>
+    <message>
+        <location filename="../widgets/session_info_dialog.cpp" line="+20"/>
+        <source>New session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Session details</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Slab thickness on the friction platform; 0 for a whole organ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>overall stiffness, friction, …</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Organ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specimen number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Needle tip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thickness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Protocol</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Notes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+7"/>
+        <source>Parent folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>nb::SessionView</name>
     <message>
-        <location line="+38"/>
+        <location filename="../widgets/session_view.cpp" line="+38"/>
         <source>No session open (Session ▸ New or Open).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1963,8 +1990,8 @@ Commands:
         <location filename="../app/cmd_fit.cpp" line="+46"/>
         <location line="+49"/>
         <location line="+127"/>
-        <location filename="../app/cmd_sync.cpp" line="+27"/>
-        <location filename="../app/cmd_video.cpp" line="+45"/>
+        <location filename="../app/cmd_sync.cpp" line="+28"/>
+        <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
         <translation type="unfinished"></translation>

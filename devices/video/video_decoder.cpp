@@ -1,5 +1,6 @@
 #include "video_decoder.h"
 
+#include "frame_index_store.h"
 #include "frame_reader.h"
 #include "video_error.h"
 
@@ -32,7 +33,7 @@ public:
     {
         reader_.reset();
         try {
-            FrameIndex index = buildFrameIndex(
+            FrameIndex index = loadOrBuildFrameIndex(
                 path, [this](int done, int expected) { emit indexProgress(done, expected); }, cancel.get());
             if (cancel->load())
                 return;

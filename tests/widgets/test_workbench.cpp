@@ -13,12 +13,14 @@
 #include "widgets/control_panel.h"
 #include "widgets/device_dialog.h"
 #include "widgets/force_plots.h"
+#include "widgets/session_info_dialog.h"
 #include "widgets/session_view.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QDir>
@@ -432,6 +434,43 @@ private slots:
         QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("end the run")));
         w.controlPanel()->button(Control::EmergencyStop)->click();
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
+    }
+
+    // Session ▸ Details…: what the operator changes is saved in session.json, the creation
+    // time stays, and the runs recorded after carry it.
+    void sessionDetailsAreEditable()
+    {
+        QTemporaryDir tmp;
+        const QString dir = tmp.filePath(QStringLiteral("s"));
+        nb::MainWindow w(options(dir, false));
+        QVERIFY(w.session());
+        const nb::SessionInfo before = w.session()->info();
+        nb::SessionInfoDialog d(nb::SessionInfoDialog::Mode::Edit, before);
+        QVERIFY(!d.findChild<QLineEdit*>(QStringLiteral("parentFolder")));  // the folder is fixed once made
+        d.findChild<QLineEdit*>(QStringLiteral("organ"))->setText(QStringLiteral("bovine liver"));
+        d.findChild<QLineEdit*>(QStringLiteral("specimen"))->setText(QStringLiteral("7"));
+        d.findChild<QComboBox*>(QStringLiteral("tip"))->setCurrentText(QStringLiteral("diamond"));
+        d.findChild<QDoubleSpinBox*>(QStringLiteral("thickness"))->setValue(25.0);
+        d.findChild<QPlainTextEdit*>(QStringLiteral("notes"))->setPlainText(QStringLiteral("left lobe, 4 h post mortem"));
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        QVERIFY(d.grab().save(screenshotDir() + QStringLiteral("/session_details.png")));
+        QVERIFY(w.setSessionInfo(d.info()));
+
+        const nb::Session reopened = nb::Session::open(dir);
+        QCOMPARE(reopened.info().organ, QStringLiteral("bovine liver"));
+        QCOMPARE(reopened.info().tip, QStringLiteral("diamond"));
+        QCOMPARE(reopened.info().thickness_mm, 25.0);
+        QCOMPARE(reopened.info().notes, QStringLiteral("left lobe, 4 h post mortem"));
+        QCOMPARE(reopened.info().created, before.created);
+
+        setMotion(w, 20.0, 8.0);
+        prepare(w);
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QCOMPARE(r.run.meta(QStringLiteral("organ")).value_or(QString()), QStringLiteral("bovine liver"));
+        QCOMPARE(r.run.meta(QStringLiteral("tip")).value_or(QString()), QStringLiteral("diamond"));
     }
 };
 

@@ -1,0 +1,140 @@
+#include "frame_index_store.h"
+
+#include <QCryptographicHash>
+#include <QDataStream>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QSaveFile>
+#include <QStandardPaths>
+
+namespace nb::devices {
+
+namespace {
+constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
+// Bump whenever buildFrameIndex() would index a file differently.
+constexpr quint32 kVersion = 1;
+// Indexes kept at most; the least recently stored go first.
+constexpr int kMaxStored = 300;
+
+QString storePath(const QString& videoPath, const QString& storeDir)
+{
+    const QByteArray key = QFileInfo(videoPath).absoluteFilePath().toUtf8();
+    return QDir(storeDir).filePath(QString::fromLatin1(QCryptographicHash::hash(key, QCryptographicHash::Sha1).toHex()) +
+                                   QStringLiteral(".nbindex"));
+}
+
+// What makes a stored index valid for a file.
+struct Stamp {
+    QString path;
+    qint64 size = -1;
+    qint64 modified_ms = 0;
+    bool operator==(const Stamp&) const = default;
+};
+
+std::optional<Stamp> stampOf(const QString& videoPath)
+{
+    const QFileInfo info(videoPath);
+    if (!info.isFile())
+        return std::nullopt;
+    return Stamp{info.absoluteFilePath(), info.size(), info.lastModified().toMSecsSinceEpoch()};
+}
+}  // namespace
+
+QString defaultFrameIndexStore()
+{
+    const QString root = qEnvironmentVariableIsEmpty("NEEDLEBENCH_CACHE_DIR")
+                             ? QStandardPaths::writableLocation(QStandardPaths::GenericCacheLocation) + QStringLiteral("/needlebench")
+                             : qEnvironmentVariable("NEEDLEBENCH_CACHE_DIR");
+    return QDir(root).filePath(QStringLiteral("frame-index"));
+}
+
+std::optional<FrameIndex> loadStoredFrameIndex(const QString& videoPath, const QString& storeDir)
+{
+    const auto stamp = stampOf(videoPath);
+    if (!stamp)
+        return std::nullopt;
+    QFile f(storePath(videoPath, storeDir));
+    if (!f.open(QIODevice::ReadOnly))
+        return std::nullopt;
+    QDataStream in(&f);
+    in.setVersion(QDataStream::Qt_6_0);
+    quint32 magic = 0, version = 0;
+    Stamp stored;
+    in >> magic >> version;
+    if (magic != kMagic || version != kVersion)
+        return std::nullopt;
+    in >> stored.path >> stored.size >> stored.modified_ms;
+    if (in.status() != QDataStream::Ok || !(stored == *stamp))
+        return std::nullopt;
+    FrameIndex index;
+    qint32 width = 0, height = 0, containerFrames = 0;
+    quint32 count = 0;
+    in >> index.codec >> width >> height >> index.fpsNominal >> containerFrames >> index.keyframesKnown >>
+        index.timestampsMonotonic >> index.warnings >> index.timeOrigin_s >> count;
+    if (in.status() != QDataStream::Ok || count == 0 || count > 100'000'000u)
+        return std::nullopt;
+    index.path = videoPath;
+    index.width = width;
+    index.height = height;
+    index.containerFrames = containerFrames;
+    index.frames.resize(count);
+    for (FrameInfo& fr : index.frames) {
+        quint8 flags = 0;
+        in >> fr.time_s >> flags;
+        fr.keyframe = flags & 1;
+        fr.duplicate = flags & 2;
+        fr.timeEstimated = flags & 4;
+    }
+    if (in.status() != QDataStream::Ok || !in.atEnd())
+        return std::nullopt;  // truncated or trailing bytes: not ours to trust
+    index.updateStats();
+    return index;
+}
+
+bool storeFrameIndex(const FrameIndex& index, const QString& storeDir)
+{
+    const auto stamp = stampOf(index.path);
+    if (!stamp || index.frames.empty() || !QDir().mkpath(storeDir))
+        return false;
+    // Written aside and renamed: a reader never sees half a file.
+    QSaveFile f(storePath(index.path, storeDir));
+    if (!f.open(QIODevice::WriteOnly))
+        return false;
+    QDataStream out(&f);
+    out.setVersion(QDataStream::Qt_6_0);
+    out << kMagic << kVersion << stamp->path << stamp->size << stamp->modified_ms;
+    out << index.codec << qint32(index.width) << qint32(index.height) << index.fpsNominal << qint32(index.containerFrames)
+        << index.keyframesKnown << index.timestampsMonotonic << index.warnings << index.timeOrigin_s
+        << quint32(index.frames.size());
+    for (const FrameInfo& fr : index.frames)
+        out << fr.time_s << quint8((fr.keyframe ? 1 : 0) | (fr.duplicate ? 2 : 0) | (fr.timeEstimated ? 4 : 0));
+    if (out.status() != QDataStream::Ok || !f.commit())
+        return false;
+    QDir store(storeDir);
+    const QFileInfoList all = store.entryInfoList({QStringLiteral("*.nbindex")}, QDir::Files, QDir::Time);  // newest first
+    for (qsizetype i = kMaxStored; i < all.size(); ++i)
+        QFile::remove(all[i].absoluteFilePath());
+    return true;
+}
+
+FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progress, const std::atomic_bool* cancel,
+                                 bool* fromStore, const QString& storeDir)
+{
+    const QString dir = storeDir.isEmpty() ? defaultFrameIndexStore() : storeDir;
+    if (auto stored = loadStoredFrameIndex(path, dir)) {
+        if (fromStore)
+            *fromStore = true;
+        if (progress)
+            progress(stored->size(), stored->size());
+        return std::move(*stored);
+    }
+    if (fromStore)
+        *fromStore = false;
+    FrameIndex index = buildFrameIndex(path, progress, cancel);
+    if (!(cancel && cancel->load()))
+        storeFrameIndex(index, dir);
+    return index;
+}
+
+}  // namespace nb::devices

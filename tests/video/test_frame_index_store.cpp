@@ -1,0 +1,161 @@
+// The stored frame index: a real H.264 video indexed once is read back from the store, equal
+// in every frame; a changed video, a damaged or foreign store file and a cancelled build are
+// never taken for a valid index; the store keeps a bounded number of indexes.
+#include "devices/video/frame_index_store.h"
+#include "devices/video/frame_reader.h"
+#include "video_fixtures.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace nb::devices;
+using namespace nb::test;
+
+namespace {
+void compareIndexes(const FrameIndex& a, const FrameIndex& b)
+{
+    QCOMPARE(a.size(), b.size());
+    QCOMPARE(a.codec, b.codec);
+    QCOMPARE(a.width, b.width);
+    QCOMPARE(a.height, b.height);
+    QCOMPARE(a.fpsNominal, b.fpsNominal);
+    QCOMPARE(a.keyframesKnown, b.keyframesKnown);
+    QCOMPARE(a.timeOrigin_s, b.timeOrigin_s);
+    QCOMPARE(a.warnings, b.warnings);
+    QCOMPARE(a.frameDuration(), b.frameDuration());
+    for (int i = 0; i < a.size(); ++i) {
+        QCOMPARE(a.frames[std::size_t(i)].time_s, b.frames[std::size_t(i)].time_s);
+        QCOMPARE(a.frames[std::size_t(i)].keyframe, b.frames[std::size_t(i)].keyframe);
+        QCOMPARE(a.frames[std::size_t(i)].duplicate, b.frames[std::size_t(i)].duplicate);
+    }
+}
+
+QString storeFileIn(const QString& dir)
+{
+    const QStringList files = QDir(dir).entryList({QStringLiteral("*.nbindex")}, QDir::Files);
+    return files.size() == 1 ? QDir(dir).filePath(files.first()) : QString();
+}
+}  // namespace
+
+class TestFrameIndexStore : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString video_, store_;
+
+private slots:
+    void initTestCase()
+    {
+        if (!haveFfmpeg())
+            QSKIP("the ffmpeg tool is needed to make the test videos");
+        video_ = dir_.filePath(QStringLiteral("run.mp4"));
+        VideoSpec spec;
+        spec.rate = QStringLiteral("30000/1001");
+        spec.codes = sequence(60);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-pix_fmt", "yuv420p"};
+        const QString err = writeVideo(video_, spec);
+        QVERIFY2(err.isEmpty(), qPrintable(err));
+        store_ = dir_.filePath(QStringLiteral("store"));
+    }
+
+    void secondOpenComesFromTheStore()
+    {
+        bool fromStore = true;
+        const FrameIndex built = loadOrBuildFrameIndex(video_, {}, nullptr, &fromStore, store_);
+        QVERIFY(!fromStore);
+        QCOMPARE(built.size(), 60);
+        QVERIFY(!storeFileIn(store_).isEmpty());
+        int progressCalls = 0;
+        const FrameIndex again =
+            loadOrBuildFrameIndex(video_, [&](int done, int expected) { progressCalls += done == expected; }, nullptr, &fromStore, store_);
+        QVERIFY(fromStore);
+        QCOMPARE(progressCalls, 1);  // a view waiting on progress hears that it is done
+        compareIndexes(again, built);
+        // And the stored index reads frames as exactly as the built one.
+        FrameReader reader(again, 8);
+        for (int n : {59, 0, 31, 30, 29})
+            QCOMPARE(readCode(reader.read(n).image), n);
+    }
+
+    void aChangedVideoIsIndexedAgain()
+    {
+        QVERIFY(loadStoredFrameIndex(video_, store_));
+        const QString other = dir_.filePath(QStringLiteral("other.mp4"));
+        VideoSpec spec;
+        spec.codes = sequence(45);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "15", "-pix_fmt", "yuv420p"};
+        QVERIFY(writeVideo(other, spec).isEmpty());
+        QFile::remove(video_ + QStringLiteral(".bak"));
+        QVERIFY(QFile::rename(video_, video_ + QStringLiteral(".bak")));
+        QVERIFY(QFile::copy(other, video_));  // same name, other content
+        QVERIFY(!loadStoredFrameIndex(video_, store_));
+        bool fromStore = true;
+        QCOMPARE(loadOrBuildFrameIndex(video_, {}, nullptr, &fromStore, store_).size(), 45);
+        QVERIFY(!fromStore);
+        QVERIFY(loadStoredFrameIndex(video_, store_));
+        QVERIFY(QFile::remove(video_));
+        QVERIFY(QFile::rename(video_ + QStringLiteral(".bak"), video_));
+        QVERIFY(!loadStoredFrameIndex(video_, store_));  // the restored file differs from what was stored last
+        QCOMPARE(loadOrBuildFrameIndex(video_, {}, nullptr, nullptr, store_).size(), 60);
+    }
+
+    void aDamagedStoreIsIgnored_data()
+    {
+        QTest::addColumn<int>("cut");
+        QTest::addColumn<QByteArray>("junk");
+        QTest::newRow("truncated") << 40 << QByteArray();
+        QTest::newRow("trailing bytes") << 0 << QByteArray("xyz");
+        QTest::newRow("not an index") << -1 << QByteArray("time_s,position_mm,force_N\n0,0,0\n");
+    }
+    void aDamagedStoreIsIgnored()
+    {
+        QFETCH(int, cut);
+        QFETCH(QByteArray, junk);
+        QVERIFY(loadOrBuildFrameIndex(video_, {}, nullptr, nullptr, store_).size() == 60);
+        const QString file = storeFileIn(store_);
+        QVERIFY(!file.isEmpty());
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QByteArray bytes = f.readAll();
+        f.close();
+        if (cut > 0)
+            bytes.chop(cut);
+        else if (cut < 0)
+            bytes.clear();
+        bytes += junk;
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(bytes);
+        f.close();
+        QVERIFY(!loadStoredFrameIndex(video_, store_));
+        bool fromStore = true;
+        QCOMPARE(loadOrBuildFrameIndex(video_, {}, nullptr, &fromStore, store_).size(), 60);
+        QVERIFY(!fromStore);
+        QVERIFY(loadStoredFrameIndex(video_, store_));  // and stored afresh
+    }
+
+    void aCancelledBuildIsNotStored()
+    {
+        const QString store = dir_.filePath(QStringLiteral("cancelled"));
+        std::atomic_bool cancel{false};
+        const FrameIndex partial =
+            loadOrBuildFrameIndex(video_, [&](int done, int) { cancel = cancel || done >= 10; }, &cancel, nullptr, store);
+        QVERIFY2(partial.size() >= 10 && partial.size() < 60, qPrintable(QString::number(partial.size())));
+        QVERIFY(!loadStoredFrameIndex(video_, store));
+    }
+
+    void anUnwritableStoreOnlyCostsTheShortcut()
+    {
+        const QString blocker = dir_.filePath(QStringLiteral("a-file"));
+        QFile f(blocker);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.close();
+        bool fromStore = true;
+        // The store "directory" is a file: nothing can be stored, the index is still built.
+        QCOMPARE(loadOrBuildFrameIndex(video_, {}, nullptr, &fromStore, blocker + QStringLiteral("/store")).size(), 60);
+        QVERIFY(!fromStore);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFrameIndexStore)
+#include "test_frame_index_store.moc"
