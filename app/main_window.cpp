@@ -4,6 +4,7 @@
 
 #include "core/events.h"
 #include "core/fit_error.h"
+#include "core/live_events.h"
 #include "devices/acquisition_engine.h"
 #include "devices/device_error.h"
 #include "devices/device_set.h"
@@ -200,6 +201,9 @@ void MainWindow::attachEngine()
         lastRunPath_ = path;
         plots_->clear();
         runT0_ = lastT_;
+        liveEvents_.reset();
+        if (runIsLinear_)
+            liveEvents_.emplace();
         sessionView_->setBusyPath(path);
         showMessage(tr("Recording %1").arg(QDir::toNativeSeparators(path)));
         sessionView_->refresh();
@@ -479,6 +483,9 @@ void MainWindow::drain()
             plots_->clear();
         }
         plots_->appendSamples(t_, x_, f_);
+        if (recording_ && liveEvents_)
+            for (const LiveEvent& e : liveEvents_->feed(t_, x_, f_))
+                plots_->addEvent(e.time_s, e.name == QLatin1String("contact") ? tr("contact") : tr("puncture"));
         if (wizard_)
             for (const devices::Sample& s : drained_)
                 wizard_->addSample(s.time_s, s.volts);
@@ -537,6 +544,9 @@ void MainWindow::markDetectedEvents()
         const double peak = *std::max_element(run.force_N.begin(), run.force_N.end()) - events.zeroOffset_N;
         if (events.puncture.force_N < std::max(0.1, 0.2 * peak) || events.puncture.position_mm <= events.contact.position_mm)
             return;
+        // The whole run places them better than the live marks did: those give way.
+        plots_->removeEvents(tr("contact"));
+        plots_->removeEvents(tr("puncture"));
         plots_->addEvent(events.contact.time_s, tr("contact"));
         plots_->addEvent(events.puncture.time_s, tr("puncture"));
         for (const RunEvent& e : events.internalPunctures)

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/live_events.h"
 #include "core/session.h"
 
 #include <QMainWindow>
@@ -121,6 +122,7 @@ private:
     double lastT_ = 0.0;
     bool recording_ = false;
     bool runIsLinear_ = false;
+    std::optional<LiveEventDetector> liveEvents_;  // marks contact and puncture during a linear run
     QString lastRunPath_, lastEndReason_;
     int runsEnded_ = 0;
     QStringList recovered_;

@@ -1022,7 +1022,7 @@ Befehle:
         <translation>Herauszoomen auf alle Messwerte des Laufs</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+208"/>
         <source>limit %1 N%2 · margin %3 N</source>
         <translation>Grenze %1 N%2 · Abstand %3 N</translation>
     </message>
@@ -1171,7 +1171,7 @@ Befehle:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+59"/>
+        <location filename="../app/main_window.cpp" line="+60"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1226,7 +1226,7 @@ Befehle:
         <translation>Not-Halt</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+78"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1396,7 +1396,7 @@ Befehle:
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+59"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
@@ -1406,12 +1406,16 @@ Befehle:
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="-32"/>
+        <location line="+60"/>
+        <location line="+2"/>
         <source>contact</source>
         <translation>Kontakt</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-62"/>
+        <location line="+61"/>
+        <location line="+2"/>
         <source>puncture</source>
         <translation>Durchstich</translation>
     </message>
@@ -1426,7 +1430,7 @@ Befehle:
         <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
     </message>
     <message>
-        <location line="-286"/>
+        <location line="-292"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -1010,7 +1010,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+208"/>
         <source>limit %1 N%2 · margin %3 N</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1159,7 +1159,7 @@ Commands:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+59"/>
+        <location filename="../app/main_window.cpp" line="+60"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1214,7 +1214,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+78"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1383,7 +1383,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+59"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1393,12 +1393,16 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="-32"/>
+        <location line="+60"/>
+        <location line="+2"/>
         <source>contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-62"/>
+        <location line="+61"/>
+        <location line="+2"/>
         <source>puncture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1413,7 +1417,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-286"/>
+        <location line="-292"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

@@ -193,21 +193,24 @@ void ForcePlots::setForceLimit(double force_N)
 
 void ForcePlots::addEvent(double time_s, const QString& label)
 {
-    events_.push_back({time_s, label});
+    Event event{time_s, label, {}};
+    const std::size_t slot = events_.size() + 1;  // staggers the labels of nearby events
     for (QCustomPlot* plot : {forceTime_, positionTime_}) {
         auto* line = new QCPItemStraightLine(plot);
         line->setPen(QPen(QColor(230, 140, 0), 1.0, Qt::DotLine));
         line->point1->setCoords(time_s, 0.0);
         line->point2->setCoords(time_s, 1.0);
+        event.items.push_back(line);
         if (label.isEmpty())
             continue;
         auto* text = new QCPItemText(plot);
         text->position->setTypeX(QCPItemPosition::ptPlotCoords);
         text->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-        text->position->setCoords(time_s, 0.12 + 0.08 * double(events_.size() % 3));
+        text->position->setCoords(time_s, 0.12 + 0.08 * double(slot % 3));
         text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
         text->setText(label);
         text->setColor(QColor(180, 100, 0));
+        event.items.push_back(text);
     }
     // On the force-position plot the event sits on the curve at its sample.
     const auto it = std::lower_bound(t_.begin(), t_.end(), time_s);
@@ -216,20 +219,40 @@ void ForcePlots::addEvent(double time_s, const QString& label)
         auto* mark = new QCPItemTracer(forcePosition_);
         mark->position->setCoords(x_[i], f_[i]);
         mark->setStyle(QCPItemTracer::tsCircle);
-        mark->setSize(8);
+        mark->setSize(label.isEmpty() ? 5 : 8);
         mark->setPen(QPen(QColor(230, 140, 0), 2));
-        if (label.isEmpty()) {
-            mark->setSize(5);
-            dirty_ = true;
-            return;
+        event.items.push_back(mark);
+        if (!label.isEmpty()) {
+            auto* text = new QCPItemText(forcePosition_);
+            text->position->setCoords(x_[i], f_[i]);
+            // Text on the side away from the nearer edge: the newest point sits at the right edge.
+            const Qt::Alignment side = x_[i] > 0.5 * (xMin_ + xMax_) ? Qt::AlignRight : Qt::AlignLeft;
+            text->setPositionAlignment(side | (slot % 2 ? Qt::AlignTop : Qt::AlignBottom));
+            text->setText(label);
+            text->setColor(QColor(180, 100, 0));
+            event.items.push_back(text);
         }
-        auto* text = new QCPItemText(forcePosition_);
-        text->position->setCoords(x_[i], f_[i]);
-        text->setPositionAlignment(events_.size() % 2 ? Qt::AlignRight | Qt::AlignTop : Qt::AlignLeft | Qt::AlignBottom);
-        text->setText(label);
-        text->setColor(QColor(180, 100, 0));
     }
+    events_.push_back(std::move(event));
     dirty_ = true;
+}
+
+void ForcePlots::removeEvents(const QString& label)
+{
+    const auto gone = std::stable_partition(events_.begin(), events_.end(), [&](const Event& e) { return e.label != label; });
+    for (auto it = gone; it != events_.end(); ++it)
+        for (QCPAbstractItem* item : it->items)
+            item->parentPlot()->removeItem(item);
+    events_.erase(gone, events_.end());
+    dirty_ = true;
+}
+
+QStringList ForcePlots::eventLabels() const
+{
+    QStringList labels;
+    for (const Event& e : events_)
+        labels << e.label;
+    return labels;
 }
 
 void ForcePlots::setFollow(bool on)

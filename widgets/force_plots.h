@@ -5,11 +5,13 @@
 // recording costs the same to draw as a slow one.
 
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 #include <span>
 #include <vector>
 
 class QCustomPlot;
+class QCPAbstractItem;
 class QCPGraph;
 class QCPCurve;
 class QCPItemStraightLine;
@@ -34,6 +36,9 @@ public:
     // Marks a detected event (puncture, contact, ...) at a time; an empty label marks it
     // without text (minor events that would clutter the plot).
     void addEvent(double time_s, const QString& label);
+    // Removes the marks of every event with this label (live marks replaced by refined ones).
+    void removeEvents(const QString& label);
+    QStringList eventLabels() const;
 
     // Follow: the time axis shows the last followWindow() seconds and the axes track the
     // data. Zooming or dragging a plot turns following off.
@@ -95,6 +100,7 @@ private:
     struct Event {
         double time_s;
         QString label;
+        std::vector<QCPAbstractItem*> items;  // its marks on the three plots
     };
     std::vector<Event> events_;
     double limit_N_ = 0.0;

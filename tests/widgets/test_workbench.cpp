@@ -472,6 +472,29 @@ private slots:
         QCOMPARE(r.run.meta(QStringLiteral("organ")).value_or(QString()), QStringLiteral("bovine liver"));
         QCOMPARE(r.run.meta(QStringLiteral("tip")).value_or(QString()), QStringLiteral("diamond"));
     }
+
+    // Contact and puncture are marked while the needle still moves, and the marks give way to
+    // the whole run's when it ends: one of each.
+    void liveEventsMarkedDuringTheRun()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setMotion(w, 10.0, 45.0);  // the simulated liver 1 punctures at ~20 mm: 2 s in, 2.5 s to go
+        prepare(w);
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().recording, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.plots()->eventLabels().contains(QStringLiteral("contact")), 20000);
+        QVERIFY(w.controlPanel()->interlockState().moving);
+        QTRY_VERIFY_WITH_TIMEOUT(w.plots()->eventLabels().contains(QStringLiteral("puncture")), 20000);
+        QVERIFY2(w.controlPanel()->interlockState().recording, "the puncture was marked only after the run");
+        QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_live_events.png")));
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        const QStringList labels = w.plots()->eventLabels();
+        QCOMPARE(labels.count(QStringLiteral("contact")), 1);
+        QCOMPARE(labels.count(QStringLiteral("puncture")), 1);
+    }
 };
 
 QTEST_MAIN(TestWorkbench)
