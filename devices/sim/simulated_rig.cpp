@@ -1,9 +1,8 @@
 #include "simulated_rig.h"
-
-#include "devices/sim/capsule_design.h"
 #include "core/tr.h"
 
 #include "devices/device_error.h"
+#include "devices/sim/capsule_design.h"
 #include "devices/sim/rig_world.h"
 
 #include <QCoreApplication>
