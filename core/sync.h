@@ -1,12 +1,14 @@
 #pragma once
 // One timeline for the video and the force record, in recording time:
 //   video time = (1 + drift) · recording time + offset
-// The offset is set by marking one event in both, or found by correlating a motion signal
+// The offset is set by marking one event in both (two events, apart, set the drift too), or
+// found by correlating a motion signal
 // from the video with the needle's speed, coarse to fine, anchored on the motion onset
 // (a sinusoid repeats, so correlation alone has many equal peaks).
 
 #include "run.h"
 
+#include <cmath>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -23,6 +25,15 @@ struct TimelineMapping {
     static TimelineMapping fromEvent(double recording_s, double video_s, double drift = 0.0)
     {
         return {video_s - (1.0 + drift) * recording_s, drift};
+    }
+    // The mapping that puts two events on their instants in both: offset and drift. Needs the
+    // events apart in recording time (nullopt otherwise).
+    static std::optional<TimelineMapping> fromEvents(double recording1_s, double video1_s, double recording2_s, double video2_s)
+    {
+        if (!(std::abs(recording2_s - recording1_s) > 1e-6))
+            return std::nullopt;
+        const double drift = (video2_s - video1_s) / (recording2_s - recording1_s) - 1.0;
+        return fromEvent(recording1_s, video1_s, drift);
     }
     void nudge(int frames, double frameDuration_s) { offset_s += frames * frameDuration_s; }
     friend bool operator==(const TimelineMapping&, const TimelineMapping&) = default;

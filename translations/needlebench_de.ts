@@ -1489,12 +1489,12 @@ Befehle:
     </message>
     <message>
         <location line="+1"/>
-        <location line="+275"/>
+        <location line="+268"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-275"/>
+        <location line="-268"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -1591,23 +1591,7 @@ Befehle:
         <translation>das Ereignis liegt am Cursor in der Kraftaufzeichnung</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Event marked in the force record at %1 s%2</source>
-        <translation>Ereignis in der Kraftaufzeichnung bei %1 s markiert%2</translation>
-    </message>
-    <message>
         <location line="+1"/>
-        <location line="+9"/>
-        <source>; offset set</source>
-        <translation>; Versatz gesetzt</translation>
-    </message>
-    <message>
-        <location line="-9"/>
-        <source>; now step the video to it and mark it there</source>
-        <translation>; jetzt das Video dorthin schalten und es dort markieren</translation>
-    </message>
-    <message>
-        <location line="+2"/>
         <source>Mark event in video</source>
         <translation>Ereignis im Video markieren</translation>
     </message>
@@ -1617,17 +1601,7 @@ Befehle:
         <translation>das Ereignis ist im gezeigten Bild</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Event marked in the video at %1 s%2</source>
-        <translation>Ereignis im Video bei %1 s markiert%2</translation>
-    </message>
-    <message>
         <location line="+1"/>
-        <source>; now mark it in the force record</source>
-        <translation>; jetzt in der Kraftaufzeichnung markieren</translation>
-    </message>
-    <message>
-        <location line="+2"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
@@ -1697,12 +1671,12 @@ Befehle:
         <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -1712,7 +1686,32 @@ Befehle:
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+18"/>
+        <source>Event marked in the force record at %1 s; now step the video to it and mark it there</source>
+        <translation>Ereignis in der Kraftaufzeichnung bei %1 s markiert; nun das Video dorthin schalten und es dort markieren</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Event marked in the video at %1 s; now mark it in the force record</source>
+        <translation>Ereignis im Video bei %1 s markiert; nun in der Kraftaufzeichnung markieren</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Offset and drift set from two events (%1 s apart): drift %2 ppm</source>
+        <translation>Versatz und Drift aus zwei Ereignissen gesetzt (%1 s auseinander): Drift %2 ppm</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: check both marks; the drift was kept</source>
+        <translation>Versatz gesetzt. Mit dem vorigen Ereignis ergäbe sich eine Drift von %1 ppm, die keine Uhr hat: bitte beide Markierungen prüfen; die Drift wurde beibehalten</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Offset set; mark a second event, a second or more away, in both to set the drift too</source>
+        <translation>Versatz gesetzt; ein zweites Ereignis, mindestens eine Sekunde entfernt, in beiden markieren, um auch die Drift zu setzen</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>%1 overlaps another phase on %2: not added</source>
         <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
     </message>
@@ -3402,7 +3401,7 @@ Befehle:
     </message>
     <message>
         <location line="+47"/>
-        <location filename="../devices/sim/simulated_rig.cpp" line="+52"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+51"/>
         <source>simulated load cell</source>
         <translation>simulierte Kraftmessdose</translation>
     </message>

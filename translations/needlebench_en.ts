@@ -1476,12 +1476,12 @@ Commands:
     </message>
     <message>
         <location line="+1"/>
-        <location line="+275"/>
+        <location line="+268"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-275"/>
+        <location line="-268"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1578,23 +1578,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Event marked in the force record at %1 s%2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location line="+1"/>
-        <location line="+9"/>
-        <source>; offset set</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-9"/>
-        <source>; now step the video to it and mark it there</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
         <source>Mark event in video</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1604,17 +1588,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Event marked in the video at %1 s%2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location line="+1"/>
-        <source>; now mark it in the force record</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1684,12 +1658,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1699,7 +1673,32 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+18"/>
+        <source>Event marked in the force record at %1 s; now step the video to it and mark it there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Event marked in the video at %1 s; now mark it in the force record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Offset and drift set from two events (%1 s apart): drift %2 ppm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: check both marks; the drift was kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Offset set; mark a second event, a second or more away, in both to set the drift too</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>%1 overlaps another phase on %2: not added</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3342,7 +3341,7 @@ Commands:
     </message>
     <message>
         <location line="+47"/>
-        <location filename="../devices/sim/simulated_rig.cpp" line="+52"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+51"/>
         <source>simulated load cell</source>
         <translation type="unfinished"></translation>
     </message>

@@ -192,22 +192,8 @@ void ReviewWorkspace::buildUi()
         m.nudge(1, frameDuration());
         setMapping(m);
     });
-    syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] {
-        markRecording_ = cursor_;
-        if (markVideo_)
-            setMapping(TimelineMapping::fromEvent(*markRecording_, *markVideo_, mapping_.drift));
-        showStatus(tr("Event marked in the force record at %1 s%2").arg(cursor_, 0, 'f', 3)
-                       .arg(markVideo_ ? tr("; offset set") : tr("; now step the video to it and mark it there")));
-    });
-    syncButton(tr("Mark event in video"), tr("the event is in the frame shown"), [this] {
-        if (!index_ || frame_ < 0)
-            return;
-        markVideo_ = index_->frames[std::size_t(frame_)].time_s;
-        if (markRecording_)
-            setMapping(TimelineMapping::fromEvent(*markRecording_, *markVideo_, mapping_.drift));
-        showStatus(tr("Event marked in the video at %1 s%2").arg(*markVideo_, 0, 'f', 3)
-                       .arg(markRecording_ ? tr("; offset set") : tr("; now mark it in the force record")));
-    });
+    syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] { markEventInRecording(); });
+    syncButton(tr("Mark event in video"), tr("the event is in the frame shown"), [this] { markEventInVideo(); });
     syncButton(tr("Auto sync"), tr("correlate motion in the drawn region with the needle speed"), [this] { startAutoSync(); });
     syncLabel_ = new QLabel(this);
     syncLabel_->setToolTip(tr("r: correlation of the video motion with the needle speed at the offset found; "
@@ -306,6 +292,9 @@ QString ReviewWorkspace::status() const { return status_->text(); }
 
 bool ReviewWorkspace::openRun(const QString& path)
 {
+    markRecording_.reset();
+    markVideo_.reset();
+    markedEvent_.reset();
     try {
         Run run = readRunFile(path).run;
         Labels labels;
@@ -339,6 +328,10 @@ bool ReviewWorkspace::openRun(const QString& path)
 
 void ReviewWorkspace::openVideo(const QString& path)
 {
+    // Marks belong to one run and one video.
+    markRecording_.reset();
+    markVideo_.reset();
+    markedEvent_.reset();
     videoPath_ = path;
     index_.reset();
     frame_ = -1;
@@ -406,6 +399,53 @@ void ReviewWorkspace::setSpeed(double factor)
     speed_ = std::clamp(factor, 0.1, 2.0);
     playStartCursor_ = cursor_;
     playClock_.restart();
+}
+
+void ReviewWorkspace::markEventInRecording()
+{
+    markRecording_ = cursor_;
+    if (markVideo_)
+        applyMarkedEvent();
+    else
+        showStatus(tr("Event marked in the force record at %1 s; now step the video to it and mark it there").arg(cursor_, 0, 'f', 3));
+}
+
+void ReviewWorkspace::markEventInVideo()
+{
+    if (!index_ || frame_ < 0)
+        return;
+    markVideo_ = index_->frames[std::size_t(frame_)].time_s;
+    if (markRecording_)
+        applyMarkedEvent();
+    else
+        showStatus(tr("Event marked in the video at %1 s; now mark it in the force record").arg(*markVideo_, 0, 'f', 3));
+}
+
+void ReviewWorkspace::applyMarkedEvent()
+{
+    const double r = *markRecording_, v = *markVideo_;
+    markRecording_.reset();
+    markVideo_.reset();
+    // Two events at least a second apart give the drift as well; a drift over 1 % is no
+    // clock's, but a mark on the wrong frame.
+    constexpr double kMinApart_s = 1.0, kMaxDrift = 0.01;
+    const auto both = markedEvent_ && std::abs(r - markedEvent_->first) >= kMinApart_s
+                          ? TimelineMapping::fromEvents(markedEvent_->first, markedEvent_->second, r, v)
+                          : std::nullopt;
+    if (both && std::abs(both->drift) <= kMaxDrift) {
+        setMapping(*both);
+        showStatus(tr("Offset and drift set from two events (%1 s apart): drift %2 ppm")
+                       .arg(std::abs(r - markedEvent_->first), 0, 'f', 2)
+                       .arg(both->drift * 1e6, 0, 'f', 0));
+    } else {
+        setMapping(TimelineMapping::fromEvent(r, v, mapping_.drift));
+        if (both)
+            showStatus(tr("Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: "
+                          "check both marks; the drift was kept").arg(both->drift * 1e6, 0, 'f', 0));
+        else
+            showStatus(tr("Offset set; mark a second event, a second or more away, in both to set the drift too"));
+    }
+    markedEvent_ = {r, v};
 }
 
 void ReviewWorkspace::setMapping(const TimelineMapping& m)

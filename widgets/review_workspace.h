@@ -55,6 +55,10 @@ public:
     void setSpeed(double factor);  // 0.1 .. 2
     TimelineMapping mapping() const { return mapping_; }
     void setMapping(const TimelineMapping& m);
+    // Marking one event in both sets the offset; a second one, a second or more away, sets the
+    // drift too (the two buttons of the sync bar).
+    void markEventInRecording();  // at the cursor
+    void markEventInVideo();      // the frame shown
     int currentFrame() const { return frame_; }
     QString status() const;
 
@@ -106,6 +110,8 @@ private:
     QString videoPath_;
     std::map<QString, std::pair<QString, double>> pending_;  // track -> (label, start)
     std::optional<double> markRecording_, markVideo_;
+    std::optional<std::pair<double, double>> markedEvent_;  // the last event marked in both (recording, video)
+    void applyMarkedEvent();
     std::optional<SyncResult> pendingSync_;
     double speed_ = 1.0;
     double playStartCursor_ = 0.0;

@@ -251,6 +251,61 @@ private slots:
         QVERIFY(ws.grab().save(shots + "/review_workspace.png"));
     }
 
+    // Marking one event in both sets the offset; a second, three seconds later, the drift too.
+    // The frames are picked so that the marks mean a video clock 1001 ppm fast.
+    void twoMarkedEventsSetOffsetAndDrift()
+    {
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QVERIFY(ws.openRun(run_));
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        ws.openVideo(video_);
+        QVERIFY(opened.wait(60000));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == 0, 20000);
+        const double fps = 29.97;  // what the simulated imaging renders at
+        // The frame for a new cursor arrives from the decoder thread: wait for it before stepping.
+        auto moveCursor = [&](double t) {
+            ws.setCursorTime(t);
+            QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), int(std::floor(ws.mapping().toVideo(t) * fps + 1e-9)), 20000);
+        };
+        auto showFrame = [&](int n) {
+            ws.stepFrames(n - ws.currentFrame());
+            QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), n, 20000);
+        };
+
+        moveCursor(0.5);
+        ws.markEventInRecording();
+        showFrame(30);
+        ws.markEventInVideo();
+        QVERIFY2(std::abs(ws.mapping().offset_s - (30 / fps - 0.5)) < 1e-6,
+                 qPrintable(QStringLiteral("offset %1: %2").arg(ws.mapping().offset_s, 0, 'g', 10).arg(ws.status())));
+        QCOMPARE(ws.mapping().drift, 0.0);
+        QVERIFY(ws.status().contains(QStringLiteral("second event")));
+
+        moveCursor(3.5);
+        ws.markEventInRecording();
+        showFrame(120);
+        ws.markEventInVideo();
+        const double drift = (120 - 30) / fps / 3.0 - 1.0;  // 1001 ppm
+        QVERIFY2(std::abs(ws.mapping().drift - drift) < 1e-6, qPrintable(ws.status()));
+        QVERIFY2(std::abs(ws.mapping().toVideo(0.5) - 30 / fps) < 1e-6 && std::abs(ws.mapping().toVideo(3.5) - 120 / fps) < 1e-6,
+                 qPrintable(ws.status()));
+        QVERIFY(ws.status().contains(QStringLiteral("1001 ppm")));
+        // Both marked instants now show their frames.
+        ws.setCursorTime(3.5 + 1e-4);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), 120, 20000);
+
+        // A third pair that would mean a 5 % clock error is a wrong mark: only the offset moves.
+        moveCursor(1.5);
+        ws.markEventInRecording();
+        showFrame(ws.currentFrame() + 4);
+        const double before = ws.mapping().drift;
+        ws.markEventInVideo();
+        QCOMPARE(ws.mapping().drift, before);
+        QVERIFY2(ws.status().contains(QStringLiteral("no clock has")), qPrintable(ws.status()));
+    }
+
     void badFilesAreReported()
     {
         nb::ReviewWorkspace ws;

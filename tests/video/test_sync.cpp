@@ -56,6 +56,13 @@ private slots:
         const nb::TimelineMapping d{1.0, 1e-3};
         QVERIFY(std::abs(d.toRecording(d.toVideo(123.0)) - 123.0) < 1e-9);
         QVERIFY(std::abs(d.toVideo(1000.0) - 1002.0) < 1e-9);
+        // Two events: a video clock 500 ppm fast, started 0.7 s before the recording.
+        const nb::TimelineMapping truth{0.7, 5e-4};
+        const auto two = nb::TimelineMapping::fromEvents(2.0, truth.toVideo(2.0), 62.0, truth.toVideo(62.0));
+        QVERIFY(two);
+        QVERIFY(std::abs(two->drift - 5e-4) < 1e-12);
+        QVERIFY(std::abs(two->offset_s - 0.7) < 1e-12);
+        QVERIFY(!nb::TimelineMapping::fromEvents(2.0, 2.7, 2.0, 2.8));  // one instant cannot give a rate
     }
 
     void onsetAndCorrelationOnSynthetic()
