@@ -219,7 +219,6 @@ void MainWindow::attachEngine()
         plots_->addEvent(lastT_ - runT0_, tr("force limit"));
     });
     connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
-
 }
 
 void MainWindow::chooseDevices()

@@ -91,7 +91,7 @@ private:
     // A new engine on `spec` (nullopt: the simulated rig); `problem` says why it fell back.
     std::unique_ptr<devices::AcquisitionEngine> makeEngine(const std::optional<devices::DeviceSpec>& spec, QString* problem,
                                                            std::optional<double> forceLimit_N = std::nullopt);
-    // Connects the engine's signals to the window and hands it the settings the window holds.
+    // Connects the engine's signals to the window (the force limit and calibration are the caller's).
     void attachEngine();
     void drain();
     void onStatus(const devices::EngineStatus& status);

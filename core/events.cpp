@@ -204,11 +204,9 @@ RunEvent eventAt(const Run& run, std::size_t i, double offset)
     return {i, run.time_s[i], run.position_mm[i], run.force_N[i] - offset};
 }
 
-}  // namespace
-
-namespace {
 // Share of the loading (contact to puncture) the contact fit uses.
 constexpr double kContactFitSpan = 0.55;
+
 }  // namespace
 
 ContactFit fitContact(std::span<const double> pos, std::span<const double> force)
@@ -460,7 +458,7 @@ void applyEventLabels(InsertionEvents& ev, const Run& run, const Labels& labels,
         ev.puncture.index = best;
         ev.puncture.time_s = run.time_s[best];
         ev.puncture.position_mm = run.position_mm[best];
-        ev.puncture.force_N = run.force_N[best] - ev.zeroOffset_N;
+        ev.puncture.force_N = trailingMean(run.force_N, best, 5) - ev.zeroOffset_N;  // as detection measures it
     }
     if (!(ev.puncture.position_mm > ev.contact.position_mm))
         throw FitError(QCoreApplication::translate("nb::fit", "the puncture (%1 mm) is not past the contact (%2 mm)")

@@ -19,14 +19,6 @@ namespace {
 // Item data of the "type it in" entries: they take their spec from the line edit beside.
 const QString kOtherU6 = QStringLiteral("u6:?");
 const QString kOtherPort = QStringLiteral("zaber:?");
-
-int indexOfData(const QComboBox* box, const QString& data)
-{
-    for (int i = 0; i < box->count(); ++i)
-        if (box->itemData(i).toString() == data)
-            return i;
-    return -1;
-}
 }  // namespace
 
 DeviceDialog::DeviceDialog(const devices::DeviceSpec& spec, Lister lister, QWidget* parent)
@@ -96,7 +88,8 @@ DeviceDialog::DeviceDialog(const devices::DeviceSpec& spec, Lister lister, QWidg
 
 void DeviceDialog::rescan()
 {
-    fill(spec().daq, spec().stage);
+    const devices::DeviceSpec chosen = spec();
+    fill(chosen.daq, chosen.stage);
 }
 
 void DeviceDialog::fill(const QString& daq, const QString& stage)
@@ -130,16 +123,16 @@ void DeviceDialog::fill(const QString& daq, const QString& stage)
                     (problems.isEmpty() ? QString() : QStringLiteral("; ") + problems.join(QStringLiteral("; "))));
 
     // Put back what was chosen, typing it in when it is not connected now.
-    int i = indexOfData(daq_, daq);
+    int i = daq_->findData(daq);
     if (i < 0 && daq.startsWith(QLatin1String("u6:"))) {
         daqSerial_->setText(daq.mid(3));
-        i = indexOfData(daq_, kOtherU6);
+        i = daq_->findData(kOtherU6);
     }
     daq_->setCurrentIndex(std::max(0, i));
-    int j = indexOfData(stage_, stage);
+    int j = stage_->findData(stage);
     if (j < 0 && stage.startsWith(QLatin1String("zaber:"))) {
         port_->setText(stage.mid(6));
-        j = indexOfData(stage_, kOtherPort);
+        j = stage_->findData(kOtherPort);
     }
     stage_->setCurrentIndex(std::max(0, j));
     updateEnabled();
