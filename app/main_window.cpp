@@ -414,7 +414,7 @@ CalibrationWizard* MainWindow::openCalibrationWizard()
         wizard_->setAttribute(Qt::WA_DeleteOnClose);
         wizard_->setDwell(options_.calibrationDwell_s);
         if (auto rig = engine_->rig())
-            wizard_->setLoadMassHook([rig](double grams) { rig->setLoadMass_g(grams); });
+            wizard_->setLoadMassHook([rig](double grams) { return std::optional(rig->setLoadMass_g(grams)); });
         connect(wizard_, &CalibrationWizard::calibrationAccepted, this, &MainWindow::useCalibration);
         connect(wizard_, &QDialog::finished, this, [this] {
             if (auto rig = engine_->rig())

@@ -223,12 +223,14 @@ void CalibrationWizard::beginRow(int row)
     const bool was = measuringRow_ >= 0;
     measuringRow_ = row;
     startTime_ = -1.0;
-    notBefore_ = deviceNow_;
+    // Samples already seen (the rest of this batch too) were taken before the mass changed.
+    notBefore_ = std::max(deviceNow_, lastSample_);
     sum_ = 0.0;
     count_ = 0;
     table_->selectRow(row);
     if (loadMass_)
-        loadMass_(massAt(row));
+        if (const auto from = loadMass_(massAt(row)))
+            notBefore_ = std::max(notBefore_, *from);
     prompt_->setText(loadMass_ ? tr("Measuring %1 g for %2 s…").arg(massAt(row)).arg(dwell_s_)
                                : tr("Measuring %1 g for %2 s: keep the mass hanging still…").arg(massAt(row)).arg(dwell_s_));
     if (!was)
@@ -237,7 +239,8 @@ void CalibrationWizard::beginRow(int row)
 
 void CalibrationWizard::addSample(double time_s, double volts)
 {
-    if (measuringRow_ < 0 || time_s < notBefore_)
+    lastSample_ = std::max(lastSample_, time_s);
+    if (measuringRow_ < 0 || time_s <= notBefore_)
         return;
     if (startTime_ < 0.0)
         startTime_ = time_s;

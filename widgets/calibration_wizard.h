@@ -8,6 +8,7 @@
 
 #include <QDialog>
 #include <functional>
+#include <optional>
 
 class QCustomPlot;
 class QLabel;
@@ -26,9 +27,11 @@ public:
     // Averaging time per mass (2 s in the thesis; tests use less).
     void setDwell(double seconds);
     double dwell() const { return dwell_s_; }
-    // Puts a mass on the sensor without the operator (the simulated rig). Without it the
-    // wizard asks the operator to hang each mass and press Measure.
-    void setLoadMassHook(std::function<void(double grams)> hook) { loadMass_ = std::move(hook); }
+    // Puts a mass on the sensor without the operator (the simulated rig) and says from which
+    // device time every sample carries it, when it knows. Without a hook the wizard asks the
+    // operator to hang each mass and press Measure.
+    using LoadMassHook = std::function<std::optional<double>(double grams)>;
+    void setLoadMassHook(LoadMassHook hook) { loadMass_ = std::move(hook); }
     // Masses from..to in steps (grams); replaces the table.
     void setMasses(double from_g, double to_g, double step_g);
 
@@ -72,7 +75,7 @@ private:
 
     QString sensor_;
     double dwell_s_ = 2.0;
-    std::function<void(double)> loadMass_;
+    LoadMassHook loadMass_;
     QTableWidget* table_ = nullptr;
     QCustomPlot* plot_ = nullptr;
     QLabel* fitLabel_ = nullptr;
@@ -89,6 +92,7 @@ private:
     double startTime_ = -1.0;
     double deviceNow_ = -1.0;
     double notBefore_ = -1.0;
+    double lastSample_ = -1.0;  // device time of the newest sample seen
     double sum_ = 0.0;
     int count_ = 0;
     bool hasFit_ = false;

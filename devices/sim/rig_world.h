@@ -30,7 +30,7 @@ public:
     void sensorStop();
     void sensorRead(std::vector<VoltageSample>& out, std::chrono::milliseconds timeout);
 
-    void setLoadMass_g(double g);
+    double setLoadMass_g(double g);
     void injectFault(Fault f, double at_s);
     double time_s() const;
     GroundTruth truth() const;

@@ -239,10 +239,12 @@ void SimulatedRig::World::sensorRead(std::vector<VoltageSample>& out, std::chron
     }
 }
 
-void SimulatedRig::World::setLoadMass_g(double g)
+double SimulatedRig::World::setLoadMass_g(double g)
 {
     std::lock_guard lock(m_);
     loadMass_g_ = g;
+    // Samples up to the world's time are already taken: the mass is in every one after it.
+    return t_ - t0_;
 }
 
 void SimulatedRig::World::injectFault(Fault f, double at_s)
@@ -352,7 +354,7 @@ SimulatedRig::SimulatedRig(RigConfig config) : config_(std::move(config))
 
 SimulatedRig::~SimulatedRig() = default;
 
-void SimulatedRig::setLoadMass_g(double grams) { world_->setLoadMass_g(grams); }
+double SimulatedRig::setLoadMass_g(double grams) { return world_->setLoadMass_g(grams); }
 void SimulatedRig::injectFault(Fault fault, double at_s) { world_->injectFault(fault, at_s); }
 double SimulatedRig::simTime_s() const { return world_->time_s(); }
 GroundTruth SimulatedRig::truth() const { return world_->truth(); }

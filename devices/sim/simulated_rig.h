@@ -76,8 +76,9 @@ public:
     const RigConfig& config() const { return config_; }
     const TissuePreset& tissue() const { return tissue_; }
 
-    // A mass hung on the load cell (calibration wizard); grams, 0 = nothing.
-    void setLoadMass_g(double grams);
+    // A mass hung on the load cell (calibration wizard); grams, 0 = nothing. Returns the sensor
+    // stream's device time after which every sample carries it.
+    double setLoadMass_g(double grams);
     // Takes effect at sim time `at_s` (or at once). Fault::None clears every fault.
     void injectFault(Fault fault, double at_s = 0.0);
 

@@ -259,7 +259,7 @@ private slots:
         QCOMPARE(wizard->worstRow(), -1);
 
         // A mass mislabelled by the operator (150 g row measured with 230 g on the hook).
-        wizard->setLoadMassHook([&w](double g) { w.engine()->rig()->setLoadMass_g(g == 150.0 ? 230.0 : g); });
+        wizard->setLoadMassHook([&w](double g) { return std::optional(w.engine()->rig()->setLoadMass_g(g == 150.0 ? 230.0 : g)); });
         wizard->table()->selectRow(3);
         wizard->measureCurrent();
         QTRY_VERIFY_WITH_TIMEOUT(!wizard->isMeasuring(), 60000);
