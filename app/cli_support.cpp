@@ -47,4 +47,15 @@ void printJson(Io io, const QJsonObject& object)
     io.out << QJsonDocument(object).toJson(QJsonDocument::Indented);
 }
 
+std::optional<int> parseStopAt(const QString& value)
+{
+    if (value == QLatin1String("puncture"))
+        return 1;
+    if (!value.startsWith(QLatin1String("puncture:")))
+        return std::nullopt;
+    bool ok = false;
+    const int n = value.mid(9).toInt(&ok);
+    return ok && n >= 1 ? std::optional(n) : std::nullopt;
+}
+
 }  // namespace nb::cli

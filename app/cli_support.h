@@ -6,6 +6,7 @@
 #include <QCommandLineParser>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <optional>
 
 namespace nb::cli {
 
@@ -17,5 +18,8 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
                int minPositional, int maxPositional, int* exitCode);
 
 void printJson(Io io, const QJsonObject& object);
+
+// `--stop-at`: "puncture" is 1, "puncture:N" is N (N >= 1); nullopt for anything else.
+std::optional<int> parseStopAt(const QString& value);
 
 }  // namespace nb::cli

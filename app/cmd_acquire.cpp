@@ -8,7 +8,7 @@
 #include "devices/acquisition_engine.h"
 #include "devices/device_error.h"
 #include "devices/device_spec.h"
-#include "devices/sim/rig_config.h"
+#include "devices/run_once.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -36,7 +36,9 @@ int cmdAcquire(const QStringList& args, Io io)
     const QCommandLineOption maxForce(QStringLiteral("max-force-n"), nb::TrCli::tr("force limit that stops the stage (default 8)"), QStringLiteral("F"), QStringLiteral("8"));
     const QCommandLineOption steps(QStringLiteral("zaber-microsteps-per-mm"), nb::TrCli::tr("stage resolution (default: settings, else 20997.375)"), QStringLiteral("N"));
     const QCommandLineOption slope(QStringLiteral("slope-v-per-g"), nb::TrCli::tr("sensor calibration slope d in V/g (default: settings, else nominal)"), QStringLiteral("D"));
-    for (const auto* o : {&daq, &stage, &protocol, &out, &rate, &velocity, &depth, &amplitude, &frequency, &cycles, &maxForce, &steps, &slope})
+    const QCommandLineOption stopAt(QStringLiteral("stop-at"), nb::TrCli::tr("stop the insertion at a puncture: puncture (the first) or puncture:N (the N-th)"), QStringLiteral("puncture[:N]"));
+    const QCommandLineOption slowAfter(QStringLiteral("slow-after-puncture"), nb::TrCli::tr("slow the insertion to V mm/s after the first puncture"), QStringLiteral("V"));
+    for (const auto* o : {&daq, &stage, &protocol, &out, &rate, &velocity, &depth, &amplitude, &frequency, &cycles, &maxForce, &steps, &slope, &stopAt, &slowAfter})
         parser.addOption(*o);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("acquire"), args, io, 0, 0, &code))
@@ -89,11 +91,10 @@ int cmdAcquire(const QStringList& args, Io io)
         spec.slope_V_per_g = *s;
     }
 
-    devices::sim::RigConfig rig;
-    rig.realtime = true;
+    spec.simulated.realtime = true;  // whatever is simulated keeps wall-clock time beside real devices
     devices::DeviceSet set;
     try {
-        set = devices::openDevices(spec, rig);
+        set = devices::openDevices(spec);
     } catch (const devices::DeviceError& e) {
         io.err << "needlebench acquire: " << e.message() << '\n';
         return Failure;
@@ -121,64 +122,37 @@ int cmdAcquire(const QStringList& args, Io io)
     } else {
         plan.motion = devices::RunPlan::Motion::Linear;
         plan.linear = {*v, *d};
+        if (parser.isSet(stopAt)) {
+            const auto n = parseStopAt(parser.value(stopAt));
+            if (!n)
+                return usage(nb::TrCli::tr("--stop-at wants puncture or puncture:N with N ≥ 1 (got '%1')").arg(parser.value(stopAt)));
+            plan.stopAtPuncture = *n;
+        }
+        if (parser.isSet(slowAfter)) {
+            const auto sv = number(slowAfter, 0.001, 50);
+            if (!sv)
+                return usage(error);
+            plan.slowAfterPuncture_mm_s = *sv;
+        }
         plan.metadata.set(QStringLiteral("velocity_mm_s"), *v);
         plan.metadata.set(QStringLiteral("depth_mm"), *d);
     }
 
-    QEventLoop loop;
-    std::optional<devices::RunSummary> summary;
-    QString failure;
-    QObject::connect(&engine, &devices::AcquisitionEngine::runEnded, &loop, [&](const devices::RunSummary& s) {
-        summary = s;
-        loop.quit();
-    });
-    QObject::connect(&engine, &devices::AcquisitionEngine::runRefused, &loop, [&](const QString& why) {
-        failure = why;
-        loop.quit();
-    });
-    QObject::connect(&engine, &devices::AcquisitionEngine::faultOccurred, &loop,
-                     [&](const QString& device, const QString& reason) { failure = device + QStringLiteral(": ") + reason; });
-    engine.start();
-    engine.enableStage(true);
-    engine.biasSensor();
-    engine.zeroStage();
-    bool started = false;
-    QElapsedTimer wall;
-    wall.start();
-    QTimer tick;
-    tick.setInterval(20);
-    QObject::connect(&tick, &QTimer::timeout, &loop, [&] {
-        const devices::EngineStatus st = engine.status();
-        if (!started && st.biased && st.zeroed && st.stageEnabled) {
-            started = true;
-            engine.startRun(plan);
-        }
-        if (!started && !st.fault.isEmpty()) {
-            failure = st.fault;
-            loop.quit();
-        }
-        if (!started && wall.elapsed() > 10000) {
-            failure = nb::TrCli::tr("the devices did not get ready within 10 s");
-            loop.quit();
-        }
-    });
-    tick.start();
-    loop.exec();
-    tick.stop();
-    engine.shutdown();
+    const devices::RunOnceResult run = devices::runOnce(engine, plan);
+    const std::optional<devices::RunSummary>& summary = run.summary;
     if (!summary) {
-        io.err << "needlebench acquire: " << failure << '\n';
+        io.err << "needlebench acquire: " << run.error << '\n';
         return Failure;
     }
     QJsonObject result{{QStringLiteral("out"), summary->path},
-                       {QStringLiteral("end_reason"), summary->endReason},
+                       {QStringLiteral("end_reason"), fileName(summary->endReason)},
                        {QStringLiteral("samples"), double(summary->samples)},
                        {QStringLiteral("dropped"), double(summary->dropped)},
                        {QStringLiteral("device"), engine.deviceDescription()}};
     if (!summary->fault.isEmpty())
         result.insert(QStringLiteral("fault"), summary->fault);
     printJson(io, result);
-    return summary->endReason == QLatin1String("fault") ? Failure : Ok;
+    return summary->endReason == EndReason::Fault ? Failure : Ok;
 }
 
 }  // namespace nb::cli

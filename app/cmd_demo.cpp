@@ -2,9 +2,10 @@
 // allows. Simulates stiffness runs on two liver presets and friction runs at 0.2/0.5/0.8 Hz
 // with rendered imaging video, synchronises each video from its motion, suggests labels,
 // fits every model, and writes the run CSVs, the HDF5 file, the fit tables and the figures.
-// Everything runs in-process: `simulate` through the command registry, the rest as calls.
+// Everything runs in-process, as function calls.
 
 #include "cli_support.h"
+#include "simulated_run.h"
 #include "core/tr.h"
 
 #include "core/export/dataset_loader.h"
@@ -16,7 +17,6 @@
 #include "core/run_file.h"
 #include "core/session.h"
 #include "core/sync.h"
-#include "devices/sim/imaging_render.h"
 #include "devices/video/frame_index.h"
 #include "devices/video/frame_reader.h"
 #include "devices/video/motion_signal.h"
@@ -42,51 +42,18 @@ constexpr int kFrictionCycles = 7;
 
 // Smaller than the console's 720x480 and MJPEG: the demo renders, writes and reads back
 // about 1800 frames of incompressible noise, which H.264 at full size takes minutes for.
-devices::sim::ImagingOptions demoImaging()
-{
-    devices::sim::ImagingOptions o;
-    o.width = 360;
-    o.height = 240;
-    return o;
-}
+constexpr int kVideoWidth = 360, kVideoHeight = 240;
+constexpr double kVideoFps = 30000.0 / 1001.0;
 
 // The needle is drawn 3 px wide down the middle of the renderer's centre pane, which holds
 // the full needle (the outer slices show a faint trace). A strip just that wide sees the tip
 // come and go and little of the tissue speckle beside it, whose stick-slip would otherwise
 // blur the correlation (a 60 px strip put the offset 150-300 ms off, this one a frame).
-QRect needleRegion(const devices::sim::ImagingOptions& o)
+QRect needleRegion()
 {
-    const int pane = o.width / 3;
+    const int pane = kVideoWidth / 3;
     const int centre = pane + pane / 2;
-    return QRect(centre - 2, 0, 4, o.height);
-}
-
-const Command* findCommand(const QString& name)
-{
-    for (const Command& c : commands())
-        if (c.name == name)
-            return &c;
-    return nullptr;
-}
-
-// Runs another command with its output captured (shown only when it fails).
-int runQuiet(const QString& name, const QStringList& args, QString* output)
-{
-    const Command* c = findCommand(name);
-    if (!c)
-        return -1;
-    QString out, err;
-    QTextStream o(&out), e(&err);
-    int code = Failure;
-    try {
-        code = c->run(args, {o, e});
-    } catch (const std::exception& ex) {
-        e << QString::fromStdString(ex.what());
-    }
-    o.flush();
-    e.flush();
-    *output = (out + err).trimmed();
-    return code;
+    return QRect(centre - 2, 0, 4, kVideoHeight);
 }
 
 struct Step {
@@ -171,15 +138,28 @@ int cmdDemo(const QStringList& args, Io io)
         const QFileInfo fi(runPath);
         const QString truth = root.filePath(QStringLiteral("truth/%1.truth.json").arg(fi.completeBaseName()));
         QDir().mkpath(QFileInfo(truth).path());
-        QStringList simArgs{QStringLiteral("--protocol"), s.protocol, QStringLiteral("--tissue"), s.tissue,
-                            QStringLiteral("--seed"), QString::number(s.seed), QStringLiteral("--out"), runPath,
-                            QStringLiteral("--truth"), truth};
-        if (friction)
-            simArgs << QStringLiteral("--frequency-hz") << QString::number(s.frequency_hz) << QStringLiteral("--cycles")
-                    << QString::number(shortRun ? 3 : kFrictionCycles);
-        QString output;
-        if (runQuiet(QStringLiteral("simulate"), simArgs, &output) != Ok) {
-            io.err << "needlebench demo: " << nb::TrCli::tr("simulating %1 failed:\n%2").arg(runPath, output) << '\n';
+        SimulatedRunRequest request;
+        request.protocol = s.protocol;
+        request.rig.tissue = s.tissue;
+        request.rig.tip = devices::sim::usualTip(s.tissue, false);
+        request.rig.setup = friction ? devices::sim::Setup::Platform : devices::sim::Setup::Organ;
+        request.rig.seed = std::uint64_t(s.seed);
+        request.rig.realtime = false;
+        request.out = runPath;
+        request.truth = truth;
+        if (friction) {
+            request.sine = {10.0, s.frequency_hz, shortRun ? 3 : kFrictionCycles};
+            // The imaging console is started by hand a little before the recording: a lead-in
+            // that differs per run, so that the synchronisation has something to find.
+            request.video = fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".avi"));
+            request.videoOffset_s = 0.6 + 0.35 * double(videos.size());
+            request.videoWidth = kVideoWidth;
+            request.videoHeight = kVideoHeight;
+            request.videoSeed = unsigned(s.seed + int(i));
+        }
+        const SimulatedRunResult simulated = simulateRun(request);
+        if (!simulated.error.isEmpty()) {
+            io.err << "needlebench demo: " << nb::TrCli::tr("simulating %1 failed: %2").arg(runPath, simulated.error) << '\n';
             return Failure;
         }
         step(nb::TrCli::tr("simulated %1 (%2, %3)")
@@ -199,26 +179,17 @@ int cmdDemo(const QStringList& args, Io io)
             // that differs per run, so that the synchronisation has something to find.
             VideoReport v;
             v.run = fi.fileName();
-            v.video = fi.completeBaseName() + QStringLiteral(".avi");
-            const QString videoPath = fi.dir().filePath(v.video);
-            devices::sim::ImagingOptions vo = demoImaging();
-            vo.leadIn_s = 0.6 + 0.35 * double(videos.size());
-            vo.seed = unsigned(s.seed + int(i));
-            try {
-                const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(run, videoPath, vo);
-                v.frames = vt.frames;
-                v.trueOffset_s = vt.offset_s;
-            } catch (const devices::VideoError& e) {
-                io.err << "needlebench demo: " << e.message() << '\n';
-                return Failure;
-            }
+            v.video = QFileInfo(request.video).fileName();
+            const QString videoPath = request.video;
+            v.frames = simulated.videoFrames;
+            v.trueOffset_s = simulated.videoOffset_s;
             step(nb::TrCli::tr("rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)")
-                     .arg(v.video).arg(v.frames).arg(vo.leadIn_s, 0, 'f', 2));
+                     .arg(v.video).arg(v.frames).arg(request.videoOffset_s, 0, 'f', 2));
 
             // Found the way a user would: the needle's motion in the video against its speed.
             try {
                 devices::FrameReader reader(devices::buildFrameIndex(videoPath), 8);
-                const devices::MotionSignal motion = devices::computeMotionSignal(reader, needleRegion(vo));
+                const devices::MotionSignal motion = devices::computeMotionSignal(reader, needleRegion());
                 SyncOptions so;
                 so.maxOffset_s = 5.0;
                 v.sync = synchronise({motion.time_s, motion.value}, needleSpeed(run), so);
@@ -228,7 +199,7 @@ int cmdDemo(const QStringList& args, Io io)
                 v.syncProblem = QString::fromUtf8(e.what());
             }
             run.metadata.set(QStringLiteral("video_file"), v.video);
-            run.metadata.set(QStringLiteral("video_fps"), vo.fps);
+            run.metadata.set(QStringLiteral("video_fps"), kVideoFps);
             if (v.sync) {
                 run.metadata.set(QStringLiteral("sync_offset_s"), v.sync->offset_s);
                 run.metadata.set(QStringLiteral("sync_confidence"), v.sync->confidence);
@@ -237,7 +208,7 @@ int cmdDemo(const QStringList& args, Io io)
                          .arg(v.video)
                          .arg(v.sync->offset_s, 0, 'f', 3)
                          .arg(v.trueOffset_s, 0, 'f', 3)
-                         .arg((v.sync->offset_s - v.trueOffset_s) * vo.fps, 0, 'f', 1)
+                         .arg((v.sync->offset_s - v.trueOffset_s) * kVideoFps, 0, 'f', 1)
                          .arg(v.sync->confidence, 0, 'f', 2));
             } else {
                 step(nb::TrCli::tr("note: could not synchronise %1 (%2); its frames are numbered without an offset")

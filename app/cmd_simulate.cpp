@@ -1,24 +1,20 @@
 // `needlebench simulate`: one run on the simulated rig, through the same acquisition engine
-// and recorder as the workbench, headless. Options are read into SimulateOptions in one
+// and recorder as the workbench, headless. Options are read into SimulatedRunRequest in one
 // place (addOptions/readOptions) so that more (e.g. --video) slot in without touching the run.
 
 #include "cli_support.h"
+#include "simulated_run.h"
 #include "core/tr.h"
 
 #include "devices/acquisition_engine.h"
-#include "devices/device_set.h"
+#include "devices/run_once.h"
 #include "core/run_file.h"
-#include "devices/sim/imaging_render.h"
-#include "devices/sim/simulated_rig.h"
+#include "devices/sim/tissue_presets.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
-#include <QEventLoop>
 #include <QFile>
 #include <QJsonArray>
-#include <QSaveFile>
-#include <QTimer>
-#include <atomic>
 #include <cmath>
 #include <optional>
 
@@ -26,18 +22,6 @@ namespace nb::cli {
 
 namespace {
 
-struct SimulateOptions {
-    QString protocol;
-    devices::sim::RigConfig rig;
-    double rateHz = 500.0;
-    double velocity_mm_s = 4.0;
-    double depth_mm = 40.0;
-    devices::SineMotion sine;
-    double maxForce_N = 8.0;
-    QString out, truth;
-    QString video;          // --video: the rendered imaging view
-    double videoOffset_s = 0.0;
-};
 
 struct OptionSet {
     QCommandLineOption protocol{QStringLiteral("protocol"), nb::TrCli::tr("stiffness|internal|friction|prostate"), QStringLiteral("P")};
@@ -57,12 +41,14 @@ struct OptionSet {
     QCommandLineOption truth{QStringLiteral("truth"), nb::TrCli::tr("write the ground truth as JSON"), QStringLiteral("FILE.json")};
     QCommandLineOption out{QStringLiteral("out"), nb::TrCli::tr("the run file to write"), QStringLiteral("RUN.csv")};
     QCommandLineOption video{QStringLiteral("video"), nb::TrCli::tr("also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)"), QStringLiteral("FILE")};
+    QCommandLineOption stopAt{QStringLiteral("stop-at"), nb::TrCli::tr("stop the insertion at a puncture: puncture (the first) or puncture:N (the N-th)"), QStringLiteral("puncture[:N]")};
+    QCommandLineOption slowAfter{QStringLiteral("slow-after-puncture"), nb::TrCli::tr("slow the insertion to V mm/s after the first puncture"), QStringLiteral("V")};
     QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), nb::TrCli::tr("the video starts this long before the recording (default 0)"), QStringLiteral("S"), QStringLiteral("0")};
 
     void addTo(QCommandLineParser& p) const
     {
         for (const auto* o : {&protocol, &tissue, &tip, &seed, &rate, &velocity, &depth, &amplitude, &frequency,
-                              &cycles, &thickness, &bone, &maxForce, &realtime, &truth, &out, &video, &videoOffset})
+                              &cycles, &thickness, &bone, &maxForce, &realtime, &truth, &out, &video, &videoOffset, &stopAt, &slowAfter})
             p.addOption(*o);
     }
 };
@@ -79,7 +65,7 @@ std::optional<double> number(const QCommandLineParser& p, const QCommandLineOpti
 }
 
 // Reads and checks every option; returns an error text for the user on bad input.
-QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOptions& s)
+QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRunRequest& s)
 {
     using namespace devices::sim;
     QString error;
@@ -116,10 +102,7 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
             return nb::TrCli::tr("unknown tip '%1' (beveled|diamond|blunt)").arg(p.value(o.tip));
         s.rig.tip = *tip;
     } else {
-        // The thesis's pairings: blunt for capsule-free tissue, diamond for livers 5, 7 and the prostate.
-        const bool diamond = s.rig.tissue == QLatin1String("liver5") || s.rig.tissue == QLatin1String("liver7") ||
-                             s.rig.tissue == QLatin1String("prostate");
-        s.rig.tip = internal ? Tip::Blunt : diamond ? Tip::Diamond : Tip::Beveled;
+        s.rig.tip = usualTip(s.rig.tissue, internal);
     }
     s.rig.setup = friction ? Setup::Platform : Setup::Organ;
     bool ok = false;
@@ -177,53 +160,21 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulateOpt
             return error;
         s.rig.boneDepth_mm = *b;
     }
+    if (p.isSet(o.stopAt)) {
+        const auto n = parseStopAt(p.value(o.stopAt));
+        if (!n)
+            return nb::TrCli::tr("--stop-at wants puncture or puncture:N with N ≥ 1 (got '%1')").arg(p.value(o.stopAt));
+        s.stopAtPuncture = *n;
+    }
+    if (p.isSet(o.slowAfter)) {
+        auto v = number(p, o.slowAfter, &error);
+        if (!v)
+            return error;
+        if (*v <= 0.0 || *v > s.rig.stage.maxVelocity_mm_s)
+            return nb::TrCli::tr("--slow-after-puncture must be in (0, %1] mm/s").arg(s.rig.stage.maxVelocity_mm_s);
+        s.slowAfterPuncture_mm_s = *v;
+    }
     return {};
-}
-
-Metadata runMetadata(const SimulateOptions& s)
-{
-    Metadata m;
-    m.set(QStringLiteral("protocol"), s.protocol);
-    m.set(QStringLiteral("tissue"), s.rig.tissue);
-    m.set(QStringLiteral("tip"), devices::sim::tipName(s.rig.tip));
-    m.set(QStringLiteral("seed"), QString::number(s.rig.seed));
-    if (s.rig.setup == devices::sim::Setup::Platform) {
-        m.set(QStringLiteral("amplitude_mm"), s.sine.amplitude_mm);
-        m.set(QStringLiteral("frequency_hz"), s.sine.frequency_hz);
-        m.set(QStringLiteral("cycles"), static_cast<double>(s.sine.cycles));
-    } else {
-        m.set(QStringLiteral("velocity_mm_s"), s.velocity_mm_s);
-        m.set(QStringLiteral("depth_mm"), s.depth_mm);
-    }
-    m.set(QStringLiteral("thickness_mm"), s.rig.thickness_mm);
-    if (s.rig.boneDepth_mm)
-        m.set(QStringLiteral("bone_depth_mm"), *s.rig.boneDepth_mm);
-    m.set(QStringLiteral("clock"), s.rig.realtime ? QStringLiteral("realtime") : QStringLiteral("simulated"));
-    return m;
-}
-
-// The rig's truth on the run's time axis (run time 0 = the first recorded sample).
-QJsonObject truthOnRunTime(const QJsonObject& truth, double origin_s)
-{
-    QJsonObject out = truth;
-    for (const char* key : {"contact_s", "puncture_s", "relaxed_s"}) {
-        const QString k = QLatin1String(key);
-        if (out.value(k).isDouble())
-            out.insert(k, out.value(k).toDouble() - origin_s);
-    }
-    for (const char* list : {"events", "phases"}) {
-        QJsonArray a = out.value(QLatin1String(list)).toArray();
-        for (auto it = a.begin(); it != a.end(); ++it) {
-            QJsonObject e = it->toObject();
-            for (const char* key : {"time_s", "start_s", "end_s"})
-                if (e.contains(QLatin1String(key)))
-                    e.insert(QLatin1String(key), e.value(QLatin1String(key)).toDouble() - origin_s);
-            *it = e;
-        }
-        out.insert(QLatin1String(list), a);
-    }
-    out.insert(QStringLiteral("time_origin_device_s"), origin_s);
-    return out;
 }
 
 }  // namespace
@@ -236,148 +187,38 @@ int cmdSimulate(const QStringList& args, Io io)
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("simulate"), args, io, 0, 0, &code))
         return code;
-    SimulateOptions s;
+    SimulatedRunRequest s;
     if (const QString error = readOptions(parser, o, s); !error.isEmpty()) {
         io.err << "needlebench simulate: " << error << "\n\n" << nb::TrCli::tr("Run 'needlebench simulate --help' for the options.") << '\n';
         return Usage;
     }
 
-    devices::EngineConfig config;
-    config.rateHz = s.rateHz;
-    config.forceLimit_N = s.maxForce_N;
-    config.realtimeScheduling = s.rig.realtime;  // a busy simulated clock must not hog a core at FIFO priority
-    config.liveView = false;
-    devices::AcquisitionEngine engine(devices::makeSimulatedDevices(s.rig), config);
-
-    devices::RunPlan plan;
-    plan.outPath = s.out;
-    plan.metadata = runMetadata(s);
-    if (s.rig.setup == devices::sim::Setup::Platform) {
-        plan.motion = devices::RunPlan::Motion::Sine;
-        plan.sine = s.sine;
-    } else {
-        plan.motion = devices::RunPlan::Motion::Linear;
-        plan.linear = {s.velocity_mm_s, s.depth_mm};
-    }
-
-    QEventLoop loop;
-    std::optional<devices::RunSummary> summary;
-    QString refused, faultText;
-    QObject::connect(&engine, &devices::AcquisitionEngine::runEnded, &loop, [&](const devices::RunSummary& r) {
-        summary = r;
-        loop.quit();
-    });
-    QObject::connect(&engine, &devices::AcquisitionEngine::runRefused, &loop, [&](const QString& why) {
-        refused = why;
-        loop.quit();
-    });
-    QObject::connect(&engine, &devices::AcquisitionEngine::faultOccurred, &loop,
-                     [&](const QString& device, const QString& reason) { faultText = device + QStringLiteral(": ") + reason; });
-    QObject::connect(&engine, &devices::AcquisitionEngine::runStarted, &loop, [&](const QString& path) {
+    // Progress lines carry the engine's run time: a killed recording can be checked against them.
+    devices::RunOnceOptions run;
+    run.onStarted = [&](const QString& path) {
         io.out << "recording " << path << '\n';
         io.out.flush();
-    });
-
-    // The operator's sequence: enable, bias (needle at rest, out of tissue), zero, start.
-    // Started from the engine thread the moment the interlocks are met, so that on the
-    // simulated clock the run begins at the same simulated time on every invocation.
-    std::atomic<bool> started{false};
-    QObject::connect(
-        &engine, &devices::AcquisitionEngine::statusChanged, &engine,
-        [&](const devices::EngineStatus& st) {
-            if (st.biased && st.zeroed && st.stageEnabled && !started.exchange(true))
-                engine.startRun(plan);
-        },
-        Qt::DirectConnection);
-    // Queued before the thread starts: they run before its first sample.
-    engine.enableStage(true);
-    engine.biasSensor();
-    engine.zeroStage();
-    engine.start();
-    QElapsedTimer wall;
-    wall.start();
-    QTimer tick;
-    tick.setInterval(s.rig.realtime ? 20 : 5);
-    // Progress lines carry the engine's run time: a killed recording can be checked against them.
-    QObject::connect(&tick, &QTimer::timeout, &loop, [&] {
-        const devices::EngineStatus st = engine.status();
-        if (!st.fault.isEmpty() && !started.load()) {
-            faultText = st.fault;
-            loop.quit();
-        }
-        if (st.recording && s.rig.realtime) {
+    };
+    QElapsedTimer sinceProgress;
+    sinceProgress.start();
+    run.onTick = [&](const devices::EngineStatus& st) {
+        if (st.recording && s.rig.realtime && sinceProgress.elapsed() >= 20) {
+            sinceProgress.restart();
             io.out << "progress run_time_s=" << QString::number(st.runTime_s, 'f', 4) << " samples=" << st.samples << '\n';
             io.out.flush();
         }
-        if (wall.elapsed() > 30 * 60 * 1000) {
-            faultText = nb::TrCli::tr("the run did not finish within 30 minutes");
-            engine.endRun();
-        }
-    });
-    tick.start();
-    loop.exec();
-    tick.stop();
-    const devices::EngineStatus last = engine.status();
-    engine.shutdown();
-
-    if (!summary) {
-        io.err << "needlebench simulate: " << (refused.isEmpty() ? faultText : refused) << '\n';
+    };
+    const SimulatedRunResult r = simulateRun(s, run);
+    if (!r.error.isEmpty() && !r.summary) {
+        io.err << "needlebench simulate: " << r.error << '\n';
         return Failure;
     }
-
-    QJsonObject truth;
-    if (auto rig = engine.rig()) {
-        // Run metadata holds the device time of the run's first sample.
-        double origin = 0.0;
-        QFile f(s.out);
-        if (f.open(QIODevice::ReadOnly)) {
-            for (int i = 0; i < 64 && !f.atEnd(); ++i) {
-                const QByteArray line = f.readLine();
-                if (line.startsWith("# run_start_device_time_s:"))
-                    origin = line.mid(line.indexOf(':') + 1).trimmed().toDouble();
-            }
-        }
-        truth = truthOnRunTime(rig->truthJson(), origin);
+    if (!r.error.isEmpty()) {  // recorded, but what follows the run failed (truth, video)
+        io.err << "needlebench simulate: " << r.error << '\n';
+        return Failure;
     }
-    if (!s.video.isEmpty()) {
-        try {
-            devices::sim::ImagingOptions io_;
-            io_.leadIn_s = s.videoOffset_s;
-            const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(readRunFile(s.out).run, s.video, io_);
-            truth.insert(QStringLiteral("video"), QJsonObject{{QStringLiteral("file"), s.video},
-                                                             {QStringLiteral("offset_s"), vt.offset_s},
-                                                             {QStringLiteral("fps"), vt.fps},
-                                                             {QStringLiteral("frames"), vt.frames}});
-            truth.insert(QStringLiteral("video_offset_s"), vt.offset_s);
-        } catch (const std::exception& e) {
-            io.err << "needlebench simulate: " << QString::fromUtf8(e.what()) << '\n';
-            return Failure;
-        }
-    }
-    if (!s.truth.isEmpty()) {
-        QSaveFile tf(s.truth);
-        if (!tf.open(QIODevice::WriteOnly) || tf.write(QJsonDocument(truth).toJson(QJsonDocument::Indented)) < 0 ||
-            !tf.commit()) {
-            io.err << "needlebench simulate: " << nb::TrCli::tr("cannot write %1: %2").arg(s.truth, tf.errorString()) << '\n';
-            return Failure;
-        }
-    }
-    QJsonObject result{
-        {QStringLiteral("out"), summary->path},
-        {QStringLiteral("end_reason"), summary->endReason},
-        {QStringLiteral("samples"), static_cast<double>(summary->samples)},
-        {QStringLiteral("dropped"), static_cast<double>(summary->dropped)},
-        {QStringLiteral("late_periods"), static_cast<double>(last.latePeriods)},
-        {QStringLiteral("device"), engine.deviceDescription()},
-    };
-    if (!summary->fault.isEmpty())
-        result.insert(QStringLiteral("fault"), summary->fault);
-    if (!last.realtimeWarning.isEmpty() && s.rig.realtime)
-        result.insert(QStringLiteral("realtime_warning"), last.realtimeWarning);
-    if (!s.truth.isEmpty())
-        result.insert(QStringLiteral("truth"), s.truth);
-    printJson(io, result);
-    return summary->endReason == QLatin1String("fault") ? Failure : Ok;
+    printJson(io, r.json);
+    return r.summary->endReason == EndReason::Fault ? Failure : Ok;
 }
 
 }  // namespace nb::cli

@@ -9,8 +9,6 @@
 #include "devices/device_error.h"
 #include "devices/device_set.h"
 #include "devices/device_spec.h"
-#include "devices/sim/rig_config.h"
-#include "devices/sim/simulated_rig.h"
 #include "widgets/calibration_wizard.h"
 #include "widgets/control_panel.h"
 #include "widgets/device_dialog.h"
@@ -60,8 +58,10 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     setWindowTitle(tr("NeedleBench"));
 
     QString deviceProblem;
-    engine_ = makeEngine(options_.devicesFromSettings ? std::optional(devices::specFromSettings(QSettings())) : std::nullopt,
-                         &deviceProblem);
+    engine_ = options_.deviceFactory
+                  ? engineOn(options_.deviceFactory())
+                  : makeEngine(options_.devicesFromSettings ? std::optional(devices::specFromSettings(QSettings())) : std::nullopt,
+                               &deviceProblem);
 
     // Record live, review video against the force, analyse the session: one window, three tabs.
     plots_ = new ForcePlots(this);
@@ -170,19 +170,13 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
 std::unique_ptr<devices::AcquisitionEngine> MainWindow::makeEngine(const std::optional<devices::DeviceSpec>& spec,
                                                                    QString* problem, std::optional<double> forceLimit_N)
 {
-    devices::sim::RigConfig rig;
-    rig.realtime = options_.realtime;
-    devices::DeviceSet devices;
-    if (spec) {
-        try {
-            devices = devices::openDevices(*spec, rig);
-        } catch (const devices::DeviceError& e) {
-            // Never leave the operator without a rig: say what failed and use the simulated one.
-            *problem = e.message();
-        }
-    }
-    if (!devices.stage || !devices.sensor)
-        devices = devices::makeSimulatedDevices(rig);
+    devices::DeviceSpec chosen = spec.value_or(devices::DeviceSpec{});
+    chosen.simulated.realtime = options_.realtime;
+    return engineOn(devices::openDevicesOrSimulated(chosen, problem), forceLimit_N);
+}
+
+std::unique_ptr<devices::AcquisitionEngine> MainWindow::engineOn(devices::DeviceSet devices, std::optional<double> forceLimit_N)
+{
     nominalSensor_ = devices.description;
     devices::EngineConfig config;
     config.rateHz = options_.rateHz;
@@ -285,7 +279,13 @@ void MainWindow::buildMenus()
         StoredCalibration c;
         c.sensor = nominalSensor_;
         c.nominal = true;
-        c.fit.slope_V_per_g = devices::sim::SensorChainConfig{}.slope_V_per_g();
+        // The chain the devices were opened with: a bridge on a U6 is 100x weaker than the
+        // simulated amplified chain.
+        c.fit.slope_V_per_g = engine_->nominalSlope_V_per_g();
+        if (!(c.fit.slope_V_per_g > 0.0)) {
+            showMessage(tr("These devices do not state a nominal calibration: calibrate the sensor."), true);
+            return;
+        }
         c.fit.r2 = 1.0;
         c.name = QStringLiteral("nominal_") + QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd_HHmmss"));
         useCalibration(c);
@@ -413,12 +413,12 @@ CalibrationWizard* MainWindow::openCalibrationWizard()
         wizard_ = new CalibrationWizard(nominalSensor_, this);
         wizard_->setAttribute(Qt::WA_DeleteOnClose);
         wizard_->setDwell(options_.calibrationDwell_s);
-        if (auto rig = engine_->rig())
-            wizard_->setLoadMassHook([rig](double grams) { return std::optional(rig->setLoadMass_g(grams)); });
+        if (auto load = engine_->calibrationLoad())
+            wizard_->setLoadMassHook([load](double grams) { return std::optional(load->setLoadMass_g(grams)); });
         connect(wizard_, &CalibrationWizard::calibrationAccepted, this, &MainWindow::useCalibration);
         connect(wizard_, &QDialog::finished, this, [this] {
-            if (auto rig = engine_->rig())
-                rig->setLoadMass_g(0.0);
+            if (auto load = engine_->calibrationLoad())
+                load->setLoadMass_g(0.0);
         });
     }
     wizard_->show();
@@ -512,12 +512,12 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
     recording_ = false;
     sessionView_->setBusyPath({});
     lastRunPath_ = summary.path;
-    lastEndReason_ = summary.endReason;
+    lastEndReason_ = fileName(summary.endReason);
     ++runsEnded_;
     const QString file = QDir::toNativeSeparators(summary.path);
-    const bool normal = summary.endReason == QLatin1String("completed");
+    const bool normal = endedNormally(summary.endReason);
     QString text = tr("Run saved: %1 (%2, %3 samples, %4 dropped)")
-                       .arg(file, runStateName(runStateForEndReason(summary.endReason)))
+                       .arg(file, displayName(summary.endReason))
                        .arg(summary.samples)
                        .arg(summary.dropped);
     if (!summary.fault.isEmpty())

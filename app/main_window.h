@@ -1,10 +1,12 @@
 #pragma once
 #include "core/live_events.h"
 #include "core/session.h"
+#include "devices/device_set.h"
 
 #include <QMainWindow>
 #include <QPointer>
 #include <QStringList>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -39,6 +41,9 @@ struct WorkbenchOptions {
     // Devices from the settings (devices/daq, devices/stage: see devices/device_spec.h); off in
     // tests, which always run on the simulated rig.
     bool devicesFromSettings = true;
+    // Makes the devices instead of the settings (tests: one helper connects the simulated rig
+    // and keeps a hand on it, as QGroundControl's MockLink does).
+    std::function<devices::DeviceSet()> deviceFactory;
 };
 
 // The workbench window: the control panel and status (left), the live plots (centre), the
@@ -91,6 +96,7 @@ private:
     // A new engine on `spec` (nullopt: the simulated rig); `problem` says why it fell back.
     std::unique_ptr<devices::AcquisitionEngine> makeEngine(const std::optional<devices::DeviceSpec>& spec, QString* problem,
                                                            std::optional<double> forceLimit_N = std::nullopt);
+    std::unique_ptr<devices::AcquisitionEngine> engineOn(devices::DeviceSet devices, std::optional<double> forceLimit_N = std::nullopt);
     // Connects the engine's signals to the window (the force limit and calibration are the caller's).
     void attachEngine();
     void drain();

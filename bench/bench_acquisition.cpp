@@ -61,7 +61,7 @@ void sustained(double rateHz, double duration_s, const QString& dir)
     EngineConfig cfg;
     cfg.rateHz = rateHz;
     cfg.realtimeScheduling = true;
-    AcquisitionEngine engine(makeSimulatedDevices(rig), cfg);
+    AcquisitionEngine engine(sim::makeSimulatedDevices(rig), cfg);
 
     std::mutex m;
     std::vector<double> arrivals, deviceTimes;
@@ -168,7 +168,7 @@ void asFastAsPossible(double simSeconds)
     sim::RigConfig rig;
     rig.realtime = false;
     for (double rate : {500.0, 10000.0}) {
-        DeviceSet d = makeSimulatedDevices(rig);
+        DeviceSet d = sim::makeSimulatedDevices(rig);
         d.sensor->start(rate);
         d.stage->enable(true);
         d.stage->moveLinear({4.0, 100.0});
@@ -199,7 +199,7 @@ void idleAsFastAsPossible(double wall_s)
     cfg.rateHz = 500.0;
     cfg.realtimeScheduling = false;
     cfg.liveView = false;
-    AcquisitionEngine engine(makeSimulatedDevices(rig), cfg);
+    AcquisitionEngine engine(sim::makeSimulatedDevices(rig), cfg);
     engine.start();
     engine.enableStage(true);
     engine.biasSensor();

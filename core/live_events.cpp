@@ -100,4 +100,11 @@ std::vector<LiveEvent> LiveEventDetector::step(double t, double x, double f)
     return events;
 }
 
+void LiveEventDetector::continueAfterPuncture()
+{
+    punctured_ = false;
+    if (!recent_.empty())
+        peak_ = recent_.back();
+}
+
 }  // namespace nb

@@ -37,6 +37,8 @@ public:
     // The next samples of the run, in time order; returns the events they complete.
     std::vector<LiveEvent> feed(std::span<const double> time_s, std::span<const double> position_mm,
                                 std::span<const double> force_N);
+    // After a puncture, watch for the next one (a deeper structure) from the present force on.
+    void continueAfterPuncture();
     bool contacted() const { return contacted_; }
     bool punctured() const { return punctured_; }
     double airForce_N() const { return offset_; }

@@ -60,14 +60,10 @@ enum class Kind { Time, Position, Force, Numeric, Text, Ignored };
 }  // namespace
 
 RunFileError::RunFileError(QString file, int line, QString reason)
-    : std::runtime_error((line > 0 ? QStringLiteral("%1:%2: %3").arg(file).arg(line).arg(reason)
-                                   : QStringLiteral("%1: %2").arg(file, reason))
-                             .toStdString()),
-      file_(std::move(file)), line_(line), reason_(std::move(reason))
+    : Error(line > 0 ? QStringLiteral("%1:%2").arg(file).arg(line) : file, std::move(reason)), file_(std::move(file)),
+      line_(line)
 {
 }
-
-QString RunFileError::message() const { return QString::fromStdString(what()); }
 
 const QStringList& knownNumericColumns()
 {

@@ -12,6 +12,7 @@
 // Known optional columns are kept; unknown ones are ignored (and named in the warnings).
 // A BOM and CRLF line ends are accepted. pandas reads it with `comment='#'`.
 
+#include "core/error.h"
 #include "run.h"
 
 #include <QFile>
@@ -24,18 +25,15 @@ namespace nb {
 
 // A file that cannot be read as a run: says which file, which line (1-based, 0 when
 // the problem is not tied to a line) and what is wrong.
-class RunFileError : public std::runtime_error {
+class RunFileError : public Error {
 public:
     RunFileError(QString file, int line, QString reason);
     const QString& file() const { return file_; }
     int line() const { return line_; }
-    const QString& reason() const { return reason_; }
-    QString message() const;
 
 private:
     QString file_;
     int line_;
-    QString reason_;
 };
 
 struct RunReadOptions {

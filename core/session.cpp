@@ -82,14 +82,6 @@ const QRegularExpression& runNamePattern()
 
 }  // namespace
 
-SessionError::SessionError(QString file, QString reason)
-    : std::runtime_error(QStringLiteral("%1: %2").arg(file, reason).toStdString()), file_(std::move(file)),
-      reason_(std::move(reason))
-{
-}
-
-QString SessionError::message() const { return QStringLiteral("%1: %2").arg(file_, reason_); }
-
 RunState runStateForEndReason(const QString& r)
 {
     if (r.isEmpty())

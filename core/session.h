@@ -13,27 +13,21 @@
 // start, drops a partial last row and closes it with `end_reason: recovered`.
 
 #include "core/calibration.h"
+#include "core/error.h"
 
 #include <QDateTime>
 #include <QString>
 #include <QStringList>
 #include <optional>
-#include <stdexcept>
 #include <vector>
 
 namespace nb {
 
 // A session folder that cannot be created, read or written: names the file and the reason.
-class SessionError : public std::runtime_error {
+class SessionError : public Error {
 public:
-    SessionError(QString file, QString reason);
-    const QString& file() const { return file_; }
-    const QString& reason() const { return reason_; }
-    QString message() const;
-
-private:
-    QString file_;
-    QString reason_;
+    SessionError(QString file, QString reason) : Error(std::move(file), std::move(reason)) {}
+    const QString& file() const { return subject(); }
 };
 
 struct SessionInfo {

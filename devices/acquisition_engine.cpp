@@ -1,10 +1,11 @@
 #include "acquisition_engine.h"
 
-#include "core/models.h"
 #include "core/run_file.h"
+#include "core/run_keys.h"
+#include "core/tr.h"
 #include "devices/device_error.h"
 #include "devices/realtime.h"
-#include "devices/sim/simulated_rig.h"
+#include "devices/sample_processor.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -21,21 +22,40 @@ constexpr auto kReadTimeout = std::chrono::milliseconds(20);
 constexpr auto kIdleWait = std::chrono::milliseconds(20);
 constexpr double kSensorRetry_s = 1.0;
 constexpr double kStageFaultPoll_s = 0.5;
+constexpr double kStopRecord_s = 0.2;  // a run stopped by the limit or a puncture records the stop itself
 
 double hostNow() { return std::chrono::duration<double>(Clock::now().time_since_epoch()).count(); }
 }  // namespace
 
+InterlockState EngineStatus::interlocks() const
+{
+    InterlockState s;
+    s.devicesRunning = running;
+    s.fault = fault;
+    s.stageEnabled = stageEnabled;
+    s.latched = latched;
+    s.biased = biased;
+    s.zeroed = zeroed;
+    s.moving = moving || approaching;
+    s.recording = recording;
+    s.calibrated = slope_V_per_g > 0.0;
+    s.forceLimit_N = forceLimit_N;
+    s.sessionOpen = true;  // the engine records wherever it is told; the window knows better
+    s.loaded = loaded;
+    s.inTissue = contactDepth_mm && position_mm > *contactDepth_mm;
+    return s;
+}
+
+// The engine thread's state. The per-sample work is the processor's; what is here is the
+// operator's commands, the devices' health and the open run.
 struct AcquisitionEngine::State {
     DeviceSet dev;
-    // Calibration and interlocks.
-    double slope = 0.0;
+    std::unique_ptr<SampleProcessor> proc;
     QString calibrationName;
-    double v0 = 0.0;
-    bool biased = false, enabled = false, zeroed = false;
-    bool biasing = false;
-    double biasSum = 0.0, biasEnd = 0.0;
-    std::uint64_t biasCount = 0;
-    double forceLimit = 8.0;
+    bool enabled = false, zeroed = false, latched = false;
+    double noiseBand_N = 0.05;
+    std::optional<double> contactDepth_mm;
+    std::optional<double> lastRunStart_mm;
     // Devices' health.
     bool sensorOk = false;
     double sensorRetryAt = 0.0;  // host time
@@ -43,39 +63,42 @@ struct AcquisitionEngine::State {
     double stageRetryAt = 0.0;
     QString fault;
     QString realtimeWarning;
-    // Stream bookkeeping.
-    double rate = 500.0;
-    std::uint64_t expected = 0;  // next sensor index
-    bool any = false;
-    std::uint64_t samples = 0, dropped = 0, late = 0;
-    double hostOrigin = 0.0;     // host time minus device time, smallest seen
-    double lastTime = 0.0;
-    Sample last;
     StageState stage;
-    double stageTime = -1.0, stagePosAtTime = 0.0, prevStagePos = 0.0, prevStageTime = -1.0;
+    // A move the operator asked for outside a run (withdraw, jog): it ends when the stage stops.
+    bool jogging = false, sawJogMoving = false;
+    // A run waiting for the stage to reach its start position.
+    std::optional<RunPlan> approach;
+    bool sawApproachMoving = false;
     // The open run.
     Recorder recorder;
     bool runOpen = false;
     QString runPath;
     double runStart = 0.0;       // device time of the run's first sample
-    bool runMotion = false, endWhenDone = true, sawMoving = false;
-    std::uint64_t droppedAtStart = 0;
-    std::uint64_t lateAtStart = 0;
-    std::uint64_t recOverrunsAtStart = 0;
-    std::uint64_t runPushed = 0;
-    bool tripped = false;
-    double tripForce = 0.0, tripPosition = 0.0, tripTime = 0.0;
+    double runStartPosition = 0.0;
+    bool runMotion = false, endWhenDone = true, sawMoving = false, runIsInsertion = false;
+    int stopAtPuncture = 0;
+    double slowAfterPuncture = 0.0;
+    LinearMotion runLinear;
+    std::uint64_t droppedAtStart = 0, lateAtStart = 0, recOverrunsAtStart = 0, runPushed = 0;
+    std::optional<ProcessorEvent> trip;
+    std::optional<ProcessorEvent> punctureStop;
     double pendingEndAt = -1.0;  // device time
-    QString pendingEndReason;
+    EndReason pendingEndReason = EndReason::Completed;
     // Status: at the status rate, and at once when an interlock or the run changes.
     Clock::time_point nextStatus;
     bool statusDirty = false;
     std::function<void(double, double)> probe;
+    std::vector<VoltageSample> batch;
+    std::vector<Sample> samples;
+    std::vector<ProcessorEvent> events;
 };
 
 AcquisitionEngine::AcquisitionEngine(DeviceSet devices, EngineConfig config, QObject* parent)
     : QObject(parent),
-      rig_(devices.rig),
+      truth_(devices.truth),
+      calibrationLoad_(devices.calibrationLoad),
+      nominalSlope_(devices.nominalSlope_V_per_g),
+      hostPaced_(!devices.selfPacedClock),
       description_(devices.description),
       config_(config),
       live_(config.liveCapacity),
@@ -85,13 +108,16 @@ AcquisitionEngine::AcquisitionEngine(DeviceSet devices, EngineConfig config, QOb
     qRegisterMetaType<nb::devices::RunSummary>();
     qRegisterMetaType<nb::devices::RunPlan>();
     config_.rateHz = std::clamp(config_.rateHz, 100.0, 10000.0);
-    state_->dev = std::move(devices);
-    state_->slope = state_->dev.nominalSlope_V_per_g;
-    state_->calibrationName = state_->slope > 0 ? tr("nominal (device)") : QString();
-    state_->forceLimit = config_.forceLimit_N;
-    state_->rate = config_.rateHz;
+    State& s = *state_;
+    s.dev = std::move(devices);
+    s.proc = std::make_unique<SampleProcessor>(config_.rateHz, hostPaced_, truth_);
+    s.proc->setSlope(nominalSlope_);
+    s.proc->setLimits(config_.forceLimit_N, config_.withdrawForceLimit_N);
+    s.calibrationName = nominalSlope_ > 0 ? tr("nominal (device)") : QString();
+    s.noiseBand_N = config_.noiseBand_N;
     status_.rateHz = config_.rateHz;
     status_.forceLimit_N = config_.forceLimit_N;
+    status_.withdrawForceLimit_N = s.proc->withdrawalLimit();
 }
 
 AcquisitionEngine::~AcquisitionEngine()
@@ -145,52 +171,59 @@ void AcquisitionEngine::post(std::function<void()> command)
 }
 
 // ---- commands (run on the engine thread) ------------------------------------------------
-// Each lambda below runs inside threadMain(), which turns a DeviceError into a fault.
+// Each lambda below runs inside threadMain(), which turns a DeviceError into a fault. Each
+// asks the same interlocks the panel shows, on the engine's own state.
 
 void AcquisitionEngine::enableStage(bool on)
 {
     post([this, on] {
         State& s = *state_;
+        const bool wasLatched = s.latched;
         s.dev.stage->enable(on);
         s.enabled = on;
         s.zeroed = false;  // enabling may move the axis: the operator zeroes again
         s.stageOk = true;
+        if (on)
+            s.latched = false;
         if (on && s.sensorOk && !s.fault.isEmpty()) {
             s.fault.clear();
             emit message(tr("stage enabled; fault cleared"));
+        } else if (on && wasLatched) {
+            emit message(tr("stage enabled; emergency stop reset"));
         } else {
             emit message(on ? tr("stage enabled") : tr("stage disabled"));
         }
     });
 }
 
-void AcquisitionEngine::biasSensor()
+void AcquisitionEngine::biasSensor(bool insist)
 {
-    post([this] {
+    post([this, insist] {
         State& s = *state_;
-        if (s.stage.moving) {
-            emit message(tr("bias refused: the stage is moving (bias with the needle at rest, out of tissue)"));
+        const Permission p = permission(Control::Bias, snapshot().interlocks());
+        if (!p.enabled && !(insist && p.overridable)) {
+            emit message(tr("bias refused: %1").arg(p.reason));
             return;
         }
-        s.biasing = true;
-        s.biasSum = 0.0;
-        s.biasCount = 0;
-        s.biasEnd = s.lastTime + config_.bias_s;
+        s.proc->startBias(config_.bias_s);
         emit message(tr("biasing the force sensor: averaging %1 s").arg(config_.bias_s));
     });
 }
 
-void AcquisitionEngine::zeroStage()
+void AcquisitionEngine::zeroStage(bool insist)
 {
-    post([this] {
+    post([this, insist] {
         State& s = *state_;
-        if (s.stage.moving) {
-            emit message(tr("zero refused: the stage is moving"));
+        const Permission p = permission(Control::Zero, snapshot().interlocks());
+        if (!p.enabled && !(insist && p.overridable)) {
+            emit message(tr("zero refused: %1").arg(p.reason));
             return;
         }
         s.dev.stage->zero();
         s.zeroed = true;
-        s.prevStageTime = -1.0;
+        s.contactDepth_mm.reset();  // depths before the zero mean nothing now
+        s.lastRunStart_mm.reset();
+        s.proc->forgetStageHistory();
         emit message(tr("stage position zeroed"));
     });
 }
@@ -198,12 +231,26 @@ void AcquisitionEngine::zeroStage()
 void AcquisitionEngine::setForceLimit(double newtons)
 {
     post([this, newtons] {
-        if (!(newtons > 0.0)) {
+        State& s = *state_;
+        if (!(newtons > 0.0) || !std::isfinite(newtons)) {
             emit message(tr("force limit must be positive (got %1 N)").arg(newtons));
             return;
         }
-        state_->forceLimit = newtons;
+        s.proc->setLimits(newtons, std::max(s.proc->withdrawalLimit(), newtons));
         emit message(tr("force limit %1 N").arg(newtons));
+    });
+}
+
+void AcquisitionEngine::setWithdrawForceLimit(double newtons)
+{
+    post([this, newtons] {
+        State& s = *state_;
+        if (!(newtons > 0.0) || !std::isfinite(newtons)) {
+            emit message(tr("withdrawal force limit must be positive (got %1 N)").arg(newtons));
+            return;
+        }
+        s.proc->setLimits(s.proc->insertionLimit(), newtons);
+        emit message(tr("withdrawal force limit %1 N").arg(s.proc->withdrawalLimit()));
     });
 }
 
@@ -214,7 +261,7 @@ void AcquisitionEngine::setCalibration(double slope_V_per_g, const QString& name
             emit message(tr("calibration refused: slope must be positive (got %1 V/g)").arg(slope_V_per_g));
             return;
         }
-        state_->slope = slope_V_per_g;
+        state_->proc->setSlope(slope_V_per_g);
         state_->calibrationName = name;
         emit message(tr("calibration '%1': %2 V/g").arg(name).arg(slope_V_per_g, 0, 'g', 6));
     });
@@ -224,78 +271,156 @@ void AcquisitionEngine::startRun(const RunPlan& plan)
 {
     post([this, plan] {
         State& s = *state_;
-        QString refusal;
-        if (!s.fault.isEmpty())
-            refusal = tr("a device is faulted (%1); fix it and enable the stage again").arg(s.fault);
-        else if (!s.sensorOk)
-            refusal = tr("the force sensor is not streaming");
-        else if (!s.enabled)
-            refusal = tr("enable the stage first");
-        else if (s.biasing)
-            refusal = tr("wait until biasing has finished");
-        else if (!s.biased)
-            refusal = tr("bias the force sensor first (needle at rest, out of tissue)");
-        else if (!s.zeroed)
-            refusal = tr("zero the stage position first");
-        else if (s.runOpen)
-            refusal = tr("a run is already being recorded (%1)").arg(s.runPath);
-        else if (s.stage.moving)
-            refusal = tr("the stage is still moving");
-        else if (plan.outPath.isEmpty())
-            refusal = tr("no output file given");
-        if (!refusal.isEmpty()) {
-            emit runRefused(tr("run not started: %1").arg(refusal));
-            emit message(tr("run not started: %1").arg(refusal));
-            return;
-        }
-        Metadata meta = plan.metadata;
-        meta.set(QStringLiteral("rate_hz"), s.rate);
-        meta.set(QStringLiteral("device"), description_);
-        meta.set(QStringLiteral("calibration"), s.calibrationName);
-        meta.set(QStringLiteral("slope_V_per_g"), QString::number(s.slope, 'g', 8));
-        meta.set(QStringLiteral("bias_V"), QString::number(s.v0, 'f', 6));
-        meta.set(QStringLiteral("force_limit_N"), s.forceLimit);
-        meta.set(QStringLiteral("motion"), plan.motion == RunPlan::Motion::Linear ? QStringLiteral("linear") : QStringLiteral("sine"));
-        s.runStart = s.lastTime + 1.0 / s.rate;
-        meta.set(QStringLiteral("run_start_device_time_s"), QString::number(s.runStart, 'f', 6));
-        meta.set(QStringLiteral("position_source"), tr("stage read-back, interpolated to the sample clock"));
-        try {
-            s.recorder.open(plan.outPath, meta, rig_ != nullptr);
-        } catch (const RunFileError& e) {
-            const QString why = tr("run not started: %1").arg(e.message());
+        InterlockState st = snapshot().interlocks();
+        st.sessionOpen = !plan.outPath.isEmpty();
+        Permission p = permission(Control::StartInsertion, st);
+        if (p.enabled && s.approach)
+            p = {false, tr("a run is already on its way to its start position"), false};
+        if (!p.enabled) {
+            const QString why = tr("run not started: %1").arg(p.reason);
             emit runRefused(why);
             emit message(why);
             return;
         }
-        s.runOpen = true;
-        s.runPath = plan.outPath;
-        s.droppedAtStart = s.dropped;
-        s.lateAtStart = s.late;
-        s.recOverrunsAtStart = s.recorder.overruns();
-        s.runPushed = 0;
-        s.tripped = false;
-        s.pendingEndAt = -1.0;
-        s.runMotion = true;
-        s.endWhenDone = plan.endWhenMotionDone;
-        s.sawMoving = false;
-        emit runStarted(plan.outPath);
-        emit message(tr("recording to %1").arg(plan.outPath));
-        if (plan.motion == RunPlan::Motion::Linear)
-            s.dev.stage->moveLinear(plan.linear);
-        else
-            s.dev.stage->moveSine(plan.sine);
+        if (plan.startAt_mm && std::fabs(*plan.startAt_mm - s.stage.position_mm) > 0.01) {
+            const double lo = s.dev.stage->minPosition_mm(), hi = s.dev.stage->maxPosition_mm();
+            if (*plan.startAt_mm < lo || *plan.startAt_mm > hi) {
+                const QString why = tr("run not started: the start position %1 mm is outside the travel (%2 to %3 mm)")
+                                        .arg(*plan.startAt_mm).arg(lo).arg(hi);
+                emit runRefused(why);
+                emit message(why);
+                return;
+            }
+            s.approach = plan;
+            s.sawApproachMoving = false;
+            beginMove({std::max(0.1, plan.approachVelocity_mm_s), *plan.startAt_mm}, false);
+            emit message(tr("moving to the start position %1 mm (not recorded)").arg(*plan.startAt_mm, 0, 'f', 2));
+            return;
+        }
+        openRun(plan);
     });
 }
 
-void AcquisitionEngine::withdraw(double velocity_mm_s)
+void AcquisitionEngine::openRun(const RunPlan& plan)
 {
-    post([this, velocity_mm_s] {
+    State& s = *state_;
+    Metadata meta = plan.metadata;
+    meta.set(key::rate_hz, s.proc->rate());
+    meta.set(key::device, description_);
+    meta.set(key::calibration, s.calibrationName);
+    meta.set(key::slope_V_per_g, QString::number(s.proc->slope(), 'g', 8));
+    meta.set(key::bias_V, QString::number(s.proc->bias_V(), 'f', 6));
+    meta.set(key::force_limit_N, s.proc->insertionLimit());
+    meta.set(key::withdraw_force_limit_N, s.proc->withdrawalLimit());
+    meta.set(key::motion, plan.motion == RunPlan::Motion::Linear ? QStringLiteral("linear") : QStringLiteral("sine"));
+    if (plan.motion == RunPlan::Motion::Sine)
+        meta.set(key::centre_mm, QString::number(s.stage.position_mm, 'f', 4));
+    if (plan.stopAtPuncture > 0)
+        meta.set(QStringLiteral("stop_at"), QStringLiteral("puncture:%1").arg(plan.stopAtPuncture));
+    if (plan.slowAfterPuncture_mm_s > 0)
+        meta.set(QStringLiteral("slow_after_puncture_mm_s"), plan.slowAfterPuncture_mm_s);
+    s.runStart = s.proc->lastTime_s() + 1.0 / s.proc->rate();
+    meta.set(key::run_start_device_time_s, QString::number(s.runStart, 'f', 6));
+    meta.set(key::position_source, tr("stage read-back, interpolated to the sample clock"));
+    try {
+        s.recorder.open(plan.outPath, meta, truth_ != nullptr);
+    } catch (const Error& e) {
+        const QString why = tr("run not started: %1").arg(e.message());
+        emit runRefused(why);
+        emit message(why);
+        return;
+    }
+    s.runOpen = true;
+    s.runPath = plan.outPath;
+    s.runStartPosition = s.stage.position_mm;
+    s.lastRunStart_mm = s.stage.position_mm;
+    s.droppedAtStart = s.proc->counters().dropped;
+    s.lateAtStart = s.proc->counters().late;
+    s.recOverrunsAtStart = s.recorder.overruns();
+    s.runPushed = 0;
+    s.trip.reset();
+    s.punctureStop.reset();
+    s.proc->rearm();
+    s.pendingEndAt = -1.0;
+    s.runMotion = true;
+    s.endWhenDone = plan.endWhenMotionDone;
+    s.sawMoving = false;
+    s.jogging = false;
+    s.stopAtPuncture = plan.stopAtPuncture;
+    s.slowAfterPuncture = plan.slowAfterPuncture_mm_s;
+    s.runLinear = plan.linear;
+    emit runStarted(plan.outPath);
+    emit message(tr("recording to %1").arg(plan.outPath));
+    if (plan.motion == RunPlan::Motion::Linear) {
+        const bool deeper = plan.linear.target_mm > s.stage.position_mm;
+        s.runIsInsertion = deeper;
+        // Contact and puncture are watched on every insertion: they tell where the tissue
+        // begins (bias and zero advice) and serve a stop at puncture.
+        s.proc->watchPunctures(deeper);
+        s.proc->setGuard(deeper ? ForceGuard::Insertion : ForceGuard::Withdrawal);
+        s.dev.stage->moveLinear(plan.linear);
+    } else {
+        s.runIsInsertion = false;
+        s.proc->watchPunctures(false);
+        s.proc->setGuard(ForceGuard::Both);
+        s.dev.stage->moveSine(plan.sine);
+    }
+}
+
+void AcquisitionEngine::beginMove(const LinearMotion& motion, bool recordedInsertion)
+{
+    State& s = *state_;
+    const bool deeper = motion.target_mm > s.stage.position_mm;
+    s.proc->rearm();
+    s.proc->setGuard(deeper && !recordedInsertion ? ForceGuard::Both : deeper ? ForceGuard::Insertion : ForceGuard::Withdrawal);
+    s.jogging = !s.approach;
+    s.sawJogMoving = false;
+    s.dev.stage->moveLinear(motion);
+}
+
+void AcquisitionEngine::withdraw(double velocity_mm_s, double target_mm)
+{
+    post([this, velocity_mm_s, target_mm] {
         State& s = *state_;
+        const Permission p = permission(Control::Withdraw, snapshot().interlocks());
+        if (!p.enabled) {
+            emit message(tr("withdraw refused: %1").arg(p.reason));
+            return;
+        }
+        const double target = std::min(target_mm, s.stage.position_mm);
         s.runMotion = false;
-        s.tripped = false;
-        s.dev.stage->moveLinear({std::fabs(velocity_mm_s), 0.0});
-        emit message(s.runOpen ? tr("withdrawing to 0 mm; this is recorded in the open run %1").arg(s.runPath)
-                               : tr("withdrawing to 0 mm (not recorded: no run open)"));
+        s.approach.reset();
+        s.trip.reset();
+        beginMove({std::fabs(velocity_mm_s), target}, false);
+        emit message(s.runOpen ? tr("withdrawing to %1 mm; this is recorded in the open run %2").arg(target, 0, 'f', 2).arg(s.runPath)
+                               : tr("withdrawing to %1 mm (not recorded: no run open)").arg(target, 0, 'f', 2));
+    });
+}
+
+void AcquisitionEngine::jog(double delta_mm, double velocity_mm_s)
+{
+    post([this, delta_mm, velocity_mm_s] {
+        const double target = state_->stage.position_mm + delta_mm;
+        moveTo(target, velocity_mm_s);
+    });
+}
+
+void AcquisitionEngine::moveTo(double position_mm, double velocity_mm_s)
+{
+    post([this, position_mm, velocity_mm_s] {
+        State& s = *state_;
+        const Permission p = permission(Control::Jog, snapshot().interlocks());
+        if (!p.enabled) {
+            emit message(tr("move refused: %1").arg(p.reason));
+            return;
+        }
+        const double lo = s.dev.stage->minPosition_mm(), hi = s.dev.stage->maxPosition_mm();
+        if (!std::isfinite(position_mm) || position_mm < lo || position_mm > hi) {
+            emit message(tr("move refused: %1 mm is outside the travel (%2 to %3 mm)").arg(position_mm).arg(lo).arg(hi));
+            return;
+        }
+        beginMove({std::clamp(std::fabs(velocity_mm_s), 0.01, 50.0), position_mm}, false);
+        emit message(tr("moving to %1 mm (not recorded)").arg(position_mm, 0, 'f', 2));
     });
 }
 
@@ -304,6 +429,8 @@ void AcquisitionEngine::stopMotion()
     post([this] {
         State& s = *state_;
         s.runMotion = false;
+        s.approach.reset();
+        s.jogging = false;
         s.dev.stage->stop();
         emit message(s.runOpen ? tr("motion stopped; still recording") : tr("motion stopped"));
     });
@@ -317,7 +444,21 @@ void AcquisitionEngine::endRun()
         if (s.stage.moving)
             s.dev.stage->stop();
         if (s.runOpen)
-            finishRun(QStringLiteral("stopped"), {});
+            finishRun(EndReason::Stopped, {});
+    });
+}
+
+void AcquisitionEngine::interrupt()
+{
+    post([this] {
+        State& s = *state_;
+        s.runMotion = false;
+        s.approach.reset();
+        s.jogging = false;
+        if (s.stage.moving)
+            s.dev.stage->stop();
+        if (s.runOpen)
+            finishRun(EndReason::Interrupted, {});
     });
 }
 
@@ -326,49 +467,112 @@ void AcquisitionEngine::emergencyStop()
     post([this] {
         State& s = *state_;
         s.runMotion = false;
+        s.approach.reset();
+        s.jogging = false;
         s.dev.stage->emergencyStop();
-        emit message(tr("emergency stop"));
+        // The latch: the drive stays off until the operator enables it on purpose.
+        try {
+            s.dev.stage->enable(false);
+        } catch (const DeviceError& e) {
+            emit message(tr("could not disable the stage after the emergency stop: %1").arg(e.message()));
+        }
+        s.enabled = false;
+        s.latched = true;
+        emit message(tr("emergency stop: the stage is disabled until you enable it again"));
         if (s.runOpen) {
             Metadata extra;
-            extra.set(QStringLiteral("emergency_stop"), QStringLiteral("operator"));
-            finishRun(QStringLiteral("stopped"), {}, extra);
+            extra.set(key::emergency_stop, QStringLiteral("operator"));
+            finishRun(EndReason::EmergencyStop, {}, extra);
         }
     });
 }
 
 // ---- the engine thread ------------------------------------------------------------------
 
-void AcquisitionEngine::finishRun(const QString& reason, const QString& fault, const Metadata& extra)
+EngineStatus AcquisitionEngine::snapshot() const
+{
+    const State& s = *state_;
+    const ProcessorCounters& c = s.proc->counters();
+    const Sample& last = s.proc->last();
+    EngineStatus st;
+    st.running = s.sensorOk;
+    st.stageEnabled = s.enabled;
+    st.latched = s.latched;
+    st.biased = s.proc->biased();
+    st.zeroed = s.zeroed;
+    st.moving = s.stage.moving;
+    st.approaching = s.approach.has_value();
+    st.jogging = s.jogging;
+    st.recording = s.runOpen;
+    st.rateHz = s.proc->rate();
+    st.force_N = last.force_N;
+    st.position_mm = last.position_mm;
+    st.velocity_mm_s = last.velocity_mm_s;
+    st.volts = last.volts;
+    st.deviceTime_s = s.proc->lastTime_s();
+    st.runTime_s = s.runOpen ? s.proc->lastTime_s() - s.runStart : 0.0;
+    st.forceLimit_N = s.proc->insertionLimit();
+    st.withdrawForceLimit_N = s.proc->withdrawalLimit();
+    st.loaded = s.proc->biased() && s.proc->slope() > 0 && std::fabs(last.force_N) > s.noiseBand_N;
+    st.contactDepth_mm = s.contactDepth_mm;
+    st.lastRunStart_mm = s.lastRunStart_mm;
+    st.bias_V = s.proc->bias_V();
+    st.slope_V_per_g = s.proc->slope();
+    st.calibrationName = s.calibrationName;
+    st.samples = c.samples;
+    st.dropped = c.dropped;
+    st.overruns = live_.overruns() + s.recorder.overruns();
+    st.latePeriods = c.late;
+    st.forceLimitTripped = s.proc->tripped();
+    st.fault = s.fault;
+    st.realtimeWarning = s.realtimeWarning;
+    st.runPath = s.runOpen ? s.runPath : QString();
+    st.punctures = s.runOpen ? static_cast<std::uint64_t>(s.proc->punctures()) : 0;
+    return st;
+}
+
+void AcquisitionEngine::finishRun(EndReason reason, const QString& fault, const Metadata& extra)
 {
     State& s = *state_;
     if (!s.runOpen)
         return;
     Metadata footer;
-    footer.set(QStringLiteral("end_reason"), reason);
-    const std::uint64_t gaps = s.dropped - s.droppedAtStart;
+    footer.set(key::end_reason, fileName(reason));
+    const std::uint64_t gaps = s.proc->counters().dropped - s.droppedAtStart;
     const std::uint64_t overruns = s.recorder.overruns() - s.recOverrunsAtStart;
-    footer.set(QStringLiteral("sensor_gaps"), static_cast<double>(gaps));
-    footer.set(QStringLiteral("ring_overruns"), static_cast<double>(overruns));
-    footer.set(QStringLiteral("dropped"), static_cast<double>(gaps + overruns));
-    footer.set(QStringLiteral("late_periods"), static_cast<double>(s.late - s.lateAtStart));
-    if (s.tripped) {
-        footer.set(QStringLiteral("force_limit_tripped_s"), QString::number(s.tripTime - s.runStart, 'f', 6));
-        footer.set(QStringLiteral("force_limit_force_N"), QString::number(s.tripForce, 'f', 4));
-        footer.set(QStringLiteral("force_limit_position_mm"), QString::number(s.tripPosition, 'f', 4));
+    footer.set(key::sensor_gaps, static_cast<double>(gaps));
+    footer.set(key::ring_overruns, static_cast<double>(overruns));
+    footer.set(key::dropped, static_cast<double>(gaps + overruns));
+    footer.set(key::late_periods, static_cast<double>(s.proc->counters().late - s.lateAtStart));
+    if (s.trip) {
+        footer.set(key::force_limit_tripped_s, QString::number(s.trip->time_s - s.runStart, 'f', 6));
+        footer.set(key::force_limit_force_N, QString::number(s.trip->force_N, 'f', 4));
+        footer.set(key::force_limit_position_mm, QString::number(s.trip->position_mm, 'f', 4));
+    }
+    if (s.punctureStop) {
+        footer.set(QStringLiteral("puncture_stop_s"), QString::number(s.punctureStop->time_s - s.runStart, 'f', 6));
+        footer.set(QStringLiteral("puncture_stop_position_mm"), QString::number(s.punctureStop->position_mm, 'f', 4));
     }
     if (!fault.isEmpty())
-        footer.set(QStringLiteral("fault"), fault);
+        footer.set(key::fault, fault);
     for (const auto& [k, v] : extra.entries())
         footer.set(k, v);
-    footer.set(QStringLiteral("samples"), static_cast<double>(s.runPushed));
+    footer.set(key::samples, static_cast<double>(s.runPushed));
     s.recorder.close(footer);
     const std::uint64_t written = s.recorder.written();
-    RunSummary summary{s.runPath, reason, written, gaps + overruns, fault};
+    RunSummary summary{s.runPath, reason, written, gaps + overruns, fault, s.runStartPosition};
     s.runOpen = false;
     s.runMotion = false;
     s.pendingEndAt = -1.0;
+    s.proc->watchPunctures(false);
+    if (!s.stage.moving)
+        s.proc->setGuard(ForceGuard::Off);
     s.statusDirty = true;
-    emit message(tr("run ended (%1): %2 samples, %3 dropped, %4").arg(reason).arg(written).arg(gaps + overruns).arg(s.runPath));
+    emit message(tr("run ended (%1): %2 samples, %3 dropped, %4")
+                     .arg(displayName(reason))
+                     .arg(written)
+                     .arg(gaps + overruns)
+                     .arg(s.runPath));
     emit runEnded(summary);
 }
 
@@ -396,12 +600,123 @@ void AcquisitionEngine::raiseFault(const QString& device, const QString& reason,
             emit message(tr("could not stop the stage: %1").arg(e.message()));
     }
     s.runMotion = false;
+    s.approach.reset();
+    s.jogging = false;
     if (fresh) {
         emit faultOccurred(device, reason);
         emit message(tr("fault: %1").arg(text));
     }
     if (s.runOpen)
-        finishRun(QStringLiteral("fault"), text);
+        finishRun(EndReason::Fault, text);
+}
+
+void AcquisitionEngine::handle(const ProcessorEvent& e)
+{
+    State& s = *state_;
+    switch (e.kind) {
+    case ProcessorEvent::Kind::BiasDone:
+        s.statusDirty = true;
+        emit message(tr("force sensor biased: V0 = %1 V (%2 samples)").arg(e.bias_V, 0, 'f', 5).arg(e.count));
+        break;
+    case ProcessorEvent::Kind::ForceLimit:
+        s.statusDirty = true;
+        s.runMotion = false;
+        s.approach.reset();
+        s.jogging = false;
+        try {
+            s.dev.stage->emergencyStop();
+        } catch (const DeviceError& err) {
+            raiseFault(err.device(), err.reason(), false);
+        }
+        emit forceLimitTripped(e.force_N, e.position_mm);
+        emit message(tr("force limit: %1 N > %2 N at %3 mm; stage stopped")
+                         .arg(e.force_N, 0, 'f', 3)
+                         .arg(e.limit_N)
+                         .arg(e.position_mm, 0, 'f', 3));
+        if (s.runOpen && !s.trip) {
+            s.trip = e;
+            s.pendingEndAt = e.time_s + config_.forceLimitRecord_s;
+            s.pendingEndReason = EndReason::ForceLimit;
+        }
+        break;
+    case ProcessorEvent::Kind::Contact:
+        if (s.runOpen && s.runIsInsertion && !s.contactDepth_mm)
+            s.contactDepth_mm = e.position_mm;
+        break;
+    case ProcessorEvent::Kind::Puncture: {
+        if (!s.runOpen || !s.runIsInsertion || !s.runMotion)
+            break;
+        const bool stop = s.stopAtPuncture > 0 && e.count >= static_cast<std::uint64_t>(s.stopAtPuncture);
+        if (stop) {
+            s.runMotion = false;
+            s.dev.stage->emergencyStop();
+            s.punctureStop = e;
+            s.pendingEndAt = e.time_s + kStopRecord_s;
+            s.pendingEndReason = EndReason::Puncture;
+            emit message(tr("puncture %1 at %2 mm: stage stopped").arg(e.count).arg(e.position_mm, 0, 'f', 3));
+        } else if (s.slowAfterPuncture > 0 && e.count == 1) {
+            LinearMotion slow = s.runLinear;
+            slow.velocity_mm_s = s.slowAfterPuncture;
+            s.dev.stage->moveLinear(slow);
+            emit message(tr("puncture at %1 mm: slowing to %2 mm/s").arg(e.position_mm, 0, 'f', 3).arg(s.slowAfterPuncture));
+        }
+        emit punctureDetected(e.position_mm, e.force_N, static_cast<int>(e.count), stop);
+        s.statusDirty = true;
+        break;
+    }
+    }
+}
+
+void AcquisitionEngine::endRunOnMotion(bool batchHadSamples)
+{
+    State& s = *state_;
+    // An approach ends when the stage has come to rest at the start: then the run begins.
+    if (s.approach) {
+        if (s.stage.moving)
+            s.sawApproachMoving = true;
+        else if (s.sawApproachMoving && batchHadSamples) {
+            RunPlan plan = *s.approach;
+            s.approach.reset();
+            s.jogging = false;
+            openRun(plan);
+        }
+        return;
+    }
+    if (s.jogging && !s.runOpen) {
+        if (s.stage.moving)
+            s.sawJogMoving = true;
+        else if (s.sawJogMoving) {
+            s.jogging = false;
+            s.proc->setGuard(ForceGuard::Off);
+            s.statusDirty = true;
+        }
+    }
+    if (!s.runOpen)
+        return;
+    if (s.pendingEndAt >= 0 && s.proc->lastTime_s() >= s.pendingEndAt) {
+        finishRun(s.pendingEndReason, {});
+    } else if (s.runMotion) {
+        if (s.stage.moving)
+            s.sawMoving = true;
+        else if (s.sawMoving && batchHadSamples) {
+            // Only with samples in hand: the read-back that shows the stop is put on the last
+            // of them, so the run ends at the position where the axis did.
+            s.runMotion = false;
+            s.proc->setGuard(ForceGuard::Both);  // at rest but still recording
+            if (s.endWhenDone)
+                finishRun(EndReason::Completed, {});
+        }
+    }
+}
+
+void AcquisitionEngine::publishStatus()
+{
+    const EngineStatus st = snapshot();
+    {
+        std::lock_guard lock(mutex_);
+        status_ = st;
+    }
+    emit statusChanged(st);
 }
 
 void AcquisitionEngine::threadMain()
@@ -418,10 +733,9 @@ void AcquisitionEngine::threadMain()
     }
     auto startSensor = [&] {
         try {
-            s.rate = s.dev.sensor->start(config_.rateHz);
+            s.proc->setRate(s.dev.sensor->start(config_.rateHz));
             s.sensorOk = true;
-            s.any = false;
-            s.prevStageTime = -1.0;
+            s.proc->restartStream();
             // A standing fault stays until the operator enables the stage again.
         } catch (const DeviceError& e) {
             raiseFault(e.device(), e.reason(), true);
@@ -435,9 +749,8 @@ void AcquisitionEngine::threadMain()
         raiseFault(e.device(), e.reason(), false);
     }
 
-    const bool hostPaced = !rig_ || rig_->config().realtime;
-    std::vector<VoltageSample> batch;
-    batch.reserve(4096);
+    s.batch.reserve(4096);
+    s.samples.reserve(4096);
     s.nextStatus = Clock::now();
     const auto statusPeriod = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / config_.statusRateHz));
 
@@ -458,10 +771,10 @@ void AcquisitionEngine::threadMain()
         }
 
         // 2. Samples.
-        batch.clear();
+        s.batch.clear();
         if (s.sensorOk) {
             try {
-                s.dev.sensor->read(batch, kReadTimeout);
+                s.dev.sensor->read(s.batch, kReadTimeout);
             } catch (const DeviceError& e) {
                 raiseFault(e.device(), e.reason(), true);
             }
@@ -471,20 +784,14 @@ void AcquisitionEngine::threadMain()
                 startSensor();
         }
         const double arrival = hostNow();
-        if (!batch.empty() && s.probe)
-            s.probe(batch.back().deviceTime_s, arrival);
+        if (!s.batch.empty() && s.probe)
+            s.probe(s.batch.back().deviceTime_s, arrival);
 
         // 3. The stage, read back once per batch.
         if (s.stageOk || arrival >= s.stageRetryAt) {
             try {
                 s.stage = s.dev.stage->state();
                 s.stageOk = true;
-                if (!batch.empty()) {
-                    s.prevStagePos = s.stageTime >= 0 ? s.stagePosAtTime : s.stage.position_mm;
-                    s.prevStageTime = s.stageTime;
-                    s.stageTime = batch.back().deviceTime_s;
-                    s.stagePosAtTime = s.stage.position_mm;
-                }
             } catch (const DeviceError& e) {
                 if (s.stageOk)
                     raiseFault(e.device(), e.reason(), false);
@@ -493,77 +800,13 @@ void AcquisitionEngine::threadMain()
             }
         }
 
-        // 4. Each sample: convert, check the limit, hand on.
-        const double period = 1.0 / s.rate;
-        for (const VoltageSample& v : batch) {
-            if (s.any && v.index > s.expected)
-                s.dropped += v.index - s.expected;
-            s.expected = v.index + 1;
-            if (!s.any || arrival - v.deviceTime_s < s.hostOrigin)
-                s.hostOrigin = arrival - v.deviceTime_s;
-            s.any = true;
-            if (hostPaced && arrival - s.hostOrigin - v.deviceTime_s > period)
-                ++s.late;
-            ++s.samples;
-            s.lastTime = v.deviceTime_s;
-
-            Sample out;
-            out.seq = v.index;
-            out.time_s = v.deviceTime_s;
-            out.volts = v.volts;
-            // Position on the sample clock: linear between the last two read-backs.
-            double pos = s.stage.position_mm;
-            if (s.prevStageTime >= 0 && s.stageTime > s.prevStageTime && v.deviceTime_s < s.stageTime) {
-                const double f = (v.deviceTime_s - s.prevStageTime) / (s.stageTime - s.prevStageTime);
-                pos = s.prevStagePos + std::clamp(f, 0.0, 1.0) * (s.stagePosAtTime - s.prevStagePos);
-            }
-            out.position_mm = pos;
-            out.velocity_mm_s = s.stage.velocity_mm_s;
-            out.force_N = s.slope > 0 ? forceFromVolts(v.volts, s.v0, s.slope) : 0.0;
-
-            if (s.biasing) {
-                s.biasSum += v.volts;
-                ++s.biasCount;
-                if (v.deviceTime_s >= s.biasEnd && s.biasCount > 0) {
-                    s.v0 = s.biasSum / static_cast<double>(s.biasCount);
-                    s.biasing = false;
-                    s.biased = true;
-                    s.statusDirty = true;
-                    emit message(tr("force sensor biased: V0 = %1 V (%2 samples)").arg(s.v0, 0, 'f', 5).arg(s.biasCount));
-                }
-            }
-
-            // The force limit: the first sample over it stops the axis, before anything else.
-            if (s.biased && !s.tripped && std::fabs(out.force_N) > s.forceLimit && (s.stage.moving || s.runOpen)) {
-                s.tripped = true;
-                s.statusDirty = true;
-                s.tripForce = out.force_N;
-                s.tripPosition = out.position_mm;
-                s.tripTime = v.deviceTime_s;
-                s.runMotion = false;
-                try {
-                    s.dev.stage->emergencyStop();
-                } catch (const DeviceError& e) {
-                    raiseFault(e.device(), e.reason(), false);
-                }
-                emit forceLimitTripped(out.force_N, out.position_mm);
-                emit message(tr("force limit: %1 N > %2 N at %3 mm; stage stopped")
-                                 .arg(out.force_N, 0, 'f', 3)
-                                 .arg(s.forceLimit)
-                                 .arg(out.position_mm, 0, 'f', 3));
-                if (s.runOpen) {
-                    // Record the stop itself, then close.
-                    s.pendingEndAt = v.deviceTime_s + config_.forceLimitRecord_s;
-                    s.pendingEndReason = QStringLiteral("force_limit");
-                }
-            }
-
-            if (rig_) {
-                const sim::SampleTruth t = rig_->sampleTruth(v.index);
-                out.tissue_position_mm = t.tissue_mm;
-                out.phase = t.phase;
-            }
-            s.last = out;
+        // 4. The samples: converted and guarded by the processor, then handed on.
+        s.samples.clear();
+        s.events.clear();
+        s.proc->process(s.batch, s.stage, arrival, s.samples, s.events);
+        for (const ProcessorEvent& e : s.events)
+            handle(e);
+        for (const Sample& out : s.samples) {
             if (config_.liveView)
                 live_.push(out);
             if (s.runOpen) {
@@ -574,64 +817,20 @@ void AcquisitionEngine::threadMain()
             }
         }
 
-        // 5. Run bookkeeping.
-        if (s.runOpen) {
-            if (s.pendingEndAt >= 0 && s.lastTime >= s.pendingEndAt) {
-                finishRun(s.pendingEndReason, {});
-            } else if (s.runMotion) {
-                if (s.stage.moving)
-                    s.sawMoving = true;
-                else if (s.sawMoving && !batch.empty()) {
-                    // Only with samples in hand: the read-back that shows the stop is put on
-                    // the last of them, so the run ends at the position where the axis did.
-                    s.runMotion = false;
-                    if (s.endWhenDone)
-                        finishRun(QStringLiteral("completed"), {});
-                }
-            }
-        }
+        // 5. Runs, approaches and jogs that end with the motion.
+        endRunOnMotion(!s.batch.empty());
 
         // 6. Status at ~25 Hz.
         const auto now = Clock::now();
         if (now >= s.nextStatus || s.statusDirty) {
             s.nextStatus = now + statusPeriod;
             s.statusDirty = false;
-            EngineStatus st;
-            st.running = s.sensorOk;
-            st.stageEnabled = s.enabled;
-            st.biased = s.biased;
-            st.zeroed = s.zeroed;
-            st.moving = s.stage.moving;
-            st.recording = s.runOpen;
-            st.rateHz = s.rate;
-            st.force_N = s.last.force_N;
-            st.position_mm = s.last.position_mm;
-            st.velocity_mm_s = s.last.velocity_mm_s;
-            st.volts = s.last.volts;
-            st.deviceTime_s = s.lastTime;
-            st.runTime_s = s.runOpen ? s.lastTime - s.runStart : 0.0;
-            st.forceLimit_N = s.forceLimit;
-            st.bias_V = s.v0;
-            st.slope_V_per_g = s.slope;
-            st.calibrationName = s.calibrationName;
-            st.samples = s.samples;
-            st.dropped = s.dropped;
-            st.overruns = live_.overruns() + s.recorder.overruns();
-            st.latePeriods = s.late;
-            st.forceLimitTripped = s.tripped;
-            st.fault = s.fault;
-            st.realtimeWarning = s.realtimeWarning;
-            st.runPath = s.runOpen ? s.runPath : QString();
-            {
-                std::lock_guard lock(mutex_);
-                status_ = st;
-            }
-            emit statusChanged(st);
+            publishStatus();
         }
 
-        // 7. A simulated rig running as fast as possible has nothing to hurry through while
-        // nothing happens: wait for the operator instead of racing its clock (and a core) ahead.
-        if (!hostPaced && s.sensorOk && !s.runOpen && !s.biasing && !s.stage.moving) {
+        // 7. A device clock that runs as fast as it is read has nothing to hurry through while
+        // nothing happens: wait for the operator instead of racing it (and a core) ahead.
+        if (!hostPaced_ && s.sensorOk && !s.runOpen && !s.proc->biasing() && !s.stage.moving && !s.approach) {
             std::unique_lock lock(mutex_);
             wake_.wait_for(lock, kIdleWait, [&] { return !commands_.empty() || quit_.load(); });
         }
@@ -639,7 +838,7 @@ void AcquisitionEngine::threadMain()
 
     // Shutting down: close the run, leave the axis at rest.
     if (s.runOpen)
-        finishRun(QStringLiteral("stopped"), {});
+        finishRun(EndReason::Stopped, {});
     try {
         if (s.stage.moving)
             s.dev.stage->stop();

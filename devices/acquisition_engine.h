@@ -6,8 +6,10 @@
 // Public slots may be called from any thread: they are queued to the engine thread.
 // Signals are emitted from the engine thread (connect with the default AutoConnection).
 
+#include "core/end_reason.h"
 #include "core/run.h"
 #include "devices/device_set.h"
+#include "devices/interlocks.h"
 #include "devices/recorder.h"
 #include "devices/spsc_ring.h"
 #include "devices/stage.h"
@@ -21,9 +23,12 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace nb::devices {
+
+struct ProcessorEvent;
 
 struct RunPlan {
     enum class Motion { Linear, Sine };
@@ -33,24 +38,39 @@ struct RunPlan {
     QString outPath;
     Metadata metadata;            // protocol, tissue, ... (the engine adds rate, device, calibration)
     bool endWhenMotionDone = true; // false: keeps recording after the move until endRun()
+    // Moves here first, unrecorded, and starts recording on arrival (a sine's centre inside
+    // the tissue). Unset: the run starts where the stage is.
+    std::optional<double> startAt_mm;
+    double approachVelocity_mm_s = 5.0;
+    // Linear insertions: stop after this many punctures (0: never), or slow to this velocity
+    // after the first (0: keep going). Decided on the acquisition thread from the live force.
+    int stopAtPuncture = 0;
+    double slowAfterPuncture_mm_s = 0.0;
 };
 
 struct RunSummary {
     QString path;
-    QString endReason;           // completed | stopped | force_limit | fault
+    EndReason endReason = EndReason::Completed;
     std::uint64_t samples = 0;   // rows written
     std::uint64_t dropped = 0;   // samples lost (sensor gaps + recorder ring overruns)
     QString fault;
+    double startPosition_mm = 0.0;  // where the stage stood when the run began
 };
 
 struct EngineStatus {
     bool running = false;        // the sampling thread is up and the sensor streaming
     bool stageEnabled = false, biased = false, zeroed = false, moving = false, recording = false;
+    bool latched = false;        // an emergency stop holds until the stage is enabled again
+    bool approaching = false;    // moving to a run's start position, not yet recording
+    bool jogging = false;        // an unrecorded move the operator asked for
     double rateHz = 0.0;
     double force_N = 0.0, position_mm = 0.0, velocity_mm_s = 0.0, volts = 0.0;
     double deviceTime_s = 0.0;
     double runTime_s = 0.0;
     double forceLimit_N = 0.0;
+    double withdrawForceLimit_N = 0.0;
+    std::optional<double> contactDepth_mm;  // where the last insertion met tissue, since the last zero
+    std::optional<double> lastRunStart_mm;  // where the last run began: "withdraw to the start"
     double bias_V = 0.0, slope_V_per_g = 0.0;
     QString calibrationName;
     std::uint64_t samples = 0;   // since the engine started
@@ -58,14 +78,22 @@ struct EngineStatus {
     std::uint64_t overruns = 0;  // live + recorder ring overruns
     std::uint64_t latePeriods = 0;
     bool forceLimitTripped = false;
+    bool loaded = false;         // |F| above the noise band (biased and calibrated)
     QString fault;               // empty when healthy
     QString realtimeWarning;     // empty when SCHED_FIFO + mlockall were granted
     QString runPath;
+    std::uint64_t punctures = 0; // during the open run
+
+    // What the operator may do now, as far as the engine can tell (the window adds what it
+    // knows: the session, the motion fields).
+    InterlockState interlocks() const;
 };
 
 struct EngineConfig {
     double rateHz = 500.0;               // 100 .. 10000
-    double forceLimit_N = 8.0;           // below the 10 N capacity
+    double forceLimit_N = 8.0;           // below the 10 N capacity; guards insertion
+    double withdrawForceLimit_N = 9.5;   // |F| while the needle comes out (never below the insertion limit)
+    double noiseBand_N = 0.05;           // |F| above this is "loaded": bias and zero are refused
     bool realtimeScheduling = true;      // SCHED_FIFO when permitted (off for as-fast-as-possible sims)
     std::size_t liveCapacity = 1 << 15;
     double statusRateHz = 25.0;
@@ -87,9 +115,12 @@ public:
 
     // Single consumer: the GUI thread (drain at 25-60 Hz).
     SpscRing<Sample>& liveRing() { return live_; }
-    // The simulated rig behind the devices, or null.
-    std::shared_ptr<sim::SimulatedRig> rig() const { return rig_; }
     QString deviceDescription() const { return description_; }
+    // What the device set can do beyond its stage and sensor (null when it cannot).
+    std::shared_ptr<CalibrationLoad> calibrationLoad() const { return calibrationLoad_; }
+    std::shared_ptr<GroundTruthSource> groundTruth() const { return truth_; }
+    // The sensor chain's nominal calibration (V/g), 0 when the devices do not know it.
+    double nominalSlope_V_per_g() const { return nominalSlope_; }
     // Thread-safe snapshot (also sent by statusChanged).
     EngineStatus status() const;
     // Linux thread ids for CPU accounting (0 when not running).
@@ -100,20 +131,32 @@ public:
     void setArrivalProbe(std::function<void(double deviceTime_s, double hostTime_s)> probe);
 
 public slots:
+    // Enabling also releases an emergency-stop latch: the operator's deliberate reset.
     void enableStage(bool on);
-    void biasSensor();
-    void zeroStage();
+    // `insist`: the operator confirmed a bias or zero the interlocks advised against.
+    void biasSensor(bool insist = false);
+    void zeroStage(bool insist = false);
     void setForceLimit(double newtons);
+    void setWithdrawForceLimit(double newtons);
     void setCalibration(double slope_V_per_g, const QString& name);
     void startRun(const nb::devices::RunPlan& plan);
-    void withdraw(double velocity_mm_s);
+    // Out to `target_mm` (default 0), never recorded unless a run is open; guarded by the
+    // withdrawal limit, so a force-limit stop never traps the needle.
+    void withdraw(double velocity_mm_s, double target_mm = 0.0);
+    // Unrecorded moves: by `delta_mm`, or to a position, within the stage's travel.
+    void jog(double delta_mm, double velocity_mm_s);
+    void moveTo(double position_mm, double velocity_mm_s);
     void stopMotion();
     void endRun();
     void emergencyStop();
+    // The program is told to end (a signal): stop the motion, close the run as `interrupted`.
+    void interrupt();
 
 signals:
     void statusChanged(const nb::devices::EngineStatus& status);
     void runStarted(const QString& path);
+    // A stop at puncture or a slow-down after one (stopped = the stage was stopped).
+    void punctureDetected(double position_mm, double force_N, int count, bool stopped);
     void runEnded(const nb::devices::RunSummary& summary);
     void faultOccurred(const QString& device, const QString& reason);
     void forceLimitTripped(double force_N, double position_mm);
@@ -125,10 +168,19 @@ private:
     struct State;
     void post(std::function<void()> command);
     void threadMain();
-    void finishRun(const QString& reason, const QString& fault, const Metadata& extra = {});
+    void finishRun(EndReason reason, const QString& fault, const Metadata& extra = {});
     void raiseFault(const QString& device, const QString& reason, bool sensor);
+    void openRun(const RunPlan& plan);
+    void beginMove(const LinearMotion& motion, bool recordedInsertion);
+    void handle(const ProcessorEvent& e);
+    void endRunOnMotion(bool batchHadSamples);
+    void publishStatus();
+    EngineStatus snapshot() const;
 
-    std::shared_ptr<sim::SimulatedRig> rig_;
+    std::shared_ptr<GroundTruthSource> truth_;
+    std::shared_ptr<CalibrationLoad> calibrationLoad_;
+    double nominalSlope_ = 0.0;
+    bool hostPaced_ = true;
     QString description_;
     EngineConfig config_;
     SpscRing<Sample> live_;

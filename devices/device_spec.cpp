@@ -18,7 +18,37 @@ namespace {
 // The thesis's load cell, 12.3 mV/N, straight into the U6's differential input.
 constexpr double kBridgeSlope_V_per_g = 0.0123 * 9.81 / 1000.0;
 
+sim::RigConfig rigConfig(const SimulatedRigSpec& spec)
+{
+    sim::RigConfig c;
+    c.tissue = spec.tissue;
+    c.tip = spec.tip.isEmpty() ? sim::usualTip(spec.tissue, false) : sim::tipFromName(spec.tip).value_or(c.tip);
+    const QString setup = spec.setup.isEmpty() ? sim::usualSetup(spec.tissue) : spec.setup;
+    c.setup = setup == QLatin1String("platform") ? sim::Setup::Platform : sim::Setup::Organ;
+    c.seed = spec.seed;
+    c.realtime = spec.realtime;
+    return c;
+}
+
 }  // namespace
+
+QStringList simulatedTissues() { return sim::tissueNames(); }
+
+QStringList tipNames()
+{
+    return {sim::tipName(sim::Tip::Beveled), sim::tipName(sim::Tip::Diamond), sim::tipName(sim::Tip::Blunt)};
+}
+
+QString checkSimulatedRig(const SimulatedRigSpec& spec)
+{
+    if (!sim::tissueNames().contains(spec.tissue))
+        return nb::TrDevices::tr("unknown tissue '%1' (%2)").arg(spec.tissue, sim::tissueNames().join(QLatin1Char('|')));
+    if (!spec.tip.isEmpty() && !sim::tipFromName(spec.tip))
+        return nb::TrDevices::tr("unknown tip '%1' (%2)").arg(spec.tip, tipNames().join(QLatin1Char('|')));
+    if (!spec.setup.isEmpty() && spec.setup != QLatin1String("organ") && spec.setup != QLatin1String("platform"))
+        return nb::TrDevices::tr("unknown setup '%1' (organ|platform)").arg(spec.setup);
+    return {};
+}
 
 QString checkDaqSpec(const QString& spec)
 {
@@ -50,6 +80,12 @@ DeviceSpec specFromSettings(const QSettings& s)
     d.u6Channel = s.value(QStringLiteral("devices/u6_channel"), d.u6Channel).toInt();
     d.u6GainIndex = s.value(QStringLiteral("devices/u6_gain_index"), d.u6GainIndex).toInt();
     d.slope_V_per_g = s.value(QStringLiteral("devices/slope_V_per_g"), d.slope_V_per_g).toDouble();
+    d.simulated.tissue = s.value(QStringLiteral("sim/tissue"), d.simulated.tissue).toString();
+    d.simulated.tip = s.value(QStringLiteral("sim/tip"), d.simulated.tip).toString();
+    d.simulated.setup = s.value(QStringLiteral("sim/setup"), d.simulated.setup).toString();
+    d.simulated.seed = s.value(QStringLiteral("sim/seed"), d.simulated.seed).toULongLong();
+    if (!checkSimulatedRig(d.simulated).isEmpty())
+        d.simulated = SimulatedRigSpec{};  // a hand-edited setting must not stop the window from opening
     return d;
 }
 
@@ -61,10 +97,17 @@ void saveSpec(QSettings& s, const DeviceSpec& d)
     s.setValue(QStringLiteral("devices/u6_channel"), d.u6Channel);
     s.setValue(QStringLiteral("devices/u6_gain_index"), d.u6GainIndex);
     s.setValue(QStringLiteral("devices/slope_V_per_g"), d.slope_V_per_g);
+    s.setValue(QStringLiteral("sim/tissue"), d.simulated.tissue);
+    s.setValue(QStringLiteral("sim/tip"), d.simulated.tip);
+    s.setValue(QStringLiteral("sim/setup"), d.simulated.setup);
+    s.setValue(QStringLiteral("sim/seed"), d.simulated.seed);
 }
 
-DeviceSet openDevices(const DeviceSpec& spec, const sim::RigConfig& simConfig)
+DeviceSet openDevices(const DeviceSpec& spec)
 {
+    if (const QString e = checkSimulatedRig(spec.simulated); !e.isEmpty())
+        throw DeviceError(nb::TrDevices::tr("simulated rig"), e);
+    const sim::RigConfig simConfig = rigConfig(spec.simulated);
     if (const QString e = checkDaqSpec(spec.daq); !e.isEmpty())
         throw DeviceError(QStringLiteral("--daq"), e);
     if (const QString e = checkStageSpec(spec.stage); !e.isEmpty())
@@ -72,7 +115,7 @@ DeviceSet openDevices(const DeviceSpec& spec, const sim::RigConfig& simConfig)
     const bool simDaq = spec.daq == QLatin1String("sim");
     const bool simStage = spec.stage == QLatin1String("sim");
     if (simDaq && simStage)
-        return makeSimulatedDevices(simConfig);
+        return sim::makeSimulatedDevices(simConfig);
 
     DeviceSet set;
     QStringList parts;
@@ -80,9 +123,11 @@ DeviceSet openDevices(const DeviceSpec& spec, const sim::RigConfig& simConfig)
         // Half real, half simulated: the simulated half must keep wall-clock time.
         sim::RigConfig c = simConfig;
         c.realtime = true;
-        DeviceSet simulated = makeSimulatedDevices(c);
-        set.rig = simulated.rig;
+        DeviceSet simulated = sim::makeSimulatedDevices(c);
         if (simDaq) {
+            // The simulated load cell's truth and masses are its own; a real stage moves
+            // nothing the simulator sees, so its truth would be fiction: keep the masses only.
+            set.calibrationLoad = simulated.calibrationLoad;
             set.sensor = std::move(simulated.sensor);
             set.nominalSlope_V_per_g = simulated.nominalSlope_V_per_g;
             parts << nb::TrDevices::tr("simulated load cell");
@@ -109,11 +154,23 @@ DeviceSet openDevices(const DeviceSpec& spec, const sim::RigConfig& simConfig)
         parts << stage->name();
         set.stage = std::move(stage);
     }
-    // A real sensor makes the (simulated) rig's own sensor truth meaningless.
-    if (!simDaq)
-        set.rig.reset();
     set.description = parts.join(QStringLiteral(", "));
     return set;
+}
+
+DeviceSet openDevicesOrSimulated(const DeviceSpec& spec, QString* problem)
+{
+    try {
+        return openDevices(spec);
+    } catch (const DeviceError& e) {
+        *problem = e.message();
+    }
+    DeviceSpec fallback;
+    fallback.simulated = spec.simulated;
+    if (!checkSimulatedRig(fallback.simulated).isEmpty())
+        fallback.simulated = SimulatedRigSpec{};
+    fallback.simulated.realtime = spec.simulated.realtime;
+    return sim::makeSimulatedDevices(rigConfig(fallback.simulated));
 }
 
 std::vector<ConnectedDevice> listDevices()

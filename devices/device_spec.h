@@ -6,6 +6,7 @@
 #include "devices/device_set.h"
 
 #include <QString>
+#include <QStringList>
 #include <optional>
 #include <vector>
 
@@ -13,9 +14,14 @@ class QSettings;
 
 namespace nb::devices {
 
-namespace sim {
-struct RigConfig;
-}
+// The simulated rig's settings, used for whatever the spec says is "sim".
+struct SimulatedRigSpec {
+    QString tissue = QStringLiteral("liver1");  // a preset: simulatedTissues()
+    QString tip;                                // beveled | diamond | blunt; empty: the preset's usual tip
+    QString setup;                              // organ | platform; empty: platform for the friction slab (liver7)
+    quint64 seed = 1;
+    bool realtime = true;                       // false: as fast as possible on a simulated clock
+};
 
 struct DeviceSpec {
     QString daq = QStringLiteral("sim");     // sim | u6 | u6:SERIAL
@@ -24,6 +30,7 @@ struct DeviceSpec {
     int u6Channel = 0;
     int u6GainIndex = 2;                     // x100: +-100 mV, a bridge without an amplifier
     double slope_V_per_g = 0.0;              // the sensor chain's calibration; 0: nominal 12.3 mV/N at the U6
+    SimulatedRigSpec simulated;
 };
 
 // Empty when `spec` is valid, else what is wrong with it (for the user).
@@ -31,13 +38,23 @@ QString checkDaqSpec(const QString& spec);
 QString checkStageSpec(const QString& spec);
 
 // Reads devices/daq, devices/stage, devices/zaber_microsteps_per_mm, devices/u6_channel,
-// devices/u6_gain_index, devices/slope_V_per_g; missing keys keep the defaults.
+// devices/u6_gain_index, devices/slope_V_per_g and sim/tissue, sim/tip, sim/setup, sim/seed;
+// missing keys keep the defaults.
 DeviceSpec specFromSettings(const QSettings& settings);
 void saveSpec(QSettings& settings, const DeviceSpec& spec);
 
 // Opens the devices (throws DeviceError naming the one that failed). Whatever is "sim" comes
-// from a simulated rig made from `simConfig`.
-DeviceSet openDevices(const DeviceSpec& spec, const sim::RigConfig& simConfig);
+// from a simulated rig made from `spec.simulated`.
+DeviceSet openDevices(const DeviceSpec& spec);
+// The same, but never leaves the operator without a rig: what cannot be opened is replaced by
+// the simulated rig, and `problem` says which device failed and why.
+DeviceSet openDevicesOrSimulated(const DeviceSpec& spec, QString* problem);
+
+// What the simulated rig offers, for choosers: preset names and tip names.
+QStringList simulatedTissues();
+QStringList tipNames();
+// Empty when the simulated rig's settings are valid, else what is wrong (for the user).
+QString checkSimulatedRig(const SimulatedRigSpec& spec);
 
 struct ConnectedDevice {
     QString kind;         // "daq" | "serial"

@@ -79,17 +79,6 @@ void Recorder::writerLoop()
     tid_ = static_cast<int>(::syscall(SYS_gettid));
     std::vector<Sample> batch;
     batch.reserve(4096);
-    static const QString phases[] = {QString(), QStringLiteral("a"), QStringLiteral("b1"), QStringLiteral("b2"),
-                                     QStringLiteral("c")};
-    auto phaseText = [](char p) -> const QString& {
-        switch (p) {
-        case 'a': return phases[1];
-        case '1': return phases[2];
-        case '2': return phases[3];
-        case 'c': return phases[4];
-        default: return phases[0];
-        }
-    };
     for (;;) {
         const bool last = stopRequested_.load(std::memory_order_acquire);
         batch.clear();
@@ -99,7 +88,7 @@ void Recorder::writerLoop()
                 if (impl_->truth) {
                     const std::array<double, 7> row{s.time_s, s.position_mm, s.force_N, s.velocity_mm_s,
                                                     s.volts, static_cast<double>(s.seq), s.tissue_position_mm};
-                    const QString& ph = phaseText(s.phase);
+                    const QString& ph = phaseName(s.phase);
                     impl_->writer.writeRow(row, std::span<const QString>(&ph, 1));
                 } else {
                     const std::array<double, 6> row{s.time_s, s.position_mm, s.force_N, s.velocity_mm_s,

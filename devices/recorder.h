@@ -3,6 +3,7 @@
 // 100 ms so that a crash (even kill -9) loses at most the last 100 ms.
 
 #include "core/run.h"
+#include "devices/ground_truth.h"
 #include "devices/spsc_ring.h"
 
 #include <QString>
@@ -23,9 +24,9 @@ struct Sample {
     double force_N = 0.0;
     double volts = 0.0;
     double velocity_mm_s = 0.0;
-    // Simulated runs only (NaN / 0 otherwise): the ground truth of this sample.
+    // Only from a device set with a ground-truth source (NaN / None otherwise).
     double tissue_position_mm = std::numeric_limits<double>::quiet_NaN();
-    char phase = 0;
+    TruePhase phase = TruePhase::None;
 };
 
 class Recorder {

@@ -181,7 +181,7 @@ Befehle:
 <context>
     <name>nb</name>
     <message>
-        <location filename="../core/session.cpp" line="+193"/>
+        <location filename="../core/session.cpp" line="+185"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation>Ordner kann nicht angelegt werden</translation>
@@ -360,12 +360,12 @@ Befehle:
     </message>
     <message>
         <location line="+17"/>
-        <location line="+231"/>
+        <location line="+234"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation>Noch kein Fit: mindestens zwei Massen messen.</translation>
     </message>
     <message>
-        <location line="-219"/>
+        <location line="-222"/>
         <source>Measure selected mass</source>
         <translation>Gewählte Masse messen</translation>
     </message>
@@ -405,7 +405,7 @@ Befehle:
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+118"/>
         <source>Measuring %1 g for %2 s…</source>
         <translation>Messe %1 g für %2 s…</translation>
     </message>
@@ -415,7 +415,7 @@ Befehle:
         <translation>Messe %1 g für %2 s: die Masse ruhig hängen lassen…</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Hang %1 g on the sensor, then press Measure.</source>
         <translation>%1 g an den Sensor hängen, dann „Messen“ drücken.</translation>
     </message>
@@ -449,12 +449,12 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+242"/>
+        <location line="+241"/>
         <source>Enable stage</source>
         <translation>Achse einschalten</translation>
     </message>
     <message>
-        <location line="-242"/>
+        <location line="-241"/>
         <source>Powers the stage drive</source>
         <translation>Schaltet den Antrieb der Achse ein</translation>
     </message>
@@ -690,7 +690,7 @@ Befehle:
         <translation>Die Tiefe (%1 mm) liegt nicht tiefer als die Nadel jetzt (%2 mm).</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>Not now: %1</source>
         <translation>Jetzt nicht: %1</translation>
     </message>
@@ -804,7 +804,7 @@ Befehle:
 <context>
     <name>nb::DeviceDialog</name>
     <message>
-        <location filename="../widgets/device_dialog.cpp" line="+37"/>
+        <location filename="../widgets/device_dialog.cpp" line="+29"/>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
@@ -895,7 +895,7 @@ Befehle:
         <translation>&amp;Neu suchen</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>Simulated rig</source>
         <translation>Simulierter Prüfstand</translation>
     </message>
@@ -1171,12 +1171,12 @@ Befehle:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+60"/>
+        <location filename="../app/main_window.cpp" line="+58"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>&amp;Record</source>
         <translation>&amp;Aufnahme</translation>
     </message>
@@ -1226,7 +1226,7 @@ Befehle:
         <translation>Not-Halt</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+72"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1251,7 +1251,7 @@ Befehle:
         <translation>Kraftgrenze</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Devices not changed: end the run first.</source>
         <translation>Geräte nicht gewechselt: beenden Sie zuerst den Lauf.</translation>
     </message>
@@ -1316,7 +1316,12 @@ Befehle:
         <translation>&amp;Nennkalibrierung des Sensors verwenden</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>These devices do not state a nominal calibration: calibrate the sensor.</source>
+        <translation>Diese Geräte nennen keine Nennkalibrierung: Kalibrieren Sie den Sensor.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -1430,7 +1435,7 @@ Befehle:
         <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-298"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1920,7 +1925,7 @@ Befehle:
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+58"/>
+        <location filename="../app/cmd_simulate.cpp" line="+42"/>
         <source>the run file to write</source>
         <translation>die zu schreibende Laufdatei</translation>
     </message>
@@ -1976,6 +1981,18 @@ Befehle:
         <translation>Kalibriersteigung d des Sensors in V/g (Standard: Einstellungen, sonst Nennwert)</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+5"/>
+        <source>stop the insertion at a puncture: puncture (the first) or puncture:N (the N-th)</source>
+        <translation>die Insertion bei einer Punktion anhalten: puncture (die erste) oder puncture:N (die N-te)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+1"/>
+        <source>slow the insertion to V mm/s after the first puncture</source>
+        <translation>die Insertion nach der ersten Punktion auf V mm/s verlangsamen</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>Run &apos;needlebench acquire --help&apos; for the options.</source>
         <translation>&apos;needlebench acquire --help&apos; zeigt die Optionen.</translation>
@@ -1987,7 +2004,7 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+38"/>
+        <location filename="../app/cmd_simulate.cpp" line="+34"/>
         <source>--out RUN.csv is required</source>
         <translation>--out LAUF.csv ist erforderlich</translation>
     </message>
@@ -1997,9 +2014,10 @@ Befehle:
         <translation>--%1 muss eine Zahl in [%2, %3] sein (erhalten: &apos;%4&apos;)</translation>
     </message>
     <message>
-        <location line="+92"/>
-        <source>the devices did not get ready within 10 s</source>
-        <translation>die Geräte wurden nicht innerhalb von 10 s bereit</translation>
+        <location line="+57"/>
+        <location filename="../app/cmd_simulate.cpp" line="+87"/>
+        <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
+        <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
     <message>
         <location filename="../app/cmd_events.cpp" line="+39"/>
@@ -2107,7 +2125,7 @@ Befehle:
         <translation>--out PFAD ist erforderlich</translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="+103"/>
+        <location filename="../app/cmd_demo.cpp" line="+70"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
         <translation>Eine kurze Sitzung in einem Zug simulieren, markieren, auswerten und exportieren.</translation>
     </message>
@@ -2142,11 +2160,9 @@ Befehle:
         <translation>Sitzungsordner %1</translation>
     </message>
     <message>
-        <location line="+34"/>
-        <source>simulating %1 failed:
-%2</source>
-        <translation>Simulation von %1 fehlgeschlagen:
-%2</translation>
+        <location line="+47"/>
+        <source>simulating %1 failed: %2</source>
+        <translation>Simulation von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2164,7 +2180,7 @@ Befehle:
         <translation>Einstich 4 mm/s</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+19"/>
         <source>rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)</source>
         <translation>Bildgebungsvideo %1 gerendert (%2 Bilder bei 29,97/s, Beginn %3 s vor der Aufnahme)</translation>
     </message>
@@ -2296,7 +2312,7 @@ Befehle:
         <translation>abgebrochen; %1 wurde nicht geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="-241"/>
+        <location filename="../app/cmd_demo.cpp" line="-245"/>
         <location filename="../app/cmd_export.cpp" line="+6"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: Ordner kann nicht angelegt werden</translation>
@@ -2590,7 +2606,7 @@ Befehle:
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-50"/>
+        <location filename="../app/cmd_simulate.cpp" line="-139"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -2640,7 +2656,7 @@ Befehle:
         <translation>auch die Bildgebungsansicht rendern (29,97 Bilder/s; .avi, .mkv oder .mp4)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>the video starts this long before the recording (default 0)</source>
         <translation>das Video beginnt so lange vor der Aufzeichnung (Standard 0)</translation>
     </message>
@@ -2675,7 +2691,7 @@ Befehle:
         <translation>unbekannte Spitze &apos;%1&apos; (beveled|diamond|blunt)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>--seed: &apos;%1&apos; is not a non-negative integer</source>
         <translation>--seed: &apos;%1&apos; ist keine nichtnegative ganze Zahl</translation>
     </message>
@@ -2720,17 +2736,17 @@ Befehle:
         <translation>--cycles muss eine positive ganze Zahl sein</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+21"/>
+        <source>--slow-after-puncture must be in (0, %1] mm/s</source>
+        <translation>--slow-after-puncture muss in (0, %1] mm/s liegen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Run &apos;needlebench simulate --help&apos; for the options.</source>
         <translation>&apos;needlebench simulate --help&apos; zeigt die Optionen.</translation>
     </message>
     <message>
-        <location line="+72"/>
-        <source>the run did not finish within 30 minutes</source>
-        <translation>der Lauf wurde nicht innerhalb von 30 Minuten fertig</translation>
-    </message>
-    <message>
-        <location line="+48"/>
+        <location filename="../app/simulated_run.cpp" line="+140"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -3000,7 +3016,7 @@ Befehle:
         <location line="+7"/>
         <location filename="../core/labels.cpp" line="+110"/>
         <location line="+11"/>
-        <location filename="../core/run_file.cpp" line="+292"/>
+        <location filename="../core/run_file.cpp" line="+288"/>
         <location line="+37"/>
         <location line="+17"/>
         <source>cannot write: %1</source>
@@ -3337,7 +3353,7 @@ Befehle:
         <translation>Schreiben fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-112"/>
+        <location filename="../core/session.cpp" line="-104"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation>ungültiges JSON bei Byte %1: %2</translation>
     </message>
@@ -3347,12 +3363,58 @@ Befehle:
         <translation>JSON-Objekt erwartet</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location filename="../core/end_reason.cpp" line="+45"/>
+        <source>completed</source>
+        <translation>abgeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ended by operator</source>
+        <translation>vom Bediener beendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>motion stopped</source>
+        <translation>Bewegung gestoppt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>emergency stop</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force limit</source>
+        <translation>Kraftgrenze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped at puncture</source>
+        <translation>bei Punktion angehalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device fault</source>
+        <translation>Gerätefehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write error</source>
+        <translation>Schreibfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../core/session.cpp" line="+59"/>
         <source>interrupted</source>
         <translation>unterbrochen</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>aborted</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../core/session.cpp" line="+1"/>
         <source>complete</source>
         <translation>vollständig</translation>
     </message>
@@ -3372,12 +3434,13 @@ Befehle:
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../core/end_reason.cpp" line="+1"/>
+        <location filename="../core/session.cpp" line="+1"/>
         <source>recovered</source>
         <translation>wiederhergestellt</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../core/session.cpp" line="+1"/>
         <source>unreadable</source>
         <translation>unlesbar</translation>
     </message>
@@ -3385,7 +3448,22 @@ Befehle:
 <context>
     <name>nb::TrDevices</name>
     <message>
-        <location filename="../devices/device_spec.cpp" line="+30"/>
+        <location filename="../devices/device_spec.cpp" line="+45"/>
+        <source>unknown tissue &apos;%1&apos; (%2)</source>
+        <translation>unbekanntes Gewebe &apos;%1&apos; (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown tip &apos;%1&apos; (%2)</source>
+        <translation>unbekannte Spitze „%1“ (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown setup &apos;%1&apos; (organ|platform)</source>
+        <translation>unbekannter Aufbau „%1“ (organ|platform)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>&apos;%1&apos;: the U6 serial number must be digits (see &apos;needlebench devices&apos;)</source>
         <translation>&apos;%1&apos;: die Seriennummer des U6 besteht aus Ziffern (siehe &apos;needlebench devices&apos;)</translation>
     </message>
@@ -3400,7 +3478,12 @@ Befehle:
         <translation>unbekannte Achse &apos;%1&apos; (sim | zaber:PORT)</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+38"/>
+        <source>simulated rig</source>
+        <translation>simulierter Versuchsstand</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <location filename="../devices/sim/simulated_rig.cpp" line="+51"/>
         <source>simulated load cell</source>
         <translation>simulierte Kraftmessdose</translation>
@@ -3412,7 +3495,7 @@ Befehle:
         <translation>simulierte Achse</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+48"/>
         <source>LabJack U6 (USB bus %1 device %2)</source>
         <translation>LabJack U6 (USB-Bus %1, Gerät %2)</translation>
     </message>
@@ -3701,7 +3784,7 @@ Befehle:
         <translation>keine Messwerte seit %1 ms (Kabel abgezogen?)</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+111"/>
         <source>target %1 mm is outside the travel (%2 to %3 mm)</source>
         <translation>Ziel %1 mm liegt außerhalb des Verfahrwegs (%2 bis %3 mm)</translation>
     </message>
@@ -3840,6 +3923,180 @@ Befehle:
         <source>position reply is not a number: &apos;%1&apos;</source>
         <translation>Positionsantwort ist keine Zahl: &apos;%1&apos;</translation>
     </message>
+    <message>
+        <location filename="../devices/interlocks.cpp" line="+19"/>
+        <source>A run is recording: end it before %1.</source>
+        <translation>Eine Messung läuft: Beenden Sie sie vor dem %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The stage is moving: stop it before %1.</source>
+        <translation>Die Achse fährt: Halten Sie sie vor dem %1 an.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The stage is not moving.</source>
+        <translation>Die Achse bewegt sich nicht.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changing the session, devices or language</source>
+        <translation>Wechseln von Sitzung, Geräten oder Sprache</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>quitting</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Device fault: %1</source>
+        <translation>Gerätefehler: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The devices are not running.</source>
+        <translation>Die Geräte laufen nicht.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+60"/>
+        <location line="+10"/>
+        <source>Stop the motion first.</source>
+        <translation>Zuerst die Bewegung stoppen.</translation>
+    </message>
+    <message>
+        <location line="-68"/>
+        <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
+        <translation>Zuerst den Lauf beenden: das Ausschalten des Antriebs würde das Experiment unaufgezeichnet beenden.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bias needs the stage at rest.</source>
+        <translation>Tarieren geht nur bei stehender Achse.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Biasing during a run would shift its forces; end the run first.</source>
+        <translation>Tarieren während eines Laufs würde seine Kräfte verschieben; zuerst den Lauf beenden.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The force is above the noise band: bias with the needle free of tissue.</source>
+        <translation>Die Kraft liegt über dem Rauschband: Tarieren Sie mit der Nadel außerhalb des Gewebes.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The needle is past the depth where it met tissue: withdraw it before biasing.</source>
+        <translation>Die Nadel steckt tiefer als der Gewebekontakt: Ziehen Sie sie vor dem Tarieren zurück.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+20"/>
+        <location line="+20"/>
+        <location line="+10"/>
+        <source>Enable the stage first.</source>
+        <translation>Zuerst die Achse einschalten.</translation>
+    </message>
+    <message>
+        <location line="-48"/>
+        <source>Zeroing needs the stage at rest.</source>
+        <translation>Nullen geht nur bei stehender Achse.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zeroing during a run would shift its positions; end the run first.</source>
+        <translation>Nullen während eines Laufs würde seine Positionen verschieben; zuerst den Lauf beenden.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The needle is past the depth where it met tissue: zero with the tip at the start position.</source>
+        <translation>Die Nadel steckt tiefer als der Gewebekontakt: Nullen Sie mit der Spitze in der Startposition.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The force is above the noise band: zero with the needle free of tissue.</source>
+        <translation>Die Kraft liegt über dem Rauschband: Nullen Sie mit der Nadel außerhalb des Gewebes.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The motion of a run is fixed while it records or moves.</source>
+        <translation>Die Bewegung eines Laufs ist festgelegt, solange er aufzeichnet oder sich bewegt.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+22"/>
+        <location line="+10"/>
+        <source>Emergency stop: enable the stage again to reset it.</source>
+        <translation>Not-Aus: Schalten Sie die Achse wieder ein, um ihn zurückzusetzen.</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Open or create a session first: the run needs a folder.</source>
+        <translation>Zuerst eine Sitzung öffnen oder anlegen: der Lauf braucht einen Ordner.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bias the force sensor first (needle free of tissue).</source>
+        <translation>Zuerst den Kraftsensor tarieren (Nadel frei vom Gewebe).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+18"/>
+        <source>Zero the stage position first.</source>
+        <translation>Zuerst die Achsposition nullen.</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>No active calibration: calibrate the sensor or choose a calibration.</source>
+        <translation>Keine aktive Kalibrierung: Sensor kalibrieren oder eine Kalibrierung wählen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Set a maximum-force limit first.</source>
+        <translation>Zuerst eine Kraftgrenze setzen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A run is already recording: end it first.</source>
+        <translation>Es wird bereits ein Lauf aufgezeichnet: zuerst beenden.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+36"/>
+        <source>The stage is moving.</source>
+        <translation>Die Achse bewegt sich.</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>Jogging is never recorded: end the run first.</source>
+        <translation>Tippbetrieb wird nie aufgezeichnet: Beenden Sie zuerst die Messung.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No run is recording.</source>
+        <translation>Es wird kein Lauf aufgezeichnet.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the motion first: End run closes the file, it does not stop the stage.</source>
+        <translation>Zuerst die Bewegung stoppen: „Lauf beenden“ schließt die Datei, es hält die Achse nicht an.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Calibration changes the forces of a run; end the run first.</source>
+        <translation>Eine Kalibrierung ändert die Kräfte eines Laufs; zuerst den Lauf beenden.</translation>
+    </message>
+    <message>
+        <location filename="../devices/run_once.cpp" line="+57"/>
+        <source>the devices did not get ready within %1 s</source>
+        <translation>die Geräte wurden nicht innerhalb von %1 s bereit</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the run did not finish within %1 minutes</source>
+        <translation>die Messung endete nicht innerhalb von %1 Minuten</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrViews</name>
@@ -3957,116 +4214,6 @@ Befehle:
         <translation>die Abbildung kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../widgets/interlocks.cpp" line="+20"/>
-        <source>The stage is not moving.</source>
-        <translation>Die Achse bewegt sich nicht.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Device fault: %1</source>
-        <translation>Gerätefehler: %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>The devices are not running.</source>
-        <translation>Die Geräte laufen nicht.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <location line="+48"/>
-        <source>Stop the motion first.</source>
-        <translation>Zuerst die Bewegung stoppen.</translation>
-    </message>
-    <message>
-        <location line="-46"/>
-        <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
-        <translation>Zuerst den Lauf beenden: das Ausschalten des Antriebs würde das Experiment unaufgezeichnet beenden.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Bias needs the stage at rest.</source>
-        <translation>Tarieren geht nur bei stehender Achse.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Biasing during a run would shift its forces; end the run first.</source>
-        <translation>Tarieren während eines Laufs würde seine Kräfte verschieben; zuerst den Lauf beenden.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <location line="+14"/>
-        <location line="+18"/>
-        <source>Enable the stage first.</source>
-        <translation>Zuerst die Achse einschalten.</translation>
-    </message>
-    <message>
-        <location line="-30"/>
-        <source>Zeroing needs the stage at rest.</source>
-        <translation>Nullen geht nur bei stehender Achse.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Zeroing during a run would shift its positions; end the run first.</source>
-        <translation>Nullen während eines Laufs würde seine Positionen verschieben; zuerst den Lauf beenden.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The motion of a run is fixed while it records or moves.</source>
-        <translation>Die Bewegung eines Laufs ist festgelegt, solange er aufzeichnet oder sich bewegt.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Open or create a session first: the run needs a folder.</source>
-        <translation>Zuerst eine Sitzung öffnen oder anlegen: der Lauf braucht einen Ordner.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Bias the force sensor first (needle free of tissue).</source>
-        <translation>Zuerst den Kraftsensor tarieren (Nadel frei vom Gewebe).</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+16"/>
-        <source>Zero the stage position first.</source>
-        <translation>Zuerst die Achsposition nullen.</translation>
-    </message>
-    <message>
-        <location line="-14"/>
-        <source>No active calibration: calibrate the sensor or choose a calibration.</source>
-        <translation>Keine aktive Kalibrierung: Sensor kalibrieren oder eine Kalibrierung wählen.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Set a maximum-force limit first.</source>
-        <translation>Zuerst eine Kraftgrenze setzen.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>A run is already recording: end it first.</source>
-        <translation>Es wird bereits ein Lauf aufgezeichnet: zuerst beenden.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+24"/>
-        <source>The stage is moving.</source>
-        <translation>Die Achse bewegt sich.</translation>
-    </message>
-    <message>
-        <location line="-10"/>
-        <source>No run is recording.</source>
-        <translation>Es wird kein Lauf aufgezeichnet.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Stop the motion first: End run closes the file, it does not stop the stage.</source>
-        <translation>Zuerst die Bewegung stoppen: „Lauf beenden“ schließt die Datei, es hält die Achse nicht an.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Calibration changes the forces of a run; end the run first.</source>
-        <translation>Eine Kalibrierung ändert die Kräfte eines Laufs; zuerst den Lauf beenden.</translation>
-    </message>
-    <message>
         <location filename="../widgets/label_commands.cpp" line="+12"/>
         <source>add %1</source>
         <translation>%1 hinzufügen</translation>
@@ -4103,7 +4250,7 @@ Befehle:
 <context>
     <name>nb::devices</name>
     <message>
-        <location filename="../devices/device_set.cpp" line="+16"/>
+        <location filename="../devices/sim/simulated_devices.cpp" line="+17"/>
         <source>simulated rig (%1, %2 tip, seed %3%4)</source>
         <translation>simulierter Versuchsstand (%1, %2-Spitze, Startwert %3%4)</translation>
     </message>
@@ -4116,14 +4263,19 @@ Befehle:
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+90"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+116"/>
         <source>nominal (device)</source>
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+74"/>
         <source>stage enabled; fault cleared</source>
         <translation>Achse eingeschaltet; Fehler zurückgesetzt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stage enabled; emergency stop reset</source>
+        <translation>Achse eingeschaltet; Not-Aus zurückgesetzt</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4136,27 +4288,17 @@ Befehle:
         <translation>Achse ausgeschaltet</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>bias refused: the stage is moving (bias with the needle at rest, out of tissue)</source>
-        <translation>Tarieren abgelehnt: die Achse bewegt sich (mit ruhender Nadel außerhalb des Gewebes tarieren)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <source>biasing the force sensor: averaging %1 s</source>
         <translation>Kraftsensor wird tariert: Mittelung über %1 s</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>zero refused: the stage is moving</source>
-        <translation>Nullen abgelehnt: die Achse bewegt sich</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+18"/>
         <source>stage position zeroed</source>
         <translation>Achsposition genullt</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>force limit must be positive (got %1 N)</source>
         <translation>die Kraftgrenze muss positiv sein (erhalten: %1 N)</translation>
     </message>
@@ -4164,6 +4306,16 @@ Befehle:
         <location line="+4"/>
         <source>force limit %1 N</source>
         <translation>Kraftgrenze %1 N</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>withdrawal force limit must be positive (got %1 N)</source>
+        <translation>die Kraftgrenze beim Zurückziehen muss positiv sein (erhalten: %1 N)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>withdrawal force limit %1 N</source>
+        <translation>Kraftgrenze beim Zurückziehen %1 N</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -4176,54 +4328,8 @@ Befehle:
         <translation>Kalibrierung &apos;%1&apos;: %2 V/g</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>a device is faulted (%1); fix it and enable the stage again</source>
-        <translation>ein Gerät ist gestört (%1); Fehler beheben und die Achse erneut einschalten</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the force sensor is not streaming</source>
-        <translation>der Kraftsensor liefert keine Daten</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>enable the stage first</source>
-        <translation>zuerst die Achse einschalten</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>wait until biasing has finished</source>
-        <translation>warten, bis das Tarieren abgeschlossen ist</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bias the force sensor first (needle at rest, out of tissue)</source>
-        <translation>zuerst den Kraftsensor tarieren (Nadel in Ruhe, außerhalb des Gewebes)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>zero the stage position first</source>
-        <translation>zuerst die Achsposition nullen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>a run is already being recorded (%1)</source>
-        <translation>es wird bereits ein Lauf aufgezeichnet (%1)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the stage is still moving</source>
-        <translation>die Achse bewegt sich noch</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>no output file given</source>
-        <translation>keine Ausgabedatei angegeben</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+1"/>
-        <location line="+17"/>
+        <location line="+14"/>
+        <location line="+48"/>
         <source>run not started: %1</source>
         <translation>Lauf nicht gestartet: %1</translation>
     </message>
@@ -4233,22 +4339,12 @@ Befehle:
         <translation>Rücklesewert der Achse, auf den Abtasttakt interpoliert</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>recording to %1</source>
         <translation>Aufzeichnung nach %1</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>withdrawing to 0 mm; this is recorded in the open run %1</source>
-        <translation>Zurückziehen auf 0 mm; wird im offenen Lauf %1 aufgezeichnet</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>withdrawing to 0 mm (not recorded: no run open)</source>
-        <translation>Zurückziehen auf 0 mm (nicht aufgezeichnet: kein Lauf offen)</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+82"/>
         <source>motion stopped; still recording</source>
         <translation>Bewegung gestoppt; Aufzeichnung läuft weiter</translation>
     </message>
@@ -4258,27 +4354,32 @@ Befehle:
         <translation>Bewegung gestoppt</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>emergency stop</source>
-        <translation>Not-Halt</translation>
-    </message>
-    <message>
-        <location line="+41"/>
+        <location line="+136"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation>Lauf beendet (%1): %2 Messwerte, %3 verloren, %4</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+29"/>
         <source>could not stop the stage: %1</source>
         <translation>die Achse konnte nicht angehalten werden: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>fault: %1</source>
         <translation>Fehler: %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+49"/>
+        <source>puncture %1 at %2 mm: stage stopped</source>
+        <translation>Punktion %1 bei %2 mm: Achse angehalten</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>puncture at %1 mm: slowing to %2 mm/s</source>
+        <translation>Punktion bei %1 mm: verlangsamt auf %2 mm/s</translation>
+    </message>
+    <message>
+        <location line="+69"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -4288,12 +4389,77 @@ Befehle:
         <translation>Echtzeit-Scheduling nicht angefordert</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="-113"/>
         <source>force sensor biased: V0 = %1 V (%2 samples)</source>
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
+        <location line="-414"/>
+        <source>bias refused: %1</source>
+        <translation>Tarieren abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>zero refused: %1</source>
+        <translation>Nullen abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>a run is already on its way to its start position</source>
+        <translation>eine Messung fährt bereits ihre Startposition an</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>run not started: the start position %1 mm is outside the travel (%2 to %3 mm)</source>
+        <translation>Messung nicht gestartet: die Startposition %1 mm liegt außerhalb des Verfahrwegs (%2 bis %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>moving to the start position %1 mm (not recorded)</source>
+        <translation>fahre zur Startposition %1 mm (nicht aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>withdraw refused: %1</source>
+        <translation>Zurückziehen abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>withdrawing to %1 mm; this is recorded in the open run %2</source>
+        <translation>ziehe zurück auf %1 mm; dies wird in der offenen Messung %2 aufgezeichnet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>withdrawing to %1 mm (not recorded: no run open)</source>
+        <translation>ziehe zurück auf %1 mm (nicht aufgezeichnet: keine Messung offen)</translation>
+    </message>
+    <message>
         <location line="+18"/>
+        <source>move refused: %1</source>
+        <translation>Fahrt abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>move refused: %1 mm is outside the travel (%2 to %3 mm)</source>
+        <translation>Fahrt abgelehnt: %1 mm liegt außerhalb des Verfahrwegs (%2 bis %3 mm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>moving to %1 mm (not recorded)</source>
+        <translation>fahre auf %1 mm (nicht aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>could not disable the stage after the emergency stop: %1</source>
+        <translation>konnte die Achse nach dem Not-Aus nicht ausschalten: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>emergency stop: the stage is disabled until you enable it again</source>
+        <translation>Not-Aus: die Achse bleibt aus, bis Sie sie wieder einschalten</translation>
+    </message>
+    <message>
+        <location line="+151"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation>Kraftgrenze: %1 N &gt; %2 N bei %3 mm; Achse angehalten</translation>
     </message>
@@ -4349,7 +4515,7 @@ Befehle:
         <translation>leere Datei (erwartet: Kopfzeile mass_g,voltage_V)</translation>
     </message>
     <message>
-        <location filename="../core/events.cpp" line="+218"/>
+        <location filename="../core/events.cpp" line="+216"/>
         <source>too few samples before the puncture (%1) to fit the contact</source>
         <translation>zu wenige Messwerte vor dem Durchstich (%1), um den Kontakt zu fitten</translation>
     </message>

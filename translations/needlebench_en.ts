@@ -170,7 +170,7 @@ Commands:
 <context>
     <name>nb</name>
     <message>
-        <location filename="../core/session.cpp" line="+193"/>
+        <location filename="../core/session.cpp" line="+185"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>
@@ -348,12 +348,12 @@ Commands:
     </message>
     <message>
         <location line="+17"/>
-        <location line="+231"/>
+        <location line="+234"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-219"/>
+        <location line="-222"/>
         <source>Measure selected mass</source>
         <translation type="unfinished"></translation>
     </message>
@@ -393,7 +393,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+118"/>
         <source>Measuring %1 g for %2 s…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -403,7 +403,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Hang %1 g on the sensor, then press Measure.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -437,12 +437,12 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+242"/>
+        <location line="+241"/>
         <source>Enable stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-242"/>
+        <location line="-241"/>
         <source>Powers the stage drive</source>
         <translation type="unfinished"></translation>
     </message>
@@ -678,7 +678,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>Not now: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -792,7 +792,7 @@ Commands:
 <context>
     <name>nb::DeviceDialog</name>
     <message>
-        <location filename="../widgets/device_dialog.cpp" line="+37"/>
+        <location filename="../widgets/device_dialog.cpp" line="+29"/>
         <source>Devices</source>
         <translation type="unfinished"></translation>
     </message>
@@ -883,7 +883,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>Simulated rig</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1159,12 +1159,12 @@ Commands:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+60"/>
+        <location filename="../app/main_window.cpp" line="+58"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>&amp;Record</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1214,7 +1214,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+72"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1239,7 +1239,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Devices not changed: end the run first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1304,7 +1304,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>These devices do not state a nominal calibration: calibrate the sensor.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>&amp;View</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1417,7 +1422,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-298"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1907,7 +1912,7 @@ Commands:
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+58"/>
+        <location filename="../app/cmd_simulate.cpp" line="+42"/>
         <source>the run file to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1963,6 +1968,18 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+5"/>
+        <source>stop the insertion at a puncture: puncture (the first) or puncture:N (the N-th)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+1"/>
+        <source>slow the insertion to V mm/s after the first puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>Run &apos;needlebench acquire --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
@@ -1974,7 +1991,7 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+38"/>
+        <location filename="../app/cmd_simulate.cpp" line="+34"/>
         <source>--out RUN.csv is required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1984,8 +2001,9 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+92"/>
-        <source>the devices did not get ready within 10 s</source>
+        <location line="+57"/>
+        <location filename="../app/cmd_simulate.cpp" line="+87"/>
+        <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2090,7 +2108,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="+103"/>
+        <location filename="../app/cmd_demo.cpp" line="+70"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2125,9 +2143,8 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
-        <source>simulating %1 failed:
-%2</source>
+        <location line="+47"/>
+        <source>simulating %1 failed: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2146,7 +2163,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+19"/>
         <source>rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2278,7 +2295,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="-241"/>
+        <location filename="../app/cmd_demo.cpp" line="-245"/>
         <location filename="../app/cmd_export.cpp" line="+6"/>
         <source>%1: cannot create the folder</source>
         <translation type="unfinished"></translation>
@@ -2550,7 +2567,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-50"/>
+        <location filename="../app/cmd_simulate.cpp" line="-139"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2600,7 +2617,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>the video starts this long before the recording (default 0)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2635,7 +2652,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>--seed: &apos;%1&apos; is not a non-negative integer</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2680,17 +2697,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+21"/>
+        <source>--slow-after-puncture must be in (0, %1] mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Run &apos;needlebench simulate --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+72"/>
-        <source>the run did not finish within 30 minutes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+48"/>
+        <location filename="../app/simulated_run.cpp" line="+140"/>
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2940,7 +2957,7 @@ Commands:
         <location line="+7"/>
         <location filename="../core/labels.cpp" line="+110"/>
         <location line="+11"/>
-        <location filename="../core/run_file.cpp" line="+292"/>
+        <location filename="../core/run_file.cpp" line="+288"/>
         <location line="+37"/>
         <location line="+17"/>
         <source>cannot write: %1</source>
@@ -3277,7 +3294,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-112"/>
+        <location filename="../core/session.cpp" line="-104"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3287,12 +3304,58 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location filename="../core/end_reason.cpp" line="+45"/>
+        <source>completed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ended by operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>motion stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>emergency stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped at puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../core/session.cpp" line="+59"/>
         <source>interrupted</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/session.cpp" line="+1"/>
         <source>complete</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3312,12 +3375,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../core/end_reason.cpp" line="+1"/>
+        <location filename="../core/session.cpp" line="+1"/>
         <source>recovered</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../core/session.cpp" line="+1"/>
         <source>unreadable</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3325,7 +3389,22 @@ Commands:
 <context>
     <name>nb::TrDevices</name>
     <message>
-        <location filename="../devices/device_spec.cpp" line="+30"/>
+        <location filename="../devices/device_spec.cpp" line="+45"/>
+        <source>unknown tissue &apos;%1&apos; (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown tip &apos;%1&apos; (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown setup &apos;%1&apos; (organ|platform)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>&apos;%1&apos;: the U6 serial number must be digits (see &apos;needlebench devices&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3340,7 +3419,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+38"/>
+        <source>simulated rig</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <location filename="../devices/sim/simulated_rig.cpp" line="+51"/>
         <source>simulated load cell</source>
         <translation type="unfinished"></translation>
@@ -3352,7 +3436,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+48"/>
         <source>LabJack U6 (USB bus %1 device %2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3641,7 +3725,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+111"/>
         <source>target %1 mm is outside the travel (%2 to %3 mm)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3780,6 +3864,180 @@ Commands:
         <source>position reply is not a number: &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../devices/interlocks.cpp" line="+19"/>
+        <source>A run is recording: end it before %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The stage is moving: stop it before %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The stage is not moving.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changing the session, devices or language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>quitting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Device fault: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The devices are not running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+60"/>
+        <location line="+10"/>
+        <source>Stop the motion first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-68"/>
+        <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bias needs the stage at rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Biasing during a run would shift its forces; end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The force is above the noise band: bias with the needle free of tissue.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The needle is past the depth where it met tissue: withdraw it before biasing.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+20"/>
+        <location line="+20"/>
+        <location line="+10"/>
+        <source>Enable the stage first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-48"/>
+        <source>Zeroing needs the stage at rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zeroing during a run would shift its positions; end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The needle is past the depth where it met tissue: zero with the tip at the start position.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The force is above the noise band: zero with the needle free of tissue.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The motion of a run is fixed while it records or moves.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+22"/>
+        <location line="+10"/>
+        <source>Emergency stop: enable the stage again to reset it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Open or create a session first: the run needs a folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bias the force sensor first (needle free of tissue).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+18"/>
+        <source>Zero the stage position first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>No active calibration: calibrate the sensor or choose a calibration.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Set a maximum-force limit first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A run is already recording: end it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+36"/>
+        <source>The stage is moving.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>Jogging is never recorded: end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No run is recording.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the motion first: End run closes the file, it does not stop the stage.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Calibration changes the forces of a run; end the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../devices/run_once.cpp" line="+57"/>
+        <source>the devices did not get ready within %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the run did not finish within %1 minutes</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrViews</name>
@@ -3897,116 +4155,6 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/interlocks.cpp" line="+20"/>
-        <source>The stage is not moving.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Device fault: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>The devices are not running.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <location line="+48"/>
-        <source>Stop the motion first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-46"/>
-        <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Bias needs the stage at rest.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Biasing during a run would shift its forces; end the run first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <location line="+14"/>
-        <location line="+18"/>
-        <source>Enable the stage first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-30"/>
-        <source>Zeroing needs the stage at rest.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Zeroing during a run would shift its positions; end the run first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The motion of a run is fixed while it records or moves.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Open or create a session first: the run needs a folder.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Bias the force sensor first (needle free of tissue).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+16"/>
-        <source>Zero the stage position first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-14"/>
-        <source>No active calibration: calibrate the sensor or choose a calibration.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Set a maximum-force limit first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>A run is already recording: end it first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+24"/>
-        <source>The stage is moving.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-10"/>
-        <source>No run is recording.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Stop the motion first: End run closes the file, it does not stop the stage.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Calibration changes the forces of a run; end the run first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location filename="../widgets/label_commands.cpp" line="+12"/>
         <source>add %1</source>
         <translation type="unfinished"></translation>
@@ -4043,7 +4191,7 @@ Commands:
 <context>
     <name>nb::devices</name>
     <message>
-        <location filename="../devices/device_set.cpp" line="+16"/>
+        <location filename="../devices/sim/simulated_devices.cpp" line="+17"/>
         <source>simulated rig (%1, %2 tip, seed %3%4)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4056,13 +4204,18 @@ Commands:
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+90"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+116"/>
         <source>nominal (device)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+74"/>
         <source>stage enabled; fault cleared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stage enabled; emergency stop reset</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4076,33 +4229,33 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>bias refused: the stage is moving (bias with the needle at rest, out of tissue)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <source>biasing the force sensor: averaging %1 s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>zero refused: the stage is moving</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+18"/>
         <source>stage position zeroed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>force limit must be positive (got %1 N)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+4"/>
         <source>force limit %1 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>withdrawal force limit must be positive (got %1 N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>withdrawal force limit %1 N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4116,54 +4269,8 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>a device is faulted (%1); fix it and enable the stage again</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the force sensor is not streaming</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>enable the stage first</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>wait until biasing has finished</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bias the force sensor first (needle at rest, out of tissue)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>zero the stage position first</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>a run is already being recorded (%1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the stage is still moving</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>no output file given</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+1"/>
-        <location line="+17"/>
+        <location line="+14"/>
+        <location line="+48"/>
         <source>run not started: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4173,22 +4280,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>recording to %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>withdrawing to 0 mm; this is recorded in the open run %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>withdrawing to 0 mm (not recorded: no run open)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+82"/>
         <source>motion stopped; still recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4198,27 +4295,32 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>emergency stop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+41"/>
+        <location line="+136"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+29"/>
         <source>could not stop the stage: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>fault: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+49"/>
+        <source>puncture %1 at %2 mm: stage stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>puncture at %1 mm: slowing to %2 mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+69"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4228,12 +4330,77 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="-113"/>
         <source>force sensor biased: V0 = %1 V (%2 samples)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="-414"/>
+        <source>bias refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>zero refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>a run is already on its way to its start position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>run not started: the start position %1 mm is outside the travel (%2 to %3 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>moving to the start position %1 mm (not recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>withdraw refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>withdrawing to %1 mm; this is recorded in the open run %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>withdrawing to %1 mm (not recorded: no run open)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+18"/>
+        <source>move refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>move refused: %1 mm is outside the travel (%2 to %3 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>moving to %1 mm (not recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>could not disable the stage after the emergency stop: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>emergency stop: the stage is disabled until you enable it again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+151"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4289,7 +4456,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/events.cpp" line="+218"/>
+        <location filename="../core/events.cpp" line="+216"/>
         <source>too few samples before the puncture (%1) to fit the contact</source>
         <translation type="unfinished"></translation>
     </message>

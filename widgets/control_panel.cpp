@@ -273,13 +273,12 @@ void ControlPanel::setCalibrationName(const QString& name)
 void ControlPanel::setStatus(const devices::EngineStatus& s)
 {
     status_ = s;
-    state_.devicesRunning = s.running;
-    state_.fault = s.fault;
-    state_.stageEnabled = s.stageEnabled;
-    state_.biased = s.biased;
-    state_.zeroed = s.zeroed;
-    state_.moving = s.moving;
-    state_.recording = s.recording;
+    // The engine's own view of the interlocks, and what only the window knows on top.
+    const bool sessionOpen = state_.sessionOpen;
+    const double forceLimit = state_.forceLimit_N;
+    state_ = s.interlocks();
+    state_.sessionOpen = sessionOpen;
+    state_.forceLimit_N = forceLimit;
     state_.calibrated = s.slope_V_per_g > 0.0 && !s.calibrationName.isEmpty();
     updateControls();
 }

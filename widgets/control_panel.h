@@ -6,7 +6,7 @@
 // The panel only asks: the main window forwards its requests to the engine.
 
 #include "devices/acquisition_engine.h"
-#include "widgets/interlocks.h"
+#include "devices/interlocks.h"
 
 #include <QWidget>
 #include <map>

@@ -1,28 +1,19 @@
 #pragma once
 // What every exporter throws and how long exports report progress and get cancelled.
 
+#include "core/error.h"
+
 #include <QString>
 #include <functional>
-#include <stdexcept>
 
 namespace nb {
 
 // An export that failed: names the file written and what went wrong. Nothing is left at the
 // destination path (exporters write a temporary first and rename it only on success).
-class ExportError : public std::runtime_error {
+class ExportError : public Error {
 public:
-    ExportError(QString file, QString reason)
-        : std::runtime_error((file + QStringLiteral(": ") + reason).toStdString()), file_(std::move(file)),
-          reason_(std::move(reason))
-    {
-    }
-    const QString& file() const { return file_; }
-    const QString& reason() const { return reason_; }
-    QString message() const { return QString::fromStdString(what()); }
-
-private:
-    QString file_;
-    QString reason_;
+    ExportError(QString file, QString reason) : Error(std::move(file), std::move(reason)) {}
+    const QString& file() const { return subject(); }
 };
 
 // Called now and then with work done out of total; returning false cancels the export, which

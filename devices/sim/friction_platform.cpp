@@ -45,6 +45,17 @@ double FrictionPlatform::plateForce(double y, double vy) const
     return (y > 0 ? f : -f) + losses;
 }
 
+TruePhase FrictionPlatform::truePhase() const
+{
+    switch (phase_) {
+    case 'a': return TruePhase::A;
+    case '1': return TruePhase::B1;
+    case '2': return TruePhase::B2;
+    case 'c': return TruePhase::C;
+    default: return TruePhase::None;
+    }
+}
+
 void FrictionPlatform::enter(char phase, double t, GroundTruth& truth)
 {
     if (phase == phase_)

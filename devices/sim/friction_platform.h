@@ -18,6 +18,7 @@ public:
     double step(double t, double dt, double v_mm_s, double a_mm_s2, GroundTruth& truth);
     double slab_mm() const { return y_ * 1000.0; }
     char phase() const { return phase_; }
+    TruePhase truePhase() const;
     // Closes the open phase at time t (end of motion or of the run).
     void closePhases(double t, GroundTruth& truth);
 

@@ -220,7 +220,7 @@ void SimulatedRig::World::sensorRead(std::vector<VoltageSample>& out, std::chron
         while (t0_ + static_cast<double>(next_) / rate_ <= now + 1e-12) {
             const double ts = t0_ + static_cast<double>(next_) / rate_;
             const double volts = sample(ts);
-            sampleTruth_[next_ % kTruthRing] = {force_, tissue_mm_, platform_ ? platform_->phase() : char(0)};
+            sampleTruth_[next_ % kTruthRing] = {force_, tissue_mm_, platform_ ? platform_->truePhase() : TruePhase::None};
             out.push_back({next_, ts - t0_, volts});
             ++next_;
             ++produced;
@@ -276,7 +276,7 @@ SampleTruth SimulatedRig::World::sampleTruth(std::uint64_t index) const
 {
     std::lock_guard lock(m_);
     if (index >= next_ || next_ - index > kTruthRing)
-        return {std::nan(""), std::nan(""), 0};
+        return {};
     return sampleTruth_[index % kTruthRing];
 }
 

@@ -4,7 +4,9 @@
 // (each sample steps the physics to its time), on a real-time or simulated clock.
 // Seeded and reproducible. Knows the ground truth and can inject device faults for tests.
 
+#include "devices/device_set.h"
 #include "devices/force_sensor.h"
+#include "devices/ground_truth.h"
 #include "devices/sim/rig_config.h"
 #include "devices/stage.h"
 
@@ -61,33 +63,26 @@ struct GroundTruth {
     std::optional<CapsuleTruth> capsule;
 };
 
-// Ground truth of one sample, for the truth columns of simulated runs.
-struct SampleTruth {
-    double force_N = 0.0;
-    double tissue_mm = 0.0;
-    char phase = 0;  // friction platform: 'a', '1' (b1), '2' (b2), 'c'; 0 otherwise
-};
-
-class SimulatedRig : public std::enable_shared_from_this<SimulatedRig> {
+class SimulatedRig : public std::enable_shared_from_this<SimulatedRig>, public GroundTruthSource, public CalibrationLoad {
 public:
     explicit SimulatedRig(RigConfig config);
-    ~SimulatedRig();
+    ~SimulatedRig() override;
 
     const RigConfig& config() const { return config_; }
     const TissuePreset& tissue() const { return tissue_; }
 
     // A mass hung on the load cell (calibration wizard); grams, 0 = nothing. Returns the sensor
     // stream's device time after which every sample carries it.
-    double setLoadMass_g(double grams);
+    double setLoadMass_g(double grams) override;
     // Takes effect at sim time `at_s` (or at once). Fault::None clears every fault.
     void injectFault(Fault fault, double at_s = 0.0);
 
     double simTime_s() const;
     GroundTruth truth() const;
     // Model parameters, events and phases; what `simulate --truth` writes.
-    QJsonObject truthJson() const;
+    QJsonObject truthJson() const override;
     // Truth of the sample with this sensor index, while it is among the last ~64k.
-    SampleTruth sampleTruth(std::uint64_t index) const;
+    SampleTruth sampleTruth(std::uint64_t index) const override;
 
     std::unique_ptr<Stage> makeStage();
     std::unique_ptr<ForceSensor> makeSensor();
@@ -101,5 +96,10 @@ private:
     TissuePreset tissue_;
     std::unique_ptr<World> world_;
 };
+
+// The rig's stage and sensor as a device set, with its truth and calibration load.
+DeviceSet simulatedDeviceSet(const std::shared_ptr<SimulatedRig>& rig);
+// A new rig made from `config`, as a device set.
+DeviceSet makeSimulatedDevices(const RigConfig& config);
 
 }  // namespace nb::devices::sim

@@ -35,6 +35,19 @@ KarnoppPerLength table4Friction()
     return {2.821737, 9.977761, 556.4617, 294.0225, 10.39652, -31.5155};
 }
 
+Tip usualTip(const QString& tissue, bool internal)
+{
+    if (internal)
+        return Tip::Blunt;
+    const bool diamond = tissue == QLatin1String("liver5") || tissue == QLatin1String("liver7") || tissue == QLatin1String("prostate");
+    return diamond ? Tip::Diamond : Tip::Beveled;
+}
+
+QString usualSetup(const QString& tissue)
+{
+    return tissue == QLatin1String("liver7") ? QStringLiteral("platform") : QStringLiteral("organ");
+}
+
 QStringList tissueNames()
 {
     return {QStringLiteral("liver1"), QStringLiteral("liver2"), QStringLiteral("liver3"),

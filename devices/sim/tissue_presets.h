@@ -14,6 +14,11 @@ namespace nb::devices::sim {
 enum class Tip { Beveled, Diamond, Blunt };
 QString tipName(Tip tip);
 std::optional<Tip> tipFromName(const QString& name);
+// The tip the thesis used with a preset: blunt for internal insertions, diamond for livers 5
+// and 7 and the prostate, beveled otherwise.
+Tip usualTip(const QString& tissue, bool internal);
+// "platform" for the friction slab (liver7), "organ" otherwise.
+QString usualSetup(const QString& tissue);
 
 struct TissuePreset {
     QString name;                    // liver1 ... liver7, prostate

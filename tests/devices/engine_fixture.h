@@ -11,18 +11,28 @@
 
 namespace nbtest {
 
+// An engine on the simulated rig, with the test's hand on the rig (truth, faults, clock).
+struct SimEngine {
+    std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+    std::unique_ptr<nb::devices::AcquisitionEngine> engine;
+    nb::devices::AcquisitionEngine* operator->() const { return engine.get(); }
+    nb::devices::AcquisitionEngine& operator*() const { return *engine; }
+    nb::devices::AcquisitionEngine* get() const { return engine.get(); }
+};
+
 // `probe` (optional) runs on the engine thread for every sensor batch, on the device clock:
 // the way to act at an exact simulated time.
-inline std::unique_ptr<nb::devices::AcquisitionEngine> makeEngine(const nb::devices::sim::RigConfig& rig,
-                                                                 double rateHz = 500.0, double forceLimit = 8.0,
-                                                                 std::function<void(double)> probe = {})
+inline SimEngine makeEngine(const nb::devices::sim::RigConfig& rig, double rateHz = 500.0, double forceLimit = 8.0,
+                            std::function<void(double)> probe = {})
 {
     nb::devices::EngineConfig c;
     c.rateHz = rateHz;
     c.forceLimit_N = forceLimit;
     c.realtimeScheduling = false;
     c.liveView = false;
-    auto e = std::make_unique<nb::devices::AcquisitionEngine>(nb::devices::makeSimulatedDevices(rig), c);
+    SimEngine e;
+    e.rig = std::make_shared<nb::devices::sim::SimulatedRig>(rig);
+    e.engine = std::make_unique<nb::devices::AcquisitionEngine>(nb::devices::sim::simulatedDeviceSet(e.rig), c);
     if (probe)
         e->setArrivalProbe([probe](double deviceTime, double) { probe(deviceTime); });
     e->start();

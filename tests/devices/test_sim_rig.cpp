@@ -13,13 +13,29 @@ using namespace nb::devices::sim;
 
 namespace {
 
+// The rig's own stage and sensor, with the rig itself at hand (truth, masses, faults).
+struct RigDevices {
+    std::shared_ptr<SimulatedRig> rig;
+    std::unique_ptr<Stage> stage;
+    std::unique_ptr<ForceSensor> sensor;
+};
+
+RigDevices rigDevices(const RigConfig& c)
+{
+    RigDevices d;
+    d.rig = std::make_shared<SimulatedRig>(c);
+    d.stage = d.rig->makeStage();
+    d.sensor = d.rig->makeSensor();
+    return d;
+}
+
 struct Trace {
     std::vector<double> t, volts, pos, vel;
 };
 
 // Samples until `done` or `maxSeconds` of sim time, reading the stage after each sample.
 template <typename Done>
-Trace runFor(DeviceSet& d, double rate, double maxSeconds, Done done)
+Trace runFor(RigDevices& d, double rate, double maxSeconds, Done done)
 {
     Trace tr;
     std::vector<VoltageSample> buf;
@@ -63,7 +79,7 @@ private slots:
     void linearInsertionPuncturesWhereConfigured()
     {
         const RigConfig c = fast(QStringLiteral("liver1"), Tip::Beveled, 3);
-        DeviceSet d = makeSimulatedDevices(c);
+        RigDevices d = rigDevices(c);
         d.sensor->start(500);
         d.stage->enable(true);
         d.stage->zero();
@@ -159,7 +175,7 @@ private slots:
     void encoderQuantisesAndLoopLagsLittle()
     {
         const RigConfig c = fast(QStringLiteral("liver2"), Tip::Beveled);
-        DeviceSet d = makeSimulatedDevices(c);
+        RigDevices d = rigDevices(c);
         d.sensor->start(1000);
         d.stage->enable(true);
         d.stage->zero();
@@ -184,7 +200,7 @@ private slots:
 
     void travelLimitsAreEnforced()
     {
-        DeviceSet d = makeSimulatedDevices(fast(QStringLiteral("liver1"), Tip::Beveled));
+        RigDevices d = rigDevices(fast(QStringLiteral("liver1"), Tip::Beveled));
         d.stage->enable(true);
         try {
             d.stage->moveLinear({4.0, 500.0});
@@ -197,7 +213,7 @@ private slots:
     void seededAndReproducible()
     {
         auto puncture = [](std::uint64_t seed) {
-            DeviceSet d = makeSimulatedDevices(fast(QStringLiteral("liver3"), Tip::Beveled, seed));
+            RigDevices d = rigDevices(fast(QStringLiteral("liver3"), Tip::Beveled, seed));
             d.sensor->start(500);
             d.stage->enable(true);
             d.stage->moveLinear({4.0, 25.0});
@@ -212,7 +228,7 @@ private slots:
 
     void diamondTipShowsPrePunctureEvent()
     {
-        DeviceSet d = makeSimulatedDevices(fast(QStringLiteral("liver5"), Tip::Diamond));
+        RigDevices d = rigDevices(fast(QStringLiteral("liver5"), Tip::Diamond));
         d.sensor->start(500);
         d.stage->enable(true);
         d.stage->moveLinear({4.0, 30.0});
@@ -232,7 +248,7 @@ private slots:
     void capsuleFreeBluntTipHasOnlyInternalPunctures()
     {
         const RigConfig c = fast(QStringLiteral("liver7"), Tip::Blunt);
-        DeviceSet d = makeSimulatedDevices(c);
+        RigDevices d = rigDevices(c);
         d.sensor->start(500);
         d.stage->enable(true);
         d.stage->moveLinear({2.5, 35.0});
@@ -253,7 +269,7 @@ private slots:
     void loadMassShowsOnTheSensor()
     {
         const RigConfig c = fast(QStringLiteral("liver1"), Tip::Beveled);
-        DeviceSet d = makeSimulatedDevices(c);
+        RigDevices d = rigDevices(c);
         d.sensor->start(1000);
         auto meanVolts = [&] {
             const Trace tr = runFor(d, 1000, d.rig->simTime_s() + 1.0, [](const StageState&) { return false; });
@@ -273,7 +289,7 @@ private slots:
     {
         RigConfig c = fast(QStringLiteral("liver7"), Tip::Diamond);
         c.setup = Setup::Platform;
-        DeviceSet d = makeSimulatedDevices(c);
+        RigDevices d = rigDevices(c);
         d.sensor->start(500);
         d.stage->enable(true);
         d.stage->moveSine({10.0, 0.5, 3});
@@ -320,7 +336,7 @@ private slots:
 
     void faultsAreInjectedOnTheSimClock()
     {
-        DeviceSet d = makeSimulatedDevices(fast(QStringLiteral("liver1"), Tip::Beveled));
+        RigDevices d = rigDevices(fast(QStringLiteral("liver1"), Tip::Beveled));
         d.sensor->start(500);
         d.rig->injectFault(Fault::SensorError, 0.2);
         std::vector<VoltageSample> buf;

@@ -1,7 +1,7 @@
 // The operator's sequence: each control enabled only when its prerequisites hold, with the
 // reason in its tooltip; the pure rules first, then the real panel driven with QTest.
 #include "widgets/control_panel.h"
-#include "widgets/interlocks.h"
+#include "devices/interlocks.h"
 
 #include <QAbstractButton>
 #include <QDoubleSpinBox>

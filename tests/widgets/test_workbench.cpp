@@ -43,9 +43,18 @@ QString screenshotDir()
     return dir;
 }
 
-nb::WorkbenchOptions options(const QString& sessionDir, bool realtime)
+// `rig`: the test keeps a hand on the simulated rig the window drives (faults, masses).
+nb::WorkbenchOptions options(const QString& sessionDir, bool realtime,
+                             std::shared_ptr<nb::devices::sim::SimulatedRig>* rig = nullptr)
 {
     nb::WorkbenchOptions o;
+    if (rig)
+        o.deviceFactory = [realtime, rig] {
+            nb::devices::sim::RigConfig c;
+            c.realtime = realtime;
+            *rig = std::make_shared<nb::devices::sim::SimulatedRig>(c);
+            return nb::devices::sim::simulatedDeviceSet(*rig);
+        };
     o.realtime = realtime;
     o.rateHz = 1000.0;
     o.sessionDir = sessionDir;
@@ -69,6 +78,7 @@ void prepare(nb::MainWindow& w)
     QTest::mouseClick(p->button(Control::Bias), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().biased, 20000);
     QVERIFY(!start->isEnabled());
+    QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::Zero)->isEnabled(), qPrintable(p->button(Control::Zero)->toolTip()), 20000);
     QTest::mouseClick(p->button(Control::Zero), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
     QTRY_VERIFY_WITH_TIMEOUT(start->isEnabled(), 20000);
@@ -146,9 +156,15 @@ private slots:
         QTest::keyClick(w.plots()->forceTimePlot(), Qt::Key_Escape);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
         QTRY_VERIFY_WITH_TIMEOUT(!w.controlPanel()->interlockState().moving, 20000);
-        QCOMPARE(w.lastEndReason(), QStringLiteral("stopped"));
+        QCOMPARE(w.lastEndReason(), QStringLiteral("emergency_stop"));
         const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QCOMPARE(r.run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("emergency_stop"));
         QCOMPARE(r.run.footer.value(QStringLiteral("emergency_stop"), QString()), QStringLiteral("operator"));
+        // The stop latches: the drive is off and nothing moves until the operator enables it.
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().latched, 20000);
+        QVERIFY(!w.controlPanel()->interlockState().stageEnabled);
+        QVERIFY(!w.controlPanel()->button(Control::StartInsertion)->isEnabled());
+        QVERIFY(!w.controlPanel()->button(Control::Withdraw)->isEnabled());
         const double deepest = *std::max_element(r.run.position_mm.begin(), r.run.position_mm.end());
         QVERIFY(deepest < 59.0);  // stopped well before the planned depth
     }
@@ -203,7 +219,8 @@ private slots:
     void sensorUnpluggedDuringARun()
     {
         QTemporaryDir tmp;
-        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         setMotion(w, 5.0, 60.0);
@@ -213,7 +230,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving, 20000);
         QTRY_VERIFY_WITH_TIMEOUT(w.plots()->sampleCount() > 500, 20000);
         const double beforeFault_s = w.engine()->status().runTime_s;  // recorded by now, on the device clock
-        w.engine()->rig()->injectFault(nb::devices::sim::Fault::SensorSilent);
+        rig->injectFault(nb::devices::sim::Fault::SensorSilent);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
         QCOMPARE(w.lastEndReason(), QStringLiteral("fault"));
         QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().fault.isEmpty(), 20000);
@@ -233,7 +250,8 @@ private slots:
     {
         QTemporaryDir tmp;
         // Real time: the wizard averages what the live stream delivers while the mass hangs.
-        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
@@ -259,7 +277,7 @@ private slots:
         QCOMPARE(wizard->worstRow(), -1);
 
         // A mass mislabelled by the operator (150 g row measured with 230 g on the hook).
-        wizard->setLoadMassHook([&w](double g) { return std::optional(w.engine()->rig()->setLoadMass_g(g == 150.0 ? 230.0 : g)); });
+        wizard->setLoadMassHook([&rig](double g) { return std::optional(rig->setLoadMass_g(g == 150.0 ? 230.0 : g)); });
         wizard->table()->selectRow(3);
         wizard->measureCurrent();
         QTRY_VERIFY_WITH_TIMEOUT(!wizard->isMeasuring(), 60000);

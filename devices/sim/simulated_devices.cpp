@@ -1,0 +1,29 @@
+#include "devices/sim/simulated_rig.h"
+
+#include <QCoreApplication>
+
+namespace nb::devices::sim {
+
+DeviceSet simulatedDeviceSet(const std::shared_ptr<SimulatedRig>& rig)
+{
+    DeviceSet set;
+    set.stage = rig->makeStage();
+    set.sensor = rig->makeSensor();
+    set.truth = rig;
+    set.calibrationLoad = rig;
+    set.selfPacedClock = !rig->config().realtime;
+    const RigConfig& config = rig->config();
+    set.nominalSlope_V_per_g = config.sensor.slope_V_per_g();
+    set.description = QCoreApplication::translate("nb::devices", "simulated rig (%1, %2 tip, seed %3%4)")
+                          .arg(config.tissue, tipName(config.tip))
+                          .arg(config.seed)
+                          .arg(config.realtime ? QString() : QCoreApplication::translate("nb::devices", ", simulated clock"));
+    return set;
+}
+
+DeviceSet makeSimulatedDevices(const RigConfig& config)
+{
+    return simulatedDeviceSet(std::make_shared<SimulatedRig>(config));
+}
+
+}  // namespace nb::devices::sim
