@@ -1,4 +1,5 @@
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include <QCoreApplication>
 
@@ -9,7 +10,7 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
 {
     parser.setApplicationDescription(QString());
     const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
-                                  QCoreApplication::translate("cli", "show this help"));
+                                  nb::TrCli::tr("show this help"));
     parser.addOption(help);
     auto helpText = [&] {
         QString h = parser.helpText();
@@ -32,8 +33,8 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
     const auto n = parser.positionalArguments().size();
     if (n < minPositional || (maxPositional >= 0 && n > maxPositional)) {
         io.err << "needlebench " << command << ": "
-               << (n < minPositional ? QCoreApplication::translate("cli", "missing arguments")
-                                     : QCoreApplication::translate("cli", "too many arguments"))
+               << (n < minPositional ? nb::TrCli::tr("missing arguments")
+                                     : nb::TrCli::tr("too many arguments"))
                << "\n\n"
                << helpText();
         *exitCode = Usage;

@@ -2,6 +2,7 @@
 // --daq/--stage string that selects each.
 
 #include "cli_support.h"
+#include "core/tr.h"
 
 #include "devices/device_spec.h"
 
@@ -13,7 +14,7 @@ namespace nb::cli {
 int cmdDevices(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), QCoreApplication::translate("cli", "print JSON"));
+    const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     parser.addOption(json);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("devices"), args, io, 0, 0, &code))
@@ -28,20 +29,20 @@ int cmdDevices(const QStringList& args, Io io)
             (d.kind == QLatin1String("daq") ? daqs : ports).append(o);
         }
         daqs.prepend(QJsonObject{{QStringLiteral("spec"), QStringLiteral("sim")},
-                                 {QStringLiteral("description"), QCoreApplication::translate("cli", "simulated load cell (default)")}});
+                                 {QStringLiteral("description"), nb::TrCli::tr("simulated load cell (default)")}});
         ports.prepend(QJsonObject{{QStringLiteral("spec"), QStringLiteral("sim")},
-                                  {QStringLiteral("description"), QCoreApplication::translate("cli", "simulated stage (default)")}});
+                                  {QStringLiteral("description"), nb::TrCli::tr("simulated stage (default)")}});
         printJson(io, QJsonObject{{QStringLiteral("daqs"), daqs}, {QStringLiteral("stages"), ports}});
         return Ok;
     }
-    io.out << QCoreApplication::translate("cli", "DAQs (--daq):\n");
-    io.out << "  sim                      " << QCoreApplication::translate("cli", "simulated load cell (default)") << '\n';
+    io.out << nb::TrCli::tr("DAQs (--daq):\n");
+    io.out << "  sim                      " << nb::TrCli::tr("simulated load cell (default)") << '\n';
     for (const auto& d : found)
         if (d.kind == QLatin1String("daq"))
             io.out << "  " << d.spec.leftJustified(24) << ' ' << d.description
                    << (d.problem.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(d.problem)) << '\n';
-    io.out << QCoreApplication::translate("cli", "Stages (--stage):\n");
-    io.out << "  sim                      " << QCoreApplication::translate("cli", "simulated stage (default)") << '\n';
+    io.out << nb::TrCli::tr("Stages (--stage):\n");
+    io.out << "  sim                      " << nb::TrCli::tr("simulated stage (default)") << '\n';
     for (const auto& d : found)
         if (d.kind == QLatin1String("serial"))
             io.out << "  " << d.spec.leftJustified(24) << ' ' << d.description << '\n';

@@ -2,6 +2,7 @@
 // constant-velocity insertion.
 
 #include "cli_support.h"
+#include "core/model_json.h"
 #include "core/tr.h"
 
 #include "core/events.h"
@@ -69,9 +70,11 @@ int cmdEvents(const QStringList& args, Io io)
                        {QStringLiteral("zero_offset_N"), ev.zeroOffset_N},
                        {QStringLiteral("noise_N"), ev.noise_N},
                        {QStringLiteral("stiffness"),
-                        QJsonObject{{QStringLiteral("a1_N_per_mm"), ev.stiffness.a1_N_per_mm},
-                                    {QStringLiteral("a2_N_per_mm2"), ev.stiffness.a2_N_per_mm2},
-                                    {QStringLiteral("rms_N"), ev.stiffnessRms_N}}}});
+                        [&] {
+                            QJsonObject s = toJson(ev.stiffness);
+                            s.insert(QStringLiteral("rms_N"), ev.stiffnessRms_N);
+                            return s;
+                        }()}});
         return Ok;
     }
     io.out << nb::TrCli::tr("events of %1 (force zeroed by %2 N, noise %3 N)\n")

@@ -2,6 +2,7 @@
 // The JSON keys are a contract with users' scripts; the tables are for reading.
 
 #include "cli_support.h"
+#include "core/model_json.h"
 #include "core/tr.h"
 
 #include "core/calibration.h"
@@ -31,7 +32,7 @@ Run loadRun(const QString& path, Io io)
     try {
         RunReadResult r = readRunFile(path);
         for (const QString& w : r.warnings)
-            io.err << QCoreApplication::translate("cli", "warning: %1\n").arg(w);
+            io.err << nb::TrCli::tr("warning: %1\n").arg(w);
         return std::move(r.run);
     } catch (const RunFileError& e) {
         throw FileFailure{e.message()};
@@ -49,14 +50,6 @@ auto onFile(const QString& path, F&& f)
 }
 
 QString num(double v, int precision = 5) { return QString::number(v, 'g', precision); }
-
-QJsonObject quadraticJson(const QuadraticStiffnessFit& q)
-{
-    return {{QStringLiteral("a1_N_per_mm"), q.model.a1_N_per_mm},
-            {QStringLiteral("a2_N_per_mm2"), q.model.a2_N_per_mm2},
-            {QStringLiteral("rms_N"), q.rms_N},
-            {QStringLiteral("r2"), q.r2}};
-}
 
 QJsonObject alternativesJson(const StiffnessFit& f)
 {
@@ -176,7 +169,7 @@ int fitStiffnessCommand(const QStringList& args, Io io)
         for (std::size_t i = 0; i < events.size(); ++i) {
             const auto& ev = events[i];
             const auto& f = sum.runs[i];
-            QJsonObject o = quadraticJson(f.quadratic);
+            QJsonObject o = toJson(f.quadratic);
             o.insert(QStringLiteral("file"), files[qsizetype(i)]);
             o.insert(QStringLiteral("contact_mm"), ev.contact.position_mm);
             o.insert(QStringLiteral("puncture_mm"), ev.puncture.position_mm);
@@ -187,16 +180,18 @@ int fitStiffnessCommand(const QStringList& args, Io io)
             o.insert(QStringLiteral("alternatives"), alternativesJson(f));
             runs.append(o);
         }
-        QJsonObject pooled = quadraticJson(sum.pooled.quadratic);
+        QJsonObject pooled = toJson(sum.pooled.quadratic);
         pooled.insert(QStringLiteral("samples"), qint64(sum.pooled.samples));
         pooled.insert(QStringLiteral("alternatives"), alternativesJson(sum.pooled));
         printJson(io, {{QStringLiteral("runs"), runs},
                        {QStringLiteral("pooled"), pooled},
                        {QStringLiteral("mean_of_runs"),
-                        QJsonObject{{QStringLiteral("a1_N_per_mm"), sum.meanOfRuns.a1_N_per_mm},
-                                    {QStringLiteral("a2_N_per_mm2"), sum.meanOfRuns.a2_N_per_mm2},
-                                    {QStringLiteral("a1_std_N_per_mm"), sum.stdDevOfRuns.a1_N_per_mm},
-                                    {QStringLiteral("a2_std_N_per_mm2"), sum.stdDevOfRuns.a2_N_per_mm2}}}});
+                        [&] {
+                            QJsonObject mean = toJson(sum.meanOfRuns);
+                            mean.insert(QStringLiteral("a1_std_N_per_mm"), sum.stdDevOfRuns.a1_N_per_mm);
+                            mean.insert(QStringLiteral("a2_std_N_per_mm2"), sum.stdDevOfRuns.a2_N_per_mm2);
+                            return mean;
+                        }()}});
         return Ok;
     }
     io.out << nb::TrCli::tr("stiffness f = a1*x + a2*x^2, x = depth past contact [mm]\n");
@@ -223,16 +218,9 @@ int fitStiffnessCommand(const QStringList& args, Io io)
     return Ok;
 }
 
-QJsonObject perLengthJson(const KarnoppPerLength& p)
-{
-    return {{QStringLiteral("Cp_N_per_m"), p.Cp_N_per_m},     {QStringLiteral("Cn_N_per_m"), p.Cn_N_per_m},
-            {QStringLiteral("bp_Ns_per_m2"), p.bp_Ns_per_m2}, {QStringLiteral("bn_Ns_per_m2"), p.bn_Ns_per_m2},
-            {QStringLiteral("Dp_N_per_m"), p.Dp_N_per_m},     {QStringLiteral("Dn_N_per_m"), p.Dn_N_per_m}};
-}
-
 QJsonObject groupJson(const FrictionGroup& g, bool withFrequency)
 {
-    QJsonObject mean = perLengthJson(g.mean), sd = perLengthJson(g.stdDev);
+    QJsonObject mean = toJson(g.mean), sd = toJson(g.stdDev);
     if (g.massEstimateMean_kg) {
         mean.insert(QStringLiteral("m_est_kg"), *g.massEstimateMean_kg);
         sd.insert(QStringLiteral("m_est_kg"), *g.massEstimateStdDev_kg);
@@ -336,7 +324,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           {QStringLiteral("static_source"), f.staticSource},
                           {QStringLiteral("samples_positive"), qint64(f.positiveSamples)},
                           {QStringLiteral("samples_negative"), qint64(f.negativeSamples)},
-                          {QStringLiteral("per_length"), perLengthJson(f.perLength)}};
+                          {QStringLiteral("per_length"), toJson(f.perLength)}};
             if (f.massEstimate_kg)
                 o.insert(QStringLiteral("m_est_kg"), *f.massEstimate_kg);
             runs.append(o);

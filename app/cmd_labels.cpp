@@ -31,12 +31,8 @@ int cmdLabels(const QStringList& args, Io io)
     }
     const QString runPath = parser.positionalArguments()[1];
     QString outPath = parser.value(out);
-    if (outPath.isEmpty()) {
-        outPath = runPath;
-        if (outPath.endsWith(QLatin1String(".csv")))
-            outPath.chop(4);
-        outPath += QStringLiteral(".labels.csv");
-    }
+    if (outPath.isEmpty())
+        outPath = labelsPathFor(runPath);
     try {
         const Run run = readRunFile(runPath).run;
         const Labels labels = suggestLabels(run);

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "core/tr.h"
 
 #include "cli_support.h"
 
@@ -23,18 +24,18 @@ int cmdLabels(const QStringList& args, Io io);
 const std::vector<Command>& commands()
 {
     static const std::vector<Command> all{
-        {QStringLiteral("version"), QCoreApplication::translate("cli", "print the version"), cmdVersion},
-        {QStringLiteral("fit"), QCoreApplication::translate("cli", "fit calibration, stiffness or friction models"), cmdFit},
-        {QStringLiteral("events"), QCoreApplication::translate("cli", "find contact, punctures and relaxation in a run"), cmdEvents},
-        {QStringLiteral("devices"), QCoreApplication::translate("cli", "list connected DAQs and serial ports"), cmdDevices},
-        {QStringLiteral("acquire"), QCoreApplication::translate("cli", "record one run on real (or simulated) devices"), cmdAcquire},
-        {QStringLiteral("export"), QCoreApplication::translate("cli", "export a session as CSV, HDF5 or ELAN files"), cmdExport},
-        {QStringLiteral("demo"), QCoreApplication::translate("cli", "simulate, label, fit and export a short session"), cmdDemo, true},
-        {QStringLiteral("simulate"), QCoreApplication::translate("cli", "record one run on the simulated rig"), cmdSimulate},
-        {QStringLiteral("video-info"), QCoreApplication::translate("cli", "index a video: frames, rate, duplicates"), cmdVideoInfo},
-        {QStringLiteral("frame"), QCoreApplication::translate("cli", "write one exact video frame as an image"), cmdFrame},
-        {QStringLiteral("sync"), QCoreApplication::translate("cli", "find the video's offset to a run (motion vs needle speed)"), cmdSync},
-        {QStringLiteral("labels"), QCoreApplication::translate("cli", "suggest phase and event labels for a run"), cmdLabels},
+        {QStringLiteral("version"), nb::TrCli::tr("print the version"), cmdVersion},
+        {QStringLiteral("fit"), nb::TrCli::tr("fit calibration, stiffness or friction models"), cmdFit},
+        {QStringLiteral("events"), nb::TrCli::tr("find contact, punctures and relaxation in a run"), cmdEvents},
+        {QStringLiteral("devices"), nb::TrCli::tr("list connected DAQs and serial ports"), cmdDevices},
+        {QStringLiteral("acquire"), nb::TrCli::tr("record one run on real (or simulated) devices"), cmdAcquire},
+        {QStringLiteral("export"), nb::TrCli::tr("export a session as CSV, HDF5 or ELAN files"), cmdExport},
+        {QStringLiteral("demo"), nb::TrCli::tr("simulate, label, fit and export a short session"), cmdDemo, true},
+        {QStringLiteral("simulate"), nb::TrCli::tr("record one run on the simulated rig"), cmdSimulate},
+        {QStringLiteral("video-info"), nb::TrCli::tr("index a video: frames, rate, duplicates"), cmdVideoInfo},
+        {QStringLiteral("frame"), nb::TrCli::tr("write one exact video frame as an image"), cmdFrame},
+        {QStringLiteral("sync"), nb::TrCli::tr("find the video's offset to a run (motion vs needle speed)"), cmdSync},
+        {QStringLiteral("labels"), nb::TrCli::tr("suggest phase and event labels for a run"), cmdLabels},
     };
     return all;
 }
@@ -51,13 +52,12 @@ bool needsWidgets(const QStringList& arguments)
 
 static void printUsage(QTextStream& s)
 {
-    s << QCoreApplication::translate("cli",
-                                     "Usage: needlebench                 open the workbench (GUI, simulated rig)\n"
+    s << nb::TrCli::tr("Usage: needlebench                 open the workbench (GUI, simulated rig)\n"
                                      "       needlebench COMMAND [options]  run headless\n\n"
                                      "Commands:\n");
     for (const Command& c : commands())
         s << "  " << c.name.leftJustified(16) << ' ' << c.summary << '\n';
-    s << QCoreApplication::translate("cli", "\n'needlebench COMMAND --help' describes a command.\n");
+    s << nb::TrCli::tr("\n'needlebench COMMAND --help' describes a command.\n");
 }
 
 int run(const QStringList& arguments, Io io)
@@ -78,7 +78,7 @@ int run(const QStringList& arguments, Io io)
             }
         }
     }
-    io.err << QCoreApplication::translate("cli", "needlebench: unknown command '%1'\n\n").arg(word);
+    io.err << nb::TrCli::tr("needlebench: unknown command '%1'\n\n").arg(word);
     printUsage(io.err);
     return Usage;
 }

@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "core/run_keys.h"
 
 #include "translation.h"
 
@@ -450,14 +451,10 @@ void MainWindow::startRun()
     devices::RunPlan plan = panel_->motionPlan();
     plan.outPath = session_->nextRunPath(panel_->motionName());
     plan.endWhenMotionDone = true;
-    const SessionInfo& i = session_->info();
-    plan.metadata.set(QStringLiteral("organ"), i.organ);
-    plan.metadata.set(QStringLiteral("specimen"), i.specimen);
-    plan.metadata.set(QStringLiteral("tip"), i.tip);
-    plan.metadata.set(QStringLiteral("thickness_mm"), i.thickness_mm);
-    plan.metadata.set(QStringLiteral("operator"), i.operatorName);
-    plan.metadata.set(QStringLiteral("protocol"), i.protocol);
-    plan.metadata.set(QStringLiteral("session"), QDir(session_->dir()).dirName());
+    const Metadata sm = sessionMetadata(session_->info());
+    for (const auto& [k, v] : sm.entries())
+        plan.metadata.set(k, v);
+    plan.metadata.set(key::session, QDir(session_->dir()).dirName());
     runIsLinear_ = plan.motion == devices::RunPlan::Motion::Linear;
     engine_->startRun(plan);
 }

@@ -1,4 +1,5 @@
 #include "calibration.h"
+#include "core/tr.h"
 
 #include "fit_error.h"
 #include "models.h"
@@ -21,20 +22,20 @@ CalibrationFit fitCalibration(std::span<const CalibrationPoint> points)
 {
     const auto n = Eigen::Index(points.size());
     if (n < 2)
-        throw FitError(QCoreApplication::translate("nb::fit", "calibration needs at least two points, got %1").arg(n));
+        throw FitError(nb::TrCore::tr("calibration needs at least two points, got %1").arg(n));
     Eigen::MatrixXd A(n, 2);
     Eigen::VectorXd v(n);
     for (Eigen::Index i = 0; i < n; ++i) {
         const auto& p = points[std::size_t(i)];
         if (!std::isfinite(p.mass_g) || !std::isfinite(p.voltage_V))
-            throw FitError(QCoreApplication::translate("nb::fit", "calibration point %1 is not a finite number").arg(i + 1));
+            throw FitError(nb::TrCore::tr("calibration point %1 is not a finite number").arg(i + 1));
         A(i, 0) = 1.0;
         A(i, 1) = p.mass_g;
         v(i) = p.voltage_V;
     }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
     if (qr.rank() < 2)
-        throw FitError(QCoreApplication::translate("nb::fit", "calibration needs at least two different masses"));
+        throw FitError(nb::TrCore::tr("calibration needs at least two different masses"));
     const Eigen::Vector2d x = qr.solve(v);
     CalibrationFit fit;
     fit.intercept_V = x(0);
@@ -51,7 +52,7 @@ std::vector<CalibrationPoint> readCalibrationFile(const QString& path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw RunFileError(path, 0, QCoreApplication::translate("nb::fit", "cannot open: %1").arg(file.errorString()));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot open: %1").arg(file.errorString()));
     QString text = QString::fromUtf8(file.readAll());
     if (text.startsWith(QChar(0xFEFF)))
         text.remove(0, 1);
@@ -72,21 +73,21 @@ std::vector<CalibrationPoint> readCalibrationFile(const QString& path)
             voltCol = int(f.indexOf(QLatin1String("voltage_V")));
             if (massCol < 0 || voltCol < 0)
                 throw RunFileError(path, i + 1,
-                                   QCoreApplication::translate("nb::fit", "header needs columns mass_g and voltage_V"));
+                                   nb::TrCore::tr("header needs columns mass_g and voltage_V"));
             continue;
         }
         if (f.size() <= std::max(massCol, voltCol))
-            throw RunFileError(path, i + 1, QCoreApplication::translate("nb::fit", "expected %1 fields, got %2")
+            throw RunFileError(path, i + 1, nb::TrCore::tr("expected %1 fields, got %2")
                                                 .arg(std::max(massCol, voltCol) + 1)
                                                 .arg(f.size()));
         bool ok1 = false, ok2 = false;
         CalibrationPoint p{f[massCol].toDouble(&ok1), f[voltCol].toDouble(&ok2)};
         if (!ok1 || !ok2 || !std::isfinite(p.mass_g) || !std::isfinite(p.voltage_V))
-            throw RunFileError(path, i + 1, QCoreApplication::translate("nb::fit", "mass_g and voltage_V must be numbers"));
+            throw RunFileError(path, i + 1, nb::TrCore::tr("mass_g and voltage_V must be numbers"));
         points.push_back(p);
     }
     if (!haveHeader)
-        throw RunFileError(path, 0, QCoreApplication::translate("nb::fit", "empty file (expected a header mass_g,voltage_V)"));
+        throw RunFileError(path, 0, nb::TrCore::tr("empty file (expected a header mass_g,voltage_V)"));
     return points;
 }
 

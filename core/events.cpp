@@ -1,4 +1,5 @@
 #include "events.h"
+#include "core/tr.h"
 
 #include "fit_error.h"
 #include "signal.h"
@@ -213,7 +214,7 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
 {
     const std::size_t n = std::min(pos.size(), force.size());
     if (n < 8)
-        throw FitError(QCoreApplication::translate("nb::fit", "too few samples before the puncture (%1) to fit the contact")
+        throw FitError(nb::TrCore::tr("too few samples before the puncture (%1) to fit the contact")
                            .arg(n));
     pos = pos.first(n);
     force = force.first(n);
@@ -223,7 +224,7 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
     std::sort(sorted.begin(), sorted.end());
     const double hi = sorted[n - 4];
     if (!(hi > lo))
-        throw FitError(QCoreApplication::translate("nb::fit", "the needle does not move before the puncture"));
+        throw FitError(nb::TrCore::tr("the needle does not move before the puncture"));
     const ContactMoments moments(pos, force);
     auto tryContact = [&](double xc) { return moments.trial(xc); };
 
@@ -267,7 +268,7 @@ ContactFit fitContact(std::span<const double> pos, std::span<const double> force
         t = tryContact(xc);
     }
     if (!std::isfinite(t.sse))
-        throw FitError(QCoreApplication::translate("nb::fit", "the contact fit failed (degenerate samples)"));
+        throw FitError(nb::TrCore::tr("the contact fit failed (degenerate samples)"));
     ContactFit fit;
     fit.contact_mm = xc;
     fit.offset_N = t.x(0);
@@ -286,16 +287,16 @@ InsertionEvents detectEvents(const Run& run, const EventOptions& options)
 {
     const std::size_t total = run.size();
     if (total < 20)
-        throw FitError(QCoreApplication::translate("nb::fit", "too few samples (%1) for event detection").arg(total));
+        throw FitError(nb::TrCore::tr("too few samples (%1) for event detection").arg(total));
     for (std::size_t i = 0; i < total; ++i)
         if (!std::isfinite(run.position_mm[i]) || !std::isfinite(run.force_N[i]) || !std::isfinite(run.time_s[i]))
-            throw FitError(QCoreApplication::translate("nb::fit", "sample %1 is not a finite number").arg(i + 1));
+            throw FitError(nb::TrCore::tr("sample %1 is not a finite number").arg(i + 1));
     const std::size_t end =
         std::size_t(std::max_element(run.position_mm.begin(), run.position_mm.end()) - run.position_mm.begin()) + 1;
     const double travel = run.position_mm[end - 1] - run.position_mm[0];
     const double duration = run.time_s[end - 1] - run.time_s[0];
     if (end < 20 || !(travel > 0.0) || !(duration > 0.0))
-        throw FitError(QCoreApplication::translate("nb::fit", "the needle does not move forward"));
+        throw FitError(nb::TrCore::tr("the needle does not move forward"));
 
     const std::span<const double> force(run.force_N.data(), end);
     const std::span<const double> pos(run.position_mm.data(), end);
@@ -348,7 +349,7 @@ InsertionEvents detectEvents(const Run& run, const EventOptions& options)
         contact = c;
     }
     if (!main)
-        throw FitError(QCoreApplication::translate("nb::fit", "no puncture: the force never rises from contact and then "
+        throw FitError(nb::TrCore::tr("no puncture: the force never rises from contact and then "
                                                                "drops sharply (by %1 N or %2 % of its peak)")
                            .arg(options.minPunctureDrop_N)
                            .arg(options.punctureDropFraction * 100.0));
@@ -416,7 +417,7 @@ void applyEventLabels(InsertionEvents& ev, const Run& run, const Labels& labels,
 
     if (const Label* c = find(QStringLiteral("contact"))) {
         if (outside(*c))
-            throw FitError(QCoreApplication::translate("nb::fit", "the contact label at %1 s is outside the run (%2 to %3 s)")
+            throw FitError(nb::TrCore::tr("the contact label at %1 s is outside the run (%2 to %3 s)")
                                .arg(c->start_s).arg(run.time_s.front()).arg(run.time_s.back()));
         const double t = c->start_s;
         const std::size_t hi = std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), t) - run.time_s.begin());
@@ -447,7 +448,7 @@ void applyEventLabels(InsertionEvents& ev, const Run& run, const Labels& labels,
     }
     if (const Label* p = find(QStringLiteral("puncture"))) {
         if (outside(*p))
-            throw FitError(QCoreApplication::translate("nb::fit", "the puncture label at %1 s is outside the run (%2 to %3 s)")
+            throw FitError(nb::TrCore::tr("the puncture label at %1 s is outside the run (%2 to %3 s)")
                                .arg(p->start_s).arg(run.time_s.front()).arg(run.time_s.back()));
         // A label placed on a video frame is known to a frame; the force peak near it is the puncture.
         const std::size_t lo = nearest(p->start_s - window_s), hi = nearest(p->start_s + window_s);
@@ -461,7 +462,7 @@ void applyEventLabels(InsertionEvents& ev, const Run& run, const Labels& labels,
         ev.puncture.force_N = trailingMean(run.force_N, best, 5) - ev.zeroOffset_N;  // as detection measures it
     }
     if (!(ev.puncture.position_mm > ev.contact.position_mm))
-        throw FitError(QCoreApplication::translate("nb::fit", "the puncture (%1 mm) is not past the contact (%2 mm)")
+        throw FitError(nb::TrCore::tr("the puncture (%1 mm) is not past the contact (%2 mm)")
                            .arg(ev.puncture.position_mm).arg(ev.contact.position_mm));
 }
 

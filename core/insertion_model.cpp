@@ -1,4 +1,5 @@
 #include "insertion_model.h"
+#include "core/tr.h"
 
 #include "fit_error.h"
 #include "signal.h"
@@ -12,7 +13,7 @@ namespace nb {
 Run simulateInsertion(const InsertionModel& model, std::span<const double> time_s, std::span<const double> position_mm)
 {
     if (time_s.size() != position_mm.size())
-        throw FitError(QCoreApplication::translate("nb::fit", "%1 time stamps for %2 positions")
+        throw FitError(nb::TrCore::tr("%1 time stamps for %2 positions")
                            .arg(time_s.size())
                            .arg(position_mm.size()));
     Run run;
@@ -48,7 +49,7 @@ Run simulateInsertion(const InsertionModel& model, std::span<const double> time_
 double rmsDistance(const Run& simulated, const Run& recorded)
 {
     if (simulated.size() < 2 || recorded.size() < 1)
-        throw FitError(QCoreApplication::translate("nb::fit", "the runs to compare are empty"));
+        throw FitError(nb::TrCore::tr("the runs to compare are empty"));
     const auto& ts = simulated.time_s;
     double sum = 0.0;
     std::size_t count = 0;
@@ -67,7 +68,7 @@ double rmsDistance(const Run& simulated, const Run& recorded)
         ++count;
     }
     if (count == 0)
-        throw FitError(QCoreApplication::translate("nb::fit", "the simulated and recorded runs do not overlap in time"));
+        throw FitError(nb::TrCore::tr("the simulated and recorded runs do not overlap in time"));
     return std::sqrt(sum / double(count));
 }
 

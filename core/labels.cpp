@@ -1,4 +1,7 @@
 #include "labels.h"
+
+#include <QDir>
+#include <QFileInfo>
 #include "core/tr.h"
 
 #include "run_file.h"
@@ -136,6 +139,12 @@ QStringList phasePerSample(const Labels& labels, const std::vector<double>& time
         out << name;
     }
     return out;
+}
+
+QString labelsPathFor(const QString& runPath)
+{
+    const QFileInfo fi(runPath);
+    return fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".labels.csv"));
 }
 
 }  // namespace nb

@@ -28,6 +28,10 @@ using Labels = std::vector<Label>;
 // Throws RunFileError (core/run_file.h) naming file, line and reason.
 Labels readLabelsFile(const QString& path);
 void writeLabelsFile(const QString& path, const Labels& labels);
+// Where a run's labels live: beside the run file, `x/run_001.csv` -> `x/run_001.labels.csv`
+// (any extension: `run.txt` -> `run.labels.csv`). The window, the command line and the
+// exporters all ask here.
+QString labelsPathFor(const QString& runPath);
 
 // Per-sample phase names for `time_s` (empty where no interval of `track` covers the
 // sample; any track when `track` is empty).

@@ -1,4 +1,5 @@
 #include "session.h"
+#include "core/run_keys.h"
 #include "core/tr.h"
 
 #include "core/run_file.h"
@@ -81,6 +82,18 @@ const QRegularExpression& runNamePattern()
 }
 
 }  // namespace
+
+Metadata sessionMetadata(const SessionInfo& i)
+{
+    Metadata m;
+    m.set(key::organ, i.organ);
+    m.set(key::specimen, i.specimen);
+    m.set(key::tip, i.tip);
+    m.set(key::thickness_mm, i.thickness_mm);
+    m.set(key::operatorName, i.operatorName);
+    m.set(key::protocol, i.protocol);
+    return m;
+}
 
 RunState runStateForEndReason(const QString& r)
 {
@@ -182,11 +195,11 @@ Session Session::create(const QString& dir, const SessionInfo& info)
 {
     QDir d(dir);
     if (!d.exists() && !QDir().mkpath(dir))
-        throw SessionError(dir, QCoreApplication::translate("nb", "cannot create the folder"));
+        throw SessionError(dir, nb::TrCore::tr("cannot create the folder"));
     if (QFileInfo::exists(d.filePath(kSessionFile)))
-        throw SessionError(d.filePath(kSessionFile), QCoreApplication::translate("nb", "a session already exists here; open it instead"));
+        throw SessionError(d.filePath(kSessionFile), nb::TrCore::tr("a session already exists here; open it instead"));
     if (!d.mkpath(kCalibrationDir))
-        throw SessionError(d.filePath(kCalibrationDir), QCoreApplication::translate("nb", "cannot create the folder"));
+        throw SessionError(d.filePath(kCalibrationDir), nb::TrCore::tr("cannot create the folder"));
     Session s;
     s.dir_ = d.absolutePath();
     s.info_ = info;
@@ -202,7 +215,7 @@ Session Session::open(const QString& dir)
 {
     const QString path = QDir(dir).filePath(kSessionFile);
     if (!QFileInfo::exists(path))
-        throw SessionError(dir, QCoreApplication::translate("nb", "not a session folder (no %1)").arg(kSessionFile));
+        throw SessionError(dir, nb::TrCore::tr("not a session folder (no %1)").arg(kSessionFile));
     const QJsonObject o = readJson(path);
     Session s;
     s.dir_ = QDir(dir).absolutePath();

@@ -14,6 +14,7 @@
 
 #include "core/calibration.h"
 #include "core/error.h"
+#include "core/run.h"
 
 #include <QDateTime>
 #include <QString>
@@ -40,6 +41,10 @@ struct SessionInfo {
     QString notes;
     QDateTime created;
 };
+
+// The session's details as run metadata (organ, specimen, tip, thickness_mm, operator,
+// protocol): what every run of the session and every export of it carries.
+Metadata sessionMetadata(const SessionInfo& info);
 
 struct StoredCalibration {
     QString name;         // file base name, e.g. cal_20261121_093000

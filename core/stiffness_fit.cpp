@@ -1,4 +1,5 @@
 #include "stiffness_fit.h"
+#include "core/tr.h"
 
 #include "fit_error.h"
 #include "statistics.h"
@@ -150,12 +151,12 @@ StiffnessFit fitStiffness(const StiffnessSegment& segment)
 {
     const std::size_t n = std::min(segment.depth_mm.size(), segment.force_N.size());
     if (n < 4 || segment.depth_mm.size() != segment.force_N.size())
-        throw FitError(QCoreApplication::translate("nb::fit", "too few samples (%1) between contact and puncture").arg(n));
+        throw FitError(nb::TrCore::tr("too few samples (%1) between contact and puncture").arg(n));
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(segment.depth_mm[i]) || !std::isfinite(segment.force_N[i]))
-            throw FitError(QCoreApplication::translate("nb::fit", "stiffness sample %1 is not a finite number").arg(i + 1));
+            throw FitError(nb::TrCore::tr("stiffness sample %1 is not a finite number").arg(i + 1));
     if (*std::max_element(segment.depth_mm.begin(), segment.depth_mm.end()) <= 0.0)
-        throw FitError(QCoreApplication::translate("nb::fit", "no depth past the contact point"));
+        throw FitError(nb::TrCore::tr("no depth past the contact point"));
 
     StiffnessFit fit;
     fit.samples = n;
@@ -173,7 +174,7 @@ StiffnessFit fitStiffness(const StiffnessSegment& segment)
 StiffnessSummary fitStiffnessRuns(std::span<const StiffnessSegment> segments)
 {
     if (segments.empty())
-        throw FitError(QCoreApplication::translate("nb::fit", "no runs to fit"));
+        throw FitError(nb::TrCore::tr("no runs to fit"));
     StiffnessSummary sum;
     StiffnessSegment all;
     std::vector<double> a1, a2;

@@ -15,192 +15,9 @@
     </message>
 </context>
 <context>
-    <name>analysis</name>
-    <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+70"/>
-        <source>not fitted</source>
-        <translation>nicht gefittet</translation>
-    </message>
-</context>
-<context>
-    <name>cli</name>
-    <message>
-        <location filename="../app/cli_support.cpp" line="+12"/>
-        <source>show this help</source>
-        <translation>diese Hilfe anzeigen</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>missing arguments</source>
-        <translation>fehlende Argumente</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>too many arguments</source>
-        <translation>zu viele Argumente</translation>
-    </message>
-    <message>
-        <location filename="../app/commands.cpp" line="+26"/>
-        <source>print the version</source>
-        <translation>die Version ausgeben</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fit calibration, stiffness or friction models</source>
-        <translation>Kalibrier-, Steifigkeits- oder Reibungsmodelle fitten</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>find contact, punctures and relaxation in a run</source>
-        <translation>Kontakt, Durchstiche und Relaxation in einem Lauf finden</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>list connected DAQs and serial ports</source>
-        <translation>angeschlossene Messkarten und serielle Schnittstellen auflisten</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>record one run on real (or simulated) devices</source>
-        <translation>einen Lauf auf echten (oder simulierten) Geräten aufzeichnen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>export a session as CSV, HDF5 or ELAN files</source>
-        <translation>eine Sitzung als CSV-, HDF5- oder ELAN-Dateien exportieren</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>simulate, label, fit and export a short session</source>
-        <translation>eine kurze Sitzung simulieren, markieren, fitten und exportieren</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>record one run on the simulated rig</source>
-        <translation>einen Lauf auf dem simulierten Versuchsstand aufzeichnen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>index a video: frames, rate, duplicates</source>
-        <translation>ein Video indizieren: Bilder, Rate, Duplikate</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>write one exact video frame as an image</source>
-        <translation>ein exaktes Videobild als Bilddatei schreiben</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>find the video&apos;s offset to a run (motion vs needle speed)</source>
-        <translation>den Versatz eines Videos zu einem Lauf finden (Bewegung gegen Nadelgeschwindigkeit)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>suggest phase and event labels for a run</source>
-        <translation>Phasen- und Ereignis-Labels für einen Lauf vorschlagen</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>Usage: needlebench                 open the workbench (GUI, simulated rig)
-       needlebench COMMAND [options]  run headless
-
-Commands:
-</source>
-        <translation>Aufruf: needlebench                 öffnet die Werkbank (GUI, simulierter Versuchsstand)
-        needlebench BEFEHL [Optionen]  läuft ohne Oberfläche
-
-Befehle:
-</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>
-&apos;needlebench COMMAND --help&apos; describes a command.
-</source>
-        <translation>
-&apos;needlebench BEFEHL --help&apos; beschreibt einen Befehl.
-</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>needlebench: unknown command &apos;%1&apos;
-
-</source>
-        <translation>needlebench: unbekannter Befehl &apos;%1&apos;
-
-</translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_devices.cpp" line="+16"/>
-        <source>print JSON</source>
-        <translation>JSON ausgeben</translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <location line="+7"/>
-        <source>simulated load cell (default)</source>
-        <translation>simulierte Kraftmessdose (Standard)</translation>
-    </message>
-    <message>
-        <location line="-5"/>
-        <location line="+11"/>
-        <source>simulated stage (default)</source>
-        <translation>simulierte Achse (Standard)</translation>
-    </message>
-    <message>
-        <location line="-7"/>
-        <source>DAQs (--daq):
-</source>
-        <translation>Messkarten (--daq):
-</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Stages (--stage):
-</source>
-        <translation>Achsen (--stage):
-</translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_fit.cpp" line="+34"/>
-        <source>warning: %1
-</source>
-        <translation>Warnung: %1
-</translation>
-    </message>
-</context>
-<context>
-    <name>export</name>
-    <message>
-        <location filename="../core/export/csv_text.cpp" line="+31"/>
-        <location line="+2"/>
-        <source>cannot write: %1</source>
-        <translation>kann nicht schreiben: %1</translation>
-    </message>
-</context>
-<context>
-    <name>nb</name>
-    <message>
-        <location filename="../core/session.cpp" line="+185"/>
-        <location line="+4"/>
-        <source>cannot create the folder</source>
-        <translation>Ordner kann nicht angelegt werden</translation>
-    </message>
-    <message>
-        <location line="-2"/>
-        <source>a session already exists here; open it instead</source>
-        <translation>hier gibt es bereits eine Sitzung; öffnen Sie diese stattdessen</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>not a session folder (no %1)</source>
-        <translation>kein Sitzungsordner (kein %1)</translation>
-    </message>
-</context>
-<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+24"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+95"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -1171,7 +988,7 @@ Befehle:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+58"/>
+        <location filename="../app/main_window.cpp" line="+59"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1401,7 +1218,7 @@ Befehle:
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+54"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
@@ -1435,7 +1252,7 @@ Befehle:
         <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
     </message>
     <message>
-        <location line="-298"/>
+        <location line="-293"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1443,7 +1260,7 @@ Befehle:
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+49"/>
+        <location filename="../widgets/review_workspace.cpp" line="+41"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2020,10 +1837,11 @@ Befehle:
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
     <message>
-        <location filename="../app/cmd_events.cpp" line="+39"/>
-        <location filename="../app/cmd_fit.cpp" line="+46"/>
+        <location filename="../app/cmd_devices.cpp" line="+17"/>
+        <location filename="../app/cmd_events.cpp" line="+40"/>
+        <location filename="../app/cmd_fit.cpp" line="+73"/>
         <location line="+49"/>
-        <location line="+127"/>
+        <location line="+122"/>
         <location filename="../app/cmd_sync.cpp" line="+28"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -2031,19 +1849,46 @@ Befehle:
         <translation>JSON ausgeben</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+15"/>
+        <location line="+7"/>
+        <source>simulated load cell (default)</source>
+        <translation>simulierte Kraftmessdose (Standard)</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <location line="+11"/>
+        <source>simulated stage (default)</source>
+        <translation>simulierte Achse (Standard)</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>DAQs (--daq):
+</source>
+        <translation>Messkarten (--daq):
+</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stages (--stage):
+</source>
+        <translation>Achsen (--stage):
+</translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_events.cpp" line="+2"/>
         <source>a constant-velocity insertion run</source>
         <translation>ein Einstichlauf mit konstanter Geschwindigkeit</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location filename="../app/cmd_fit.cpp" line="-209"/>
         <source>warning: %1
 </source>
         <translation>Warnung: %1
 </translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>events of %1 (force zeroed by %2 N, noise %3 N)
 </source>
         <translation>Ereignisse von %1 (Kraft um %2 N genullt, Rauschen %3 N)
@@ -2328,7 +2173,7 @@ Befehle:
         <translation>%1 Läufe aus %2 als %3 exportiert: %4 Dateien</translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="-174"/>
+        <location filename="../app/cmd_fit.cpp" line="+40"/>
         <source>calibration points: columns mass_g, voltage_V</source>
         <translation>Kalibrierpunkte: Spalten mass_g, voltage_V</translation>
     </message>
@@ -2376,7 +2221,7 @@ Befehle:
 </translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+56"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation>Steifigkeit f = a1*x + a2*x^2, x = Tiefe nach dem Kontakt [mm]
@@ -2409,7 +2254,7 @@ Befehle:
 </translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+31"/>
         <source>length of needle in tissue (slab thickness), required</source>
         <translation>Länge der Nadel im Gewebe (Dicke der Gewebescheibe), erforderlich</translation>
     </message>
@@ -2599,7 +2444,7 @@ Befehle:
 </translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+22"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation>%1 Labels vorgeschlagen, nach %2 geschrieben
@@ -2941,6 +2786,112 @@ Befehle:
         <translation>Bild %1 bei %2 s nach %3 geschrieben
 </translation>
     </message>
+    <message>
+        <location filename="../app/cli_support.cpp" line="+13"/>
+        <source>show this help</source>
+        <translation>diese Hilfe anzeigen</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>missing arguments</source>
+        <translation>fehlende Argumente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>too many arguments</source>
+        <translation>zu viele Argumente</translation>
+    </message>
+    <message>
+        <location filename="../app/commands.cpp" line="+27"/>
+        <source>print the version</source>
+        <translation>die Version ausgeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fit calibration, stiffness or friction models</source>
+        <translation>Kalibrier-, Steifigkeits- oder Reibungsmodelle fitten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find contact, punctures and relaxation in a run</source>
+        <translation>Kontakt, Durchstiche und Relaxation in einem Lauf finden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>list connected DAQs and serial ports</source>
+        <translation>angeschlossene Messkarten und serielle Schnittstellen auflisten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>record one run on real (or simulated) devices</source>
+        <translation>einen Lauf auf echten (oder simulierten) Geräten aufzeichnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>export a session as CSV, HDF5 or ELAN files</source>
+        <translation>eine Sitzung als CSV-, HDF5- oder ELAN-Dateien exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulate, label, fit and export a short session</source>
+        <translation>eine kurze Sitzung simulieren, markieren, fitten und exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>record one run on the simulated rig</source>
+        <translation>einen Lauf auf dem simulierten Versuchsstand aufzeichnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>index a video: frames, rate, duplicates</source>
+        <translation>ein Video indizieren: Bilder, Rate, Duplikate</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write one exact video frame as an image</source>
+        <translation>ein exaktes Videobild als Bilddatei schreiben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find the video&apos;s offset to a run (motion vs needle speed)</source>
+        <translation>den Versatz eines Videos zu einem Lauf finden (Bewegung gegen Nadelgeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>suggest phase and event labels for a run</source>
+        <translation>Phasen- und Ereignis-Labels für einen Lauf vorschlagen</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Usage: needlebench                 open the workbench (GUI, simulated rig)
+       needlebench COMMAND [options]  run headless
+
+Commands:
+</source>
+        <translation>Aufruf: needlebench                 öffnet die Werkbank (GUI, simulierter Versuchsstand)
+        needlebench BEFEHL [Optionen]  läuft ohne Oberfläche
+
+Befehle:
+</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>
+&apos;needlebench COMMAND --help&apos; describes a command.
+</source>
+        <translation>
+&apos;needlebench BEFEHL --help&apos; beschreibt einen Befehl.
+</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>needlebench: unknown command &apos;%1&apos;
+
+</source>
+        <translation>needlebench: unbekannter Befehl &apos;%1&apos;
+
+</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
@@ -2980,7 +2931,7 @@ Befehle:
         <translation>Axialkraft, positiv wenn das Gewebe zurückdrückt</translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+31"/>
+        <location filename="../core/export/dataset_loader.cpp" line="+25"/>
         <source>not a folder</source>
         <translation>kein Ordner</translation>
     </message>
@@ -2990,7 +2941,7 @@ Befehle:
         <translation>Ordner existiert nicht</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+23"/>
         <source>%1: skipped, %2</source>
         <translation>%1: übersprungen, %2</translation>
     </message>
@@ -3010,11 +2961,13 @@ Befehle:
         <translation>zum Messwert aktives Label der Spur &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location filename="../core/export/csv_text.cpp" line="+32"/>
+        <location line="+2"/>
+        <location filename="../core/export/run_csv_export.cpp" line="+39"/>
         <location line="+21"/>
         <location line="+9"/>
         <location line="+7"/>
-        <location filename="../core/labels.cpp" line="+110"/>
+        <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
         <location filename="../core/run_file.cpp" line="+288"/>
         <location line="+37"/>
@@ -3255,13 +3208,49 @@ Befehle:
         <translation>die fertige Datei kann nicht an ihren Platz umbenannt werden: %1</translation>
     </message>
     <message>
+        <location filename="../core/calibration.cpp" line="+25"/>
+        <source>calibration needs at least two points, got %1</source>
+        <translation>die Kalibrierung braucht mindestens zwei Punkte, erhalten: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>calibration point %1 is not a finite number</source>
+        <translation>Kalibrierpunkt %1 ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>calibration needs at least two different masses</source>
+        <translation>die Kalibrierung braucht mindestens zwei verschiedene Massen</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <location filename="../core/labels.cpp" line="-61"/>
         <location filename="../core/run_file.cpp" line="-253"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
+        <source>header needs columns mass_g and voltage_V</source>
+        <translation>Kopfzeile braucht die Spalten mass_g und voltage_V</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>expected %1 fields, got %2</source>
+        <translation>%1 Felder erwartet, %2 erhalten</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>mass_g and voltage_V must be numbers</source>
+        <translation>mass_g und voltage_V müssen Zahlen sein</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>empty file (expected a header mass_g,voltage_V)</source>
+        <translation>leere Datei (erwartet: Kopfzeile mass_g,voltage_V)</translation>
+    </message>
+    <message>
+        <location filename="../core/labels.cpp" line="+22"/>
         <source>header has no &apos;%1&apos; column</source>
         <translation>Kopfzeile hat keine Spalte &apos;%1&apos;</translation>
     </message>
@@ -3343,7 +3332,7 @@ Befehle:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="-59"/>
+        <location filename="../core/session.cpp" line="+159"/>
         <source>no header row</source>
         <translation>keine Kopfzeile</translation>
     </message>
@@ -3353,7 +3342,7 @@ Befehle:
         <translation>Schreiben fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-104"/>
+        <location filename="../core/session.cpp" line="-116"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation>ungültiges JSON bei Byte %1: %2</translation>
     </message>
@@ -3404,7 +3393,7 @@ Befehle:
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../core/session.cpp" line="+59"/>
+        <location filename="../core/session.cpp" line="+71"/>
         <source>interrupted</source>
         <translation>unterbrochen</translation>
     </message>
@@ -3434,8 +3423,24 @@ Befehle:
         <translation>Fehler</translation>
     </message>
     <message>
+        <location line="+78"/>
+        <location line="+4"/>
+        <source>cannot create the folder</source>
+        <translation>Ordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>a session already exists here; open it instead</source>
+        <translation>hier gibt es bereits eine Sitzung; öffnen Sie diese stattdessen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a session folder (no %1)</source>
+        <translation>kein Sitzungsordner (kein %1)</translation>
+    </message>
+    <message>
         <location filename="../core/end_reason.cpp" line="+1"/>
-        <location filename="../core/session.cpp" line="+1"/>
+        <location filename="../core/session.cpp" line="-97"/>
         <source>recovered</source>
         <translation>wiederhergestellt</translation>
     </message>
@@ -3443,6 +3448,91 @@ Befehle:
         <location filename="../core/session.cpp" line="+1"/>
         <source>unreadable</source>
         <translation>unlesbar</translation>
+    </message>
+    <message>
+        <location filename="../core/events.cpp" line="+217"/>
+        <source>too few samples before the puncture (%1) to fit the contact</source>
+        <translation>zu wenige Messwerte vor dem Durchstich (%1), um den Kontakt zu fitten</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the needle does not move before the puncture</source>
+        <translation>die Nadel bewegt sich vor dem Durchstich nicht</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>the contact fit failed (degenerate samples)</source>
+        <translation>der Kontaktfit ist fehlgeschlagen (entartete Messwerte)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>too few samples (%1) for event detection</source>
+        <translation>zu wenige Messwerte (%1) für die Ereigniserkennung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>sample %1 is not a finite number</source>
+        <translation>Messwert %1 ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the needle does not move forward</source>
+        <translation>die Nadel bewegt sich nicht vorwärts</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>no puncture: the force never rises from contact and then drops sharply (by %1 N or %2 % of its peak)</source>
+        <translation>kein Durchstich: die Kraft steigt nach dem Kontakt nie an und fällt dann steil ab (um %1 N oder %2 % ihres Maximums)</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>the contact label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation>die Kontakt-Markierung bei %1 s liegt außerhalb des Laufs (%2 bis %3 s)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>the puncture label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation>die Durchstich-Markierung bei %1 s liegt außerhalb des Laufs (%2 bis %3 s)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the puncture (%1 mm) is not past the contact (%2 mm)</source>
+        <translation>der Durchstich (%1 mm) liegt nicht hinter dem Kontakt (%2 mm)</translation>
+    </message>
+    <message>
+        <location filename="../core/insertion_model.cpp" line="+16"/>
+        <source>%1 time stamps for %2 positions</source>
+        <translation>%1 Zeitstempel für %2 Positionen</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>the runs to compare are empty</source>
+        <translation>die zu vergleichenden Läufe sind leer</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the simulated and recorded runs do not overlap in time</source>
+        <translation>simulierter und aufgezeichneter Lauf überlappen zeitlich nicht</translation>
+    </message>
+    <message>
+        <location filename="../core/stiffness_fit.cpp" line="+154"/>
+        <source>too few samples (%1) between contact and puncture</source>
+        <translation>zu wenige Messwerte (%1) zwischen Kontakt und Durchstich</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>stiffness sample %1 is not a finite number</source>
+        <translation>Steifigkeitsmesswert %1 ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no depth past the contact point</source>
+        <translation>keine Tiefe über den Kontaktpunkt hinaus</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>no runs to fit</source>
+        <translation>keine Läufe zum Fitten</translation>
     </message>
 </context>
 <context>
@@ -3484,7 +3574,7 @@ Befehle:
     </message>
     <message>
         <location line="+24"/>
-        <location filename="../devices/sim/simulated_rig.cpp" line="+51"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+52"/>
         <source>simulated load cell</source>
         <translation>simulierte Kraftmessdose</translation>
     </message>
@@ -4097,6 +4187,116 @@ Befehle:
         <source>the run did not finish within %1 minutes</source>
         <translation>die Messung endete nicht innerhalb von %1 Minuten</translation>
     </message>
+    <message>
+        <location filename="../devices/sim/simulated_devices.cpp" line="+18"/>
+        <source>simulated rig (%1, %2 tip, seed %3%4)</source>
+        <translation>simulierter Versuchsstand (%1, %2-Spitze, Startwert %3%4)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, simulated clock</source>
+        <translation>, simulierte Uhr</translation>
+    </message>
+    <message>
+        <location filename="../devices/zaber/zaber_protocol.cpp" line="+96"/>
+        <source>the controller is busy; try again</source>
+        <translation>die Steuerung ist beschäftigt; erneut versuchen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no such axis on this controller</source>
+        <translation>diese Achse gibt es an der Steuerung nicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller does not know this command</source>
+        <translation>die Steuerung kennt diesen Befehl nicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a value is out of range for this stage</source>
+        <translation>ein Wert liegt außerhalb des Bereichs dieser Achse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bad message id</source>
+        <translation>ungültige Nachrichtenkennung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the command must be sent to the whole device</source>
+        <translation>der Befehl muss an das ganze Gerät gesendet werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the motor driver is disabled (enable it; check motor power)</source>
+        <translation>der Motortreiber ist ausgeschaltet (einschalten; Motorversorgung prüfen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller&apos;s buffer is full</source>
+        <translation>der Puffer der Steuerung ist voll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis is in lockstep</source>
+        <translation>die Achse ist im Gleichlauf gekoppelt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>access level too low for this setting</source>
+        <translation>Zugriffsebene für diese Einstellung zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis is parked (unpark it first)</source>
+        <translation>die Achse ist geparkt (zuerst entparken)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller is under remote control</source>
+        <translation>die Steuerung wird ferngesteuert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis is moving</source>
+        <translation>die Achse bewegt sich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis has not been homed</source>
+        <translation>die Achse wurde nicht referenziert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller reports a system error</source>
+        <translation>die Steuerung meldet einen Systemfehler</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>rejected: %1</source>
+        <translation>abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>stalled and stopped (obstruction or overload?)</source>
+        <translation>blockiert und angehalten (Hindernis oder Überlast?)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>limit error</source>
+        <translation>Grenzwertfehler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>encoder error</source>
+        <translation>Encoderfehler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>driver disabled by a fault (over-temperature or power)</source>
+        <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrViews</name>
@@ -4233,6 +4433,11 @@ Befehle:
         <source>split %1</source>
         <translation>%1 teilen</translation>
     </message>
+    <message>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-305"/>
+        <source>not fitted</source>
+        <translation>nicht gefittet</translation>
+    </message>
 </context>
 <context>
     <name>nb::VideoView</name>
@@ -4245,19 +4450,6 @@ Befehle:
         <location line="+58"/>
         <source>frame %1   %2 s</source>
         <translation>Bild %1   %2 s</translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices</name>
-    <message>
-        <location filename="../devices/sim/simulated_devices.cpp" line="+17"/>
-        <source>simulated rig (%1, %2 tip, seed %3%4)</source>
-        <translation>simulierter Versuchsstand (%1, %2-Spitze, Startwert %3%4)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>, simulated clock</source>
-        <translation>, simulierte Uhr</translation>
     </message>
 </context>
 <context>
@@ -4475,98 +4667,12 @@ Befehle:
 <context>
     <name>nb::fit</name>
     <message>
-        <location filename="../core/calibration.cpp" line="+24"/>
-        <source>calibration needs at least two points, got %1</source>
-        <translation>die Kalibrierung braucht mindestens zwei Punkte, erhalten: %1</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>calibration point %1 is not a finite number</source>
-        <translation>Kalibrierpunkt %1 ist keine endliche Zahl</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>calibration needs at least two different masses</source>
-        <translation>die Kalibrierung braucht mindestens zwei verschiedene Massen</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>cannot open: %1</source>
-        <translation>kann nicht geöffnet werden: %1</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>header needs columns mass_g and voltage_V</source>
-        <translation>Kopfzeile braucht die Spalten mass_g und voltage_V</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>expected %1 fields, got %2</source>
-        <translation>%1 Felder erwartet, %2 erhalten</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>mass_g and voltage_V must be numbers</source>
-        <translation>mass_g und voltage_V müssen Zahlen sein</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>empty file (expected a header mass_g,voltage_V)</source>
-        <translation>leere Datei (erwartet: Kopfzeile mass_g,voltage_V)</translation>
-    </message>
-    <message>
-        <location filename="../core/events.cpp" line="+216"/>
-        <source>too few samples before the puncture (%1) to fit the contact</source>
-        <translation>zu wenige Messwerte vor dem Durchstich (%1), um den Kontakt zu fitten</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the needle does not move before the puncture</source>
-        <translation>die Nadel bewegt sich vor dem Durchstich nicht</translation>
-    </message>
-    <message>
-        <location line="+44"/>
-        <source>the contact fit failed (degenerate samples)</source>
-        <translation>der Kontaktfit ist fehlgeschlagen (entartete Messwerte)</translation>
-    </message>
-    <message>
-        <location line="+19"/>
-        <source>too few samples (%1) for event detection</source>
-        <translation>zu wenige Messwerte (%1) für die Ereigniserkennung</translation>
-    </message>
-    <message>
-        <location line="+3"/>
         <location filename="../core/friction_fit.cpp" line="+64"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>the needle does not move forward</source>
-        <translation>die Nadel bewegt sich nicht vorwärts</translation>
-    </message>
-    <message>
-        <location line="+53"/>
-        <source>no puncture: the force never rises from contact and then drops sharply (by %1 N or %2 % of its peak)</source>
-        <translation>kein Durchstich: die Kraft steigt nach dem Kontakt nie an und fällt dann steil ab (um %1 N oder %2 % ihres Maximums)</translation>
-    </message>
-    <message>
-        <location line="+68"/>
-        <source>the contact label at %1 s is outside the run (%2 to %3 s)</source>
-        <translation>die Kontakt-Markierung bei %1 s liegt außerhalb des Laufs (%2 bis %3 s)</translation>
-    </message>
-    <message>
-        <location line="+31"/>
-        <source>the puncture label at %1 s is outside the run (%2 to %3 s)</source>
-        <translation>die Durchstich-Markierung bei %1 s liegt außerhalb des Laufs (%2 bis %3 s)</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>the puncture (%1 mm) is not past the contact (%2 mm)</source>
-        <translation>der Durchstich (%1 mm) liegt nicht hinter dem Kontakt (%2 mm)</translation>
-    </message>
-    <message>
-        <location filename="../core/friction_fit.cpp" line="-8"/>
+        <location line="-8"/>
         <source>the tissue thickness must be positive, got %1 mm</source>
         <translation>die Gewebedicke muss positiv sein, erhalten: %1 mm</translation>
     </message>
@@ -4605,41 +4711,6 @@ Befehle:
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
-    <message>
-        <location filename="../core/insertion_model.cpp" line="+15"/>
-        <source>%1 time stamps for %2 positions</source>
-        <translation>%1 Zeitstempel für %2 Positionen</translation>
-    </message>
-    <message>
-        <location line="+36"/>
-        <source>the runs to compare are empty</source>
-        <translation>die zu vergleichenden Läufe sind leer</translation>
-    </message>
-    <message>
-        <location line="+19"/>
-        <source>the simulated and recorded runs do not overlap in time</source>
-        <translation>simulierter und aufgezeichneter Lauf überlappen zeitlich nicht</translation>
-    </message>
-    <message>
-        <location filename="../core/stiffness_fit.cpp" line="+153"/>
-        <source>too few samples (%1) between contact and puncture</source>
-        <translation>zu wenige Messwerte (%1) zwischen Kontakt und Durchstich</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>stiffness sample %1 is not a finite number</source>
-        <translation>Steifigkeitsmesswert %1 ist keine endliche Zahl</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>no depth past the contact point</source>
-        <translation>keine Tiefe über den Kontaktpunkt hinaus</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>no runs to fit</source>
-        <translation>keine Läufe zum Fitten</translation>
-    </message>
 </context>
 <context>
     <name>video</name>
@@ -4647,109 +4718,6 @@ Befehle:
         <location filename="../devices/video/video_error.cpp" line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
-    </message>
-</context>
-<context>
-    <name>zaber</name>
-    <message>
-        <location filename="../devices/zaber/zaber_protocol.cpp" line="+95"/>
-        <source>the controller is busy; try again</source>
-        <translation>die Steuerung ist beschäftigt; erneut versuchen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>no such axis on this controller</source>
-        <translation>diese Achse gibt es an der Steuerung nicht</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller does not know this command</source>
-        <translation>die Steuerung kennt diesen Befehl nicht</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>a value is out of range for this stage</source>
-        <translation>ein Wert liegt außerhalb des Bereichs dieser Achse</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>bad message id</source>
-        <translation>ungültige Nachrichtenkennung</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the command must be sent to the whole device</source>
-        <translation>der Befehl muss an das ganze Gerät gesendet werden</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the motor driver is disabled (enable it; check motor power)</source>
-        <translation>der Motortreiber ist ausgeschaltet (einschalten; Motorversorgung prüfen)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller&apos;s buffer is full</source>
-        <translation>der Puffer der Steuerung ist voll</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis is in lockstep</source>
-        <translation>die Achse ist im Gleichlauf gekoppelt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>access level too low for this setting</source>
-        <translation>Zugriffsebene für diese Einstellung zu niedrig</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis is parked (unpark it first)</source>
-        <translation>die Achse ist geparkt (zuerst entparken)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller is under remote control</source>
-        <translation>die Steuerung wird ferngesteuert</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis is moving</source>
-        <translation>die Achse bewegt sich</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis has not been homed</source>
-        <translation>die Achse wurde nicht referenziert</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller reports a system error</source>
-        <translation>die Steuerung meldet einen Systemfehler</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>rejected: %1</source>
-        <translation>abgelehnt: %1</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>stalled and stopped (obstruction or overload?)</source>
-        <translation>blockiert und angehalten (Hindernis oder Überlast?)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>limit error</source>
-        <translation>Grenzwertfehler</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>encoder error</source>
-        <translation>Encoderfehler</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>driver disabled by a fault (over-temperature or power)</source>
-        <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
 </context>
 </TS>

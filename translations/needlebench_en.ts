@@ -15,181 +15,9 @@
     </message>
 </context>
 <context>
-    <name>analysis</name>
-    <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+70"/>
-        <source>not fitted</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>cli</name>
-    <message>
-        <location filename="../app/cli_support.cpp" line="+12"/>
-        <source>show this help</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>missing arguments</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>too many arguments</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/commands.cpp" line="+26"/>
-        <source>print the version</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fit calibration, stiffness or friction models</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>find contact, punctures and relaxation in a run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>list connected DAQs and serial ports</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>record one run on real (or simulated) devices</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>export a session as CSV, HDF5 or ELAN files</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>simulate, label, fit and export a short session</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>record one run on the simulated rig</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>index a video: frames, rate, duplicates</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>write one exact video frame as an image</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>find the video&apos;s offset to a run (motion vs needle speed)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>suggest phase and event labels for a run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>Usage: needlebench                 open the workbench (GUI, simulated rig)
-       needlebench COMMAND [options]  run headless
-
-Commands:
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>
-&apos;needlebench COMMAND --help&apos; describes a command.
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>needlebench: unknown command &apos;%1&apos;
-
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_devices.cpp" line="+16"/>
-        <source>print JSON</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <location line="+7"/>
-        <source>simulated load cell (default)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-5"/>
-        <location line="+11"/>
-        <source>simulated stage (default)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-7"/>
-        <source>DAQs (--daq):
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Stages (--stage):
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_fit.cpp" line="+34"/>
-        <source>warning: %1
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>export</name>
-    <message>
-        <location filename="../core/export/csv_text.cpp" line="+31"/>
-        <location line="+2"/>
-        <source>cannot write: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb</name>
-    <message>
-        <location filename="../core/session.cpp" line="+185"/>
-        <location line="+4"/>
-        <source>cannot create the folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-2"/>
-        <source>a session already exists here; open it instead</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>not a session folder (no %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+24"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+95"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1159,7 +987,7 @@ Commands:
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+58"/>
+        <location filename="../app/main_window.cpp" line="+59"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1388,7 +1216,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+54"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1422,7 +1250,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-298"/>
+        <location line="-293"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1430,7 +1258,7 @@ Commands:
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+49"/>
+        <location filename="../widgets/review_workspace.cpp" line="+41"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2007,10 +1835,11 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_events.cpp" line="+39"/>
-        <location filename="../app/cmd_fit.cpp" line="+46"/>
+        <location filename="../app/cmd_devices.cpp" line="+17"/>
+        <location filename="../app/cmd_events.cpp" line="+40"/>
+        <location filename="../app/cmd_fit.cpp" line="+73"/>
         <location line="+49"/>
-        <location line="+127"/>
+        <location line="+122"/>
         <location filename="../app/cmd_sync.cpp" line="+28"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -2018,18 +1847,43 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+15"/>
+        <location line="+7"/>
+        <source>simulated load cell (default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <location line="+11"/>
+        <source>simulated stage (default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>DAQs (--daq):
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stages (--stage):
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_events.cpp" line="+2"/>
         <source>a constant-velocity insertion run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+9"/>
+        <location filename="../app/cmd_fit.cpp" line="-209"/>
         <source>warning: %1
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>events of %1 (force zeroed by %2 N, noise %3 N)
 </source>
         <translation type="unfinished"></translation>
@@ -2311,7 +2165,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="-174"/>
+        <location filename="../app/cmd_fit.cpp" line="+40"/>
         <source>calibration points: columns mass_g, voltage_V</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2355,7 +2209,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+56"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation type="unfinished"></translation>
@@ -2384,7 +2238,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+31"/>
         <source>length of needle in tissue (slab thickness), required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2561,7 +2415,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+22"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation type="unfinished"></translation>
@@ -2882,6 +2736,104 @@ Commands:
 </source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../app/cli_support.cpp" line="+13"/>
+        <source>show this help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>missing arguments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>too many arguments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands.cpp" line="+27"/>
+        <source>print the version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fit calibration, stiffness or friction models</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find contact, punctures and relaxation in a run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>list connected DAQs and serial ports</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>record one run on real (or simulated) devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>export a session as CSV, HDF5 or ELAN files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulate, label, fit and export a short session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>record one run on the simulated rig</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>index a video: frames, rate, duplicates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write one exact video frame as an image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find the video&apos;s offset to a run (motion vs needle speed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>suggest phase and event labels for a run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Usage: needlebench                 open the workbench (GUI, simulated rig)
+       needlebench COMMAND [options]  run headless
+
+Commands:
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>
+&apos;needlebench COMMAND --help&apos; describes a command.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>needlebench: unknown command &apos;%1&apos;
+
+</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
@@ -2921,7 +2873,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+31"/>
+        <location filename="../core/export/dataset_loader.cpp" line="+25"/>
         <source>not a folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2931,7 +2883,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+23"/>
         <source>%1: skipped, %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2951,11 +2903,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location filename="../core/export/csv_text.cpp" line="+32"/>
+        <location line="+2"/>
+        <location filename="../core/export/run_csv_export.cpp" line="+39"/>
         <location line="+21"/>
         <location line="+9"/>
         <location line="+7"/>
-        <location filename="../core/labels.cpp" line="+110"/>
+        <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
         <location filename="../core/run_file.cpp" line="+288"/>
         <location line="+37"/>
@@ -3196,13 +3150,49 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../core/calibration.cpp" line="+25"/>
+        <source>calibration needs at least two points, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>calibration point %1 is not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>calibration needs at least two different masses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <location filename="../core/labels.cpp" line="-61"/>
         <location filename="../core/run_file.cpp" line="-253"/>
         <source>cannot open: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
+        <source>header needs columns mass_g and voltage_V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>expected %1 fields, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>mass_g and voltage_V must be numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>empty file (expected a header mass_g,voltage_V)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/labels.cpp" line="+22"/>
         <source>header has no &apos;%1&apos; column</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3284,7 +3274,7 @@ Commands:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="-59"/>
+        <location filename="../core/session.cpp" line="+159"/>
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3294,7 +3284,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-104"/>
+        <location filename="../core/session.cpp" line="-116"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3345,7 +3335,7 @@ Commands:
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../core/session.cpp" line="+59"/>
+        <location filename="../core/session.cpp" line="+71"/>
         <source>interrupted</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3375,14 +3365,115 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+78"/>
+        <location line="+4"/>
+        <source>cannot create the folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>a session already exists here; open it instead</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a session folder (no %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../core/end_reason.cpp" line="+1"/>
-        <location filename="../core/session.cpp" line="+1"/>
+        <location filename="../core/session.cpp" line="-97"/>
         <source>recovered</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../core/session.cpp" line="+1"/>
         <source>unreadable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/events.cpp" line="+217"/>
+        <source>too few samples before the puncture (%1) to fit the contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the needle does not move before the puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>the contact fit failed (degenerate samples)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>too few samples (%1) for event detection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>sample %1 is not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the needle does not move forward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>no puncture: the force never rises from contact and then drops sharply (by %1 N or %2 % of its peak)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>the contact label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>the puncture label at %1 s is outside the run (%2 to %3 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the puncture (%1 mm) is not past the contact (%2 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/insertion_model.cpp" line="+16"/>
+        <source>%1 time stamps for %2 positions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>the runs to compare are empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the simulated and recorded runs do not overlap in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/stiffness_fit.cpp" line="+154"/>
+        <source>too few samples (%1) between contact and puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>stiffness sample %1 is not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no depth past the contact point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>no runs to fit</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3425,7 +3516,7 @@ Commands:
     </message>
     <message>
         <location line="+24"/>
-        <location filename="../devices/sim/simulated_rig.cpp" line="+51"/>
+        <location filename="../devices/sim/simulated_rig.cpp" line="+52"/>
         <source>simulated load cell</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4038,6 +4129,116 @@ Commands:
         <source>the run did not finish within %1 minutes</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../devices/sim/simulated_devices.cpp" line="+18"/>
+        <source>simulated rig (%1, %2 tip, seed %3%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, simulated clock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../devices/zaber/zaber_protocol.cpp" line="+96"/>
+        <source>the controller is busy; try again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no such axis on this controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller does not know this command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a value is out of range for this stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bad message id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the command must be sent to the whole device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the motor driver is disabled (enable it; check motor power)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller&apos;s buffer is full</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis is in lockstep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>access level too low for this setting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis is parked (unpark it first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller is under remote control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis is moving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the axis has not been homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controller reports a system error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>rejected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>stalled and stopped (obstruction or overload?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>limit error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>encoder error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>driver disabled by a fault (over-temperature or power)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrViews</name>
@@ -4174,6 +4375,11 @@ Commands:
         <source>split %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-305"/>
+        <source>not fitted</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::VideoView</name>
@@ -4185,19 +4391,6 @@ Commands:
     <message>
         <location line="+58"/>
         <source>frame %1   %2 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices</name>
-    <message>
-        <location filename="../devices/sim/simulated_devices.cpp" line="+17"/>
-        <source>simulated rig (%1, %2 tip, seed %3%4)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>, simulated clock</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4416,98 +4609,12 @@ Commands:
 <context>
     <name>nb::fit</name>
     <message>
-        <location filename="../core/calibration.cpp" line="+24"/>
-        <source>calibration needs at least two points, got %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>calibration point %1 is not a finite number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>calibration needs at least two different masses</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>cannot open: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>header needs columns mass_g and voltage_V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>expected %1 fields, got %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>mass_g and voltage_V must be numbers</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>empty file (expected a header mass_g,voltage_V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/events.cpp" line="+216"/>
-        <source>too few samples before the puncture (%1) to fit the contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the needle does not move before the puncture</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+44"/>
-        <source>the contact fit failed (degenerate samples)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+19"/>
-        <source>too few samples (%1) for event detection</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
         <location filename="../core/friction_fit.cpp" line="+64"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>the needle does not move forward</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+53"/>
-        <source>no puncture: the force never rises from contact and then drops sharply (by %1 N or %2 % of its peak)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+68"/>
-        <source>the contact label at %1 s is outside the run (%2 to %3 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+31"/>
-        <source>the puncture label at %1 s is outside the run (%2 to %3 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>the puncture (%1 mm) is not past the contact (%2 mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/friction_fit.cpp" line="-8"/>
+        <location line="-8"/>
         <source>the tissue thickness must be positive, got %1 mm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4546,150 +4653,12 @@ Commands:
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <location filename="../core/insertion_model.cpp" line="+15"/>
-        <source>%1 time stamps for %2 positions</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+36"/>
-        <source>the runs to compare are empty</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+19"/>
-        <source>the simulated and recorded runs do not overlap in time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../core/stiffness_fit.cpp" line="+153"/>
-        <source>too few samples (%1) between contact and puncture</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>stiffness sample %1 is not a finite number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>no depth past the contact point</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>no runs to fit</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>video</name>
     <message>
         <location filename="../devices/video/video_error.cpp" line="+9"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>zaber</name>
-    <message>
-        <location filename="../devices/zaber/zaber_protocol.cpp" line="+95"/>
-        <source>the controller is busy; try again</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>no such axis on this controller</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller does not know this command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>a value is out of range for this stage</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>bad message id</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the command must be sent to the whole device</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the motor driver is disabled (enable it; check motor power)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller&apos;s buffer is full</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis is in lockstep</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>access level too low for this setting</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis is parked (unpark it first)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller is under remote control</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis is moving</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the axis has not been homed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the controller reports a system error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>rejected: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>stalled and stopped (obstruction or overload?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>limit error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>encoder error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>driver disabled by a fault (over-temperature or power)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -32,14 +32,6 @@
 
 namespace nb {
 
-static QString labelsPathFor(const QString& runPath)
-{
-    QString p = runPath;
-    if (p.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
-        p.chop(4);
-    return p + QStringLiteral(".labels.csv");
-}
-
 ReviewWorkspace::ReviewWorkspace(QWidget* parent)
     : QWidget(parent), model_(new LabelModel(this)), undo_(new QUndoStack(this)), decoder_(new devices::VideoDecoder(this))
 {

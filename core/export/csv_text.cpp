@@ -1,4 +1,5 @@
 #include "csv_text.h"
+#include "core/tr.h"
 
 #include "export_error.h"
 
@@ -28,9 +29,9 @@ void writeFileAtomically(const QString& path, const QByteArray& bytes)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        throw ExportError(path, QCoreApplication::translate("export", "cannot write: %1").arg(file.errorString()));
+        throw ExportError(path, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
     if (file.write(bytes) != bytes.size() || !file.commit())
-        throw ExportError(path, QCoreApplication::translate("export", "cannot write: %1").arg(file.errorString()));
+        throw ExportError(path, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
 }
 
 }  // namespace nb

@@ -18,12 +18,6 @@ bool isLabelsFile(const QString& fileName) { return fileName.endsWith(QLatin1Str
 
 }  // namespace
 
-QString labelsPathFor(const QString& runPath)
-{
-    const QFileInfo fi(runPath);
-    return fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".labels.csv"));
-}
-
 LoadedDataset loadDataset(const QString& dirPath)
 {
     const QFileInfo info(dirPath);
@@ -39,12 +33,9 @@ LoadedDataset loadDataset(const QString& dirPath)
         try {
             const Session s = Session::open(dirPath);
             const SessionInfo& si = s.info();
-            d.metadata.set(QStringLiteral("organ"), si.organ);
-            d.metadata.set(QStringLiteral("specimen"), si.specimen);
-            d.metadata.set(QStringLiteral("tip"), si.tip);
-            d.metadata.set(QStringLiteral("thickness_mm"), si.thickness_mm);
-            d.metadata.set(QStringLiteral("operator"), si.operatorName);
-            d.metadata.set(QStringLiteral("protocol"), si.protocol);
+            const Metadata sm = sessionMetadata(si);
+            for (const auto& [k, v] : sm.entries())
+                d.metadata.set(k, v);
             d.metadata.set(QStringLiteral("notes"), si.notes);
             d.metadata.set(QStringLiteral("created"), si.created.toString(Qt::ISODate));
             if (const auto cal = s.activeCalibration()) {

@@ -14,8 +14,6 @@ struct LoadedDataset {
     QStringList warnings;  // one line per skipped file or ignored problem, naming the file
 };
 
-// The labels file that belongs to a run file (`x/run_001.csv` -> `x/run_001.labels.csv`).
-QString labelsPathFor(const QString& runPath);
 
 // Runs in file-name order. A file that is not a run (or cannot be read) is skipped with a
 // warning; an unreadable labels file too (the run is kept, without labels). Throws

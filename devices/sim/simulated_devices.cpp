@@ -1,4 +1,5 @@
 #include "devices/sim/simulated_rig.h"
+#include "core/tr.h"
 
 #include <QCoreApplication>
 
@@ -14,10 +15,10 @@ DeviceSet simulatedDeviceSet(const std::shared_ptr<SimulatedRig>& rig)
     set.selfPacedClock = !rig->config().realtime;
     const RigConfig& config = rig->config();
     set.nominalSlope_V_per_g = config.sensor.slope_V_per_g();
-    set.description = QCoreApplication::translate("nb::devices", "simulated rig (%1, %2 tip, seed %3%4)")
+    set.description = nb::TrDevices::tr("simulated rig (%1, %2 tip, seed %3%4)")
                           .arg(config.tissue, tipName(config.tip))
                           .arg(config.seed)
-                          .arg(config.realtime ? QString() : QCoreApplication::translate("nb::devices", ", simulated clock"));
+                          .arg(config.realtime ? QString() : nb::TrDevices::tr(", simulated clock"));
     return set;
 }
 

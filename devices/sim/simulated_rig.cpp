@@ -2,6 +2,7 @@
 #include "core/tr.h"
 
 #include "devices/device_error.h"
+#include "core/model_json.h"
 #include "devices/sim/capsule_design.h"
 #include "devices/sim/rig_world.h"
 
@@ -381,12 +382,7 @@ QJsonObject SimulatedRig::truthJson() const
     };
     const KarnoppPerLength& f = tissue_.friction;
     model.insert(QStringLiteral("friction_per_length"),
-                 QJsonObject{{QStringLiteral("Cp_N_per_m"), f.Cp_N_per_m},
-                             {QStringLiteral("Cn_N_per_m"), f.Cn_N_per_m},
-                             {QStringLiteral("bp_Ns_per_m2"), f.bp_Ns_per_m2},
-                             {QStringLiteral("bn_Ns_per_m2"), f.bn_Ns_per_m2},
-                             {QStringLiteral("Dp_N_per_m"), f.Dp_N_per_m},
-                             {QStringLiteral("Dn_N_per_m"), f.Dn_N_per_m}});
+                 toJson(f));
     if (config_.boneDepth_mm)
         model.insert(QStringLiteral("bone_depth_mm"), *config_.boneDepth_mm);
     if (tissue_.capsule)

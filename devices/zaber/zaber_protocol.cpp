@@ -1,4 +1,5 @@
 #include "zaber_protocol.h"
+#include "core/tr.h"
 
 #include <QCoreApplication>
 #include <QList>
@@ -92,38 +93,38 @@ QString rejectionText(const QByteArray& reason)
         const char* text;
     };
     static const Entry table[] = {
-        {"AGAIN", QT_TRANSLATE_NOOP("zaber", "the controller is busy; try again")},
-        {"BADAXIS", QT_TRANSLATE_NOOP("zaber", "no such axis on this controller")},
-        {"BADCOMMAND", QT_TRANSLATE_NOOP("zaber", "the controller does not know this command")},
-        {"BADDATA", QT_TRANSLATE_NOOP("zaber", "a value is out of range for this stage")},
-        {"BADMESSAGEID", QT_TRANSLATE_NOOP("zaber", "bad message id")},
-        {"DEVICEONLY", QT_TRANSLATE_NOOP("zaber", "the command must be sent to the whole device")},
-        {"DRIVERDISABLED", QT_TRANSLATE_NOOP("zaber", "the motor driver is disabled (enable it; check motor power)")},
-        {"FULL", QT_TRANSLATE_NOOP("zaber", "the controller's buffer is full")},
-        {"LOCKSTEP", QT_TRANSLATE_NOOP("zaber", "the axis is in lockstep")},
-        {"NOACCESS", QT_TRANSLATE_NOOP("zaber", "access level too low for this setting")},
-        {"PARKED", QT_TRANSLATE_NOOP("zaber", "the axis is parked (unpark it first)")},
-        {"REMOTE", QT_TRANSLATE_NOOP("zaber", "the controller is under remote control")},
-        {"STATUSBUSY", QT_TRANSLATE_NOOP("zaber", "the axis is moving")},
-        {"NOTHOMED", QT_TRANSLATE_NOOP("zaber", "the axis has not been homed")},
-        {"SYSTEMERROR", QT_TRANSLATE_NOOP("zaber", "the controller reports a system error")},
+        {"AGAIN", QT_TRANSLATE_NOOP("nb::TrDevices", "the controller is busy; try again")},
+        {"BADAXIS", QT_TRANSLATE_NOOP("nb::TrDevices", "no such axis on this controller")},
+        {"BADCOMMAND", QT_TRANSLATE_NOOP("nb::TrDevices", "the controller does not know this command")},
+        {"BADDATA", QT_TRANSLATE_NOOP("nb::TrDevices", "a value is out of range for this stage")},
+        {"BADMESSAGEID", QT_TRANSLATE_NOOP("nb::TrDevices", "bad message id")},
+        {"DEVICEONLY", QT_TRANSLATE_NOOP("nb::TrDevices", "the command must be sent to the whole device")},
+        {"DRIVERDISABLED", QT_TRANSLATE_NOOP("nb::TrDevices", "the motor driver is disabled (enable it; check motor power)")},
+        {"FULL", QT_TRANSLATE_NOOP("nb::TrDevices", "the controller's buffer is full")},
+        {"LOCKSTEP", QT_TRANSLATE_NOOP("nb::TrDevices", "the axis is in lockstep")},
+        {"NOACCESS", QT_TRANSLATE_NOOP("nb::TrDevices", "access level too low for this setting")},
+        {"PARKED", QT_TRANSLATE_NOOP("nb::TrDevices", "the axis is parked (unpark it first)")},
+        {"REMOTE", QT_TRANSLATE_NOOP("nb::TrDevices", "the controller is under remote control")},
+        {"STATUSBUSY", QT_TRANSLATE_NOOP("nb::TrDevices", "the axis is moving")},
+        {"NOTHOMED", QT_TRANSLATE_NOOP("nb::TrDevices", "the axis has not been homed")},
+        {"SYSTEMERROR", QT_TRANSLATE_NOOP("nb::TrDevices", "the controller reports a system error")},
     };
     for (const Entry& e : table)
         if (reason == e.code)
-            return QCoreApplication::translate("zaber", e.text);
-    return QCoreApplication::translate("zaber", "rejected: %1").arg(QString::fromLatin1(reason));
+            return nb::TrDevices::tr(e.text);
+    return nb::TrDevices::tr("rejected: %1").arg(QString::fromLatin1(reason));
 }
 
 QString faultText(const QByteArray& w)
 {
     if (w == "FS")
-        return QCoreApplication::translate("zaber", "stalled and stopped (obstruction or overload?)");
+        return nb::TrDevices::tr("stalled and stopped (obstruction or overload?)");
     if (w == "FE")
-        return QCoreApplication::translate("zaber", "limit error");
+        return nb::TrDevices::tr("limit error");
     if (w == "FQ")
-        return QCoreApplication::translate("zaber", "encoder error");
+        return nb::TrDevices::tr("encoder error");
     if (w == "FD")
-        return QCoreApplication::translate("zaber", "driver disabled by a fault (over-temperature or power)");
+        return nb::TrDevices::tr("driver disabled by a fault (over-temperature or power)");
     return {};
 }
 

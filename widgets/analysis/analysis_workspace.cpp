@@ -1,4 +1,5 @@
 #include "analysis_workspace.h"
+#include "core/tr.h"
 
 #include "analysis_plots.h"
 #include "figure_export.h"
@@ -67,7 +68,7 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
                     item->setText(*s);
                     // Outliers and failed fits stand out; other text columns are just text.
                     if ((t.columns[c].key == QLatin1String("outlier") && !s->isEmpty()) ||
-                        *s == QCoreApplication::translate("analysis", "not fitted"))
+                        *s == nb::TrViews::tr("not fitted"))
                         flagged = true;
                 } else {
                     const double v = std::get<double>(row[c]);
