@@ -19,6 +19,7 @@ int cmdVideoInfo(const QStringList& args, Io io);
 int cmdFrame(const QStringList& args, Io io);
 int cmdSync(const QStringList& args, Io io);
 int cmdLabels(const QStringList& args, Io io);
+int cmdPlan(const QStringList& args, Io io);
 
 const std::vector<Command>& commands()
 {
@@ -35,6 +36,7 @@ const std::vector<Command>& commands()
         {QStringLiteral("frame"), QCoreApplication::translate("cli", "write one exact video frame as an image"), cmdFrame},
         {QStringLiteral("sync"), QCoreApplication::translate("cli", "find the video's offset to a run (motion vs needle speed)"), cmdSync},
         {QStringLiteral("labels"), QCoreApplication::translate("cli", "suggest phase and event labels for a run"), cmdLabels},
+        {QStringLiteral("plan"), QCoreApplication::translate("cli", "experiment plans: templates, new, run (resumes), report by factor"), cmdPlan},
     };
     return all;
 }
