@@ -553,7 +553,8 @@ QJsonObject planToJson(const Plan& plan)
                        {QStringLiteral("status"), planRunStatusName(r.status)}};
         if (!r.settings.isEmpty())
             ro.insert(QStringLiteral("settings"), r.settings);
-        ro.insert(QStringLiteral("instruction"), r.instruction);
+        if (!r.instruction.isEmpty())
+            ro.insert(QStringLiteral("instruction"), r.instruction);
         if (!r.reason.isEmpty())
             ro.insert(QStringLiteral("reason"), r.reason);
         QJsonArray attempts;
@@ -757,6 +758,109 @@ Plan planFromJson(const QJsonObject& object, const QString& file)
     return plan;
 }
 
+namespace {
+
+// plan.json is meant to be read and edited by a person: keys in a sensible order (not
+// QJsonObject's alphabetical one) and short flat objects and lists on one line.
+int keyRank(const QString& key)
+{
+    static const QStringList order{
+        QStringLiteral("format"),   QStringLiteral("version"),     QStringLiteral("number"),   QStringLiteral("name"),     QStringLiteral("template"),
+        QStringLiteral("description"), QStringLiteral("order"),    QStringLiteral("seed"),     QStringLiteral("defaults"),
+        QStringLiteral("factors"),  QStringLiteral("levels"),      QStringLiteral("operator"), QStringLiteral("runs"),
+        QStringLiteral("status"),      QStringLiteral("reason"),   QStringLiteral("settings"),
+        QStringLiteral("instruction"), QStringLiteral("attempts"), QStringLiteral("run_file"), QStringLiteral("video_file"),
+        QStringLiteral("result"),   QStringLiteral("discarded"),   QStringLiteral("started"),  QStringLiteral("ended")};
+    const qsizetype i = order.indexOf(key);
+    return i < 0 ? int(order.size()) : int(i);
+}
+
+QStringList orderedKeys(const QJsonObject& o)
+{
+    QStringList keys = o.keys();
+    std::stable_sort(keys.begin(), keys.end(), [](const QString& a, const QString& b) { return keyRank(a) < keyRank(b); });
+    return keys;
+}
+
+QByteArray scalarJson(const QJsonValue& v)
+{
+    const QByteArray a = QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact);
+    return a.mid(1, a.size() - 2);
+}
+
+bool isFlat(const QJsonValue& v)
+{
+    if (v.isArray()) {
+        const QJsonArray a = v.toArray();
+        return std::all_of(a.begin(), a.end(), [](const QJsonValue& x) { return !x.isArray() && !x.isObject(); });
+    }
+    if (v.isObject()) {
+        const QJsonObject o = v.toObject();
+        return std::all_of(o.begin(), o.end(), [](const QJsonValue& x) { return !x.isArray() && !x.isObject(); });
+    }
+    return true;
+}
+
+QByteArray inlineJson(const QJsonValue& v)
+{
+    if (v.isArray()) {
+        QByteArrayList parts;
+        for (const QJsonValue& x : v.toArray())
+            parts << inlineJson(x);
+        return '[' + parts.join(", ") + ']';
+    }
+    if (v.isObject()) {
+        const QJsonObject o = v.toObject();
+        QByteArrayList parts;
+        for (const QString& k : orderedKeys(o))
+            parts << scalarJson(k) + ": " + inlineJson(o.value(k));
+        return '{' + parts.join(", ") + '}';
+    }
+    return scalarJson(v);
+}
+
+void writeJson(QByteArray& out, const QJsonValue& v, int indent)
+{
+    // Flat and short (or an object whose values are all flat and short): one line.
+    if (isFlat(v) || (v.isObject() && std::all_of(v.toObject().begin(), v.toObject().end(), [](const QJsonValue& x) { return isFlat(x); }))) {
+        const QByteArray one = inlineJson(v);
+        if (one.size() + indent <= 110) {
+            out += one;
+            return;
+        }
+    }
+    const QByteArray pad(indent + 2, ' ');
+    if (v.isArray()) {
+        const QJsonArray a = v.toArray();
+        out += "[\n";
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            out += pad;
+            writeJson(out, a[i], indent + 2);
+            out += i + 1 < a.size() ? ",\n" : "\n";
+        }
+        out += QByteArray(indent, ' ') + ']';
+        return;
+    }
+    const QJsonObject o = v.toObject();
+    const QStringList keys = orderedKeys(o);
+    out += "{\n";
+    for (qsizetype i = 0; i < keys.size(); ++i) {
+        out += pad + scalarJson(keys[i]) + ": ";
+        writeJson(out, o.value(keys[i]), indent + 2);
+        out += i + 1 < keys.size() ? ",\n" : "\n";
+    }
+    out += QByteArray(indent, ' ') + '}';
+}
+
+}  // namespace
+
+QByteArray planJsonText(const Plan& plan)
+{
+    QByteArray out;
+    writeJson(out, planToJson(plan), 0);
+    return out + '\n';
+}
+
 Plan readPlanFile(const QString& path)
 {
     QFile f(path);
@@ -777,7 +881,7 @@ Plan readPlanFile(const QString& path)
 void writePlanFile(const QString& path, const Plan& plan)
 {
     QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(QJsonDocument(planToJson(plan)).toJson(QJsonDocument::Indented)) < 0 || !f.commit())
+    if (!f.open(QIODevice::WriteOnly) || f.write(planJsonText(plan)) < 0 || !f.commit())
         throw PlanError(path, {}, nb::TrCore::tr("cannot write: %1").arg(f.errorString()));
 }
 

@@ -157,6 +157,8 @@ void skipRun(Plan& plan, int index, const QString& reason);
 void redoRun(Plan& plan, int index, const QString& reason);
 
 QJsonObject planToJson(const Plan& plan);
+// The file's text: planToJson with keys in a reading order and short parts on one line.
+QByteArray planJsonText(const Plan& plan);
 // Throws PlanError naming `fileForMessages` and the field.
 Plan planFromJson(const QJsonObject& object, const QString& fileForMessages);
 Plan readPlanFile(const QString& path);
