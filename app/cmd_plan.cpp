@@ -17,6 +17,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QRegularExpression>
 #include <QSaveFile>
 #include <QTextStream>
 #include <cstdio>
@@ -303,6 +304,21 @@ Metadata planMetadata(const Plan& plan, const PlannedRun& run, const QString& pl
     return m;
 }
 
+// The session's next run file, numbered past every file an attempt of the plan named too:
+// an attempt killed before its file existed must not share its name with the next one.
+QString freshRunPath(const Session& session, const Plan& plan, const QString& motion)
+{
+    static const QRegularExpression number(QStringLiteral("^run_(\\d+)"));
+    const QString next = session.nextRunPath(motion);
+    int highest = number.match(QFileInfo(next).fileName()).captured(1).toInt() - 1;
+    for (const PlannedRun& r : plan.runs)
+        for (const PlanAttempt& a : r.attempts)
+            highest = std::max(highest, number.match(a.runFile).captured(1).toInt());
+    QString name = QFileInfo(next).fileName();
+    name.replace(number, QStringLiteral("run_%1").arg(highest + 1, 3, 10, QLatin1Char('0')));
+    return QFileInfo(next).dir().filePath(name);
+}
+
 int cmdRun(const QStringList& args, Io io)
 {
     const QString sub = QStringLiteral("run");
@@ -380,7 +396,7 @@ int cmdRun(const QStringList& args, Io io)
                 in.readLine();
             }
         }
-        const QString runPath = s->nextRunPath(settings.value(QStringLiteral("motion")).toString());
+        const QString runPath = freshRunPath(*s, plan, settings.value(QStringLiteral("motion")).toString());
         const QFileInfo fi(runPath);
         PlannedRunRequest req;
         req.settings = settings;
