@@ -227,6 +227,19 @@ private slots:
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QCOMPARE(r.json().value(QStringLiteral("runs")).toInt(), 4);
 
+        // Killed after run 4 had ended and been tagged but before plan.json said so: kept.
+        {
+            nb::Plan k = nb::readPlanFile(stored);
+            k.runs[3].status = nb::PlanRunStatus::Running;
+            k.runs[3].attempts.back().result.clear();
+            nb::writePlanFile(stored, k);
+            r = plan({"run", planFile, "--session", session});
+            QVERIFY2(r.code == 0, qPrintable(r.err));
+            QVERIFY2(r.out.contains(QStringLiteral("run 4 had ended before the interruption")), qPrintable(r.out));
+            QVERIFY(!r.out.contains(QStringLiteral("run 4 of 4")));
+            QCOMPARE(nb::readPlanFile(stored).runs[3].status, nb::PlanRunStatus::Done);
+        }
+
         // Another plan may not take over this session.
         const QString other = path(QStringLiteral("other.json"));
         QCOMPARE(plan({"new", "--template", "prostate", "--out", other}).code, 0);
