@@ -148,6 +148,8 @@ int cmdNew(const QStringList& args, Io io)
         const QJsonValue v = valueFromText(kv.mid(eq + 1).trimmed());
         if (const QString e = checkPlanSetting(key, v); !e.isEmpty())
             return usage(io, sub, QStringLiteral("--set %1: %2").arg(kv, e));
+        if (std::any_of(design.factors.begin(), design.factors.end(), [&](const PlanFactor& f) { return f.name == key; }))
+            return usage(io, sub, nb::TrCli::tr("--set %1: %2 is a factor of this template; give its levels with --levels %2=...").arg(kv, key));
         design.defaults.insert(key, v);
     }
     for (const QString& kv : p.values(levels)) {
@@ -168,6 +170,16 @@ int cmdNew(const QStringList& args, Io io)
         else
             design.factors.push_back(f);
         design.defaults.remove(name);
+    }
+    if (QFileInfo::exists(p.value(out))) {
+        // Never overwrite a plan's record of what was run.
+        try {
+            const Plan existing = readPlanFile(p.value(out));
+            if (std::any_of(existing.runs.begin(), existing.runs.end(), [](const PlannedRun& r) { return !r.attempts.empty(); }))
+                return fail(io, sub, nb::TrCli::tr("%1 holds a plan with recorded runs; it is not overwritten").arg(p.value(out)));
+        } catch (const PlanError&) {
+            // Not a plan (or a broken one): replaced.
+        }
     }
     try {
         const Plan plan = generatePlan(design, *o, s);

@@ -53,6 +53,7 @@ private slots:
         QTest::newRow("unknown template") << QStringList{"new", "--template", "juggling", "--out", out} << 2 << "juggling";
         QTest::newRow("bad order") << QStringList{"new", "--template", "friction", "--order", "sorted", "--out", out} << 2 << "sorted";
         QTest::newRow("bad set") << QStringList{"new", "--template", "friction", "--set", "cycles=0", "--out", out} << 2 << "cycles";
+        QTest::newRow("set a factor") << QStringList{"new", "--template", "friction", "--set", "site=3", "--out", out} << 2 << "--levels site=";
         QTest::newRow("unknown sub") << QStringList{"dance"} << 2 << "dance";
         QTest::newRow("run without session") << QStringList{"run", out} << 2 << "--session";
         QTest::newRow("missing plan") << QStringList{"run", path(QStringLiteral("absent.json")), "--session", path(QStringLiteral("s0"))} << 1
@@ -197,7 +198,10 @@ private slots:
             QThread::msleep(5);
             try {
                 const nb::Plan s = nb::readPlanFile(stored);
-                if (s.runs[1].status == nb::PlanRunStatus::Running) {
+                // Recording: its file exists and has no footer yet.
+                QFile rf(QDir(session).filePath(s.runs[1].attempts.empty() ? QString() : s.runs[1].attempts.back().runFile));
+                if (s.runs[1].status == nb::PlanRunStatus::Running && rf.open(QIODevice::ReadOnly) && rf.size() > 0 &&
+                    !rf.readAll().contains("# end_reason")) {
                     p.kill();
                     killed = true;
                 }
@@ -239,6 +243,11 @@ private slots:
             QVERIFY(!r.out.contains(QStringLiteral("run 4 of 4")));
             QCOMPARE(nb::readPlanFile(stored).runs[3].status, nb::PlanRunStatus::Done);
         }
+
+        // plan new does not overwrite a plan with recorded runs.
+        r = plan({"new", "--template", "prostate", "--out", stored});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("not overwritten")), qPrintable(r.err));
 
         // Another plan may not take over this session.
         const QString other = path(QStringLiteral("other.json"));
