@@ -20,7 +20,10 @@
 #include <QRegularExpression>
 #include <QSaveFile>
 #include <QTextStream>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace nb::cli {
 

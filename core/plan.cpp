@@ -2,14 +2,13 @@
 #include "core/tr.h"
 
 #include <QFile>
-#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QRegularExpression>
 #include <QSaveFile>
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <limits>
 #include <random>
 #include <set>
 
