@@ -89,8 +89,8 @@ private slots:
     void frictionUnderImagingEndToEnd()
     {
         const QString planFile = path(QStringLiteral("friction-imaging.json")), session = path(QStringLiteral("liver7"));
-        // Short sine runs (3 cycles) keep this test quick; everything else is the template.
-        nbtest::CliResult r = plan({"new", "--template", "friction-imaging", "--set", "cycles=3", "--out", planFile});
+        // Short sine runs (2 cycles) keep this test quick; everything else is the template.
+        nbtest::CliResult r = plan({"new", "--template", "friction-imaging", "--set", "cycles=2", "--out", planFile});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         r = plan({"run", planFile, "--session", session});
         QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
