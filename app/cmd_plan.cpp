@@ -53,7 +53,7 @@ void printPlanUsage(QTextStream& s)
                        "       needlebench plan run PLAN.json --session DIR [--daq DAQ --stage STAGE] [--yes]\n"
                        "       needlebench plan skip PLAN.json --run N --reason TEXT\n"
                        "       needlebench plan redo PLAN.json --run N [--reason TEXT]\n"
-                       "       needlebench plan report SESSION_DIR [--by FACTOR,...] [--estimate-mass] [--json] [--csv-dir DIR]\n");
+                       "       needlebench plan report SESSION_DIR [--by FACTOR,...] [--estimate-mass] [--json] [--out-dir DIR]\n");
 }
 
 // "0.5" -> number, "true"/"false" -> bool, else text.
@@ -507,6 +507,28 @@ QJsonArray tableJson(const FitTable& t)
     return rows;
 }
 
+// One row per fitted run: its levels, then every quantity (empty where not fitted).
+FitTable runsTable(const std::vector<RunFactorValues>& runs, const QStringList& factors)
+{
+    FitTable t;
+    t.caption = nb::TrCli::tr("Fitted quantities per run with their factor levels");
+    t.label = QStringLiteral("tab:runs-by-factor");
+    t.columns.push_back({QStringLiteral("run"), nb::TrCli::tr("run"), {}, -1, {}});
+    for (const QString& f : factors)
+        t.columns.push_back({f, f, {}, -1, {}});
+    for (const FactorQuantity& q : factorQuantities())
+        t.columns.push_back({q.key, q.title, q.unit, 6, {}});
+    for (const RunFactorValues& r : runs) {
+        std::vector<TableCell> row{r.run};
+        for (const QString& f : factors)
+            row.emplace_back(r.levels.count(f) ? r.levels.at(f) : QString());
+        for (const FactorQuantity& q : factorQuantities())
+            row.emplace_back(r.values.count(q.key) ? r.values.at(q.key) : std::nan(""));
+        t.rows.push_back(std::move(row));
+    }
+    return t;
+}
+
 int cmdReport(const QStringList& args, Io io)
 {
     const QString sub = QStringLiteral("report");
@@ -514,9 +536,11 @@ int cmdReport(const QStringList& args, Io io)
     const QCommandLineOption by(QStringLiteral("by"), nb::TrCli::tr("factors to group by, comma separated (default: the plan's factors)"), QStringLiteral("F1,F2"));
     const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     const QCommandLineOption mass(QStringLiteral("estimate-mass"), nb::TrCli::tr("fit friction with the mass estimated (eq. 19, as Table 5)"));
-    const QCommandLineOption csvDir(QStringLiteral("csv-dir"), nb::TrCli::tr("also write by_factor.csv and friction_by_frequency.csv here"), QStringLiteral("DIR"));
+    const QCommandLineOption outDir(QStringLiteral("out-dir"),
+                                    nb::TrCli::tr("also write the tables here as CSV and LaTeX (by_factor, friction_by_frequency, runs_by_factor)"),
+                                    QStringLiteral("DIR"));
     const QCommandLineOption all(QStringLiteral("all-runs"), nb::TrCli::tr("include runs the plan does not count (interrupted, discarded)"));
-    for (const auto* o : {&by, &json, &mass, &csvDir, &all})
+    for (const auto* o : {&by, &json, &mass, &outDir, &all})
         p.addOption(*o);
     p.addPositionalArgument(QStringLiteral("SESSION_DIR"), nb::TrCli::tr("a session folder (or any folder of run files)"));
     int code = Ok;
@@ -570,12 +594,20 @@ int cmdReport(const QStringList& args, Io io)
     const FitTable friction = frictionFrequencyTable(values, QStringLiteral("frequency_hz"));
     const bool anyFriction = !friction.rows.empty();
 
-    if (p.isSet(csvDir)) {
+    const FitTable perRun = runsTable(values, factors);
+    if (p.isSet(outDir)) {
+        const QDir d(p.value(outDir));
+        if (!QDir().mkpath(d.path()))
+            return fail(io, sub, nb::TrCli::tr("cannot create %1").arg(d.path()));
         QString error;
-        if (!QDir().mkpath(p.value(csvDir)) ||
-            !writeText(QDir(p.value(csvDir)).filePath(QStringLiteral("by_factor.csv")), fitTableCsv(byFactor), &error) ||
-            (anyFriction && !writeText(QDir(p.value(csvDir)).filePath(QStringLiteral("friction_by_frequency.csv")), fitTableCsv(friction), &error)))
-            return fail(io, sub, error.isEmpty() ? nb::TrCli::tr("cannot create %1").arg(p.value(csvDir)) : error);
+        for (const auto& [name, table] : {std::pair{QStringLiteral("by_factor"), &byFactor}, std::pair{QStringLiteral("friction_by_frequency"), &friction},
+                                          std::pair{QStringLiteral("runs_by_factor"), &perRun}}) {
+            if (table->rows.empty())
+                continue;
+            if (!writeText(d.filePath(name + QStringLiteral(".csv")), fitTableCsv(*table), &error) ||
+                !writeText(d.filePath(name + QStringLiteral(".tex")), fitTableLatex(*table), &error))
+                return fail(io, sub, error);
+        }
     }
     if (p.isSet(json)) {
         QJsonArray w;
@@ -589,6 +621,7 @@ int cmdReport(const QStringList& args, Io io)
                       {QStringLiteral("runs"), double(loaded.dataset.runs.size())},
                       {QStringLiteral("fitted_runs"), double(values.size())},
                       {QStringLiteral("by_factor"), tableJson(byFactor)},
+                      {QStringLiteral("run_list"), tableJson(perRun)},
                       {QStringLiteral("warnings"), w}};
         if (anyFriction)
             o.insert(QStringLiteral("friction_by_frequency"), tableJson(friction));

@@ -55,6 +55,7 @@ private slots:
         QTest::newRow("bad set") << QStringList{"new", "--template", "friction", "--set", "cycles=0", "--out", out} << 2 << "cycles";
         QTest::newRow("set a factor") << QStringList{"new", "--template", "friction", "--set", "site=3", "--out", out} << 2 << "--levels site=";
         QTest::newRow("unknown sub") << QStringList{"dance"} << 2 << "dance";
+        QTest::newRow("report without factors") << QStringList{"report", dir_.path()} << 2 << "--by";
         QTest::newRow("run without session") << QStringList{"run", out} << 2 << "--session";
         QTest::newRow("missing plan") << QStringList{"run", path(QStringLiteral("absent.json")), "--session", path(QStringLiteral("s0"))} << 1
                                       << "absent.json";
@@ -167,6 +168,15 @@ private slots:
             qInfo("%s: overall mean %.3f, simulated tissue %.3f", k, got, want);
             QVERIFY2(std::abs(got - want) < 0.1 * std::abs(want), k);
         }
+        QCOMPARE(rep.value(QStringLiteral("run_list")).toArray().size(), 15);
+        r = plan({"report", session, "--by", "frequency", "--out-dir", path(QStringLiteral("tables"))});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QFile csv(path(QStringLiteral("tables/friction_by_frequency.csv")));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        QCOMPARE(csv.readLine().trimmed(), QByteArray("group,statistic,freq_Hz,n,m_est_kg,Cp_N_per_m,bp_Ns_per_m2,Cn_N_per_m,bn_Ns_per_m2,Dp_N_per_m,Dn_N_per_m"));
+        QVERIFY(QFileInfo(path(QStringLiteral("tables/friction_by_frequency.tex"))).size() > 0);
+        QVERIFY(QFileInfo(path(QStringLiteral("tables/runs_by_factor.csv"))).size() > 0);
+
         // Site x frequency: 15 cells of one run each.
         int cellsWithCp = 0;
         for (const QJsonValue& v : rep.value(QStringLiteral("by_factor")).toArray())
