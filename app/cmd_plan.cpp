@@ -214,6 +214,7 @@ QJsonObject statusJson(const Plan& plan)
         runs.append(o);
     }
     return {{QStringLiteral("name"), plan.name},
+            {QStringLiteral("remaining_motion_s"), remainingPlanDuration_s(plan)},
             {QStringLiteral("runs"), double(plan.runs.size())},
             {QStringLiteral("done"), plan.countWith(PlanRunStatus::Done)},
             {QStringLiteral("redone"), plan.countWith(PlanRunStatus::Redone)},
@@ -239,7 +240,7 @@ int cmdShow(const QStringList& args, Io io)
             return Ok;
         }
         io.out << plan.name << ": " << plan.runs.size() << ' ' << nb::TrCli::tr("runs") << ", " << planOrderName(plan.order) << ", seed "
-               << plan.seed << '\n';
+               << plan.seed << ", " << nb::TrCli::tr("%1 min of motion left").arg(remainingPlanDuration_s(plan) / 60.0, 0, 'f', 1) << '\n';
         for (const PlannedRun& r : plan.runs) {
             io.out << QString::number(r.number).rightJustified(4) << "  " << planRunStatusName(r.status).leftJustified(8) << "  "
                    << describeRun(plan, r);
@@ -294,44 +295,6 @@ int cmdMark(const QStringList& args, Io io, bool skip)
         return fail(io, sub, e.message());
     }
     return Ok;
-}
-
-Metadata planMetadata(const Plan& plan, const PlannedRun& run, const QString& planFile)
-{
-    Metadata m;
-    QStringList names;
-    for (const PlanFactor& f : plan.factors)
-        names << f.name;
-    for (auto it = run.factors.begin(); it != run.factors.end(); ++it)
-        if (!names.contains(it.key()))
-            names << it.key();
-    for (const QString& n : names)
-        if (run.factors.contains(n))
-            m.set(QStringLiteral("factor_") + n, levelText(run.factors.value(n)));
-    m.set(QStringLiteral("plan_name"), plan.name);
-    if (!plan.templateName.isEmpty())
-        m.set(QStringLiteral("plan_template"), plan.templateName);
-    m.set(QStringLiteral("plan_file"), planFile);
-    m.set(QStringLiteral("plan_run"), QString::number(run.number));
-    m.set(QStringLiteral("plan_runs"), QString::number(plan.runs.size()));
-    m.set(QStringLiteral("plan_attempt"), QString::number(run.attempts.size()));
-    m.set(QStringLiteral("plan_order"), planOrderName(plan.order));
-    return m;
-}
-
-// The session's next run file, numbered past every file an attempt of the plan named too:
-// an attempt killed before its file existed must not share its name with the next one.
-QString freshRunPath(const Session& session, const Plan& plan, const QString& motion)
-{
-    static const QRegularExpression number(QStringLiteral("^run_(\\d+)"));
-    const QString next = session.nextRunPath(motion);
-    int highest = number.match(QFileInfo(next).fileName()).captured(1).toInt() - 1;
-    for (const PlannedRun& r : plan.runs)
-        for (const PlanAttempt& a : r.attempts)
-            highest = std::max(highest, number.match(a.runFile).captured(1).toInt());
-    QString name = QFileInfo(next).fileName();
-    name.replace(number, QStringLiteral("run_%1").arg(highest + 1, 3, 10, QLatin1Char('0')));
-    return QFileInfo(next).dir().filePath(name);
 }
 
 int cmdRun(const QStringList& args, Io io)
@@ -429,7 +392,7 @@ int cmdRun(const QStringList& args, Io io)
                 in.readLine();
             }
         }
-        const QString runPath = freshRunPath(*s, plan, settings.value(QStringLiteral("motion")).toString());
+        const QString runPath = unusedRunPath(plan, s->nextRunPath(settings.value(QStringLiteral("motion")).toString()));
         const QFileInfo fi(runPath);
         PlannedRunRequest req;
         req.settings = settings;
@@ -448,7 +411,7 @@ int cmdRun(const QStringList& args, Io io)
         } catch (const PlanError& e) {
             return fail(io, sub, e.message());
         }
-        req.metadata = planMetadata(plan, run, kPlanFile);
+        req.metadata = planRunMetadata(plan, run, kPlanFile);
         io.out << nb::TrCli::tr("run %1 of %2: %3").arg(run.number).arg(total).arg(describeRun(plan, run)) << " ... ";
         io.out.flush();
         const PlannedRunOutcome r = runPlannedRun(req);

@@ -521,6 +521,66 @@ void redoRun(Plan& plan, int index, const QString& reason)
     r.reason.clear();
 }
 
+Metadata planRunMetadata(const Plan& plan, const PlannedRun& run, const QString& planFile)
+{
+    Metadata m;
+    QStringList names;
+    for (const PlanFactor& f : plan.factors)
+        names << f.name;
+    for (auto it = run.factors.begin(); it != run.factors.end(); ++it)
+        if (!names.contains(it.key()))
+            names << it.key();
+    for (const QString& n : names)
+        if (run.factors.contains(n))
+            m.set(QStringLiteral("factor_") + n, levelText(run.factors.value(n)));
+    m.set(QStringLiteral("plan_name"), plan.name);
+    if (!plan.templateName.isEmpty())
+        m.set(QStringLiteral("plan_template"), plan.templateName);
+    m.set(QStringLiteral("plan_file"), planFile);
+    m.set(QStringLiteral("plan_run"), QString::number(run.number));
+    m.set(QStringLiteral("plan_runs"), QString::number(plan.runs.size()));
+    m.set(QStringLiteral("plan_attempt"), QString::number(std::max<std::size_t>(1, run.attempts.size())));
+    m.set(QStringLiteral("plan_order"), planOrderName(plan.order));
+    return m;
+}
+
+QString unusedRunPath(const Plan& plan, const QString& proposedPath)
+{
+    static const QRegularExpression number(QStringLiteral("run_(\\d+)"));
+    const qsizetype slash = proposedPath.lastIndexOf(QLatin1Char('/'));
+    const QString folder = proposedPath.left(slash + 1);
+    QString name = proposedPath.mid(slash + 1);
+    const auto m = number.match(name);
+    if (!m.hasMatch() || m.capturedStart() != 0)
+        return proposedPath;
+    int highest = m.captured(1).toInt() - 1;
+    for (const PlannedRun& r : plan.runs)
+        for (const PlanAttempt& a : r.attempts)
+            if (const auto am = number.match(a.runFile); am.hasMatch() && am.capturedStart() == 0)
+                highest = std::max(highest, am.captured(1).toInt());
+    name.replace(0, m.capturedLength(), QStringLiteral("run_%1").arg(highest + 1, 3, 10, QLatin1Char('0')));
+    return folder + name;
+}
+
+double expectedRunDuration_s(const QJsonObject& s)
+{
+    const bool sine = s.value(QStringLiteral("motion")).toString() == QLatin1String("sine") ||
+                      s.value(QStringLiteral("protocol")).toString() == QLatin1String("friction");
+    if (sine)
+        return s.value(QStringLiteral("cycles")).toDouble(7.0) / s.value(QStringLiteral("frequency_hz")).toDouble(0.5);
+    const bool internal = s.value(QStringLiteral("protocol")).toString() == QLatin1String("internal");
+    return s.value(QStringLiteral("depth_mm")).toDouble(40.0) / s.value(QStringLiteral("velocity_mm_s")).toDouble(internal ? 2.5 : 4.0);
+}
+
+double remainingPlanDuration_s(const Plan& plan)
+{
+    double t = 0.0;
+    for (const PlannedRun& r : plan.runs)
+        if (!r.completed())
+            t += expectedRunDuration_s(plan.settingsFor(r));
+    return t;
+}
+
 QJsonObject planToJson(const Plan& plan)
 {
     QJsonObject o;

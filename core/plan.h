@@ -24,6 +24,8 @@
 // interrupted), done, skipped (with "reason"), redone (done, after an earlier attempt that
 // was interrupted, failed or discarded by the operator). The attempt that counts is the last.
 
+#include "core/run.h"
+
 #include <QDateTime>
 #include <QJsonObject>
 #include <QJsonValue>
@@ -155,6 +157,23 @@ bool isCompletingEndReason(const QString& endReason);
 void skipRun(Plan& plan, int index, const QString& reason);
 // Discards the counted attempt (with `reason`) so the run is done again.
 void redoRun(Plan& plan, int index, const QString& reason);
+
+// The run file's metadata for a plan run: `factor_<name>: level` for each of its factors (so
+// every export carries them), plan_name, plan_template, plan_file, plan_run, plan_runs,
+// plan_attempt (the attempt's number, 1 for the first) and plan_order.
+Metadata planRunMetadata(const Plan& plan, const PlannedRun& run, const QString& planFile);
+
+// `proposedPath` (a session's next run file, run_NNN_motion.csv) renumbered past every run
+// file an attempt of the plan names: an attempt killed before its file existed must not
+// share its name with the next one.
+QString unusedRunPath(const Plan& plan, const QString& proposedPath);
+
+// How long a run moves, from its settings: depth / velocity for a linear insertion, cycles /
+// frequency for a sine (the simulate command's defaults where a setting is absent). Operator
+// time between runs is not included.
+double expectedRunDuration_s(const QJsonObject& settings);
+// The sum over the runs not completed.
+double remainingPlanDuration_s(const Plan& plan);
 
 QJsonObject planToJson(const Plan& plan);
 // The file's text: planToJson with keys in a reading order and short parts on one line.

@@ -183,6 +183,27 @@ private slots:
         QCOMPARE(stiff.runs[1].instruction, QStringLiteral("Move the specimen to site 2."));
     }
 
+    void durationsMetadataAndRunFileNames()
+    {
+        Plan p = generatePlan(tmpl("friction-imaging"), PlanOrder::Listed, 1);
+        QCOMPARE(expectedRunDuration_s(p.settingsFor(p.runs[0])), 35.0);  // 7 cycles at 0.2 Hz
+        QCOMPARE(remainingPlanDuration_s(p), 5 * (7 / 0.2 + 7 / 0.5 + 7 / 0.8));
+        beginAttempt(p, 0, QStringLiteral("run_004_sine.csv"), {}, QDateTime::currentDateTimeUtc());
+        finishAttempt(p, 0, QStringLiteral("completed"), QDateTime::currentDateTimeUtc());
+        QCOMPARE(remainingPlanDuration_s(p), 5 * (7 / 0.2 + 7 / 0.5 + 7 / 0.8) - 35.0);
+        QCOMPARE(remainingPlanDuration_s(generatePlan(tmpl("overall-stiffness"), PlanOrder::Listed, 1)), 21 * 40.0 / 4.0);
+
+        QCOMPARE(unusedRunPath(p, QStringLiteral("/s/run_003_sine.csv")), QStringLiteral("/s/run_005_sine.csv"));
+        QCOMPARE(unusedRunPath(p, QStringLiteral("/s/run_009_sine.csv")), QStringLiteral("/s/run_009_sine.csv"));
+
+        const Metadata m = planRunMetadata(p, p.runs[4], QStringLiteral("plan.json"));
+        QCOMPARE(m.value(QStringLiteral("factor_site")).value_or(QString()), QStringLiteral("2"));
+        QCOMPARE(m.value(QStringLiteral("factor_frequency_hz")).value_or(QString()), QStringLiteral("0.5"));
+        QCOMPARE(m.value(QStringLiteral("plan_run")).value_or(QString()), QStringLiteral("5"));
+        QCOMPARE(m.value(QStringLiteral("plan_runs")).value_or(QString()), QStringLiteral("15"));
+        QCOMPARE(m.entries().front().first, QStringLiteral("factor_site"));  // in the plan's factor order
+    }
+
     void roundTripKeepsEverything()
     {
         Plan p = generatePlan(tmpl("friction-imaging"), PlanOrder::Blocked, 9);
