@@ -20,6 +20,7 @@ int cmdVideoInfo(const QStringList& args, Io io);
 int cmdFrame(const QStringList& args, Io io);
 int cmdSync(const QStringList& args, Io io);
 int cmdLabels(const QStringList& args, Io io);
+int cmdPlan(const QStringList& args, Io io);
 
 const std::vector<Command>& commands()
 {
@@ -36,6 +37,7 @@ const std::vector<Command>& commands()
         {QStringLiteral("frame"), nb::TrCli::tr("write one exact video frame as an image"), cmdFrame},
         {QStringLiteral("sync"), nb::TrCli::tr("find the video's offset to a run (motion vs needle speed)"), cmdSync},
         {QStringLiteral("labels"), nb::TrCli::tr("suggest phase and event labels for a run"), cmdLabels},
+        {QStringLiteral("plan"), nb::TrCli::tr("experiment plans: templates, new, run (resumes), report by factor"), cmdPlan},
     };
     return all;
 }

@@ -53,6 +53,7 @@ def main():
                 if ctx:
                     by_ctx[(ctx, src)] = tr
                 by_src[src] = tr
+                by_src.setdefault(src.strip(), tr)
 
     tree = ET.parse(args.target)
     missing = 0
@@ -62,6 +63,13 @@ def main():
             continue
         src = m.findtext('source')
         value = by_ctx.get((ctx, src), by_src.get(src))
+        if value is None and src:
+            # A text that differs only in its surrounding white space (a trailing newline).
+            base = by_src.get(src.strip())
+            if isinstance(base, str):
+                lead = src[:len(src) - len(src.lstrip())]
+                trail = src[len(src.rstrip()):]
+                value = lead + base.strip() + trail
         if value is None:
             missing += 1
             print(f'untranslated: [{ctx}] {src!r}')

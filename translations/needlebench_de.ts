@@ -1218,7 +1218,7 @@
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+55"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
@@ -1252,7 +1252,7 @@
         <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
     </message>
     <message>
-        <location line="-293"/>
+        <location line="-294"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1842,6 +1842,9 @@
         <location filename="../app/cmd_fit.cpp" line="+73"/>
         <location line="+49"/>
         <location line="+122"/>
+        <location filename="../app/cmd_plan.cpp" line="+74"/>
+        <location line="+156"/>
+        <location line="+270"/>
         <location filename="../app/cmd_sync.cpp" line="+28"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -1935,6 +1938,7 @@
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cmd_plan.cpp" line="+8"/>
         <source>a session folder (or any folder of run files)</source>
         <translation>ein Sitzungsordner (oder ein beliebiger Ordner mit Laufdateien)</translation>
     </message>
@@ -2346,6 +2350,7 @@
     </message>
     <message>
         <location line="+11"/>
+        <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation>run</translation>
     </message>
@@ -2527,11 +2532,13 @@
     </message>
     <message>
         <location line="+11"/>
+        <location filename="../app/plan_runner.cpp" line="+109"/>
         <source>unknown tissue &apos;%1&apos; (%2)</source>
         <translation>unbekanntes Gewebe &apos;%1&apos; (%2)</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location filename="../app/plan_runner.cpp" line="+6"/>
         <source>unknown tip &apos;%1&apos; (beveled|diamond|blunt)</source>
         <translation>unbekannte Spitze &apos;%1&apos; (beveled|diamond|blunt)</translation>
     </message>
@@ -2591,9 +2598,294 @@
         <translation>&apos;needlebench simulate --help&apos; zeigt die Optionen.</translation>
     </message>
     <message>
+        <location filename="../app/cmd_plan.cpp" line="-442"/>
+        <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
+        <translation>&apos;needlebench plan %1 --help&apos; zeigt die Optionen.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Usage: needlebench plan templates [--json]
+       needlebench plan new --template NAME --out PLAN.json [--order listed|random|blocked] [--seed N]
+                            [--set KEY=VALUE]... [--levels FACTOR=L1,L2,...]...
+       needlebench plan show PLAN.json [--json]
+       needlebench plan run PLAN.json --session DIR [--daq DAQ --stage STAGE] [--yes]
+       needlebench plan skip PLAN.json --run N --reason TEXT
+       needlebench plan redo PLAN.json --run N [--reason TEXT]
+       needlebench plan report SESSION_DIR [--by FACTOR,...] [--estimate-mass] [--json] [--out-dir DIR]
+</source>
+        <translation>Aufruf: needlebench plan templates [--json]
+        needlebench plan new --template NAME --out PLAN.json [--order listed|random|blocked] [--seed N]
+                             [--set SCHLÜSSEL=WERT]... [--levels FAKTOR=S1,S2,...]...
+        needlebench plan show PLAN.json [--json]
+        needlebench plan run PLAN.json --session ORDNER [--daq DAQ --stage STAGE] [--yes]
+        needlebench plan skip PLAN.json --run N --reason TEXT
+        needlebench plan redo PLAN.json --run N [--reason TEXT]
+        needlebench plan report SITZUNGSORDNER [--by FAKTOR,...] [--estimate-mass] [--json] [--out-dir ORDNER]
+</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <location line="+139"/>
+        <source>runs</source>
+        <translation>Läufe</translation>
+    </message>
+    <message>
+        <location line="-131"/>
+        <source>the template (see &apos;plan templates&apos;)</source>
+        <translation>die Vorlage (siehe &apos;plan templates&apos;)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the plan file to write</source>
+        <translation>die zu schreibende Plandatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>listed | random | blocked (by site; default listed)</source>
+        <translation>listed | random | blocked (nach Stelle; Vorgabe listed)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>seed of the random order and of the simulated runs (default 1)</source>
+        <translation>Startwert der zufälligen Reihenfolge und der simulierten Läufe (Vorgabe 1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>change a default setting, e.g. cycles=3 (repeatable)</source>
+        <translation>eine Vorgabe ändern, z. B. cycles=3 (wiederholbar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set a factor&apos;s levels, e.g. site=1,2,3 (repeatable; a new name adds a factor)</source>
+        <translation>die Stufen eines Faktors setzen, z. B. site=1,2,3 (wiederholbar; ein neuer Name fügt einen Faktor hinzu)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>--template NAME is required (see &apos;needlebench plan templates&apos;)</source>
+        <translation>--template NAME ist erforderlich (siehe &apos;needlebench plan templates&apos;)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>unknown template &apos;%1&apos; (%2)</source>
+        <translation>unbekannte Vorlage &apos;%1&apos; (%2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--out PLAN.json is required</source>
+        <translation>--out PLAN.json ist erforderlich</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--order must be listed, random or blocked (got &apos;%1&apos;)</source>
+        <translation>--order muss listed, random oder blocked sein (erhalten: &apos;%1&apos;)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--seed wants an integer from 0 to 4294967295 (got &apos;%1&apos;)</source>
+        <translation>--seed erwartet eine ganze Zahl von 0 bis 4294967295 (erhalten: &apos;%1&apos;)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--set %1: expected KEY=VALUE with KEY one of %2</source>
+        <translation>--set %1: SCHLÜSSEL=WERT erwartet, SCHLÜSSEL einer von %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--set %1: %2 is a factor of this template; give its levels with --levels %2=...</source>
+        <translation>--set %1: %2 ist ein Faktor dieser Vorlage; seine Stufen mit --levels %2=... angeben</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--levels %1: expected FACTOR=L1,L2,...</source>
+        <translation>--levels %1: FAKTOR=S1,S2,... erwartet</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 holds a plan with recorded runs; it is not overwritten</source>
+        <translation>%1 enthält einen Plan mit aufgezeichneten Läufen; er wird nicht überschrieben</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 runs of &apos;%3&apos;, order %4, seed %5</source>
+        <translation>%1: %2 Läufe von &apos;%3&apos;, Reihenfolge %4, Startwert %5</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>the plan file</source>
+        <translation>die Plandatei</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 min of motion left</source>
+        <translation>noch %1 min Bewegung</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>the run&apos;s number</source>
+        <translation>die Nummer des Laufs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>why (required to skip)</source>
+        <translation>warum (zum Überspringen erforderlich)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the plan file (the session&apos;s plan.json)</source>
+        <translation>die Plandatei (plan.json der Sitzung)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--reason TEXT is required</source>
+        <translation>--reason TEXT ist erforderlich</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--run: no run &apos;%1&apos; in %2</source>
+        <translation>--run: kein Lauf &apos;%1&apos; in %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+138"/>
+        <source>run %1: %2</source>
+        <translation>Lauf %1: %2</translation>
+    </message>
+    <message>
+        <location line="-127"/>
+        <source>the session folder (created when missing; holds plan.json and the runs)</source>
+        <translation>der Sitzungsordner (wird angelegt, wenn er fehlt; enthält plan.json und die Läufe)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>sim | u6 | u6:SERIAL (default sim)</source>
+        <translation>sim | u6 | u6:SERIENNUMMER (Vorgabe sim)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sim | zaber:PORT (default sim)</source>
+        <translation>sim | zaber:PORT (Vorgabe sim)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>on real devices, do not wait for Enter after an operator instruction</source>
+        <translation>an echten Geräten nach einer Anweisung an den Bediener nicht auf die Eingabetaste warten</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the plan (from &apos;plan new&apos;, or the session&apos;s plan.json)</source>
+        <translation>der Plan (aus &apos;plan new&apos; oder plan.json der Sitzung)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--session DIR is required</source>
+        <translation>--session ORDNER ist erforderlich</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 holds a different plan; to resume it run &apos;needlebench plan run %1 --session %2&apos;, or use another session folder</source>
+        <translation>%1 enthält einen anderen Plan; zum Fortsetzen &apos;needlebench plan run %1 --session %2&apos; ausführen oder einen anderen Sitzungsordner wählen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>recovered %1</source>
+        <translation>wiederhergestellt: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>run %1 had ended before the interruption: %2</source>
+        <translation>Lauf %1 war vor der Unterbrechung beendet: %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>run %1 was interrupted; it runs again</source>
+        <translation>Lauf %1 wurde unterbrochen; er läuft erneut</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>operator: %1</source>
+        <translation>Bediener: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>press Enter when done</source>
+        <translation>Eingabetaste drücken, wenn erledigt</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>run %1 of %2: %3</source>
+        <translation>Lauf %1 von %2: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>done</source>
+        <translation>fertig</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>done (%1)</source>
+        <translation>fertig (%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the plan stops at run %1; fix the cause and run the same command again to resume</source>
+        <translation>der Plan hält bei Lauf %1 an; die Ursache beheben und denselben Befehl erneut ausführen, um fortzusetzen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location filename="../app/plan_runner.cpp" line="-27"/>
         <location filename="../app/simulated_run.cpp" line="+140"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Fitted quantities per run with their factor levels</source>
+        <translation>Angepasste Größen je Lauf mit ihren Faktorstufen</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>factors to group by, comma separated (default: the plan&apos;s factors)</source>
+        <translation>Faktoren zum Gruppieren, durch Kommas getrennt (Vorgabe: die Faktoren des Plans)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fit friction with the mass estimated (eq. 19, as Table 5)</source>
+        <translation>Reibung mit geschätzter Masse anpassen (Gl. 19, wie Tabelle 5)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>also write the tables here as CSV and LaTeX (by_factor, friction_by_frequency, runs_by_factor)</source>
+        <translation>die Tabellen zusätzlich als CSV und LaTeX hierhin schreiben (by_factor, friction_by_frequency, runs_by_factor)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>include runs the plan does not count (interrupted, discarded)</source>
+        <translation>auch Läufe einbeziehen, die der Plan nicht zählt (unterbrochen, verworfen)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>--by FACTOR,... is required when the folder has no plan.json</source>
+        <translation>--by FAKTOR,... ist erforderlich, wenn der Ordner keine plan.json enthält</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>cannot create %1</source>
+        <translation>%1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>no run in %1 could be fitted</source>
+        <translation>kein Lauf in %1 ließ sich anpassen</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>needlebench plan: unknown subcommand &apos;%1&apos;</source>
+        <translation>needlebench plan: unbekannter Unterbefehl &apos;%1&apos;</translation>
     </message>
     <message>
         <location filename="../app/cmd_sync.cpp" line="-1"/>
@@ -2802,7 +3094,7 @@
         <translation>zu viele Argumente</translation>
     </message>
     <message>
-        <location filename="../app/commands.cpp" line="+27"/>
+        <location filename="../app/commands.cpp" line="+28"/>
         <source>print the version</source>
         <translation>die Version ausgeben</translation>
     </message>
@@ -2862,6 +3154,11 @@
         <translation>Phasen- und Ereignis-Labels für einen Lauf vorschlagen</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>experiment plans: templates, new, run (resumes), report by factor</source>
+        <translation>Versuchspläne: Vorlagen, neu, ausführen (setzt fort), Auswertung nach Faktoren</translation>
+    </message>
+    <message>
         <location line="+17"/>
         <source>Usage: needlebench                 open the workbench (GUI, simulated rig)
        needlebench COMMAND [options]  run headless
@@ -2891,6 +3188,21 @@ Befehle:
         <translation>needlebench: unbekannter Befehl &apos;%1&apos;
 
 </translation>
+    </message>
+    <message>
+        <location filename="../app/plan_runner.cpp" line="-20"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: no column header</source>
+        <translation>%1: keine Spaltenüberschrift</translation>
+    </message>
+    <message>
+        <location line="+98"/>
+        <source>the run did not start (exit code %1)</source>
+        <translation>der Lauf hat nicht begonnen (Rückgabewert %1)</translation>
     </message>
 </context>
 <context>
@@ -2941,7 +3253,7 @@ Befehle:
         <translation>Ordner existiert nicht</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>%1: skipped, %2</source>
         <translation>%1: übersprungen, %2</translation>
     </message>
@@ -2969,6 +3281,7 @@ Befehle:
         <location line="+7"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
+        <location filename="../core/plan.cpp" line="+944"/>
         <location filename="../core/run_file.cpp" line="+288"/>
         <location line="+37"/>
         <location line="+17"/>
@@ -3108,27 +3421,61 @@ Befehle:
         <translation>Karnopp-Reibung pro Länge, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau der Tabellen 4/5)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+211"/>
+        <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation>Gruppe</translation>
     </message>
     <message>
         <location line="+0"/>
+        <location filename="../core/export/session_analysis.cpp" line="+0"/>
         <source>statistic</source>
         <translation>Statistik</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-29"/>
+        <location filename="../core/export/session_analysis.cpp" line="+7"/>
         <source>std</source>
         <translation>std</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-62"/>
+        <source>%1: no friction fit with the mass estimated (%2)</source>
+        <translation>%1: keine Reibungsanpassung mit geschätzter Masse (%2)</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Fitted quantities by %1: mean, standard deviation and number of runs</source>
+        <translation>Angepasste Größen nach %1: Mittelwert, Standardabweichung und Anzahl der Läufe</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>quantity</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../core/export/session_analysis.cpp" line="+0"/>
         <source>mean</source>
         <translation>mean</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+28"/>
+        <source>Karnopp friction per unit length, mean and standard deviation per frequency and overall (Table 5 layout)</source>
+        <translation>Karnopp-Reibung je Längeneinheit, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau von Tabelle 5)</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../core/export/session_analysis.cpp" line="+9"/>
         <source>overall</source>
         <translation>overall</translation>
     </message>
@@ -3533,6 +3880,283 @@ Befehle:
         <location line="+18"/>
         <source>no runs to fit</source>
         <translation>keine Läufe zum Fitten</translation>
+    </message>
+    <message>
+        <location filename="../core/plan.cpp" line="-862"/>
+        <source>neither motion nor protocol is set</source>
+        <translation>weder Bewegung noch Protokoll ist gesetzt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>motion &apos;%1&apos; does not go with protocol &apos;%2&apos; (sine motion is the friction protocol)</source>
+        <translation>Bewegung &apos;%1&apos; passt nicht zu Protokoll &apos;%2&apos; (Sinusbewegung ist das Reibungsprotokoll)</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Move the slab to site %1.</source>
+        <translation>Die Gewebescheibe an Stelle %1 verschieben.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Move the specimen to site %1.</source>
+        <translation>Das Präparat an Stelle %1 verschieben.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Change to the %1 tip.</source>
+        <translation>Auf die Spitze %1 wechseln.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mount %1.</source>
+        <translation>%1 einspannen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mount the %1 mm slab.</source>
+        <translation>Die %1-mm-Gewebescheibe einspannen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set %1 to %2.</source>
+        <translation>%1 auf %2 stellen.</translation>
+    </message>
+    <message>
+        <location line="+108"/>
+        <source>&apos;%1&apos; is not one of %2</source>
+        <translation>&apos;%1&apos; ist keiner der Werte %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>expected a tissue name</source>
+        <translation>Gewebename erwartet</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>expected a site number or name</source>
+        <translation>Nummer oder Name einer Stelle erwartet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+503"/>
+        <source>expected true or false</source>
+        <translation>true oder false erwartet</translation>
+    </message>
+    <message>
+        <location line="-499"/>
+        <source>expected &quot;puncture&quot; or &quot;puncture:N&quot; (N &gt;= 1)</source>
+        <translation>&quot;puncture&quot; oder &quot;puncture:N&quot; (N &gt;= 1) erwartet</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>expected a non-negative integer</source>
+        <translation>nicht negative ganze Zahl erwartet</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+525"/>
+        <source>expected a positive integer</source>
+        <translation>positive ganze Zahl erwartet</translation>
+    </message>
+    <message>
+        <location line="-520"/>
+        <source>expected a positive number, got %1</source>
+        <translation>positive Zahl erwartet, erhalten: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>expected a number or a text</source>
+        <translation>Zahl oder Text erwartet</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>21 insertions into whole liver 1, beveled tip, 4 mm/s (Table 2)</source>
+        <translation>21 Einstiche in die ganze Leber 1, Facettenschliff, 4 mm/s (Tabelle 2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>7 insertions into liver 7 with the capsule removed, blunt tip, 2.5 mm/s (Table 3)</source>
+        <translation>7 Einstiche in Leber 7 ohne Kapsel, stumpfe Spitze, 2,5 mm/s (Tabelle 3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>liver 3 slab, sine 10 mm at 0.2/0.5/0.8 Hz at 7 locations, beveled tip (Table 4)</source>
+        <translation>Scheibe aus Leber 3, Sinus 10 mm bei 0,2/0,5/0,8 Hz an 7 Stellen, Facettenschliff (Tabelle 4)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>11 insertions into whole liver 5 with video, diamond tip, 4 mm/s</source>
+        <translation>11 Einstiche in die ganze Leber 5 mit Video, Diamantschliff, 4 mm/s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>liver 7 slab with video, sine 10 mm at 0.2/0.5/0.8 Hz at 5 locations, diamond tip (Table 5)</source>
+        <translation>Scheibe aus Leber 7 mit Video, Sinus 10 mm bei 0,2/0,5/0,8 Hz an 5 Stellen, Diamantschliff (Tabelle 5)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>9 insertions into a canine prostate, diamond tip, 4 mm/s</source>
+        <translation>9 Einstiche in eine Hundeprostata, Diamantschliff, 4 mm/s</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <location line="+405"/>
+        <source>a factor needs at least one level</source>
+        <translation>ein Faktor braucht mindestens eine Stufe</translation>
+    </message>
+    <message>
+        <location line="-381"/>
+        <source>blocked order needs a factor named site</source>
+        <translation>die Reihenfolge in Blöcken braucht einen Faktor namens site</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Fit the %1 tip.</source>
+        <translation>Die Spitze %1 aufsetzen.</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 mm/s</source>
+        <translation>%1 mm/s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>amplitude %1 mm</source>
+        <translation>Amplitude %1 mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>depth %1 mm</source>
+        <translation>Tiefe %1 mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>site %1</source>
+        <translation>Stelle %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>repeat %1</source>
+        <translation>Wiederholung %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 tip</source>
+        <translation>Spitze %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 cycles</source>
+        <translation>%1 Zyklen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 mm slab</source>
+        <translation>%1-mm-Scheibe</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>redone</source>
+        <translation>wiederholt</translation>
+    </message>
+    <message>
+        <location line="+137"/>
+        <location line="+21"/>
+        <source>missing</source>
+        <translation>fehlt</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <source>expected a text</source>
+        <translation>Text erwartet</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+57"/>
+        <location line="+41"/>
+        <location line="+31"/>
+        <source>expected an object {...}</source>
+        <translation>Objekt {...} erwartet</translation>
+    </message>
+    <message>
+        <location line="-117"/>
+        <source>expected a list [...]</source>
+        <translation>Liste [...] erwartet</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&apos;%1&apos; is not an ISO 8601 date and time</source>
+        <translation>&apos;%1&apos; ist kein Datum mit Uhrzeit nach ISO 8601</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is not a NeedleBench plan (expected %2)</source>
+        <translation>&apos;%1&apos; ist kein NeedleBench-Plan (erwartet: %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>version %1 is not supported (this program reads version %2)</source>
+        <translation>Version %1 wird nicht unterstützt (dieses Programm liest Version %2)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&apos;%1&apos; is not one of listed|random|blocked</source>
+        <translation>&apos;%1&apos; ist keiner der Werte listed|random|blocked</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&apos;%1&apos; is listed twice</source>
+        <translation>&apos;%1&apos; ist doppelt aufgeführt</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>unknown setting (known: %1; declare other factors under &quot;factors&quot;)</source>
+        <translation>unbekannte Einstellung (bekannt: %1; weitere Faktoren unter &quot;factors&quot; angeben)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>run %1 is listed twice</source>
+        <translation>Lauf %1 ist doppelt aufgeführt</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&apos;%1&apos; is not one of pending|running|done|skipped|redone</source>
+        <translation>&apos;%1&apos; ist keiner der Werte pending|running|done|skipped|redone</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>a run marked %1 needs the attempt that made it</source>
+        <translation>ein als %1 markierter Lauf braucht den Versuch, der ihn ergab</translation>
+    </message>
+    <message>
+        <location line="+117"/>
+        <source>cannot read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no such file</source>
+        <translation>Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>expected a JSON object {...}</source>
+        <translation>JSON-Objekt {...} erwartet</translation>
     </message>
 </context>
 <context>

@@ -1,0 +1,41 @@
+#pragma once
+// Executes one run of an experiment plan: the ONE place where `plan run` reaches the
+// acquisition path. The simulated rig runs through simulateRun (as `simulate`), with the plan's
+// metadata and stop_at / slow_after_puncture_mm_s passed in; real devices through the `acquire`
+// command in-process, the plan's metadata then written into the run file's header.
+
+#include "commands.h"
+#include "core/run.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+namespace nb::cli {
+
+struct PlannedRunRequest {
+    QJsonObject settings;  // the run's effective settings (Plan::settingsFor)
+    QString runFile;       // absolute paths
+    QString videoFile;     // empty: no video
+    QString truthFile;     // empty: none (the simulated rig only)
+    Metadata metadata;     // factor_<name>, plan_* lines for the run file's header
+    QString daq, stage;    // device specs; both empty or "sim": the simulated rig
+};
+
+struct PlannedRunOutcome {
+    bool ok = false;         // a run file was written and closed
+    QString endReason;       // completed, force_limit, fault, ... (empty when no run)
+    QString error;           // what went wrong, for the operator
+    double videoOffset_s = 0.0;
+};
+
+PlannedRunOutcome runPlannedRun(const PlannedRunRequest& request);
+
+// The `simulate` / `acquire` arguments for a run's settings (exposed for tests and --help).
+QStringList plannedRunArguments(const PlannedRunRequest& request, bool simulated);
+
+// Inserts `# key: value` lines before the run file's column header (atomically). Returns an
+// error text, empty on success.
+QString addRunFileMetadata(const QString& path, const Metadata& metadata);
+
+}  // namespace nb::cli
