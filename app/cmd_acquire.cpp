@@ -3,6 +3,7 @@
 // falling back to the settings (devices/daq, devices/stage) and then to the simulated rig.
 
 #include "cli_support.h"
+#include "interrupt_watcher.h"
 #include "core/tr.h"
 
 #include "devices/acquisition_engine.h"
@@ -138,11 +139,29 @@ int cmdAcquire(const QStringList& args, Io io)
     });
     QObject::connect(&engine, &devices::AcquisitionEngine::faultOccurred, &loop,
                      [&](const QString& device, const QString& reason) { failure = device + QStringLiteral(": ") + reason; });
+    // [issue 15] A signal stops the stage and closes the run as "interrupted"; a second one
+    // (or one before the run started) does not wait.
+    bool started = false;
+    InterruptWatcher interrupts;
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, &loop, [&](int signo) {
+        io.err << "needlebench acquire: "
+               << nb::TrCli::tr("%1 received: stopping the stage and closing the run").arg(InterruptWatcher::signalName(signo))
+               << '\n';
+        io.err.flush();
+        if (interrupts.signalNumber() != signo || !started) {
+            if (failure.isEmpty())
+                failure = nb::TrCli::tr("interrupted by %1").arg(InterruptWatcher::signalName(signo));
+            loop.quit();
+            return;
+        }
+        Metadata extra;
+        extra.set(QStringLiteral("signal"), InterruptWatcher::signalName(signo));
+        engine.endRun(QStringLiteral("interrupted"), extra);
+    });
     engine.start();
     engine.enableStage(true);
     engine.biasSensor();
     engine.zeroStage();
-    bool started = false;
     QElapsedTimer wall;
     wall.start();
     QTimer tick;
@@ -168,8 +187,12 @@ int cmdAcquire(const QStringList& args, Io io)
     engine.shutdown();
     if (!summary) {
         io.err << "needlebench acquire: " << failure << '\n';
-        return Failure;
+        return interrupts.signalNumber() ? 128 + interrupts.signalNumber() : Failure;
     }
+    if (summary->endReason == QLatin1String("write_error"))
+        io.err << "needlebench acquire: "
+               << nb::TrCli::tr("recording failed: %1; the run file keeps %2 whole rows").arg(summary->fault).arg(summary->samples)
+               << '\n';
     QJsonObject result{{QStringLiteral("out"), summary->path},
                        {QStringLiteral("end_reason"), summary->endReason},
                        {QStringLiteral("samples"), double(summary->samples)},
@@ -178,7 +201,9 @@ int cmdAcquire(const QStringList& args, Io io)
     if (!summary->fault.isEmpty())
         result.insert(QStringLiteral("fault"), summary->fault);
     printJson(io, result);
-    return summary->endReason == QLatin1String("fault") ? Failure : Ok;
+    if (interrupts.signalNumber())
+        return 128 + interrupts.signalNumber();
+    return summary->endReason == QLatin1String("fault") || summary->endReason == QLatin1String("write_error") ? Failure : Ok;
 }
 
 }  // namespace nb::cli

@@ -3,6 +3,8 @@
 // place (addOptions/readOptions) so that more (e.g. --video) slot in without touching the run.
 
 #include "cli_support.h"
+#include "interrupt_watcher.h"
+#include "core/disk_space.h"
 #include "core/tr.h"
 
 #include "devices/acquisition_engine.h"
@@ -15,12 +17,14 @@
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QSaveFile>
 #include <QTimer>
 #include <atomic>
 #include <cmath>
 #include <optional>
+#include <opencv2/videoio.hpp>
 
 namespace nb::cli {
 
@@ -226,6 +230,38 @@ QJsonObject truthOnRunTime(const QJsonObject& truth, double origin_s)
     return out;
 }
 
+// [issue 15] Watches the disk the run file goes to: warns once when it will be full within
+// a minute at the rate the file grows.
+class SpaceWatch {
+public:
+    explicit SpaceWatch(QString path) : path_(std::move(path)) { clock_.start(); }
+    QString check()
+    {
+        if (warned_ || clock_.elapsed() < nextCheck_ms_)
+            return {};
+        nextCheck_ms_ = clock_.elapsed() + 1000;
+        const qint64 size = QFileInfo(path_).size();
+        const auto free = freeBytes(path_);
+        const double elapsed_s = clock_.elapsed() / 1000.0;
+        if (!free || size <= 0 || elapsed_s < 1.0)
+            return {};
+        const double left_s = secondsUntilFull(*free, size / elapsed_s);
+        if (left_s >= kLowSpaceWarning_s)
+            return {};
+        warned_ = true;
+        return nb::TrCli::tr("warning: the disk holding %1 will be full in about %2 s at the current rate (%3 kB free)")
+            .arg(path_)
+            .arg(left_s, 0, 'f', 0)
+            .arg(*free / 1024);
+    }
+
+private:
+    QString path_;
+    QElapsedTimer clock_;
+    qint64 nextCheck_ms_ = 1000;
+    bool warned_ = false;
+};
+
 }  // namespace
 
 int cmdSimulate(const QStringList& args, Io io)
@@ -289,6 +325,22 @@ int cmdSimulate(const QStringList& args, Io io)
                 engine.startRun(plan);
         },
         Qt::DirectConnection);
+    // [issue 15] A signal stops the stage and closes the run as "interrupted"; a second one
+    // (or one before the run started) does not wait.
+    InterruptWatcher interrupts;
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, &loop, [&](int signo) {
+        io.err << "needlebench simulate: "
+               << nb::TrCli::tr("%1 received: stopping the stage and closing the run").arg(InterruptWatcher::signalName(signo))
+               << '\n';
+        io.err.flush();
+        if (interrupts.signalNumber() != signo || !started.load()) {
+            loop.quit();
+            return;
+        }
+        Metadata extra;
+        extra.set(QStringLiteral("signal"), InterruptWatcher::signalName(signo));
+        engine.endRun(QStringLiteral("interrupted"), extra);
+    });
     // Queued before the thread starts: they run before its first sample.
     engine.enableStage(true);
     engine.biasSensor();
@@ -296,6 +348,7 @@ int cmdSimulate(const QStringList& args, Io io)
     engine.start();
     QElapsedTimer wall;
     wall.start();
+    SpaceWatch space(s.out);
     QTimer tick;
     tick.setInterval(s.rig.realtime ? 20 : 5);
     // Progress lines carry the engine's run time: a killed recording can be checked against them.
@@ -305,6 +358,11 @@ int cmdSimulate(const QStringList& args, Io io)
             faultText = st.fault;
             loop.quit();
         }
+        if (st.recording)
+            if (const QString w = space.check(); !w.isEmpty()) {
+                io.err << "needlebench simulate: " << w << '\n';
+                io.err.flush();
+            }
         if (st.recording && s.rig.realtime) {
             io.out << "progress run_time_s=" << QString::number(st.runTime_s, 'f', 4) << " samples=" << st.samples << '\n';
             io.out.flush();
@@ -322,7 +380,23 @@ int cmdSimulate(const QStringList& args, Io io)
 
     if (!summary) {
         io.err << "needlebench simulate: " << (refused.isEmpty() ? faultText : refused) << '\n';
-        return Failure;
+        return interrupts.signalNumber() ? 128 + interrupts.signalNumber() : Failure;
+    }
+    // [issue 15] A run that did not end by itself gets no truth or video: they would describe
+    // a recording that is not in the file.
+    if (summary->endReason == QLatin1String("write_error") || summary->endReason == QLatin1String("interrupted")) {
+        if (summary->endReason == QLatin1String("write_error"))
+            io.err << "needlebench simulate: "
+                   << nb::TrCli::tr("recording failed: %1; the run file keeps %2 whole rows").arg(summary->fault).arg(summary->samples)
+                   << '\n';
+        QJsonObject result{{QStringLiteral("out"), summary->path},
+                           {QStringLiteral("end_reason"), summary->endReason},
+                           {QStringLiteral("samples"), static_cast<double>(summary->samples)},
+                           {QStringLiteral("dropped"), static_cast<double>(summary->dropped)}};
+        if (!summary->fault.isEmpty())
+            result.insert(QStringLiteral("error"), summary->fault);
+        printJson(io, result);
+        return interrupts.signalNumber() ? 128 + interrupts.signalNumber() : Failure;
     }
 
     QJsonObject truth;
@@ -344,6 +418,19 @@ int cmdSimulate(const QStringList& args, Io io)
             devices::sim::ImagingOptions io_;
             io_.leadIn_s = s.videoOffset_s;
             const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(readRunFile(s.out).run, s.video, io_);
+            // [issue 15] An encoder on a full disk fails silently: count what can be read back.
+            cv::VideoCapture check(QFile::encodeName(s.video).toStdString());
+            const double readable = check.isOpened() ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0.0;
+            if (readable < vt.frames - 2) {
+                QFile::remove(s.video);
+                io.err << "needlebench simulate: "
+                       << nb::TrCli::tr("%1: only %2 of %3 frames could be written (disk full?); removed")
+                              .arg(s.video)
+                              .arg(readable)
+                              .arg(vt.frames)
+                       << '\n';
+                return Failure;
+            }
             truth.insert(QStringLiteral("video"), QJsonObject{{QStringLiteral("file"), s.video},
                                                              {QStringLiteral("offset_s"), vt.offset_s},
                                                              {QStringLiteral("fps"), vt.fps},
@@ -356,8 +443,9 @@ int cmdSimulate(const QStringList& args, Io io)
     }
     if (!s.truth.isEmpty()) {
         QSaveFile tf(s.truth);
-        if (!tf.open(QIODevice::WriteOnly) || tf.write(QJsonDocument(truth).toJson(QJsonDocument::Indented)) < 0 ||
-            !tf.commit()) {
+        const QByteArray json = QJsonDocument(truth).toJson(QJsonDocument::Indented);
+        if (!tf.open(QIODevice::WriteOnly) || tf.write(json) != json.size() || !tf.commit() ||
+            QFileInfo(s.truth).size() != json.size()) {
             io.err << "needlebench simulate: " << nb::TrCli::tr("cannot write %1: %2").arg(s.truth, tf.errorString()) << '\n';
             return Failure;
         }

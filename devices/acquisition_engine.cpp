@@ -321,6 +321,24 @@ void AcquisitionEngine::endRun()
     });
 }
 
+// [issue 15, data] endRun with a reason: how a signal (SIGTERM, SIGINT, SIGHUP) closes a run.
+void AcquisitionEngine::endRun(const QString& reason, const Metadata& extra)
+{
+    post([this, reason, extra] {
+        State& s = *state_;
+        s.runMotion = false;
+        if (s.stage.moving) {
+            try {
+                s.dev.stage->stop();
+            } catch (const DeviceError& e) {
+                raiseFault(e.device(), e.reason(), false);
+            }
+        }
+        if (s.runOpen)
+            finishRun(reason, {}, extra);
+    });
+}
+
 void AcquisitionEngine::emergencyStop()
 {
     post([this] {
@@ -362,13 +380,17 @@ void AcquisitionEngine::finishRun(const QString& reason, const QString& fault, c
         footer.set(k, v);
     footer.set(QStringLiteral("samples"), static_cast<double>(s.runPushed));
     s.recorder.close(footer);
+    // [issue 15, data] The recorder may fail while draining its last rows: then the run
+    // ended by a write error whatever the reason asked for (the recorder's footer says so).
+    const bool writeFailed = s.recorder.failed();
+    const QString endReason = writeFailed ? QStringLiteral("write_error") : reason;
     const std::uint64_t written = s.recorder.written();
-    RunSummary summary{s.runPath, reason, written, gaps + overruns, fault};
+    RunSummary summary{s.runPath, endReason, written, gaps + overruns, writeFailed && fault.isEmpty() ? s.recorder.error() : fault};
     s.runOpen = false;
     s.runMotion = false;
     s.pendingEndAt = -1.0;
     s.statusDirty = true;
-    emit message(tr("run ended (%1): %2 samples, %3 dropped, %4").arg(reason).arg(written).arg(gaps + overruns).arg(s.runPath));
+    emit message(tr("run ended (%1): %2 samples, %3 dropped, %4").arg(endReason).arg(written).arg(gaps + overruns).arg(s.runPath));
     emit runEnded(summary);
 }
 
@@ -575,6 +597,21 @@ void AcquisitionEngine::threadMain()
         }
 
         // 5. Run bookkeeping.
+        // [issue 15, data] A write error (disk full, media removed) ends the run at once:
+        // stop the axis, close with end_reason write_error, tell the operator.
+        if (s.runOpen && s.recorder.failed()) {
+            s.runMotion = false;
+            try {
+                s.dev.stage->stop();
+            } catch (const DeviceError& e) {
+                raiseFault(e.device(), e.reason(), false);
+            }
+            const QString why = s.recorder.error();
+            emit message(tr("recording failed, stage stopped: %1").arg(why));
+            finishRun(QStringLiteral("write_error"), why);
+        }
+        if (const QString w = s.recorder.takeSpaceWarning(); !w.isEmpty())
+            emit message(tr("warning: %1").arg(w));
         if (s.runOpen) {
             if (s.pendingEndAt >= 0 && s.lastTime >= s.pendingEndAt) {
                 finishRun(s.pendingEndReason, {});

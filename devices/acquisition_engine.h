@@ -109,6 +109,9 @@ public slots:
     void withdraw(double velocity_mm_s);
     void stopMotion();
     void endRun();
+    // [issue 15, data] Stops motion and closes the run with this end reason (e.g.
+    // "interrupted") and extra footer lines (e.g. signal: SIGTERM).
+    void endRun(const QString& reason, const nb::Metadata& extra);
     void emergencyStop();
 
 signals:
