@@ -134,6 +134,14 @@ QString relativeLink(const QString& fromFile, const QString& target)
     return QDir(QFileInfo(fromFile).absolutePath()).relativeFilePath(QFileInfo(target).absoluteFilePath());
 }
 
+QString portableLink(const QString& fromFile, const QString& target)
+{
+    const QString rel = relativeLink(fromFile, target);
+    if (rel.isEmpty() || rel == QLatin1String("..") || rel.startsWith(QLatin1String("../")))
+        return target.isEmpty() ? QString() : QFileInfo(target).absoluteFilePath();
+    return rel;
+}
+
 double syncOffset(const Run& run)
 {
     for (const char* key : {"sync_offset_s", "video_offset_s"}) {

@@ -67,6 +67,11 @@ QString findRunVideo(const QString& runPath, const Run& run);
 // an export writes so that the folder can be moved with its files.
 QString relativeLink(const QString& fromFile, const QString& target);
 
+// The link an export stores: relative (as above) when `target` lies in the folder of
+// `fromFile` or below it, so that the folder can move with it; absolute otherwise (a path
+// climbing out with "../" would break as soon as the folder moved).
+QString portableLink(const QString& fromFile, const QString& target);
+
 // Video frame rate when the run does not say (NTSC, as the thesis's imaging console).
 constexpr double kDefaultVideoFps = 29.97;
 

@@ -88,11 +88,11 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName, const QS
         {QStringLiteral("version"), 1},
         {QStringLiteral("run"), r.name},
         // Links relative to the sidecar, so that the export folder can be moved whole.
-        {QStringLiteral("source"), sidecarFile.isEmpty() ? r.sourcePath : relativeLink(sidecarFile, r.sourcePath)},
+        {QStringLiteral("source"), sidecarFile.isEmpty() ? r.sourcePath : portableLink(sidecarFile, r.sourcePath)},
         {QStringLiteral("source_absolute"), r.sourcePath.isEmpty() ? QString() : QFileInfo(r.sourcePath).absoluteFilePath()},
         {QStringLiteral("csv"), csvFileName},
         {QStringLiteral("video"), sidecarFile.isEmpty() || r.videoPath.isEmpty() ? QFileInfo(r.videoPath).fileName()
-                                                                                  : relativeLink(sidecarFile, r.videoPath)},
+                                                                                  : portableLink(sidecarFile, r.videoPath)},
         {QStringLiteral("samples"), qint64(r.run.size())},
         {QStringLiteral("columns"), columns},
         {QStringLiteral("metadata"), metadataObject(r.run.metadata)},

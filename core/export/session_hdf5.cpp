@@ -43,14 +43,6 @@ private:
     Closer close_;
 };
 
-bool isAscii(const QByteArray& bytes)
-{
-    for (const char c : bytes)
-        if (static_cast<unsigned char>(c) >= 0x80)
-            return false;
-    return true;
-}
-
 class Writer {
 public:
     explicit Writer(QString path) : path_(std::move(path)) {}
@@ -67,14 +59,15 @@ public:
         return id;
     }
 
-    // Fixed-length strings padded with NULs: Octave's load and MATLAB's h5read read them
-    // (Octave cannot convert variable-length strings, nor UTF-8 ones to its ASCII type, so
-    // text that is plain ASCII is marked ASCII and only other text UTF-8).
-    Handle stringType(std::size_t bytes, bool ascii) const
+    // Fixed-length strings padded with NULs: Octave's load and MATLAB's h5read read them.
+    // Octave converts neither variable-length strings nor ones marked UTF-8 (no conversion
+    // path to its ASCII type), so all text is marked ASCII: plain ASCII is exactly that, and
+    // other text keeps its UTF-8 bytes (h5py: .decode('utf-8'); MATLAB: native2unicode).
+    Handle stringType(std::size_t bytes) const
     {
         Handle t(checked(H5Tcopy(H5T_C_S1), QStringLiteral("create a string type")), H5Tclose);
         check(H5Tset_size(t, std::max<std::size_t>(bytes, 1)) >= 0 && H5Tset_strpad(t, H5T_STR_NULLPAD) >= 0 &&
-                  H5Tset_cset(t, ascii ? H5T_CSET_ASCII : H5T_CSET_UTF8) >= 0,
+                  H5Tset_cset(t, H5T_CSET_ASCII) >= 0,
               QStringLiteral("set up a string type"));
         return Handle(H5Tcopy(t), H5Tclose);
     }
@@ -82,7 +75,7 @@ public:
     void attribute(hid_t obj, const QString& name, const QString& value) const
     {
         QByteArray v = value.toUtf8();
-        const Handle type = stringType(std::size_t(v.size()), isAscii(v));
+        const Handle type = stringType(std::size_t(v.size()));
         const Handle space(checked(H5Screate(H5S_SCALAR), name), H5Sclose);
         const QByteArray n = name.toUtf8();
         if (H5Aexists(obj, n.constData()) > 0)
@@ -178,13 +171,11 @@ public:
         std::vector<QByteArray> bytes;
         bytes.reserve(std::size_t(values.size()));
         std::size_t width = 1;
-        bool ascii = true;
         for (const QString& v : values) {
             bytes.push_back(v.toUtf8());
             width = std::max(width, std::size_t(bytes.back().size()));
-            ascii = ascii && isAscii(bytes.back());
         }
-        const Handle type = stringType(width, ascii);
+        const Handle type = stringType(width);
         const Handle d = dataset(group, name, type, bytes.size());
         std::vector<char> buffer(bytes.size() * width, '\0');
         for (std::size_t i = 0; i < bytes.size(); ++i)
@@ -210,11 +201,11 @@ public:
         attribute(g, QStringLiteral("name"), r.name);
         // Links relative to this file, so that the folder can move with its run files.
         if (!r.sourcePath.isEmpty()) {
-            attribute(g, QStringLiteral("source"), relativeLink(path_, r.sourcePath));
+            attribute(g, QStringLiteral("source"), portableLink(path_, r.sourcePath));
             attribute(g, QStringLiteral("source_absolute"), QFileInfo(r.sourcePath).absoluteFilePath());
         }
         if (!r.videoPath.isEmpty()) {
-            attribute(g, QStringLiteral("video"), relativeLink(path_, r.videoPath));
+            attribute(g, QStringLiteral("video"), portableLink(path_, r.videoPath));
             attribute(g, QStringLiteral("video_absolute"), r.videoPath);
         }
         attribute(g, QStringLiteral("samples"), static_cast<long long>(r.run.size()));
