@@ -50,6 +50,17 @@ auto onFile(const QString& path, F&& f)
 
 QString num(double v, int precision = 5) { return QString::number(v, 'g', precision); }
 
+// [issue 15] A fit whose values are not finite is no result: the file is refused, named.
+void requireFinite(const QString& path, std::initializer_list<double> values)
+{
+    for (double v : values)
+        if (!std::isfinite(v))
+            throw FileFailure{nb::TrCli::tr("%1: the fit gave no finite result (forces or positions out of any measurable range?)").arg(path)};
+}
+
+// A statistic undefined for one run (a standard deviation) is left empty, not reported as 0.
+QJsonValue statistic(double v, std::size_t runs) { return runs < 2 || !std::isfinite(v) ? QJsonValue() : QJsonValue(v); }
+
 QJsonObject quadraticJson(const QuadraticStiffnessFit& q)
 {
     return {{QStringLiteral("a1_N_per_mm"), q.model.a1_N_per_mm},
@@ -167,7 +178,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
             });
         }
         segments.push_back(stiffnessSegment(run, events.back()));
-        onFile(path, [&] { return fitStiffness(segments.back()); });  // names the file if a run is unusable
+        const StiffnessFit one = onFile(path, [&] { return fitStiffness(segments.back()); });  // names the file if a run is unusable
+        requireFinite(path, {one.quadratic.model.a1_N_per_mm, one.quadratic.model.a2_N_per_mm2, one.quadratic.rms_N});
     }
     const StiffnessSummary sum = fitStiffnessRuns(segments);
 
@@ -195,8 +207,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
                        {QStringLiteral("mean_of_runs"),
                         QJsonObject{{QStringLiteral("a1_N_per_mm"), sum.meanOfRuns.a1_N_per_mm},
                                     {QStringLiteral("a2_N_per_mm2"), sum.meanOfRuns.a2_N_per_mm2},
-                                    {QStringLiteral("a1_std_N_per_mm"), sum.stdDevOfRuns.a1_N_per_mm},
-                                    {QStringLiteral("a2_std_N_per_mm2"), sum.stdDevOfRuns.a2_N_per_mm2}}}});
+                                    {QStringLiteral("a1_std_N_per_mm"), statistic(sum.stdDevOfRuns.a1_N_per_mm, sum.runs.size())},
+                                    {QStringLiteral("a2_std_N_per_mm2"), statistic(sum.stdDevOfRuns.a2_N_per_mm2, sum.runs.size())}}}});
         return Ok;
     }
     io.out << nb::TrCli::tr("stiffness f = a1*x + a2*x^2, x = depth past contact [mm]\n");
@@ -237,6 +249,9 @@ QJsonObject groupJson(const FrictionGroup& g, bool withFrequency)
         mean.insert(QStringLiteral("m_est_kg"), *g.massEstimateMean_kg);
         sd.insert(QStringLiteral("m_est_kg"), *g.massEstimateStdDev_kg);
     }
+    if (g.runs < 2)  // [issue 15] a standard deviation of one run is undefined: left empty
+        for (const QString& k : sd.keys())
+            sd.insert(k, QJsonValue());
     QJsonObject o{{QStringLiteral("runs"), qint64(g.runs)}, {QStringLiteral("mean"), mean}, {QStringLiteral("std"), sd}};
     if (withFrequency)
         o.insert(QStringLiteral("frequency_hz"), g.frequency_hz);
@@ -316,6 +331,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
             }
         }
         fits.push_back(onFile(path, [&] { return fitFriction(run, options, phases); }));
+        const KarnoppModel& k = fits.back().model;
+        requireFinite(path, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, k.Dp_N, k.Dn_N, fits.back().rms_N});
     }
     const auto groups = groupByFrequency(fits);
     const FrictionGroup all = overall(fits);
@@ -357,12 +374,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
     io.out << nb::TrCli::tr("group             statistic freq_Hz ") << (m ? nb::TrCli::tr("  m_est_kg ") : QString())
            << nb::TrCli::tr("       Cp        Bp        Cn        Bn        Dp        Dn\n");
     auto line = [&](const QString& group, const QString& stat, const QString& freq, std::optional<double> mass,
-                    const KarnoppPerLength& p) {
+                    const KarnoppPerLength& p, bool defined = true) {
         io.out << group.left(17).leftJustified(17) << ' ' << stat.leftJustified(9) << ' ' << freq.rightJustified(7) << ' ';
         if (m)
-            io.out << (mass ? num(*mass, 4) : QString()).rightJustified(10) << ' ';
+            io.out << (mass && defined ? num(*mass, 4) : QString()).rightJustified(10) << ' ';
         for (double v : {p.Cp_N_per_m, p.bp_Ns_per_m2, p.Cn_N_per_m, p.bn_Ns_per_m2, p.Dp_N_per_m, p.Dn_N_per_m})
-            io.out << num(v, 5).rightJustified(9) << ' ';
+            io.out << (defined ? num(v, 5) : QString()).rightJustified(9) << ' ';
         io.out << '\n';
     };
     for (std::size_t i = 0; i < fits.size(); ++i)
@@ -371,10 +388,10 @@ int fitFrictionCommand(const QStringList& args, Io io)
     for (const FrictionGroup& g : groups) {
         const QString name = nb::TrCli::tr("%1Hz (%2 runs)").arg(num(g.frequency_hz, 3)).arg(g.runs);
         line(name, nb::TrCli::tr("mean"), num(g.frequency_hz, 3), g.massEstimateMean_kg, g.mean);
-        line(name, nb::TrCli::tr("std"), num(g.frequency_hz, 3), g.massEstimateStdDev_kg, g.stdDev);
+        line(name, nb::TrCli::tr("std"), num(g.frequency_hz, 3), g.massEstimateStdDev_kg, g.stdDev, g.runs > 1);
     }
     line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("mean"), QString(), all.massEstimateMean_kg, all.mean);
-    line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev);
+    line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev, all.runs > 1);
     for (std::size_t i = 0; i < fits.size(); ++i)
         io.out << nb::TrCli::tr("%1: D from %2, rms %3 N\n")
                       .arg(QFileInfo(files[qsizetype(i)]).fileName(), fits[i].staticSource, num(fits[i].rms_N, 3));

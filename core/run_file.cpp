@@ -276,9 +276,11 @@ void appendNumber(QByteArray& out, double v, int decimals)
     if (!std::isfinite(v))
         return;  // empty field: missing value
     char buf[64];
-    const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-    if (ec == std::errc())
-        out.append(buf, ptr - buf);
+    std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+    if (r.ec != std::errc())  // too large for fixed notation: the shortest exact form instead
+        r = std::to_chars(buf, buf + sizeof buf, v);
+    if (r.ec == std::errc())
+        out.append(buf, r.ptr - buf);
 }
 
 QByteArray metadataBlock(const Metadata& m)

@@ -150,6 +150,21 @@ private slots:
         }
         writeFile(d.filePath(QStringLiteral("big.csv")), big);
         writeFile(d.filePath(QStringLiteral("tiny.csv")), tiny);
+        // A real run with a puncture, its forces scaled to 1e160 N: gets as far as the fit.
+        const QString real = d.filePath(QStringLiteral("real.csv"));
+        QCOMPARE(runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"), QStringLiteral("--out"), real}).code, 0);
+        nb::Run scaled = nb::readRunFile(real).run;
+        for (double& f : scaled.force_N)
+            f *= 1e159;
+        nb::writeRunFile(d.filePath(QStringLiteral("scaled.csv")), scaled);
+        QFile::remove(real);
+        {
+            const auto r = runCli({QStringLiteral("fit"), QStringLiteral("stiffness"), d.filePath(QStringLiteral("scaled.csv")), QStringLiteral("--json")});
+            checkClean(r);
+            QCOMPARE(r.code, 1);
+            QVERIFY2(r.err.contains(QLatin1String("no finite result")), qPrintable(r.err));
+            QVERIFY(!r.out.contains(QLatin1String("null")));
+        }
 
         for (const char* name : {"huge.csv", "control.csv"}) {
             const auto r = runCli({QStringLiteral("fit"), QStringLiteral("stiffness"), d.filePath(QLatin1String(name))});
