@@ -314,6 +314,38 @@ private slots:
         QCOMPARE(csv[1][5].toLongLong(), rows[0].start_frame);
     }
 
+    // Issue 15: the peak is the extreme in the direction of motion; frames only with a video.
+    void peakFollowsMotionAndFramesNeedAVideo()
+    {
+        nb::Run run;
+        for (int i = 0; i < 200; ++i) {
+            const double t = i * 0.01;
+            run.time_s.push_back(t);
+            // In 1 s, out 1 s: force positive going in, negative coming out.
+            run.position_mm.push_back(t < 1.0 ? 10.0 * t : 10.0 * (2.0 - t));
+            run.force_N.push_back(t < 1.0 ? 0.5 + t : -0.2 - (t - 1.0));
+        }
+        const nb::Labels labels{{QStringLiteral("phases"), QStringLiteral("insertion"), 0.0, 1.0, QString()},
+                                {QStringLiteral("phases"), QStringLiteral("withdrawal"), 1.0, 2.0, QString()}};
+        nb::FrameClock noVideo = frameClockFor(run);
+        QVERIFY(!noVideo.hasVideo);
+        const auto rows = labelIntervals(run, labels, noVideo);
+        QCOMPARE(rows.size(), std::size_t(2));
+        QVERIFY(std::abs(rows[0].peak_force_N - 1.49) < 1e-9);
+        QVERIFY(std::abs(rows[1].peak_force_N - (-1.19)) < 1e-9);  // the most negative, not the least
+        QCOMPARE(rows[0].start_frame, -1LL);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("t.csv"));
+        writeLabelIntervalsCsv(path, rows);
+        const auto csv = readCsv(path);
+        QVERIFY(csv[1][5].isEmpty() && csv[1][6].isEmpty());
+        run.metadata.set(QStringLiteral("video_file"), QStringLiteral("v.avi"));
+        QVERIFY(frameClockFor(run).hasVideo);
+        QCOMPARE(labelIntervals(run, labels, frameClockFor(run))[1].start_frame, (long long)std::floor(1.0 * 29.97));
+        // A label far beyond any video has no frame (not a wrapped-around integer).
+        QCOMPARE(frameClockFor(run).frameAt(1e300), -1LL);
+    }
+
     void sessionHdf5RoundTrip()
     {
         QTemporaryDir dir;
@@ -473,7 +505,11 @@ private slots:
         const QString tex = QString::fromUtf8(fitTableLatex(t));
         QVERIFY(tex.contains(QStringLiteral("\\begin{tabular}{lrr}")));
         QVERIFY(tex.contains(QStringLiteral("liver & $a_1$ & r\\textasciicircum{}2 \\& more \\\\")));
-        QVERIFY(tex.contains(QStringLiteral(" & [N/mm] &  \\\\")));
+        QVERIFY(tex.contains(QStringLiteral(" & [$\\mathrm{N}/\\mathrm{mm}$] &  \\\\")));
+        // Units typeset, not escaped: powers raised, products with a thin space.
+        QCOMPARE(latexUnit(QStringLiteral("N/mm^2")), QStringLiteral("$\\mathrm{N}/\\mathrm{mm}^{2}$"));
+        QCOMPARE(latexUnit(QStringLiteral("N s/m^2")), QStringLiteral("$\\mathrm{N}\\,\\mathrm{s}/\\mathrm{m}^{2}$"));
+        QCOMPARE(latexUnit(QStringLiteral("N·s/m²")), QStringLiteral("$\\mathrm{N}\\,\\mathrm{s}/\\mathrm{m}^{2}$"));
         QVERIFY(tex.contains(QStringLiteral("liver\\_1 & 0.0480 & 0.995 \\\\")));
         QVERIFY(tex.contains(QStringLiteral("pooled & 0.0500 & -- \\\\")));
         QVERIFY(tex.contains(QStringLiteral("\\caption{Pooled fits (4 mm/s)}")));
