@@ -214,13 +214,18 @@ Session Session::open(const QString& dir)
     const QJsonObject o = readJson(path);
     Session s;
     s.dir_ = QDir(dir).absolutePath();
-    s.info_.organ = o[QStringLiteral("organ")].toString();
-    s.info_.specimen = o[QStringLiteral("specimen")].toString();
-    s.info_.tip = o[QStringLiteral("tip")].toString();
+    // Text fields stay text; one typed as a number by hand (specimen: 12) is kept as written.
+    auto text = [&](const char* key) {
+        const QJsonValue v = o[QLatin1String(key)];
+        return v.isDouble() ? QString::number(v.toDouble(), 'g', 17) : v.toString();
+    };
+    s.info_.organ = text("organ");
+    s.info_.specimen = text("specimen");
+    s.info_.tip = text("tip");
     s.info_.thickness_mm = o[QStringLiteral("thickness_mm")].toDouble();
-    s.info_.operatorName = o[QStringLiteral("operator")].toString();
-    s.info_.protocol = o[QStringLiteral("protocol")].toString();
-    s.info_.notes = o[QStringLiteral("notes")].toString();
+    s.info_.operatorName = text("operator");
+    s.info_.protocol = text("protocol");
+    s.info_.notes = text("notes");
     s.info_.created = QDateTime::fromString(o[QStringLiteral("created")].toString(), Qt::ISODate);
     s.activeCalibration_ = o[QStringLiteral("active_calibration")].toString();
     return s;
