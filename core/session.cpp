@@ -98,11 +98,11 @@ RunState runStateForEndReason(const QString& r)
         return RunState::Complete;
     if (r == QLatin1String("force_limit"))
         return RunState::StoppedByLimit;
-    if (r == QLatin1String("fault"))
+    if (r == QLatin1String("fault") || r == QLatin1String("write_error"))  // the disk failed: as a device would
         return RunState::Fault;
     if (r == QLatin1String("recovered"))
         return RunState::Recovered;
-    return RunState::Stopped;  // stopped, aborted, emergency_stop, ...
+    return RunState::Stopped;  // stopped, aborted, interrupted (by a signal; the file is whole), ...
 }
 
 QString runStateName(RunState state)
