@@ -121,6 +121,19 @@ private slots:
         QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("write_error"));
     }
 
+    // Free space is checked before a run starts: on a disk with less than a megabyte free the
+    // run is refused, naming the file and what is free.
+    void tooLittleSpaceRefusesTheRun()
+    {
+        const QString out = QDir(tiny).filePath(QStringLiteral("run.csv"));
+        const auto r = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+                               QStringLiteral("--out"), out});
+        checkClean(r);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(out) && r.err.contains(QLatin1String("kB free")), qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(out));
+    }
+
     void exportsOntoAFullDiskFailCleanly()
     {
         QTemporaryDir session;

@@ -9,10 +9,12 @@
 
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 #include <csignal>
+#include <sys/file.h>
 
 using nbtest::runCli;
 
@@ -86,6 +88,62 @@ private slots:
         QCOMPARE(read.run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("interrupted"));
         QCOMPARE(read.run.footer.value(QStringLiteral("signal"), QString()), name);
         QVERIFY(read.run.size() > 100);
+    }
+
+    // The same for `acquire` (simulated devices on the wall clock).
+    void acquireClosesTheRunOnSigint()
+    {
+        QTemporaryDir dir, config;
+        const QString out = dir.filePath(QStringLiteral("acq.csv"));
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("sim"), QStringLiteral("--stage"),
+                                                QStringLiteral("sim"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+                                                QStringLiteral("--out"), out});
+        QVERIFY(p.waitForStarted());
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < 20000 && QFileInfo(out).size() < 2000)
+            QTest::qWait(100);
+        QVERIFY2(QFileInfo(out).size() >= 2000, "acquire did not start recording");
+        ::kill(pid_t(p.processId()), SIGINT);
+        QVERIFY(p.waitForFinished(10000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 128 + SIGINT);
+        const nb::Run run = nb::readRunFile(out).run;
+        QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("interrupted"));
+        QCOMPARE(run.footer.value(QStringLiteral("signal"), QString()), QStringLiteral("SIGINT"));
+    }
+
+    // A .part left by a killed export goes with the next export; one still being written
+    // (locked) stops a second export of the same file with a message.
+    void leftoverPartFilesAreCleaned()
+    {
+        QTemporaryDir session, out;
+        QCOMPARE(runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"), QStringLiteral("--out"),
+                         QDir(session.path()).filePath(QStringLiteral("run1.csv"))}).code, 0);
+        const QString h5 = QDir(out.path()).filePath(QStringLiteral("s.h5"));
+        writeFile(h5 + QStringLiteral(".part"), QByteArray(30000, 'x'));
+        writeFile(QDir(out.path()).filePath(QStringLiteral("old.h5.part")), QByteArray(1000, 'x'));
+        const auto r = runCli({QStringLiteral("export"), session.path(), QStringLiteral("--format"), QStringLiteral("hdf5"),
+                               QStringLiteral("--out"), h5});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.err.contains(QLatin1String("old.h5.part")), qPrintable(r.err));
+        QCOMPARE(QDir(out.path()).entryList({QStringLiteral("*.part")}, QDir::Files | QDir::Hidden), QStringList());
+        QVERIFY(QFileInfo(h5).size() > 1000);
+        // A .part held by a live writer is left alone and the second export refused.
+        QFile held(h5 + QStringLiteral(".part"));
+        QVERIFY(held.open(QIODevice::WriteOnly));
+        QCOMPARE(::flock(held.handle(), LOCK_EX | LOCK_NB), 0);
+        const auto second = runCli({QStringLiteral("export"), session.path(), QStringLiteral("--format"), QStringLiteral("hdf5"),
+                                    QStringLiteral("--out"), h5});
+        checkClean(second);
+        QCOMPARE(second.code, 1);
+        QVERIFY2(second.err.contains(QLatin1String("another export")), qPrintable(second.err));
+        QVERIFY(QFileInfo::exists(h5 + QStringLiteral(".part")));
     }
 
     void secondWriterIsRefused()
