@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <charconv>
 #include <cmath>
@@ -358,7 +359,8 @@ RunFileWriter::~RunFileWriter()
             writeBuffer();
         } catch (const RunFileError&) {
         }
-        ::ftruncate(fd_, committed_);
+        if (regular_)
+            ::ftruncate(fd_, committed_);
         ::close(fd_);
         fd_ = -1;
     }
@@ -382,7 +384,10 @@ void RunFileWriter::open(const QString& path, const Metadata& metadata, const QS
             throw RunFileError(path, 0, nb::TrCore::tr("another process is recording to this file; it was left untouched"));
         throw RunFileError(path, 0, nb::TrCore::tr("cannot lock: %1").arg(systemError(err)));
     }
-    if (::ftruncate(fd, 0) != 0) {
+    // A device or pipe (/dev/null, a FIFO) is written to as it is: nothing to cut or reserve.
+    struct stat st {};
+    regular_ = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    if (regular_ && ::ftruncate(fd, 0) != 0) {
         const int err = errno;
         ::close(fd);
         throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(systemError(err)));
@@ -394,7 +399,7 @@ void RunFileWriter::open(const QString& path, const Metadata& metadata, const QS
     textCount_ = static_cast<std::size_t>(textColumns.size());
     rows_ = bufferedRows_ = rowsOnDisk_ = 0;
     committed_ = reserved_ = 0;
-    canReserve_ = true;
+    canReserve_ = regular_;
     failed_ = false;
     buffer_ = metadataBlock(metadata);
     buffer_ += (numericColumns + textColumns).join(QLatin1Char(',')).toUtf8() + '\n';
@@ -446,7 +451,7 @@ void RunFileWriter::reserve(qint64 needed)
         return;
     }
     const int err = errno;
-    if (err == EOPNOTSUPP || err == ENOSYS || err == EINVAL) {
+    if (err == EOPNOTSUPP || err == ENOSYS || err == EINVAL || err == ENODEV || err == ESPIPE) {
         canReserve_ = false;  // this file system cannot: plain writes, footer as space allows
         return;
     }
@@ -471,7 +476,7 @@ void RunFileWriter::writeOrTruncate(const QByteArray& bytes)
         if (n <= 0) {
             const int err = n < 0 ? errno : ENOSPC;
             // Cut back to the last whole row: a reader sees a shorter run, never half a row.
-            if (::ftruncate(fd_, committed_) == 0)
+            if (regular_ && ::ftruncate(fd_, committed_) == 0)
                 ::lseek(fd_, committed_, SEEK_SET);
             fail(nb::TrCore::tr("write failed after %1 rows: %2").arg(rowsOnDisk_).arg(systemError(err)));
         }
@@ -525,7 +530,8 @@ void RunFileWriter::close(const Metadata& footer)
             error = e.reason();
     }
     // Give back the reserve beyond the end of the file.
-    ::ftruncate(fd_, committed_);
+    if (regular_)
+        ::ftruncate(fd_, committed_);
     ::close(fd_);
     fd_ = -1;
     if (!error.isEmpty())

@@ -117,6 +117,7 @@ private:
     qint64 committed_ = 0;  // file size up to the last whole row
     qint64 reserved_ = 0;   // allocated (fallocate KEEP_SIZE) up to here
     bool canReserve_ = true;
+    bool regular_ = true;  // a regular file (not /dev/null, a FIFO): cut back and reserved
     bool failed_ = false;
 };
 

@@ -4,6 +4,7 @@
 #include "core/run_file.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -66,7 +67,9 @@ void Recorder::open(const QString& path, const Metadata& metadata, bool truthCol
         columns << QStringLiteral("tissue_position_mm");
         text << QStringLiteral("phase");
     }
-    if (const auto free = freeBytes(path); free && *free < kMinFreeBytesToRecord)
+    const QFileInfo target(path);
+    const bool onDisk = !target.exists() || target.isFile();  // not /dev/null or a pipe
+    if (const auto free = onDisk ? freeBytes(path) : std::nullopt; free && *free < kMinFreeBytesToRecord)
         throw RunFileError(path, 0, QCoreApplication::translate("nb::devices::Recorder",
                                                                 "only %1 kB free on the disk; a recording needs at least %2 kB")
                                         .arg(*free / 1024)

@@ -3,6 +3,7 @@
 #include "core/excerpt.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
@@ -218,6 +219,12 @@ private slots:
         nb::RunFileWriter third;
         third.open(path, m, cols);
         third.close();
+        // A device that is always full: a clean error naming the cause, not a crash.
+        if (QFileInfo::exists(QStringLiteral("/dev/full"))) {
+            nb::RunFileWriter full;
+            QVERIFY_THROWS_EXCEPTION(nb::RunFileError, full.open(QStringLiteral("/dev/full"), m, cols));
+            QVERIFY(!full.isOpen());
+        }
     }
 
     // Issue 15: metadata in linear time (the benchmark prints the time); every key kept.
