@@ -25,14 +25,14 @@ extern "C" void onSignal(int signo)
 
 }  // namespace
 
-InterruptWatcher::InterruptWatcher(QObject* parent) : QObject(parent)
+bool InterruptWatcher::catchEarly()
 {
+    if (g_pipe[0] >= 0)
+        return true;
     if (::pipe2(g_pipe, O_CLOEXEC | O_NONBLOCK) != 0) {
         g_pipe[0] = g_pipe[1] = -1;
-        return;  // without a pipe the default handlers stay: the process still ends
+        return false;  // without a pipe the default handlers stay: the process still ends
     }
-    notifier_ = new QSocketNotifier(g_pipe[0], QSocketNotifier::Read, this);
-    connect(notifier_, &QSocketNotifier::activated, this, &InterruptWatcher::readPipe);
     for (std::size_t i = 0; i < kSignals.size(); ++i) {
         struct sigaction sa {};
         sa.sa_handler = onSignal;
@@ -40,6 +40,17 @@ InterruptWatcher::InterruptWatcher(QObject* parent) : QObject(parent)
         sa.sa_flags = SA_RESTART;
         ::sigaction(kSignals[i], &sa, &g_previous[i]);
     }
+    return true;
+}
+
+InterruptWatcher::InterruptWatcher(QObject* parent) : QObject(parent)
+{
+    if (!catchEarly())
+        return;
+    notifier_ = new QSocketNotifier(g_pipe[0], QSocketNotifier::Read, this);
+    connect(notifier_, &QSocketNotifier::activated, this, &InterruptWatcher::readPipe);
+    // A signal caught before the watcher existed is waiting in the pipe.
+    QMetaObject::invokeMethod(this, &InterruptWatcher::readPipe, Qt::QueuedConnection);
 }
 
 InterruptWatcher::~InterruptWatcher()

@@ -19,6 +19,10 @@ public:
     explicit InterruptWatcher(QObject* parent = nullptr);
     ~InterruptWatcher() override;
 
+    // Catches the signals from now on (the handlers only), to be handled once a watcher
+    // exists: for start-up, before the application object. False when no pipe could be made.
+    static bool catchEarly();
+
     // The first signal received (0 if none).
     int signalNumber() const { return first_; }
     // "SIGTERM", "SIGINT", "SIGHUP", else "signal N".

@@ -76,6 +76,8 @@ int main(int argc, char** argv)
         }, err);
     }
 
+    // A signal while the window starts up is kept and handled once it is up.
+    nb::InterruptWatcher::catchEarly();
     return nb::runGuarded(QStringLiteral("(window)"), [&] {
         QApplication app(argc, argv);
         nb::installTranslation(app);

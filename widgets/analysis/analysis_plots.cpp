@@ -287,6 +287,8 @@ void plotValidation(QCustomPlot* plot, const ValidationResult& v)
         sim->setPen(QPen(QColor(213, 94, 0), 2.0, Qt::DashLine));
         sim->setName(nb::TrViews::tr("summed model"));
     }
+    // After the puncture the force stays low: the top right is free for the legend.
+    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     fitRanges(plot);
     plot->replot();
 }

@@ -85,6 +85,7 @@ public:
             if (auto* title = qobject_cast<QCPTextElement*>(plot->plotLayout()->element(0, 0))) {
                 title_ = title;
                 titleFont_ = title->font();
+                titleText_ = title->text();
                 title->setFont(sized(titleFont_, 9, true));
             }
         for (int i = 0; i < plot->plottableCount(); ++i) {
@@ -103,8 +104,28 @@ public:
             }
         }
     }
+    // A title wider than the figure is broken at its ": " or " (" (a one-column figure has
+    // room for about 50 characters at 9 pt).
+    void fitTitle(int width_pt)
+    {
+        if (!title_)
+            return;
+        QString text = titleText_;
+        const QFontMetricsF metrics(title_->font());
+        for (const QString& at : {QStringLiteral(" ("), QStringLiteral(": ")}) {
+            if (metrics.horizontalAdvance(text.section(QLatin1Char('\n'), 0, 0)) <= width_pt * 0.95)
+                break;
+            const qsizetype i = text.lastIndexOf(at);
+            if (i > 0)
+                text = text.left(i + (at == QLatin1String(": ") ? 1 : 0)) + QLatin1Char('\n') + text.mid(i + 1 + (at == QLatin1String(": ") ? 1 : 0));
+        }
+        title_->setText(text);
+    }
+
     ~JournalStyle()
     {
+        if (title_)
+            title_->setText(titleText_);
         for (const AxisState& s : axes_) {
             s.axis->setLabelFont(s.label);
             s.axis->setTickLabelFont(s.tick);
@@ -143,6 +164,7 @@ private:
     QCustomPlot* plot_;
     std::vector<AxisState> axes_;
     QFont legendFont_, titleFont_;
+    QString titleText_;
     QSize legendIcon_;
     QCPTextElement* title_ = nullptr;
     std::vector<std::pair<QCPAbstractPlottable*, QPen>> pens_;
@@ -161,7 +183,7 @@ QStringList saveJournalFigures(QCustomPlot* plot, const QString& pngPath)
     const QFileInfo fi(pngPath);
     const QString base = fi.dir().filePath(fi.completeBaseName());
     QStringList written;
-    const JournalStyle style(plot);
+    JournalStyle style(plot);
     constexpr double kPointsPerMm = 72.0 / 25.4;
     constexpr int kDpi = 300;
     for (const auto& [size, suffix] : {std::pair{kTwoColumns, QString()}, std::pair{kOneColumn, QStringLiteral("_85mm")}}) {
@@ -169,6 +191,7 @@ QStringList saveJournalFigures(QCustomPlot* plot, const QString& pngPath)
         // the size asked for, the PNG is scaled to 300 dpi.
         const int w = int(std::lround(size.width_mm * kPointsPerMm));
         const int h = int(std::lround(size.height_mm * kPointsPerMm));
+        style.fitTitle(w);
         for (const char* ext : {"png", "pdf", "svg"}) {
             const QString path = base + suffix + QLatin1Char('.') + QLatin1String(ext);
             render(plot, path, w, h, kDpi / 72.0, kDpi, 72);
