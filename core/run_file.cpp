@@ -1,4 +1,5 @@
 #include "run_file.h"
+#include "core/disk_space.h"
 #include "core/excerpt.h"
 #include "core/tr.h"
 
@@ -337,8 +338,12 @@ void writeRunFile(const QString& path, const Run& run)
     }
     out += metadataBlock(run.footer);
     file.write(out);
-    if (!file.commit())
-        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
+    if (!file.commit()) {
+        // QSaveFile says "Unknown error" for a failed flush; a full disk is the usual cause.
+        const auto free = freeBytes(path);
+        throw RunFileError(path, 0, free && *free < 64 * 1024 ? nb::TrCore::tr("cannot write: no space left on the disk")
+                                                              : nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
+    }
 }
 
 namespace {
