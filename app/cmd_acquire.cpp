@@ -3,6 +3,7 @@
 // falling back to the settings (devices/daq, devices/stage) and then to the simulated rig.
 
 #include "cli_support.h"
+#include "interrupt_watcher.h"
 #include "core/tr.h"
 
 #include "devices/acquisition_engine.h"
@@ -138,12 +139,35 @@ int cmdAcquire(const QStringList& args, Io io)
         plan.metadata.set(QStringLiteral("depth_mm"), *d);
     }
 
-    const devices::RunOnceResult run = devices::runOnce(engine, plan);
+    // A signal stops the stage and closes the run as "interrupted"; a second one (or one
+    // before the run started) does not wait.
+    InterruptWatcher interrupts;
+    int received = 0;
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, [&](int signo) {
+        ++received;
+        io.err << "needlebench acquire: "
+               << nb::TrCli::tr("%1 received: stopping the stage and closing the run").arg(InterruptWatcher::signalName(signo))
+               << '\n';
+        io.err.flush();
+    });
+    devices::RunOnceOptions options;
+    options.interruption = [&] {
+        devices::RunOnceOptions::Interruption i;
+        i.count = received;
+        if (received)
+            i.footer.set(QStringLiteral("signal"), InterruptWatcher::signalName(interrupts.signalNumber()));
+        return i;
+    };
+    const devices::RunOnceResult run = devices::runOnce(engine, plan, options);
     const std::optional<devices::RunSummary>& summary = run.summary;
     if (!summary) {
         io.err << "needlebench acquire: " << run.error << '\n';
-        return Failure;
+        return interrupts.signalNumber() ? 128 + interrupts.signalNumber() : Failure;
     }
+    if (summary->endReason == EndReason::WriteError)
+        io.err << "needlebench acquire: "
+               << nb::TrCli::tr("recording failed: %1; the run file keeps %2 whole rows").arg(summary->fault).arg(summary->samples)
+               << '\n';
     QJsonObject result{{QStringLiteral("out"), summary->path},
                        {QStringLiteral("end_reason"), fileName(summary->endReason)},
                        {QStringLiteral("samples"), double(summary->samples)},
@@ -152,7 +176,9 @@ int cmdAcquire(const QStringList& args, Io io)
     if (!summary->fault.isEmpty())
         result.insert(QStringLiteral("fault"), summary->fault);
     printJson(io, result);
-    return summary->endReason == EndReason::Fault ? Failure : Ok;
+    if (interrupts.signalNumber())
+        return 128 + interrupts.signalNumber();
+    return summary->endReason == EndReason::Fault || summary->endReason == EndReason::WriteError ? Failure : Ok;
 }
 
 }  // namespace nb::cli

@@ -10,12 +10,14 @@
 #include "core/export/label_intervals.h"
 #include "core/export/run_csv_export.h"
 #include "core/export/session_hdf5.h"
+#include "core/export/stale_parts.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QScopeGuard>
 #include <csignal>
+#include <unistd.h>
 
 namespace nb::cli {
 
@@ -24,26 +26,23 @@ namespace {
 volatile std::sig_atomic_t interrupted = 0;
 void onInterrupt(int) { interrupted = 1; }
 
-// The video beside a run: named in its metadata (`video`, relative to the run file) or
-// sharing its base name.
-QString videoFor(const DatasetRun& r)
+// --copy-video: the video beside the export (a hard link when the file system allows, else a
+// copy), so that the export folder carries it. Returns the path linked to (the original when
+// it could not be placed).
+QString placeVideo(const QString& video, const QDir& outDir, QStringList* written, QTextStream& err)
 {
-    if (r.sourcePath.isEmpty())
-        return {};
-    const QFileInfo fi(r.sourcePath);
-    for (const char* key : {"video", "video_file", "video_path"}) {
-        if (const auto v = r.run.meta(QString::fromLatin1(key)); v && !v->trimmed().isEmpty()) {
-            const QString p = QFileInfo(v->trimmed()).isAbsolute() ? v->trimmed() : fi.dir().filePath(v->trimmed());
-            if (QFileInfo::exists(p))
-                return p;
-        }
+    if (video.isEmpty())
+        return video;
+    const QString target = outDir.absoluteFilePath(QFileInfo(video).fileName());
+    if (QFileInfo(target).absoluteFilePath() == QFileInfo(video).absoluteFilePath())
+        return video;
+    QFile::remove(target);
+    if (::link(QFile::encodeName(video).constData(), QFile::encodeName(target).constData()) != 0 && !QFile::copy(video, target)) {
+        err << nb::TrCli::tr("warning: %1: could not copy the video beside the export; linked where it is").arg(target) << '\n';
+        return video;
     }
-    for (const char* ext : {"mp4", "avi", "mkv", "mov"}) {
-        const QString p = fi.dir().filePath(fi.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
-        if (QFileInfo::exists(p))
-            return p;
-    }
-    return {};
+    *written << target;
+    return target;
 }
 
 }  // namespace
@@ -59,8 +58,12 @@ int cmdExport(const QStringList& args, Io io)
                                        "force CSV linked (OUT is a folder)"),
                                     QStringLiteral("csv|hdf5|eaf"));
     const QCommandLineOption out(QStringLiteral("out"), nb::TrCli::tr("where to write"), QStringLiteral("PATH"));
+    const QCommandLineOption copyVideo(QStringLiteral("copy-video"),
+                                       nb::TrCli::tr("put each run's video beside the export (hard link, else copy) and link "
+                                                     "that, so the export folder can be moved or shared on its own"));
     parser.addOption(format);
     parser.addOption(out);
+    parser.addOption(copyVideo);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("export"), args, io, 1, 1, &code))
         return code;
@@ -88,7 +91,7 @@ int cmdExport(const QStringList& args, Io io)
     }
     for (const QString& w : loaded.warnings)
         io.err << nb::TrCli::tr("warning: %1").arg(w) << '\n';
-    const Dataset& d = loaded.dataset;
+    Dataset& d = loaded.dataset;
     if (d.runs.empty()) {
         io.err << "needlebench export: " << nb::TrCli::tr("%1: no run files (*.csv with time_s,position_mm,force_N)").arg(dir) << '\n';
         return Failure;
@@ -100,6 +103,17 @@ int cmdExport(const QStringList& args, Io io)
     const ExportProgress progress = [](qint64, qint64) { return interrupted == 0; };
     QStringList written;
     try {
+        const QString outFolder = fmt == QLatin1String("hdf5") ? QFileInfo(target).absolutePath() : target;
+        for (const QString& p : removeStaleParts(outFolder))
+            io.err << nb::TrCli::tr("warning: removed %1, left by an export that did not finish").arg(p) << '\n';
+        if (parser.isSet(copyVideo)) {
+            if (!QDir().mkpath(outFolder)) {
+                io.err << "needlebench export: " << nb::TrCli::tr("%1: cannot create the folder").arg(outFolder) << '\n';
+                return Failure;
+            }
+            for (DatasetRun& r : d.runs)
+                r.videoPath = placeVideo(r.videoPath, QDir(outFolder), &written, io.err);
+        }
         if (fmt == QLatin1String("hdf5")) {
             io.out << nb::TrCli::tr("writing %1 runs to %2").arg(d.runs.size()).arg(target) << '\n';
             io.out.flush();
@@ -133,11 +147,11 @@ int cmdExport(const QStringList& args, Io io)
                 written << csv << sidecarPath(csv);
                 if (fmt == QLatin1String("csv")) {
                     const QString intervals = outDir.filePath(r.name + QStringLiteral(".intervals.csv"));
-                    writeLabelIntervalsCsv(intervals, labelIntervals(r.run, r.labels, frameClockFor(r.run)));
+                    writeLabelIntervalsCsv(intervals, labelIntervals(r.run, r.labels, frameClockFor(r)));
                     written << intervals;
                 } else {
                     const QString eaf = outDir.filePath(r.name + QStringLiteral(".eaf"));
-                    writeEaf(eaf, r, {csv, videoFor(r)});
+                    writeEaf(eaf, r, {csv, r.videoPath, {}});
                     written << eaf;
                 }
             }

@@ -51,6 +51,17 @@ auto onFile(const QString& path, F&& f)
 
 QString num(double v, int precision = 5) { return QString::number(v, 'g', precision); }
 
+// [issue 15] A fit whose values are not finite is no result: the file is refused, named.
+void requireFinite(const QString& path, std::initializer_list<double> values)
+{
+    for (double v : values)
+        if (!std::isfinite(v))
+            throw FileFailure{nb::TrCli::tr("%1: the fit gave no finite result (forces or positions out of any measurable range?)").arg(path)};
+}
+
+// A statistic undefined for one run (a standard deviation) is left empty, not reported as 0.
+QJsonValue statistic(double v, std::size_t runs) { return runs < 2 || !std::isfinite(v) ? QJsonValue() : QJsonValue(v); }
+
 QJsonObject alternativesJson(const StiffnessFit& f)
 {
     return {{QStringLiteral("cubic"),
@@ -160,7 +171,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
             });
         }
         segments.push_back(stiffnessSegment(run, events.back()));
-        onFile(path, [&] { return fitStiffness(segments.back()); });  // names the file if a run is unusable
+        const StiffnessFit one = onFile(path, [&] { return fitStiffness(segments.back()); });  // names the file if a run is unusable
+        requireFinite(path, {one.quadratic.model.a1_N_per_mm, one.quadratic.model.a2_N_per_mm2, one.quadratic.rms_N});
     }
     const StiffnessSummary sum = fitStiffnessRuns(segments);
 
@@ -188,8 +200,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
                        {QStringLiteral("mean_of_runs"),
                         [&] {
                             QJsonObject mean = toJson(sum.meanOfRuns);
-                            mean.insert(QStringLiteral("a1_std_N_per_mm"), sum.stdDevOfRuns.a1_N_per_mm);
-                            mean.insert(QStringLiteral("a2_std_N_per_mm2"), sum.stdDevOfRuns.a2_N_per_mm2);
+                            mean.insert(QStringLiteral("a1_std_N_per_mm"), statistic(sum.stdDevOfRuns.a1_N_per_mm, sum.runs.size()));
+                            mean.insert(QStringLiteral("a2_std_N_per_mm2"), statistic(sum.stdDevOfRuns.a2_N_per_mm2, sum.runs.size()));
                             return mean;
                         }()}});
         return Ok;
@@ -225,6 +237,9 @@ QJsonObject groupJson(const FrictionGroup& g, bool withFrequency)
         mean.insert(QStringLiteral("m_est_kg"), *g.massEstimateMean_kg);
         sd.insert(QStringLiteral("m_est_kg"), *g.massEstimateStdDev_kg);
     }
+    if (g.runs < 2)  // [issue 15] a standard deviation of one run is undefined: left empty
+        for (const QString& k : sd.keys())
+            sd.insert(k, QJsonValue());
     QJsonObject o{{QStringLiteral("runs"), qint64(g.runs)}, {QStringLiteral("mean"), mean}, {QStringLiteral("std"), sd}};
     if (withFrequency)
         o.insert(QStringLiteral("frequency_hz"), g.frequency_hz);
@@ -304,6 +319,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
             }
         }
         fits.push_back(onFile(path, [&] { return fitFriction(run, options, phases); }));
+        const KarnoppModel& k = fits.back().model;
+        requireFinite(path, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, k.Dp_N, k.Dn_N, fits.back().rms_N});
     }
     const auto groups = groupByFrequency(fits);
     const FrictionGroup all = overall(fits);
@@ -345,12 +362,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
     io.out << nb::TrCli::tr("group             statistic freq_Hz ") << (m ? nb::TrCli::tr("  m_est_kg ") : QString())
            << nb::TrCli::tr("       Cp        Bp        Cn        Bn        Dp        Dn\n");
     auto line = [&](const QString& group, const QString& stat, const QString& freq, std::optional<double> mass,
-                    const KarnoppPerLength& p) {
+                    const KarnoppPerLength& p, bool defined = true) {
         io.out << group.left(17).leftJustified(17) << ' ' << stat.leftJustified(9) << ' ' << freq.rightJustified(7) << ' ';
         if (m)
-            io.out << (mass ? num(*mass, 4) : QString()).rightJustified(10) << ' ';
+            io.out << (mass && defined ? num(*mass, 4) : QString()).rightJustified(10) << ' ';
         for (double v : {p.Cp_N_per_m, p.bp_Ns_per_m2, p.Cn_N_per_m, p.bn_Ns_per_m2, p.Dp_N_per_m, p.Dn_N_per_m})
-            io.out << num(v, 5).rightJustified(9) << ' ';
+            io.out << (defined ? num(v, 5) : QString()).rightJustified(9) << ' ';
         io.out << '\n';
     };
     for (std::size_t i = 0; i < fits.size(); ++i)
@@ -359,10 +376,10 @@ int fitFrictionCommand(const QStringList& args, Io io)
     for (const FrictionGroup& g : groups) {
         const QString name = nb::TrCli::tr("%1Hz (%2 runs)").arg(num(g.frequency_hz, 3)).arg(g.runs);
         line(name, nb::TrCli::tr("mean"), num(g.frequency_hz, 3), g.massEstimateMean_kg, g.mean);
-        line(name, nb::TrCli::tr("std"), num(g.frequency_hz, 3), g.massEstimateStdDev_kg, g.stdDev);
+        line(name, nb::TrCli::tr("std"), num(g.frequency_hz, 3), g.massEstimateStdDev_kg, g.stdDev, g.runs > 1);
     }
     line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("mean"), QString(), all.massEstimateMean_kg, all.mean);
-    line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev);
+    line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev, all.runs > 1);
     for (std::size_t i = 0; i < fits.size(); ++i)
         io.out << nb::TrCli::tr("%1: D from %2, rms %3 N\n")
                       .arg(QFileInfo(files[qsizetype(i)]).fileName(), fits[i].staticSource, num(fits[i].rms_N, 3));

@@ -4,6 +4,8 @@
 
 #include "cli_support.h"
 #include "simulated_run.h"
+#include "interrupt_watcher.h"
+#include "core/disk_space.h"
 #include "core/tr.h"
 
 #include "devices/acquisition_engine.h"
@@ -14,9 +16,11 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <cmath>
 #include <optional>
+#include <opencv2/videoio.hpp>
 
 namespace nb::cli {
 
@@ -177,6 +181,38 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
     return {};
 }
 
+// Watches the disk the run file goes to: warns once when it will be full within
+// a minute at the rate the file grows.
+class SpaceWatch {
+public:
+    explicit SpaceWatch(QString path) : path_(std::move(path)) { clock_.start(); }
+    QString check()
+    {
+        if (warned_ || clock_.elapsed() < nextCheck_ms_)
+            return {};
+        nextCheck_ms_ = clock_.elapsed() + 1000;
+        const qint64 size = QFileInfo(path_).size();
+        const auto free = freeBytes(path_);
+        const double elapsed_s = clock_.elapsed() / 1000.0;
+        if (!free || size <= 0 || elapsed_s < 1.0)
+            return {};
+        const double left_s = secondsUntilFull(*free, size / elapsed_s);
+        if (left_s >= kLowSpaceWarning_s)
+            return {};
+        warned_ = true;
+        return nb::TrCli::tr("warning: the disk holding %1 will be full in about %2 s at the current rate (%3 kB free)")
+            .arg(path_)
+            .arg(left_s, 0, 'f', 0)
+            .arg(*free / 1024);
+    }
+
+private:
+    QString path_;
+    QElapsedTimer clock_;
+    qint64 nextCheck_ms_ = 1000;
+    bool warned_ = false;
+};
+
 }  // namespace
 
 int cmdSimulate(const QStringList& args, Io io)
@@ -201,23 +237,60 @@ int cmdSimulate(const QStringList& args, Io io)
     };
     QElapsedTimer sinceProgress;
     sinceProgress.start();
+    SpaceWatch space(s.out);
     run.onTick = [&](const devices::EngineStatus& st) {
+        if (st.recording)
+            if (const QString w = space.check(); !w.isEmpty()) {
+                io.err << "needlebench simulate: " << w << '\n';
+                io.err.flush();
+            }
         if (st.recording && s.rig.realtime && sinceProgress.elapsed() >= 20) {
             sinceProgress.restart();
             io.out << "progress run_time_s=" << QString::number(st.runTime_s, 'f', 4) << " samples=" << st.samples << '\n';
             io.out.flush();
         }
     };
+    // A signal stops the stage and closes the run as "interrupted"; a second one (or one
+    // before the run started) does not wait.
+    InterruptWatcher interrupts;
+    int received = 0;
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, [&](int signo) {
+        ++received;
+        io.err << "needlebench simulate: "
+               << nb::TrCli::tr("%1 received: stopping the stage and closing the run").arg(InterruptWatcher::signalName(signo))
+               << '\n';
+        io.err.flush();
+    });
+    run.interruption = [&] {
+        devices::RunOnceOptions::Interruption i;
+        i.count = received;
+        if (received)
+            i.footer.set(QStringLiteral("signal"), InterruptWatcher::signalName(interrupts.signalNumber()));
+        return i;
+    };
     const SimulatedRunResult r = simulateRun(s, run);
-    if (!r.error.isEmpty() && !r.summary) {
+    const int signalled = interrupts.signalNumber() ? 128 + interrupts.signalNumber() : 0;
+    if (!r.summary) {
         io.err << "needlebench simulate: " << r.error << '\n';
-        return Failure;
+        return signalled ? signalled : Failure;
+    }
+    // A run that did not end by itself gets no truth or video: they would describe a
+    // recording that is not in the file.
+    if (r.summary->endReason == EndReason::WriteError || r.summary->endReason == EndReason::Interrupted) {
+        if (r.summary->endReason == EndReason::WriteError)
+            io.err << "needlebench simulate: "
+                   << nb::TrCli::tr("recording failed: %1; the run file keeps %2 whole rows").arg(r.summary->fault).arg(r.summary->samples)
+                   << '\n';
+        printJson(io, r.json);
+        return signalled ? signalled : Failure;
     }
     if (!r.error.isEmpty()) {  // recorded, but what follows the run failed (truth, video)
         io.err << "needlebench simulate: " << r.error << '\n';
         return Failure;
     }
     printJson(io, r.json);
+    if (signalled)
+        return signalled;
     return r.summary->endReason == EndReason::Fault ? Failure : Ok;
 }
 

@@ -8,9 +8,11 @@
 #include "devices/sim/simulated_rig.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSaveFile>
+#include <opencv2/videoio.hpp>
 
 namespace nb::cli {
 
@@ -111,6 +113,17 @@ SimulatedRunResult simulateRun(const SimulatedRunRequest& s, const devices::RunO
         return result;
     }
 
+    if (r.summary->endReason == EndReason::WriteError || r.summary->endReason == EndReason::Interrupted) {
+        // No truth or video for a recording that did not end by itself: they would describe
+        // samples that are not in the file.
+        result.json = QJsonObject{{QStringLiteral("out"), r.summary->path},
+                                  {QStringLiteral("end_reason"), fileName(r.summary->endReason)},
+                                  {QStringLiteral("samples"), static_cast<double>(r.summary->samples)},
+                                  {QStringLiteral("dropped"), static_cast<double>(r.summary->dropped)}};
+        if (!r.summary->fault.isEmpty())
+            result.json.insert(QStringLiteral("error"), r.summary->fault);
+        return result;
+    }
     if (auto source = engine.groundTruth())
         result.truth = truthOnRunTime(source->truthJson(), runStartDeviceTime(s.out));
     if (!s.video.isEmpty()) {
@@ -121,6 +134,17 @@ SimulatedRunResult simulateRun(const SimulatedRunRequest& s, const devices::RunO
             io.height = s.videoHeight;
             io.seed = s.videoSeed;
             const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(readRunFile(s.out).run, s.video, io);
+            // An encoder on a full disk fails silently: count what can be read back.
+            cv::VideoCapture check(QFile::encodeName(s.video).toStdString());
+            const double readable = check.isOpened() ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0.0;
+            if (readable < vt.frames - 2) {
+                QFile::remove(s.video);
+                result.error = nb::TrCli::tr("%1: only %2 of %3 frames could be written (disk full?); removed")
+                                   .arg(s.video)
+                                   .arg(readable)
+                                   .arg(vt.frames);
+                return result;
+            }
             result.videoFrames = vt.frames;
             result.videoOffset_s = vt.offset_s;
             result.truth.insert(QStringLiteral("video"), QJsonObject{{QStringLiteral("file"), s.video},
@@ -135,8 +159,9 @@ SimulatedRunResult simulateRun(const SimulatedRunRequest& s, const devices::RunO
     }
     if (!s.truth.isEmpty()) {
         QSaveFile tf(s.truth);
-        if (!tf.open(QIODevice::WriteOnly) || tf.write(QJsonDocument(result.truth).toJson(QJsonDocument::Indented)) < 0 ||
-            !tf.commit()) {
+        const QByteArray json = QJsonDocument(result.truth).toJson(QJsonDocument::Indented);
+        if (!tf.open(QIODevice::WriteOnly) || tf.write(json) != json.size() || !tf.commit() ||
+            QFileInfo(s.truth).size() != json.size()) {
             result.error = nb::TrCli::tr("cannot write %1: %2").arg(s.truth, tf.errorString());
             return result;
         }

@@ -4,10 +4,10 @@ namespace nb {
 
 std::optional<QString> Metadata::value(const QString& key) const
 {
-    for (const auto& [k, v] : entries_)
-        if (k == key)
-            return v;
-    return std::nullopt;
+    const auto it = index_.constFind(key);
+    if (it == index_.constEnd())
+        return std::nullopt;
+    return entries_[*it].second;
 }
 
 QString Metadata::value(const QString& key, const QString& fallback) const
@@ -27,12 +27,12 @@ std::optional<double> Metadata::number(const QString& key) const
 
 void Metadata::set(const QString& key, const QString& value)
 {
-    for (auto& [k, v] : entries_) {
-        if (k == key) {
-            v = value;
-            return;
-        }
+    const auto it = index_.constFind(key);
+    if (it != index_.constEnd()) {
+        entries_[*it].second = value;
+        return;
     }
+    index_.insert(key, entries_.size());
     entries_.emplace_back(key, value);
 }
 

@@ -4,6 +4,7 @@
 // Sign conventions (thesis, models.md): position grows as the needle goes deeper;
 // force is positive when the tissue pushes back against insertion.
 
+#include <QHash>
 #include <QString>
 #include <cstddef>
 #include <map>
@@ -27,6 +28,8 @@ public:
 
 private:
     std::vector<std::pair<QString, QString>> entries_;
+    // Key -> position in entries_: a file with many metadata lines is read in linear time.
+    QHash<QString, std::size_t> index_;
 };
 
 struct Run {

@@ -1,7 +1,16 @@
 #include "run_file.h"
+#include "core/disk_space.h"
+#include "core/excerpt.h"
 #include "core/tr.h"
 
 #include <QSaveFile>
+#include <QSet>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -145,11 +154,13 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                 if (!names.contains(QLatin1String(req)))
                     throw RunFileError(name, lineNo,
                                        nb::TrCore::tr("header has no '%1' column (found: %2)")
-                                           .arg(QLatin1String(req), names.join(QLatin1String(", "))));
+                                           .arg(QLatin1String(req), excerpt(names.join(QLatin1String(", ")), 120)));
             QStringList ignored;
+            QSet<QString> seen;
             for (const QString& n : names) {
-                if (names.count(n) > 1)
-                    throw RunFileError(name, lineNo, nb::TrCore::tr("column '%1' appears twice").arg(n));
+                if (seen.contains(n))
+                    throw RunFileError(name, lineNo, nb::TrCore::tr("column '%1' appears twice").arg(excerpt(n)));
+                seen.insert(n);
                 if (n == QLatin1String("time_s"))
                     kinds.push_back(Kind::Time);
                 else if (n == QLatin1String("position_mm"))
@@ -170,7 +181,7 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                 }
             }
             if (!ignored.isEmpty())
-                result.warnings << nb::TrCore::tr("%1: ignored unknown columns: %2").arg(name, ignored.join(QLatin1String(", ")));
+                result.warnings << nb::TrCore::tr("%1: ignored unknown columns: %2").arg(name, excerpt(ignored.join(QLatin1String(", ")), 120));
             continue;
         }
 
@@ -212,8 +223,8 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
                     throw RunFileError(name, lineNo,
                                        nb::TrCore::tr("column %1 ('%2'): '%3' is not a number")
                                            .arg(c + 1)
-                                           .arg(columnNames[static_cast<qsizetype>(c)])
-                                           .arg(QString::fromUtf8(fields[c])));
+                                           .arg(excerpt(columnNames[static_cast<qsizetype>(c)]))
+                                           .arg(excerpt(QByteArray::fromRawData(fields[c].data(), qsizetype(fields[c].size())))));
                 }
             }
             switch (k) {
@@ -263,9 +274,11 @@ void appendNumber(QByteArray& out, double v, int decimals)
     if (!std::isfinite(v))
         return;  // empty field: missing value
     char buf[64];
-    const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-    if (ec == std::errc())
-        out.append(buf, ptr - buf);
+    std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+    if (r.ec != std::errc())  // too large for fixed notation: the shortest exact form instead
+        r = std::to_chars(buf, buf + sizeof buf, v);
+    if (r.ec == std::errc())
+        out.append(buf, r.ptr - buf);
 }
 
 QByteArray metadataBlock(const Metadata& m)
@@ -321,37 +334,89 @@ void writeRunFile(const QString& path, const Run& run)
     }
     out += metadataBlock(run.footer);
     file.write(out);
-    if (!file.commit())
-        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
+    if (!file.commit()) {
+        // QSaveFile says "Unknown error" for a failed flush; a full disk is the usual cause.
+        const auto free = freeBytes(path);
+        throw RunFileError(path, 0, free && *free < 64 * 1024 ? nb::TrCore::tr("cannot write: no space left on the disk")
+                                                              : nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
+    }
 }
+
+namespace {
+
+// Room kept allocated beyond the data for the footer (a few hundred bytes) with a wide
+// margin; reserved ahead in steps so that fallocate runs a few times a second at most.
+constexpr qint64 kFooterReserve = 16 * 1024;
+constexpr qint64 kReserveStep = 256 * 1024;
+
+QString systemError(int err) { return QString::fromLocal8Bit(std::strerror(err)); }
+
+}  // namespace
 
 RunFileWriter::~RunFileWriter()
 {
-    if (file_.isOpen()) {
-        writeBuffer();
-        file_.close();
+    if (fd_ >= 0) {
+        try {
+            writeBuffer();
+        } catch (const RunFileError&) {
+        }
+        if (regular_)
+            ::ftruncate(fd_, committed_);
+        ::close(fd_);
+        fd_ = -1;
     }
 }
 
 void RunFileWriter::open(const QString& path, const Metadata& metadata, const QStringList& numericColumns,
                          const QStringList& textColumns)
 {
+    if (fd_ >= 0)
+        throw RunFileError(path, 0, nb::TrCore::tr("a run file is already open (%1)").arg(path_));
     path_ = path;
-    file_.setFileName(path);
-    if (!file_.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered))
-        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file_.errorString()));
+    const QByteArray native = QFile::encodeName(path);
+    // Not O_TRUNC: the file may be another writer's, to be refused untouched.
+    const int fd = ::open(native.constData(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0)
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(systemError(errno)));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        const int err = errno;
+        ::close(fd);
+        if (err == EWOULDBLOCK)
+            throw RunFileError(path, 0, nb::TrCore::tr("another process is recording to this file; it was left untouched"));
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot lock: %1").arg(systemError(err)));
+    }
+    // A device or pipe (/dev/null, a FIFO) is written to as it is: nothing to cut or reserve.
+    struct stat st {};
+    regular_ = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    if (regular_ && ::ftruncate(fd, 0) != 0) {
+        const int err = errno;
+        ::close(fd);
+        throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(systemError(err)));
+    }
+    fd_ = fd;
     decimals_.clear();
     for (const QString& c : numericColumns)
         decimals_.push_back(decimalsFor(c));
     textCount_ = static_cast<std::size_t>(textColumns.size());
-    rows_ = 0;
+    rows_ = bufferedRows_ = rowsOnDisk_ = 0;
+    committed_ = reserved_ = 0;
+    canReserve_ = regular_;
+    failed_ = false;
     buffer_ = metadataBlock(metadata);
     buffer_ += (numericColumns + textColumns).join(QLatin1Char(',')).toUtf8() + '\n';
-    flush();
+    try {
+        flush();
+    } catch (const RunFileError&) {
+        ::close(fd_);
+        fd_ = -1;
+        throw;
+    }
 }
 
 void RunFileWriter::writeRow(std::span<const double> numbers, std::span<const QString> texts)
 {
+    if (failed_)
+        return;
     for (std::size_t i = 0; i < decimals_.size(); ++i) {
         if (i)
             buffer_ += ',';
@@ -364,17 +429,78 @@ void RunFileWriter::writeRow(std::span<const double> numbers, std::span<const QS
     }
     buffer_ += '\n';
     ++rows_;
+    ++bufferedRows_;
     if (buffer_.size() > (1 << 18))
         writeBuffer();
 }
 
+void RunFileWriter::fail(const QString& reason)
+{
+    failed_ = true;
+    buffer_.clear();
+    bufferedRows_ = 0;
+    throw RunFileError(path_, 0, reason);
+}
+
+void RunFileWriter::reserve(qint64 needed)
+{
+    if (!canReserve_ || needed <= reserved_)
+        return;
+    const qint64 target = needed + kReserveStep;
+    if (::fallocate(fd_, FALLOC_FL_KEEP_SIZE, reserved_, target - reserved_) == 0) {
+        reserved_ = target;
+        return;
+    }
+    const int err = errno;
+    if (err == EOPNOTSUPP || err == ENOSYS || err == EINVAL || err == ENODEV || err == ESPIPE) {
+        canReserve_ = false;  // this file system cannot: plain writes, footer as space allows
+        return;
+    }
+    if (err == ENOSPC || err == EDQUOT) {
+        // Try the exact need before giving up: the reserve step is only a convenience.
+        if (::fallocate(fd_, FALLOC_FL_KEEP_SIZE, reserved_, needed - reserved_) == 0) {
+            reserved_ = needed;
+            return;
+        }
+    }
+    fail(nb::TrCore::tr("write failed after %1 rows: %2").arg(rowsOnDisk_).arg(systemError(err)));
+}
+
+void RunFileWriter::writeOrTruncate(const QByteArray& bytes)
+{
+    const char* p = bytes.constData();
+    qint64 left = bytes.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(left));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            const int err = n < 0 ? errno : ENOSPC;
+            // Cut back to the last whole row: a reader sees a shorter run, never half a row.
+            if (regular_ && ::ftruncate(fd_, committed_) == 0)
+                ::lseek(fd_, committed_, SEEK_SET);
+            fail(nb::TrCore::tr("write failed after %1 rows: %2").arg(rowsOnDisk_).arg(systemError(err)));
+        }
+        p += n;
+        left -= n;
+    }
+    committed_ += bytes.size();
+}
+
 void RunFileWriter::writeBuffer()
 {
-    if (buffer_.isEmpty())
+    if (buffer_.isEmpty() || fd_ < 0)
         return;
-    const qint64 written = file_.write(buffer_);
-    if (written != buffer_.size())
-        throw RunFileError(path_, 0, nb::TrCore::tr("write failed: %1").arg(file_.errorString()));
+    if (failed_) {
+        buffer_.clear();
+        bufferedRows_ = 0;
+        return;
+    }
+    // The data may use the space up to the footer's reserve, never the reserve itself.
+    reserve(committed_ + buffer_.size() + kFooterReserve);
+    writeOrTruncate(buffer_);
+    rowsOnDisk_ += bufferedRows_;
+    bufferedRows_ = 0;
     buffer_.clear();
 }
 
@@ -385,11 +511,32 @@ void RunFileWriter::flush()
 
 void RunFileWriter::close(const Metadata& footer)
 {
-    if (!file_.isOpen())
+    if (fd_ < 0)
         return;
-    buffer_ += metadataBlock(footer);
-    writeBuffer();
-    file_.close();
+    QString error;
+    try {
+        writeBuffer();
+    } catch (const RunFileError& e) {
+        error = e.reason();
+    }
+    // The footer goes in whatever happened to the rows (its space was reserved up front).
+    try {
+        const QByteArray tail = metadataBlock(footer);
+        if (!tail.isEmpty()) {
+            failed_ = false;  // one more attempt, into the reserve
+            writeOrTruncate(tail);
+        }
+    } catch (const RunFileError& e) {
+        if (error.isEmpty())
+            error = e.reason();
+    }
+    // Give back the reserve beyond the end of the file.
+    if (regular_)
+        ::ftruncate(fd_, committed_);
+    ::close(fd_);
+    fd_ = -1;
+    if (!error.isEmpty())
+        throw RunFileError(path_, 0, error);
 }
 
 }  // namespace nb

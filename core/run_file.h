@@ -16,6 +16,7 @@
 #include "run.h"
 
 #include <QFile>
+#include <QtGlobal>
 #include <QString>
 #include <QStringList>
 #include <span>
@@ -61,6 +62,11 @@ const QStringList& knownTextColumns();
 
 // Streams rows to a run file; used by the recorder, which flushes as it goes so that a
 // crash loses at most the unflushed tail. Not thread-safe: one writer thread.
+//
+// What survives a failing disk: only whole rows reach the file (a failed or short write is
+// cut back to the last whole row), space for the footer is reserved ahead of the data so
+// that a full disk still gets its end reason, and the file is locked (flock) while it is
+// written so that a second writer is refused instead of interleaving rows.
 class RunFileWriter {
 public:
     RunFileWriter() = default;
@@ -69,26 +75,48 @@ public:
     RunFileWriter& operator=(const RunFileWriter&) = delete;
 
     // Creates (truncates) the file and writes metadata and the header row.
-    // Numeric columns come first in each row, then text columns. Throws RunFileError.
+    // Numeric columns come first in each row, then text columns. Throws RunFileError, also
+    // when another process is writing the same file (it is left untouched).
     void open(const QString& path, const Metadata& metadata, const QStringList& numericColumns,
               const QStringList& textColumns = {});
+    // Buffers one row; may write (and throw RunFileError) when the buffer is large. After a
+    // failure rows are no longer written (the file keeps the whole rows before it).
     void writeRow(std::span<const double> numbers, std::span<const QString> texts = {});
     // Pushes buffered rows to the operating system (survives a kill of this process).
+    // Throws RunFileError; the file then ends with the last whole row written before.
     void flush();
-    // Appends footer metadata lines, flushes and closes.
+    // Appends footer metadata lines, flushes and closes. Throws RunFileError when even the
+    // footer could not be written (the file is closed and keeps its whole rows).
     void close(const Metadata& footer = {});
-    bool isOpen() const { return file_.isOpen(); }
+    bool isOpen() const { return fd_ >= 0; }
     const QString& path() const { return path_; }
     qint64 rowsWritten() const { return rows_; }
+    // Rows that are whole on disk.
+    qint64 rowsOnDisk() const { return rowsOnDisk_; }
+    // Bytes of whole rows (and metadata) on disk.
+    qint64 bytesOnDisk() const { return committed_; }
+    bool failed() const { return failed_; }
+    // The file descriptor while open (for fstatvfs), -1 otherwise.
+    int handle() const { return fd_; }
 
 private:
     void writeBuffer();
-    QFile file_;
+    void writeOrTruncate(const QByteArray& bytes);
+    void reserve(qint64 needed);
+    [[noreturn]] void fail(const QString& reason);
+    int fd_ = -1;
     QString path_;
     std::vector<int> decimals_;
     std::size_t textCount_ = 0;
     QByteArray buffer_;
     qint64 rows_ = 0;
+    qint64 bufferedRows_ = 0;
+    qint64 rowsOnDisk_ = 0;
+    qint64 committed_ = 0;  // file size up to the last whole row
+    qint64 reserved_ = 0;   // allocated (fallocate KEEP_SIZE) up to here
+    bool canReserve_ = true;
+    bool regular_ = true;  // a regular file (not /dev/null, a FIFO): cut back and reserved
+    bool failed_ = false;
 };
 
 }  // namespace nb

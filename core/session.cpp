@@ -103,11 +103,11 @@ RunState runStateForEndReason(const QString& r)
         return RunState::Complete;
     if (r == QLatin1String("force_limit"))
         return RunState::StoppedByLimit;
-    if (r == QLatin1String("fault"))
+    if (r == QLatin1String("fault") || r == QLatin1String("write_error"))  // the disk failed: as a device would
         return RunState::Fault;
     if (r == QLatin1String("recovered"))
         return RunState::Recovered;
-    return RunState::Stopped;  // stopped, aborted, emergency_stop, ...
+    return RunState::Stopped;  // stopped, aborted, interrupted (by a signal; the file is whole), ...
 }
 
 QString runStateName(RunState state)
@@ -219,13 +219,18 @@ Session Session::open(const QString& dir)
     const QJsonObject o = readJson(path);
     Session s;
     s.dir_ = QDir(dir).absolutePath();
-    s.info_.organ = o[QStringLiteral("organ")].toString();
-    s.info_.specimen = o[QStringLiteral("specimen")].toString();
-    s.info_.tip = o[QStringLiteral("tip")].toString();
+    // Text fields stay text; one typed as a number by hand (specimen: 12) is kept as written.
+    auto text = [&](const char* key) {
+        const QJsonValue v = o[QLatin1String(key)];
+        return v.isDouble() ? QString::number(v.toDouble(), 'g', 17) : v.toString();
+    };
+    s.info_.organ = text("organ");
+    s.info_.specimen = text("specimen");
+    s.info_.tip = text("tip");
     s.info_.thickness_mm = o[QStringLiteral("thickness_mm")].toDouble();
-    s.info_.operatorName = o[QStringLiteral("operator")].toString();
-    s.info_.protocol = o[QStringLiteral("protocol")].toString();
-    s.info_.notes = o[QStringLiteral("notes")].toString();
+    s.info_.operatorName = text("operator");
+    s.info_.protocol = text("protocol");
+    s.info_.notes = text("notes");
     s.info_.created = QDateTime::fromString(o[QStringLiteral("created")].toString(), Qt::ISODate);
     s.activeCalibration_ = o[QStringLiteral("active_calibration")].toString();
     return s;

@@ -448,9 +448,9 @@ void AcquisitionEngine::endRun()
     });
 }
 
-void AcquisitionEngine::interrupt()
+void AcquisitionEngine::interrupt(const Metadata& extra)
 {
-    post([this] {
+    post([this, extra] {
         State& s = *state_;
         s.runMotion = false;
         s.approach.reset();
@@ -458,7 +458,7 @@ void AcquisitionEngine::interrupt()
         if (s.stage.moving)
             s.dev.stage->stop();
         if (s.runOpen)
-            finishRun(EndReason::Interrupted, {});
+            finishRun(EndReason::Interrupted, {}, extra);
     });
 }
 
@@ -559,8 +559,13 @@ void AcquisitionEngine::finishRun(EndReason reason, const QString& fault, const 
         footer.set(k, v);
     footer.set(key::samples, static_cast<double>(s.runPushed));
     s.recorder.close(footer);
+    // The recorder may fail while draining its last rows: then the run ended by a write
+    // error whatever the reason asked for (the recorder's footer says so).
+    const bool writeFailed = s.recorder.failed();
+    const EndReason endReason = writeFailed ? EndReason::WriteError : reason;
     const std::uint64_t written = s.recorder.written();
-    RunSummary summary{s.runPath, reason, written, gaps + overruns, fault, s.runStartPosition};
+    RunSummary summary{s.runPath, endReason, written, gaps + overruns,
+                       writeFailed && fault.isEmpty() ? s.recorder.error() : fault, s.runStartPosition};
     s.runOpen = false;
     s.runMotion = false;
     s.pendingEndAt = -1.0;
@@ -569,7 +574,7 @@ void AcquisitionEngine::finishRun(EndReason reason, const QString& fault, const 
         s.proc->setGuard(ForceGuard::Off);
     s.statusDirty = true;
     emit message(tr("run ended (%1): %2 samples, %3 dropped, %4")
-                     .arg(displayName(reason))
+                     .arg(displayName(endReason))
                      .arg(written)
                      .arg(gaps + overruns)
                      .arg(s.runPath));
@@ -817,7 +822,22 @@ void AcquisitionEngine::threadMain()
             }
         }
 
-        // 5. Runs, approaches and jogs that end with the motion.
+        // 5. A write error (disk full, media removed) ends the run at once: stop the axis,
+        // close with end_reason write_error, tell the operator.
+        if (s.runOpen && s.recorder.failed()) {
+            s.runMotion = false;
+            try {
+                s.dev.stage->stop();
+            } catch (const DeviceError& e) {
+                raiseFault(e.device(), e.reason(), false);
+            }
+            const QString why = s.recorder.error();
+            emit message(tr("recording failed, stage stopped: %1").arg(why));
+            finishRun(EndReason::WriteError, why);
+        }
+        if (const QString w = s.recorder.takeSpaceWarning(); !w.isEmpty())
+            emit message(tr("warning: %1").arg(w));
+        // Runs, approaches and jogs that end with the motion.
         endRunOnMotion(!s.batch.empty());
 
         // 6. Status at ~25 Hz.

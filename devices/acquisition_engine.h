@@ -149,8 +149,9 @@ public slots:
     void stopMotion();
     void endRun();
     void emergencyStop();
-    // The program is told to end (a signal): stop the motion, close the run as `interrupted`.
-    void interrupt();
+    // The program is told to end (a signal): stop the motion, close the run as `interrupted`
+    // with `extra` in its footer (signal: SIGTERM).
+    void interrupt(const nb::Metadata& extra = {});
 
 signals:
     void statusChanged(const nb::devices::EngineStatus& status);

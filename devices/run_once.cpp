@@ -47,6 +47,7 @@ RunOnceResult runOnce(AcquisitionEngine& engine, const RunPlan& plan, const RunO
     QTimer tick;
     tick.setInterval(5);
     bool interrupting = false;
+    int interrupted = 0;
     QObject::connect(&tick, &QTimer::timeout, &guard, [&] {
         const EngineStatus st = engine.status();
         if (!started.load()) {
@@ -60,9 +61,17 @@ RunOnceResult runOnce(AcquisitionEngine& engine, const RunPlan& plan, const RunO
         }
         if (options.onTick)
             options.onTick(st);
-        if (!interrupting && options.interrupted && options.interrupted()) {
-            interrupting = true;
-            engine.interrupt();
+        if (options.interruption) {
+            const RunOnceOptions::Interruption i = options.interruption();
+            if (i.count > 0 && (!started.load() || i.count > 1)) {
+                if (result.error.isEmpty())
+                    result.error = nb::TrDevices::tr("interrupted before the run ended");
+                loop.quit();
+            } else if (i.count > 0 && interrupted == 0) {
+                interrupted = i.count;
+                interrupting = true;
+                engine.interrupt(i.footer);
+            }
         }
         if (wall.elapsed() > options.runTimeout_ms && !interrupting) {
             interrupting = true;

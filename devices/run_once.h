@@ -17,8 +17,14 @@ struct RunOnceOptions {
     std::function<void(const QString& path)> onStarted;
     int readyTimeout_ms = 10000;         // for the devices to become ready (real clocks)
     int runTimeout_ms = 30 * 60 * 1000;  // then the run is ended
-    // Asked on every tick; true ends the run (a signal, a cancel): end reason `interrupted`.
-    std::function<bool()> interrupted;
+    // Asked on every tick: how often the program was told to end (signals) and what the
+    // footer should say about it. The first request ends the run as `interrupted`; a second
+    // one, or one before the run started, gives up waiting at once.
+    struct Interruption {
+        int count = 0;
+        Metadata footer;
+    };
+    std::function<Interruption()> interruption;
 };
 
 struct RunOnceResult {

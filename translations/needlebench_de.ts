@@ -15,6 +15,19 @@
     </message>
 </context>
 <context>
+    <name>export</name>
+    <message>
+        <location filename="../core/export/csv_text.cpp" line="+37"/>
+        <source>cannot write: no space left on the disk (%1 kB free)</source>
+        <translation>kann nicht schreiben: kein Platz mehr auf dem Datenträger (%1 kB frei)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot write: %1</source>
+        <translation>kann nicht schreiben: %1</translation>
+    </message>
+</context>
+<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
         <location filename="../widgets/analysis/analysis_workspace.cpp" line="+95"/>
@@ -1726,7 +1739,7 @@
 <context>
     <name>nb::TrCli</name>
     <message>
-        <location filename="../app/cmd_acquire.cpp" line="+26"/>
+        <location filename="../app/cmd_acquire.cpp" line="+27"/>
         <source>sim | u6 | u6:SERIAL (default: settings, else sim)</source>
         <translation>sim | u6 | u6:SERIENNUMMER (Standard: Einstellungen, sonst sim)</translation>
     </message>
@@ -1742,7 +1755,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+42"/>
+        <location filename="../app/cmd_simulate.cpp" line="+46"/>
         <source>the run file to write</source>
         <translation>die zu schreibende Laufdatei</translation>
     </message>
@@ -1837,11 +1850,23 @@
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
     <message>
+        <location line="+20"/>
+        <location filename="../app/cmd_simulate.cpp" line="+90"/>
+        <source>%1 received: stopping the stage and closing the run</source>
+        <translation>%1 empfangen: Verfahrtisch wird gestoppt und der Lauf abgeschlossen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <location filename="../app/cmd_simulate.cpp" line="+22"/>
+        <source>recording failed: %1; the run file keeps %2 whole rows</source>
+        <translation>Aufzeichnung fehlgeschlagen: %1; die Laufdatei behält %2 vollständige Zeilen</translation>
+    </message>
+    <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+73"/>
+        <location filename="../app/cmd_fit.cpp" line="+84"/>
         <location line="+49"/>
-        <location line="+122"/>
+        <location line="+126"/>
         <location filename="../app/cmd_plan.cpp" line="+74"/>
         <location line="+156"/>
         <location line="+270"/>
@@ -1884,7 +1909,7 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-209"/>
+        <location filename="../app/cmd_fit.cpp" line="-224"/>
         <source>warning: %1
 </source>
         <translation>Warnung: %1
@@ -1932,7 +1957,12 @@
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+54"/>
+        <location filename="../app/cmd_export.cpp" line="+41"/>
+        <source>warning: %1: could not copy the video beside the export; linked where it is</source>
+        <translation>Warnung: %1: das Video konnte nicht neben den Export kopiert werden; es wird an seinem Ort verknüpft</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Export a session&apos;s runs, labels and metadata.</source>
         <translation>Läufe, Labels und Metadaten einer Sitzung exportieren.</translation>
     </message>
@@ -1953,7 +1983,12 @@
         <translation>wohin geschrieben wird</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+2"/>
+        <source>put each run&apos;s video beside the export (hard link, else copy) and link that, so the export folder can be moved or shared on its own</source>
+        <translation>das Video jedes Laufs neben den Export legen (harter Link, sonst Kopie) und dorthin verweisen, damit der Exportordner allein verschoben oder weitergegeben werden kann</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--format is required (csv|hdf5|eaf)</source>
         <translation>--format ist erforderlich (csv|hdf5|eaf)</translation>
     </message>
@@ -2151,7 +2186,12 @@
         <translation>%1: keine Laufdateien (*.csv mit time_s,position_mm,force_N)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>warning: removed %1, left by an export that did not finish</source>
+        <translation>Warnung: %1 entfernt, von einem nicht beendeten Export zurückgelassen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>writing %1 runs to %2</source>
         <translation>schreibe %1 Läufe nach %2</translation>
     </message>
@@ -2162,7 +2202,8 @@
     </message>
     <message>
         <location filename="../app/cmd_demo.cpp" line="-245"/>
-        <location filename="../app/cmd_export.cpp" line="+6"/>
+        <location filename="../app/cmd_export.cpp" line="-16"/>
+        <location line="+22"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: Ordner kann nicht angelegt werden</translation>
     </message>
@@ -2177,7 +2218,12 @@
         <translation>%1 Läufe aus %2 als %3 exportiert: %4 Dateien</translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="+40"/>
+        <location filename="../app/cmd_fit.cpp" line="+24"/>
+        <source>%1: the fit gave no finite result (forces or positions out of any measurable range?)</source>
+        <translation>%1: die Anpassung ergab kein endliches Ergebnis (Kräfte oder Positionen außerhalb jedes messbaren Bereichs?)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>calibration points: columns mass_g, voltage_V</source>
         <translation>Kalibrierpunkte: Spalten mass_g, voltage_V</translation>
     </message>
@@ -2225,7 +2271,7 @@
 </translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation>Steifigkeit f = a1*x + a2*x^2, x = Tiefe nach dem Kontakt [mm]
@@ -2258,7 +2304,7 @@
 </translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+34"/>
         <source>length of needle in tissue (slab thickness), required</source>
         <translation>Länge der Nadel im Gewebe (Dicke der Gewebescheibe), erforderlich</translation>
     </message>
@@ -2325,7 +2371,7 @@
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+51"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -2456,7 +2502,7 @@
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-139"/>
+        <location filename="../app/cmd_simulate.cpp" line="-251"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -2593,7 +2639,12 @@
         <translation>--slow-after-puncture muss in (0, %1] mm/s liegen</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+25"/>
+        <source>warning: the disk holding %1 will be full in about %2 s at the current rate (%3 kB free)</source>
+        <translation>Warnung: der Datenträger mit %1 ist bei der jetzigen Rate in etwa %2 s voll (%3 kB frei)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Run &apos;needlebench simulate --help&apos; for the options.</source>
         <translation>&apos;needlebench simulate --help&apos; zeigt die Optionen.</translation>
     </message>
@@ -2838,7 +2889,7 @@
     <message>
         <location line="+18"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+140"/>
+        <location filename="../app/simulated_run.cpp" line="+165"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -3204,11 +3255,31 @@ Befehle:
         <source>the run did not start (exit code %1)</source>
         <translation>der Lauf hat nicht begonnen (Rückgabewert %1)</translation>
     </message>
+    <message>
+        <location filename="../app/guarded_main.cpp" line="+19"/>
+        <source>out of memory</source>
+        <translation>kein Speicher mehr</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown exception</source>
+        <translation>unbekannte Ausnahme</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>internal error: %1</source>
+        <translation>interner Fehler: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/simulated_run.cpp" line="-23"/>
+        <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
+        <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
     <message>
-        <location filename="../core/export/dataset.cpp" line="+14"/>
+        <location filename="../core/export/dataset.cpp" line="+18"/>
         <source>time since the start of the recording</source>
         <translation>Zeit seit Beginn der Aufzeichnung</translation>
     </message>
@@ -3243,7 +3314,12 @@ Befehle:
         <translation>Axialkraft, positiv wenn das Gewebe zurückdrückt</translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+25"/>
+        <location line="+7"/>
+        <source>the sensor&apos;s sample counter (a gap is a lost sample)</source>
+        <translation>Messwertzähler des Sensors (eine Lücke ist ein verlorener Messwert)</translation>
+    </message>
+    <message>
+        <location filename="../core/export/dataset_loader.cpp" line="+27"/>
         <source>not a folder</source>
         <translation>kein Ordner</translation>
     </message>
@@ -3268,23 +3344,24 @@ Befehle:
         <translation>%1: Labels ignoriert (%2)</translation>
     </message>
     <message>
-        <location filename="../core/export/run_csv_export.cpp" line="+75"/>
+        <location line="+11"/>
+        <source>%1: label &apos;%2&apos; (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored</source>
+        <translation>%1: Label &apos;%2&apos; (%3 s bis %4 s) liegt außerhalb des Laufs (%5 s bis %6 s); ignoriert</translation>
+    </message>
+    <message>
+        <location filename="../core/export/run_csv_export.cpp" line="+78"/>
         <source>label of track &apos;%1&apos; active at the sample</source>
         <translation>zum Messwert aktives Label der Spur &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../core/export/csv_text.cpp" line="+32"/>
-        <location line="+2"/>
-        <location filename="../core/export/run_csv_export.cpp" line="+39"/>
-        <location line="+21"/>
-        <location line="+9"/>
-        <location line="+7"/>
+        <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+944"/>
-        <location filename="../core/run_file.cpp" line="+288"/>
-        <location line="+37"/>
-        <location line="+17"/>
+        <location filename="../core/run_file.cpp" line="+301"/>
+        <location line="+40"/>
+        <location line="+39"/>
+        <location line="+14"/>
         <source>cannot write: %1</source>
         <translation>kann nicht schreiben: %1</translation>
     </message>
@@ -3316,12 +3393,12 @@ Befehle:
     <message>
         <location line="+2"/>
         <location line="+50"/>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>run</source>
         <translation>run</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-104"/>
         <location line="+26"/>
         <source>tissue</source>
         <translation>Gewebe</translation>
@@ -3475,7 +3552,7 @@ Befehle:
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+9"/>
+        <location filename="../core/export/session_analysis.cpp" line="+12"/>
         <source>overall</source>
         <translation>overall</translation>
     </message>
@@ -3490,24 +3567,26 @@ Befehle:
         <translation>RMS-Fehler</translation>
     </message>
     <message>
-        <location filename="../core/export/session_hdf5.cpp" line="+46"/>
+        <location filename="../core/export/session_hdf5.cpp" line="-250"/>
         <source>HDF5 could not %1</source>
         <translation>HDF5 konnte nicht: %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+31"/>
         <location line="+14"/>
+        <location line="+12"/>
         <source>create attribute &apos;%1&apos;</source>
         <translation>Attribut &apos;%1&apos; anlegen</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-22"/>
+        <location line="+12"/>
         <location line="+12"/>
         <source>write attribute &apos;%1&apos;</source>
         <translation>Attribut &apos;%1&apos; schreiben</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>set up compression for &apos;%1&apos;</source>
         <translation>Kompression für &apos;%1&apos; einrichten</translation>
     </message>
@@ -3518,39 +3597,69 @@ Befehle:
     </message>
     <message>
         <location line="+10"/>
-        <location line="+11"/>
-        <location line="+15"/>
+        <location line="+12"/>
+        <location line="+21"/>
         <source>write dataset &apos;%1&apos;</source>
         <translation>Datensatz &apos;%1&apos; schreiben</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>create group &apos;%1&apos;</source>
         <translation>Gruppe &apos;%1&apos; anlegen</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+44"/>
         <source>one row per label; frames from the sync offset and frame rate of the run</source>
         <translation>eine Zeile je Label; Bilder aus Sync-Versatz und Bildrate des Laufs</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+1"/>
+        <source>one row per label; no frames: the run has no video</source>
+        <translation>eine Zeile je Label; keine Bilder: der Lauf hat kein Video</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>video frame index (0 = first frame); -1 outside the video</source>
+        <translation>Bildindex im Video (0 = erstes Bild); -1 außerhalb des Videos</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>extreme force in the direction of motion; NaN when no sample lies in the interval</source>
+        <translation>extreme Kraft in Bewegungsrichtung; NaN, wenn kein Messwert im Intervall liegt</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>NaN when no sample lies in the interval</source>
         <translation>NaN, wenn kein Messwert im Intervall liegt</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
+        <location line="+42"/>
+        <source>another export is writing %1</source>
+        <translation>ein anderer Export schreibt %1</translation>
+    </message>
+    <message>
+        <location line="-41"/>
+        <source>cannot create %1: %2</source>
+        <translation>kann %1 nicht anlegen: %2</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>cannot create the file (is the folder writable?)</source>
         <translation>Datei kann nicht angelegt werden (ist der Ordner beschreibbar?)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+12"/>
+        <source>cannot create the file in memory</source>
+        <translation>kann die Datei im Speicher nicht anlegen</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>flush the file</source>
         <translation>die Datei schreiben (flush)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-55"/>
         <source>cannot rename the finished file into place: %1</source>
         <translation>die fertige Datei kann nicht an ihren Platz umbenannt werden: %1</translation>
     </message>
@@ -3572,7 +3681,7 @@ Befehle:
     <message>
         <location line="+17"/>
         <location filename="../core/labels.cpp" line="-61"/>
-        <location filename="../core/run_file.cpp" line="-253"/>
+        <location filename="../core/run_file.cpp" line="-296"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
@@ -3632,12 +3741,12 @@ Befehle:
         <translation>Kopfzeile hat keine Spalte &apos;%1&apos; (gefunden: %2)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>column &apos;%1&apos; appears twice</source>
         <translation>Spalte &apos;%1&apos; kommt doppelt vor</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>%1: ignored unknown columns: %2</source>
         <translation>%1: unbekannte Spalten ignoriert: %2</translation>
     </message>
@@ -3684,9 +3793,30 @@ Befehle:
         <translation>keine Kopfzeile</translation>
     </message>
     <message>
-        <location line="+141"/>
-        <source>write failed: %1</source>
-        <translation>Schreiben fehlgeschlagen: %1</translation>
+        <location line="+93"/>
+        <source>cannot write: no space left on the disk</source>
+        <translation>kann nicht schreiben: kein Platz mehr auf dem Datenträger</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>a run file is already open (%1)</source>
+        <translation>eine Laufdatei ist bereits geöffnet (%1)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>another process is recording to this file; it was left untouched</source>
+        <translation>ein anderer Prozess zeichnet in diese Datei auf; sie wurde nicht verändert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot lock: %1</source>
+        <translation>kann nicht sperren: %1</translation>
+    </message>
+    <message>
+        <location line="+80"/>
+        <location line="+16"/>
+        <source>write failed after %1 rows: %2</source>
+        <translation>Schreiben nach %1 Zeilen fehlgeschlagen: %2</translation>
     </message>
     <message>
         <location filename="../core/session.cpp" line="-116"/>
@@ -4157,6 +4287,19 @@ Befehle:
         <location line="+3"/>
         <source>expected a JSON object {...}</source>
         <translation>JSON-Objekt {...} erwartet</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../core/excerpt.cpp" line="+31"/>
+        <source>… (%n more characters)</source>
+        <translation>
+            <numerusform>… (%n weitere Zeichen)</numerusform>
+            <numerusform>… (%n weitere Zeichen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>… (%1 bytes in all)</source>
+        <translation>… (insgesamt %1 Bytes)</translation>
     </message>
 </context>
 <context>
@@ -4802,12 +4945,17 @@ Befehle:
         <translation>Eine Kalibrierung ändert die Kräfte eines Laufs; zuerst den Lauf beenden.</translation>
     </message>
     <message>
-        <location filename="../devices/run_once.cpp" line="+57"/>
+        <location filename="../devices/run_once.cpp" line="+58"/>
         <source>the devices did not get ready within %1 s</source>
         <translation>die Geräte wurden nicht innerhalb von %1 s bereit</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10"/>
+        <source>interrupted before the run ended</source>
+        <translation>unterbrochen, bevor die Messung endete</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>the run did not finish within %1 minutes</source>
         <translation>die Messung endete nicht innerhalb von %1 Minuten</translation>
     </message>
@@ -4925,7 +5073,7 @@ Befehle:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+81"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+97"/>
         <source>Stiffness before puncture: %1</source>
         <translation>Steifigkeit vor dem Durchstich: %1</translation>
     </message>
@@ -4941,30 +5089,20 @@ Befehle:
     </message>
     <message>
         <location line="+0"/>
-        <location line="+102"/>
-        <location line="+45"/>
+        <location line="+117"/>
+        <location line="+58"/>
         <source>force [N]</source>
         <translation>Kraft [N]</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-149"/>
         <source>%1 (outlier)</source>
         <translation>%1 (Ausreißer)</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>pooled fit: F = %1 x + %2 x² (F in N, x in mm)</source>
-        <translation>gemeinsame Anpassung: F = %1 x + %2 x² (F in N, x in mm)</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+31"/>
         <source>Friction against velocity: %1</source>
         <translation>Reibung über Geschwindigkeit: %1</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>velocity [m/s]</source>
-        <translation>Geschwindigkeit [m/s]</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -4972,18 +5110,41 @@ Befehle:
         <translation>Reibungskraft [N]</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <location line="+82"/>
+        <location line="+125"/>
         <source>recorded</source>
         <translation>aufgezeichnet</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-74"/>
         <source>Karnopp fit (%1 Hz)</source>
         <translation>Karnopp-Fit (%1 Hz)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-59"/>
+        <source>pooled fit:
+F = %1 x + %2 x²
+(F in N, x in mm)</source>
+        <translation>gemeinsame Anpassung:
+F = %1 x + %2 x²
+(F in N, x in mm)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>velocity [mm/s]</source>
+        <translation>Geschwindigkeit [mm/s]</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>recorded, not fitted</source>
+        <translation>gemessen, nicht angepasst</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recorded, fitted</source>
+        <translation>gemessen, angepasst</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Labelled phases: %1</source>
         <translation>Markierte Phasen: %1</translation>
     </message>
@@ -4993,9 +5154,19 @@ Befehle:
         <translation>Zeit [s]</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+14"/>
         <source>force</source>
         <translation>Kraft</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>force, insertion</source>
+        <translation>Kraft, Einstechen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>force, withdrawal</source>
+        <translation>Kraft, Zurückziehen</translation>
     </message>
     <message>
         <location line="+27"/>
@@ -5023,7 +5194,7 @@ Befehle:
         <translation>Summenmodell</translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/figure_export.cpp" line="+38"/>
+        <location filename="../widgets/analysis/figure_export.cpp" line="+44"/>
         <source>unknown figure format &apos;%1&apos; (png, svg or pdf)</source>
         <translation>unbekanntes Abbildungsformat &apos;%1&apos; (png, svg oder pdf)</translation>
     </message>
@@ -5170,7 +5341,7 @@ Befehle:
         <translation>Bewegung gestoppt</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+141"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation>Lauf beendet (%1): %2 Messwerte, %3 verloren, %4</translation>
     </message>
@@ -5196,21 +5367,27 @@ Befehle:
     </message>
     <message>
         <location line="+69"/>
+        <location line="+104"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-102"/>
         <source>real-time scheduling not requested</source>
         <translation>Echtzeit-Scheduling nicht angefordert</translation>
     </message>
     <message>
-        <location line="-113"/>
+        <location line="+98"/>
+        <source>recording failed, stage stopped: %1</source>
+        <translation>Aufzeichnung fehlgeschlagen, Verfahrtisch gestoppt: %1</translation>
+    </message>
+    <message>
+        <location line="-211"/>
         <source>force sensor biased: V0 = %1 V (%2 samples)</source>
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-414"/>
+        <location line="-419"/>
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -5275,7 +5452,7 @@ Befehle:
         <translation>Not-Aus: die Achse bleibt aus, bis Sie sie wieder einschalten</translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+156"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation>Kraftgrenze: %1 N &gt; %2 N bei %3 mm; Achse angehalten</translation>
     </message>
@@ -5283,9 +5460,19 @@ Befehle:
 <context>
     <name>nb::devices::Recorder</name>
     <message>
-        <location filename="../devices/recorder.cpp" line="+53"/>
+        <location filename="../devices/recorder.cpp" line="+62"/>
         <source>a run is already being recorded</source>
         <translation>es wird bereits ein Lauf aufgezeichnet</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>only %1 kB free on the disk; a recording needs at least %2 kB</source>
+        <translation>nur %1 kB frei auf dem Datenträger; eine Aufzeichnung braucht mindestens %2 kB</translation>
+    </message>
+    <message>
+        <location line="+95"/>
+        <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
+        <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
     </message>
 </context>
 <context>

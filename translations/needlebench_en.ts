@@ -15,6 +15,19 @@
     </message>
 </context>
 <context>
+    <name>export</name>
+    <message>
+        <location filename="../core/export/csv_text.cpp" line="+37"/>
+        <source>cannot write: no space left on the disk (%1 kB free)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot write: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
         <location filename="../widgets/analysis/analysis_workspace.cpp" line="+95"/>
@@ -1724,7 +1737,7 @@
 <context>
     <name>nb::TrCli</name>
     <message>
-        <location filename="../app/cmd_acquire.cpp" line="+26"/>
+        <location filename="../app/cmd_acquire.cpp" line="+27"/>
         <source>sim | u6 | u6:SERIAL (default: settings, else sim)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1740,7 +1753,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+42"/>
+        <location filename="../app/cmd_simulate.cpp" line="+46"/>
         <source>the run file to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1835,11 +1848,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+20"/>
+        <location filename="../app/cmd_simulate.cpp" line="+90"/>
+        <source>%1 received: stopping the stage and closing the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <location filename="../app/cmd_simulate.cpp" line="+22"/>
+        <source>recording failed: %1; the run file keeps %2 whole rows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+73"/>
+        <location filename="../app/cmd_fit.cpp" line="+84"/>
         <location line="+49"/>
-        <location line="+122"/>
+        <location line="+126"/>
         <location filename="../app/cmd_plan.cpp" line="+74"/>
         <location line="+156"/>
         <location line="+270"/>
@@ -1880,7 +1905,7 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-209"/>
+        <location filename="../app/cmd_fit.cpp" line="-224"/>
         <source>warning: %1
 </source>
         <translation type="unfinished"></translation>
@@ -1924,7 +1949,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+54"/>
+        <location filename="../app/cmd_export.cpp" line="+41"/>
+        <source>warning: %1: could not copy the video beside the export; linked where it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Export a session&apos;s runs, labels and metadata.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1945,7 +1975,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+2"/>
+        <source>put each run&apos;s video beside the export (hard link, else copy) and link that, so the export folder can be moved or shared on its own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--format is required (csv|hdf5|eaf)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2143,7 +2178,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>warning: removed %1, left by an export that did not finish</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>writing %1 runs to %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2154,7 +2194,8 @@
     </message>
     <message>
         <location filename="../app/cmd_demo.cpp" line="-245"/>
-        <location filename="../app/cmd_export.cpp" line="+6"/>
+        <location filename="../app/cmd_export.cpp" line="-16"/>
+        <location line="+22"/>
         <source>%1: cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2169,7 +2210,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="+40"/>
+        <location filename="../app/cmd_fit.cpp" line="+24"/>
+        <source>%1: the fit gave no finite result (forces or positions out of any measurable range?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>calibration points: columns mass_g, voltage_V</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2213,7 +2259,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation type="unfinished"></translation>
@@ -2242,7 +2288,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+34"/>
         <source>length of needle in tissue (slab thickness), required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2308,7 +2354,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+51"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -2426,7 +2472,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-139"/>
+        <location filename="../app/cmd_simulate.cpp" line="-251"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2563,7 +2609,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+25"/>
+        <source>warning: the disk holding %1 will be full in about %2 s at the current rate (%3 kB free)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Run &apos;needlebench simulate --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2800,7 +2851,7 @@
     <message>
         <location line="+18"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+140"/>
+        <location filename="../app/simulated_run.cpp" line="+165"/>
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3138,11 +3189,31 @@ Commands:
         <source>the run did not start (exit code %1)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../app/guarded_main.cpp" line="+19"/>
+        <source>out of memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown exception</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>internal error: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/simulated_run.cpp" line="-23"/>
+        <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
     <message>
-        <location filename="../core/export/dataset.cpp" line="+14"/>
+        <location filename="../core/export/dataset.cpp" line="+18"/>
         <source>time since the start of the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3177,7 +3248,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+25"/>
+        <location line="+7"/>
+        <source>the sensor&apos;s sample counter (a gap is a lost sample)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/export/dataset_loader.cpp" line="+27"/>
         <source>not a folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3202,23 +3278,24 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/run_csv_export.cpp" line="+75"/>
+        <location line="+11"/>
+        <source>%1: label &apos;%2&apos; (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/export/run_csv_export.cpp" line="+78"/>
         <source>label of track &apos;%1&apos; active at the sample</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/csv_text.cpp" line="+32"/>
-        <location line="+2"/>
-        <location filename="../core/export/run_csv_export.cpp" line="+39"/>
-        <location line="+21"/>
-        <location line="+9"/>
-        <location line="+7"/>
+        <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+944"/>
-        <location filename="../core/run_file.cpp" line="+288"/>
-        <location line="+37"/>
-        <location line="+17"/>
+        <location filename="../core/run_file.cpp" line="+301"/>
+        <location line="+40"/>
+        <location line="+39"/>
+        <location line="+14"/>
         <source>cannot write: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3250,12 +3327,12 @@ Commands:
     <message>
         <location line="+2"/>
         <location line="+50"/>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-104"/>
         <location line="+26"/>
         <source>tissue</source>
         <translation type="unfinished"></translation>
@@ -3409,7 +3486,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+9"/>
+        <location filename="../core/export/session_analysis.cpp" line="+12"/>
         <source>overall</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3424,24 +3501,26 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_hdf5.cpp" line="+46"/>
+        <location filename="../core/export/session_hdf5.cpp" line="-250"/>
         <source>HDF5 could not %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+31"/>
         <location line="+14"/>
+        <location line="+12"/>
         <source>create attribute &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-22"/>
+        <location line="+12"/>
         <location line="+12"/>
         <source>write attribute &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>set up compression for &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3452,39 +3531,69 @@ Commands:
     </message>
     <message>
         <location line="+10"/>
-        <location line="+11"/>
-        <location line="+15"/>
+        <location line="+12"/>
+        <location line="+21"/>
         <source>write dataset &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>create group &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+44"/>
         <source>one row per label; frames from the sync offset and frame rate of the run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+1"/>
+        <source>one row per label; no frames: the run has no video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>video frame index (0 = first frame); -1 outside the video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>extreme force in the direction of motion; NaN when no sample lies in the interval</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>NaN when no sample lies in the interval</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
+        <location line="+42"/>
+        <source>another export is writing %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-41"/>
+        <source>cannot create %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>cannot create the file (is the folder writable?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+12"/>
+        <source>cannot create the file in memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>flush the file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-55"/>
         <source>cannot rename the finished file into place: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3506,7 +3615,7 @@ Commands:
     <message>
         <location line="+17"/>
         <location filename="../core/labels.cpp" line="-61"/>
-        <location filename="../core/run_file.cpp" line="-253"/>
+        <location filename="../core/run_file.cpp" line="-296"/>
         <source>cannot open: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3566,12 +3675,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>column &apos;%1&apos; appears twice</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>%1: ignored unknown columns: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3618,8 +3727,29 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+141"/>
-        <source>write failed: %1</source>
+        <location line="+93"/>
+        <source>cannot write: no space left on the disk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>a run file is already open (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>another process is recording to this file; it was left untouched</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot lock: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+80"/>
+        <location line="+16"/>
+        <source>write failed after %1 rows: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4090,6 +4220,19 @@ Commands:
     <message>
         <location line="+3"/>
         <source>expected a JSON object {...}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../core/excerpt.cpp" line="+31"/>
+        <source>… (%n more characters)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>… (%1 bytes in all)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4736,12 +4879,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/run_once.cpp" line="+57"/>
+        <location filename="../devices/run_once.cpp" line="+58"/>
         <source>the devices did not get ready within %1 s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10"/>
+        <source>interrupted before the run ended</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>the run did not finish within %1 minutes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4859,7 +5007,7 @@ Commands:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+81"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+97"/>
         <source>Stiffness before puncture: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4875,29 +5023,19 @@ Commands:
     </message>
     <message>
         <location line="+0"/>
-        <location line="+102"/>
-        <location line="+45"/>
+        <location line="+117"/>
+        <location line="+58"/>
         <source>force [N]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-149"/>
         <source>%1 (outlier)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>pooled fit: F = %1 x + %2 x² (F in N, x in mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+31"/>
         <source>Friction against velocity: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>velocity [m/s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4906,18 +5044,39 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
-        <location line="+82"/>
+        <location line="+125"/>
         <source>recorded</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-74"/>
         <source>Karnopp fit (%1 Hz)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-59"/>
+        <source>pooled fit:
+F = %1 x + %2 x²
+(F in N, x in mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>velocity [mm/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>recorded, not fitted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recorded, fitted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Labelled phases: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4927,8 +5086,18 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+14"/>
         <source>force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>force, insertion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>force, withdrawal</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4957,7 +5126,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/figure_export.cpp" line="+38"/>
+        <location filename="../widgets/analysis/figure_export.cpp" line="+44"/>
         <source>unknown figure format &apos;%1&apos; (png, svg or pdf)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5104,7 +5273,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+141"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5130,21 +5299,27 @@ Commands:
     </message>
     <message>
         <location line="+69"/>
+        <location line="+104"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-102"/>
         <source>real-time scheduling not requested</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-113"/>
+        <location line="+98"/>
+        <source>recording failed, stage stopped: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-211"/>
         <source>force sensor biased: V0 = %1 V (%2 samples)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-414"/>
+        <location line="-419"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5209,7 +5384,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+156"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5217,8 +5392,18 @@ Commands:
 <context>
     <name>nb::devices::Recorder</name>
     <message>
-        <location filename="../devices/recorder.cpp" line="+53"/>
+        <location filename="../devices/recorder.cpp" line="+62"/>
         <source>a run is already being recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>only %1 kB free on the disk; a recording needs at least %2 kB</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+95"/>
+        <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -5,7 +5,11 @@
 
 #include <QCoreApplication>
 #include <QSaveFile>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+
+#include "core/disk_space.h"
 
 namespace nb {
 
@@ -25,13 +29,24 @@ QByteArray csvNumber(double value, int decimals)
     return QByteArray::number(value, 'f', decimals);
 }
 
+QString writeFailure(const QFileDevice& file, const QString& path)
+{
+    // QSaveFile reports a failed flush at commit as "Unknown error": say what it usually is.
+    const auto free = freeBytes(path);
+    if (free && *free < 64 * 1024)
+        return QCoreApplication::translate("export", "cannot write: no space left on the disk (%1 kB free)").arg(*free / 1024);
+    const QString why = file.errorString();
+    return QCoreApplication::translate("export", "cannot write: %1")
+        .arg(why.isEmpty() || why == QLatin1String("Unknown error") ? QString::fromLocal8Bit(std::strerror(errno)) : why);
+}
+
 void writeFileAtomically(const QString& path, const QByteArray& bytes)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        throw ExportError(path, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
+        throw ExportError(path, writeFailure(file, path));
     if (file.write(bytes) != bytes.size() || !file.commit())
-        throw ExportError(path, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
+        throw ExportError(path, writeFailure(file, path));
 }
 
 }  // namespace nb

@@ -4,6 +4,10 @@
 #include "core/tr.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <cmath>
 #include <algorithm>
 
 namespace nb {
@@ -29,7 +33,10 @@ std::vector<SignalColumn> exportSignals(const Run& run)
         if (name == QLatin1String("velocity_mm_s") || name == QLatin1String("acceleration_mm_s2") ||
             values.size() != run.size())
             continue;
-        cols.push_back({name, unitFromName(name), QString(), values});
+        if (name == QLatin1String("seq"))
+            cols.push_back({name, QStringLiteral("1"), nb::TrCore::tr("the sensor's sample counter (a gap is a lost sample)"), values, true});
+        else
+            cols.push_back({name, unitFromName(name), QString(), values});
     }
     return cols;
 }
@@ -78,6 +85,61 @@ QString unitFromName(const QString& name)
         if (lower.endsWith(QLatin1String(suffix)))
             return QString::fromLatin1(unit);
     return {};
+}
+
+MetadataValueKind metadataValueKind(const QString& key, const QString& value)
+{
+    static const QStringList textKeys{
+        QStringLiteral("organ"),    QStringLiteral("specimen"), QStringLiteral("tip"),      QStringLiteral("operator"),
+        QStringLiteral("protocol"), QStringLiteral("notes"),    QStringLiteral("tissue"),   QStringLiteral("name"),
+        QStringLiteral("device"),   QStringLiteral("calibration"), QStringLiteral("created"), QStringLiteral("session"),
+        QStringLiteral("comment"),  QStringLiteral("daq"),      QStringLiteral("stage"),    QStringLiteral("end_reason"),
+    };
+    if (textKeys.contains(key))
+        return MetadataValueKind::Text;
+    static const QRegularExpression integer(QStringLiteral("^[+-]?[0-9]{1,18}$"));
+    static const QRegularExpression number(QStringLiteral("^[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?$"));
+    const QString v = value.trimmed();
+    if (integer.match(v).hasMatch())
+        return MetadataValueKind::Integer;
+    if (number.match(v).hasMatch() && std::isfinite(v.toDouble()))
+        return MetadataValueKind::Number;
+    return MetadataValueKind::Text;
+}
+
+QString findRunVideo(const QString& runPath, const Run& run)
+{
+    if (runPath.isEmpty())
+        return {};
+    const QFileInfo fi(runPath);
+    for (const char* key : {"video", "video_file", "video_path"}) {
+        if (const auto v = run.meta(QString::fromLatin1(key)); v && !v->trimmed().isEmpty()) {
+            const QString p = QFileInfo(v->trimmed()).isAbsolute() ? v->trimmed() : fi.dir().filePath(v->trimmed());
+            if (QFileInfo(p).isFile())
+                return QFileInfo(p).absoluteFilePath();
+        }
+    }
+    for (const char* ext : {"mp4", "avi", "mkv", "mov"}) {
+        const QString p = fi.dir().filePath(fi.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
+        if (QFileInfo(p).isFile())
+            return QFileInfo(p).absoluteFilePath();
+    }
+    return {};
+}
+
+QString relativeLink(const QString& fromFile, const QString& target)
+{
+    if (target.isEmpty())
+        return {};
+    return QDir(QFileInfo(fromFile).absolutePath()).relativeFilePath(QFileInfo(target).absoluteFilePath());
+}
+
+QString portableLink(const QString& fromFile, const QString& target)
+{
+    const QString rel = relativeLink(fromFile, target);
+    if (rel.isEmpty() || rel == QLatin1String("..") || rel.startsWith(QLatin1String("../")))
+        return target.isEmpty() ? QString() : QFileInfo(target).absoluteFilePath();
+    return rel;
 }
 
 double syncOffset(const Run& run)

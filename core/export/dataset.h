@@ -16,6 +16,8 @@ struct DatasetRun {
     QString sourcePath;  // the run file it came from (empty when built in memory)
     Run run;
     Labels labels;
+    // The run's video (absolute), empty when it has none: frames are given only with one.
+    QString videoPath;
 };
 
 struct Dataset {
@@ -30,6 +32,7 @@ struct SignalColumn {
     QString unit;
     QString description;
     std::vector<double> values;
+    bool integer = false;  // counts (seq): written without decimals, as int64 in HDF5
 };
 
 // time, position, velocity, acceleration, force, then any other numeric columns of the run.
@@ -47,6 +50,27 @@ QStringList labelsPerSample(const Labels& labels, const std::vector<double>& tim
 // The unit a metadata key or column name carries in its suffix (`rate_hz` -> Hz,
 // `speed_mm_s` -> mm/s, `mass_g` -> g); empty when the name says none.
 QString unitFromName(const QString& name);
+
+// How an export types a metadata value. Numbers written as numbers (finite, plain decimal or
+// exponent notation) are numbers, integers when written without fraction or exponent; the
+// rest is text ("nan", "inf", "1e999" too). Keys that name text (organ, specimen, tip,
+// operator, protocol, notes, ...) are always text, whatever they hold.
+enum class MetadataValueKind { Integer, Number, Text };
+MetadataValueKind metadataValueKind(const QString& key, const QString& value);
+
+// The video of a run file: named in its metadata (`video`, `video_file`, `video_path`;
+// relative to the run file) or sharing its base name (.mp4, .avi, .mkv, .mov). Absolute path,
+// empty when there is none on disk.
+QString findRunVideo(const QString& runPath, const Run& run);
+
+// `target` as a path relative to the folder of `fromFile` (both made absolute first): what
+// an export writes so that the folder can be moved with its files.
+QString relativeLink(const QString& fromFile, const QString& target);
+
+// The link an export stores: relative (as above) when `target` lies in the folder of
+// `fromFile` or below it, so that the folder can move with it; absolute otherwise (a path
+// climbing out with "../" would break as soon as the folder moved).
+QString portableLink(const QString& fromFile, const QString& target);
 
 // Video frame rate when the run does not say (NTSC, as the thesis's imaging console).
 constexpr double kDefaultVideoFps = 29.97;

@@ -3,12 +3,14 @@
 
 #include "export_error.h"
 
+#include "core/excerpt.h"
 #include "core/run_file.h"
 #include "core/session.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <cmath>
 
 namespace nb {
 
@@ -80,6 +82,24 @@ LoadedDataset loadDataset(const QString& dirPath)
             } catch (const RunFileError& e) {
                 out.warnings << nb::TrCore::tr("%1: labels ignored (%2)").arg(labelsPath, e.message());
             }
+            // A label outside the recording (a typo, 1e300 s) describes nothing in it.
+            if (!r.run.time_s.empty()) {
+                const double t0 = r.run.time_s.front(), t1 = r.run.time_s.back();
+                const double slack = 1.0;  // a label may end just after the last sample
+                Labels kept;
+                for (const Label& l : r.labels) {
+                    if (std::isfinite(l.start_s) && std::isfinite(l.end_s) && l.start_s >= t0 - slack && l.end_s <= t1 + slack)
+                        kept.push_back(l);
+                    else
+                        out.warnings << nb::TrCore::tr("%1: label '%2' (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored")
+                                            .arg(labelsPath, excerpt(l.label))
+                                            .arg(l.start_s, 0, 'g', 6)
+                                            .arg(l.end_s, 0, 'g', 6)
+                                            .arg(t0, 0, 'f', 3)
+                                            .arg(t1, 0, 'f', 3);
+                }
+                r.labels = std::move(kept);
+            }
         }
         // Names become file and group names: keep them unique.
         QString name = QFileInfo(path).completeBaseName();
@@ -87,6 +107,7 @@ LoadedDataset loadDataset(const QString& dirPath)
             name = QFileInfo(path).completeBaseName() + QStringLiteral("_%1").arg(k);
         used << name;
         r.name = name;
+        r.videoPath = findRunVideo(path, r.run);
         d.runs.push_back(std::move(r));
     }
     return out;

@@ -18,6 +18,14 @@ QString fileUrl(const QString& path) { return QUrl::fromLocalFile(QFileInfo(path
 
 qint64 ms(double s) { return qint64(std::llround(s * 1000.0)); }
 
+// ELAN's relative URLs: "./name" beside the document, "../x/name" elsewhere. Without the
+// document's place only the file name can be given.
+QString relativeUrl(const QString& documentPath, const QString& target)
+{
+    const QString rel = documentPath.isEmpty() ? QFileInfo(target).fileName() : relativeLink(documentPath, target);
+    return rel.startsWith(QLatin1String("../")) ? rel : QStringLiteral("./") + rel;
+}
+
 }  // namespace
 
 QByteArray eafDocument(const DatasetRun& r, const EafLinks& links)
@@ -42,7 +50,7 @@ QByteArray eafDocument(const DatasetRun& r, const EafLinks& links)
     if (!links.videoPath.isEmpty()) {
         x.writeEmptyElement(QStringLiteral("MEDIA_DESCRIPTOR"));
         x.writeAttribute(QStringLiteral("MEDIA_URL"), fileUrl(links.videoPath));
-        x.writeAttribute(QStringLiteral("RELATIVE_MEDIA_URL"), QStringLiteral("./") + QFileInfo(links.videoPath).fileName());
+        x.writeAttribute(QStringLiteral("RELATIVE_MEDIA_URL"), relativeUrl(links.documentPath, links.videoPath));
         x.writeAttribute(QStringLiteral("MIME_TYPE"), QMimeDatabase().mimeTypeForFile(links.videoPath, QMimeDatabase::MatchExtension).name());
         // ELAN's TIME_ORIGIN is where in the media file annotation time 0 lies.
         const qint64 origin = ms(syncOffset(r.run));
@@ -52,7 +60,7 @@ QByteArray eafDocument(const DatasetRun& r, const EafLinks& links)
     if (!links.forceCsvPath.isEmpty()) {
         x.writeEmptyElement(QStringLiteral("LINKED_FILE_DESCRIPTOR"));
         x.writeAttribute(QStringLiteral("LINK_URL"), fileUrl(links.forceCsvPath));
-        x.writeAttribute(QStringLiteral("RELATIVE_LINK_URL"), QStringLiteral("./") + QFileInfo(links.forceCsvPath).fileName());
+        x.writeAttribute(QStringLiteral("RELATIVE_LINK_URL"), relativeUrl(links.documentPath, links.forceCsvPath));
         x.writeAttribute(QStringLiteral("MIME_TYPE"), QStringLiteral("text/csv"));
         x.writeAttribute(QStringLiteral("TIME_ORIGIN"), QStringLiteral("0"));
     }
@@ -154,7 +162,9 @@ QByteArray eafDocument(const DatasetRun& r, const EafLinks& links)
 
 void writeEaf(const QString& path, const DatasetRun& run, const EafLinks& links)
 {
-    writeFileAtomically(path, eafDocument(run, links));
+    EafLinks placed = links;
+    placed.documentPath = path;
+    writeFileAtomically(path, eafDocument(run, placed));
 }
 
 }  // namespace nb

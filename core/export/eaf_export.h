@@ -13,6 +13,9 @@ namespace nb {
 struct EafLinks {
     QString forceCsvPath;  // linked as a secondary file; empty to leave out
     QString videoPath;     // the media file; empty to leave out
+    // Where the document goes: the relative links (which ELAN tries first) start there, so
+    // a folder moved with its files keeps its video and CSV. Set by writeEaf.
+    QString documentPath;
 };
 
 // The document. ELAN needs end > start, so a point event becomes a 1 ms annotation.

@@ -37,6 +37,47 @@ QString latexEscaped(const QString& text)
     return out;
 }
 
+QString latexUnit(const QString& unit)
+{
+    // Letters upright (\mathrm), powers raised ("^2", "²", "³"), "/" kept, a space or "·"
+    // between units a thin space, in math mode: N/mm^2 -> $\mathrm{N}/\mathrm{mm}^{2}$.
+    QString out, word;
+    auto flush = [&] {
+        if (!word.isEmpty())
+            out += QStringLiteral("\\mathrm{%1}").arg(latexEscaped(word));
+        word.clear();
+    };
+    for (qsizetype i = 0; i < unit.size(); ++i) {
+        const QChar c = unit[i];
+        if (c == u'^') {
+            flush();
+            QString power;
+            while (i + 1 < unit.size() && (unit[i + 1].isDigit() || unit[i + 1] == u'-'))
+                power += unit[++i];
+            out += QStringLiteral("^{%1}").arg(power);
+        } else if (c == u'\u00b2' || c == u'\u00b3') {
+            flush();
+            out += c == u'\u00b2' ? QStringLiteral("^{2}") : QStringLiteral("^{3}");
+        } else if (c == u'/') {
+            flush();
+            out += QLatin1Char('/');
+        } else if (c == u' ' || c == u'\u00b7') {
+            flush();
+            out += QStringLiteral("\\,");
+        } else if (c == u'%') {
+            flush();
+            out += QStringLiteral("\\%");
+        } else if (c == u'\u00b5' || c == u'\u03bc') {
+            flush();
+            out += QStringLiteral("\\mu ");
+        } else {
+            word += c;
+        }
+    }
+    flush();
+    return QLatin1Char('$') + out + QLatin1Char('$');
+}
+
 QByteArray fitTableCsv(const FitTable& t)
 {
     QByteArray out;
@@ -64,7 +105,7 @@ QByteArray fitTableLatex(const FitTable& t)
     bool anyUnit = false;
     for (const TableColumn& c : t.columns) {
         titles << (c.latexTitle.isEmpty() ? latexEscaped(c.title) : c.latexTitle);
-        units << (c.unit.isEmpty() ? QString() : QLatin1Char('[') + latexEscaped(c.unit) + QLatin1Char(']'));
+        units << (c.unit.isEmpty() ? QString() : QLatin1Char('[') + latexUnit(c.unit) + QLatin1Char(']'));
         anyUnit = anyUnit || !c.unit.isEmpty();
     }
     QString s;

@@ -12,7 +12,7 @@ namespace nb {
 struct TableColumn {
     QString key;          // CSV header, e.g. "a1_N_per_mm"
     QString title;        // LaTeX header text (escaped), e.g. "a1"
-    QString unit;         // LaTeX unit shown as "[unit]" under the title (escaped); may be empty
+    QString unit;         // unit shown as "[unit]" under the title (typeset by latexUnit); may be empty
     int decimals = 4;     // for numbers
     QString latexTitle;   // raw LaTeX header overriding `title` (e.g. "$a_1$"); optional
 };
@@ -31,6 +31,10 @@ QByteArray fitTableLatex(const FitTable& table);
 
 // Escapes LaTeX's special characters in plain text.
 QString latexEscaped(const QString& text);
+
+// A unit typeset in math mode: "N/mm^2" -> "$\mathrm{N}/\mathrm{mm}^{2}$", "N s/m^2" with a
+// thin space; no package needed beyond LaTeX itself.
+QString latexUnit(const QString& unit);
 
 // Atomic writes. Throw ExportError.
 void writeFitTableCsv(const QString& path, const FitTable& table);

@@ -18,7 +18,11 @@ long long FrameClock::frameAt(double t_s) const
         return it == frameTimes_s.begin() ? 0 : (it - frameTimes_s.begin()) - 1;
     }
     // A small epsilon keeps a time exactly on a frame boundary in that frame despite rounding.
-    return static_cast<long long>(std::floor((t_s + offset_s) * fps + 1e-9));
+    const double frame = std::floor((t_s + offset_s) * fps + 1e-9);
+    // No frame for a time before the video or beyond any video (not a wrapped-around integer).
+    if (!std::isfinite(frame) || frame < 0.0 || frame > 1e12)
+        return -1;
+    return static_cast<long long>(frame);
 }
 
 FrameClock frameClockFor(const Run& run)
@@ -26,6 +30,18 @@ FrameClock frameClockFor(const Run& run)
     FrameClock c;
     c.fps = videoFps(run);
     c.offset_s = syncOffset(run);
+    c.hasVideo = false;
+    for (const char* key : {"video", "video_file", "video_path", "sync_offset_s", "video_offset_s", "video_fps"})
+        if (run.meta(QString::fromLatin1(key)))
+            c.hasVideo = true;
+    return c;
+}
+
+FrameClock frameClockFor(const DatasetRun& r)
+{
+    FrameClock c = frameClockFor(r.run);
+    if (!r.sourcePath.isEmpty())
+        c.hasVideo = !r.videoPath.isEmpty();
     return c;
 }
 
@@ -43,8 +59,9 @@ std::vector<LabelInterval> labelIntervals(const Run& run, const Labels& labels, 
         r.start_s = l.start_s;
         r.end_s = l.end_s;
         r.duration_s = l.end_s - l.start_s;
-        r.start_frame = clock.frameAt(l.start_s);
-        r.end_frame = clock.frameAt(l.end_s);
+        const bool frames = clock.hasVideo && std::isfinite(l.start_s) && std::isfinite(l.end_s);
+        r.start_frame = frames ? clock.frameAt(l.start_s) : -1;
+        r.end_frame = frames ? clock.frameAt(l.end_s) : -1;
         r.comment = l.comment;
         const auto begin = t.begin();
         const auto end = t.begin() + std::ptrdiff_t(n);
@@ -59,13 +76,17 @@ std::vector<LabelInterval> labelIntervals(const Run& run, const Labels& labels, 
             const auto first = std::lower_bound(begin, end, l.start_s);
             const auto last = std::lower_bound(first, end, l.end_s);
             if (first != last) {
-                double peak = -std::numeric_limits<double>::infinity(), sum = 0.0;
-                for (auto it = first; it != last; ++it) {
-                    const double v = f[std::size_t(it - begin)];
-                    peak = std::max(peak, v);
-                    sum += v;
+                const std::size_t i0 = std::size_t(first - begin), i1 = std::size_t(last - begin) - 1;
+                // Direction of motion over the interval: deeper (insertion) or back (withdrawal).
+                const auto& p = run.position_mm;
+                const double travel = i1 < p.size() ? p[i1] - p[i0] : 0.0;
+                double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0.0;
+                for (std::size_t i = i0; i <= i1; ++i) {
+                    lo = std::min(lo, f[i]);
+                    hi = std::max(hi, f[i]);
+                    sum += f[i];
                 }
-                r.peak_force_N = peak;
+                r.peak_force_N = travel < 0.0 ? lo : travel > 0.0 ? hi : (std::fabs(lo) > std::fabs(hi) ? lo : hi);
                 r.mean_force_N = sum / double(last - first);
             }
         }
@@ -86,7 +107,8 @@ void writeLabelIntervalsCsv(const QString& path, const std::vector<LabelInterval
     QByteArray out = "label,track,start_s,end_s,duration_s,start_frame,end_frame,peak_force_N,mean_force_N,comment\n";
     for (const LabelInterval& r : rows) {
         out += csvField(r.label) + ',' + csvField(r.track) + ',' + csvNumber(r.start_s, 6) + ',' + csvNumber(r.end_s, 6) + ',' +
-               csvNumber(r.duration_s, 6) + ',' + QByteArray::number(r.start_frame) + ',' + QByteArray::number(r.end_frame) +
+               csvNumber(r.duration_s, 6) + ',' + (r.start_frame >= 0 ? QByteArray::number(r.start_frame) : QByteArray()) + ',' +
+               (r.end_frame >= 0 ? QByteArray::number(r.end_frame) : QByteArray()) +
                ',' + csvNumber(r.peak_force_N, 6) + ',' + csvNumber(r.mean_force_N, 6) + ',' + csvField(r.comment) + '\n';
     }
     writeFileAtomically(path, out);

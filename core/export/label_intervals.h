@@ -18,8 +18,11 @@ struct LabelInterval {
     double start_s = 0.0;
     double end_s = 0.0;
     double duration_s = 0.0;
+    // -1 when the run has no video (the CSV leaves the cells empty).
     long long start_frame = 0;
     long long end_frame = 0;
+    // The extreme force in the direction of motion (the largest for an insertion, the most
+    // negative for a withdrawal; the largest magnitude when the needle stood still).
     // NaN when no sample falls in the interval (a point event takes its nearest sample).
     double peak_force_N = std::numeric_limits<double>::quiet_NaN();
     double mean_force_N = std::numeric_limits<double>::quiet_NaN();
@@ -32,12 +35,17 @@ struct FrameClock {
     double fps = 29.97;
     double offset_s = 0.0;
     std::vector<double> frameTimes_s;  // when not empty, wins over fps/offset
+    bool hasVideo = true;              // false: no frames are given
 
     long long frameAt(double t_s) const;
 };
 
-// The clock a run's metadata describes (sync offset, frame rate; 29.97 fps when unsaid).
+// The clock a run's metadata describes (sync offset, frame rate; 29.97 fps when unsaid);
+// without a video it has hasVideo false. From a Run: a video is assumed when its metadata
+// names one or a sync offset; from a DatasetRun: when a video file was found.
 FrameClock frameClockFor(const Run& run);
+struct DatasetRun;
+FrameClock frameClockFor(const DatasetRun& run);
 
 // Rows in time order (then track, then label).
 std::vector<LabelInterval> labelIntervals(const Run& run, const Labels& labels, const FrameClock& clock);

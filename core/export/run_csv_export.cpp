@@ -2,6 +2,7 @@
 #include "core/tr.h"
 
 #include "csv_text.h"
+#include "label_intervals.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -15,12 +16,14 @@ namespace nb {
 
 namespace {
 
-QJsonValue valueOf(const QString& text)
+// Integers as JSON integers, numbers as numbers, the rest (also "nan") as the text it is.
+QJsonValue valueOf(const QString& key, const QString& text)
 {
-    bool ok = false;
-    const double d = text.trimmed().toDouble(&ok);
-    if (ok && std::isfinite(d))
-        return d;
+    switch (metadataValueKind(key, text)) {
+    case MetadataValueKind::Integer: return QJsonValue(text.trimmed().toLongLong());
+    case MetadataValueKind::Number: return text.trimmed().toDouble();
+    case MetadataValueKind::Text: break;
+    }
     return text;
 }
 
@@ -28,7 +31,7 @@ QJsonObject metadataObject(const Metadata& m)
 {
     QJsonObject o;
     for (const auto& [key, value] : m.entries()) {
-        QJsonObject field{{QStringLiteral("value"), valueOf(value)}};
+        QJsonObject field{{QStringLiteral("value"), valueOf(key, value)}};
         const QString unit = unitFromName(key);
         if (!unit.isEmpty())
             field.insert(QStringLiteral("unit"), unit);
@@ -45,7 +48,7 @@ QJsonObject pick(const Run& run, std::initializer_list<const char*> fragments)
         for (const auto& [key, value] : m->entries()) {
             for (const char* f : fragments) {
                 if (key.contains(QLatin1String(f), Qt::CaseInsensitive)) {
-                    o.insert(key, valueOf(value));
+                    o.insert(key, valueOf(key, value));
                     break;
                 }
             }
@@ -62,7 +65,7 @@ QString sidecarPath(const QString& csvPath)
     return fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".json"));
 }
 
-QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName)
+QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName, const QString& sidecarFile)
 {
     QJsonArray columns;
     for (const SignalColumn& c : exportSignals(r.run))
@@ -84,9 +87,13 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName)
         {QStringLiteral("format"), QStringLiteral("needlebench-run-export")},
         {QStringLiteral("version"), 1},
         {QStringLiteral("run"), r.name},
-        {QStringLiteral("source"), r.sourcePath},
+        // Links relative to the sidecar, so that the export folder can be moved whole.
+        {QStringLiteral("source"), sidecarFile.isEmpty() ? r.sourcePath : portableLink(sidecarFile, r.sourcePath)},
+        {QStringLiteral("source_absolute"), r.sourcePath.isEmpty() ? QString() : QFileInfo(r.sourcePath).absoluteFilePath()},
         {QStringLiteral("csv"), csvFileName},
-        {QStringLiteral("samples"), double(r.run.size())},
+        {QStringLiteral("video"), sidecarFile.isEmpty() || r.videoPath.isEmpty() ? QFileInfo(r.videoPath).fileName()
+                                                                                  : portableLink(sidecarFile, r.videoPath)},
+        {QStringLiteral("samples"), qint64(r.run.size())},
         {QStringLiteral("columns"), columns},
         {QStringLiteral("metadata"), metadataObject(r.run.metadata)},
         {QStringLiteral("footer"), metadataObject(r.run.footer)},
@@ -94,7 +101,7 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName)
         {QStringLiteral("device"), pick(r.run, {"device", "sensor", "stage", "daq", "rig", "serial", "firmware"})},
         {QStringLiteral("drops"), pick(r.run, {"drop", "lost", "overrun", "gap", "late"})},
         {QStringLiteral("sync"), QJsonObject{{QStringLiteral("offset_s"), syncOffset(r.run)},
-                                             {QStringLiteral("video_fps"), videoFps(r.run)},
+                                             {QStringLiteral("video_fps"), frameClockFor(r).hasVideo ? QJsonValue(videoFps(r.run)) : QJsonValue()},
                                              {QStringLiteral("video_file"), r.run.meta(QStringLiteral("video_file")).value_or(QString())},
                                              {QStringLiteral("meaning"), QStringLiteral("video time = recording time + offset_s")}}},
         {QStringLiteral("labels"), labels},
@@ -111,7 +118,7 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
 
     QSaveFile csv(csvPath);
     if (!csv.open(QIODevice::WriteOnly))
-        throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
+        throw ExportError(csvPath, writeFailure(csv, csvPath));
     QByteArray buf;
     for (std::size_t c = 0; c < cols.size(); ++c)
         buf += (c ? "," : "") + csvField(cols[c].name);
@@ -125,14 +132,14 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
         for (std::size_t c = 0; c < cols.size(); ++c) {
             if (c)
                 buf += ',';
-            buf += csvNumber(cols[c].values[i], 6);
+            buf += csvNumber(cols[c].values[i], cols[c].integer ? 0 : 6);
         }
         for (const QStringList& tv : trackValues)
             buf += ',' + csvField(tv[qsizetype(i)]);
         buf += '\n';
         if (buf.size() > (1 << 20) || i + 1 == n) {
             if (csv.write(buf) != buf.size())
-                throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
+                throw ExportError(csvPath, writeFailure(csv, csvPath));
             buf.clear();
             if (!keepGoing(progress, qint64(i + 1), qint64(n))) {
                 csv.cancelWriting();
@@ -141,14 +148,14 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
         }
     }
     if (!buf.isEmpty() && csv.write(buf) != buf.size())
-        throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
+        throw ExportError(csvPath, writeFailure(csv, csvPath));
 
     const QString jsonPath = sidecarPath(csvPath);
     writeFileAtomically(jsonPath,
-                        QJsonDocument(runSidecar(r, QFileInfo(csvPath).fileName())).toJson(QJsonDocument::Indented));
+                        QJsonDocument(runSidecar(r, QFileInfo(csvPath).fileName(), jsonPath)).toJson(QJsonDocument::Indented));
     if (!csv.commit()) {
         QFile::remove(jsonPath);
-        throw ExportError(csvPath, nb::TrCore::tr("cannot write: %1").arg(csv.errorString()));
+        throw ExportError(csvPath, writeFailure(csv, csvPath));
     }
     return true;
 }

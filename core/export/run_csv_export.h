@@ -17,7 +17,9 @@ namespace nb {
 // The sidecar path for a CSV path (`x/run.csv` -> `x/run.json`).
 QString sidecarPath(const QString& csvPath);
 
-QJsonObject runSidecar(const DatasetRun& run, const QString& csvFileName);
+// `sidecarFile`: where the sidecar goes; its `source` and `video` links are relative to it
+// (empty: the source path as given).
+QJsonObject runSidecar(const DatasetRun& run, const QString& csvFileName, const QString& sidecarFile = {});
 
 // Writes the CSV and its sidecar, both or neither. Returns false when cancelled through
 // `progress` (nothing is left behind). Throws ExportError.

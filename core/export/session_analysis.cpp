@@ -300,6 +300,9 @@ FitTable frictionSummaryTable(const SessionAnalysis& a)
             std::vector<TableCell> row{name, k ? nb::TrCore::tr("std") : nb::TrCore::tr("mean"), g.frequency_hz > 0.0 ? g.frequency_hz : std::nan(""),
                                        double(g.runs)};
             appendKarnopp(row, k ? g.stdDev : g.mean);
+            if (k == 1 && g.runs < 2)  // a standard deviation of one run is undefined: left empty
+                for (std::size_t c = 4; c < row.size(); ++c)
+                    row[c] = std::nan("");
             t.rows.push_back(std::move(row));
         }
     };

@@ -2,15 +2,22 @@
 #include "core/tr.h"
 
 #include "label_intervals.h"
+#include "stale_parts.h"
+
+#include "core/models.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
 #include <QScopeGuard>
-#include <filesystem>
+#include <cmath>
+#include <cstring>
+#include <cerrno>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 #include <hdf5.h>
-#include <system_error>
 
 namespace nb {
 
@@ -52,16 +59,23 @@ public:
         return id;
     }
 
-    Handle stringType() const
+    // Fixed-length strings padded with NULs: Octave's load and MATLAB's h5read read them.
+    // Octave converts neither variable-length strings nor ones marked UTF-8 (no conversion
+    // path to its ASCII type), so all text is marked ASCII: plain ASCII is exactly that, and
+    // other text keeps its UTF-8 bytes (h5py: .decode('utf-8'); MATLAB: native2unicode).
+    Handle stringType(std::size_t bytes) const
     {
         Handle t(checked(H5Tcopy(H5T_C_S1), QStringLiteral("create a string type")), H5Tclose);
-        check(H5Tset_size(t, H5T_VARIABLE) >= 0 && H5Tset_cset(t, H5T_CSET_UTF8) >= 0, QStringLiteral("set up a string type"));
+        check(H5Tset_size(t, std::max<std::size_t>(bytes, 1)) >= 0 && H5Tset_strpad(t, H5T_STR_NULLPAD) >= 0 &&
+                  H5Tset_cset(t, H5T_CSET_ASCII) >= 0,
+              QStringLiteral("set up a string type"));
         return Handle(H5Tcopy(t), H5Tclose);
     }
 
     void attribute(hid_t obj, const QString& name, const QString& value) const
     {
-        const Handle type = stringType();
+        QByteArray v = value.toUtf8();
+        const Handle type = stringType(std::size_t(v.size()));
         const Handle space(checked(H5Screate(H5S_SCALAR), name), H5Sclose);
         const QByteArray n = name.toUtf8();
         if (H5Aexists(obj, n.constData()) > 0)
@@ -69,9 +83,9 @@ public:
         const Handle attr(checked(H5Acreate2(obj, n.constData(), type, space, H5P_DEFAULT, H5P_DEFAULT),
                                   nb::TrCore::tr("create attribute '%1'").arg(name)),
                           H5Aclose);
-        const QByteArray v = value.toUtf8();
-        const char* p = v.constData();
-        check(H5Awrite(attr, type, &p) >= 0, nb::TrCore::tr("write attribute '%1'").arg(name));
+        if (v.isEmpty())
+            v = QByteArray(1, '\0');
+        check(H5Awrite(attr, type, v.constData()) >= 0, nb::TrCore::tr("write attribute '%1'").arg(name));
     }
 
     void attribute(hid_t obj, const QString& name, double value) const
@@ -86,15 +100,28 @@ public:
         check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value) >= 0, nb::TrCore::tr("write attribute '%1'").arg(name));
     }
 
-    // A metadata field as a number when it reads as one, plus its unit.
+    void attribute(hid_t obj, const QString& name, long long value) const
+    {
+        const Handle space(checked(H5Screate(H5S_SCALAR), name), H5Sclose);
+        const QByteArray n = name.toUtf8();
+        if (H5Aexists(obj, n.constData()) > 0)
+            H5Adelete(obj, n.constData());
+        const Handle attr(checked(H5Acreate2(obj, n.constData(), H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT),
+                                  nb::TrCore::tr("create attribute '%1'").arg(name)),
+                          H5Aclose);
+        check(H5Awrite(attr, H5T_NATIVE_LLONG, &value) >= 0, nb::TrCore::tr("write attribute '%1'").arg(name));
+    }
+
+    // A metadata field as an integer or a number when it is written as one (not "nan" or
+    // "inf": those stay the text they were), plus its unit. Fields that are text by nature
+    // (organ, tip, operator...) stay text whatever they hold.
     void metadataAttribute(hid_t obj, const QString& key, const QString& value) const
     {
-        bool ok = false;
-        const double d = value.trimmed().toDouble(&ok);
-        if (ok)
-            attribute(obj, key, d);
-        else
-            attribute(obj, key, value);
+        switch (metadataValueKind(key, value)) {
+        case MetadataValueKind::Integer: attribute(obj, key, value.trimmed().toLongLong()); break;
+        case MetadataValueKind::Number: attribute(obj, key, value.trimmed().toDouble()); break;
+        case MetadataValueKind::Text: attribute(obj, key, value); break;
+        }
         const QString unit = unitFromName(key);
         if (!unit.isEmpty())
             attribute(obj, key + QStringLiteral("_units"), unit);
@@ -127,27 +154,38 @@ public:
             attribute(d, QStringLiteral("description"), description);
     }
 
-    void integers(hid_t group, const QString& name, const std::vector<long long>& values) const
+    void integers(hid_t group, const QString& name, const std::vector<long long>& values, const QString& unit,
+                  const QString& description = {}) const
     {
         const Handle d = dataset(group, name, H5T_STD_I64LE, values.size());
         if (!values.empty())
             check(H5Dwrite(d, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0,
                   nb::TrCore::tr("write dataset '%1'").arg(name));
+        attribute(d, QStringLiteral("units"), unit);
+        if (!description.isEmpty())
+            attribute(d, QStringLiteral("description"), description);
     }
 
-    void strings(hid_t group, const QString& name, const QStringList& values) const
+    void strings(hid_t group, const QString& name, const QStringList& values, const QString& description = {}) const
     {
-        const Handle type = stringType();
-        const Handle d = dataset(group, name, type, std::size_t(values.size()));
         std::vector<QByteArray> bytes;
-        std::vector<const char*> ptrs;
         bytes.reserve(std::size_t(values.size()));
-        for (const QString& v : values)
+        std::size_t width = 1;
+        for (const QString& v : values) {
             bytes.push_back(v.toUtf8());
-        for (const QByteArray& b : bytes)
-            ptrs.push_back(b.constData());
-        if (!ptrs.empty())
-            check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) >= 0, nb::TrCore::tr("write dataset '%1'").arg(name));
+            width = std::max(width, std::size_t(bytes.back().size()));
+        }
+        const Handle type = stringType(width);
+        const Handle d = dataset(group, name, type, bytes.size());
+        std::vector<char> buffer(bytes.size() * width, '\0');
+        for (std::size_t i = 0; i < bytes.size(); ++i)
+            std::memcpy(buffer.data() + i * width, bytes[i].constData(), std::size_t(bytes[i].size()));
+        if (!bytes.empty())
+            check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) >= 0, nb::TrCore::tr("write dataset '%1'").arg(name));
+        // Text has no unit; the attribute is there so that every dataset carries one.
+        attribute(d, QStringLiteral("units"), QStringLiteral("none"));
+        if (!description.isEmpty())
+            attribute(d, QStringLiteral("description"), description);
     }
 
     Handle group(hid_t parent, const QString& name) const
@@ -161,23 +199,44 @@ public:
     {
         const Handle g = group(runs, hdf5GroupName(r.name));
         attribute(g, QStringLiteral("name"), r.name);
-        if (!r.sourcePath.isEmpty())
-            attribute(g, QStringLiteral("source"), r.sourcePath);
-        attribute(g, QStringLiteral("samples"), double(r.run.size()));
+        // Links relative to this file, so that the folder can move with its run files.
+        if (!r.sourcePath.isEmpty()) {
+            attribute(g, QStringLiteral("source"), portableLink(path_, r.sourcePath));
+            attribute(g, QStringLiteral("source_absolute"), QFileInfo(r.sourcePath).absoluteFilePath());
+        }
+        if (!r.videoPath.isEmpty()) {
+            attribute(g, QStringLiteral("video"), portableLink(path_, r.videoPath));
+            attribute(g, QStringLiteral("video_absolute"), r.videoPath);
+        }
+        attribute(g, QStringLiteral("samples"), static_cast<long long>(r.run.size()));
         for (const Metadata* m : {&r.run.metadata, &r.run.footer})  // the footer is written last and wins
             for (const auto& [key, value] : m->entries())
                 metadataAttribute(g, key, value);
         attribute(g, QStringLiteral("sync_offset_s"), syncOffset(r.run));
         attribute(g, QStringLiteral("sync_offset_s_units"), QStringLiteral("s"));
-        attribute(g, QStringLiteral("video_fps"), videoFps(r.run));
+        const FrameClock clock = frameClockFor(r);
+        if (clock.hasVideo) {
+            attribute(g, QStringLiteral("video_fps"), videoFps(r.run));
+            attribute(g, QStringLiteral("video_fps_units"), QStringLiteral("1/s"));
+        }
 
-        for (const SignalColumn& c : exportSignals(r.run))
-            doubles(g, c.name, c.values, c.unit, c.description);
+        for (const SignalColumn& c : exportSignals(r.run)) {
+            if (c.integer) {
+                std::vector<long long> v;
+                v.reserve(c.values.size());
+                for (double x : c.values)
+                    v.push_back(std::isfinite(x) ? static_cast<long long>(std::llround(x)) : -1);
+                integers(g, c.name, v, c.unit, c.description);
+            } else {
+                doubles(g, c.name, c.values, c.unit, c.description);
+            }
+        }
 
-        const auto rows = labelIntervals(r.run, r.labels, frameClockFor(r.run));
+        const auto rows = labelIntervals(r.run, r.labels, clock);
         const Handle lg = group(g, QStringLiteral("labels"));
         attribute(lg, QStringLiteral("description"),
-                  nb::TrCore::tr("one row per label; frames from the sync offset and frame rate of the run"));
+                  clock.hasVideo ? nb::TrCore::tr("one row per label; frames from the sync offset and frame rate of the run")
+                                 : nb::TrCore::tr("one row per label; no frames: the run has no video"));
         QStringList label, track, comment;
         std::vector<double> start, end, duration, peak, mean;
         std::vector<long long> f0, f1;
@@ -198,9 +257,13 @@ public:
         doubles(lg, QStringLiteral("start_s"), start, QStringLiteral("s"), {});
         doubles(lg, QStringLiteral("end_s"), end, QStringLiteral("s"), {});
         doubles(lg, QStringLiteral("duration_s"), duration, QStringLiteral("s"), {});
-        integers(lg, QStringLiteral("start_frame"), f0);
-        integers(lg, QStringLiteral("end_frame"), f1);
-        doubles(lg, QStringLiteral("peak_force_N"), peak, QStringLiteral("N"), nb::TrCore::tr("NaN when no sample lies in the interval"));
+        if (clock.hasVideo) {
+            const QString why = nb::TrCore::tr("video frame index (0 = first frame); -1 outside the video");
+            integers(lg, QStringLiteral("start_frame"), f0, QStringLiteral("frame"), why);
+            integers(lg, QStringLiteral("end_frame"), f1, QStringLiteral("frame"), why);
+        }
+        doubles(lg, QStringLiteral("peak_force_N"), peak, QStringLiteral("N"),
+                nb::TrCore::tr("extreme force in the direction of motion; NaN when no sample lies in the interval"));
         doubles(lg, QStringLiteral("mean_force_N"), mean, QStringLiteral("N"), nb::TrCore::tr("NaN when no sample lies in the interval"));
         strings(lg, QStringLiteral("comment"), comment);
     }
@@ -220,47 +283,104 @@ QString hdf5GroupName(const QString& runName)
     return n;
 }
 
+namespace {
+
+// Writes the finished image to NAME.part (locked while written, so that a cleanup elsewhere
+// leaves it alone), syncs it and renames it into place; on any failure nothing is left.
+void writeImage(const QString& path, const QString& temp, const std::vector<char>& image)
+{
+    const QByteArray tempName = QFile::encodeName(temp);
+    const int fd = ::open(tempName.constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        if (errno == EEXIST)
+            throw ExportError(path, nb::TrCore::tr("another export is writing %1").arg(temp));
+        throw ExportError(path, nb::TrCore::tr("cannot create %1: %2").arg(temp, QString::fromLocal8Bit(std::strerror(errno))));
+    }
+    ::flock(fd, LOCK_EX | LOCK_NB);
+    auto fail = [&](int err) {
+        ::unlink(tempName.constData());
+        ::close(fd);
+        throw ExportError(path, nb::TrCore::tr("cannot write: %1").arg(QString::fromLocal8Bit(std::strerror(err))));
+    };
+    const char* p = image.data();
+    std::size_t left = image.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, p, left);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            fail(n < 0 ? errno : ENOSPC);
+        p += n;
+        left -= std::size_t(n);
+    }
+    if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS)
+        fail(errno);
+    if (::rename(tempName.constData(), QFile::encodeName(path).constData()) != 0) {
+        const int err = errno;
+        ::unlink(tempName.constData());
+        ::close(fd);
+        throw ExportError(path, nb::TrCore::tr("cannot rename the finished file into place: %1").arg(QString::fromLocal8Bit(std::strerror(err))));
+    }
+    ::close(fd);
+}
+
+}  // namespace
+
 bool writeSessionHdf5(const QString& path, const Dataset& dataset, const ExportProgress& progress)
 {
     // HDF5 prints its own error stack to stderr by default; the ExportError says it better.
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     const QString temp = path + QStringLiteral(".part");
-    const QByteArray tempName = QFile::encodeName(temp);
-    bool done = false;
+    // A .part a killed export left behind (no longer locked) goes; a locked one is another
+    // export at work on the same file.
+    removeStaleParts(QFileInfo(path).absolutePath());
+    if (QFileInfo::exists(temp))
+        throw ExportError(path, nb::TrCore::tr("another export is writing %1").arg(temp));
+    if (!QFileInfo(QFileInfo(path).absolutePath()).isWritable())
+        throw ExportError(path, nb::TrCore::tr("cannot create the file (is the folder writable?)"));
+    // The file is built in memory and written by us: HDF5 never meets a full disk (on one it
+    // leaves a file it cannot close and crashes at exit), and the disk sees one plain write.
+    std::vector<char> image;
     {
         const Writer w(path);
-        const Handle file(H5Fcreate(tempName.constData(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+        const Handle fapl(w.checked(H5Pcreate(H5P_FILE_ACCESS), QStringLiteral("set up the file")), H5Pclose);
+        w.check(H5Pset_fapl_core(fapl, 4 << 20, false) >= 0 && H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) >= 0,
+                QStringLiteral("set up the file in memory"));
+        const QByteArray memName = QFile::encodeName(temp) + ".mem";
+        const Handle file(H5Fcreate(memName.constData(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose);
         if (!file.valid())
-            throw ExportError(path, nb::TrCore::tr("cannot create the file (is the folder writable?)"));
-        auto cleanup = qScopeGuard([&] {
-            if (!done)
-                QFile::remove(temp);
-        });
+            throw ExportError(path, nb::TrCore::tr("cannot create the file in memory"));
         w.attribute(file, QStringLiteral("format"), QStringLiteral("needlebench-session"));
-        w.attribute(file, QStringLiteral("version"), 1.0);
+        w.attribute(file, QStringLiteral("version"), 1LL);
         w.attribute(file, QStringLiteral("session"), dataset.name);
         w.attribute(file, QStringLiteral("created"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
+        // How force_N came from the load cell, so that it can be rebuilt from voltage_V.
+        w.attribute(file, QStringLiteral("standard_gravity_m_s2"), kGravity_m_s2);
+        w.attribute(file, QStringLiteral("standard_gravity_m_s2_units"), QStringLiteral("m/s^2"));
+        w.attribute(file, QStringLiteral("force_from_voltage"),
+                    QStringLiteral("force_N = (voltage_V - bias_V) * standard_gravity_m_s2 / (1000 * slope_V_per_g); "
+                                   "bias_V and slope_V_per_g are attributes of each run (the calibration in force "
+                                   "while it was recorded)"));
         for (const auto& [key, value] : dataset.metadata.entries())
             w.metadataAttribute(file, key, value);
-        const Handle runs = w.group(file, QStringLiteral("runs"));
-        const qint64 total = qint64(dataset.runs.size());
-        if (!keepGoing(progress, 0, total))
-            return false;
-        for (std::size_t i = 0; i < dataset.runs.size(); ++i) {
-            w.run(runs, dataset.runs[i]);
-            if (!keepGoing(progress, qint64(i + 1), total))
+        {
+            const Handle runs = w.group(file, QStringLiteral("runs"));
+            const qint64 total = qint64(dataset.runs.size());
+            if (!keepGoing(progress, 0, total))
                 return false;
+            for (std::size_t i = 0; i < dataset.runs.size(); ++i) {
+                w.run(runs, dataset.runs[i]);
+                if (!keepGoing(progress, qint64(i + 1), total))
+                    return false;
+            }
         }
         w.check(H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0, nb::TrCore::tr("flush the file"));
-        done = true;
-        cleanup.dismiss();
+        const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+        w.check(size > 0, QStringLiteral("get the file image"));
+        image.resize(std::size_t(size));
+        w.check(H5Fget_file_image(file, image.data(), image.size()) == size, QStringLiteral("get the file image"));
     }
-    std::error_code ec;
-    std::filesystem::rename(std::filesystem::path(tempName.toStdString()), std::filesystem::path(QFile::encodeName(path).toStdString()), ec);
-    if (ec) {
-        QFile::remove(temp);
-        throw ExportError(path, nb::TrCore::tr("cannot rename the finished file into place: %1").arg(QString::fromStdString(ec.message())));
-    }
+    writeImage(path, temp, image);
     return true;
 }
 

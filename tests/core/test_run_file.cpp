@@ -1,7 +1,9 @@
 // The run file format: round trips and every kind of bad input, on real files on disk.
 #include "core/run_file.h"
+#include "core/excerpt.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
@@ -182,6 +184,93 @@ private slots:
         const RunFileError e = refused(path);
         QVERIFY(e.message().contains(QStringLiteral("nope.csv")));
         QVERIFY(e.reason().contains(QStringLiteral("cannot open")));
+    }
+
+    // Issue 15: a second writer of the same file is refused, by name, and leaves it untouched.
+    void secondWriterIsRefused()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("locked.csv"));
+        nb::Metadata m;
+        m.set(QStringLiteral("protocol"), QStringLiteral("stiffness"));
+        const QStringList cols{QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")};
+        nb::RunFileWriter first;
+        first.open(path, m, cols);
+        const double row[3] = {0.0, 1.0, 2.0};
+        first.writeRow(row);
+        first.flush();
+        nb::RunFileWriter second;
+        try {
+            second.open(path, m, cols);
+            QFAIL("a second writer was let in");
+        } catch (const nb::RunFileError& e) {
+            QCOMPARE(e.file(), path);
+            QVERIFY2(e.reason().contains(QLatin1String("another process")), qPrintable(e.message()));
+        }
+        const double row2[3] = {0.002, 1.5, 2.5};
+        first.writeRow(row2);
+        nb::Metadata footer;
+        footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
+        first.close(footer);
+        const nb::Run run = nb::readRunFile(path).run;
+        QCOMPARE(run.size(), std::size_t(2));
+        QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("completed"));
+        // Closed: the next writer may have it.
+        nb::RunFileWriter third;
+        third.open(path, m, cols);
+        third.close();
+        // A device that is always full: a clean error naming the cause, not a crash.
+        if (QFileInfo::exists(QStringLiteral("/dev/full"))) {
+            nb::RunFileWriter full;
+            QVERIFY_THROWS_EXCEPTION(nb::RunFileError, full.open(QStringLiteral("/dev/full"), m, cols));
+            QVERIFY(!full.isOpen());
+        }
+    }
+
+    // Issue 15: metadata in linear time (the benchmark prints the time); every key kept.
+    void manyMetadataLinesAllKept()
+    {
+        QByteArray text;
+        const int n = 100000;
+        for (int i = 0; i < n; ++i)
+            text += "# key_" + QByteArray::number(i) + ": " + QByteArray::number(i) + '\n';
+        text += "# key_7: again\ntime_s,position_mm,force_N\n0,0,0\n";
+        const nb::Run run = nb::parseRunText(text, QStringLiteral("meta.csv")).run;
+        QCOMPARE(run.metadata.entries().size(), std::size_t(n));
+        QCOMPARE(run.metadata.value(QStringLiteral("key_7"), QString()), QStringLiteral("again"));
+        QCOMPARE(run.metadata.value(QStringLiteral("key_99999"), QString()), QStringLiteral("99999"));
+    }
+
+    // Issue 15: a message quotes a short excerpt of a bad field, control characters escaped.
+    void messagesQuoteAShortEscapedExcerpt()
+    {
+        QByteArray text = "time_s,position_mm,force_N\n0,0,\x1b[31m";
+        text += QByteArray(1 << 20, 'x');
+        text += "\n";
+        try {
+            nb::parseRunText(text, QStringLiteral("bad.csv"));
+            QFAIL("accepted");
+        } catch (const nb::RunFileError& e) {
+            const QString msg = e.message();
+            QVERIFY2(msg.size() < 400, qPrintable(msg.left(400)));
+            QVERIFY(!msg.contains(QChar(0x1b)));
+            QVERIFY2(msg.contains(QLatin1String("\\x1b[31m")), qPrintable(msg));
+        }
+        QCOMPARE(nb::excerpt(QStringLiteral("a\tb\nc"), 10), QStringLiteral("a\\tb\\nc"));
+        QVERIFY(nb::excerpt(QString(100, QLatin1Char('y')), 10).startsWith(QString(10, QLatin1Char('y')) + QStringLiteral("…")));
+    }
+
+    // Numbers beyond fixed notation are written so that they read back, not as empty fields.
+    void hugeNumbersRoundTrip()
+    {
+        QTemporaryDir dir;
+        nb::Run run;
+        run.time_s = {0.0, 0.001};
+        run.position_mm = {0.0, 1e-300};
+        run.force_N = {1e160, -3e200};
+        nb::writeRunFile(dir.filePath(QStringLiteral("huge.csv")), run);
+        const nb::Run back = nb::readRunFile(dir.filePath(QStringLiteral("huge.csv"))).run;
+        QCOMPARE(back.force_N, run.force_N);
     }
 };
 

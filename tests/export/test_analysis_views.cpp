@@ -1,6 +1,7 @@
 // The analysis workspace on runs recorded by the real simulator: every view is filled, follows
 // the run choice and label edits, and is grabbed to build-export/screenshots/ for a human look.
 #include "core/export/dataset_loader.h"
+#include "core/label_suggest.h"
 #include "core/export/export_error.h"
 #include "support/needlebench_cli.h"
 #include "widgets/analysis/analysis_plots.h"
@@ -8,6 +9,7 @@
 #include "widgets/analysis/figure_export.h"
 
 #include <QDir>
+#include <QRegularExpression>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -175,6 +177,94 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(ExportError, saveFigure(&plot, QStringLiteral("/nonexistent-nb/x.png")));
         // Only the three figures: no temporaries left behind by the failures.
         QCOMPARE(QDir(out.path()).entryList(QDir::Files | QDir::Hidden).size(), 3);
+    }
+
+    // Issue 15: figures a journal takes. PNG (300 dpi), PDF and SVG at 175 and 85 mm, text
+    // 7-9 pt, a margin round the data, colour-blind-safe colours, insertion and withdrawal
+    // told apart by line style, fitted samples marked, velocity in mm/s. Kept under
+    // build/figures-journal for a look.
+    void journalFigures()
+    {
+        LoadedDataset loaded = loadDataset(dir_.path());
+        DatasetRun* sine = nullptr;
+        for (DatasetRun& r : loaded.dataset.runs)
+            if (r.name == QLatin1String("run_005_sine"))
+                sine = &r;
+        QVERIFY(sine);
+        const SessionAnalysis a = analyseDataset(loaded.dataset);
+        const QString outDir = QStringLiteral(NB_BINARY_DIR "/figures-journal");
+        QDir(outDir).removeRecursively();
+        QVERIFY(QDir().mkpath(outDir));
+        QCustomPlot plot;
+        plot.resize(900, 600);
+        auto check = [&](const QString& name) {
+            // No data touches the frame: every point lies inside the axes with room to spare.
+            for (int i = 0; i < plot.graphCount(); ++i) {
+                bool found = false;
+                const QCPRange xr = plot.graph(i)->getKeyRange(found);
+                if (!found)
+                    continue;
+                const QCPRange yr = plot.graph(i)->getValueRange(found);
+                QVERIFY2(xr.lower > plot.xAxis->range().lower && xr.upper < plot.xAxis->range().upper, qPrintable(name));
+                QVERIFY2(yr.lower > plot.yAxis->range().lower && yr.upper < plot.yAxis->range().upper, qPrintable(name));
+            }
+            const QFont screenTicks = plot.xAxis->tickLabelFont();
+            const QStringList files = saveJournalFigures(&plot, QDir(outDir).filePath(name + QStringLiteral(".png")));
+            QCOMPARE(files.size(), 6);
+            QCOMPARE(plot.xAxis->tickLabelFont(), screenTicks);  // the screen's style is back
+            const QImage two(QDir(outDir).filePath(name + QStringLiteral(".png")));
+            const QImage one(QDir(outDir).filePath(name + QStringLiteral("_85mm.png")));
+            QVERIFY(std::abs(two.width() - 175.0 / 25.4 * 300) < 4);
+            QVERIFY(std::abs(one.width() - 85.0 / 25.4 * 300) < 4);
+            QVERIFY(std::abs(one.dotsPerMeterX() - 300 / 0.0254) < 50);
+            QVERIFY(colourCount(one) > 10);
+            QFile pdf(QDir(outDir).filePath(name + QStringLiteral("_85mm.pdf")));
+            QVERIFY(pdf.open(QIODevice::ReadOnly));
+            const QByteArray pdfBytes = pdf.readAll();
+            const QRegularExpressionMatch box = QRegularExpression(QStringLiteral("/MediaBox \\[0 0 ([0-9.]+) ([0-9.]+)\\]")).match(QString::fromLatin1(pdfBytes));
+            QVERIFY2(box.hasMatch(), "no MediaBox");
+            QVERIFY(std::abs(box.captured(1).toDouble() - 85.0 / 25.4 * 72) < 1.5);
+            QFile svg(QDir(outDir).filePath(name + QStringLiteral("_85mm.svg")));
+            QVERIFY(svg.open(QIODevice::ReadOnly));
+            const QString svgText = QString::fromUtf8(svg.readAll());
+            const QRegularExpressionMatch width = QRegularExpression(QStringLiteral("width=\"([0-9.]+)mm\"")).match(svgText);
+            QVERIFY2(width.hasMatch() && std::abs(width.captured(1).toDouble() - 85.0) < 1.0, qPrintable(width.captured(0)));
+            // Every text 7 to 9 pt.
+            auto sizes = QRegularExpression(QStringLiteral("font-size=\"([0-9.]+)\"")).globalMatch(svgText);
+            int texts = 0;
+            while (sizes.hasNext()) {
+                const double pt = sizes.next().captured(1).toDouble();
+                QVERIFY2(pt >= 7.0 && pt <= 9.0, qPrintable(QStringLiteral("%1: %2 pt").arg(name).arg(pt)));
+                ++texts;
+            }
+            QVERIFY(texts > 3);
+        };
+        plotStiffness(&plot, a, QStringLiteral("liver1"));
+        check(QStringLiteral("stiffness_liver1"));
+        for (const FrictionRunResult& f : a.friction)
+            if (f.run == QLatin1String("run_005_sine")) {
+                plotFrictionVelocity(&plot, *sine, f);
+                QVERIFY(plot.xAxis->label().contains(QLatin1String("mm/s")));
+                QStringList names;
+                for (int i = 0; i < plot.graphCount(); ++i)
+                    names << plot.graph(i)->name();
+                QVERIFY2(names.contains(QStringLiteral("recorded, fitted")) && names.contains(QStringLiteral("recorded, not fitted")),
+                         qPrintable(names.join(QLatin1Char(','))));
+                check(QStringLiteral("friction_velocity"));
+            }
+        // Direction labels as the label suggester makes them: withdrawal drawn dashed.
+        sine->labels = suggestLabels(sine->run);
+        plotPhases(&plot, *sine);
+        bool dashed = false;
+        for (int i = 0; i < plot.graphCount(); ++i)
+            dashed = dashed || (plot.graph(i)->pen().style() == Qt::DashLine && plot.graph(i)->name().contains(QLatin1String("withdrawal")));
+        QVERIFY(dashed);
+        check(QStringLiteral("phases"));
+        for (const ValidationResult& v : a.validation) {
+            plotValidation(&plot, v);
+            check(QStringLiteral("validation"));
+            break;
+        }
     }
 };
 

@@ -108,13 +108,12 @@ private slots:
         QVERIFY(std::abs(offset - found) < 0.0015);
         const hid_t va = H5Aopen(sg, "video_file", H5P_DEFAULT);
         QVERIFY(va >= 0);
-        const hid_t strType = H5Tcopy(H5T_C_S1);
-        H5Tset_size(strType, H5T_VARIABLE);
-        H5Tset_cset(strType, H5T_CSET_UTF8);
-        char* name = nullptr;
-        QVERIFY(H5Aread(va, strType, &name) >= 0);
-        QCOMPARE(QString::fromUtf8(name), QStringLiteral("run_003_sine.avi"));
-        H5free_memory(name);
+        // Fixed-length strings (what Octave and MATLAB read).
+        const hid_t strType = H5Aget_type(va);
+        QCOMPARE(H5Tis_variable_str(strType), 0);
+        std::vector<char> name(H5Tget_size(strType) + 1, '\0');
+        QVERIFY(H5Aread(va, strType, name.data()) >= 0);
+        QCOMPARE(QString::fromUtf8(name.data()), QStringLiteral("run_003_sine.avi"));
         H5Tclose(strType);
         H5Aclose(va);
         H5Gclose(sg);

@@ -106,6 +106,8 @@ std::vector<double> readDoubles(hid_t file, const char* path)
     return v;
 }
 
+// Strings as the file stores them: fixed-length (what the export writes, so that Octave and
+// MATLAB read them), NUL-padded.
 QStringList readStrings(hid_t file, const char* path)
 {
     const hid_t d = H5Dopen2(file, path, H5P_DEFAULT);
@@ -114,15 +116,16 @@ QStringList readStrings(hid_t file, const char* path)
     const hid_t s = H5Dget_space(d);
     hsize_t n = 0;
     H5Sget_simple_extent_dims(s, &n, nullptr);
-    const hid_t t = H5Tcopy(H5T_C_S1);
-    H5Tset_size(t, H5T_VARIABLE);
-    H5Tset_cset(t, H5T_CSET_UTF8);
-    std::vector<char*> p(n);
+    const hid_t t = H5Dget_type(d);
     QStringList out;
-    if (n && H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
-        for (char* c : p)
-            out << QString::fromUtf8(c);
-        H5Dvlen_reclaim(t, s, H5P_DEFAULT, p.data());
+    if (H5Tis_variable_str(t) == 0) {
+        const std::size_t width = H5Tget_size(t);
+        std::vector<char> buf(n * width + 1, '\0');
+        if (n && H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) >= 0)
+            for (hsize_t i = 0; i < n; ++i)
+                out << QString::fromUtf8(QByteArray(buf.data() + i * width, qsizetype(width)).split('\0').first());
+    } else {
+        out << QStringLiteral("<variable-length>");
     }
     H5Tclose(t);
     H5Sclose(s);
@@ -135,14 +138,14 @@ QString readStringAttr(hid_t obj, const char* name)
     const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
     if (a < 0)
         return QStringLiteral("<missing>");
-    const hid_t t = H5Tcopy(H5T_C_S1);
-    H5Tset_size(t, H5T_VARIABLE);
-    H5Tset_cset(t, H5T_CSET_UTF8);
-    char* p = nullptr;
+    const hid_t t = H5Aget_type(a);
     QString out = QStringLiteral("<unreadable>");
-    if (H5Aread(a, t, &p) >= 0) {
-        out = QString::fromUtf8(p);
-        H5free_memory(p);
+    if (H5Tget_class(t) == H5T_STRING && H5Tis_variable_str(t) == 0) {
+        std::vector<char> buf(H5Tget_size(t) + 1, '\0');
+        if (H5Aread(a, t, buf.data()) >= 0)
+            out = QString::fromUtf8(buf.data());
+    } else if (H5Tget_class(t) == H5T_STRING) {
+        out = QStringLiteral("<variable-length>");
     }
     H5Tclose(t);
     H5Aclose(a);
@@ -311,6 +314,38 @@ private slots:
         QCOMPARE(csv[1][5].toLongLong(), rows[0].start_frame);
     }
 
+    // Issue 15: the peak is the extreme in the direction of motion; frames only with a video.
+    void peakFollowsMotionAndFramesNeedAVideo()
+    {
+        nb::Run run;
+        for (int i = 0; i < 200; ++i) {
+            const double t = i * 0.01;
+            run.time_s.push_back(t);
+            // In 1 s, out 1 s: force positive going in, negative coming out.
+            run.position_mm.push_back(t < 1.0 ? 10.0 * t : 10.0 * (2.0 - t));
+            run.force_N.push_back(t < 1.0 ? 0.5 + t : -0.2 - (t - 1.0));
+        }
+        const nb::Labels labels{{QStringLiteral("phases"), QStringLiteral("insertion"), 0.0, 1.0, QString()},
+                                {QStringLiteral("phases"), QStringLiteral("withdrawal"), 1.0, 2.0, QString()}};
+        nb::FrameClock noVideo = frameClockFor(run);
+        QVERIFY(!noVideo.hasVideo);
+        const auto rows = labelIntervals(run, labels, noVideo);
+        QCOMPARE(rows.size(), std::size_t(2));
+        QVERIFY(std::abs(rows[0].peak_force_N - 1.49) < 1e-9);
+        QVERIFY(std::abs(rows[1].peak_force_N - (-1.19)) < 1e-9);  // the most negative, not the least
+        QCOMPARE(rows[0].start_frame, -1LL);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("t.csv"));
+        writeLabelIntervalsCsv(path, rows);
+        const auto csv = readCsv(path);
+        QVERIFY(csv[1][5].isEmpty() && csv[1][6].isEmpty());
+        run.metadata.set(QStringLiteral("video_file"), QStringLiteral("v.avi"));
+        QVERIFY(frameClockFor(run).hasVideo);
+        QCOMPARE(labelIntervals(run, labels, frameClockFor(run))[1].start_frame, (long long)std::floor(1.0 * 29.97));
+        // A label far beyond any video has no frame (not a wrapped-around integer).
+        QCOMPARE(frameClockFor(run).frameAt(1e300), -1LL);
+    }
+
     void sessionHdf5RoundTrip()
     {
         QTemporaryDir dir;
@@ -356,7 +391,9 @@ private slots:
         QCOMPARE(readStringAttr(g, "end_reason"), QStringLiteral("completed"));
         QCOMPARE(readDoubleAttr(g, "dropped_samples"), 3.0);
         QCOMPARE(readDoubleAttr(g, "sync_offset_s"), 0.5);
-        QCOMPARE(readStringAttr(g, "source"), QStringLiteral("/data/run01.csv"));
+        // Links are relative to the exported file; the absolute path is kept beside.
+        QCOMPARE(readStringAttr(g, "source_absolute"), QStringLiteral("/data/run01.csv"));
+        QCOMPARE(QDir::cleanPath(QDir(dir.path()).absoluteFilePath(readStringAttr(g, "source"))), QStringLiteral("/data/run01.csv"));
         H5Gclose(g);
         const hid_t g2 = H5Gopen2(f, "/runs/run_02", H5P_DEFAULT);
         QCOMPARE(readStringAttr(g2, "name"), QStringLiteral("run/02"));
@@ -468,7 +505,11 @@ private slots:
         const QString tex = QString::fromUtf8(fitTableLatex(t));
         QVERIFY(tex.contains(QStringLiteral("\\begin{tabular}{lrr}")));
         QVERIFY(tex.contains(QStringLiteral("liver & $a_1$ & r\\textasciicircum{}2 \\& more \\\\")));
-        QVERIFY(tex.contains(QStringLiteral(" & [N/mm] &  \\\\")));
+        QVERIFY(tex.contains(QStringLiteral(" & [$\\mathrm{N}/\\mathrm{mm}$] &  \\\\")));
+        // Units typeset, not escaped: powers raised, products with a thin space.
+        QCOMPARE(latexUnit(QStringLiteral("N/mm^2")), QStringLiteral("$\\mathrm{N}/\\mathrm{mm}^{2}$"));
+        QCOMPARE(latexUnit(QStringLiteral("N s/m^2")), QStringLiteral("$\\mathrm{N}\\,\\mathrm{s}/\\mathrm{m}^{2}$"));
+        QCOMPARE(latexUnit(QStringLiteral("N·s/m²")), QStringLiteral("$\\mathrm{N}\\,\\mathrm{s}/\\mathrm{m}^{2}$"));
         QVERIFY(tex.contains(QStringLiteral("liver\\_1 & 0.0480 & 0.995 \\\\")));
         QVERIFY(tex.contains(QStringLiteral("pooled & 0.0500 & -- \\\\")));
         QVERIFY(tex.contains(QStringLiteral("\\caption{Pooled fits (4 mm/s)}")));

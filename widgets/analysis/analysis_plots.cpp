@@ -3,6 +3,8 @@
 
 #include "core/models.h"
 #include "core/signal.h"
+#include "core/export/dataset.h"
+#include "core/labels.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -54,24 +56,38 @@ QCPGraph* line(QCustomPlot* plot, const QVector<double>& x, const QVector<double
     return g;
 }
 
+// Okabe & Ito's colour-blind-safe palette (vermillion kept for outliers).
 QColor runColor(int i)
 {
-    static const QColor palette[] = {QColor(31, 119, 180), QColor(44, 160, 44), QColor(148, 103, 189), QColor(140, 86, 75),
-                                     QColor(23, 190, 207), QColor(188, 189, 34), QColor(127, 127, 127), QColor(255, 127, 14)};
-    return palette[i % 8];
+    static const QColor palette[] = {QColor(0, 114, 178), QColor(230, 159, 0), QColor(0, 158, 115), QColor(204, 121, 167),
+                                     QColor(86, 180, 233), QColor(0, 0, 0), QColor(240, 228, 66)};
+    return palette[i % 7];
 }
+
+const QColor kOutlier(213, 94, 0);
 
 QColor phaseColor(const QString& phase)
 {
     if (phase == QLatin1String("a"))
-        return QColor(255, 200, 80, 90);
+        return QColor(230, 159, 0, 90);     // orange
     if (phase == QLatin1String("b1"))
-        return QColor(120, 200, 255, 90);
+        return QColor(86, 180, 233, 100);   // sky blue
     if (phase == QLatin1String("b2"))
-        return QColor(180, 140, 255, 90);
+        return QColor(0, 158, 115, 90);     // bluish green
     if (phase == QLatin1String("c"))
-        return QColor(120, 220, 120, 90);
+        return QColor(204, 121, 167, 90);   // reddish purple
     return QColor(200, 200, 200, 70);
+}
+
+// The data's range plus a margin on every side, so that no point or peak touches the frame.
+void fitRanges(QCustomPlot* plot, double margin = 0.05)
+{
+    plot->rescaleAxes();
+    for (QCPAxis* a : {plot->xAxis, plot->yAxis}) {
+        const QCPRange r = a->range();
+        const double pad = r.size() > 0 ? r.size() * margin : std::max(1e-9, std::abs(r.center()) * margin + 1e-9);
+        a->setRange(r.lower - pad, r.upper + pad);
+    }
 }
 
 }  // namespace
@@ -104,11 +120,12 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
         }
         for (double d : x)
             maxDepth = std::max(maxDepth, d);
-        const QColor c = s.outlier ? QColor(214, 39, 40) : runColor(k++);
+        const QColor c = s.outlier ? kOutlier : runColor(k++);
         QCPGraph* dots = scatter(plot, x, y, c, 5.0, s.outlier ? nb::TrViews::tr("%1 (outlier)").arg(s.run) : s.run);
-        if (s.outlier)
+        if (s.outlier) {
             outlierNamed = true;
-        (void)dots;
+            dots->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, c, 6.0));  // told apart by shape too
+        }
         QVector<double> fx, fy;
         const double end = x.isEmpty() ? 0.0 : x.last();
         for (int j = 0; j <= 60; ++j) {
@@ -126,15 +143,16 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
     }
     const StiffnessModel& m = g->summary.pooled.quadratic.model;
     line(plot, px, py, QPen(Qt::black, 2.0, Qt::DashLine),
-         nb::TrViews::tr("pooled fit: F = %1 x + %2 x² (F in N, x in mm)").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
-    plot->rescaleAxes();
-    plot->yAxis->setRangeLower(std::min(0.0, plot->yAxis->range().lower));
+         // On three lines: one long line is wider than a one-column figure.
+         nb::TrViews::tr("pooled fit:\nF = %1 x + %2 x²\n(F in N, x in mm)").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
+    fitRanges(plot);
     plot->replot();
 }
 
 void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const FrictionRunResult& f)
 {
-    reset(plot, nb::TrViews::tr("Friction against velocity: %1").arg(run.name), nb::TrViews::tr("velocity [m/s]"), nb::TrViews::tr("friction force [N]"));
+    // Velocity in mm/s, as in the run files.
+    reset(plot, nb::TrViews::tr("Friction against velocity: %1").arg(run.name), nb::TrViews::tr("velocity [mm/s]"), nb::TrViews::tr("friction force [N]"));
     if (!f.ok() || run.run.size() < 3) {
         plot->replot();
         return;
@@ -145,47 +163,73 @@ void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const Fricti
     const auto vel = movingAverage(derivative(run.run.time_s, pos), w);
     const auto acc = movingAverage(derivative(run.run.time_s, vel), w);
     const auto force = movingAverage(run.run.force_N, w);
-    QVector<double> x, y;
+    const KarnoppModel& k = f.fit.model;
+    const double half_mm_s = k.band_m_s * 1000.0 / 2.0;
+    // The samples the fit slides on: outside the zero-velocity band, and in phase c when the
+    // run is labelled (see fitFriction); the others are drawn, lighter, as not fitted.
+    const QStringList phases = phasePerSample(run.labels, run.run.time_s);
+    bool labelled = false;
+    for (const QString& p : phases)
+        labelled = labelled || !p.isEmpty();
+    QVector<double> x, y, xo, yo;
     const std::size_t trim = std::min<std::size_t>(100, run.run.size() / 4);
     for (std::size_t i = trim; i + trim < run.run.size(); ++i) {
-        x << vel[i] / 1000.0;
-        y << force[i] - kNeedleHolderMass_kg * acc[i] / 1000.0;
+        const double v = vel[i];
+        const double F = force[i] - kNeedleHolderMass_kg * acc[i] / 1000.0;
+        const bool fitted = std::abs(v) > half_mm_s && (!labelled || phases[qsizetype(i)] == QLatin1String("c"));
+        (fitted ? x : xo) << v;
+        (fitted ? y : yo) << F;
     }
-    scatter(plot, x, y, QColor(31, 119, 180, 120), 2.0, nb::TrViews::tr("recorded"));
+    scatter(plot, xo, yo, QColor(150, 150, 150, 110), 2.0, nb::TrViews::tr("recorded, not fitted"));
+    scatter(plot, x, y, QColor(0, 114, 178, 160), 2.5, nb::TrViews::tr("recorded, fitted"));
     double vmax = 0.0;
-    for (double v : x)
-        vmax = std::max(vmax, std::abs(v));
+    for (const QVector<double>* xs : {&x, &xo})
+        for (double v : *xs)
+            vmax = std::max(vmax, std::abs(v));
     QVector<double> mx, my;
-    const KarnoppModel& k = f.fit.model;
-    const double half = k.band_m_s / 2.0;
     // The sliding branches; inside the band the model follows the applied force up to D.
     for (int j = 0; j <= 50; ++j) {
-        const double v = -vmax + (vmax - half) * j / 50.0;
+        const double v = -vmax + (vmax - half_mm_s) * j / 50.0;
         mx << v;
-        my << k(v, 0.0);
+        my << k(v / 1000.0, 0.0);
     }
-    mx << -half << 0.0 << 0.0 << half;
+    mx << -half_mm_s << 0.0 << 0.0 << half_mm_s;
     my << k.Dn_N << k.Dn_N << k.Dp_N << k.Dp_N;
     for (int j = 0; j <= 50; ++j) {
-        const double v = half + (vmax - half) * j / 50.0;
+        const double v = half_mm_s + (vmax - half_mm_s) * j / 50.0;
         mx << v;
-        my << k(v, 0.0);
+        my << k(v / 1000.0, 0.0);
     }
     QCPCurve* curve = new QCPCurve(plot->xAxis, plot->yAxis);
     curve->setData(mx, my);
-    curve->setPen(QPen(QColor(214, 39, 40), 2.5));
+    curve->setPen(QPen(QColor(213, 94, 0), 2.5));
     curve->setName(nb::TrViews::tr("Karnopp fit (%1 Hz)").arg(f.fit.frequency_hz, 0, 'f', 2));
-    plot->rescaleAxes();
+    // Slow withdrawal with little friction is where the data leave room for the legend.
+    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+    fitRanges(plot);
     plot->replot();
 }
 
 void plotPhases(QCustomPlot* plot, const DatasetRun& run)
 {
     reset(plot, nb::TrViews::tr("Labelled phases: %1").arg(run.name), nb::TrViews::tr("time [s]"), nb::TrViews::tr("force [N]"));
+    // Insertion and withdrawal told apart by line style (solid, dashed), not colour alone.
+    const QStringList tracks = labelsPerSample(run.labels, run.run.time_s, QStringLiteral("withdrawal"));
     QVector<double> t(run.run.time_s.begin(), run.run.time_s.end());
-    QVector<double> f(run.run.force_N.begin(), run.run.force_N.end());
-    line(plot, t, f, QPen(QColor(31, 119, 180), 1.0), nb::TrViews::tr("force"));
-    plot->rescaleAxes();
+    QVector<double> in(qsizetype(run.run.size()), qQNaN()), out(qsizetype(run.run.size()), qQNaN());
+    bool anyOut = false;
+    for (qsizetype i = 0; i < t.size(); ++i) {
+        const bool withdrawing = !tracks.value(i).isEmpty();
+        anyOut = anyOut || withdrawing;
+        (withdrawing ? out : in)[i] = run.run.force_N[std::size_t(i)];
+        // Join the two at each switch so the trace stays continuous.
+        if (i > 0 && withdrawing != !tracks.value(i - 1).isEmpty())
+            (withdrawing ? out : in)[i - 1] = run.run.force_N[std::size_t(i - 1)];
+    }
+    line(plot, t, in, QPen(QColor(0, 0, 0), 1.0), anyOut ? nb::TrViews::tr("force, insertion") : nb::TrViews::tr("force"));
+    if (anyOut)
+        line(plot, t, out, QPen(QColor(0, 0, 0), 1.0, Qt::DashLine), nb::TrViews::tr("force, withdrawal"));
+    fitRanges(plot);
     QStringList named;
     for (const Label& l : run.labels) {
         if (!l.isPoint() && !named.contains(l.label))
@@ -232,7 +276,7 @@ void plotValidation(QCustomPlot* plot, const ValidationResult& v)
     // Position is not monotonic on withdrawal: a curve keeps the sample order.
     auto* rec = new QCPCurve(plot->xAxis, plot->yAxis);
     rec->setData(x, y);
-    rec->setPen(QPen(QColor(31, 119, 180), 1.5));
+    rec->setPen(QPen(QColor(0, 114, 178), 1.5));
     rec->setName(nb::TrViews::tr("recorded"));
     if (v.ok()) {
         QVector<double> sx(v.simulated.position_mm.begin(), v.simulated.position_mm.end());
@@ -240,10 +284,12 @@ void plotValidation(QCustomPlot* plot, const ValidationResult& v)
         auto* sim = new QCPCurve(plot->xAxis, plot->yAxis);
         sim->setData(sx, sy);
         // Dashed on top: where model and recording agree both stay visible.
-        sim->setPen(QPen(QColor(214, 39, 40), 2.0, Qt::DashLine));
+        sim->setPen(QPen(QColor(213, 94, 0), 2.0, Qt::DashLine));
         sim->setName(nb::TrViews::tr("summed model"));
     }
-    plot->rescaleAxes();
+    // After the puncture the force stays low: the top right is free for the legend.
+    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    fitRanges(plot);
     plot->replot();
 }
 

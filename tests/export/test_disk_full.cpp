@@ -1,0 +1,176 @@
+// A full disk, for real: a small tmpfs this test mounts (we need root; without the right to
+// mount the whole program is skipped with exit code 77). A recording that fills it must end
+// with a footer saying why, keep every row before the failure whole, tell the operator and
+// exit 1; exports onto it must fail with a clear message and leave nothing half-written.
+
+#include "support/needlebench_cli.h"
+
+#include "core/run_file.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+#include <cstdio>
+
+using nbtest::runCli;
+
+namespace {
+
+bool mountTmpfs(const QString& dir, const QString& size)
+{
+    QProcess p;
+    p.start(QStringLiteral("mount"), {QStringLiteral("-t"), QStringLiteral("tmpfs"), QStringLiteral("-o"),
+                                      QStringLiteral("size=") + size, QStringLiteral("tmpfs"), dir});
+    return p.waitForFinished(10000) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+}
+
+void unmount(const QString& dir)
+{
+    QProcess p;
+    p.start(QStringLiteral("umount"), {dir});
+    p.waitForFinished(10000);
+}
+
+void emptyFolder(const QString& dir)
+{
+    QDir d(dir);
+    for (const QString& f : d.entryList(QDir::Files | QDir::Dirs | QDir::NoDotAndDotDot | QDir::Hidden)) {
+        QFileInfo fi(d.filePath(f));
+        if (fi.isDir())
+            QDir(fi.filePath()).removeRecursively();
+        else
+            QFile::remove(fi.filePath());
+    }
+}
+
+// Nothing escaped main and nothing crashed: exit codes are the documented ones.
+void checkClean(const nbtest::CliResult& r)
+{
+    QVERIFY2(r.code == 0 || r.code == 1 || r.code == 2, qPrintable(QStringLiteral("exit %1: %2").arg(r.code).arg(r.err)));
+    QVERIFY2(!r.err.contains(QLatin1String("terminate called")) && !r.err.contains(QLatin1String("internal error")), qPrintable(r.err));
+}
+
+}  // namespace
+
+class TestDiskFull : public QObject {
+    Q_OBJECT
+public:
+    QString small;   // 3 MB: a recording fills it in seconds
+    QString tiny;    // 64 kB: exports do not fit
+
+private slots:
+    void cleanup()
+    {
+        emptyFolder(small);
+        emptyFolder(tiny);
+    }
+
+    void recordingOnAFullDiskEndsWithFooterAndExit1()
+    {
+        const QString out = QDir(small).filePath(QStringLiteral("run.csv"));
+        const auto r = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"),
+                               QStringLiteral("--rate-hz"), QStringLiteral("10000"), QStringLiteral("--out"), out});
+        checkClean(r);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QLatin1String("recording failed")) && r.err.contains(QLatin1String("No space left")), qPrintable(r.err));
+        QCOMPARE(r.json().value(QStringLiteral("end_reason")).toString(), QStringLiteral("write_error"));
+        // Read strictly: a partial row would be an error here, not a warning.
+        const nb::RunReadResult read = nb::readRunFile(out);
+        QVERIFY(read.warnings.isEmpty());
+        const nb::Run& run = read.run;
+        QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("write_error"));
+        QVERIFY(run.footer.value(QStringLiteral("write_error"), QString()).contains(QLatin1String("No space left")));
+        QVERIFY(run.size() > 1000);
+        QCOMPARE(run.footer.number(QStringLiteral("rows_written")).value_or(-1), double(run.size()));
+        QCOMPARE(r.json().value(QStringLiteral("samples")).toDouble(), double(run.size()));
+        // Every row whole: the last one has all its columns and a sane time.
+        QCOMPARE(run.numericColumn(QStringLiteral("seq"))->size(), run.size());
+        QVERIFY(run.time_s.back() > 0.1);
+    }
+
+    void truthAndVideoAreNotListedWhenTheDiskIsFull()
+    {
+        const QDir d(small);
+        const auto r = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"),
+                               QStringLiteral("--rate-hz"), QStringLiteral("10000"), QStringLiteral("--out"), d.filePath(QStringLiteral("run.csv")),
+                               QStringLiteral("--truth"), d.filePath(QStringLiteral("truth.json")), QStringLiteral("--video"),
+                               d.filePath(QStringLiteral("view.avi"))});
+        checkClean(r);
+        QCOMPARE(r.code, 1);
+        QVERIFY(!r.json().contains(QStringLiteral("truth")));
+        const QFileInfo truth(d.filePath(QStringLiteral("truth.json")));
+        QVERIFY2(!truth.exists() || truth.size() > 0, "a 0-byte truth file was left");
+        QVERIFY2(!QFileInfo::exists(d.filePath(QStringLiteral("view.avi"))), "a half video was left");
+    }
+
+    void realTimeRecordingWarnsBeforeTheDiskIsFull()
+    {
+        const QString out = QDir(small).filePath(QStringLiteral("rt.csv"));
+        const auto r = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+                               QStringLiteral("--realtime"), QStringLiteral("--rate-hz"), QStringLiteral("10000"),
+                               QStringLiteral("--out"), out});
+        checkClean(r);
+        QCOMPARE(r.code, 1);
+        const qsizetype warned = r.err.indexOf(QLatin1String("will be full"));
+        const qsizetype failed = r.err.indexOf(QLatin1String("recording failed"));
+        QVERIFY2(warned >= 0 && failed > warned, qPrintable(r.err));
+        // Progress stops with the recording: no progress line claims more than the file holds.
+        const nb::Run run = nb::readRunFile(out).run;
+        QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("write_error"));
+    }
+
+    // Free space is checked before a run starts: on a disk with less than a megabyte free the
+    // run is refused, naming the file and what is free.
+    void tooLittleSpaceRefusesTheRun()
+    {
+        const QString out = QDir(tiny).filePath(QStringLiteral("run.csv"));
+        const auto r = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+                               QStringLiteral("--out"), out});
+        checkClean(r);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(out) && r.err.contains(QLatin1String("kB free")), qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(out));
+    }
+
+    void exportsOntoAFullDiskFailCleanly()
+    {
+        QTemporaryDir session;
+        const auto sim = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+                                 QStringLiteral("--out"), QDir(session.path()).filePath(QStringLiteral("run1.csv"))});
+        QCOMPARE(sim.code, 0);
+        for (const char* format : {"hdf5", "csv", "eaf"}) {
+            const QString out = QDir(tiny).filePath(format == QByteArray("hdf5") ? QStringLiteral("s.h5") : QStringLiteral("out"));
+            const auto r = runCli({QStringLiteral("export"), session.path(), QStringLiteral("--format"), QLatin1String(format),
+                                   QStringLiteral("--out"), out});
+            checkClean(r);
+            QCOMPARE(r.code, 1);
+            QVERIFY2(r.err.contains(QLatin1String("space"), Qt::CaseInsensitive), qPrintable(r.err));
+            QVERIFY2(!r.err.contains(QLatin1String("Unknown error")), qPrintable(r.err));
+            QVERIFY(!QFileInfo::exists(out + QStringLiteral(".part")));
+            QVERIFY(!QFileInfo::exists(QDir(tiny).filePath(QStringLiteral("s.h5"))));
+            emptyFolder(tiny);
+        }
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    QTemporaryDir a, b;
+    if (!mountTmpfs(a.path(), QStringLiteral("3m")) || !mountTmpfs(b.path(), QStringLiteral("64k"))) {
+        unmount(a.path());
+        std::fprintf(stderr, "test_disk_full: cannot mount a tmpfs here (not root?); skipped\n");
+        return 77;
+    }
+    TestDiskFull t;
+    t.small = a.path();
+    t.tiny = b.path();
+    const int code = QTest::qExec(&t, argc, argv);
+    unmount(a.path());
+    unmount(b.path());
+    return code;
+}
+
+#include "test_disk_full.moc"
