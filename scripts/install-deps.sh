@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev libopencv-dev libusb-1.0-0-dev libhdf5-dev hdf5-tools
   umockdev libumockdev-dev
   ffmpeg xvfb xauth fonts-dejavu-core
+  xdotool imagemagick
 )
 
 missing=()

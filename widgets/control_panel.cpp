@@ -52,6 +52,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     estop->setStyleSheet(QStringLiteral("QPushButton { background: #c62828; color: white; font-weight: bold; }"));
     layout->addWidget(estop);
     connect(estop, &QPushButton::clicked, this, &ControlPanel::emergencyStopRequested);
+    layout->addWidget(buildLatchBanner());
 
     auto* prep = new QGroupBox(tr("1. Prepare"), this);
     auto* prepLayout = new QVBoxLayout(prep);
@@ -103,6 +104,10 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     cycles_->setObjectName(QStringLiteral("cycles"));
     linear_->setObjectName(QStringLiteral("linear"));
     sine_->setObjectName(QStringLiteral("sine"));
+    centre_ = spin(sinePage, 0.0, 150.0, 15.0, 1, tr(" mm"));
+    centre_->setObjectName(QStringLiteral("centre"));
+    centre_->setToolTip(tr("The sine oscillates about this depth; the needle moves there first (not recorded)"));
+    sineForm->addRow(tr("Centre depth"), centre_);
     sineForm->addRow(tr("Amplitude"), amplitude_);
     sineForm->addRow(tr("Frequency"), frequency_);
     sineForm->addRow(tr("Cycles"), cycles_);
@@ -113,7 +118,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
         motionPages_->setCurrentIndex(on ? 1 : 0);
         updateControls();
     });
-    for (QDoubleSpinBox* s : {velocity_, depth_, amplitude_, frequency_})
+    for (QDoubleSpinBox* s : {velocity_, depth_, amplitude_, frequency_, centre_})
         connect(s, &QDoubleSpinBox::valueChanged, this, &ControlPanel::updateControls);
     connect(cycles_, &QSpinBox::valueChanged, this, &ControlPanel::updateControls);
     layout->addWidget(motionBox_);
@@ -124,7 +129,12 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
                             tr("Starts recording a new run file, then moves the needle in"));
     start->setStyleSheet(QStringLiteral("QPushButton:enabled { font-weight: bold; }"));
     start->setIcon(QIcon(QStringLiteral(":/icons/record.svg")));
-    connect(start, &QPushButton::clicked, this, &ControlPanel::startRequested);
+    connect(start, &QPushButton::clicked, this, [this, estop] {
+        // Start disables itself; the focus must not fall into a parameter field, where digits
+        // typed mid-run would change the run. The emergency stop is the one safe place.
+        estop->setFocus(Qt::OtherFocusReason);
+        emit startRequested();
+    });
     auto* withdraw = addButton(Control::Withdraw, tr("Withdraw"), tr("Moves the needle back to 0 mm"));
     withdraw->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
     connect(withdraw, &QPushButton::clicked, this, [this] { emit withdrawRequested(withdrawVelocity()); });
@@ -152,7 +162,24 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     });
     limitRow->addWidget(limit_, 1);
     runLayout->addLayout(limitRow, 3, 0, 1, 2);
+    auto* withdrawLimitRow = new QHBoxLayout;
+    withdrawLimitRow->addWidget(new QLabel(tr("Withdrawal limit"), runBox));
+    withdrawLimit_ = spin(runBox, 0.1, 20.0, 9.5, 2, tr(" N"));
+    withdrawLimit_->setObjectName(QStringLiteral("withdrawForceLimit"));
+    withdrawLimit_->setToolTip(tr("|F| that stops the needle coming out (never below the maximum force, so a limit stop never traps the needle)"));
+    connect(withdrawLimit_, &QDoubleSpinBox::valueChanged, this, &ControlPanel::withdrawForceLimitChanged);
+    withdrawLimitRow->addWidget(withdrawLimit_, 1);
+    runLayout->addLayout(withdrawLimitRow, 4, 0, 1, 2);
+    withdrawToStart_ = new QPushButton(tr("Withdraw to the start position"), runBox);
+    withdrawToStart_->setObjectName(QStringLiteral("withdrawToStart"));
+    withdrawToStart_->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
+    connect(withdrawToStart_, &QPushButton::clicked, this, [this] {
+        if (status_.lastRunStart_mm)
+            emit withdrawToRequested(withdrawVelocity(), *status_.lastRunStart_mm);
+    });
+    runLayout->addWidget(withdrawToStart_, 5, 0, 1, 2);
     layout->addWidget(runBox);
+    layout->addWidget(buildJogBox());
 
     auto* statusBox = new QGroupBox(tr("Status"), this);
     auto* grid = new QGridLayout(statusBox);
@@ -222,11 +249,14 @@ devices::RunPlan ControlPanel::motionPlan() const
     plan.sine.amplitude_mm = amplitude_->value();
     plan.sine.frequency_hz = frequency_->value();
     plan.sine.cycles = cycles_->value();
+    if (sine_->isChecked())
+        plan.startAt_mm = centre_->value();
     plan.metadata.set(QStringLiteral("motion"), motionName());
     if (sine_->isChecked()) {
         plan.metadata.set(QStringLiteral("amplitude_mm"), amplitude_->value());
         plan.metadata.set(QStringLiteral("frequency_hz"), frequency_->value());
         plan.metadata.set(QStringLiteral("cycles"), double(cycles_->value()));
+        plan.metadata.set(QStringLiteral("centre_mm"), centre_->value());
     } else {
         plan.metadata.set(QStringLiteral("velocity_mm_s"), velocity_->value());
         plan.metadata.set(QStringLiteral("depth_mm"), depth_->value());
@@ -240,15 +270,21 @@ QString ControlPanel::motionName() const
 }
 
 double ControlPanel::withdrawVelocity() const { return velocity_->value(); }
+double ControlPanel::withdrawForceLimit() const { return withdrawLimit_->value(); }
+void ControlPanel::setWithdrawForceLimit(double newtons) { withdrawLimit_->setValue(newtons); }
+double ControlPanel::sineCentre() const { return centre_->value(); }
+void ControlPanel::setSineCentre(double mm) { centre_->setValue(mm); }
 double ControlPanel::forceLimit() const { return limit_->value(); }
 void ControlPanel::setForceLimit(double newtons) { limit_->setValue(newtons); }
 
 QString ControlPanel::motionProblem() const
 {
     if (sine_->isChecked()) {
-        const double peak = status_.position_mm + amplitude_->value();
+        const double peak = centre_->value() + amplitude_->value();
         if (peak > 150.0)
             return tr("The sine would reach %1 mm, past the stage's travel.").arg(peak, 0, 'f', 1);
+        if (centre_->value() - amplitude_->value() < 0.0)
+            return tr("The sine would go above 0 mm: make the centre at least the amplitude.");
         return {};
     }
     if (depth_->value() <= status_.position_mm + 0.01)
@@ -288,7 +324,8 @@ void ControlPanel::updateControls()
     state_.motionProblem = motionProblem();
     for (auto& [control, b] : buttons_) {
         const Permission p = permission(control, state_);
-        b->setEnabled(p.enabled);
+        // Refused but insistable (bias or zero under load): clickable, the window asks first.
+        b->setEnabled(p.enabled || p.overridable);
         b->setToolTip(p.enabled ? help_[control] : help_[control] + QStringLiteral("\n") + tr("Not now: %1").arg(p.reason));
     }
     const Permission motion = permission(Control::MotionSettings, state_);
@@ -328,8 +365,89 @@ void ControlPanel::updateControls()
                                 : tr("no limit set"),
         state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
     set("calibration", s.calibrationName.isEmpty() ? tr("none") : s.calibrationName, s.calibrationName.isEmpty());
+    updateSafetyControls();
     set("fault", s.fault.isEmpty() ? (s.forceLimitTripped ? tr("force limit tripped") : tr("none")) : s.fault,
         !s.fault.isEmpty() || s.forceLimitTripped);
+}
+
+QWidget* ControlPanel::buildLatchBanner()
+{
+    latchBanner_ = new QWidget(this);
+    latchBanner_->setObjectName(QStringLiteral("latchBanner"));
+    latchBanner_->setAttribute(Qt::WA_StyledBackground);
+    latchBanner_->setStyleSheet(QStringLiteral("#latchBanner { background: #fff3cd; border: 2px solid #c62828; border-radius: 4px; }"));
+    auto* l = new QVBoxLayout(latchBanner_);
+    auto* text = new QLabel(tr("<b>EMERGENCY STOP — latched.</b><br>The stage is disabled. Check the rig, then reset: "
+                               "this enables the stage again."),
+                            latchBanner_);
+    text->setWordWrap(true);
+    text->setObjectName(QStringLiteral("latchText"));
+    auto* reset = new QPushButton(tr("Reset emergency stop (enable stage)"), latchBanner_);
+    reset->setObjectName(QStringLiteral("resetEmergencyStop"));
+    connect(reset, &QPushButton::clicked, this, &ControlPanel::resetEmergencyStopRequested);
+    l->addWidget(text);
+    l->addWidget(reset);
+    latchBanner_->setVisible(false);
+    return latchBanner_;
+}
+
+QWidget* ControlPanel::buildJogBox()
+{
+    auto* box = new QGroupBox(tr("Jog (never recorded)"), this);
+    jogBox_ = box;
+    auto* grid = new QGridLayout(box);
+    jogStep_ = spin(box, 0.1, 5.0, 1.0, 1, tr(" mm"));
+    jogStep_->setObjectName(QStringLiteral("jogStep"));
+    jogStep_->setToolTip(tr("Step: 0.1, 1 or 5 mm"));
+    // Three steps an operator needs: fine, normal, coarse.
+    auto* steps = new QHBoxLayout;
+    for (double mm : {0.1, 1.0, 5.0}) {
+        auto* b = new QPushButton(tr("%1 mm").arg(mm, 0, 'g', 2), box);
+        b->setObjectName(QStringLiteral("jogStep_%1").arg(mm, 0, 'g', 2));
+        connect(b, &QPushButton::clicked, this, [this, mm] { jogStep_->setValue(mm); });
+        steps->addWidget(b);
+    }
+    jogOut_ = new QPushButton(tr("▲ Up (out)"), box);
+    jogOut_->setObjectName(QStringLiteral("jogOut"));
+    jogIn_ = new QPushButton(tr("▼ Down (in)"), box);
+    jogIn_->setObjectName(QStringLiteral("jogIn"));
+    connect(jogOut_, &QPushButton::clicked, this, [this] { emit jogRequested(-jogStep_->value(), withdrawVelocity()); });
+    connect(jogIn_, &QPushButton::clicked, this, [this] { emit jogRequested(jogStep_->value(), withdrawVelocity()); });
+    goToPosition_ = spin(box, 0.0, 150.0, 0.0, 2, tr(" mm"));
+    goToPosition_->setObjectName(QStringLiteral("goToPosition"));
+    goTo_ = new QPushButton(tr("Go to position"), box);
+    goTo_->setObjectName(QStringLiteral("goTo"));
+    connect(goTo_, &QPushButton::clicked, this, [this] { emit moveToRequested(goToPosition_->value(), withdrawVelocity()); });
+    grid->addLayout(steps, 0, 0, 1, 2);
+    grid->addWidget(jogStep_, 1, 0, 1, 2);
+    grid->addWidget(jogOut_, 2, 0);
+    grid->addWidget(jogIn_, 2, 1);
+    grid->addWidget(goToPosition_, 3, 0);
+    grid->addWidget(goTo_, 3, 1);
+    return box;
+}
+
+void ControlPanel::updateSafetyControls()
+{
+    latchBanner_->setVisible(state_.latched);
+    const Permission jog = permission(Control::Jog, state_);
+    for (QPushButton* b : {jogOut_, jogIn_, goTo_}) {
+        b->setEnabled(jog.enabled);
+        b->setToolTip(jog.enabled ? tr("Moves the needle without recording") : tr("Not now: %1").arg(jog.reason));
+    }
+    // Out to the last run's start: offered when the needle is deeper than that.
+    const Permission out = permission(Control::Withdraw, state_);
+    const bool deeper = status_.lastRunStart_mm && status_.position_mm > *status_.lastRunStart_mm + 0.05;
+    withdrawToStart_->setEnabled(out.enabled && deeper);
+    withdrawToStart_->setText(status_.lastRunStart_mm
+                                  ? tr("Withdraw to the start position (%1 mm)").arg(*status_.lastRunStart_mm, 0, 'f', 2)
+                                  : tr("Withdraw to the start position"));
+    withdrawToStart_->setToolTip(!out.enabled ? tr("Not now: %1").arg(out.reason)
+                                 : deeper     ? tr("Moves the needle out to where the last run began")
+                                              : tr("The needle is not deeper than where the last run began."));
+    // The limits of a run are fixed while it records (and Start never leaves the focus there).
+    limit_->setEnabled(!state_.recording);
+    withdrawLimit_->setEnabled(!state_.recording);
 }
 
 }  // namespace nb
