@@ -56,13 +56,13 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
 
     auto* prep = new QGroupBox(tr("1. Prepare"), this);
     auto* prepLayout = new QVBoxLayout(prep);
-    auto* enable = addButton(Control::Enable, tr("Enable stage"), tr("Powers the stage drive"));
+    auto* enable = addButton(Control::Enable, tr("&Enable stage"), tr("Powers the stage drive"));
     enable->setCheckable(true);
     connect(enable, &QPushButton::clicked, this, [this, enable] { emit enableRequested(enable->isChecked()); });
-    auto* bias = addButton(Control::Bias, tr("Bias force sensor"),
+    auto* bias = addButton(Control::Bias, tr("&Bias force sensor"),
                            tr("Takes the present force as zero (needle free of tissue)"));
     connect(bias, &QPushButton::clicked, this, &ControlPanel::biasRequested);
-    auto* zero = addButton(Control::Zero, tr("Zero position"), tr("Makes the present stage position 0 mm"));
+    auto* zero = addButton(Control::Zero, tr("&Zero position"), tr("Makes the present stage position 0 mm"));
     connect(zero, &QPushButton::clicked, this, &ControlPanel::zeroRequested);
     auto* calibrate = addButton(Control::Calibrate, tr("Calibrate sensor…"),
                                 tr("Known masses on the load cell, fit V = d·m + c"));
@@ -125,7 +125,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
 
     auto* runBox = new QGroupBox(tr("3. Run"), this);
     auto* runLayout = new QGridLayout(runBox);
-    auto* start = addButton(Control::StartInsertion, tr("Start insertion (moves + records)"),
+    auto* start = addButton(Control::StartInsertion, tr("Start &insertion (moves + records)"),
                             tr("Starts recording a new run file, then moves the needle in"));
     start->setStyleSheet(QStringLiteral("QPushButton:enabled { font-weight: bold; }"));
     start->setIcon(QIcon(QStringLiteral(":/icons/record.svg")));
@@ -256,7 +256,7 @@ devices::RunPlan ControlPanel::motionPlan() const
         plan.metadata.set(QStringLiteral("amplitude_mm"), amplitude_->value());
         plan.metadata.set(QStringLiteral("frequency_hz"), frequency_->value());
         plan.metadata.set(QStringLiteral("cycles"), double(cycles_->value()));
-        plan.metadata.set(QStringLiteral("centre_mm"), centre_->value());
+
     } else {
         plan.metadata.set(QStringLiteral("velocity_mm_s"), velocity_->value());
         plan.metadata.set(QStringLiteral("depth_mm"), depth_->value());
@@ -333,7 +333,7 @@ void ControlPanel::updateControls()
     motionBox_->setToolTip(motion.enabled ? QString() : motion.reason);
     auto* enable = buttons_[Control::Enable];
     enable->setChecked(state_.stageEnabled);
-    enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("Enable stage"));
+    enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("&Enable stage"));
     // Whether a withdrawal lands in a file is never left to memory.
     buttons_[Control::Withdraw]->setText(state_.recording ? tr("Withdraw (recorded in this run)")
                                                           : tr("Withdraw (not recorded)"));
