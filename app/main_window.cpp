@@ -32,6 +32,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QShortcut>
 #include <QStandardPaths>
@@ -81,7 +82,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     scroll->setWidget(panel_);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(panel_->sizeHint().width() + 24);
+    scroll->setMinimumWidth(panel_->minimumSizeHint().width() + 24 + scroll->verticalScrollBar()->sizeHint().width());
     panelDock_ = new QDockWidget(tr("Control panel"), this);
     panelDock_->setObjectName(QStringLiteral("controlDock"));
     panelDock_->setWidget(scroll);

@@ -1,6 +1,7 @@
 #include "control_panel.h"
 
 #include <QButtonGroup>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
@@ -114,8 +115,17 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     motionPages_->addWidget(linearPage);
     motionPages_->addWidget(sinePage);
     motionLayout->addWidget(motionPages_);
-    connect(sine_, &QRadioButton::toggled, this, [this](bool on) {
+    // The stack is as tall as the page shown, not as its tallest page (room for the status).
+    const auto sizeToPage = [this] {
+        for (int i = 0; i < motionPages_->count(); ++i)
+            motionPages_->widget(i)->setSizePolicy(QSizePolicy::Preferred,
+                                                   i == motionPages_->currentIndex() ? QSizePolicy::Preferred : QSizePolicy::Ignored);
+        motionPages_->adjustSize();
+    };
+    sizeToPage();
+    connect(sine_, &QRadioButton::toggled, this, [this, sizeToPage](bool on) {
         motionPages_->setCurrentIndex(on ? 1 : 0);
+        sizeToPage();
         updateControls();
     });
     for (QDoubleSpinBox* s : {velocity_, depth_, amplitude_, frequency_, centre_})
@@ -147,7 +157,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     end->setIcon(QIcon(QStringLiteral(":/icons/end_run.svg")));
     connect(end, &QPushButton::clicked, this, &ControlPanel::endRunRequested);
     runLayout->addWidget(start, 0, 0, 1, 2);
-    runLayout->addWidget(withdraw, 1, 0, 1, 2);
+    runLayout->addWidget(withdraw, 1, 0);
     runLayout->addWidget(stop, 2, 0);
     runLayout->addWidget(end, 2, 1);
     auto* limitRow = new QHBoxLayout;
@@ -161,25 +171,23 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
         updateControls();
     });
     limitRow->addWidget(limit_, 1);
-    runLayout->addLayout(limitRow, 3, 0, 1, 2);
-    auto* withdrawLimitRow = new QHBoxLayout;
-    withdrawLimitRow->addWidget(new QLabel(tr("Withdrawal limit"), runBox));
+    // Both limits on one row: the status below must stay in sight at 1366x768.
+    limitRow->addWidget(new QLabel(tr("Withdrawal"), runBox));
     withdrawLimit_ = spin(runBox, 0.1, 20.0, 9.5, 2, tr(" N"));
     withdrawLimit_->setObjectName(QStringLiteral("withdrawForceLimit"));
     withdrawLimit_->setToolTip(tr("|F| that stops the needle coming out (never below the maximum force, so a limit stop never traps the needle)"));
     connect(withdrawLimit_, &QDoubleSpinBox::valueChanged, this, &ControlPanel::withdrawForceLimitChanged);
-    withdrawLimitRow->addWidget(withdrawLimit_, 1);
-    runLayout->addLayout(withdrawLimitRow, 4, 0, 1, 2);
-    withdrawToStart_ = new QPushButton(tr("Withdraw to the start position"), runBox);
+    limitRow->addWidget(withdrawLimit_, 1);
+    runLayout->addLayout(limitRow, 3, 0, 1, 2);
+    withdrawToStart_ = new QPushButton(tr("Withdraw to start"), runBox);
     withdrawToStart_->setObjectName(QStringLiteral("withdrawToStart"));
     withdrawToStart_->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
     connect(withdrawToStart_, &QPushButton::clicked, this, [this] {
         if (status_.lastRunStart_mm)
             emit withdrawToRequested(withdrawVelocity(), *status_.lastRunStart_mm);
     });
-    runLayout->addWidget(withdrawToStart_, 5, 0, 1, 2);
+    runLayout->addWidget(withdrawToStart_, 1, 1);
     layout->addWidget(runBox);
-    layout->addWidget(buildJogBox());
 
     auto* statusBox = new QGroupBox(tr("Status"), this);
     auto* grid = new QGridLayout(statusBox);
@@ -220,6 +228,8 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     status_labels_[QStringLiteral("fault")]->setWordWrap(true);
     status_labels_[QStringLiteral("recording")]->setWordWrap(true);
     layout->addWidget(statusBox);
+    // Jog is for after a stop: below the status, which must stay in sight.
+    layout->addWidget(buildJogBox());
     layout->addStretch();
 
     state_.forceLimit_N = limit_->value();
@@ -396,34 +406,30 @@ QWidget* ControlPanel::buildJogBox()
     auto* box = new QGroupBox(tr("Jog (never recorded)"), this);
     jogBox_ = box;
     auto* grid = new QGridLayout(box);
-    jogStep_ = spin(box, 0.1, 5.0, 1.0, 1, tr(" mm"));
-    jogStep_->setObjectName(QStringLiteral("jogStep"));
-    jogStep_->setToolTip(tr("Step: 0.1, 1 or 5 mm"));
     // Three steps an operator needs: fine, normal, coarse.
-    auto* steps = new QHBoxLayout;
-    for (double mm : {0.1, 1.0, 5.0}) {
-        auto* b = new QPushButton(tr("%1 mm").arg(mm, 0, 'g', 2), box);
-        b->setObjectName(QStringLiteral("jogStep_%1").arg(mm, 0, 'g', 2));
-        connect(b, &QPushButton::clicked, this, [this, mm] { jogStep_->setValue(mm); });
-        steps->addWidget(b);
-    }
-    jogOut_ = new QPushButton(tr("▲ Up (out)"), box);
+    jogStep_ = new QComboBox(box);
+    jogStep_->setObjectName(QStringLiteral("jogStep"));
+    for (double mm : {0.1, 1.0, 5.0})
+        jogStep_->addItem(tr("%1 mm").arg(mm, 0, 'g', 2), mm);
+    jogStep_->setCurrentIndex(1);
+    jogStep_->setToolTip(tr("Step of one jog"));
+    const auto step = [this] { return jogStep_->currentData().toDouble(); };
+    jogOut_ = new QPushButton(tr("▲ Out"), box);
     jogOut_->setObjectName(QStringLiteral("jogOut"));
-    jogIn_ = new QPushButton(tr("▼ Down (in)"), box);
+    jogIn_ = new QPushButton(tr("▼ In"), box);
     jogIn_->setObjectName(QStringLiteral("jogIn"));
-    connect(jogOut_, &QPushButton::clicked, this, [this] { emit jogRequested(-jogStep_->value(), withdrawVelocity()); });
-    connect(jogIn_, &QPushButton::clicked, this, [this] { emit jogRequested(jogStep_->value(), withdrawVelocity()); });
+    connect(jogOut_, &QPushButton::clicked, this, [this, step] { emit jogRequested(-step(), withdrawVelocity()); });
+    connect(jogIn_, &QPushButton::clicked, this, [this, step] { emit jogRequested(step(), withdrawVelocity()); });
     goToPosition_ = spin(box, 0.0, 150.0, 0.0, 2, tr(" mm"));
     goToPosition_->setObjectName(QStringLiteral("goToPosition"));
     goTo_ = new QPushButton(tr("Go to position"), box);
     goTo_->setObjectName(QStringLiteral("goTo"));
     connect(goTo_, &QPushButton::clicked, this, [this] { emit moveToRequested(goToPosition_->value(), withdrawVelocity()); });
-    grid->addLayout(steps, 0, 0, 1, 2);
-    grid->addWidget(jogStep_, 1, 0, 1, 2);
-    grid->addWidget(jogOut_, 2, 0);
-    grid->addWidget(jogIn_, 2, 1);
-    grid->addWidget(goToPosition_, 3, 0);
-    grid->addWidget(goTo_, 3, 1);
+    grid->addWidget(jogStep_, 0, 0);
+    grid->addWidget(jogOut_, 0, 1);
+    grid->addWidget(jogIn_, 0, 2);
+    grid->addWidget(goToPosition_, 1, 0);
+    grid->addWidget(goTo_, 1, 1, 1, 2);
     return box;
 }
 
@@ -440,10 +446,10 @@ void ControlPanel::updateSafetyControls()
     const bool deeper = status_.lastRunStart_mm && status_.position_mm > *status_.lastRunStart_mm + 0.05;
     withdrawToStart_->setEnabled(out.enabled && deeper);
     withdrawToStart_->setText(status_.lastRunStart_mm
-                                  ? tr("Withdraw to the start position (%1 mm)").arg(*status_.lastRunStart_mm, 0, 'f', 2)
-                                  : tr("Withdraw to the start position"));
+                                  ? tr("Withdraw to start (%1 mm)").arg(*status_.lastRunStart_mm, 0, 'f', 1)
+                                  : tr("Withdraw to start"));
     withdrawToStart_->setToolTip(!out.enabled ? tr("Not now: %1").arg(out.reason)
-                                 : deeper     ? tr("Moves the needle out to where the last run began")
+                                 : deeper     ? tr("Moves the needle out to where the last run began (not recorded)")
                                               : tr("The needle is not deeper than where the last run began."));
     // The limits of a run are fixed while it records (and Start never leaves the focus there).
     limit_->setEnabled(!state_.recording);

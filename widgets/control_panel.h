@@ -13,6 +13,7 @@
 
 class QAbstractButton;
 class QButtonGroup;
+class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
@@ -97,7 +98,7 @@ private:
     QPushButton* jogOut_ = nullptr;
     QPushButton* jogIn_ = nullptr;
     QPushButton* goTo_ = nullptr;
-    QDoubleSpinBox* jogStep_ = nullptr;
+    QComboBox* jogStep_ = nullptr;
     QDoubleSpinBox* goToPosition_ = nullptr;
     QWidget* jogBox_ = nullptr;
     std::map<QString, QLabel*> status_labels_;

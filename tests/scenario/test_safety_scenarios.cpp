@@ -17,6 +17,7 @@
 #include <QAbstractButton>
 #include <QAbstractSpinBox>
 #include <QAction>
+#include <QComboBox>
 #include <QApplication>
 #include <QDialog>
 #include <QDoubleSpinBox>
@@ -353,7 +354,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!banner->isVisible(), 5000);
         // Jogging out works again, unrecorded.
         QTRY_VERIFY_WITH_TIMEOUT(p->findChild<QPushButton*>(QStringLiteral("jogOut"))->isEnabled(), 5000);
-        p->findChild<QPushButton*>(QStringLiteral("jogStep_1"))->click();
+        p->findChild<QComboBox*>(QStringLiteral("jogStep"))->setCurrentIndex(1);  // 1 mm
         p->findChild<QPushButton*>(QStringLiteral("jogOut"))->click();
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(w.engine()->status().position_mm - (position - 1.0)) < 0.05 && !w.engine()->status().moving, 10000);
         QVERIFY(!w.engine()->status().recording);
