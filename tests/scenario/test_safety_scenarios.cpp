@@ -245,6 +245,9 @@ private slots:
         QCOMPARE(w.lastEndReason(), QStringLiteral("emergency_stop"));
         const nb::RunReadResult file = nb::readRunFile(w.lastRunPath());
         QCOMPARE(file.run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("emergency_stop"));
+        // The list says so too, not just "stopped".
+        QTRY_COMPARE_WITH_TIMEOUT(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("emergency stop"), 5000);
+        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("emergency stop")));
         QVERIFY(w.isVisible());                   // the quit question was not answered by the stop
         QCOMPARE(w.session()->dir(), sessionDir);  // nor a session switched
         QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().latched, 5000);
