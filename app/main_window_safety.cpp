@@ -28,6 +28,8 @@ WorkbenchOptions MainWindow::optionsFromEnvironment()
         o.persistSettings = false;
         o.devicesFromSettings = false;
     }
+    else if (QSettings().contains(QStringLiteral("sim/rateHz")))
+        o.rateHz = qBound(100.0, QSettings().value(QStringLiteral("sim/rateHz")).toDouble(), 10000.0);  // Devices ▸ Simulated rig…
     if (qEnvironmentVariable("NEEDLEBENCH_FAST_SIM") == QLatin1String("1"))
         o.realtime = false;
     return o;

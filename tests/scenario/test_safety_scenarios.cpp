@@ -27,6 +27,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -417,6 +418,40 @@ private slots:
         QVERIFY2(std::abs(w.engine()->status().position_mm) < 0.05, qPrintable(QString::number(w.engine()->status().position_mm)));
         QVERIFY(!w.engine()->status().forceLimitTripped);
         QCOMPARE(w.runsEnded(), 1);  // never recorded
+    }
+
+    void simulatedRigChosenInTheWindowIsRecorded()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+        const nb::devices::AcquisitionEngine* before = w.engine();
+        QString chosen;
+        QTimer::singleShot(0, this, [&] {
+            if (!waitFor([] { return QApplication::activeModalWidget() != nullptr; }, 5000))
+                return;
+            auto* d = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            auto* tissue = d->findChild<QComboBox*>(QStringLiteral("tissue"));
+            tissue->setCurrentIndex(tissue->count() > 1 ? 1 : 0);
+            chosen = tissue->currentText();
+            d->findChild<QSpinBox*>(QStringLiteral("seed"))->setValue(7);
+            d->accept();
+        });
+        action(w, QStringLiteral("&Simulated rig…"))->trigger();
+        QVERIFY(!chosen.isEmpty());
+        QVERIFY(w.engine() != before);  // rebuilt on the chosen rig
+        QVERIFY2(w.engine()->deviceDescription().contains(chosen), qPrintable(w.engine()->deviceDescription()));
+        QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("seed 7")), qPrintable(w.engine()->deviceDescription()));
+        setLinear(w, 20.0, 3.0);
+        prepare(w);
+        w.controlPanel()->button(Control::StartInsertion)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QCOMPARE(r.run.meta(QStringLiteral("sim_tissue")).value_or(QString()), chosen);
+        QCOMPARE(r.run.meta(QStringLiteral("sim_seed")).value_or(QString()), QStringLiteral("7"));
     }
 
     void sineWithDefaultsTouchesTissue()
