@@ -131,7 +131,7 @@ void MainWindow::biasOrInsist()
         showMessage(tr("Not now: %1").arg(p.reason), true);
         return;
     }
-    if (confirmInsist(this, tr("Bias force sensor"), p.reason, tr("Bias anyway"))) {
+    if (confirmInsist(this, tr("Bias force sensor"), p.reason, tr("Bias &anyway"))) {
         engine_->biasSensor(true);
         showMessage(tr("Bias taken under load on purpose: %1").arg(p.reason), true);
     } else {
@@ -150,7 +150,7 @@ void MainWindow::zeroOrInsist()
         showMessage(tr("Not now: %1").arg(p.reason), true);
         return;
     }
-    if (confirmInsist(this, tr("Zero position"), p.reason, tr("Zero anyway"))) {
+    if (confirmInsist(this, tr("Zero position"), p.reason, tr("Zero &anyway"))) {
         engine_->zeroStage(true);
         showMessage(tr("Position zeroed in tissue on purpose: %1").arg(p.reason), true);
     } else {

@@ -50,6 +50,30 @@ if [ "${1:-}" = "--inner" ]; then
   echo "run file $(basename "$run"): end_reason=$reason"
   [ "$reason" = emergency_stop ] || { echo "FAIL: expected emergency_stop"; cat "$work/needlebench.log"; exit 1; }
   [ "$(ls -d "$work"/data/*/*/sessions/* 2>/dev/null | wc -l)" = 0 ] || { echo "FAIL: Ctrl+N made a session mid-run"; exit 1; }
+
+  # Again with a menu open (a menu grabs the keyboard under X): reset on purpose, zero in tissue on
+  # purpose (the override), start, menu, Esc.
+  xdotool windowfocus --sync "$win" || true   # no window manager gives the focus back
+  key alt+e                      # Enable stage: the deliberate reset of the latch
+  sleep 0.5
+  key alt+z                      # Zero again (enabling lost it): the needle is in tissue, so it asks
+  sleep 0.5
+  if [ "$NB_LANG" = de ]; then key alt+a alt+t; else key alt+a; fi   # "Zero anyway"
+  xdotool windowfocus --sync "$win" || true
+  sleep 0.5
+  key alt+i                      # the second run
+  sleep 1.5
+  [ "$(ls "$work/session"/run_*.csv | wc -l)" = 2 ] || { echo "FAIL: the second run did not start"; exit 1; }
+  key alt+s                      # the Session menu opens (Sitzung: also S)
+  shot menu_open
+  key Escape                     # stops; the menu stays
+  sleep 1
+  key Escape                     # at rest: closes the menu
+  run=$(ls "$work/session"/run_*.csv | sed -n 2p)
+  reason=$(sed -n 's/^# end_reason: //p' "$run" | tail -1)
+  echo "run file $(basename "$run") (Esc in a menu): end_reason=$reason"
+  [ "$reason" = emergency_stop ] || { echo "FAIL: expected emergency_stop"; cat "$work/needlebench.log"; exit 1; }
+  kill -0 $pid || { echo "FAIL: the window quit"; exit 1; }
   echo "PASS"
   exit 0
 fi
