@@ -15,7 +15,9 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QLabel>
 #include <QStatusBar>
+#include <QTimer>
 
 namespace nb {
 
@@ -81,7 +83,7 @@ bool MainWindow::motionOrRecording() const
     const devices::EngineStatus s = engine_->status();
     // The status trails a command by up to one period: a motion just asked for counts.
     const bool justAsked = motionCommand_.isValid() && motionCommand_.elapsed() < 300;
-    return s.moving || s.recording || s.approaching || s.jogging || justAsked;
+    return escapeStops(s.interlocks()) || s.jogging || justAsked;
 }
 
 void MainWindow::emergencyStopNow()
@@ -101,6 +103,9 @@ bool MainWindow::refused(Control control)
     if (p.enabled)
         return false;
     showMessage(tr("Not now: %1").arg(p.reason), true);
+    // The reason must be read whole: the device line on the right gives way for a while.
+    statusLabel_->hide();
+    QTimer::singleShot(10000, statusLabel_, &QWidget::show);
     return true;
 }
 
