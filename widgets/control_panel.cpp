@@ -454,6 +454,8 @@ void ControlPanel::updateSafetyControls()
     // The limits of a run are fixed while it records (and Start never leaves the focus there).
     limit_->setEnabled(!state_.recording);
     withdrawLimit_->setEnabled(!state_.recording);
+    jogStep_->setEnabled(!state_.recording);
+    goToPosition_->setEnabled(!state_.recording);
 }
 
 }  // namespace nb

@@ -293,7 +293,8 @@ private slots:
         QWidget* focus = QApplication::focusWidget();
         QVERIFY2(!qobject_cast<QAbstractSpinBox*>(focus), focus ? focus->metaObject()->className() : "none");
         QTRY_VERIFY_WITH_TIMEOUT(!w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("forceLimit"))->isEnabled(), 5000);
-        QVERIFY(!w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->isEnabled());
+        for (const char* field : {"depth", "velocity", "withdrawForceLimit", "goToPosition"})
+            QVERIFY2(!w.controlPanel()->findChild<QDoubleSpinBox*>(QString::fromLatin1(field))->isEnabled(), field);
 
         // Anything that would open a dialog is caught here rather than hang the test.
         int dialogs = 0;
