@@ -472,12 +472,8 @@ void MainWindow::startRun()
     plan.metadata.set(QStringLiteral("operator"), i.operatorName);
     plan.metadata.set(QStringLiteral("protocol"), i.protocol);
     plan.metadata.set(QStringLiteral("session"), QDir(session_->dir()).dirName());
-    if (spec_ && spec_->stage == QLatin1String("sim")) {
-        plan.metadata.set(QStringLiteral("sim_tissue"), spec_->simulated.tissue);
-        plan.metadata.set(QStringLiteral("sim_tip"), spec_->simulated.tip);
-        plan.metadata.set(QStringLiteral("sim_seed"), QString::number(spec_->simulated.seed));
-    }
     runIsLinear_ = plan.motion == devices::RunPlan::Motion::Linear;
+    addRigMetadata(plan);
     noteMotionCommand();
     engine_->startRun(plan);
 }

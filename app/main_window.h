@@ -24,6 +24,7 @@ namespace nb {
 namespace devices {
 class AcquisitionEngine;
 struct DeviceSpec;
+struct RunPlan;
 struct EngineStatus;
 struct RunSummary;
 struct Sample;
@@ -129,6 +130,8 @@ private:
     void zeroOrInsist();
     void noteMotionCommand() { motionCommand_.start(); }
     devices::DeviceSpec currentSpec() const;
+    // The simulated rig's preset, tip and seed in the run's metadata (sim_tissue, sim_tip, sim_seed).
+    void addRigMetadata(devices::RunPlan& plan) const;
 
     WorkbenchOptions options_;
     std::unique_ptr<devices::AcquisitionEngine> engine_;

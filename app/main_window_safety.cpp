@@ -76,6 +76,15 @@ devices::DeviceSpec MainWindow::currentSpec() const
     return spec_ ? *spec_ : devices::DeviceSpec{};
 }
 
+void MainWindow::addRigMetadata(devices::RunPlan& plan) const
+{
+    if (!spec_ || spec_->stage != QLatin1String("sim"))
+        return;
+    plan.metadata.set(QStringLiteral("sim_tissue"), spec_->simulated.tissue);
+    plan.metadata.set(QStringLiteral("sim_tip"), spec_->simulated.tip);
+    plan.metadata.set(QStringLiteral("sim_seed"), QString::number(spec_->simulated.seed));
+}
+
 bool MainWindow::motionOrRecording() const
 {
     if (!engine_)

@@ -1,7 +1,7 @@
 #include "session.h"
-#include "end_reason.h"
 #include "core/tr.h"
 
+#include "core/end_reason.h"
 #include "core/run_file.h"
 
 #include <QCoreApplication>
