@@ -33,6 +33,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QShortcut>
 #include <QStandardPaths>
@@ -51,7 +52,7 @@ QString defaultSessionRoot()
 
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : MainWindow(WorkbenchOptions{}, parent) {}
+MainWindow::MainWindow(QWidget* parent) : MainWindow(optionsFromEnvironment(), parent) {}
 
 MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMainWindow(parent), options_(options)
 {
@@ -82,7 +83,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     scroll->setWidget(panel_);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(panel_->sizeHint().width() + 24);
+    scroll->setMinimumWidth(panel_->minimumSizeHint().width() + 24 + scroll->verticalScrollBar()->sizeHint().width());
     panelDock_ = new QDockWidget(tr("Control panel"), this);
     panelDock_->setObjectName(QStringLiteral("controlDock"));
     panelDock_->setWidget(scroll);
@@ -104,19 +105,17 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     if (!deviceProblem.isEmpty())
         showMessage(tr("Could not open the configured devices (%1); using the simulated rig.").arg(deviceProblem), true);
 
-    // The emergency stop answers Esc wherever the focus is, in any window of the application.
-    auto* estop = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    estop->setContext(Qt::ApplicationShortcut);
-    connect(estop, &QShortcut::activated, panel_, &ControlPanel::emergencyStopRequested);
+    installSafety();
 
     // Through engine_ each time: the operator may switch devices, and so the engine.
     connect(panel_, &ControlPanel::enableRequested, this, [this](bool on) { engine_->enableStage(on); });
-    connect(panel_, &ControlPanel::biasRequested, this, [this] { engine_->biasSensor(); });
-    connect(panel_, &ControlPanel::zeroRequested, this, [this] { engine_->zeroStage(); });
+    connect(panel_, &ControlPanel::biasRequested, this, &MainWindow::biasOrInsist);
+    connect(panel_, &ControlPanel::zeroRequested, this, &MainWindow::zeroOrInsist);
     connect(panel_, &ControlPanel::forceLimitChanged, this, [this](double limit) { engine_->setForceLimit(limit); });
     connect(panel_, &ControlPanel::forceLimitChanged, plots_, &ForcePlots::setForceLimit);
     connect(panel_, &ControlPanel::startRequested, this, &MainWindow::startRun);
     connect(panel_, &ControlPanel::withdrawRequested, this, [this](double v) {
+        noteMotionCommand();
         engine_->withdraw(v);
         plots_->addEvent(lastT_ - runT0_, tr("withdraw"));
     });
@@ -125,11 +124,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
         plots_->addEvent(lastT_ - runT0_, tr("stop"));
     });
     connect(panel_, &ControlPanel::endRunRequested, this, [this] { engine_->endRun(); });
-    connect(panel_, &ControlPanel::emergencyStopRequested, this, [this] {
-        engine_->emergencyStop();
-        plots_->addEvent(lastT_ - runT0_, tr("E-STOP"));
-        showMessage(tr("Emergency stop"), true);
-    });
+    connect(panel_, &ControlPanel::emergencyStopRequested, this, &MainWindow::emergencyStopNow);
     connect(panel_, &ControlPanel::calibrateRequested, this, &MainWindow::openCalibrationWizard);
 
     attachEngine();
@@ -150,6 +145,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
         resize(1400, 860);
     }
     engine_->setForceLimit(panel_->forceLimit());
+    engine_->setWithdrawForceLimit(panel_->withdrawForceLimit());
     plots_->setForceLimit(panel_->forceLimit());
 
     // The session given, else the last one, else a fresh one: a run always has a folder.
@@ -173,6 +169,7 @@ std::unique_ptr<devices::AcquisitionEngine> MainWindow::makeEngine(const std::op
 {
     devices::DeviceSpec chosen = spec.value_or(devices::DeviceSpec{});
     chosen.simulated.realtime = options_.realtime;
+    spec_ = std::make_shared<devices::DeviceSpec>(chosen);
     return engineOn(devices::openDevicesOrSimulated(chosen, problem), forceLimit_N);
 }
 
@@ -218,6 +215,8 @@ void MainWindow::attachEngine()
 
 void MainWindow::chooseDevices()
 {
+    if (refused(Control::ChangeSetup))
+        return;
     DeviceDialog dialog(devices::specFromSettings(QSettings()), [] { return devices::listDevices(); }, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
@@ -230,10 +229,8 @@ void MainWindow::chooseDevices()
 
 bool MainWindow::switchDevices(const devices::DeviceSpec& spec)
 {
-    if (engine_->status().recording) {
-        showMessage(tr("Devices not changed: end the run first."), true);
+    if (refused(Control::ChangeSetup))
         return false;
-    }
     if (wizard_) {
         showMessage(tr("Devices not changed: close the calibration wizard first."), true);
         return false;
@@ -242,6 +239,9 @@ bool MainWindow::switchDevices(const devices::DeviceSpec& spec)
     QString problem;
     engine_ = makeEngine(spec, &problem, panel_->forceLimit());
     attachEngine();
+    engine_->setWithdrawForceLimit(panel_->withdrawForceLimit());
+    if (const auto centre = devices::suggestedSineCentre_mm(currentSpec()))
+        panel_->setSineCentre(*centre);
     if (session_)
         if (const auto cal = session_->activeCalibration())
             engine_->setCalibration(cal->fit.slope_V_per_g, cal->name);
@@ -273,6 +273,7 @@ void MainWindow::buildMenus()
 
     auto* devicesMenu = menuBar()->addMenu(tr("&Devices"));
     devicesMenu->addAction(tr("&Choose devices…"), this, &MainWindow::chooseDevices);
+    devicesMenu->addAction(tr("&Simulated rig…"), this, &MainWindow::chooseSimulatedRig);
 
     auto* calibration = menuBar()->addMenu(tr("&Calibration"));
     calibration->addAction(tr("&Calibrate force sensor…"), this, &MainWindow::openCalibrationWizard);
@@ -306,7 +307,12 @@ void MainWindow::buildMenus()
         a->setChecked(preferredLanguage() == code);
         a->setData(code);
         group->addAction(a);
-        connect(a, &QAction::triggered, this, [this, code] {
+        connect(a, &QAction::triggered, this, [this, code, a] {
+            if (refused(Control::ChangeSetup)) {
+                for (QAction* other : a->actionGroup()->actions())
+                    other->setChecked(other->data().toString() == preferredLanguage());
+                return;
+            }
             setPreferredLanguage(code);
             QMessageBox::information(this, tr("Language"), tr("The language changes when NeedleBench is started again."));
         });
@@ -368,8 +374,10 @@ bool MainWindow::createSession(const QString& dir, const SessionInfo& info)
 
 void MainWindow::newSessionDialog()
 {
+    if (refused(Control::ChangeSetup))
+        return;
     SessionInfoDialog dialog(SessionInfoDialog::Mode::New, {}, defaultSessionRoot(), this);
-    if (dialog.exec() != QDialog::Accepted)
+    if (dialog.exec() != QDialog::Accepted || refused(Control::ChangeSetup))
         return;
     const SessionInfo info = dialog.info();
     QString name = QStringLiteral("%1_%2_%3").arg(info.organ, info.specimen, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd_HHmmss")));
@@ -379,10 +387,10 @@ void MainWindow::newSessionDialog()
 
 void MainWindow::editSessionDetails()
 {
-    if (!session_)
+    if (!session_ || refused(Control::ChangeSetup))
         return;
     SessionInfoDialog dialog(SessionInfoDialog::Mode::Edit, session_->info(), {}, this);
-    if (dialog.exec() == QDialog::Accepted)
+    if (dialog.exec() == QDialog::Accepted && !refused(Control::ChangeSetup))
         setSessionInfo(dialog.info());
 }
 
@@ -403,13 +411,19 @@ bool MainWindow::setSessionInfo(const SessionInfo& info)
 
 void MainWindow::openSessionDialog()
 {
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open session folder"), defaultSessionRoot());
-    if (!dir.isEmpty())
+    if (refused(Control::ChangeSetup))
+        return;
+    // Qt's own chooser, never the desktop's: Esc must reach the emergency stop's filter.
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open session folder"), defaultSessionRoot(),
+                                                          QFileDialog::ShowDirsOnly | QFileDialog::DontUseNativeDialog);
+    if (!dir.isEmpty() && !refused(Control::ChangeSetup))
         openSession(dir);
 }
 
 CalibrationWizard* MainWindow::openCalibrationWizard()
 {
+    if (!wizard_ && refused(Control::Calibrate))
+        return nullptr;
     if (!wizard_) {
         wizard_ = new CalibrationWizard(nominalSensor_, this);
         wizard_->setAttribute(Qt::WA_DeleteOnClose);
@@ -456,6 +470,8 @@ void MainWindow::startRun()
         plan.metadata.set(k, v);
     plan.metadata.set(key::session, QDir(session_->dir()).dirName());
     runIsLinear_ = plan.motion == devices::RunPlan::Motion::Linear;
+    addRigMetadata(plan);
+    noteMotionCommand();
     engine_->startRun(plan);
 }
 
@@ -561,9 +577,12 @@ void MainWindow::showMessage(const QString& text, bool alarm)
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (engine_->status().recording) {
-        const auto answer = QMessageBox::question(this, tr("Quit"),
-                                                  tr("A run is recording. Stop the stage, end the run (saved as stopped) and quit?"));
+    const Permission quit = permission(Control::Quit, engine_->status().interlocks());
+    if (!quit.enabled) {
+        // The offer to end the run first; Esc in this question is the emergency stop as well.
+        const auto answer = QMessageBox::question(
+            this, tr("Quit"), tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
         if (answer != QMessageBox::Yes) {
             event->ignore();
             return;

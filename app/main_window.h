@@ -3,6 +3,9 @@
 #include "core/session.h"
 #include "devices/device_set.h"
 
+#include "devices/interlocks.h"
+
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QPointer>
 #include <QStringList>
@@ -21,6 +24,7 @@ namespace nb {
 namespace devices {
 class AcquisitionEngine;
 struct DeviceSpec;
+struct RunPlan;
 struct EngineStatus;
 struct RunSummary;
 struct Sample;
@@ -87,6 +91,15 @@ public:
     // opened, with a message). Refused while a run records or the calibration wizard is open.
     // True when every chosen device opened.
     bool switchDevices(const devices::DeviceSpec& spec);
+    // Devices ▸ Simulated rig…: the dialog, then the engine rebuilt on the chosen rig.
+    void chooseSimulatedRig();
+    // Whether the stage moves or a run records now (Esc is then the emergency stop).
+    bool motionOrRecording() const;
+    // The emergency stop, from the panel button or Esc anywhere.
+    void emergencyStopNow();
+    // Reads NEEDLEBENCH_SESSION_DIR (a fresh or given session, no saved settings, the default
+    // simulated rig) and NEEDLEBENCH_FAST_SIM=1 (simulated clock): scenario tests under X.
+    static WorkbenchOptions optionsFromEnvironment();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -107,6 +120,18 @@ private:
     void openSessionDialog();
     void markDetectedEvents();
     void showMessage(const QString& text, bool alarm = false);
+
+    // Operator safety (issue 12), in main_window_safety.cpp.
+    void installSafety();
+    // Refuses `control` with the reason in the status bar when the interlocks forbid it now.
+    bool refused(Control control);
+    // Bias or zero: when the interlocks advise against it, asks before insisting.
+    void biasOrInsist();
+    void zeroOrInsist();
+    void noteMotionCommand() { motionCommand_.start(); }
+    devices::DeviceSpec currentSpec() const;
+    // The simulated rig's preset, tip and seed in the run's metadata (sim_tissue, sim_tip, sim_seed).
+    void addRigMetadata(devices::RunPlan& plan) const;
 
     WorkbenchOptions options_;
     std::unique_ptr<devices::AcquisitionEngine> engine_;
@@ -133,6 +158,8 @@ private:
     int runsEnded_ = 0;
     QStringList recovered_;
     QString nominalSensor_;
+    QElapsedTimer motionCommand_;  // since the last motion the window asked for (status lags)
+    std::shared_ptr<devices::DeviceSpec> spec_;  // the devices the engine runs on (null: the factory's)
 };
 
 }  // namespace nb

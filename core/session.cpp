@@ -2,6 +2,7 @@
 #include "core/run_keys.h"
 #include "core/tr.h"
 
+#include "core/end_reason.h"
 #include "core/run_file.h"
 
 #include <QCoreApplication>
@@ -99,26 +100,40 @@ RunState runStateForEndReason(const QString& r)
 {
     if (r.isEmpty())
         return RunState::Interrupted;
-    if (r == QLatin1String("completed"))
-        return RunState::Complete;
-    if (r == QLatin1String("force_limit"))
-        return RunState::StoppedByLimit;
-    if (r == QLatin1String("fault") || r == QLatin1String("write_error"))  // the disk failed: as a device would
-        return RunState::Fault;
-    if (r == QLatin1String("recovered"))
-        return RunState::Recovered;
-    return RunState::Stopped;  // stopped, aborted, interrupted (by a signal; the file is whole), ...
+    const std::optional<EndReason> reason = endReasonFromFileName(r);
+    if (!reason)
+        return RunState::Stopped;  // a newer program's reason: at least not a normal end
+    switch (*reason) {
+    case EndReason::Completed: return RunState::Complete;
+    case EndReason::Stopped: return RunState::Stopped;
+    case EndReason::MotionStopped: return RunState::MotionStopped;
+    case EndReason::EmergencyStop: return RunState::EmergencyStop;
+    case EndReason::ForceLimit: return RunState::StoppedByLimit;
+    case EndReason::Puncture: return RunState::Puncture;
+    case EndReason::Fault: return RunState::Fault;
+    case EndReason::WriteError: return RunState::WriteError;
+    case EndReason::Interrupted: return RunState::Interrupted;
+    case EndReason::Aborted: return RunState::Aborted;
+    case EndReason::Recovered: return RunState::Recovered;
+    }
+    return RunState::Stopped;
 }
 
 QString runStateName(RunState state)
 {
+    // The same words as the footer's reason everywhere else (core/end_reason.h).
     switch (state) {
-    case RunState::Interrupted: return nb::TrCore::tr("interrupted");
-    case RunState::Complete: return nb::TrCore::tr("complete");
-    case RunState::Stopped: return nb::TrCore::tr("stopped");
-    case RunState::StoppedByLimit: return nb::TrCore::tr("stopped by force limit");
-    case RunState::Fault: return nb::TrCore::tr("fault");
-    case RunState::Recovered: return nb::TrCore::tr("recovered");
+    case RunState::Interrupted: return displayName(EndReason::Interrupted);
+    case RunState::Complete: return displayName(EndReason::Completed);
+    case RunState::Stopped: return displayName(EndReason::Stopped);
+    case RunState::StoppedByLimit: return displayName(EndReason::ForceLimit);
+    case RunState::Fault: return displayName(EndReason::Fault);
+    case RunState::Recovered: return displayName(EndReason::Recovered);
+    case RunState::MotionStopped: return displayName(EndReason::MotionStopped);
+    case RunState::EmergencyStop: return displayName(EndReason::EmergencyStop);
+    case RunState::Puncture: return displayName(EndReason::Puncture);
+    case RunState::WriteError: return displayName(EndReason::WriteError);
+    case RunState::Aborted: return displayName(EndReason::Aborted);
     case RunState::Unreadable: return nb::TrCore::tr("unreadable");
     }
     return {};

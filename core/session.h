@@ -64,6 +64,12 @@ enum class RunState {
     Fault,           // a device fault ended it
     Recovered,       // was interrupted, recovered at a later start
     Unreadable,
+    // The rest of core/end_reason.h's reasons, so the list tells them apart.
+    MotionStopped,   // the stage stopped by itself (limit switch, stall)
+    EmergencyStop,
+    Puncture,        // stopped at a puncture, as the run asked
+    WriteError,
+    Aborted,
 };
 
 struct RunEntry {

@@ -204,4 +204,15 @@ std::vector<ConnectedDevice> listDevices()
     return out;
 }
 
+std::optional<double> suggestedSineCentre_mm(const DeviceSpec& spec)
+{
+    if (spec.stage != QLatin1String("sim"))
+        return std::nullopt;
+    const sim::RigConfig c = rigConfig(spec.simulated);
+    // 10 mm past the surface (half the slab on the platform): the default 10 mm amplitude
+    // then spans from the surface to well inside.
+    const double into_mm = c.setup == sim::Setup::Platform ? c.plateGap_mm + 0.5 * c.thickness_mm : 10.0;
+    return c.surface_mm + into_mm;
+}
+
 }  // namespace nb::devices

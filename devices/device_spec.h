@@ -53,6 +53,10 @@ DeviceSet openDevicesOrSimulated(const DeviceSpec& spec, QString* problem);
 // What the simulated rig offers, for choosers: preset names and tip names.
 QStringList simulatedTissues();
 QStringList tipNames();
+// Where a sine run should oscillate about so that it works in tissue with the default
+// amplitude: inside the simulated rig's tissue; nullopt for a real stage (the operator knows).
+std::optional<double> suggestedSineCentre_mm(const DeviceSpec& spec);
+
 // Empty when the simulated rig's settings are valid, else what is wrong (for the user).
 QString checkSimulatedRig(const SimulatedRigSpec& spec);
 

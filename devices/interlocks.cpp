@@ -141,4 +141,6 @@ Permission permission(Control control, const InterlockState& s)
     return allow();
 }
 
+bool escapeStops(const InterlockState& s) { return s.moving || s.recording; }
+
 }  // namespace nb

@@ -54,4 +54,8 @@ enum class Control {
 
 Permission permission(Control control, const InterlockState& state);
 
+// Whether Esc is the emergency stop now (and taken from whatever has the focus): while the
+// stage moves or a run records. At rest Esc keeps its usual meaning (closes a dialog or menu).
+bool escapeStops(const InterlockState& state);
+
 }  // namespace nb

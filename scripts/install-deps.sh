@@ -12,6 +12,7 @@ packages=(
   umockdev libumockdev-dev
   ffmpeg xvfb xauth fonts-dejavu-core
   octave python3-h5py python3-pandas libxml2-utils poppler-utils
+  xdotool imagemagick
 )
 
 missing=()

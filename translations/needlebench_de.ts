@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+35"/>
+        <location filename="../widgets/control_panel.cpp" line="+36"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -273,38 +273,22 @@
         <translation>Hält die Achse sofort an und beendet den Lauf (immer verfügbar; Taste: Esc)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>1. Prepare</source>
         <translation>1. Vorbereiten</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+241"/>
-        <source>Enable stage</source>
-        <translation>Achse einschalten</translation>
-    </message>
-    <message>
-        <location line="-241"/>
         <source>Powers the stage drive</source>
         <translation>Schaltet den Antrieb der Achse ein</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Bias force sensor</source>
-        <translation>Kraftsensor tarieren</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Takes the present force as zero (needle free of tissue)</source>
         <translation>Nimmt die aktuelle Kraft als Null (Nadel frei vom Gewebe)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Zero position</source>
-        <translation>Position nullen</translation>
-    </message>
-    <message>
-        <location line="+0"/>
         <source>Makes the present stage position 0 mm</source>
         <translation>Setzt die aktuelle Achsposition auf 0 mm</translation>
     </message>
@@ -341,11 +325,13 @@
     <message>
         <location line="+1"/>
         <location line="+6"/>
+        <location line="+12"/>
+        <location line="+315"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-332"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -360,7 +346,7 @@
         <translation> Hz</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>Amplitude</source>
         <translation>Amplitude</translation>
     </message>
@@ -375,14 +361,40 @@
         <translation>Zyklen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+22"/>
         <source>3. Run</source>
         <translation>3. Lauf</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Start insertion (moves + records)</source>
-        <translation>Einstich starten (bewegt + zeichnet auf)</translation>
+        <location line="-76"/>
+        <location line="+286"/>
+        <source>&amp;Enable stage</source>
+        <translation>Achse &amp;einschalten</translation>
+    </message>
+    <message>
+        <location line="-283"/>
+        <source>&amp;Bias force sensor</source>
+        <translation>Kraftsensor &amp;tarieren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Zero position</source>
+        <translation>Position &amp;nullen</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>The sine oscillates about this depth; the needle moves there first (not recorded)</source>
+        <translation>Der Sinus schwingt um diese Tiefe; die Nadel fährt zuerst dorthin (nicht aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Centre depth</source>
+        <translation>Mittentiefe</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Start &amp;insertion (moves + records)</source>
+        <translation>E&amp;instich starten (bewegt + zeichnet auf)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -390,7 +402,7 @@
         <translation>Beginnt die Aufzeichnung einer neuen Laufdatei und fährt dann die Nadel ein</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Withdraw</source>
         <translation>Zurückziehen</translation>
     </message>
@@ -426,16 +438,33 @@
     </message>
     <message>
         <location line="+1"/>
+        <location line="+11"/>
         <source> N</source>
         <translation> N</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-10"/>
         <source>The stage stops at once when the force reaches this (0 = no limit: runs refused)</source>
         <translation>Die Achse hält sofort an, wenn die Kraft diesen Wert erreicht (0 = keine Grenze: Läufe werden verweigert)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
+        <source>Withdrawal</source>
+        <translation>Rückzug</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>|F| that stops the needle coming out (never below the maximum force, so a limit stop never traps the needle)</source>
+        <translation>|F|, bei dem das Zurückziehen stoppt (nie unter der maximalen Kraft, damit ein Grenzstopp die Nadel nie festhält)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+268"/>
+        <source>Withdraw to start</source>
+        <translation>Zurück zum Start</translation>
+    </message>
+    <message>
+        <location line="-258"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
@@ -510,9 +539,14 @@
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+94"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
         <translation>Der Sinus würde %1 mm erreichen, jenseits des Verfahrwegs der Achse.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The sine would go above 0 mm: make the centre at least the amplitude.</source>
+        <translation>Der Sinus würde über 0 mm hinausfahren: Die Mitte muss mindestens so groß wie die Amplitude sein.</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -520,12 +554,14 @@
         <translation>Die Tiefe (%1 mm) liegt nicht tiefer als die Nadel jetzt (%2 mm).</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
+        <location line="+103"/>
+        <location line="+9"/>
         <source>Not now: %1</source>
         <translation>Jetzt nicht: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-105"/>
         <source>Disable stage</source>
         <translation>Achse ausschalten</translation>
     </message>
@@ -601,11 +637,12 @@
     </message>
     <message>
         <location line="+1"/>
+        <location line="+43"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-42"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -621,7 +658,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -629,6 +666,61 @@
         <location line="+0"/>
         <source>force limit tripped</source>
         <translation>Kraftgrenze ausgelöst</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&lt;b&gt;EMERGENCY STOP — latched.&lt;/b&gt;&lt;br&gt;The stage is disabled. Check the rig, then reset: this enables the stage again.</source>
+        <translation>&lt;b&gt;NOT-HALT — verriegelt.&lt;/b&gt;&lt;br&gt;Die Achse ist ausgeschaltet. Versuchsstand prüfen, dann zurücksetzen: Das schaltet die Achse wieder ein.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reset emergency stop (enable stage)</source>
+        <translation>Not-Halt zurücksetzen (Achse einschalten)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Jog (never recorded)</source>
+        <translation>Tippbetrieb (nie aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Step of one jog</source>
+        <translation>Weg eines Tippschritts</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>▲ Out</source>
+        <translation>▲ Heraus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>▼ In</source>
+        <translation>▼ Hinein</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Go to position</source>
+        <translation>Position anfahren</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Moves the needle without recording</source>
+        <translation>Bewegt die Nadel ohne Aufzeichnung</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Withdraw to start (%1 mm)</source>
+        <translation>Zurück zum Start (%1 mm)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Moves the needle out to where the last run began (not recorded)</source>
+        <translation>Zieht die Nadel bis dorthin zurück, wo der letzte Lauf begann (nicht aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The needle is not deeper than where the last run began.</source>
+        <translation>Die Nadel steht nicht tiefer als am Beginn des letzten Laufs.</translation>
     </message>
 </context>
 <context>
@@ -1001,7 +1093,7 @@
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+59"/>
+        <location filename="../app/main_window.cpp" line="+60"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1036,7 +1128,7 @@
         <translation>Die eingestellten Geräte konnten nicht geöffnet werden (%1); der simulierte Prüfstand wird verwendet.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>withdraw</source>
         <translation>Zurückziehen</translation>
     </message>
@@ -1046,17 +1138,84 @@
         <translation>Stopp</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../app/main_window_safety.cpp" line="+47"/>
+        <source>Emergency stop reset: the stage is enabled again.</source>
+        <translation>Not-Halt zurückgesetzt: Die Achse ist wieder eingeschaltet.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Withdrawing to the start position, %1 mm (not recorded)</source>
+        <translation>Zurückziehen zur Startposition, %1 mm (nicht aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+47"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Emergency stop</source>
-        <translation>Not-Halt</translation>
+        <source>Emergency stop: the stage is disabled until you reset it in the control panel.</source>
+        <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+11"/>
+        <location line="+31"/>
+        <location line="+19"/>
+        <source>Not now: %1</source>
+        <translation>Jetzt nicht: %1</translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>Do it anyway only if you are sure the needle is free and at rest.</source>
+        <translation>Nur dann trotzdem, wenn Sie sicher sind, dass die Nadel frei ist und ruht.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Bias force sensor</source>
+        <translation>Kraftsensor tarieren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Bias &amp;anyway</source>
+        <translation>&amp;Trotzdem tarieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bias taken under load on purpose: %1</source>
+        <translation>Bewusst unter Last tariert: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bias not taken: %1</source>
+        <translation>Nicht tariert: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Zero position</source>
+        <translation>Position nullen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Zero &amp;anyway</source>
+        <translation>&amp;Trotzdem nullen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Position zeroed in tissue on purpose: %1</source>
+        <translation>Position bewusst im Gewebe genullt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Position not zeroed: %1</source>
+        <translation>Position nicht genullt: %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Simulated rig: %1, seed %2, %3 Hz</source>
+        <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="+76"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1081,17 +1240,12 @@
         <translation>Kraftgrenze</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>Devices not changed: end the run first.</source>
-        <translation>Geräte nicht gewechselt: beenden Sie zuerst den Lauf.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+24"/>
         <source>Devices not changed: close the calibration wizard first.</source>
         <translation>Geräte nicht gewechselt: schließen Sie zuerst den Kalibrierassistenten.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Could not open the chosen devices (%1); using the simulated rig.</source>
         <translation>Die gewählten Geräte ließen sich nicht öffnen (%1); der simulierte Prüfstand wird verwendet.</translation>
     </message>
@@ -1131,6 +1285,11 @@
         <translation>Geräte &amp;wählen…</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>&amp;Simulated rig…</source>
+        <translation>&amp;Simulierter Versuchsstand…</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>&amp;Calibration</source>
         <translation>&amp;Kalibrierung</translation>
@@ -1161,7 +1320,7 @@
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -1206,7 +1365,7 @@
         <translation>Neue Sitzung</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <source>Session details</source>
         <translation>Sitzungsdetails</translation>
     </message>
@@ -1216,12 +1375,12 @@
         <translation>Sitzungsdetails gespeichert; die nächsten Läufe tragen sie.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Open session folder</source>
         <translation>Sitzungsordner öffnen</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+34"/>
         <source>Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)</source>
         <translation>Kalibrierung %1 in der Sitzung gespeichert und für alle folgenden Läufe verwendet (d = %2 mV/g, r² = %3)</translation>
     </message>
@@ -1231,7 +1390,7 @@
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+57"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
@@ -1241,7 +1400,14 @@
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="+52"/>
+        <source>%1
+Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
+        <translation>%1
+Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
+    </message>
+    <message>
+        <location line="-84"/>
         <location line="+60"/>
         <location line="+2"/>
         <source>contact</source>
@@ -1255,17 +1421,12 @@
         <translation>Durchstich</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>A run is recording. Stop the stage, end the run (saved as stopped) and quit?</source>
-        <translation>Ein Lauf wird aufgezeichnet. Achse anhalten, Lauf beenden (als abgebrochen gespeichert) und das Programm beenden?</translation>
-    </message>
-    <message>
-        <location line="-294"/>
+        <location line="-312"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1589,7 +1750,7 @@
         <translation>Aufzeichnung läuft</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>#</source>
         <translation>Nr.</translation>
     </message>
@@ -1734,6 +1895,49 @@
         <location line="+1"/>
         <source>none saved in this session (the sensor&apos;s nominal one is used)</source>
         <translation>keine in dieser Sitzung gespeichert (die Nennkalibrierung des Sensors wird verwendet)</translation>
+    </message>
+</context>
+<context>
+    <name>nb::SimulatedRigDialog</name>
+    <message>
+        <location filename="../widgets/simulated_rig_dialog.cpp" line="+17"/>
+        <source>Simulated rig</source>
+        <translation>Simulierter Versuchsstand</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the preset&apos;s usual tip</source>
+        <translation>die übliche Spitze der Vorlage</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Tissue preset</source>
+        <translation>Gewebevorlage</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Needle tip</source>
+        <translation>Nadelspitze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Random seed</source>
+        <translation>Zufalls-Startwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sample rate</source>
+        <translation>Abtastrate</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The rig is rebuilt when you press OK; each run&apos;s file records these settings.</source>
+        <translation>Der Versuchsstand wird mit OK neu aufgebaut; jede Laufdatei hält diese Einstellungen fest.</translation>
     </message>
 </context>
 <context>
@@ -3788,7 +3992,7 @@ Befehle:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+159"/>
+        <location filename="../core/session.cpp" line="+174"/>
         <source>no header row</source>
         <translation>keine Kopfzeile</translation>
     </message>
@@ -3819,7 +4023,7 @@ Befehle:
         <translation>Schreiben nach %1 Zeilen fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-116"/>
+        <location filename="../core/session.cpp" line="-130"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation>ungültiges JSON bei Byte %1: %2</translation>
     </message>
@@ -3870,7 +4074,6 @@ Befehle:
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../core/session.cpp" line="+71"/>
         <source>interrupted</source>
         <translation>unterbrochen</translation>
     </message>
@@ -3880,27 +4083,7 @@ Befehle:
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+1"/>
-        <source>complete</source>
-        <translation>vollständig</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>stopped</source>
-        <translation>abgebrochen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>stopped by force limit</source>
-        <translation>durch Kraftgrenze gestoppt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fault</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <location line="+78"/>
+        <location filename="../core/session.cpp" line="+167"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation>Ordner kann nicht angelegt werden</translation>
@@ -3917,12 +4100,11 @@ Befehle:
     </message>
     <message>
         <location filename="../core/end_reason.cpp" line="+1"/>
-        <location filename="../core/session.cpp" line="-97"/>
         <source>recovered</source>
         <translation>wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+1"/>
+        <location filename="../core/session.cpp" line="-96"/>
         <source>unreadable</source>
         <translation>unlesbar</translation>
     </message>

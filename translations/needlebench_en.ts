@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+35"/>
+        <location filename="../widgets/control_panel.cpp" line="+36"/>
         <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -272,38 +272,22 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>1. Prepare</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+241"/>
-        <source>Enable stage</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-241"/>
         <source>Powers the stage drive</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Bias force sensor</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Takes the present force as zero (needle free of tissue)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Zero position</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
         <source>Makes the present stage position 0 mm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -340,11 +324,13 @@
     <message>
         <location line="+1"/>
         <location line="+6"/>
+        <location line="+12"/>
+        <location line="+315"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-332"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -359,7 +345,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>Amplitude</source>
         <translation type="unfinished"></translation>
     </message>
@@ -374,13 +360,39 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+22"/>
         <source>3. Run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Start insertion (moves + records)</source>
+        <location line="-76"/>
+        <location line="+286"/>
+        <source>&amp;Enable stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-283"/>
+        <source>&amp;Bias force sensor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Zero position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>The sine oscillates about this depth; the needle moves there first (not recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Centre depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Start &amp;insertion (moves + records)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -389,7 +401,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Withdraw</source>
         <translation type="unfinished"></translation>
     </message>
@@ -425,16 +437,33 @@
     </message>
     <message>
         <location line="+1"/>
+        <location line="+11"/>
         <source> N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-10"/>
         <source>The stage stops at once when the force reaches this (0 = no limit: runs refused)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
+        <source>Withdrawal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>|F| that stops the needle coming out (never below the maximum force, so a limit stop never traps the needle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+268"/>
+        <source>Withdraw to start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-258"/>
         <source>Status</source>
         <translation type="unfinished"></translation>
     </message>
@@ -509,8 +538,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+94"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The sine would go above 0 mm: make the centre at least the amplitude.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -519,12 +553,14 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
+        <location line="+103"/>
+        <location line="+9"/>
         <source>Not now: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-105"/>
         <source>Disable stage</source>
         <translation type="unfinished"></translation>
     </message>
@@ -600,11 +636,12 @@
     </message>
     <message>
         <location line="+1"/>
+        <location line="+43"/>
         <source>%1 mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-42"/>
         <source>%1 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -620,13 +657,68 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>none</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+0"/>
         <source>force limit tripped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&lt;b&gt;EMERGENCY STOP — latched.&lt;/b&gt;&lt;br&gt;The stage is disabled. Check the rig, then reset: this enables the stage again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reset emergency stop (enable stage)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Jog (never recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Step of one jog</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>▲ Out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>▼ In</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Go to position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Moves the needle without recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Withdraw to start (%1 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Moves the needle out to where the last run began (not recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The needle is not deeper than where the last run began.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1000,7 +1092,7 @@
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+59"/>
+        <location filename="../app/main_window.cpp" line="+60"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1035,7 +1127,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>withdraw</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1045,17 +1137,84 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../app/main_window_safety.cpp" line="+47"/>
+        <source>Emergency stop reset: the stage is enabled again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Withdrawing to the start position, %1 mm (not recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+47"/>
         <source>E-STOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Emergency stop</source>
+        <source>Emergency stop: the stage is disabled until you reset it in the control panel.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+11"/>
+        <location line="+31"/>
+        <location line="+19"/>
+        <source>Not now: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>Do it anyway only if you are sure the needle is free and at rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Bias force sensor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Bias &amp;anyway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bias taken under load on purpose: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bias not taken: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Zero position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Zero &amp;anyway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Position zeroed in tissue on purpose: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Position not zeroed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Simulated rig: %1, seed %2, %3 Hz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="+76"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1080,17 +1239,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>Devices not changed: end the run first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+24"/>
         <source>Devices not changed: close the calibration wizard first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Could not open the chosen devices (%1); using the simulated rig.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1130,6 +1284,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>&amp;Simulated rig…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>&amp;Calibration</source>
         <translation type="unfinished"></translation>
@@ -1160,7 +1319,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1204,7 +1363,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <source>Session details</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1214,12 +1373,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Open session folder</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+34"/>
         <source>Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1229,7 +1388,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+57"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1239,7 +1398,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="+52"/>
+        <source>%1
+Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-84"/>
         <location line="+60"/>
         <location line="+2"/>
         <source>contact</source>
@@ -1253,17 +1418,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>A run is recording. Stop the stage, end the run (saved as stopped) and quit?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-294"/>
+        <location line="-312"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1587,7 +1747,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>#</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1731,6 +1891,49 @@
     <message>
         <location line="+1"/>
         <source>none saved in this session (the sensor&apos;s nominal one is used)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::SimulatedRigDialog</name>
+    <message>
+        <location filename="../widgets/simulated_rig_dialog.cpp" line="+17"/>
+        <source>Simulated rig</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the preset&apos;s usual tip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source> Hz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Tissue preset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Needle tip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Random seed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sample rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The rig is rebuilt when you press OK; each run&apos;s file records these settings.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3722,7 +3925,7 @@ Commands:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+159"/>
+        <location filename="../core/session.cpp" line="+174"/>
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3753,7 +3956,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-116"/>
+        <location filename="../core/session.cpp" line="-130"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3804,7 +4007,6 @@ Commands:
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../core/session.cpp" line="+71"/>
         <source>interrupted</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3814,27 +4016,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+1"/>
-        <source>complete</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>stopped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>stopped by force limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fault</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+78"/>
+        <location filename="../core/session.cpp" line="+167"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>
@@ -3851,12 +4033,11 @@ Commands:
     </message>
     <message>
         <location filename="../core/end_reason.cpp" line="+1"/>
-        <location filename="../core/session.cpp" line="-97"/>
         <source>recovered</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+1"/>
+        <location filename="../core/session.cpp" line="-96"/>
         <source>unreadable</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1,6 +1,7 @@
 #include "control_panel.h"
 
 #include <QButtonGroup>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
@@ -52,16 +53,17 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     estop->setStyleSheet(QStringLiteral("QPushButton { background: #c62828; color: white; font-weight: bold; }"));
     layout->addWidget(estop);
     connect(estop, &QPushButton::clicked, this, &ControlPanel::emergencyStopRequested);
+    layout->addWidget(buildLatchBanner());
 
     auto* prep = new QGroupBox(tr("1. Prepare"), this);
     auto* prepLayout = new QVBoxLayout(prep);
-    auto* enable = addButton(Control::Enable, tr("Enable stage"), tr("Powers the stage drive"));
+    auto* enable = addButton(Control::Enable, tr("&Enable stage"), tr("Powers the stage drive"));
     enable->setCheckable(true);
     connect(enable, &QPushButton::clicked, this, [this, enable] { emit enableRequested(enable->isChecked()); });
-    auto* bias = addButton(Control::Bias, tr("Bias force sensor"),
+    auto* bias = addButton(Control::Bias, tr("&Bias force sensor"),
                            tr("Takes the present force as zero (needle free of tissue)"));
     connect(bias, &QPushButton::clicked, this, &ControlPanel::biasRequested);
-    auto* zero = addButton(Control::Zero, tr("Zero position"), tr("Makes the present stage position 0 mm"));
+    auto* zero = addButton(Control::Zero, tr("&Zero position"), tr("Makes the present stage position 0 mm"));
     connect(zero, &QPushButton::clicked, this, &ControlPanel::zeroRequested);
     auto* calibrate = addButton(Control::Calibrate, tr("Calibrate sensor…"),
                                 tr("Known masses on the load cell, fit V = d·m + c"));
@@ -103,28 +105,46 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     cycles_->setObjectName(QStringLiteral("cycles"));
     linear_->setObjectName(QStringLiteral("linear"));
     sine_->setObjectName(QStringLiteral("sine"));
+    centre_ = spin(sinePage, 0.0, 150.0, 15.0, 1, tr(" mm"));
+    centre_->setObjectName(QStringLiteral("centre"));
+    centre_->setToolTip(tr("The sine oscillates about this depth; the needle moves there first (not recorded)"));
+    sineForm->addRow(tr("Centre depth"), centre_);
     sineForm->addRow(tr("Amplitude"), amplitude_);
     sineForm->addRow(tr("Frequency"), frequency_);
     sineForm->addRow(tr("Cycles"), cycles_);
     motionPages_->addWidget(linearPage);
     motionPages_->addWidget(sinePage);
     motionLayout->addWidget(motionPages_);
-    connect(sine_, &QRadioButton::toggled, this, [this](bool on) {
+    // The stack is as tall as the page shown, not as its tallest page (room for the status).
+    const auto sizeToPage = [this] {
+        for (int i = 0; i < motionPages_->count(); ++i)
+            motionPages_->widget(i)->setSizePolicy(QSizePolicy::Preferred,
+                                                   i == motionPages_->currentIndex() ? QSizePolicy::Preferred : QSizePolicy::Ignored);
+        motionPages_->adjustSize();
+    };
+    sizeToPage();
+    connect(sine_, &QRadioButton::toggled, this, [this, sizeToPage](bool on) {
         motionPages_->setCurrentIndex(on ? 1 : 0);
+        sizeToPage();
         updateControls();
     });
-    for (QDoubleSpinBox* s : {velocity_, depth_, amplitude_, frequency_})
+    for (QDoubleSpinBox* s : {velocity_, depth_, amplitude_, frequency_, centre_})
         connect(s, &QDoubleSpinBox::valueChanged, this, &ControlPanel::updateControls);
     connect(cycles_, &QSpinBox::valueChanged, this, &ControlPanel::updateControls);
     layout->addWidget(motionBox_);
 
     auto* runBox = new QGroupBox(tr("3. Run"), this);
     auto* runLayout = new QGridLayout(runBox);
-    auto* start = addButton(Control::StartInsertion, tr("Start insertion (moves + records)"),
+    auto* start = addButton(Control::StartInsertion, tr("Start &insertion (moves + records)"),
                             tr("Starts recording a new run file, then moves the needle in"));
     start->setStyleSheet(QStringLiteral("QPushButton:enabled { font-weight: bold; }"));
     start->setIcon(QIcon(QStringLiteral(":/icons/record.svg")));
-    connect(start, &QPushButton::clicked, this, &ControlPanel::startRequested);
+    connect(start, &QPushButton::clicked, this, [this, estop] {
+        // Start disables itself; the focus must not fall into a parameter field, where digits
+        // typed mid-run would change the run. The emergency stop is the one safe place.
+        estop->setFocus(Qt::OtherFocusReason);
+        emit startRequested();
+    });
     auto* withdraw = addButton(Control::Withdraw, tr("Withdraw"), tr("Moves the needle back to 0 mm"));
     withdraw->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
     connect(withdraw, &QPushButton::clicked, this, [this] { emit withdrawRequested(withdrawVelocity()); });
@@ -137,7 +157,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     end->setIcon(QIcon(QStringLiteral(":/icons/end_run.svg")));
     connect(end, &QPushButton::clicked, this, &ControlPanel::endRunRequested);
     runLayout->addWidget(start, 0, 0, 1, 2);
-    runLayout->addWidget(withdraw, 1, 0, 1, 2);
+    runLayout->addWidget(withdraw, 1, 0);
     runLayout->addWidget(stop, 2, 0);
     runLayout->addWidget(end, 2, 1);
     auto* limitRow = new QHBoxLayout;
@@ -151,7 +171,22 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
         updateControls();
     });
     limitRow->addWidget(limit_, 1);
+    // Both limits on one row: the status below must stay in sight at 1366x768.
+    limitRow->addWidget(new QLabel(tr("Withdrawal"), runBox));
+    withdrawLimit_ = spin(runBox, 0.1, 20.0, 9.5, 2, tr(" N"));
+    withdrawLimit_->setObjectName(QStringLiteral("withdrawForceLimit"));
+    withdrawLimit_->setToolTip(tr("|F| that stops the needle coming out (never below the maximum force, so a limit stop never traps the needle)"));
+    connect(withdrawLimit_, &QDoubleSpinBox::valueChanged, this, &ControlPanel::withdrawForceLimitChanged);
+    limitRow->addWidget(withdrawLimit_, 1);
     runLayout->addLayout(limitRow, 3, 0, 1, 2);
+    withdrawToStart_ = new QPushButton(tr("Withdraw to start"), runBox);
+    withdrawToStart_->setObjectName(QStringLiteral("withdrawToStart"));
+    withdrawToStart_->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
+    connect(withdrawToStart_, &QPushButton::clicked, this, [this] {
+        if (status_.lastRunStart_mm)
+            emit withdrawToRequested(withdrawVelocity(), *status_.lastRunStart_mm);
+    });
+    runLayout->addWidget(withdrawToStart_, 1, 1);
     layout->addWidget(runBox);
 
     auto* statusBox = new QGroupBox(tr("Status"), this);
@@ -193,6 +228,8 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     status_labels_[QStringLiteral("fault")]->setWordWrap(true);
     status_labels_[QStringLiteral("recording")]->setWordWrap(true);
     layout->addWidget(statusBox);
+    // Jog is for after a stop: below the status, which must stay in sight.
+    layout->addWidget(buildJogBox());
     layout->addStretch();
 
     state_.forceLimit_N = limit_->value();
@@ -222,11 +259,14 @@ devices::RunPlan ControlPanel::motionPlan() const
     plan.sine.amplitude_mm = amplitude_->value();
     plan.sine.frequency_hz = frequency_->value();
     plan.sine.cycles = cycles_->value();
+    if (sine_->isChecked())
+        plan.startAt_mm = centre_->value();
     plan.metadata.set(QStringLiteral("motion"), motionName());
     if (sine_->isChecked()) {
         plan.metadata.set(QStringLiteral("amplitude_mm"), amplitude_->value());
         plan.metadata.set(QStringLiteral("frequency_hz"), frequency_->value());
         plan.metadata.set(QStringLiteral("cycles"), double(cycles_->value()));
+
     } else {
         plan.metadata.set(QStringLiteral("velocity_mm_s"), velocity_->value());
         plan.metadata.set(QStringLiteral("depth_mm"), depth_->value());
@@ -240,15 +280,21 @@ QString ControlPanel::motionName() const
 }
 
 double ControlPanel::withdrawVelocity() const { return velocity_->value(); }
+double ControlPanel::withdrawForceLimit() const { return withdrawLimit_->value(); }
+void ControlPanel::setWithdrawForceLimit(double newtons) { withdrawLimit_->setValue(newtons); }
+double ControlPanel::sineCentre() const { return centre_->value(); }
+void ControlPanel::setSineCentre(double mm) { centre_->setValue(mm); }
 double ControlPanel::forceLimit() const { return limit_->value(); }
 void ControlPanel::setForceLimit(double newtons) { limit_->setValue(newtons); }
 
 QString ControlPanel::motionProblem() const
 {
     if (sine_->isChecked()) {
-        const double peak = status_.position_mm + amplitude_->value();
+        const double peak = centre_->value() + amplitude_->value();
         if (peak > 150.0)
             return tr("The sine would reach %1 mm, past the stage's travel.").arg(peak, 0, 'f', 1);
+        if (centre_->value() - amplitude_->value() < 0.0)
+            return tr("The sine would go above 0 mm: make the centre at least the amplitude.");
         return {};
     }
     if (depth_->value() <= status_.position_mm + 0.01)
@@ -288,7 +334,8 @@ void ControlPanel::updateControls()
     state_.motionProblem = motionProblem();
     for (auto& [control, b] : buttons_) {
         const Permission p = permission(control, state_);
-        b->setEnabled(p.enabled);
+        // Refused but insistable (bias or zero under load): clickable, the window asks first.
+        b->setEnabled(p.enabled || p.overridable);
         b->setToolTip(p.enabled ? help_[control] : help_[control] + QStringLiteral("\n") + tr("Not now: %1").arg(p.reason));
     }
     const Permission motion = permission(Control::MotionSettings, state_);
@@ -296,7 +343,7 @@ void ControlPanel::updateControls()
     motionBox_->setToolTip(motion.enabled ? QString() : motion.reason);
     auto* enable = buttons_[Control::Enable];
     enable->setChecked(state_.stageEnabled);
-    enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("Enable stage"));
+    enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("&Enable stage"));
     // Whether a withdrawal lands in a file is never left to memory.
     buttons_[Control::Withdraw]->setText(state_.recording ? tr("Withdraw (recorded in this run)")
                                                           : tr("Withdraw (not recorded)"));
@@ -328,8 +375,87 @@ void ControlPanel::updateControls()
                                 : tr("no limit set"),
         state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
     set("calibration", s.calibrationName.isEmpty() ? tr("none") : s.calibrationName, s.calibrationName.isEmpty());
+    updateSafetyControls();
     set("fault", s.fault.isEmpty() ? (s.forceLimitTripped ? tr("force limit tripped") : tr("none")) : s.fault,
         !s.fault.isEmpty() || s.forceLimitTripped);
+}
+
+QWidget* ControlPanel::buildLatchBanner()
+{
+    latchBanner_ = new QWidget(this);
+    latchBanner_->setObjectName(QStringLiteral("latchBanner"));
+    latchBanner_->setAttribute(Qt::WA_StyledBackground);
+    latchBanner_->setStyleSheet(QStringLiteral("#latchBanner { background: #fff3cd; border: 2px solid #c62828; border-radius: 4px; }"));
+    auto* l = new QVBoxLayout(latchBanner_);
+    auto* text = new QLabel(tr("<b>EMERGENCY STOP — latched.</b><br>The stage is disabled. Check the rig, then reset: "
+                               "this enables the stage again."),
+                            latchBanner_);
+    text->setWordWrap(true);
+    text->setObjectName(QStringLiteral("latchText"));
+    auto* reset = new QPushButton(tr("Reset emergency stop (enable stage)"), latchBanner_);
+    reset->setObjectName(QStringLiteral("resetEmergencyStop"));
+    connect(reset, &QPushButton::clicked, this, &ControlPanel::resetEmergencyStopRequested);
+    l->addWidget(text);
+    l->addWidget(reset);
+    latchBanner_->setVisible(false);
+    return latchBanner_;
+}
+
+QWidget* ControlPanel::buildJogBox()
+{
+    auto* box = new QGroupBox(tr("Jog (never recorded)"), this);
+    jogBox_ = box;
+    auto* grid = new QGridLayout(box);
+    // Three steps an operator needs: fine, normal, coarse.
+    jogStep_ = new QComboBox(box);
+    jogStep_->setObjectName(QStringLiteral("jogStep"));
+    for (double mm : {0.1, 1.0, 5.0})
+        jogStep_->addItem(tr("%1 mm").arg(mm, 0, 'g', 2), mm);
+    jogStep_->setCurrentIndex(1);
+    jogStep_->setToolTip(tr("Step of one jog"));
+    const auto step = [this] { return jogStep_->currentData().toDouble(); };
+    jogOut_ = new QPushButton(tr("▲ Out"), box);
+    jogOut_->setObjectName(QStringLiteral("jogOut"));
+    jogIn_ = new QPushButton(tr("▼ In"), box);
+    jogIn_->setObjectName(QStringLiteral("jogIn"));
+    connect(jogOut_, &QPushButton::clicked, this, [this, step] { emit jogRequested(-step(), withdrawVelocity()); });
+    connect(jogIn_, &QPushButton::clicked, this, [this, step] { emit jogRequested(step(), withdrawVelocity()); });
+    goToPosition_ = spin(box, 0.0, 150.0, 0.0, 2, tr(" mm"));
+    goToPosition_->setObjectName(QStringLiteral("goToPosition"));
+    goTo_ = new QPushButton(tr("Go to position"), box);
+    goTo_->setObjectName(QStringLiteral("goTo"));
+    connect(goTo_, &QPushButton::clicked, this, [this] { emit moveToRequested(goToPosition_->value(), withdrawVelocity()); });
+    grid->addWidget(jogStep_, 0, 0);
+    grid->addWidget(jogOut_, 0, 1);
+    grid->addWidget(jogIn_, 0, 2);
+    grid->addWidget(goToPosition_, 1, 0);
+    grid->addWidget(goTo_, 1, 1, 1, 2);
+    return box;
+}
+
+void ControlPanel::updateSafetyControls()
+{
+    latchBanner_->setVisible(state_.latched);
+    const Permission jog = permission(Control::Jog, state_);
+    for (QPushButton* b : {jogOut_, jogIn_, goTo_}) {
+        b->setEnabled(jog.enabled);
+        b->setToolTip(jog.enabled ? tr("Moves the needle without recording") : tr("Not now: %1").arg(jog.reason));
+    }
+    // Out to the last run's start: offered when the needle is deeper than that.
+    const Permission out = permission(Control::Withdraw, state_);
+    const bool deeper = status_.lastRunStart_mm && status_.position_mm > *status_.lastRunStart_mm + 0.05;
+    withdrawToStart_->setEnabled(out.enabled && deeper);
+    withdrawToStart_->setText(status_.lastRunStart_mm
+                                  ? tr("Withdraw to start (%1 mm)").arg(*status_.lastRunStart_mm, 0, 'f', 1)
+                                  : tr("Withdraw to start"));
+    withdrawToStart_->setToolTip(!out.enabled ? tr("Not now: %1").arg(out.reason)
+                                 : deeper     ? tr("Moves the needle out to where the last run began (not recorded)")
+                                              : tr("The needle is not deeper than where the last run began."));
+    // The limits of a run are fixed while it records (and Start never leaves the focus there).
+    limit_->setEnabled(!state_.recording);
+    withdrawLimit_->setEnabled(!state_.recording);
+    jogStep_->setEnabled(!state_.recording);
+    goToPosition_->setEnabled(!state_.recording);
 }
 
 }  // namespace nb

@@ -13,6 +13,7 @@
 
 class QAbstractButton;
 class QButtonGroup;
+class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
@@ -34,6 +35,11 @@ public:
     double withdrawVelocity() const;
     double forceLimit() const;
     void setForceLimit(double newtons);
+    double withdrawForceLimit() const;
+    void setWithdrawForceLimit(double newtons);
+    // The sine's centre depth (where the run moves first, unrecorded).
+    double sineCentre() const;
+    void setSineCentre(double mm);
 
     void setStatus(const devices::EngineStatus& status);
     void setSessionOpen(bool open);
@@ -54,11 +60,22 @@ signals:
     void forceLimitChanged(double newtons);
     void emergencyStopRequested();
     void calibrateRequested();
+    void withdrawForceLimitChanged(double newtons);
+    // Out to where the last run began (after a force-limit or emergency stop).
+    void withdrawToRequested(double velocity_mm_s, double target_mm);
+    // Unrecorded moves: a step (negative = out) or to a position.
+    void jogRequested(double delta_mm, double velocity_mm_s);
+    void moveToRequested(double position_mm, double velocity_mm_s);
+    // The emergency stop latch's reset: enables the stage again on purpose.
+    void resetEmergencyStopRequested();
 
 private:
     void updateControls();
     QString motionProblem() const;
     QPushButton* addButton(Control control, const QString& text, const QString& help);
+    QWidget* buildLatchBanner();
+    QWidget* buildJogBox();
+    void updateSafetyControls();
 
     InterlockState state_;
     devices::EngineStatus status_;
@@ -74,6 +91,16 @@ private:
     QDoubleSpinBox* frequency_ = nullptr;
     QSpinBox* cycles_ = nullptr;
     QDoubleSpinBox* limit_ = nullptr;
+    QDoubleSpinBox* withdrawLimit_ = nullptr;
+    QDoubleSpinBox* centre_ = nullptr;
+    QWidget* latchBanner_ = nullptr;
+    QPushButton* withdrawToStart_ = nullptr;
+    QPushButton* jogOut_ = nullptr;
+    QPushButton* jogIn_ = nullptr;
+    QPushButton* goTo_ = nullptr;
+    QComboBox* jogStep_ = nullptr;
+    QDoubleSpinBox* goToPosition_ = nullptr;
+    QWidget* jogBox_ = nullptr;
     std::map<QString, QLabel*> status_labels_;
     QString calibrationName_;
 };

@@ -47,13 +47,18 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const
         if (!busy_.isEmpty() && r.path == busy_)
             return QBrush(QColor(20, 90, 180));
         switch (r.state) {
-        case RunState::Complete: return QBrush(QColor(30, 120, 40));
+        case RunState::Complete:
+        case RunState::Puncture: return QBrush(QColor(30, 120, 40));
+        case RunState::EmergencyStop:
+        case RunState::WriteError:
         case RunState::StoppedByLimit:
         case RunState::Fault:
         case RunState::Unreadable: return QBrush(QColor(190, 30, 30));
         case RunState::Interrupted:
         case RunState::Recovered:
-        case RunState::Stopped: return QBrush(QColor(180, 110, 0));
+        case RunState::Stopped:
+        case RunState::MotionStopped:
+        case RunState::Aborted: return QBrush(QColor(180, 110, 0));
         }
     } else if (role == Qt::UserRole) {
         return r.path;

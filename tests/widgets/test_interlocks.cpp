@@ -16,6 +16,24 @@ using nb::permission;
 class TestInterlocks : public QObject {
     Q_OBJECT
 private slots:
+    void escapeStopsOnlyWhileBusy()
+    {
+        InterlockState s;
+        s.devicesRunning = true;
+        QVERIFY(!escapeStops(s));  // at rest Esc closes dialogs
+        s.moving = true;
+        QVERIFY(escapeStops(s));
+        s.moving = false;
+        s.recording = true;        // stopped but still recording: Esc still ends it as a stop
+        QVERIFY(escapeStops(s));
+        // While busy, every mode switch is refused with a reason.
+        for (Control c : {Control::ChangeSetup, Control::Calibrate, Control::Quit}) {
+            const nb::Permission p = permission(c, s);
+            QVERIFY(!p.enabled);
+            QVERIFY(!p.reason.isEmpty());
+        }
+    }
+
     void sequenceOfThePanel()
     {
         InterlockState s;

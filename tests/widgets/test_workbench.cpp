@@ -136,7 +136,7 @@ private slots:
 
         nb::RunListModel* model = w.sessionView()->model();
         QCOMPARE(model->rowCount(), 1);
-        QCOMPARE(model->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("complete"));
+        QCOMPARE(model->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("completed"));
         // The next run gets the next name.
         QCOMPARE(QFileInfo(w.session()->nextRunPath(QStringLiteral("linear"))).fileName(), QStringLiteral("run_002_linear.csv"));
     }
@@ -192,7 +192,7 @@ private slots:
         QTest::mouseClick(p->button(Control::EndRun), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
         QCOMPARE(w.lastEndReason(), QStringLiteral("stopped"));
-        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("stopped"));
+        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("ended by operator"));
     }
 
     void forceLimitStopsTheRunAndSaysSo()
@@ -212,7 +212,7 @@ private slots:
         const double deepest = *std::max_element(r.run.position_mm.begin(), r.run.position_mm.end());
         QVERIFY(deepest < 30.0);
         QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(),
-                 QStringLiteral("stopped by force limit"));
+                 QStringLiteral("force limit"));
         QVERIFY(w.plots()->eventCount() >= 1);  // the trip is marked on the plots
     }
 
@@ -243,7 +243,7 @@ private slots:
         QVERIFY(!p->button(Control::StartInsertion)->isEnabled());
         QVERIFY(p->button(Control::StartInsertion)->toolTip().contains(QStringLiteral("fault")));
         QVERIFY(p->button(Control::EmergencyStop)->isEnabled());
-        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("fault"));
+        QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("device fault"));
     }
 
     void calibrationWizardOnTheSimulatedSensor()
@@ -449,7 +449,7 @@ private slots:
         nb::devices::AcquisitionEngine* recordingEngine = w.engine();
         QVERIFY(!w.switchDevices(spec));
         QCOMPARE(w.engine(), recordingEngine);
-        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("end the run")));
+        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("A run is recording")));
         w.controlPanel()->button(Control::EmergencyStop)->click();
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
     }

@@ -1,0 +1,483 @@
+// Issue 12's scenarios on the real main window and the simulated rig: Esc stops the stage
+// from inside every dialog the window can open (and closes nothing), mode switches are refused
+// mid-run, a low insertion limit never traps the needle, bias under load needs an explicit
+// override, the emergency stop latches until the operator resets it, and a sine run with the
+// default parameters reaches the tissue.
+#include "main_window.h"
+
+#include "core/run_file.h"
+#include "devices/acquisition_engine.h"
+#include "devices/sim/rig_config.h"
+#include "devices/sim/simulated_rig.h"
+#include "widgets/calibration_wizard.h"
+#include "widgets/control_panel.h"
+#include "widgets/review_workspace.h"
+#include "widgets/session_view.h"
+
+#include <QAbstractButton>
+#include <QAbstractSpinBox>
+#include <QAction>
+#include <QComboBox>
+#include <QApplication>
+#include <QDialog>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <functional>
+
+using nb::Control;
+
+namespace {
+
+nb::WorkbenchOptions options(const QString& sessionDir, bool realtime, std::shared_ptr<nb::devices::sim::SimulatedRig>* rig)
+{
+    nb::WorkbenchOptions o;
+    o.deviceFactory = [realtime, rig] {
+        nb::devices::sim::RigConfig c;
+        c.realtime = realtime;
+        *rig = std::make_shared<nb::devices::sim::SimulatedRig>(c);
+        return nb::devices::sim::simulatedDeviceSet(*rig);
+    };
+    o.realtime = realtime;
+    o.rateHz = 1000.0;
+    o.sessionDir = sessionDir;
+    o.persistSettings = false;
+    o.calibrationDwell_s = 0.2;
+    return o;
+}
+
+// Waits while processing events; false when `ready` did not come true in time. (No QTRY
+// inside a modal dialog's loop: a failed check must not leave the dialog open.)
+bool waitFor(const std::function<bool()>& ready, int ms = 20000)
+{
+    QElapsedTimer t;
+    t.start();
+    while (!ready()) {
+        if (t.elapsed() > ms)
+            return false;
+        QTest::qWait(5);
+    }
+    return true;
+}
+
+void prepare(nb::MainWindow& w)
+{
+    nb::ControlPanel* p = w.controlPanel();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().devicesRunning, 20000);
+    p->button(Control::Enable)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().stageEnabled, 20000);
+    p->button(Control::Bias)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().biased, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::Zero)->isEnabled(), 20000);
+    p->button(Control::Zero)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
+    QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), qPrintable(p->button(Control::StartInsertion)->toolTip()), 20000);
+}
+
+void setLinear(nb::MainWindow& w, double velocity, double depth)
+{
+    w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->setValue(velocity);
+    w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->setValue(depth);
+}
+
+QAction* action(nb::MainWindow& w, const QString& text)
+{
+    for (QAction* a : w.menuBar()->findChildren<QAction*>())
+        if (a->text() == text)
+            return a;
+    return nullptr;
+}
+
+bool busy(const nb::devices::EngineStatus& s) { return s.moving || s.approaching || s.jogging; }
+
+// What one Esc inside a dialog did.
+struct EscResult {
+    QString error;           // empty when every step worked
+    double stopDelay_s = -1; // device time from the key to the first status at rest
+    bool dialogStayedOpen = false;
+    QString dialogClass;
+};
+
+}  // namespace
+
+class TestSafetyScenarios : public QObject {
+    Q_OBJECT
+
+    // Opens a dialog with `open` (it may block in exec or return at once), with the stage
+    // moving (started before when `motionFirst`, else from inside the dialog as a run already
+    // under way would be), presses Esc on whatever has the focus in it, then closes it.
+    EscResult escInDialog(nb::MainWindow& w, bool motionFirst, const std::function<void()>& open,
+                          const std::function<QWidget*()>& dialog)
+    {
+        EscResult r;
+        nb::devices::AcquisitionEngine* engine = w.engine();
+        QAbstractButton* start = w.controlPanel()->button(Control::StartInsertion);
+        if (motionFirst) {
+            start->click();
+            if (!waitFor([&] { return engine->status().moving && engine->status().recording; }))
+                r.error = QStringLiteral("the run did not start");
+        }
+        bool done = false;
+        QTimer::singleShot(0, this, [&] {
+            auto finish = qScopeGuard([&] {
+                done = true;
+                // Closes whatever is open, whatever happened: the test must not hang.
+                for (int i = 0; i < 3; ++i)
+                    if (QWidget* d = dialog(); d && d->isVisible()) {
+                        if (auto* qd = qobject_cast<QDialog*>(d))
+                            qd->reject();
+                        else
+                            d->close();
+                        QTest::qWait(20);
+                    }
+            });
+            if (!r.error.isEmpty())
+                return;
+            if (!waitFor([&] { return dialog() && dialog()->isVisible(); }, 5000)) {
+                r.error = QStringLiteral("the dialog did not open");
+                return;
+            }
+            QWidget* d = dialog();
+            r.dialogClass = QString::fromLatin1(d->metaObject()->className());
+            if (!motionFirst) {
+                start->click();
+                if (!waitFor([&] { return engine->status().moving && engine->status().recording; })) {
+                    r.error = QStringLiteral("the run did not start: ") + start->toolTip();
+                    return;
+                }
+            }
+            QTest::qWait(300);  // well under way
+            double stoppedAt = -1;
+            QMetaObject::Connection c = connect(engine, &nb::devices::AcquisitionEngine::statusChanged, this,
+                                                [&](const nb::devices::EngineStatus& s) {
+                                                    if (stoppedAt < 0 && !busy(s))
+                                                        stoppedAt = s.deviceTime_s;
+                                                });
+            QWidget* target = d->focusWidget() ? d->focusWidget() : d;
+            const double keyAt = engine->status().deviceTime_s;
+            QTest::keyClick(target, Qt::Key_Escape);
+            const bool stopped = waitFor([&] { return stoppedAt >= 0; }, 5000);
+            disconnect(c);
+            if (!stopped) {
+                r.error = QStringLiteral("the stage kept moving after Esc");
+                return;
+            }
+            r.stopDelay_s = stoppedAt - keyAt;
+            r.dialogStayedOpen = dialog() && dialog()->isVisible();
+            // At rest, Esc does its usual job again.
+            if (!waitFor([&] { return !engine->status().recording; }, 5000))
+                r.error = QStringLiteral("the run did not end");
+        });
+        open();
+        waitFor([&] { return done; }, 30000);
+        return r;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("NeedleBenchTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_safety_scenarios"));
+    }
+
+    void escStopsFromEveryDialog_data()
+    {
+        QTest::addColumn<QString>("which");
+        for (const char* name : {"new session", "file chooser", "session details", "devices", "simulated rig",
+                                 "calibration wizard", "label set", "quit confirmation", "menu"})
+            QTest::newRow(name) << QString::fromLatin1(name);
+    }
+
+    void escStopsFromEveryDialog()
+    {
+        QFETCH(QString, which);
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setLinear(w, 5.0, 60.0);
+        prepare(w);
+        const QString sessionDir = w.session()->dir();
+
+        std::function<void()> open;
+        std::function<QWidget*()> dialog = [] { return QApplication::activeModalWidget(); };
+        bool motionFirst = false;  // the mode switches are refused mid-run: opened at rest
+        if (which == QLatin1String("new session"))
+            open = [&] { action(w, QStringLiteral("&New session…"))->trigger(); };
+        else if (which == QLatin1String("file chooser"))
+            open = [&] { action(w, QStringLiteral("&Open session…"))->trigger(); };
+        else if (which == QLatin1String("session details"))
+            open = [&] { action(w, QStringLiteral("Session &details…"))->trigger(); };
+        else if (which == QLatin1String("devices"))
+            open = [&] { action(w, QStringLiteral("&Choose devices…"))->trigger(); };
+        else if (which == QLatin1String("simulated rig"))
+            open = [&] { action(w, QStringLiteral("&Simulated rig…"))->trigger(); };
+        else if (which == QLatin1String("calibration wizard")) {
+            open = [&] { action(w, QStringLiteral("&Calibrate force sensor…"))->trigger(); };
+            dialog = [&] { return static_cast<QWidget*>(w.findChild<nb::CalibrationWizard*>()); };
+        } else if (which == QLatin1String("label set")) {
+            motionFirst = true;  // allowed mid-run: it changes no run
+            open = [&] { w.reviewWorkspace()->editLabelSet(); };
+        } else if (which == QLatin1String("quit confirmation")) {
+            motionFirst = true;
+            open = [&] { w.close(); };
+        } else if (which == QLatin1String("menu")) {
+            motionFirst = true;
+            QMenu* menu = w.menuBar()->actions().at(0)->menu();
+            open = [menu] { menu->popup(QPoint(10, 10)); };
+            dialog = [menu] { return static_cast<QWidget*>(menu); };
+        }
+        const EscResult r = escInDialog(w, motionFirst, open, dialog);
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        qInfo("%s (%s): stopped %.0f ms after Esc (device time)", qPrintable(which), qPrintable(r.dialogClass), r.stopDelay_s * 1000.0);
+        QVERIFY2(r.stopDelay_s >= 0.0 && r.stopDelay_s <= 0.2, qPrintable(QString::number(r.stopDelay_s)));
+        // Esc stopped; it closed nothing the operator was working in.
+        QVERIFY(r.dialogStayedOpen);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 10000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("emergency_stop"));
+        const nb::RunReadResult file = nb::readRunFile(w.lastRunPath());
+        QCOMPARE(file.run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("emergency_stop"));
+        // The list says so too, not just "stopped".
+        QTRY_COMPARE_WITH_TIMEOUT(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("emergency stop"), 5000);
+        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("emergency stop")));
+        QVERIFY(w.isVisible());                   // the quit question was not answered by the stop
+        QCOMPARE(w.session()->dir(), sessionDir);  // nor a session switched
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().latched, 5000);
+    }
+
+    void escAtRestClosesTheDialog()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+        bool closed = false;
+        QTimer::singleShot(0, this, [&] {
+            if (!waitFor([] { return QApplication::activeModalWidget() != nullptr; }, 5000))
+                return;
+            QWidget* d = QApplication::activeModalWidget();
+            QTest::keyClick(d->focusWidget() ? d->focusWidget() : d, Qt::Key_Escape);
+            closed = waitFor([d] { return !d->isVisible(); }, 2000);
+            if (!closed)
+                qobject_cast<QDialog*>(d)->reject();
+        });
+        action(w, QStringLiteral("&New session…"))->trigger();
+        QVERIFY(closed);
+        QVERIFY(!w.engine()->status().latched);  // nothing moved: no emergency stop
+    }
+
+    void modeSwitchesRefusedMidRun()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        setLinear(w, 5.0, 60.0);
+        prepare(w);
+        const QString sessionDir = w.session()->dir();
+        w.controlPanel()->button(Control::StartInsertion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().recording, 20000);
+        // Focus never lands in a parameter field on Start, and the fields are locked.
+        QWidget* focus = QApplication::focusWidget();
+        QVERIFY2(!qobject_cast<QAbstractSpinBox*>(focus), focus ? focus->metaObject()->className() : "none");
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("forceLimit"))->isEnabled(), 5000);
+        for (const char* field : {"depth", "velocity", "withdrawForceLimit", "goToPosition"})
+            QVERIFY2(!w.controlPanel()->findChild<QDoubleSpinBox*>(QString::fromLatin1(field))->isEnabled(), field);
+
+        // Anything that would open a dialog is caught here rather than hang the test.
+        int dialogs = 0;
+        QTimer watchdog;
+        connect(&watchdog, &QTimer::timeout, this, [&] {
+            if (QWidget* d = QApplication::activeModalWidget()) {
+                ++dialogs;
+                if (auto* qd = qobject_cast<QDialog*>(d))
+                    qd->reject();
+            }
+        });
+        watchdog.start(50);
+        QTest::keyClick(&w, Qt::Key_N, Qt::ControlModifier);  // Ctrl+N
+        QTest::qWait(200);
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("A run is recording")), qPrintable(w.statusBar()->currentMessage()));
+        for (const char* text : {"&Open session…", "Session &details…", "&Choose devices…", "&Simulated rig…", "&Calibrate force sensor…"}) {
+            w.statusBar()->clearMessage();
+            action(w, QString::fromUtf8(text))->trigger();
+            QTest::qWait(100);
+            QVERIFY2(w.statusBar()->currentMessage().startsWith(QStringLiteral("Not now")), text);
+        }
+        QCOMPARE(dialogs, 0);
+        QVERIFY(!w.findChild<nb::CalibrationWizard*>());
+        QCOMPARE(w.session()->dir(), sessionDir);
+        QVERIFY(w.engine()->status().recording);  // the run went on
+        QVERIFY(QFileInfo(w.engine()->status().runPath).absolutePath() == QDir(sessionDir).absolutePath());
+        w.controlPanel()->button(Control::EmergencyStop)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 10000);
+    }
+
+    void latchHoldsUntilReset()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setLinear(w, 5.0, 60.0);
+        prepare(w);
+        nb::ControlPanel* p = w.controlPanel();
+        p->button(Control::StartInsertion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving, 20000);
+        QTest::mouseClick(p->button(Control::EmergencyStop), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().latched, 5000);
+        auto* banner = p->findChild<QWidget*>(QStringLiteral("latchBanner"));
+        QVERIFY(banner->isVisible());
+        // Held: nothing starts or moves, however long the operator waits or tries.
+        QTest::qWait(1000);
+        const double position = w.engine()->status().position_mm;
+        QVERIFY(p->interlockState().latched);
+        QVERIFY(!p->interlockState().stageEnabled);
+        QVERIFY(!p->button(Control::StartInsertion)->isEnabled());
+        QVERIFY(!p->button(Control::Withdraw)->isEnabled());
+        QVERIFY(!p->findChild<QPushButton*>(QStringLiteral("jogOut"))->isEnabled());
+        w.engine()->jog(-1.0, 5.0);  // even asked directly, the engine refuses
+        QTest::qWait(500);
+        QCOMPARE(w.engine()->status().position_mm, position);
+        // The deliberate reset.
+        QTest::mouseClick(p->findChild<QPushButton*>(QStringLiteral("resetEmergencyStop")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().latched, 5000);
+        QVERIFY(p->interlockState().stageEnabled);
+        QTRY_VERIFY_WITH_TIMEOUT(!banner->isVisible(), 5000);
+        // Jogging out works again, unrecorded.
+        QTRY_VERIFY_WITH_TIMEOUT(p->findChild<QPushButton*>(QStringLiteral("jogOut"))->isEnabled(), 5000);
+        p->findChild<QComboBox*>(QStringLiteral("jogStep"))->setCurrentIndex(1);  // 1 mm
+        p->findChild<QPushButton*>(QStringLiteral("jogOut"))->click();
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(w.engine()->status().position_mm - (position - 1.0)) < 0.05 && !w.engine()->status().moving, 10000);
+        QVERIFY(!w.engine()->status().recording);
+    }
+
+    void biasInTissueNeedsOverrideAndWithdrawalIsNeverTrapped()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setLinear(w, 15.0, 30.0);
+        prepare(w);
+        nb::ControlPanel* p = w.controlPanel();
+        p->button(Control::StartInsertion)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("completed"));
+        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().inTissue || p->interlockState().loaded, 5000);
+        const double bias0 = w.engine()->status().bias_V;
+
+        // Refused with the reason; the operator cancels.
+        QString asked;
+        const auto answer = [&](bool insist) {
+            QTimer::singleShot(0, this, [&asked, insist] {
+                if (!waitFor([] { return qobject_cast<QMessageBox*>(QApplication::activeModalWidget()) != nullptr; }, 5000))
+                    return;
+                auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                asked = box->text();
+                for (QAbstractButton* b : box->buttons())
+                    if ((box->buttonRole(b) == QMessageBox::DestructiveRole) == insist) {
+                        b->click();
+                        return;
+                    }
+            });
+        };
+        answer(false);
+        p->button(Control::Bias)->click();
+        QVERIFY2(asked.contains(QStringLiteral("noise band")) || asked.contains(QStringLiteral("met tissue")), qPrintable(asked));
+        QTest::qWait(1000);
+        QCOMPARE(w.engine()->status().bias_V, bias0);
+        // The override works.
+        asked.clear();
+        answer(true);
+        p->button(Control::Bias)->click();
+        QVERIFY(!asked.isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().bias_V != bias0, 5000);
+
+        // A low insertion limit does not keep the needle in: out to the start position.
+        p->setForceLimit(0.1);
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().forceLimit_N == 0.1, 5000);
+        auto* out = p->findChild<QPushButton*>(QStringLiteral("withdrawToStart"));
+        QTRY_VERIFY2_WITH_TIMEOUT(out->isEnabled(), qPrintable(out->toolTip()), 5000);
+        QTest::mouseClick(out, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().moving, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.engine()->status().moving, 20000);
+        QVERIFY2(std::abs(w.engine()->status().position_mm) < 0.05, qPrintable(QString::number(w.engine()->status().position_mm)));
+        QVERIFY(!w.engine()->status().forceLimitTripped);
+        QCOMPARE(w.runsEnded(), 1);  // never recorded
+    }
+
+    void simulatedRigChosenInTheWindowIsRecorded()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+        const nb::devices::AcquisitionEngine* before = w.engine();
+        QString chosen;
+        QTimer::singleShot(0, this, [&] {
+            if (!waitFor([] { return QApplication::activeModalWidget() != nullptr; }, 5000))
+                return;
+            auto* d = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            auto* tissue = d->findChild<QComboBox*>(QStringLiteral("tissue"));
+            tissue->setCurrentIndex(tissue->count() > 1 ? 1 : 0);
+            chosen = tissue->currentText();
+            d->findChild<QSpinBox*>(QStringLiteral("seed"))->setValue(7);
+            d->accept();
+        });
+        action(w, QStringLiteral("&Simulated rig…"))->trigger();
+        QVERIFY(!chosen.isEmpty());
+        QVERIFY(w.engine() != before);  // rebuilt on the chosen rig
+        QVERIFY2(w.engine()->deviceDescription().contains(chosen), qPrintable(w.engine()->deviceDescription()));
+        QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("seed 7")), qPrintable(w.engine()->deviceDescription()));
+        setLinear(w, 20.0, 3.0);
+        prepare(w);
+        w.controlPanel()->button(Control::StartInsertion)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QCOMPARE(r.run.meta(QStringLiteral("sim_tissue")).value_or(QString()), chosen);
+        QCOMPARE(r.run.meta(QStringLiteral("sim_seed")).value_or(QString()), QStringLiteral("7"));
+    }
+
+    void sineWithDefaultsTouchesTissue()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        prepare(w);
+        nb::ControlPanel* p = w.controlPanel();
+        p->findChild<QRadioButton*>(QStringLiteral("sine"))->setChecked(true);
+        QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), qPrintable(p->button(Control::StartInsertion)->toolTip()), 5000);
+        p->button(Control::StartInsertion)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 60000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("completed"));
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QVERIFY(r.run.size() > 1000);
+        const double peak = *std::max_element(r.run.force_N.begin(), r.run.force_N.end());
+        qInfo("sine with default parameters: centre %.1f mm, peak force %.3f N", p->sineCentre(), peak);
+        QVERIFY2(peak > 0.05, qPrintable(QString::number(peak)));
+        // The engine writes the centre it reached.
+        QVERIFY(std::abs(r.run.metadata.number(QStringLiteral("centre_mm")).value_or(-1.0) - p->sineCentre()) < 0.05);
+    }
+};
+
+QTEST_MAIN(TestSafetyScenarios)
+#include "test_safety_scenarios.moc"
