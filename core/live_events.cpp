@@ -82,6 +82,15 @@ std::vector<LiveEvent> LiveEventDetector::step(double t, double x, double f)
         return events;
     }
 
+    // After a puncture the force is still falling: follow it down, and look for the next
+    // peak only once it rises again.
+    if (settling_) {
+        if (fs <= peak_.f) {
+            peak_ = {t, x, fs};
+            return events;
+        }
+        settling_ = false;
+    }
     if (fs >= peak_.f) {
         peak_ = {t, x, fs};
         return events;
@@ -103,6 +112,7 @@ std::vector<LiveEvent> LiveEventDetector::step(double t, double x, double f)
 void LiveEventDetector::continueAfterPuncture()
 {
     punctured_ = false;
+    settling_ = true;
     if (!recent_.empty())
         peak_ = recent_.back();
 }

@@ -65,7 +65,7 @@ private:
     std::deque<Point> recent_;
     double lastInBand_t = 0.0, lastInBand_x = 0.0;
     double outSince_ = -1.0;
-    bool contacted_ = false, punctured_ = false;
+    bool contacted_ = false, punctured_ = false, settling_ = false;
     Point peak_{0, 0, -1e300};
 };
 
