@@ -17,10 +17,10 @@
 #include "core/session.h"
 #include "core/sync.h"
 #include "devices/sim/imaging_render.h"
-#include "devices/video/frame_index.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/motion_signal.h"
-#include "devices/video/video_error.h"
+#include "video/frame_index.h"
+#include "video/frame_reader.h"
+#include "video/motion_signal.h"
+#include "video/video_error.h"
 #include "widgets/analysis/analysis_plots.h"
 #include "widgets/analysis/figure_export.h"
 
@@ -208,7 +208,7 @@ int cmdDemo(const QStringList& args, Io io)
                 const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(run, videoPath, vo);
                 v.frames = vt.frames;
                 v.trueOffset_s = vt.offset_s;
-            } catch (const devices::VideoError& e) {
+            } catch (const video::VideoError& e) {
                 io.err << "needlebench demo: " << e.message() << '\n';
                 return Failure;
             }
@@ -217,12 +217,12 @@ int cmdDemo(const QStringList& args, Io io)
 
             // Found the way a user would: the needle's motion in the video against its speed.
             try {
-                devices::FrameReader reader(devices::buildFrameIndex(videoPath), 8);
-                const devices::MotionSignal motion = devices::computeMotionSignal(reader, needleRegion(vo));
+                video::FrameReader reader(video::buildFrameIndex(videoPath), 8);
+                const video::MotionSignal motion = video::computeMotionSignal(reader, needleRegion(vo));
                 SyncOptions so;
                 so.maxOffset_s = 5.0;
                 v.sync = synchronise({motion.time_s, motion.value}, needleSpeed(run), so);
-            } catch (const devices::VideoError& e) {
+            } catch (const video::VideoError& e) {
                 v.syncProblem = e.message();
             } catch (const std::invalid_argument& e) {
                 v.syncProblem = QString::fromUtf8(e.what());

@@ -5,10 +5,10 @@
 
 #include "core/run_file.h"
 #include "core/sync.h"
-#include "devices/video/frame_index_store.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/motion_signal.h"
-#include "devices/video/video_error.h"
+#include "video/frame_index_store.h"
+#include "video/frame_reader.h"
+#include "video/motion_signal.h"
+#include "video/video_error.h"
 
 #include <QCoreApplication>
 #include <QRect>
@@ -53,14 +53,14 @@ int cmdSync(const QStringList& args, Io io)
     const QString runPath = parser.positionalArguments()[0], videoPath = parser.positionalArguments()[1];
     try {
         const Run run = readRunFile(runPath).run;
-        devices::FrameReader reader(devices::loadOrBuildFrameIndex(videoPath), 8);
+        video::FrameReader reader(video::loadOrBuildFrameIndex(videoPath), 8);
         if (!region.isEmpty() && !QRect(0, 0, reader.index().width, reader.index().height).contains(region)) {
             io.err << nb::TrCli::tr("needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture\n")
                           .arg(region.x()).arg(region.y()).arg(region.width()).arg(region.height())
                           .arg(reader.index().width).arg(reader.index().height);
             return Usage;
         }
-        const devices::MotionSignal motion = devices::computeMotionSignal(reader, region);
+        const video::MotionSignal motion = video::computeMotionSignal(reader, region);
         const SyncResult r = synchronise({motion.time_s, motion.value}, needleSpeed(run), options);
         if (parser.isSet(json)) {
             QJsonObject o;
@@ -81,7 +81,7 @@ int cmdSync(const QStringList& args, Io io)
         return Ok;
     } catch (const RunFileError& e) {
         io.err << "needlebench sync: " << e.message() << '\n';
-    } catch (const devices::VideoError& e) {
+    } catch (const video::VideoError& e) {
         io.err << "needlebench sync: " << e.message() << '\n';
     } catch (const std::invalid_argument& e) {
         io.err << "needlebench sync: " << nb::TrCli::tr("cannot synchronise: %1").arg(QString::fromUtf8(e.what())) << '\n';

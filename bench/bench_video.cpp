@@ -2,9 +2,9 @@
 // the same run, and one-frame-back steps from the cache.
 //   bench_video [FILE]   (without FILE: makes a 640x480 H.264 file, keyframes 90 apart,
 //                         B-frames, with the ffmpeg tool)
-#include "devices/video/frame_index.h"
-#include "devices/video/frame_index_store.h"
-#include "devices/video/frame_reader.h"
+#include "video/frame_index.h"
+#include "video/frame_index_store.h"
+#include "video/frame_reader.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -39,7 +39,7 @@ int main(int argc, char** argv)
     }
     QElapsedTimer clock;
     clock.start();
-    const nb::devices::FrameIndex index = nb::devices::buildFrameIndex(file);
+    const nb::video::FrameIndex index = nb::video::buildFrameIndex(file);
     std::printf("file: %s, %d frames, %dx%d, keyframes known: %s\n", qPrintable(file), index.size(), index.width,
                 index.height, index.keyframesKnown ? "yes" : "no");
     const double buildMs = double(clock.elapsed());
@@ -47,9 +47,9 @@ int main(int argc, char** argv)
     {
         // Reopening the same file: the stored index against building it again.
         const QString store = dir.filePath(QStringLiteral("index-store"));
-        nb::devices::storeFrameIndex(index, store);
+        nb::video::storeFrameIndex(index, store);
         clock.restart();
-        const auto stored = nb::devices::loadStoredFrameIndex(file, store);
+        const auto stored = nb::video::loadStoredFrameIndex(file, store);
         const double loadMs = double(clock.nsecsElapsed()) / 1e6;
         std::printf("stored index load: %.2f ms for %d frames (%.0fx faster than building it)\n", loadMs,
                     stored ? stored->size() : 0, buildMs / std::max(loadMs, 1e-3));
@@ -62,7 +62,7 @@ int main(int argc, char** argv)
         t = pick(rng);
 
     cv::VideoCapture plain(file.toStdString(), cv::CAP_FFMPEG);
-    nb::devices::FrameReader reader(index, 1);
+    nb::video::FrameReader reader(index, 1);
     std::vector<double> plainMs, exactMs;
     cv::Mat m;
     // Interleaved so that machine load hits both alike.
@@ -84,7 +84,7 @@ int main(int argc, char** argv)
                 reader.stats().sequentialResets);
 
     // One frame back after the decoder thread has filled the cache around the cursor.
-    nb::devices::FrameReader cached(index, 64);
+    nb::video::FrameReader cached(index, 64);
     std::vector<double> backMs, backUncachedMs;
     for (int i = 0; i < 40; ++i) {
         const int n = std::max(12, targets[std::size_t(i)]);

@@ -9,9 +9,9 @@
 #include "core/label_suggest.h"
 #include "core/labels.h"
 #include "core/run_file.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/motion_signal.h"
-#include "devices/video/video_error.h"
+#include "video/frame_reader.h"
+#include "video/motion_signal.h"
+#include "video/video_error.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -41,15 +41,15 @@ static QString labelsPathFor(const QString& runPath)
 }
 
 ReviewWorkspace::ReviewWorkspace(QWidget* parent)
-    : QWidget(parent), model_(new LabelModel(this)), undo_(new QUndoStack(this)), decoder_(new devices::VideoDecoder(this))
+    : QWidget(parent), model_(new LabelModel(this)), undo_(new QUndoStack(this)), decoder_(new video::VideoDecoder(this))
 {
     setFocusPolicy(Qt::StrongFocus);
     buildUi();
-    connect(decoder_, &devices::VideoDecoder::indexProgress, this, [this](int done, int expected) {
+    connect(decoder_, &video::VideoDecoder::indexProgress, this, [this](int done, int expected) {
         video_->setMessage(expected > 0 ? tr("Indexing the video: %1 of %2 frames").arg(done).arg(expected)
                                         : tr("Indexing the video: %1 frames").arg(done));
     });
-    connect(decoder_, &devices::VideoDecoder::opened, this, [this](devices::FrameIndexPtr index) {
+    connect(decoder_, &video::VideoDecoder::opened, this, [this](video::FrameIndexPtr index) {
         index_ = index;
         for (const QString& w : index->warnings)
             showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
@@ -59,11 +59,11 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         requestFrameForCursor();
         emit videoOpened();
     });
-    connect(decoder_, &devices::VideoDecoder::failed, this, [this](const QString& message) {
+    connect(decoder_, &video::VideoDecoder::failed, this, [this](const QString& message) {
         video_->setMessage(message);
         showStatus(message);
     });
-    connect(decoder_, &devices::VideoDecoder::frameReady, this, [this](int n, double t, const QImage& image) {
+    connect(decoder_, &video::VideoDecoder::frameReady, this, [this](int n, double t, const QImage& image) {
         frame_ = n;
         video_->setFrame(image, n, t);
         emit frameShown(n);
@@ -575,12 +575,12 @@ void ReviewWorkspace::startAutoSync()
         return;
     }
     syncLabel_->setText(tr("correlating…"));
-    const devices::FrameIndex index = *index_;
+    const video::FrameIndex index = *index_;
     const QRect roi = video_->roi();
     const TimeSignal speed = needleSpeed(run_);
     syncWatcher_.setFuture(QtConcurrent::run([index, roi, speed] {
-        devices::FrameReader reader(index, 8);
-        const devices::MotionSignal m = devices::computeMotionSignal(reader, roi);
+        video::FrameReader reader(index, 8);
+        const video::MotionSignal m = video::computeMotionSignal(reader, roi);
         return synchronise({m.time_s, m.value}, speed);
     }));
 }

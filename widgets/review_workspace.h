@@ -12,7 +12,7 @@
 
 #include "core/run.h"
 #include "core/sync.h"
-#include "devices/video/video_decoder.h"
+#include "video/video_decoder.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -66,7 +66,7 @@ public:
     QUndoStack* undoStack() const { return undo_; }
     Timeline* timeline() const { return timeline_; }
     VideoView* videoView() const { return video_; }
-    devices::VideoDecoder* decoder() const { return decoder_; }
+    video::VideoDecoder* decoder() const { return decoder_; }
 
     // Applies the labels suggested from the data (one undoable step).
     void suggestLabels();
@@ -106,7 +106,7 @@ private:
     TimelineMapping mapping_;
     double cursor_ = 0.0;
     int frame_ = -1, requested_ = -1;
-    devices::FrameIndexPtr index_;
+    video::FrameIndexPtr index_;
     QString videoPath_;
     std::map<QString, std::pair<QString, double>> pending_;  // track -> (label, start)
     std::optional<double> markRecording_, markVideo_;
@@ -120,7 +120,7 @@ private:
 
     LabelModel* model_;
     QUndoStack* undo_;
-    devices::VideoDecoder* decoder_;
+    video::VideoDecoder* decoder_;
     VideoView* video_ = nullptr;
     QCustomPlot* plot_ = nullptr;
     QCPItemStraightLine* plotCursor_ = nullptr;

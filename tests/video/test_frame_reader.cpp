@@ -2,9 +2,9 @@
 // and sequentially) must show its own number and carry its true timestamp.
 #include "video_fixtures.h"
 
-#include "devices/video/frame_index.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/video_error.h"
+#include "video/frame_index.h"
+#include "video/frame_reader.h"
+#include "video/video_error.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -12,7 +12,7 @@
 #include <opencv2/videoio.hpp>
 #include <random>
 
-using namespace nb::devices;
+using namespace nb::video;
 using namespace nb::test;
 
 class TestFrameReader : public QObject {

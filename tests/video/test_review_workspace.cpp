@@ -311,7 +311,7 @@ private slots:
         nb::ReviewWorkspace ws;
         QVERIFY(!ws.openRun(dir_.filePath("missing.csv")));
         QVERIFY(ws.status().contains("missing.csv"));
-        QSignalSpy failed(ws.decoder(), &nb::devices::VideoDecoder::failed);
+        QSignalSpy failed(ws.decoder(), &nb::video::VideoDecoder::failed);
         ws.openVideo(dir_.filePath("missing.avi"));
         QVERIFY(failed.wait(20000));
         QVERIFY(failed.first().first().toString().contains("missing.avi"));

@@ -8,7 +8,7 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 
-namespace nb::devices {
+namespace nb::video {
 
 namespace {
 constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
@@ -137,4 +137,4 @@ FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progr
     return index;
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video
