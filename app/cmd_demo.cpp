@@ -18,9 +18,8 @@
 #include "core/sync.h"
 #include "devices/sim/imaging_render.h"
 #include "video/frame_index.h"
-#include "video/frame_reader.h"
-#include "video/motion_signal.h"
 #include "video/video_error.h"
+#include "video/video_sync.h"
 #include "widgets/analysis/analysis_plots.h"
 #include "widgets/analysis/figure_export.h"
 
@@ -48,17 +47,6 @@ devices::sim::ImagingOptions demoImaging()
     o.width = 360;
     o.height = 240;
     return o;
-}
-
-// The needle is drawn 3 px wide down the middle of the renderer's centre pane, which holds
-// the full needle (the outer slices show a faint trace). A strip just that wide sees the tip
-// come and go and little of the tissue speckle beside it, whose stick-slip would otherwise
-// blur the correlation (a 60 px strip put the offset 150-300 ms off, this one a frame).
-QRect needleRegion(const devices::sim::ImagingOptions& o)
-{
-    const int pane = o.width / 3;
-    const int centre = pane + pane / 2;
-    return QRect(centre - 2, 0, 4, o.height);
 }
 
 const Command* findCommand(const QString& name)
@@ -215,13 +203,11 @@ int cmdDemo(const QStringList& args, Io io)
             step(nb::TrCli::tr("rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)")
                      .arg(v.video).arg(v.frames).arg(vo.leadIn_s, 0, 'f', 2));
 
-            // Found the way a user would: the needle's motion in the video against its speed.
+            // Found the way a user would: the needle tracked in the video against its position.
             try {
-                video::FrameReader reader(video::buildFrameIndex(videoPath), 8);
-                const video::MotionSignal motion = video::computeMotionSignal(reader, needleRegion(vo));
-                SyncOptions so;
-                so.maxOffset_s = 5.0;
-                v.sync = synchronise({motion.time_s, motion.value}, needleSpeed(run), so);
+                video::VideoSyncOptions so;
+                so.sync.maxOffset_s = 5.0;
+                v.sync = video::syncVideoToRun(video::buildFrameIndex(videoPath), run, so).result;
             } catch (const video::VideoError& e) {
                 v.syncProblem = e.message();
             } catch (const std::invalid_argument& e) {
@@ -232,7 +218,9 @@ int cmdDemo(const QStringList& args, Io io)
             if (v.sync) {
                 run.metadata.set(QStringLiteral("sync_offset_s"), v.sync->offset_s);
                 run.metadata.set(QStringLiteral("sync_confidence"), v.sync->confidence);
-                run.metadata.set(QStringLiteral("sync_method"), QStringLiteral("video motion vs needle speed (needlebench demo)"));
+                run.metadata.set(QStringLiteral("sync_method"), v.sync->method + QStringLiteral(" (needlebench demo)"));
+                if (v.sync->drift != 0.0)
+                    run.metadata.set(QStringLiteral("sync_drift"), v.sync->drift);
                 step(nb::TrCli::tr("synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5")
                          .arg(v.video)
                          .arg(v.sync->offset_s, 0, 'f', 3)

@@ -23,6 +23,7 @@
 
 class QCPItemStraightLine;
 class QCustomPlot;
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -76,7 +77,11 @@ public:
     // Runs automatic synchronisation in the background; the result waits for accept/reject.
     void startAutoSync();
     std::optional<SyncResult> pendingSync() const { return pendingSync_; }
+    // Takes the pending offset (and drift); refused below kSyncAcceptConfidence unless the
+    // operator ticked the override.
     void acceptSync();
+    QPushButton* acceptButton() const { return acceptButton_; }
+    QCheckBox* acceptOverride() const { return overrideBox_; }
     void rejectSync();
     // Correlation against offset of the pending automatic sync, the offset found marked;
     // visible from the end of Auto sync until Accept/Reject.
@@ -135,6 +140,7 @@ private:
     QCustomPlot* syncPlot_ = nullptr;
     QCPItemStraightLine* syncMarker_ = nullptr;
     QPushButton* acceptButton_ = nullptr;
+    QCheckBox* overrideBox_ = nullptr;
     QPushButton* rejectButton_ = nullptr;
     QLabel* status_ = nullptr;
     QLabel* keysHelp_ = nullptr;

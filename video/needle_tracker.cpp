@@ -1,0 +1,486 @@
+#include "needle_tracker.h"
+
+#include "video_error.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nb::video {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+cv::Mat toGray(const cv::Mat& bgr)
+{
+    cv::Mat gray;
+    if (bgr.channels() == 1)
+        gray = bgr;
+    else
+        cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
+    return gray;
+}
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return kNaN;
+    const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+// A strip along a line, sampled every pixel along it and `halfWidth` pixels to either side.
+struct Strip {
+    cv::Mat mapX, mapY;  // (2·halfWidth+1) rows × length columns
+    int length = 0;
+
+    Strip(const NeedleAxis& axis, int width, int height, int halfWidth, double sideOffset = 0.0)
+    {
+        const double len = axis.length();
+        if (len < 2.0)
+            return;
+        const double ux = (axis.x2() - axis.x1()) / len, uy = (axis.y2() - axis.y1()) / len;
+        const double nx = -uy, ny = ux;
+        // Extend the line across the whole picture: the tip may travel past the drawn ends.
+        double s0 = -1e9, s1 = 1e9;
+        auto clip = [&](double p, double d, double lo, double hi) {
+            if (std::abs(d) < 1e-9)
+                return;
+            double a = (lo - p) / d, b = (hi - p) / d;
+            if (a > b)
+                std::swap(a, b);
+            s0 = std::max(s0, a);
+            s1 = std::min(s1, b);
+        };
+        clip(axis.x1(), ux, 0.0, width - 1.0);
+        clip(axis.y1(), uy, 0.0, height - 1.0);
+        if (!(s1 > s0 + 2))
+            return;
+        length = int(s1 - s0);
+        origin = s0;
+        mapX.create(2 * halfWidth + 1, length, CV_32F);
+        mapY.create(2 * halfWidth + 1, length, CV_32F);
+        for (int r = 0; r < mapX.rows; ++r) {
+            double t = r - halfWidth;
+            if (sideOffset != 0.0)
+                t += t >= 0 ? sideOffset : -sideOffset;
+            for (int j = 0; j < length; ++j) {
+                const double s = s0 + j;
+                mapX.at<float>(r, j) = float(axis.x1() + s * ux + t * nx);
+                mapY.at<float>(r, j) = float(axis.y1() + s * uy + t * ny);
+            }
+        }
+    }
+    double origin = 0.0;  // position along the axis (from p1) of profile sample 0
+
+    // The strip's mean across its width, smoothed along it.
+    std::vector<double> profile(const cv::Mat& gray, double smoothing_px = 1.5) const
+    {
+        cv::Mat sampled, column;
+        cv::remap(gray, sampled, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+        sampled.convertTo(sampled, CV_32F);
+        cv::reduce(sampled, column, 0, cv::REDUCE_AVG);
+        if (smoothing_px > 0)
+            cv::GaussianBlur(column, column, cv::Size(0, 0), smoothing_px, 0.1);
+        return std::vector<double>(column.begin<float>(), column.end<float>());
+    }
+};
+
+std::vector<double> gradient(const std::vector<double>& p)
+{
+    std::vector<double> g(p.size(), 0.0);
+    for (std::size_t i = 1; i + 1 < p.size(); ++i)
+        g[i] = 0.5 * (p[i + 1] - p[i - 1]);
+    return g;
+}
+
+// Per position, the median over frames: what does not move.
+std::vector<double> staticPart(const std::vector<std::vector<double>>& gradients)
+{
+    if (gradients.empty())
+        return {};
+    const std::size_t n = gradients.front().size();
+    std::vector<double> out(n), column(gradients.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = 0; k < gradients.size(); ++k)
+            column[k] = gradients[k][i];
+        out[i] = median(column);
+    }
+    return out;
+}
+
+struct Peak {
+    double position = kNaN;
+    double strength = 0.0;
+};
+
+// The strongest edge of sign `polarity` in g − still, to a fraction of a sample.
+Peak strongestEdge(const std::vector<double>& g, const std::vector<double>& still, int polarity)
+{
+    Peak p;
+    const std::size_t n = g.size();
+    if (n < 5)
+        return p;
+    std::size_t best = 0;
+    double bestV = -1e300;
+    auto v = [&](std::size_t i) { return polarity * (g[i] - still[i]); };
+    for (std::size_t i = 2; i + 2 < n; ++i)
+        if (v(i) > bestV) {
+            bestV = v(i);
+            best = i;
+        }
+    const double a = v(best - 1), b = v(best), c = v(best + 1);
+    const double den = a - 2 * b + c;
+    const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
+    p.position = double(best) + frac;
+    p.strength = bestV;
+    return p;
+}
+
+double robustSigma(const std::vector<std::vector<double>>& gradients, const std::vector<double>& still)
+{
+    std::vector<double> dev;
+    for (const auto& g : gradients)
+        for (std::size_t i = 0; i < g.size(); i += 2)
+            dev.push_back(std::abs(g[i] - still[i]));
+    return std::max(1e-6, 1.4826 * median(dev));
+}
+
+struct Samples {
+    std::vector<cv::Mat> gray;
+    int width = 0, height = 0;
+};
+
+Samples sampleFrames(FrameReader& reader, int count)
+{
+    Samples s;
+    const FrameIndex& index = reader.index();
+    s.width = index.width;
+    s.height = index.height;
+    const int n = index.size();
+    if (n == 0)
+        return s;
+    count = std::clamp(count, 1, n);
+    int last = -1;
+    for (int k = 0; k < count; ++k) {
+        int i = count == 1 ? 0 : int(std::lround(double(k) * (n - 1) / (count - 1)));
+        while (i < n - 1 && index.frames[std::size_t(i)].duplicate)
+            ++i;
+        if (i == last)
+            continue;
+        last = i;
+        s.gray.push_back(toGray(reader.read(i).image).clone());
+    }
+    return s;
+}
+
+struct AxisScore {
+    NeedleAxis axis;
+    double ridge = 0.0;
+    double snr = 0.0;
+};
+
+// How clearly an edge moves along `axis` in the sampled frames.
+double movingEdgeSnr(const Samples& s, const NeedleAxis& axis)
+{
+    const Strip strip(axis, s.width, s.height, 2);
+    if (strip.length < 20)
+        return 0.0;
+    std::vector<std::vector<double>> g;
+    for (const cv::Mat& f : s.gray)
+        g.push_back(gradient(strip.profile(f)));
+    const std::vector<double> still = staticPart(g);
+    const double sigma = robustSigma(g, still);
+    double best = 0.0;
+    for (int polarity : {1, -1}) {
+        std::vector<double> strength, position;
+        for (const auto& gk : g) {
+            const Peak p = strongestEdge(gk, still, polarity);
+            strength.push_back(p.strength);
+            position.push_back(p.position);
+        }
+        // An edge that moves: its positions spread beyond a pixel across the video.
+        std::vector<double> sorted = position;
+        std::sort(sorted.begin(), sorted.end());
+        const double spread = sorted[sorted.size() * 9 / 10] - sorted[sorted.size() / 10];
+        if (spread < 1.0)
+            continue;
+        best = std::max(best, median(strength) / sigma);
+    }
+    return best;
+}
+
+// Refines a candidate line: at points along it, the ridge's centre across it; a straight
+// line through them (least squares, weighted by the ridge's strength).
+NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough)
+{
+    const double len = rough.length();
+    const double ux = (rough.x2() - rough.x1()) / len, uy = (rough.y2() - rough.y1()) / len;
+    const double nx = -uy, ny = ux;
+    std::vector<double> ss, ts, ws;
+    for (double s = 0; s <= len; s += 4.0) {
+        double bestT = 0, bestV = -1;
+        for (double t = -4; t <= 4; t += 0.5) {
+            const double x = rough.x1() + s * ux + t * nx, y = rough.y1() + s * uy + t * ny;
+            const int xi = int(std::lround(x)), yi = int(std::lround(y));
+            if (xi < 0 || yi < 0 || xi >= ridge.cols || yi >= ridge.rows)
+                continue;
+            const float v = ridge.at<float>(yi, xi);
+            if (v > bestV) {
+                bestV = v;
+                bestT = t;
+            }
+        }
+        if (bestV > 0) {
+            ss.push_back(s);
+            ts.push_back(bestT);
+            ws.push_back(bestV);
+        }
+    }
+    if (ss.size() < 4)
+        return rough;
+    // t = a + b·s, weighted.
+    double sw = 0, sws = 0, swt = 0, swss = 0, swst = 0;
+    for (std::size_t i = 0; i < ss.size(); ++i) {
+        sw += ws[i];
+        sws += ws[i] * ss[i];
+        swt += ws[i] * ts[i];
+        swss += ws[i] * ss[i] * ss[i];
+        swst += ws[i] * ss[i] * ts[i];
+    }
+    const double den = sw * swss - sws * sws;
+    if (std::abs(den) < 1e-9)
+        return rough;
+    const double b = (sw * swst - sws * swt) / den, a = (swt - b * sws) / sw;
+    const QPointF p1(rough.x1() + a * nx, rough.y1() + a * ny);
+    const QPointF p2(rough.x1() + len * ux + (a + b * len) * nx, rough.y1() + len * uy + (a + b * len) * ny);
+    return NeedleAxis(p1, p2);
+}
+
+}  // namespace
+
+std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int sampleFrames_)
+{
+    const Samples s = sampleFrames(reader, sampleFrames_);
+    if (s.gray.size() < 3)
+        return std::nullopt;
+    cv::Mat mean = cv::Mat::zeros(s.height, s.width, CV_32F);
+    for (const cv::Mat& f : s.gray)
+        cv::accumulate(f, mean);
+    mean /= double(s.gray.size());
+    // Thin structures of either polarity: the picture minus its local mean.
+    cv::Mat local, ridge;
+    cv::blur(mean, local, cv::Size(15, 15));
+    ridge = cv::abs(mean - local);
+    cv::GaussianBlur(ridge, ridge, cv::Size(0, 0), 1.0);
+    if (!roi.isEmpty()) {
+        cv::Mat mask = cv::Mat::zeros(ridge.size(), CV_32F);
+        const cv::Rect r = cv::Rect(roi.x(), roi.y(), roi.width(), roi.height()) & cv::Rect(0, 0, s.width, s.height);
+        mask(r).setTo(1.0f);
+        ridge = ridge.mul(mask);
+    }
+    // Straight-line sums of the ridge at every angle (a Radon transform by rotation), on a
+    // picture at most 360 pixels wide; the strongest lines are the candidates.
+    const double scale = std::min(1.0, 360.0 / std::max(s.width, s.height));
+    cv::Mat small;
+    cv::resize(ridge, small, cv::Size(), scale, scale, cv::INTER_AREA);
+    // Cap the ridge so that a wide bright bar does not outweigh a long thin needle.
+    std::vector<float> values(small.begin<float>(), small.end<float>());
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() * 99 / 100), values.end());
+    const float cap = std::max(1e-3f, values[values.size() * 99 / 100]);
+    cv::min(small, cap, small);
+    const int diag = int(std::ceil(std::hypot(small.cols, small.rows))) + 2;
+    const cv::Point2f centre(small.cols / 2.0f, small.rows / 2.0f);
+    struct Candidate {
+        double angle_deg, rho, score;
+    };
+    std::vector<Candidate> candidates;
+    for (int a = 0; a < 180; ++a) {
+        cv::Mat m = cv::getRotationMatrix2D(centre, a, 1.0);
+        m.at<double>(0, 2) += diag / 2.0 - centre.x;
+        m.at<double>(1, 2) += diag / 2.0 - centre.y;
+        cv::Mat rotated, rows;
+        cv::warpAffine(small, rotated, m, cv::Size(diag, diag), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+        cv::reduce(rotated, rows, 1, cv::REDUCE_SUM);  // one sum per horizontal line
+        for (int y = 1; y + 1 < rows.rows; ++y) {
+            const float v = rows.at<float>(y);
+            if (v > rows.at<float>(y - 1) && v >= rows.at<float>(y + 1))
+                candidates.push_back({double(a), y - diag / 2.0, double(v)});
+        }
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
+    std::vector<Candidate> kept;
+    for (const Candidate& c : candidates) {
+        bool near = false;
+        for (const Candidate& k : kept) {
+            const double da = std::min(std::abs(c.angle_deg - k.angle_deg), 180.0 - std::abs(c.angle_deg - k.angle_deg));
+            if (da < 6.0 && std::abs(c.rho - k.rho) < 6.0)
+                near = true;
+        }
+        if (!near)
+            kept.push_back(c);
+        if (kept.size() >= 12)
+            break;
+    }
+    std::optional<NeedleAxis> best;
+    double bestScore = 0.0;
+    for (const Candidate& c : kept) {
+        // A horizontal line at height rho in the picture rotated by `angle` (counter-clockwise
+        // in OpenCV's convention): back in the picture it runs along (cos, −sin).
+        const double th = c.angle_deg * M_PI / 180.0;
+        const double dx = std::cos(th), dy = -std::sin(th);
+        const double nx = std::sin(th), ny = std::cos(th);
+        const double cx = (centre.x + c.rho * nx) / scale, cy = (centre.y + c.rho * ny) / scale;
+        NeedleAxis rough(QPointF(cx - dx * diag, cy - dy * diag), QPointF(cx + dx * diag, cy + dy * diag));
+        const Strip clipper(rough, s.width, s.height, 0);
+        if (clipper.length < 20)
+            continue;
+        const double len = rough.length();
+        const QPointF u((rough.x2() - rough.x1()) / len, (rough.y2() - rough.y1()) / len);
+        rough = NeedleAxis(rough.p1() + u * clipper.origin, rough.p1() + u * (clipper.origin + clipper.length));
+        const NeedleAxis axis = refineAxis(ridge, rough);
+        const double snr = movingEdgeSnr(s, axis);
+        // Noise alone gives a strongest edge about 4 σ above the noise; a needle stands far out.
+        const double score = snr < 6.0 ? 0.0 : snr * std::sqrt(c.score);
+        if (score > bestScore) {
+            bestScore = score;
+            best = axis;
+        }
+    }
+    return best;
+}
+
+NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis, const std::function<void(int, int)>& progress,
+                        const std::atomic_bool* cancel)
+{
+    const FrameIndex& index = reader.index();
+    NeedleTrack out;
+    out.axis = axis;
+    const Strip strip(axis, index.width, index.height, 2);
+    if (strip.length < 20)
+        throw VideoError(index.path, QStringLiteral("the needle line lies outside the picture"));
+    // What stays put along the strip, from frames spread over the video.
+    const Samples s = sampleFrames(reader, 40);
+    std::vector<std::vector<double>> g;
+    for (const cv::Mat& f : s.gray)
+        g.push_back(gradient(strip.profile(f)));
+    const std::vector<double> still = staticPart(g);
+    const double sigma = robustSigma(g, still);
+    // The tip's edge sign: the one that stands out of the noise more.
+    int polarity = 1;
+    {
+        double sp = 0, sn = 0;
+        for (const auto& gk : g) {
+            sp += strongestEdge(gk, still, 1).strength;
+            sn += strongestEdge(gk, still, -1).strength;
+        }
+        polarity = sp >= sn ? 1 : -1;
+    }
+    const int n = index.size();
+    std::vector<double> strengths;
+    for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
+        const FrameInfo& info = index.frames[std::size_t(i)];
+        out.time_s.push_back(info.time_s);
+        if (info.duplicate) {
+            out.displacement_px.push_back(kNaN);
+            continue;
+        }
+        const DecodedFrame f = reader.read(i);
+        const Peak p = strongestEdge(gradient(strip.profile(toGray(f.image))), still, polarity);
+        strengths.push_back(p.strength);
+        // An edge not clearly above the noise is not a tip: masked, not guessed.
+        out.displacement_px.push_back(p.strength > 5.0 * sigma ? p.position + strip.origin : kNaN);
+        if (progress && i % 50 == 0)
+            progress(i, n);
+    }
+    // Isolated jumps (a noise peak elsewhere on the strip) against their neighbours: masked.
+    std::vector<double>& d = out.displacement_px;
+    std::vector<double> cleaned = d;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        if (!std::isfinite(d[i]))
+            continue;
+        std::vector<double> w;
+        for (std::size_t j = i >= 3 ? i - 3 : 0; j <= std::min(d.size() - 1, i + 3); ++j)
+            if (j != i && std::isfinite(d[j]))
+                w.push_back(d[j]);
+        if (w.size() >= 3 && std::abs(d[i] - median(w)) > 10.0)
+            cleaned[i] = kNaN;
+    }
+    d = cleaned;
+    out.masked = int(std::count_if(d.begin(), d.end(), [](double v) { return !std::isfinite(v); }));
+    out.edgeSnr = median(strengths) / sigma;
+    return out;
+}
+
+NeedleTrack trackBeside(FrameReader& reader, const NeedleAxis& axis, double offset_px, double width_px,
+                        const std::function<void(int, int)>& progress, const std::atomic_bool* cancel)
+{
+    const FrameIndex& index = reader.index();
+    NeedleTrack out;
+    out.axis = axis;
+    const int half = std::max(1, int(std::lround(width_px / 2)));
+    const Strip strip(axis, index.width, index.height, half, offset_px);
+    if (strip.length < 20)
+        throw VideoError(index.path, QStringLiteral("the needle line lies outside the picture"));
+    // Frame-to-frame shift of the band's texture (normalised cross-correlation of the
+    // profiles, to a fraction of a pixel), summed: the band's displacement.
+    const int n = index.size();
+    std::vector<double> previous;
+    double position = 0.0;
+    constexpr int kMaxShift = 12;
+    for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
+        const FrameInfo& info = index.frames[std::size_t(i)];
+        out.time_s.push_back(info.time_s);
+        if (info.duplicate) {
+            out.displacement_px.push_back(kNaN);
+            continue;
+        }
+        std::vector<double> p = strip.profile(toGray(reader.read(i).image), 1.0);
+        // Remove the slow trend so that only texture is matched.
+        std::vector<double> trend(p.size());
+        {
+            cv::Mat pm(1, int(p.size()), CV_64F, p.data()), tm;
+            cv::GaussianBlur(pm, tm, cv::Size(0, 0), 8.0, 0.1);
+            for (std::size_t j = 0; j < p.size(); ++j)
+                trend[j] = p[j] - tm.at<double>(int(j));
+        }
+        p = trend;
+        if (!previous.empty()) {
+            std::vector<double> score(2 * kMaxShift + 1, -2.0);
+            const int len = int(p.size());
+            for (int sh = -kMaxShift; sh <= kMaxShift; ++sh) {
+                double sxy = 0, sxx = 0, syy = 0;
+                for (int j = kMaxShift; j < len - kMaxShift; ++j) {
+                    const double x = previous[std::size_t(j)], y = p[std::size_t(j + sh)];
+                    sxy += x * y;
+                    sxx += x * x;
+                    syy += y * y;
+                }
+                score[std::size_t(sh + kMaxShift)] = sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : -2.0;
+            }
+            const auto it = std::max_element(score.begin(), score.end());
+            const int k = int(it - score.begin());
+            double frac = 0.0;
+            if (k > 0 && k + 1 < int(score.size())) {
+                const double a = score[std::size_t(k - 1)], b = score[std::size_t(k)], c = score[std::size_t(k + 1)];
+                const double den = a - 2 * b + c;
+                if (std::abs(den) > 1e-12)
+                    frac = std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
+            }
+            position += double(k - kMaxShift) + frac;
+        }
+        previous = p;
+        out.displacement_px.push_back(position);
+        if (progress && i % 50 == 0)
+            progress(i, n);
+    }
+    out.masked = int(std::count_if(out.displacement_px.begin(), out.displacement_px.end(),
+                                   [](double v) { return !std::isfinite(v); }));
+    return out;
+}
+
+}  // namespace nb::video
