@@ -11,7 +11,9 @@
 #include "video/video_sync.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QJsonArray>
+#include <QTextStream>
 #include <QRect>
 
 #include <cmath>
@@ -32,7 +34,10 @@ int cmdSync(const QStringList& args, Io io)
                                     nb::TrCli::tr("the needle's line in the picture, in pixels (default: found in the picture)"),
                                     QStringLiteral("x1,y1,x2,y2"));
     const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
-    parser.addOptions({roi, maxOffset, needle, json});
+    const QCommandLineOption trace(QStringLiteral("trace"),
+                                   nb::TrCli::tr("also write the needle's tracked displacement per frame (time_s,displacement_px) to FILE"),
+                                   QStringLiteral("FILE.csv"));
+    parser.addOptions({roi, maxOffset, needle, trace, json});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("sync"), args, io, 2, 2, &code))
         return code;
@@ -82,6 +87,18 @@ int cmdSync(const QStringList& args, Io io)
         vso.roi = region;
         const video::VideoSync vs = video::syncVideoToRun(index, run, vso);
         const SyncResult& r = vs.result;
+        if (parser.isSet(trace)) {
+            QFile f(parser.value(trace));
+            if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
+                io.err << "needlebench sync: " << nb::TrCli::tr("%1: cannot write the trace here").arg(f.fileName()) << '\n';
+                return Failure;
+            }
+            QTextStream ts(&f);
+            ts << "time_s,displacement_px\n";
+            for (std::size_t i = 0; i < vs.track.time_s.size(); ++i)
+                ts << QString::number(vs.track.time_s[i], 'f', 6) << ','
+                   << (std::isfinite(vs.track.displacement_px[i]) ? QString::number(vs.track.displacement_px[i], 'f', 3) : QString()) << '\n';
+        }
         if (parser.isSet(json)) {
             QJsonObject o;
             o[QStringLiteral("offset_s")] = r.offset_s;

@@ -2,6 +2,7 @@
 
 #include "video_error.h"
 
+#include <QtGlobal>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -78,7 +79,7 @@ struct Strip {
     double origin = 0.0;  // position along the axis (from p1) of profile sample 0
 
     // The strip's mean across its width, smoothed along it.
-    std::vector<double> profile(const cv::Mat& gray, double smoothing_px = 1.5) const
+    std::vector<double> profile(const cv::Mat& gray, double smoothing_px = 0.8) const
     {
         cv::Mat sampled, column;
         cv::remap(gray, sampled, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
@@ -90,35 +91,64 @@ struct Strip {
     }
 };
 
+// A step detector along the profile: the mean of the next `w` samples minus the mean of
+// the previous `w`. Long enough to see a faint edge through heavy noise, short enough to
+// keep neighbouring edges apart.
+constexpr int kStep = 8;
 std::vector<double> gradient(const std::vector<double>& p)
 {
-    std::vector<double> g(p.size(), 0.0);
-    for (std::size_t i = 1; i + 1 < p.size(); ++i)
-        g[i] = 0.5 * (p[i + 1] - p[i - 1]);
+    const std::size_t n = p.size();
+    std::vector<double> prefix(n + 1, 0.0), g(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        prefix[i + 1] = prefix[i] + p[i];
+    for (std::size_t i = kStep; i + kStep < n; ++i)
+        g[i] = ((prefix[i + 1 + kStep] - prefix[i + 1]) - (prefix[i] - prefix[i - kStep])) / kStep;
     return g;
 }
 
-// Per position, the median over frames: what does not move.
-std::vector<double> staticPart(const std::vector<std::vector<double>>& gradients)
+// Per position, what is there even in the frames where the tip is not: the low (15 %)
+// percentile over frames of the edge response of one sign. A median would also remove a
+// tip that rests at one place for most of the video.
+std::vector<double> staticPart(const std::vector<std::vector<double>>& gradients, int polarity)
 {
     if (gradients.empty())
         return {};
     const std::size_t n = gradients.front().size();
     std::vector<double> out(n), column(gradients.size());
+    const std::size_t k15 = gradients.size() * 15 / 100;
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t k = 0; k < gradients.size(); ++k)
-            column[k] = gradients[k][i];
-        out[i] = median(column);
+            column[k] = polarity * gradients[k][i];
+        std::nth_element(column.begin(), column.begin() + std::ptrdiff_t(k15), column.end());
+        out[i] = column[k15];
     }
     return out;
+}
+
+// The noise of the edge response: its spread over frames around the median, per position.
+double robustSigma(const std::vector<std::vector<double>>& gradients)
+{
+    if (gradients.empty())
+        return 1e-6;
+    const std::size_t n = gradients.front().size();
+    std::vector<double> dev, column(gradients.size());
+    for (std::size_t i = 0; i < n; i += 2) {
+        for (std::size_t k = 0; k < gradients.size(); ++k)
+            column[k] = gradients[k][i];
+        const double m = median(column);
+        for (double v : column)
+            dev.push_back(std::abs(v - m));
+    }
+    return std::max(1e-6, 1.4826 * median(dev));
 }
 
 struct Peak {
     double position = kNaN;
     double strength = 0.0;
+    double second = 0.0;  // the strongest edge of the same sign at least 2·kStep away
 };
 
-// The strongest edge of sign `polarity` in g − still, to a fraction of a sample.
+// The strongest edge of sign `polarity` above what is always there, to a fraction of a sample.
 Peak strongestEdge(const std::vector<double>& g, const std::vector<double>& still, int polarity)
 {
     Peak p;
@@ -127,7 +157,7 @@ Peak strongestEdge(const std::vector<double>& g, const std::vector<double>& stil
         return p;
     std::size_t best = 0;
     double bestV = -1e300;
-    auto v = [&](std::size_t i) { return polarity * (g[i] - still[i]); };
+    auto v = [&](std::size_t i) { return polarity * g[i] - still[i]; };
     for (std::size_t i = 2; i + 2 < n; ++i)
         if (v(i) > bestV) {
             bestV = v(i);
@@ -138,17 +168,14 @@ Peak strongestEdge(const std::vector<double>& g, const std::vector<double>& stil
     const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
     p.position = double(best) + frac;
     p.strength = bestV;
+    double second = 0.0;
+    for (std::size_t i = 2; i + 2 < n; ++i)
+        if ((i + 2 * kStep < best || i > best + 2 * kStep) && v(i) > second)
+            second = v(i);
+    p.second = second;
     return p;
 }
 
-double robustSigma(const std::vector<std::vector<double>>& gradients, const std::vector<double>& still)
-{
-    std::vector<double> dev;
-    for (const auto& g : gradients)
-        for (std::size_t i = 0; i < g.size(); i += 2)
-            dev.push_back(std::abs(g[i] - still[i]));
-    return std::max(1e-6, 1.4826 * median(dev));
-}
 
 struct Samples {
     std::vector<cv::Mat> gray;
@@ -193,15 +220,16 @@ double movingEdgeSnr(const Samples& s, const NeedleAxis& axis)
     std::vector<std::vector<double>> g;
     for (const cv::Mat& f : s.gray)
         g.push_back(gradient(strip.profile(f)));
-    const std::vector<double> still = staticPart(g);
-    const double sigma = robustSigma(g, still);
+    const double sigma = robustSigma(g);
     double best = 0.0;
     for (int polarity : {1, -1}) {
-        std::vector<double> strength, position;
+        const std::vector<double> still = staticPart(g, polarity);
+        std::vector<double> strength, position, alone;
         for (const auto& gk : g) {
             const Peak p = strongestEdge(gk, still, polarity);
             strength.push_back(p.strength);
             position.push_back(p.position);
+            alone.push_back(p.strength > 0 ? 1.0 - p.second / p.strength : 0.0);
         }
         // An edge that moves: its positions spread beyond a pixel across the video.
         std::vector<double> sorted = position;
@@ -209,7 +237,8 @@ double movingEdgeSnr(const Samples& s, const NeedleAxis& axis)
         const double spread = sorted[sorted.size() * 9 / 10] - sorted[sorted.size() / 10];
         if (spread < 1.0)
             continue;
-        best = std::max(best, median(strength) / sigma);
+        // One tip stands alone on its line; changing text has many edges alike.
+        best = std::max(best, median(strength) / sigma * median(alone));
     }
     return best;
 }
@@ -243,19 +272,32 @@ NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough)
     }
     if (ss.size() < 4)
         return rough;
-    // t = a + b·s, weighted.
-    double sw = 0, sws = 0, swt = 0, swss = 0, swst = 0;
-    for (std::size_t i = 0; i < ss.size(); ++i) {
-        sw += ws[i];
-        sws += ws[i] * ss[i];
-        swt += ws[i] * ts[i];
-        swss += ws[i] * ss[i] * ss[i];
-        swst += ws[i] * ss[i] * ts[i];
+    // Only where the ridge is strong (the needle, not the picture beyond its tip).
+    std::vector<double> sorted = ws;
+    std::sort(sorted.begin(), sorted.end());
+    const double strong = 0.5 * sorted[sorted.size() * 9 / 10];
+    for (double& w : ws)
+        if (w < strong)
+            w = 0.0;
+    // t = a + b·s, weighted; twice, the second time without points far off the first line.
+    double a = 0.0, b = 0.0;
+    for (int pass = 0; pass < 2; ++pass) {
+        double sw = 0, sws = 0, swt = 0, swss = 0, swst = 0;
+        for (std::size_t i = 0; i < ss.size(); ++i) {
+            if (pass == 1 && std::abs(ts[i] - (a + b * ss[i])) > 1.5)
+                continue;
+            sw += ws[i];
+            sws += ws[i] * ss[i];
+            swt += ws[i] * ts[i];
+            swss += ws[i] * ss[i] * ss[i];
+            swst += ws[i] * ss[i] * ts[i];
+        }
+        const double den = sw * swss - sws * sws;
+        if (std::abs(den) < 1e-9 || sw <= 0)
+            return rough;
+        b = (sw * swst - sws * swt) / den;
+        a = (swt - b * sws) / sw;
     }
-    const double den = sw * swss - sws * sws;
-    if (std::abs(den) < 1e-9)
-        return rough;
-    const double b = (sw * swst - sws * swt) / den, a = (swt - b * sws) / sw;
     const QPointF p1(rough.x1() + a * nx, rough.y1() + a * ny);
     const QPointF p2(rough.x1() + len * ux + (a + b * len) * nx, rough.y1() + len * uy + (a + b * len) * ny);
     return NeedleAxis(p1, p2);
@@ -329,11 +371,12 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int s
     std::optional<NeedleAxis> best;
     double bestScore = 0.0;
     for (const Candidate& c : kept) {
-        // A horizontal line at height rho in the picture rotated by `angle` (counter-clockwise
-        // in OpenCV's convention): back in the picture it runs along (cos, −sin).
+        // A horizontal line at height rho (from the centre) in the rotated picture: with
+        // getRotationMatrix2D's y' = −sin·x + cos·y it runs along (cos, sin) in the picture,
+        // rho along the normal (−sin, cos).
         const double th = c.angle_deg * M_PI / 180.0;
-        const double dx = std::cos(th), dy = -std::sin(th);
-        const double nx = std::sin(th), ny = std::cos(th);
+        const double dx = std::cos(th), dy = std::sin(th);
+        const double nx = -std::sin(th), ny = std::cos(th);
         const double cx = (centre.x + c.rho * nx) / scale, cy = (centre.y + c.rho * ny) / scale;
         NeedleAxis rough(QPointF(cx - dx * diag, cy - dy * diag), QPointF(cx + dx * diag, cy + dy * diag));
         const Strip clipper(rough, s.width, s.height, 0);
@@ -346,6 +389,9 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int s
         const double snr = movingEdgeSnr(s, axis);
         // Noise alone gives a strongest edge about 4 σ above the noise; a needle stands far out.
         const double score = snr < 6.0 ? 0.0 : snr * std::sqrt(c.score);
+        if (qEnvironmentVariableIsSet("NB_DEBUG_TRACK"))
+            qDebug("cand angle %g rho %g ridge %g | rough %g,%g-%g,%g | axis %g,%g-%g,%g snr %g score %g", c.angle_deg, c.rho, c.score,
+                   rough.x1(), rough.y1(), rough.x2(), rough.y2(), axis.x1(), axis.y1(), axis.x2(), axis.y2(), snr, score);
         if (score > bestScore) {
             bestScore = score;
             best = axis;
@@ -368,18 +414,19 @@ NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis, const std::
     std::vector<std::vector<double>> g;
     for (const cv::Mat& f : s.gray)
         g.push_back(gradient(strip.profile(f)));
-    const std::vector<double> still = staticPart(g);
-    const double sigma = robustSigma(g, still);
+    const double sigma = robustSigma(g);
     // The tip's edge sign: the one that stands out of the noise more.
+    const std::vector<double> stillUp = staticPart(g, 1), stillDown = staticPart(g, -1);
     int polarity = 1;
     {
         double sp = 0, sn = 0;
         for (const auto& gk : g) {
-            sp += strongestEdge(gk, still, 1).strength;
-            sn += strongestEdge(gk, still, -1).strength;
+            sp += strongestEdge(gk, stillUp, 1).strength;
+            sn += strongestEdge(gk, stillDown, -1).strength;
         }
         polarity = sp >= sn ? 1 : -1;
     }
+    const std::vector<double>& still = polarity > 0 ? stillUp : stillDown;
     const int n = index.size();
     std::vector<double> strengths;
     for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {

@@ -1,0 +1,83 @@
+// Accuracy of video sync (and, as they land, phases and friction fits) over a matrix drawn
+// at random from a printed seed: `bench_accuracy [--seed N] [--sync-cases N] [--small]
+// [--keep DIR]`. Prints one line per case and the summary against issue 13's targets.
+#include "video/accuracy_matrix.h"
+
+#include "core/sync.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QTemporaryDir>
+#include <QTextStream>
+
+#include <chrono>
+#include <cstdio>
+
+using namespace nb::accuracy;
+
+int main(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    const QStringList a = app.arguments();
+    unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
+    int syncCases = 28;
+    bool small = false;
+    QString keep;
+    for (int i = 1; i < a.size(); ++i) {
+        if (a[i] == QLatin1String("--seed") && i + 1 < a.size())
+            seed = a[++i].toUInt();
+        else if (a[i] == QLatin1String("--sync-cases") && i + 1 < a.size())
+            syncCases = a[++i].toInt();
+        else if (a[i] == QLatin1String("--small"))
+            small = true;
+        else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
+            keep = a[++i];
+        else {
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--small] [--keep DIR]\n");
+            return 2;
+        }
+    }
+    QTextStream out(stdout);
+    out << "bench_accuracy: seed " << seed << " (rerun with --seed " << seed << ")\n";
+    std::mt19937 rng(seed);
+    QTemporaryDir tmp;
+    const QString root = keep.isEmpty() ? tmp.path() : keep;
+
+    out << "\n== sync: error over the recording in frames (accept threshold " << nb::kSyncAcceptConfidence << ")\n";
+    std::vector<double> errors;
+    int within1 = 0, within2 = 0, failed = 0, honestMisses = 0, misses = 0;
+    const std::vector<SyncCase> cases = drawSyncCases(rng, syncCases, small);
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const SyncOutcome o = runSyncCase(cases[i], QStringLiteral(NB_EXECUTABLE), QDir(root).filePath(QStringLiteral("sync%1").arg(i)));
+        if (!o.ok) {
+            ++failed;
+            out << QStringLiteral("%1  FAILED %2: %3\n").arg(i, 3).arg(cases[i].describe(), o.problem);
+            out.flush();
+            continue;
+        }
+        errors.push_back(o.errorFrames);
+        within1 += o.errorFrames <= 1.0;
+        within2 += o.errorFrames <= 2.0;
+        if (o.errorFrames > 1.0) {
+            ++misses;
+            honestMisses += !o.acceptable;
+        }
+        out << QStringLiteral("%1  err %2 fr  conf %3%4  %5 s  %6\n")
+                   .arg(i, 3)
+                   .arg(o.errorFrames, 6, 'f', 2)
+                   .arg(o.confidence, 4, 'f', 2)
+                   .arg(o.errorFrames > 1.0 ? (o.acceptable ? QStringLiteral(" MISS!") : QStringLiteral(" miss ")) : QStringLiteral("      "))
+                   .arg(o.seconds, 5, 'f', 1)
+                   .arg(cases[i].describe());
+        out.flush();
+    }
+    const int n = int(errors.size());
+    out << QStringLiteral("sync: %1 cases (%2 failed to run): p50 %3, p95 %4, max %5 frames; within 1 frame %6 %, within 2 %7 %; "
+                          "misses %8, of which below the accept threshold %9\n")
+               .arg(cases.size()).arg(failed)
+               .arg(quantile(errors, 0.5), 0, 'f', 2).arg(quantile(errors, 0.95), 0, 'f', 2).arg(quantile(errors, 1.0), 0, 'f', 2)
+               .arg(n ? 100.0 * within1 / n : 0.0, 0, 'f', 1).arg(n ? 100.0 * within2 / n : 0.0, 0, 'f', 1)
+               .arg(misses).arg(honestMisses);
+    out << "targets: within 1 frame >= 95 %, within 2 frames 100 %, every miss below the threshold\n";
+    return 0;
+}
