@@ -2,6 +2,8 @@
 
 #include "video_error.h"
 
+#include "core/tr.h"
+
 #include <QtGlobal>
 #include <opencv2/imgproc.hpp>
 
@@ -120,7 +122,9 @@ std::vector<double> staticPart(const std::vector<std::vector<double>>& gradients
         for (std::size_t k = 0; k < gradients.size(); ++k)
             column[k] = polarity * gradients[k][i];
         std::nth_element(column.begin(), column.begin() + std::ptrdiff_t(k15), column.end());
-        out[i] = column[k15];
+        // Below zero is the opposite edge (e.g. where the tip rests, seen from the other
+        // side), not something of this sign that is always there.
+        out[i] = std::max(0.0, column[k15]);
     }
     return out;
 }
@@ -243,73 +247,51 @@ double movingEdgeSnr(const Samples& s, const NeedleAxis& axis)
     return best;
 }
 
-// Refines a candidate line: at points along it, the ridge's centre across it; a straight
-// line through them (least squares, weighted by the ridge's strength).
+// Refines a candidate line: the small turn and shift (±1.5°, ±3 px) that puts the most
+// ridge under it, at full resolution.
 NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough)
 {
     const double len = rough.length();
-    const double ux = (rough.x2() - rough.x1()) / len, uy = (rough.y2() - rough.y1()) / len;
-    const double nx = -uy, ny = ux;
-    std::vector<double> ss, ts, ws;
-    for (double s = 0; s <= len; s += 4.0) {
-        double bestT = 0, bestV = -1;
-        for (double t = -4; t <= 4; t += 0.5) {
-            const double x = rough.x1() + s * ux + t * nx, y = rough.y1() + s * uy + t * ny;
-            const int xi = int(std::lround(x)), yi = int(std::lround(y));
-            if (xi < 0 || yi < 0 || xi >= ridge.cols || yi >= ridge.rows)
+    if (len < 2)
+        return rough;
+    const QPointF mid = 0.5 * (rough.p1() + rough.p2());
+    const double base = std::atan2(rough.y2() - rough.y1(), rough.x2() - rough.x1());
+    auto sumAlong = [&](double angle, double shift) {
+        const double ux = std::cos(angle), uy = std::sin(angle), nx = -uy, ny = ux;
+        double sum = 0.0;
+        for (double s = -len / 2; s <= len / 2; s += 1.0) {
+            const double x = mid.x() + s * ux + shift * nx, y = mid.y() + s * uy + shift * ny;
+            const int xi = int(x), yi = int(y);
+            if (xi < 0 || yi < 0 || xi + 1 >= ridge.cols || yi + 1 >= ridge.rows)
                 continue;
-            const float v = ridge.at<float>(yi, xi);
+            const double fx = x - xi, fy = y - yi;
+            sum += (1 - fx) * (1 - fy) * ridge.at<float>(yi, xi) + fx * (1 - fy) * ridge.at<float>(yi, xi + 1)
+                   + (1 - fx) * fy * ridge.at<float>(yi + 1, xi) + fx * fy * ridge.at<float>(yi + 1, xi + 1);
+        }
+        return sum;
+    };
+    double bestA = base, bestS = 0.0, bestV = -1.0;
+    for (double da = -1.5; da <= 1.5 + 1e-9; da += 0.1)
+        for (double sh = -3.0; sh <= 3.0 + 1e-9; sh += 0.25) {
+            const double v = sumAlong(base + da * M_PI / 180.0, sh);
             if (v > bestV) {
                 bestV = v;
-                bestT = t;
+                bestA = base + da * M_PI / 180.0;
+                bestS = sh;
             }
         }
-        if (bestV > 0) {
-            ss.push_back(s);
-            ts.push_back(bestT);
-            ws.push_back(bestV);
-        }
-    }
-    if (ss.size() < 4)
-        return rough;
-    // Only where the ridge is strong (the needle, not the picture beyond its tip).
-    std::vector<double> sorted = ws;
-    std::sort(sorted.begin(), sorted.end());
-    const double strong = 0.5 * sorted[sorted.size() * 9 / 10];
-    for (double& w : ws)
-        if (w < strong)
-            w = 0.0;
-    // t = a + b·s, weighted; twice, the second time without points far off the first line.
-    double a = 0.0, b = 0.0;
-    for (int pass = 0; pass < 2; ++pass) {
-        double sw = 0, sws = 0, swt = 0, swss = 0, swst = 0;
-        for (std::size_t i = 0; i < ss.size(); ++i) {
-            if (pass == 1 && std::abs(ts[i] - (a + b * ss[i])) > 1.5)
-                continue;
-            sw += ws[i];
-            sws += ws[i] * ss[i];
-            swt += ws[i] * ts[i];
-            swss += ws[i] * ss[i] * ss[i];
-            swst += ws[i] * ss[i] * ts[i];
-        }
-        const double den = sw * swss - sws * sws;
-        if (std::abs(den) < 1e-9 || sw <= 0)
-            return rough;
-        b = (sw * swst - sws * swt) / den;
-        a = (swt - b * sws) / sw;
-    }
-    const QPointF p1(rough.x1() + a * nx, rough.y1() + a * ny);
-    const QPointF p2(rough.x1() + len * ux + (a + b * len) * nx, rough.y1() + len * uy + (a + b * len) * ny);
-    return NeedleAxis(p1, p2);
+    const double ux = std::cos(bestA), uy = std::sin(bestA);
+    const QPointF c = mid + QPointF(-uy, ux) * bestS;
+    return NeedleAxis(c - QPointF(ux, uy) * (len / 2), c + QPointF(ux, uy) * (len / 2));
 }
 
 }  // namespace
 
-std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int sampleFrames_)
+std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int maxCount, int sampleFrames_)
 {
     const Samples s = sampleFrames(reader, sampleFrames_);
     if (s.gray.size() < 3)
-        return std::nullopt;
+        return {};
     cv::Mat mean = cv::Mat::zeros(s.height, s.width, CV_32F);
     for (const cv::Mat& f : s.gray)
         cv::accumulate(f, mean);
@@ -359,17 +341,19 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int s
     for (const Candidate& c : candidates) {
         bool near = false;
         for (const Candidate& k : kept) {
-            const double da = std::min(std::abs(c.angle_deg - k.angle_deg), 180.0 - std::abs(c.angle_deg - k.angle_deg));
-            if (da < 6.0 && std::abs(c.rho - k.rho) < 6.0)
+            // (angle, rho) and (angle ± 180, −rho) are the same line.
+            const double raw = std::abs(c.angle_deg - k.angle_deg);
+            const bool wrapped = raw > 90.0;
+            const double da = wrapped ? 180.0 - raw : raw;
+            if (da < 8.0 && std::abs(c.rho - (wrapped ? -k.rho : k.rho)) < 8.0)
                 near = true;
         }
         if (!near)
             kept.push_back(c);
-        if (kept.size() >= 12)
+        if (kept.size() >= 16)
             break;
     }
-    std::optional<NeedleAxis> best;
-    double bestScore = 0.0;
+    std::vector<std::pair<double, NeedleAxis>> scored;
     for (const Candidate& c : kept) {
         // A horizontal line at height rho (from the centre) in the rotated picture: with
         // getRotationMatrix2D's y' = −sin·x + cos·y it runs along (cos, sin) in the picture,
@@ -387,65 +371,111 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int s
         rough = NeedleAxis(rough.p1() + u * clipper.origin, rough.p1() + u * (clipper.origin + clipper.length));
         const NeedleAxis axis = refineAxis(ridge, rough);
         const double snr = movingEdgeSnr(s, axis);
-        // Noise alone gives a strongest edge about 4 σ above the noise; a needle stands far out.
-        const double score = snr < 6.0 ? 0.0 : snr * std::sqrt(c.score);
+        // Noise alone gives a strongest edge about 3 σ above the noise.
+        const double score = snr < 3.0 ? 0.0 : snr * std::sqrt(c.score);
         if (qEnvironmentVariableIsSet("NB_DEBUG_TRACK"))
             qDebug("cand angle %g rho %g ridge %g | rough %g,%g-%g,%g | axis %g,%g-%g,%g snr %g score %g", c.angle_deg, c.rho, c.score,
                    rough.x1(), rough.y1(), rough.x2(), rough.y2(), axis.x1(), axis.y1(), axis.x2(), axis.y2(), snr, score);
-        if (score > bestScore) {
-            bestScore = score;
-            best = axis;
-        }
+        if (score > 0)
+            scored.emplace_back(score, axis);
     }
-    return best;
+    std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // Refined lines that ended up alike count once.
+    std::vector<NeedleAxis> out;
+    for (const auto& [score, axis] : scored) {
+        bool alike = false;
+        for (const NeedleAxis& o : out) {
+            const double angle = std::abs(std::remainder(axis.angle() - o.angle(), 180.0));
+            const QPointF mid = 0.5 * (axis.p1() + axis.p2());
+            const double len = o.length();
+            const double dist = std::abs((o.x2() - o.x1()) * (o.y1() - mid.y()) - (o.x1() - mid.x()) * (o.y2() - o.y1())) / len;
+            alike = alike || (angle < 5.0 && dist < 6.0);
+        }
+        if (!alike && int(out.size()) < maxCount)
+            out.push_back(axis);
+    }
+    return out;
 }
 
-NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis, const std::function<void(int, int)>& progress,
-                        const std::atomic_bool* cancel)
+std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int sampleFrames)
 {
-    const FrameIndex& index = reader.index();
-    NeedleTrack out;
-    out.axis = axis;
-    const Strip strip(axis, index.width, index.height, 2);
-    if (strip.length < 20)
-        throw VideoError(index.path, QStringLiteral("the needle line lies outside the picture"));
-    // What stays put along the strip, from frames spread over the video.
-    const Samples s = sampleFrames(reader, 40);
-    std::vector<std::vector<double>> g;
-    for (const cv::Mat& f : s.gray)
-        g.push_back(gradient(strip.profile(f)));
-    const double sigma = robustSigma(g);
-    // The tip's edge sign: the one that stands out of the noise more.
-    const std::vector<double> stillUp = staticPart(g, 1), stillDown = staticPart(g, -1);
+    const std::vector<NeedleAxis> c = needleAxisCandidates(reader, roi, 1, sampleFrames);
+    if (c.empty())
+        return std::nullopt;
+    return c.front();
+}
+
+namespace {
+
+// One axis being tracked: its strip, what is always there, the noise and the tip's sign.
+struct AxisTracker {
+    Strip strip;
+    std::vector<double> still;
+    double sigma = 1.0;
     int polarity = 1;
+    double last = kNaN;  // last tip position (profile samples)
+    int lost = 0;        // frames since it was last seen
+    std::vector<double> strengths;
+
+    AxisTracker(const NeedleAxis& axis, const Samples& s) : strip(axis, s.width, s.height, 2)
     {
+        if (strip.length < 20)
+            return;
+        std::vector<std::vector<double>> g;
+        for (const cv::Mat& f : s.gray)
+            g.push_back(gradient(strip.profile(f)));
+        sigma = robustSigma(g);
+        // The tip's edge sign: the one that stands out of the noise more.
+        const std::vector<double> up = staticPart(g, 1), down = staticPart(g, -1);
         double sp = 0, sn = 0;
         for (const auto& gk : g) {
-            sp += strongestEdge(gk, stillUp, 1).strength;
-            sn += strongestEdge(gk, stillDown, -1).strength;
+            sp += strongestEdge(gk, up, 1).strength;
+            sn += strongestEdge(gk, down, -1).strength;
         }
         polarity = sp >= sn ? 1 : -1;
+        still = polarity > 0 ? up : down;
     }
-    const std::vector<double>& still = polarity > 0 ? stillUp : stillDown;
-    const int n = index.size();
-    std::vector<double> strengths;
-    for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
-        const FrameInfo& info = index.frames[std::size_t(i)];
-        out.time_s.push_back(info.time_s);
-        if (info.duplicate) {
-            out.displacement_px.push_back(kNaN);
-            continue;
+
+    // The tip in this frame: searched near where it was (a faint tip in heavy noise beats
+    // the noise nearby more easily than the noise of the whole line), everywhere when it
+    // has been lost for a while. NaN when no edge stands clearly out of the noise.
+    double locate(const cv::Mat& gray)
+    {
+        const std::vector<double> g = gradient(strip.profile(gray));
+        const int n = int(g.size());
+        int lo = 2, hi = n - 3;
+        const bool near = std::isfinite(last) && lost < 8;
+        if (near) {
+            const int w = 24 + 8 * lost;
+            lo = std::max(2, int(last) - w);
+            hi = std::min(n - 3, int(last) + w);
         }
-        const DecodedFrame f = reader.read(i);
-        const Peak p = strongestEdge(gradient(strip.profile(toGray(f.image))), still, polarity);
-        strengths.push_back(p.strength);
-        // An edge not clearly above the noise is not a tip: masked, not guessed.
-        out.displacement_px.push_back(p.strength > 5.0 * sigma ? p.position + strip.origin : kNaN);
-        if (progress && i % 50 == 0)
-            progress(i, n);
+        int best = -1;
+        double bestV = -1e300;
+        for (int i = lo; i <= hi; ++i) {
+            const double v = polarity * g[std::size_t(i)] - still[std::size_t(i)];
+            if (v > bestV) {
+                bestV = v;
+                best = i;
+            }
+        }
+        if (best < 0 || !(bestV > (near ? 3.5 : 5.0) * sigma)) {
+            ++lost;
+            return kNaN;
+        }
+        strengths.push_back(bestV / sigma);
+        auto v = [&](int i) { return polarity * g[std::size_t(i)] - still[std::size_t(i)]; };
+        const double a = v(best - 1), b = v(best), c = v(best + 1), den = a - 2 * b + c;
+        const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
+        last = best + frac;
+        lost = 0;
+        return last;
     }
-    // Isolated jumps (a noise peak elsewhere on the strip) against their neighbours: masked.
-    std::vector<double>& d = out.displacement_px;
+};
+
+// Isolated jumps (a noise peak elsewhere on the strip) against their neighbours: masked.
+void maskJumps(std::vector<double>& d)
+{
     std::vector<double> cleaned = d;
     for (std::size_t i = 0; i < d.size(); ++i) {
         if (!std::isfinite(d[i]))
@@ -458,9 +488,50 @@ NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis, const std::
             cleaned[i] = kNaN;
     }
     d = cleaned;
-    out.masked = int(std::count_if(d.begin(), d.end(), [](double v) { return !std::isfinite(v); }));
-    out.edgeSnr = median(strengths) / sigma;
+}
+
+}  // namespace
+
+std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
+                                      const std::function<void(int, int)>& progress, const std::atomic_bool* cancel)
+{
+    const FrameIndex& index = reader.index();
+    const Samples s = sampleFrames(reader, 40);
+    std::vector<AxisTracker> trackers;
+    std::vector<NeedleTrack> out(axes.size());
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        trackers.emplace_back(axes[a], s);
+        if (trackers.back().strip.length < 20)
+            throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
+        out[a].axis = axes[a];
+    }
+    const int n = index.size();
+    for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
+        const FrameInfo& info = index.frames[std::size_t(i)];
+        cv::Mat gray;
+        if (!info.duplicate)
+            gray = toGray(reader.read(i).image);
+        for (std::size_t a = 0; a < axes.size(); ++a) {
+            out[a].time_s.push_back(info.time_s);
+            const double p = info.duplicate ? kNaN : trackers[a].locate(gray);
+            out[a].displacement_px.push_back(std::isfinite(p) ? p + trackers[a].strip.origin : kNaN);
+        }
+        if (progress && i % 50 == 0)
+            progress(i, n);
+    }
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        maskJumps(out[a].displacement_px);
+        const auto& d = out[a].displacement_px;
+        out[a].masked = int(std::count_if(d.begin(), d.end(), [](double v) { return !std::isfinite(v); }));
+        out[a].edgeSnr = median(trackers[a].strengths);
+    }
     return out;
+}
+
+NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis, const std::function<void(int, int)>& progress,
+                        const std::atomic_bool* cancel)
+{
+    return trackNeedles(reader, {axis}, progress, cancel).front();
 }
 
 NeedleTrack trackBeside(FrameReader& reader, const NeedleAxis& axis, double offset_px, double width_px,
@@ -472,7 +543,7 @@ NeedleTrack trackBeside(FrameReader& reader, const NeedleAxis& axis, double offs
     const int half = std::max(1, int(std::lround(width_px / 2)));
     const Strip strip(axis, index.width, index.height, half, offset_px);
     if (strip.length < 20)
-        throw VideoError(index.path, QStringLiteral("the needle line lies outside the picture"));
+        throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
     // Frame-to-frame shift of the band's texture (normalised cross-correlation of the
     // profiles, to a fraction of a pixel), summed: the band's displacement.
     const int n = index.size();

@@ -37,6 +37,14 @@ struct NeedleTrack {
 // inside `roi` when it is not empty. nullopt when nothing moves along a line. Throws VideoError.
 std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, int sampleFrames = 40);
 
+// The likeliest needle axes, best first (at most `maxCount`).
+std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40);
+
+// Tracks the tip along each axis in every frame, in one pass over the video. Throws VideoError.
+std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
+                                      const std::function<void(int, int)>& progress = {},
+                                      const std::atomic_bool* cancel = nullptr);
+
 // Tracks the tip along `axis` in every frame. Throws VideoError.
 NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis,
                         const std::function<void(int, int)>& progress = {},

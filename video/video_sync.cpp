@@ -4,6 +4,8 @@
 #include "motion_signal.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace nb::video {
 
@@ -13,15 +15,32 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     VideoSync out;
     out.frames = index.size();
     FrameReader reader(index, 8);
-    std::optional<NeedleAxis> axis = options.axis;
-    const bool detected = !axis;
-    if (!axis)
-        axis = detectNeedleAxis(reader, options.roi);
-    if (axis) {
-        out.track = trackNeedle(reader, *axis, progress, cancel);
+    const bool detected = !options.axis;
+    const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(reader, options.roi, 6)
+                                                  : std::vector<NeedleAxis>{*options.axis};
+    if (!axes.empty()) {
+        // Several lines may look like a needle (a plate's edge, a line of text): the one
+        // whose motion explains the recording is the needle.
+        std::vector<NeedleTrack> tracks = trackNeedles(reader, axes, progress, cancel);
+        std::optional<std::size_t> best;
+        std::string problem;
+        for (std::size_t a = 0; a < tracks.size(); ++a) {
+            try {
+                const SyncResult r = synchroniseDisplacement({tracks[a].time_s, tracks[a].displacement_px}, needlePosition(run),
+                                                             index.frameDuration(), options.sync);
+                if (!best || std::make_pair(r.confidence, std::abs(r.correlation))
+                                 > std::make_pair(out.result.confidence, std::abs(out.result.correlation))) {
+                    best = a;
+                    out.result = r;
+                }
+            } catch (const std::invalid_argument& e) {
+                problem = e.what();
+            }
+        }
+        if (!best)
+            throw std::invalid_argument(problem);
+        out.track = std::move(tracks[*best]);
         out.track.axisDetected = detected;
-        out.result = synchroniseDisplacement({out.track.time_s, out.track.displacement_px}, needlePosition(run),
-                                             index.frameDuration(), options.sync);
         return out;
     }
     // No needle to follow: the old, weaker comparison, never confident enough to accept.
