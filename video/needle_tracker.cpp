@@ -5,6 +5,7 @@
 #include "core/tr.h"
 
 #include <QtGlobal>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -301,6 +302,13 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     cv::blur(mean, local, cv::Size(15, 15));
     ridge = cv::abs(mean - local);
     cv::GaussianBlur(ridge, ridge, cv::Size(0, 0), 1.0);
+    if (qEnvironmentVariableIsSet("NB_DEBUG_TRACK")) {
+        cv::Mat m8, r8;
+        mean.convertTo(m8, CV_8U);
+        ridge.convertTo(r8, CV_8U, 2.0);
+        cv::imwrite("/tmp/nb_mean.png", m8);
+        cv::imwrite("/tmp/nb_ridge.png", r8);
+    }
     if (!roi.isEmpty()) {
         cv::Mat mask = cv::Mat::zeros(ridge.size(), CV_32F);
         const cv::Rect r = cv::Rect(roi.x(), roi.y(), roi.width(), roi.height()) & cv::Rect(0, 0, s.width, s.height);
@@ -330,6 +338,11 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         cv::Mat rotated, rows;
         cv::warpAffine(small, rotated, m, cv::Size(diag, diag), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
         cv::reduce(rotated, rows, 1, cv::REDUCE_SUM);  // one sum per horizontal line
+        if (qEnvironmentVariableIsSet("NB_DEBUG_TRACK")) {
+            double mx; cv::Point loc;
+            cv::minMaxLoc(rows, nullptr, &mx, nullptr, &loc);
+            qDebug("angle %d max %g at %d", a, mx, loc.y);
+        }
         for (int y = 1; y + 1 < rows.rows; ++y) {
             const float v = rows.at<float>(y);
             if (v > rows.at<float>(y - 1) && v >= rows.at<float>(y + 1))
@@ -507,13 +520,14 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
     }
     const int n = index.size();
     for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
+        // Frames the index calls duplicates are tracked too: a slow needle in a clean
+        // picture changes too little between frames to tell from a repeat, and a real
+        // repeat only shows its tip one frame late, which the fit over all frames absorbs.
         const FrameInfo& info = index.frames[std::size_t(i)];
-        cv::Mat gray;
-        if (!info.duplicate)
-            gray = toGray(reader.read(i).image);
+        const cv::Mat gray = toGray(reader.read(i).image);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);
-            const double p = info.duplicate ? kNaN : trackers[a].locate(gray);
+            const double p = trackers[a].locate(gray);
             out[a].displacement_px.push_back(std::isfinite(p) ? p + trackers[a].strip.origin : kNaN);
         }
         if (progress && i % 50 == 0)

@@ -7,8 +7,8 @@
 // pixels wide is sampled into a profile; what stays put in the profile (plates, overlays
 // crossing the strip, the shaft's own texture) is removed by subtracting the median gradient
 // over the video, and the moving edge that is left is the tip. Its position is found in every
-// frame on its own (no accumulated drift), to a fraction of a pixel. Duplicated frames and
-// frames where no edge stands out of the noise are masked (NaN), never guessed.
+// frame on its own (no accumulated drift), to a fraction of a pixel. Frames where no edge
+// stands out of the noise are masked (NaN), never guessed.
 
 #include "frame_reader.h"
 
