@@ -20,7 +20,7 @@ int main(int argc, char** argv)
     QCoreApplication app(argc, argv);
     const QStringList a = app.arguments();
     unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
-    int syncCases = 28;
+    int syncCases = 28, frictionCases = 24;
     bool small = false;
     QString keep;
     for (int i = 1; i < a.size(); ++i) {
@@ -28,12 +28,14 @@ int main(int argc, char** argv)
             seed = a[++i].toUInt();
         else if (a[i] == QLatin1String("--sync-cases") && i + 1 < a.size())
             syncCases = a[++i].toInt();
+        else if (a[i] == QLatin1String("--friction-cases") && i + 1 < a.size())
+            frictionCases = a[++i].toInt();
         else if (a[i] == QLatin1String("--small"))
             small = true;
         else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
             keep = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--small] [--keep DIR]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--small] [--keep DIR]\n");
             return 2;
         }
     }
@@ -79,5 +81,28 @@ int main(int argc, char** argv)
                .arg(n ? 100.0 * within1 / n : 0.0, 0, 'f', 1).arg(n ? 100.0 * within2 / n : 0.0, 0, 'f', 1)
                .arg(misses).arg(honestMisses);
     out << "targets: within 1 frame >= 95 %, within 2 frames 100 %, every miss below the threshold\n";
+
+    out << "\n== friction: synthetic Karnopp runs, band found by the fit (no phases given)\n";
+    std::vector<double> errC, errB;
+    int frictionFailed = 0, flagged = 0;
+    for (const FrictionCase& c : drawFrictionCases(rng, frictionCases)) {
+        const FrictionOutcome o = runFrictionCase(c);
+        if (!o.ok) {
+            ++frictionFailed;
+            out << QStringLiteral("  FAILED %1 Hz, band ±%2 mm/s: %3\n").arg(c.frequency_hz, 0, 'f', 2).arg(c.band_mm_s, 0, 'f', 2).arg(o.problem);
+            continue;
+        }
+        errC.push_back(100 * o.errC);
+        errB.push_back(100 * o.errB);
+        flagged += o.flagged;
+        out << QStringLiteral("  %1 Hz, band ±%2 mm/s: found ±%3, C err %4 %, b err %5 %%6\n")
+                   .arg(c.frequency_hz, 0, 'f', 2).arg(c.band_mm_s, 0, 'f', 2).arg(o.bandFound_mm_s, 0, 'f', 2)
+                   .arg(100 * o.errC, 0, 'f', 2).arg(100 * o.errB, 0, 'f', 2).arg(o.flagged ? QStringLiteral(" (flagged)") : QString());
+    }
+    out << QStringLiteral("friction: %1 runs (%2 failed, %3 flagged): C error p50 %4 %, max %5 %; b error p50 %6 %, max %7 %\n")
+               .arg(errC.size() + frictionFailed).arg(frictionFailed).arg(flagged)
+               .arg(quantile(errC, 0.5), 0, 'f', 2).arg(quantile(errC, 1.0), 0, 'f', 2)
+               .arg(quantile(errB, 0.5), 0, 'f', 2).arg(quantile(errB, 1.0), 0, 'f', 2);
+    out << "targets: C within 5 %, b within 15 %\n";
     return 0;
 }

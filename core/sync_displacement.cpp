@@ -1,6 +1,8 @@
 // Synchronisation on the needle's tracked displacement (sync.h).
 #include "sync.h"
 
+#include <QtGlobal>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -81,6 +83,31 @@ std::pair<double, double> bestOffset(const Points& v, const TimeSignal& pos, dou
     return {o, r2s[k]};
 }
 
+// Like bestOffset, but with the scale and intercept of the whole fit held: a stretch of
+// steady motion then still pins the offset (with both free it fits any shift).
+double bestOffsetHeld(const Points& v, const TimeSignal& pos, double drift, double centre, double half, double step,
+                      std::size_t from, std::size_t to, double slope, double intercept)
+{
+    std::vector<double> offs, rss;
+    for (double o = centre - half; o <= centre + half + 1e-12; o += step) {
+        double sum = 0.0;
+        for (std::size_t i = from; i < to; ++i) {
+            const double e = v.d[i] - intercept - slope * positionAt(pos, (v.t[i] - o) / (1.0 + drift));
+            sum += e * e;
+        }
+        offs.push_back(o);
+        rss.push_back(sum);
+    }
+    const std::size_t k = std::size_t(std::min_element(rss.begin(), rss.end()) - rss.begin());
+    double o = offs[k];
+    if (k > 0 && k + 1 < offs.size()) {
+        const double a = rss[k - 1], b = rss[k], c = rss[k + 1], den = a - 2 * b + c;
+        if (std::abs(den) > 1e-15)
+            o += std::clamp(0.5 * (a - c) / den, -0.5, 0.5) * step;
+    }
+    return o;
+}
+
 // When the signal first leaves its resting value `base` by a tenth of its range; nullopt
 // when it does not rest at the start (its first `rest_s` already span a twentieth of it).
 std::optional<double> onsetFrom(const std::vector<double>& t, const std::vector<double>& x, double base, double rest_s)
@@ -143,11 +170,13 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     SyncResult r;
     r.method = QStringLiteral("needle displacement along its axis vs recorded position");
     // Onsets: the rig rests at its first position before the recording.
+    double videoRest = 0.0;
     {
         std::vector<double> restD;
         for (std::size_t i = 0; i < n && v.t[i] - v.t.front() <= 0.5; ++i)
             restD.push_back(v.d[i]);
-        const auto a = onsetFrom(v.t, v.d, medianOf(restD), 0.5);
+        videoRest = medianOf(restD);
+        const auto a = onsetFrom(v.t, v.d, videoRest, 0.5);
         const auto b = onsetFrom(pos.time_s, pos.value, pos.value.front(), 0.0);
         if (a && b)
             r.onsetOffset_s = *a - *b;
@@ -221,6 +250,17 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
                 chosen = c;
             }
     }
+    // A video that starts while the needle moves slowly (near a turning point) looks at
+    // rest at first: its "onset" is no onset. It is one only when the picture's resting
+    // place is where the fit puts the rig's resting position.
+    if (r.onsetOffset_s) {
+        const Fit f = fitAt(v, pos, chosen.offset, chosen.drift, 0, n);
+        const auto [dmin, dmax] = std::minmax_element(v.d.begin(), v.d.end());
+        if (std::abs(videoRest - (f.intercept + f.slope * pos.value.front())) > 0.05 * (*dmax - *dmin)) {
+            r.onsetOffset_s.reset();
+            chosen = refined.front();
+        }
+    }
     const Fit fit = fitAt(v, pos, chosen.offset, chosen.drift, 0, n);
     r.offset_s = chosen.offset;
     r.drift = chosen.drift;
@@ -247,9 +287,9 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         ++split;
     double halves_s = 1e9;
     if (split >= 10 && n - split >= 10) {
-        const auto a = bestOffset(v, pos, chosen.drift, chosen.offset, 3 * frame_s, frame_s / 20, 0, split);
-        const auto b = bestOffset(v, pos, chosen.drift, chosen.offset, 3 * frame_s, frame_s / 20, split, n);
-        halves_s = std::abs(a.first - b.first);
+        const double a = bestOffsetHeld(v, pos, chosen.drift, chosen.offset, 3 * frame_s, frame_s / 20, 0, split, fit.slope, fit.intercept);
+        const double b = bestOffsetHeld(v, pos, chosen.drift, chosen.offset, 3 * frame_s, frame_s / 20, split, n, fit.slope, fit.intercept);
+        halves_s = std::abs(a - b);
     }
     r.uncertainty_s = std::max(3.0 * fitSigma_s, 0.5 * halves_s);
 
@@ -269,6 +309,9 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         qOnset = std::exp(-d * d);
     }
     r.confidence = std::clamp(qFit * qUnique * qPrecise * qOnset, 0.0, 1.0);
+    if (qEnvironmentVariableIsSet("NB_DEBUG_SYNC"))
+        qDebug("sync: offset %.4f drift %.5f r2 %.5f second %.5f fitSigma %.4f halves %.4f | qFit %.2f qUnique %.2f qPrecise %.2f qOnset %.2f",
+               r.offset_s, r.drift, fit.r2, second, fitSigma_s, halves_s, qFit, qUnique, qPrecise, qOnset);
     return r;
 }
 

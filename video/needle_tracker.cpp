@@ -288,7 +288,8 @@ NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough)
 
 }  // namespace
 
-std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int maxCount, int sampleFrames_)
+std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int maxCount, int sampleFrames_,
+                                             std::vector<double>* scores)
 {
     const Samples s = sampleFrames(reader, sampleFrames_);
     if (s.gray.size() < 3)
@@ -404,8 +405,11 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
             const double dist = std::abs((o.x2() - o.x1()) * (o.y1() - mid.y()) - (o.x1() - mid.x()) * (o.y2() - o.y1())) / len;
             alike = alike || (angle < 5.0 && dist < 6.0);
         }
-        if (!alike && int(out.size()) < maxCount)
+        if (!alike && int(out.size()) < maxCount) {
             out.push_back(axis);
+            if (scores)
+                scores->push_back(score);
+        }
     }
     return out;
 }

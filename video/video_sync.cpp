@@ -4,6 +4,7 @@
 #include "motion_signal.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -16,21 +17,28 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     out.frames = index.size();
     FrameReader reader(index, 8);
     const bool detected = !options.axis;
-    const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(reader, options.roi, 6)
+    std::vector<double> scores;
+    const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(reader, options.roi, 6, 40, &scores)
                                                   : std::vector<NeedleAxis>{*options.axis};
     if (!axes.empty()) {
         // Several lines may look like a needle (a plate's edge, a line of text): the one
         // whose motion explains the recording is the needle.
         std::vector<NeedleTrack> tracks = trackNeedles(reader, axes, progress, cancel);
+        // A line that only looks a little like a needle (a fraction of the best line's
+        // score) must explain the recording much better to be taken: a tip that leaves a
+        // slanted strip can still fit a different offset.
         std::optional<std::size_t> best;
+        double bestRank = -1.0;
         std::string problem;
         for (std::size_t a = 0; a < tracks.size(); ++a) {
             try {
                 const SyncResult r = synchroniseDisplacement({tracks[a].time_s, tracks[a].displacement_px}, needlePosition(run),
                                                              index.frameDuration(), options.sync);
-                if (!best || std::make_pair(r.confidence, std::abs(r.correlation))
-                                 > std::make_pair(out.result.confidence, std::abs(out.result.correlation))) {
+                const double looks = scores.empty() ? 1.0 : std::sqrt(scores[a] / scores.front());
+                const double rank = r.confidence * looks + 1e-3 * std::abs(r.correlation);
+                if (!best || rank > bestRank) {
                     best = a;
+                    bestRank = rank;
                     out.result = r;
                 }
             } catch (const std::invalid_argument& e) {

@@ -1,6 +1,9 @@
 #include "accuracy_matrix.h"
 
+#include "core/fit_error.h"
+#include "core/friction_fit.h"
 #include "core/run_file.h"
+#include "core/synthetic.h"
 #include "devices/sim/imaging_render.h"
 #include "video/frame_index.h"
 #include "video/video_error.h"
@@ -365,6 +368,61 @@ SyncOutcome runSyncCase(const SyncCase& c, const QString& executable, const QStr
         out.problem = e.message();
     } catch (const std::exception& e) {
         out.problem = QString::fromUtf8(e.what());
+    }
+    return out;
+}
+
+}  // namespace nb::accuracy
+
+namespace nb::accuracy {
+
+std::vector<FrictionCase> drawFrictionCases(std::mt19937& rng, int count)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<FrictionCase> out;
+    for (int i = 0; i < count; ++i) {
+        FrictionCase c;
+        c.frequency_hz = 0.2 + 0.6 * u(rng);
+        c.band_mm_s = 1.0 + 5.0 * u(rng);
+        c.amplitude_mm = 10.0;
+        c.seed = unsigned(rng() % 100000 + 1);
+        out.push_back(c);
+    }
+    return out;
+}
+
+FrictionOutcome runFrictionCase(const FrictionCase& c)
+{
+    FrictionOutcome out;
+    out.c = c;
+    std::mt19937 rng(c.seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    synthetic::Friction p;
+    p.frequency_hz = c.frequency_hz;
+    p.amplitude_mm = c.amplitude_mm;
+    p.cycles = 6;
+    p.seed = c.seed;
+    p.writePhases = false;  // the fit has to find the band itself
+    p.model.Cp_N = 0.1 + 0.3 * u(rng);
+    p.model.Cn_N = 0.1 + 0.3 * u(rng);
+    p.model.bp_Ns_per_m = 2.0 + 6.0 * u(rng);
+    p.model.bn_Ns_per_m = 2.0 + 6.0 * u(rng);
+    p.model.Dp_N = p.model.Cp_N * (1.3 + 0.7 * u(rng));
+    p.model.Dn_N = -p.model.Cn_N * (1.3 + 0.7 * u(rng));
+    p.model.band_m_s = 2.0 * c.band_mm_s / 1000.0;
+    try {
+        FrictionOptions o;
+        o.thickness_mm = 30.0;
+        o.estimateBand = true;
+        const FrictionFit f = fitFriction(synthetic::makeFriction(p), o);
+        auto rel = [](double got, double truth) { return std::abs(got - truth) / std::abs(truth); };
+        out.errC = std::max(rel(f.model.Cp_N, p.model.Cp_N), rel(f.model.Cn_N, p.model.Cn_N));
+        out.errB = std::max(rel(f.model.bp_Ns_per_m, p.model.bp_Ns_per_m), rel(f.model.bn_Ns_per_m, p.model.bn_Ns_per_m));
+        out.bandFound_mm_s = f.band_m_s * 500.0;
+        out.flagged = !f.notPhysical.isEmpty();
+        out.ok = true;
+    } catch (const FitError& e) {
+        out.problem = e.message();
     }
     return out;
 }
