@@ -20,7 +20,7 @@ int main(int argc, char** argv)
     QCoreApplication app(argc, argv);
     const QStringList a = app.arguments();
     unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
-    int syncCases = 28, frictionCases = 24, phaseCases = 12;
+    int syncCases = 20, frictionCases = 24, phaseCases = 12;
     bool small = false;
     QString keep;
     for (int i = 1; i < a.size(); ++i) {
@@ -75,8 +75,11 @@ int main(int argc, char** argv)
                    .arg(cases[i].describe());
         out.flush();
     }
-    const int n = int(errors.size());
-    out << QStringLiteral("sync: %1 cases (%2 failed to run): p50 %3, p95 %4, max %5 frames; within 1 frame %6 %, within 2 %7 %; "
+    // A case the pipeline could not finish counts as a miss (with no offset to accept).
+    const int n = int(errors.size()) + failed;
+    misses += failed;
+    honestMisses += failed;
+    out << QStringLiteral("sync: %1 cases (%2 failed to run, counted as misses): p50 %3, p95 %4, max %5 frames; within 1 frame %6 %, within 2 %7 %; "
                           "misses %8, of which below the accept threshold %9\n")
                .arg(cases.size()).arg(failed)
                .arg(quantile(errors, 0.5), 0, 'f', 2).arg(quantile(errors, 0.95), 0, 'f', 2).arg(quantile(errors, 1.0), 0, 'f', 2)
