@@ -1,8 +1,6 @@
 // Synchronisation on the needle's tracked displacement (sync.h).
 #include "sync.h"
 
-#include <QtGlobal>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -309,9 +307,6 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         qOnset = std::exp(-d * d);
     }
     r.confidence = std::clamp(qFit * qUnique * qPrecise * qOnset, 0.0, 1.0);
-    if (qEnvironmentVariableIsSet("NB_DEBUG_SYNC"))
-        qDebug("sync: offset %.4f drift %.5f r2 %.5f second %.5f fitSigma %.4f halves %.4f | qFit %.2f qUnique %.2f qPrecise %.2f qOnset %.2f",
-               r.offset_s, r.drift, fit.r2, second, fitSigma_s, halves_s, qFit, qUnique, qPrecise, qOnset);
     return r;
 }
 

@@ -4,8 +4,6 @@
 
 #include "core/tr.h"
 
-#include <QtGlobal>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -303,19 +301,7 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     cv::blur(mean, local, cv::Size(15, 15));
     ridge = cv::abs(mean - local);
     cv::GaussianBlur(ridge, ridge, cv::Size(0, 0), 1.0);
-    if (qEnvironmentVariableIsSet("NB_DEBUG_TRACK")) {
-        cv::Mat m8, r8;
-        mean.convertTo(m8, CV_8U);
-        ridge.convertTo(r8, CV_8U, 2.0);
-        cv::imwrite("/tmp/nb_mean.png", m8);
-        cv::imwrite("/tmp/nb_ridge.png", r8);
-    }
-    if (!roi.isEmpty()) {
-        cv::Mat mask = cv::Mat::zeros(ridge.size(), CV_32F);
-        const cv::Rect r = cv::Rect(roi.x(), roi.y(), roi.width(), roi.height()) & cv::Rect(0, 0, s.width, s.height);
-        mask(r).setTo(1.0f);
-        ridge = ridge.mul(mask);
-    }
+
     // Straight-line sums of the ridge at every angle (a Radon transform by rotation), on a
     // picture at most 360 pixels wide; the strongest lines are the candidates.
     const double scale = std::min(1.0, 360.0 / std::max(s.width, s.height));
@@ -339,11 +325,6 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         cv::Mat rotated, rows;
         cv::warpAffine(small, rotated, m, cv::Size(diag, diag), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
         cv::reduce(rotated, rows, 1, cv::REDUCE_SUM);  // one sum per horizontal line
-        if (qEnvironmentVariableIsSet("NB_DEBUG_TRACK")) {
-            double mx; cv::Point loc;
-            cv::minMaxLoc(rows, nullptr, &mx, nullptr, &loc);
-            qDebug("angle %d max %g at %d", a, mx, loc.y);
-        }
         for (int y = 1; y + 1 < rows.rows; ++y) {
             const float v = rows.at<float>(y);
             if (v > rows.at<float>(y - 1) && v >= rows.at<float>(y + 1))
@@ -387,13 +368,20 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         const double snr = movingEdgeSnr(s, axis);
         // Noise alone gives a strongest edge about 3 σ above the noise.
         const double score = snr < 3.0 ? 0.0 : snr * std::sqrt(c.score);
-        if (qEnvironmentVariableIsSet("NB_DEBUG_TRACK"))
-            qDebug("cand angle %g rho %g ridge %g | rough %g,%g-%g,%g | axis %g,%g-%g,%g snr %g score %g", c.angle_deg, c.rho, c.score,
-                   rough.x1(), rough.y1(), rough.x2(), rough.y2(), axis.x1(), axis.y1(), axis.x2(), axis.y2(), snr, score);
         if (score > 0)
             scored.emplace_back(score, axis);
     }
     std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // The region the operator drew (if any) says where the needle is: lines found in the
+    // whole picture (a part of a line is too short to find it reliably) that cross it.
+    auto crosses = [&](const NeedleAxis& axis) {
+        for (double t = 0; t <= 1.0; t += 0.01)
+            if (roi.contains(axis.pointAt(t).toPoint()))
+                return true;
+        return false;
+    };
+    if (!roi.isEmpty() && std::any_of(scored.begin(), scored.end(), [&](const auto& c) { return crosses(c.second); }))
+        scored.erase(std::remove_if(scored.begin(), scored.end(), [&](const auto& c) { return !crosses(c.second); }), scored.end());
     // Refined lines that ended up alike count once.
     std::vector<NeedleAxis> out;
     for (const auto& [score, axis] : scored) {
