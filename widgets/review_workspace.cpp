@@ -200,7 +200,7 @@ void ReviewWorkspace::buildUi()
                [this] { startAutoSync(); });
     syncLabel_ = new QLabel(this);
     syncLabel_->setToolTip(tr("r: correlation of the needle's tracked displacement with the recorded position at the offset found; "
-                              "confidence also weighs agreement with the motion onsets"));
+                              "confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets"));
     sync->addWidget(syncLabel_);
     acceptButton_ = syncButton(tr("Accept"), tr("use the offset found"), [this] { acceptSync(); });
     overrideBox_ = new QCheckBox(tr("accept a low confidence"), this);

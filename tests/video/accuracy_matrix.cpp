@@ -9,6 +9,7 @@
 #include "devices/sim/imaging_render.h"
 #include "video/frame_index.h"
 #include "video/video_error.h"
+#include "video/video_phases.h"
 #include "video/video_sync.h"
 
 #include <QDir>
@@ -260,7 +261,7 @@ QString encode(const SyncCase& c, const std::vector<cv::Mat>& frames, const Timi
         }
         list.close();
         args << QStringLiteral("-f") << QStringLiteral("concat") << QStringLiteral("-safe") << QStringLiteral("0")
-             << QStringLiteral("-i") << list.fileName() << QStringLiteral("-fps_mode") << QStringLiteral("passthrough")
+             << QStringLiteral("-i") << list.fileName() << QStringLiteral("-fps_mode") << QStringLiteral("vfr")
              << QStringLiteral("-enc_time_base") << QStringLiteral("1/1000") << codec << *path;
         p.start(QStringLiteral("ffmpeg"), args);
         if (!p.waitForFinished(300000) || p.exitCode() != 0)
@@ -456,9 +457,12 @@ PhaseOutcome runPhaseCase(const PhaseCase& c, const QString& executable, const Q
     out.c = c;
     QDir().mkpath(workDir);
     const QString runPath = QDir(workDir).filePath(QStringLiteral("run.csv"));
+    const QString videoPath = QDir(workDir).filePath(QStringLiteral("run.avi"));
     const QStringList args{QStringLiteral("--protocol"), QStringLiteral("friction"), QStringLiteral("--tissue"), c.tissue,
                            QStringLiteral("--frequency-hz"), QString::number(c.frequency_hz, 'f', 4), QStringLiteral("--cycles"),
-                           QString::number(c.cycles), QStringLiteral("--seed"), QString::number(c.seed % 1000 + 1)};
+                           QString::number(c.cycles), QStringLiteral("--seed"), QString::number(c.seed % 1000 + 1),
+                           QStringLiteral("--video"), videoPath, QStringLiteral("--video-offset-s"),
+                           QString::number(0.3 + 3.0 * (c.seed % 97) / 97.0, 'f', 3)};
     if (const QString e = simulate(args, executable, runPath); !e.isEmpty()) {
         out.problem = e;
         return out;
@@ -476,17 +480,25 @@ PhaseOutcome runPhaseCase(const PhaseCase& c, const QString& executable, const Q
         blind.text.erase(std::remove_if(blind.text.begin(), blind.text.end(),
                                         [](const auto& column) { return column.first == QLatin1String("phase"); }),
                          blind.text.end());
-        const QStringList suggested = phasePerSample(suggestLabels(blind), blind.time_s);
-        int agree = 0, counted = 0;
-        for (std::size_t i = 0; i < truth.size(); ++i) {
-            if (truth[i].isEmpty())
-                continue;
-            ++counted;
-            agree += suggested.value(qsizetype(i)) == truth[i];
-        }
-        out.agreementWithoutVideo = counted ? double(agree) / counted : 0.0;
+        auto agreement = [&](const Labels& labels) {
+            const QStringList suggested = phasePerSample(labels, blind.time_s);
+            int agree = 0, counted = 0;
+            for (std::size_t i = 0; i < truth.size(); ++i) {
+                if (truth[i].isEmpty())
+                    continue;
+                ++counted;
+                agree += suggested.value(qsizetype(i)) == truth[i];
+            }
+            return counted ? double(agree) / counted : 0.0;
+        };
+        out.agreementWithoutVideo = agreement(suggestLabels(blind));
+        const video::VideoPhases vp = video::suggestPhasesFromVideo(video::buildFrameIndex(videoPath), blind);
+        out.agreementWithVideo = agreement(vp.labels);
+        out.videoUsed = vp.fromVideo;
         out.ok = true;
     } catch (const RunFileError& e) {
+        out.problem = e.message();
+    } catch (const video::VideoError& e) {
         out.problem = e.message();
     }
     return out;

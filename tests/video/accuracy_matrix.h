@@ -68,6 +68,7 @@ struct PhaseOutcome {
     QString problem;
     double agreementWithVideo = 0.0;     // fraction of samples whose suggested phase is true
     double agreementWithoutVideo = 0.0;
+    bool videoUsed = false;              // false: the video could not be synchronised confidently
 };
 
 std::vector<PhaseCase> drawPhaseCases(std::mt19937& rng, int count);
