@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <limits>
 #include <optional>
 
 namespace nb {
@@ -186,88 +185,6 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
         cStart = std::min(std::max(cStart, aEnd), h.end - 1);
         b2Start = std::clamp(b2Start, aEnd, cStart);
         const double ta = run.time_s[std::min(aEnd, h.end - 1)], tb = run.time_s[b2Start], tc = run.time_s[cStart];
-        if (ta > t0)
-            out.push_back({track, QStringLiteral("a"), t0, ta, source});
-        if (tb > ta)
-            out.push_back({track, QStringLiteral("b1"), ta, tb, source});
-        if (tc > tb)
-            out.push_back({track, QStringLiteral("b2"), tb, tc, source});
-        if (t1 > tc)
-            out.push_back({track, QStringLiteral("c"), tc, t1, source});
-    }
-    return out;
-}
-
-Labels suggestPhaseLabelsFromTissue(const Run& run, const std::vector<double>& tt, const std::vector<double>& tissue,
-                                    const SuggestOptions& o)
-{
-    Labels out;
-    if (run.size() < 10 || tt.size() < 5)
-        return out;
-    const std::vector<double> v = velocity(run);
-    // Tissue velocity per sample of the run: the tracked displacement's slope over a
-    // window of three video frames around the sample.
-    std::vector<double> ft, fx;
-    for (std::size_t k = 0; k < tt.size() && k < tissue.size(); ++k)
-        if (std::isfinite(tt[k]) && std::isfinite(tissue[k])) {
-            ft.push_back(tt[k]);
-            fx.push_back(tissue[k]);
-        }
-    if (ft.size() < 5)
-        return out;
-    auto tissueVelocity = [&](double t) {
-        const std::size_t i = std::size_t(std::lower_bound(ft.begin(), ft.end(), t) - ft.begin());
-        const std::size_t a = i >= 2 ? i - 2 : 0, b = std::min(ft.size() - 1, i + 1);
-        if (b <= a || !(ft[b] > ft[a]))
-            return std::numeric_limits<double>::quiet_NaN();
-        // Least-squares slope over the frames a..b.
-        double st = 0, sx = 0, stt = 0, stx = 0;
-        const double m = double(b - a + 1);
-        for (std::size_t k = a; k <= b; ++k) {
-            st += ft[k];
-            sx += fx[k];
-            stt += ft[k] * ft[k];
-            stx += ft[k] * fx[k];
-        }
-        const double den = m * stt - st * st;
-        return den > 0 ? (m * stx - st * sx) / den : std::numeric_limits<double>::quiet_NaN();
-    };
-    const QString source = QStringLiteral("suggested from the video (tissue motion)");
-    for (const HalfCycle& h : halfCycles(v, o.zeroBand_mm_s)) {
-        if (h.end <= h.start + 4)
-            continue;
-        const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
-        std::size_t aEnd = h.start, b2Start = h.end - 1, cStart = h.end - 1;
-        // c: from where the tissue rests (under a tenth of the needle's speed) to the end.
-        std::size_t i = h.end;
-        while (i > h.start) {
-            const double vt = tissueVelocity(run.time_s[i - 1]);
-            if (std::isfinite(vt) && std::abs(vt) > 0.1 * std::max(std::abs(v[i - 1]), o.zeroBand_mm_s))
-                break;
-            --i;
-        }
-        cStart = i;
-        // a: while the tissue keeps up with the needle.
-        aEnd = h.start;
-        while (aEnd < cStart) {
-            const double vt = tissueVelocity(run.time_s[aEnd]);
-            if (std::isfinite(vt) && std::abs(v[aEnd] - vt) > 0.3 * std::max(std::abs(v[aEnd]), o.zeroBand_mm_s))
-                break;
-            ++aEnd;
-        }
-        // b2: once the tissue has lost half the needle's speed.
-        b2Start = aEnd;
-        while (b2Start < cStart) {
-            const double vt = tissueVelocity(run.time_s[b2Start]);
-            if (std::isfinite(vt) && std::abs(vt) < 0.5 * std::abs(v[b2Start]))
-                break;
-            ++b2Start;
-        }
-        cStart = std::min(cStart, h.end - 1);
-        aEnd = std::min(aEnd, cStart);
-        b2Start = std::clamp(b2Start, aEnd, cStart);
-        const double t0 = run.time_s[h.start], t1 = run.time_s[h.end - 1];
-        const double ta = run.time_s[aEnd], tb = run.time_s[b2Start], tc = run.time_s[cStart];
         if (ta > t0)
             out.push_back({track, QStringLiteral("a"), t0, ta, source});
         if (tb > ta)

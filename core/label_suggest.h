@@ -24,13 +24,6 @@ Labels suggestLabels(const Run& run, const SuggestOptions& options = {});
 
 Labels suggestPhaseLabels(const Run& run, const SuggestOptions& options = {});
 
-// Phases read off the tissue's motion as the operator reads them in the imaging video
-// (models.md §5): `tissue_mm` is the tissue's displacement along the needle at
-// `tissueTime_s` (recording time, NaN where unknown). Per half-cycle: a while the tissue
-// moves with the needle, c once it rests, b1 from the slip until it has lost half the
-// needle's speed, b2 from there until it rests. Labels say they come from the video.
-Labels suggestPhaseLabelsFromTissue(const Run& run, const std::vector<double>& tissueTime_s,
-                                    const std::vector<double>& tissue_mm, const SuggestOptions& options = {});
 Labels suggestEventLabels(const Run& run);
 
 }  // namespace nb

@@ -52,11 +52,4 @@ NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis,
                         const std::function<void(int, int)>& progress = {},
                         const std::atomic_bool* cancel = nullptr);
 
-// Motion along the axis of what lies in a band beside the needle (the tissue), in pixels,
-// frame by frame; positive towards the axis' p2(). The band runs parallel to the axis at
-// `offset_px` from it on either side (both sides averaged), `width_px` wide. Duplicates NaN.
-NeedleTrack trackBeside(FrameReader& reader, const NeedleAxis& axis, double offset_px = 12.0, double width_px = 16.0,
-                        const std::function<void(int, int)>& progress = {},
-                        const std::atomic_bool* cancel = nullptr);
-
 }  // namespace nb::video

@@ -9,7 +9,6 @@
 #include "devices/sim/imaging_render.h"
 #include "video/frame_index.h"
 #include "video/video_error.h"
-#include "video/video_phases.h"
 #include "video/video_sync.h"
 
 #include <QDir>
@@ -457,12 +456,9 @@ PhaseOutcome runPhaseCase(const PhaseCase& c, const QString& executable, const Q
     out.c = c;
     QDir().mkpath(workDir);
     const QString runPath = QDir(workDir).filePath(QStringLiteral("run.csv"));
-    const QString videoPath = QDir(workDir).filePath(QStringLiteral("run.avi"));
     const QStringList args{QStringLiteral("--protocol"), QStringLiteral("friction"), QStringLiteral("--tissue"), c.tissue,
                            QStringLiteral("--frequency-hz"), QString::number(c.frequency_hz, 'f', 4), QStringLiteral("--cycles"),
-                           QString::number(c.cycles), QStringLiteral("--seed"), QString::number(c.seed % 1000 + 1),
-                           QStringLiteral("--video"), videoPath, QStringLiteral("--video-offset-s"),
-                           QString::number(0.3 + 3.0 * (c.seed % 97) / 97.0, 'f', 3)};
+                           QString::number(c.cycles), QStringLiteral("--seed"), QString::number(c.seed % 1000 + 1)};
     if (const QString e = simulate(args, executable, runPath); !e.isEmpty()) {
         out.problem = e;
         return out;
@@ -492,13 +488,8 @@ PhaseOutcome runPhaseCase(const PhaseCase& c, const QString& executable, const Q
             return counted ? double(agree) / counted : 0.0;
         };
         out.agreementWithoutVideo = agreement(suggestLabels(blind));
-        const video::VideoPhases vp = video::suggestPhasesFromVideo(video::buildFrameIndex(videoPath), blind);
-        out.agreementWithVideo = agreement(vp.labels);
-        out.videoUsed = vp.fromVideo;
         out.ok = true;
     } catch (const RunFileError& e) {
-        out.problem = e.message();
-    } catch (const video::VideoError& e) {
         out.problem = e.message();
     }
     return out;

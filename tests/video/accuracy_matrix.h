@@ -66,9 +66,7 @@ struct PhaseOutcome {
     PhaseCase c;
     bool ok = false;
     QString problem;
-    double agreementWithVideo = 0.0;     // fraction of samples whose suggested phase is true
-    double agreementWithoutVideo = 0.0;
-    bool videoUsed = false;              // false: the video could not be synchronised confidently
+    double agreementWithoutVideo = 0.0;  // fraction of samples whose suggested phase is true
 };
 
 std::vector<PhaseCase> drawPhaseCases(std::mt19937& rng, int count);
