@@ -17,10 +17,9 @@
 #include "core/run_file.h"
 #include "core/session.h"
 #include "core/sync.h"
-#include "devices/video/frame_index.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/motion_signal.h"
-#include "devices/video/video_error.h"
+#include "video/frame_index.h"
+#include "video/video_error.h"
+#include "video/video_sync.h"
 #include "widgets/analysis/analysis_plots.h"
 #include "widgets/analysis/figure_export.h"
 
@@ -44,17 +43,6 @@ constexpr int kFrictionCycles = 7;
 // about 1800 frames of incompressible noise, which H.264 at full size takes minutes for.
 constexpr int kVideoWidth = 360, kVideoHeight = 240;
 constexpr double kVideoFps = 30000.0 / 1001.0;
-
-// The needle is drawn 3 px wide down the middle of the renderer's centre pane, which holds
-// the full needle (the outer slices show a faint trace). A strip just that wide sees the tip
-// come and go and little of the tissue speckle beside it, whose stick-slip would otherwise
-// blur the correlation (a 60 px strip put the offset 150-300 ms off, this one a frame).
-QRect needleRegion()
-{
-    const int pane = kVideoWidth / 3;
-    const int centre = pane + pane / 2;
-    return QRect(centre - 2, 0, 4, kVideoHeight);
-}
 
 struct Step {
     QString protocol, tissue;
@@ -186,14 +174,12 @@ int cmdDemo(const QStringList& args, Io io)
             step(nb::TrCli::tr("rendered imaging video %1 (%2 frames at 29.97/s, started %3 s before the recording)")
                      .arg(v.video).arg(v.frames).arg(request.videoOffset_s, 0, 'f', 2));
 
-            // Found the way a user would: the needle's motion in the video against its speed.
+            // Found the way a user would: the needle tracked in the video against its position.
             try {
-                devices::FrameReader reader(devices::buildFrameIndex(videoPath), 8);
-                const devices::MotionSignal motion = devices::computeMotionSignal(reader, needleRegion());
-                SyncOptions so;
-                so.maxOffset_s = 5.0;
-                v.sync = synchronise({motion.time_s, motion.value}, needleSpeed(run), so);
-            } catch (const devices::VideoError& e) {
+                video::VideoSyncOptions so;
+                so.sync.maxOffset_s = 5.0;
+                v.sync = video::syncVideoToRun(video::buildFrameIndex(videoPath), run, so).result;
+            } catch (const video::VideoError& e) {
                 v.syncProblem = e.message();
             } catch (const std::invalid_argument& e) {
                 v.syncProblem = QString::fromUtf8(e.what());
@@ -203,7 +189,9 @@ int cmdDemo(const QStringList& args, Io io)
             if (v.sync) {
                 run.metadata.set(QStringLiteral("sync_offset_s"), v.sync->offset_s);
                 run.metadata.set(QStringLiteral("sync_confidence"), v.sync->confidence);
-                run.metadata.set(QStringLiteral("sync_method"), QStringLiteral("video motion vs needle speed (needlebench demo)"));
+                run.metadata.set(QStringLiteral("sync_method"), v.sync->method + QStringLiteral(" (needlebench demo)"));
+                if (v.sync->drift != 0.0)
+                    run.metadata.set(QStringLiteral("sync_drift"), v.sync->drift);
                 step(nb::TrCli::tr("synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5")
                          .arg(v.video)
                          .arg(v.sync->offset_s, 0, 'f', 3)

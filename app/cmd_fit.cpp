@@ -262,7 +262,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
     const QCommandLineOption mass(QStringLiteral("mass-kg"),
                                   nb::TrCli::tr("needle holder mass removed from the force (eq. 21, default 0.087)"), QStringLiteral("M"));
     const QCommandLineOption estimate(QStringLiteral("estimate-mass"), nb::TrCli::tr("estimate the mass with the friction (eq. 19)"));
-    const QCommandLineOption band(QStringLiteral("band-m-s"), nb::TrCli::tr("zero-velocity band width (default 0.005 = ±2.5 mm/s)"),
+    const QCommandLineOption band(QStringLiteral("band-m-s"),
+                                  nb::TrCli::tr("zero-velocity band width, e.g. 0.005 = ±2.5 mm/s (default: found in each run's data)"),
                                   QStringLiteral("B"));
     const QCommandLineOption labels(QStringLiteral("labels"),
                                     nb::TrCli::tr("phase labels (track,label,start_s,end_s,comment) for a single run; "
@@ -297,6 +298,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
             return usage(nb::TrCli::tr("--mass-kg: '%1' is not a mass").arg(parser.value(mass)));
     }
     options.estimateMass = parser.isSet(estimate);
+    options.estimateBand = !parser.isSet(band);
     if (parser.isSet(band)) {
         if (const auto b = positiveNumber(parser.value(band)))
             options.band_m_s = *b;
@@ -341,7 +343,17 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           {QStringLiteral("static_source"), f.staticSource},
                           {QStringLiteral("samples_positive"), qint64(f.positiveSamples)},
                           {QStringLiteral("samples_negative"), qint64(f.negativeSamples)},
-                          {QStringLiteral("per_length"), toJson(f.perLength)}};
+                          {QStringLiteral("per_length"), toJson(f.perLength)},
+                          {QStringLiteral("band_m_s"), f.band_m_s},
+                          {QStringLiteral("band_estimated"), f.bandEstimated},
+                          {QStringLiteral("band_slowing_down_m_s"), f.bandEstimated ? f.bandSlowingDown_m_s : f.band_m_s},
+                          {QStringLiteral("standard_errors"), QJsonObject{{QStringLiteral("Cp_N"), f.seCp_N},
+                                                                          {QStringLiteral("Cn_N"), f.seCn_N},
+                                                                          {QStringLiteral("bp_Ns_per_m"), f.seBp_Ns_per_m},
+                                                                          {QStringLiteral("bn_Ns_per_m"), f.seBn_Ns_per_m}}},
+                          {QStringLiteral("physical"), f.notPhysical.isEmpty()},
+                          {QStringLiteral("not_physical"), QJsonArray::fromStringList(f.notPhysical)},
+                          {QStringLiteral("not_physical_values"), QJsonArray::fromStringList(f.notPhysicalValues)}};
             if (f.massEstimate_kg)
                 o.insert(QStringLiteral("m_est_kg"), *f.massEstimate_kg);
             runs.append(o);
@@ -353,7 +365,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
                        {QStringLiteral("by_frequency"), byFrequency},
                        {QStringLiteral("overall"), groupJson(all, false)},
                        {QStringLiteral("thickness_mm"), options.thickness_mm},
-                       {QStringLiteral("band_m_s"), options.band_m_s}});
+                       {QStringLiteral("band_m_s"), options.estimateBand && !fits.empty() ? fits.front().band_m_s : options.band_m_s},
+                       {QStringLiteral("band_estimated"), options.estimateBand}});
         return Ok;
     }
     io.out << nb::TrCli::tr("friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²\n")
@@ -362,17 +375,23 @@ int fitFrictionCommand(const QStringList& args, Io io)
     io.out << nb::TrCli::tr("group             statistic freq_Hz ") << (m ? nb::TrCli::tr("  m_est_kg ") : QString())
            << nb::TrCli::tr("       Cp        Bp        Cn        Bn        Dp        Dn\n");
     auto line = [&](const QString& group, const QString& stat, const QString& freq, std::optional<double> mass,
-                    const KarnoppPerLength& p, bool defined = true) {
+                    const KarnoppPerLength& p, bool defined = true, const QStringList& notPhysical = {}) {
         io.out << group.left(17).leftJustified(17) << ' ' << stat.leftJustified(9) << ' ' << freq.rightJustified(7) << ' ';
         if (m)
             io.out << (mass && defined ? num(*mass, 4) : QString()).rightJustified(10) << ' ';
-        for (double v : {p.Cp_N_per_m, p.bp_Ns_per_m2, p.Cn_N_per_m, p.bn_Ns_per_m2, p.Dp_N_per_m, p.Dn_N_per_m})
-            io.out << (defined ? num(v, 5) : QString()).rightJustified(9) << ' ';
+        // A value flagged as not physical is not printed as a result; an undefined statistic is left empty.
+        const char* names[] = {"Cp", "bp", "Cn", "bn", "Dp", "Dn"};
+        int k = 0;
+        for (double v : {p.Cp_N_per_m, p.bp_Ns_per_m2, p.Cn_N_per_m, p.bn_Ns_per_m2, p.Dp_N_per_m, p.Dn_N_per_m}) {
+            const QString name = QString::fromLatin1(names[k++]);
+            const bool bad = notPhysical.contains(name);
+            io.out << (!defined ? QString() : bad ? nb::TrCli::tr("not phys.") : num(v, 5)).rightJustified(9) << ' ';
+        }
         io.out << '\n';
     };
     for (std::size_t i = 0; i < fits.size(); ++i)
         line(QFileInfo(files[qsizetype(i)]).fileName(), nb::TrCli::tr("run"), num(fits[i].frequency_hz, 3), fits[i].massEstimate_kg,
-             fits[i].perLength);
+             fits[i].perLength, true, fits[i].notPhysicalValues);
     for (const FrictionGroup& g : groups) {
         const QString name = nb::TrCli::tr("%1Hz (%2 runs)").arg(num(g.frequency_hz, 3)).arg(g.runs);
         line(name, nb::TrCli::tr("mean"), num(g.frequency_hz, 3), g.massEstimateMean_kg, g.mean);
@@ -380,9 +399,21 @@ int fitFrictionCommand(const QStringList& args, Io io)
     }
     line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("mean"), QString(), all.massEstimateMean_kg, all.mean);
     line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev, all.runs > 1);
-    for (std::size_t i = 0; i < fits.size(); ++i)
-        io.out << nb::TrCli::tr("%1: D from %2, rms %3 N\n")
-                      .arg(QFileInfo(files[qsizetype(i)]).fileName(), fits[i].staticSource, num(fits[i].rms_N, 3));
+    for (std::size_t i = 0; i < fits.size(); ++i) {
+        const FrictionFit& f = fits[i];
+        const QString name = QFileInfo(files[qsizetype(i)]).fileName();
+        io.out << nb::TrCli::tr("%1: D from %2, rms %3 N\n").arg(name, f.staticSource, num(f.rms_N, 3));
+        if (f.bandEstimated)
+            io.out << nb::TrCli::tr("%1: zero-velocity band found in the data: ±%2 mm/s after turning points, ±%3 mm/s before them\n")
+                          .arg(name, num(f.band_m_s * 500.0, 3), num(f.bandSlowingDown_m_s * 500.0, 3));
+        else
+            io.out << nb::TrCli::tr("%1: zero-velocity band ±%2 mm/s (given)\n").arg(name, num(f.band_m_s * 500.0, 3));
+        const double L = options.thickness_mm / 1000.0;
+        io.out << nb::TrCli::tr("%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5\n")
+                      .arg(name, num(f.seCp_N / L, 3), num(f.seBp_Ns_per_m / L, 3), num(f.seCn_N / L, 3), num(f.seBn_Ns_per_m / L, 3));
+        for (const QString& why : f.notPhysical)
+            io.out << nb::TrCli::tr("%1: NOT PHYSICAL: %2\n").arg(name, why);
+    }
     return Ok;
 }
 

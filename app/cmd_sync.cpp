@@ -1,17 +1,22 @@
-// `needlebench sync RUN.csv VIDEO [--roi x,y,w,h] [--json]`: finds the offset between the
-// video and the force record by correlating video motion with the needle's speed.
+// `needlebench sync RUN.csv VIDEO [--roi x,y,w,h] [--needle x1,y1,x2,y2] [--json]`: finds the
+// offset (and drift) between the video and the force record from the needle's displacement
+// tracked in the picture (video/video_sync.h).
 #include "cli_support.h"
 #include "core/tr.h"
 
 #include "core/run_file.h"
 #include "core/sync.h"
-#include "devices/video/frame_index_store.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/motion_signal.h"
-#include "devices/video/video_error.h"
+#include "video/frame_index_store.h"
+#include "video/video_error.h"
+#include "video/video_sync.h"
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QJsonArray>
+#include <QTextStream>
 #include <QRect>
+
+#include <cmath>
 
 namespace nb::cli {
 
@@ -25,8 +30,14 @@ int cmdSync(const QStringList& args, Io io)
                                  QStringLiteral("x,y,w,h"));
     const QCommandLineOption maxOffset(QStringLiteral("max-offset"), nb::TrCli::tr("largest offset to consider, seconds (default 20)"),
                                        QStringLiteral("S"), QStringLiteral("20"));
+    const QCommandLineOption needle(QStringLiteral("needle"),
+                                    nb::TrCli::tr("the needle's line in the picture, in pixels (default: found in the picture)"),
+                                    QStringLiteral("x1,y1,x2,y2"));
     const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
-    parser.addOptions({roi, maxOffset, json});
+    const QCommandLineOption trace(QStringLiteral("trace"),
+                                   nb::TrCli::tr("also write the needle's tracked displacement per frame (time_s,displacement_px) to FILE"),
+                                   QStringLiteral("FILE.csv"));
+    parser.addOptions({roi, maxOffset, needle, trace, json});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("sync"), args, io, 2, 2, &code))
         return code;
@@ -43,8 +54,21 @@ int cmdSync(const QStringList& args, Io io)
         }
         region = QRect(v[0], v[1], v[2], v[3]);
     }
+    video::VideoSyncOptions vso;
+    if (parser.isSet(needle)) {
+        const QStringList p = parser.value(needle).split(QLatin1Char(','));
+        bool ok = p.size() == 4;
+        double v[4] = {0, 0, 0, 0};
+        for (int i = 0; ok && i < 4; ++i)
+            v[i] = p[i].trimmed().toDouble(&ok);
+        if (!ok || std::hypot(v[2] - v[0], v[3] - v[1]) < 2.0) {
+            io.err << nb::TrCli::tr("needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points\n\n") << parser.helpText();
+            return Usage;
+        }
+        vso.axis = video::NeedleAxis(v[0], v[1], v[2], v[3]);
+    }
     bool ok = false;
-    SyncOptions options;
+    SyncOptions& options = vso.sync;
     options.maxOffset_s = parser.value(maxOffset).toDouble(&ok);
     if (!ok || options.maxOffset_s <= 0) {
         io.err << nb::TrCli::tr("needlebench sync: --max-offset wants a positive number of seconds\n");
@@ -53,15 +77,28 @@ int cmdSync(const QStringList& args, Io io)
     const QString runPath = parser.positionalArguments()[0], videoPath = parser.positionalArguments()[1];
     try {
         const Run run = readRunFile(runPath).run;
-        devices::FrameReader reader(devices::loadOrBuildFrameIndex(videoPath), 8);
-        if (!region.isEmpty() && !QRect(0, 0, reader.index().width, reader.index().height).contains(region)) {
+        const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
+        if (!region.isEmpty() && !QRect(0, 0, index.width, index.height).contains(region)) {
             io.err << nb::TrCli::tr("needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture\n")
                           .arg(region.x()).arg(region.y()).arg(region.width()).arg(region.height())
-                          .arg(reader.index().width).arg(reader.index().height);
+                          .arg(index.width).arg(index.height);
             return Usage;
         }
-        const devices::MotionSignal motion = devices::computeMotionSignal(reader, region);
-        const SyncResult r = synchronise({motion.time_s, motion.value}, needleSpeed(run), options);
+        vso.roi = region;
+        const video::VideoSync vs = video::syncVideoToRun(index, run, vso);
+        const SyncResult& r = vs.result;
+        if (parser.isSet(trace)) {
+            QFile f(parser.value(trace));
+            if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
+                io.err << "needlebench sync: " << nb::TrCli::tr("%1: cannot write the trace here").arg(f.fileName()) << '\n';
+                return Failure;
+            }
+            QTextStream ts(&f);
+            ts << "time_s,displacement_px\n";
+            for (std::size_t i = 0; i < vs.track.time_s.size(); ++i)
+                ts << QString::number(vs.track.time_s[i], 'f', 6) << ','
+                   << (std::isfinite(vs.track.displacement_px[i]) ? QString::number(vs.track.displacement_px[i], 'f', 3) : QString()) << '\n';
+        }
         if (parser.isSet(json)) {
             QJsonObject o;
             o[QStringLiteral("offset_s")] = r.offset_s;
@@ -69,7 +106,20 @@ int cmdSync(const QStringList& args, Io io)
             o[QStringLiteral("correlation")] = r.correlation;
             if (r.onsetOffset_s)
                 o[QStringLiteral("onset_offset_s")] = *r.onsetOffset_s;
-            o[QStringLiteral("frames")] = reader.index().size();
+            o[QStringLiteral("frames")] = index.size();
+            o[QStringLiteral("drift")] = r.drift;
+            o[QStringLiteral("uncertainty_s")] = r.uncertainty_s;
+            o[QStringLiteral("uncertainty_frames")] = r.uncertainty_s / index.frameDuration();
+            o[QStringLiteral("scale_px_per_mm")] = r.scale_px_per_mm;
+            o[QStringLiteral("method")] = r.method;
+            o[QStringLiteral("accept_threshold")] = kSyncAcceptConfidence;
+            o[QStringLiteral("acceptable")] = r.acceptable();
+            if (!vs.track.time_s.empty()) {
+                const QLineF& a = vs.track.axis;
+                o[QStringLiteral("needle")] = QJsonArray{a.x1(), a.y1(), a.x2(), a.y2()};
+                o[QStringLiteral("needle_found")] = vs.track.axisDetected;
+                o[QStringLiteral("frames_masked")] = vs.track.masked;
+            }
             printJson(io, o);
         } else {
             io.out << nb::TrCli::tr("offset:      %1 s (video time minus recording time)\n").arg(r.offset_s, 0, 'f', 4)
@@ -77,11 +127,23 @@ int cmdSync(const QStringList& args, Io io)
                    << nb::TrCli::tr("correlation: %1\n").arg(r.correlation, 0, 'f', 3);
             if (r.onsetOffset_s)
                 io.out << nb::TrCli::tr("onsets say:  %1 s\n").arg(*r.onsetOffset_s, 0, 'f', 4);
+            io.out << nb::TrCli::tr("drift:       %1 %\n").arg(100.0 * r.drift, 0, 'f', 4)
+                   << nb::TrCli::tr("uncertainty: %1 frames\n").arg(r.uncertainty_s / index.frameDuration(), 0, 'f', 2);
+            if (!vs.track.time_s.empty()) {
+                const QLineF& a = vs.track.axis;
+                io.out << nb::TrCli::tr("needle:      %1,%2 to %3,%4 (%5)\n")
+                              .arg(a.x1(), 0, 'f', 1).arg(a.y1(), 0, 'f', 1).arg(a.x2(), 0, 'f', 1).arg(a.y2(), 0, 'f', 1)
+                              .arg(vs.track.axisDetected ? nb::TrCli::tr("found in the picture") : nb::TrCli::tr("given"));
+            }
+            io.out << nb::TrCli::tr("method:      %1\n").arg(r.method);
+            if (!r.acceptable())
+                io.out << nb::TrCli::tr("LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it\n")
+                              .arg(kSyncAcceptConfidence, 0, 'f', 2);
         }
         return Ok;
     } catch (const RunFileError& e) {
         io.err << "needlebench sync: " << e.message() << '\n';
-    } catch (const devices::VideoError& e) {
+    } catch (const video::VideoError& e) {
         io.err << "needlebench sync: " << e.message() << '\n';
     } catch (const std::invalid_argument& e) {
         io.err << "needlebench sync: " << nb::TrCli::tr("cannot synchronise: %1").arg(QString::fromUtf8(e.what())) << '\n';

@@ -2,10 +2,10 @@
 #include "cli_support.h"
 #include "core/tr.h"
 
-#include "devices/video/frame_index.h"
-#include "devices/video/frame_index_store.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/video_error.h"
+#include "video/frame_index.h"
+#include "video/frame_index_store.h"
+#include "video/frame_reader.h"
+#include "video/video_error.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -13,7 +13,7 @@
 
 namespace nb::cli {
 
-using nb::devices::FrameIndex;
+using nb::video::FrameIndex;
 
 static QJsonObject infoJson(const FrameIndex& index)
 {
@@ -50,7 +50,7 @@ int cmdVideoInfo(const QStringList& args, Io io)
         return code;
     const QString path = parser.positionalArguments().first();
     try {
-        const FrameIndex index = nb::devices::loadOrBuildFrameIndex(path);
+        const FrameIndex index = nb::video::loadOrBuildFrameIndex(path);
         for (const QString& w : index.warnings)
             io.err << nb::TrCli::tr("warning: %1: %2").arg(path, w) << '\n';
         if (parser.isSet(json)) {
@@ -66,7 +66,7 @@ int cmdVideoInfo(const QStringList& args, Io io)
                    << nb::TrCli::tr("duplicates:  %1\n").arg(index.duplicateCount());
         }
         return Ok;
-    } catch (const nb::devices::VideoError& e) {
+    } catch (const nb::video::VideoError& e) {
         io.err << "needlebench video-info: " << e.message() << '\n';
         return Failure;
     }
@@ -94,7 +94,7 @@ int cmdFrame(const QStringList& args, Io io)
     const QString path = parser.positionalArguments().first();
     const QString out = parser.value(outOpt);
     try {
-        nb::devices::FrameReader reader(nb::devices::loadOrBuildFrameIndex(path), 4);
+        nb::video::FrameReader reader(nb::video::loadOrBuildFrameIndex(path), 4);
         const auto frame = reader.read(n);
         bool written = false;
         try {
@@ -116,7 +116,7 @@ int cmdFrame(const QStringList& args, Io io)
             io.out << nb::TrCli::tr("frame %1 at %2 s written to %3\n").arg(frame.index).arg(frame.time_s, 0, 'f', 6).arg(out);
         }
         return Ok;
-    } catch (const nb::devices::VideoError& e) {
+    } catch (const nb::video::VideoError& e) {
         io.err << "needlebench frame: " << e.message() << '\n';
         return Failure;
     }

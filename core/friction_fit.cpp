@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace nb {
 
@@ -49,8 +50,138 @@ double estimateFrequency(const Run& run)
     return span > 0.0 ? double(crossings.size() - 1) / 2.0 / span : 0.0;
 }
 
-FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QStringList& givenPhases)
+namespace {
+
+// Sliding lines per direction through (v, F), least squares; nullopt when too few samples.
+struct Line {
+    double c = 0.0, b = 0.0, sd = 0.0;
+};
+std::optional<Line> lineThrough(const std::vector<double>& v, const std::vector<double>& f)
 {
+    const std::size_t n = v.size();
+    if (n < 10)
+        return std::nullopt;
+    double sv = 0, sf = 0, svv = 0, svf = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        sv += v[i];
+        sf += f[i];
+        svv += v[i] * v[i];
+        svf += v[i] * f[i];
+    }
+    const double den = n * svv - sv * sv;
+    if (!(std::fabs(den) > 1e-18))
+        return std::nullopt;
+    Line l;
+    l.b = (n * svf - sv * sf) / den;
+    l.c = (sf - l.b * sv) / double(n);
+    double rss = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        rss += std::pow(f[i] - l.c - l.b * v[i], 2);
+    l.sd = std::sqrt(rss / double(n - 2));
+    return l;
+}
+
+}  // namespace
+
+BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
+{
+    const std::size_t n = run.size();
+    const std::size_t trim = std::size_t(std::max(0, options.trimSamples));
+    if (n < 2 * trim + 50)
+        throw FitError(QCoreApplication::translate("nb::fit", "too few samples (%1) to find the zero-velocity band").arg(n));
+    const int w = windowForDuration(run.time_s, options.smoothing_s);
+    const std::vector<double> x = movingAverage(run.position_mm, w);
+    std::vector<double> v = movingAverage(derivative(run.time_s, x), w);
+    for (double& e : v)
+        e /= 1000.0;
+    const std::vector<double> a = movingAverage(derivative(run.time_s, v), w);
+    const std::vector<double> f = movingAverage(run.force_N, w);
+    std::vector<double> speeds;
+    for (std::size_t i = trim; i < n - trim; ++i)
+        speeds.push_back(std::fabs(v[i]));
+    std::sort(speeds.begin(), speeds.end());
+    const double vmax = speeds[speeds.size() * 95 / 100];
+    if (!(vmax > 0))
+        throw FitError(QCoreApplication::translate("nb::fit", "no motion: the zero-velocity band cannot be found"));
+    const double step = vmax / 40.0;
+    const double mass = options.estimateMass ? 0.0 : options.mass_kg;
+    auto force = [&](std::size_t i) { return f[i] - mass * a[i]; };
+    // Four groups: direction (+, −) × speeding up or slowing down. Before a turning point
+    // the needle slides through tissue at rest, so the slowing-down samples above half the
+    // peak speed give the reference lines; they are extended towards zero speed while their
+    // samples follow (refitting with each step). Then the speeding-up samples, where the
+    // tissue may be carried along, are taken from the peak speed down while they follow.
+    auto group = [&](std::size_t i) { return (v[i] > 0 ? 0 : 2) + (v[i] * a[i] > 0 ? 0 : 1); };
+    double h[4] = {vmax * 1.5, 0.5 * vmax, vmax * 1.5, 0.5 * vmax};
+    auto bias = [&](int g, const Line& l, double lo, double hi, int* count) {
+        double sum = 0;
+        *count = 0;
+        for (std::size_t i = trim; i < n - trim; ++i)
+            if (group(i) == g && std::fabs(v[i]) >= lo && std::fabs(v[i]) < hi) {
+                sum += force(i) - l.c - l.b * v[i];
+                ++*count;
+            }
+        return *count ? sum / *count : 0.0;
+    };
+    auto departs = [&](int g, const Line& l, double lo, double hi) {
+        int count = 0;
+        const double mean = bias(g, l, lo, hi, &count);
+        // Smoothed neighbours share their noise: count a window as one sample.
+        const double effective = std::max(1.0, double(count) / std::max(1, w));
+        return count >= 3 && std::fabs(mean) > 3.0 * l.sd / std::sqrt(effective) + 0.02 * std::fabs(l.c);
+    };
+    auto lines = [&]() {
+        std::vector<double> vd[2], fd[2];
+        for (std::size_t i = trim; i < n - trim; ++i) {
+            const int g = group(i);
+            if ((g == 1 || g == 3) && std::fabs(v[i]) >= h[g]) {
+                vd[g / 2].push_back(v[i]);
+                fd[g / 2].push_back(force(i));
+            }
+        }
+        return std::pair{lineThrough(vd[0], fd[0]), lineThrough(vd[1], fd[1])};
+    };
+    bool open[2] = {true, true};
+    for (;;) {
+        const auto [lp, ln] = lines();
+        if (!lp || !ln)
+            throw FitError(QCoreApplication::translate("nb::fit", "too few sliding samples to find the zero-velocity band"));
+        bool any = false;
+        for (int k = 0; k < 2; ++k) {
+            const int g = k == 0 ? 1 : 3;
+            if (!open[k] || h[g] - step < 0.5 * step || departs(g, k == 0 ? *lp : *ln, h[g] - step, h[g])) {
+                open[k] = false;
+                continue;
+            }
+            h[g] -= step;
+            any = true;
+        }
+        if (!any)
+            break;
+    }
+    const auto [lp, ln] = lines();
+    for (int g : {0, 2}) {
+        const Line& l = g == 0 ? *lp : *ln;
+        double top = speeds.back() + step;
+        while (top - step > 0.5 * step && !departs(g, l, top - step, top))
+            top -= step;
+        h[g] = std::min(top, vmax);
+    }
+    BandEstimate b;
+    b.speedingUp_m_s = 2.0 * std::max(h[0], h[2]);
+    b.slowingDown_m_s = 2.0 * std::max(h[1], h[3]);
+    return b;
+}
+
+double estimateBand_m_s(const Run& run, const FrictionOptions& options)
+{
+    const BandEstimate b = estimateBand(run, options);
+    return std::max(b.speedingUp_m_s, b.slowingDown_m_s);
+}
+
+FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, const QStringList& givenPhases)
+{
+    FrictionOptions options = givenOptions;
     const std::size_t n = run.size();
     if (!(options.thickness_mm > 0.0) || !std::isfinite(options.thickness_mm))
         throw FitError(QCoreApplication::translate("nb::fit", "the tissue thickness must be positive, got %1 mm").arg(options.thickness_mm));
@@ -63,6 +194,11 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QS
         if (!std::isfinite(run.position_mm[i]) || !std::isfinite(run.force_N[i]) || !std::isfinite(run.time_s[i]))
             throw FitError(QCoreApplication::translate("nb::fit", "sample %1 is not a finite number").arg(i + 1));
 
+    std::optional<BandEstimate> found;
+    if (options.estimateBand) {
+        found = estimateBand(run, options);
+        options.band_m_s = std::max(found->speedingUp_m_s, found->slowingDown_m_s);
+    }
     QStringList phases = givenPhases;
     if (phases.isEmpty())
         if (const auto* col = run.textColumn(QStringLiteral("phase")))
@@ -82,8 +218,15 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QS
     const std::vector<double> f = movingAverage(run.force_N, w);
 
     const double half = options.band_m_s / 2.0;
+    // A found band may differ between speeding up (after a turning point the tissue is
+    // carried) and slowing down (it may slide until the needle stops).
+    auto halfAt = [&](std::size_t i) {
+        if (!found)
+            return half;
+        return (v[i] * a[i] > 0 ? found->speedingUp_m_s : found->slowingDown_m_s) / 2.0;
+    };
     auto sliding = [&](std::size_t i) {
-        return std::fabs(v[i]) >= half && v[i] != 0.0 && (!usePhases || phases[qsizetype(i)] == QLatin1String("c"));
+        return std::fabs(v[i]) >= halfAt(i) && v[i] != 0.0 && (!usePhases || phases[qsizetype(i)] == QLatin1String("c"));
     };
     // The smoothed signals mix samples across a stick/slip boundary (the force jumps there
     // from D to C), so only samples whose whole smoothing window slides are used.
@@ -131,6 +274,16 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QS
         throw FitError(QCoreApplication::translate("nb::fit", "the friction fit is singular (velocity does not vary within a direction)"));
     const Eigen::VectorXd p = qr.solve(y);
     const Eigen::VectorXd res = y - A * p;
+    Eigen::VectorXd se = Eigen::VectorXd::Zero(cols);
+    if (res.size() > cols) {
+        const double s2 = res.squaredNorm() / double(res.size() - cols);
+        const Eigen::MatrixXd cov = s2 * (A.transpose() * A).inverse();
+        // Neighbouring smoothed samples share their noise: about one independent sample
+        // per smoothing window.
+        const double widen = std::sqrt(double(std::max(1, w)));
+        for (int k = 0; k < cols; ++k)
+            se(k) = std::sqrt(std::max(0.0, cov(k, k))) * widen;
+    }
 
     FrictionFit fit;
     const double mass = options.estimateMass ? p(0) : options.mass_kg;
@@ -141,6 +294,14 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QS
     fit.model.Cn_N = p(off + 2);
     fit.model.bn_Ns_per_m = p(off + 3);
     fit.model.band_m_s = options.band_m_s;
+    fit.band_m_s = options.band_m_s;
+    fit.bandEstimated = options.estimateBand;
+    if (found)
+        fit.bandSlowingDown_m_s = found->slowingDown_m_s;
+    fit.seCp_N = se(off + 0);
+    fit.seBp_Ns_per_m = se(off + 1);
+    fit.seCn_N = se(off + 2);
+    fit.seBn_Ns_per_m = se(off + 3);
     fit.rms_N = std::sqrt(res.squaredNorm() / double(res.size()));
     fit.positiveSamples = pos;
     fit.negativeSamples = neg;
@@ -192,6 +353,30 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QS
         fit.staticSource = usePhases ? QStringLiteral("phase a") : QStringLiteral("velocity band");
     } else {
         fit.staticSource = QStringLiteral("none");
+    }
+
+    auto flag = [&](const char* value, const QString& why) {
+        fit.notPhysical << why;
+        if (!fit.notPhysicalValues.contains(QLatin1String(value)))
+            fit.notPhysicalValues << QString::fromLatin1(value);
+    };
+    if (fit.model.Cp_N < 0.0)
+        flag("Cp", QCoreApplication::translate("nb::fit", "Cp < 0: dynamic friction cannot push the needle along"));
+    if (fit.model.Cn_N < 0.0)
+        flag("Cn", QCoreApplication::translate("nb::fit", "Cn < 0: dynamic friction cannot push the needle along"));
+    if (fit.model.bp_Ns_per_m < 0.0)
+        flag("bp", QCoreApplication::translate("nb::fit", "bp < 0: damping cannot feed energy in"));
+    if (fit.model.bn_Ns_per_m < 0.0)
+        flag("bn", QCoreApplication::translate("nb::fit", "bn < 0: damping cannot feed energy in"));
+    if (fit.staticSource != QLatin1String("none")) {
+        if (fit.model.Dp_N <= 0.0)
+            flag("Dp", QCoreApplication::translate("nb::fit", "Dp is not positive: the static limit in + motion has the wrong sign"));
+        if (fit.model.Dn_N >= 0.0)
+            flag("Dn", QCoreApplication::translate("nb::fit", "Dn is not negative: the static limit in - motion has the wrong sign"));
+        if (std::fabs(fit.model.Dp_N) < std::fabs(fit.model.Cp_N))
+            flag("Dp", QCoreApplication::translate("nb::fit", "|Dp| < |Cp|: static friction below dynamic friction"));
+        if (std::fabs(fit.model.Dn_N) < std::fabs(fit.model.Cn_N))
+            flag("Dn", QCoreApplication::translate("nb::fit", "|Dn| < |Cn|: static friction below dynamic friction"));
     }
 
     const double L = options.thickness_mm / 1000.0;

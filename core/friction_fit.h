@@ -16,7 +16,8 @@ namespace nb {
 
 struct FrictionOptions {
     double thickness_mm = 0.0;                  // length of needle in tissue; > 0
-    double band_m_s = 0.005;                    // zero-velocity band (±band/2)
+    double band_m_s = 0.005;                    // zero-velocity band (±band/2)...
+    bool estimateBand = false;                  // ...or found in the data (estimateBand_m_s)
     double mass_kg = kNeedleHolderMass_kg;      // removed from the force (eq. 21)...
     bool estimateMass = false;                  // ...or estimated with the friction (eq. 19)
     double smoothing_s = 0.02;                  // moving-average window
@@ -30,6 +31,15 @@ struct FrictionFit {
     double frequency_hz = 0.0;       // metadata `frequency_hz`, else estimated from position
     double rms_N = 0.0;              // of the sliding-sample residuals
     std::size_t positiveSamples = 0, negativeSamples = 0;
+    double band_m_s = 0.0;           // the band used (whole width), given or found
+    bool bandEstimated = false;
+    double bandSlowingDown_m_s = 0.0;  // found band before turning points (band_m_s: the wider)
+    // Standard errors (N, N·s/m), widened for the smoothing (neighbouring samples share noise).
+    double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;
+    // Values that cannot be physical (b < 0, C < 0, |D| below C, D of the wrong sign),
+    // one sentence each; empty when all are plausible. Such values are not results.
+    QStringList notPhysical;
+    QStringList notPhysicalValues;   // which: "Cp", "Cn", "bp", "bn", "Dp", "Dn"
     // Where D came from: "phase a" (labels) or "velocity band" (the band around each turning
     // point); D_p averages the largest force of the stretches followed by + motion, D_n the
     // smallest of those followed by - motion; "none" when a direction has no such stretch.
@@ -41,6 +51,19 @@ struct FrictionFit {
 // and D from phase a. Without phases (empty list and no `phase` column) the velocity band
 // decides. Throws FitError (too few samples, no motion, a direction missing, bad thickness).
 FrictionFit fitFriction(const Run& run, const FrictionOptions& options, const QStringList& phases = {});
+
+// The zero-velocity band (whole widths, m/s) of a sinusoidal run, found where the sliding
+// line stops explaining the force: the lines are fitted to the clearly sliding samples (above
+// 80 % of the peak speed) and extended towards zero speed one step (1/40 of the peak) at a
+// time while the samples there follow them, by direction and apart for speeding up and
+// slowing down; a step that departs from the line by more than its noise and 2 % of C is
+// where sticking begins on that side. Throws FitError.
+struct BandEstimate {
+    double speedingUp_m_s = 0.0;   // after a turning point (the tissue carried along)
+    double slowingDown_m_s = 0.0;  // before one
+};
+BandEstimate estimateBand(const Run& run, const FrictionOptions& options);
+double estimateBand_m_s(const Run& run, const FrictionOptions& options);  // the wider of the two
 
 // Frequency of a sinusoidal position signal from its mean crossings; 0 when fewer than
 // two crossings.

@@ -23,6 +23,7 @@ struct SuggestOptions {
 Labels suggestLabels(const Run& run, const SuggestOptions& options = {});
 
 Labels suggestPhaseLabels(const Run& run, const SuggestOptions& options = {});
+
 Labels suggestEventLabels(const Run& run);
 
 }  // namespace nb

@@ -8,6 +8,7 @@
 
 #include "run.h"
 
+#include <QString>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -59,6 +60,7 @@ struct SyncOptions {
     double fineStep_s = 0.001;
     bool anchorOnOnset = true;
     double anchorWindow_s = 0.3;  // the accepted peak lies this close to the onset estimate
+    double maxDrift = 0.005;      // displacement sync: drifts searched in [-max, +max]
 };
 
 struct SyncResult {
@@ -68,11 +70,40 @@ struct SyncResult {
     std::optional<double> onsetOffset_s;  // from the two motion onsets alone
     std::vector<std::pair<double, double>> curve;  // coarse scan: (offset, r), for display
     int pairs = 0;                 // samples compared at offset_s
+    // From the displacement sync (synchroniseDisplacement); zero otherwise.
+    double drift = 0.0;            // video clock rate error (TimelineMapping::drift)
+    double scale_px_per_mm = 0.0;  // tracked displacement per recorded millimetre (signed)
+    double uncertainty_s = 0.0;    // how far the offset could be off (split halves, fit noise)
+    QString method;                // what was compared, for the run's metadata
+
+    TimelineMapping mapping() const { return {offset_s, drift}; }
+    bool acceptable() const;       // confidence at or above kSyncAcceptConfidence
 };
+
+// A sync result below this confidence is not to be taken without the operator's say-so:
+// the window disables Accept below it unless overridden, the command line says so.
+inline constexpr double kSyncAcceptConfidence = 0.5;
+inline bool SyncResult::acceptable() const { return confidence >= kSyncAcceptConfidence; }
 
 // `videoMotion` in video time, `speed` in recording time. Throws std::invalid_argument when
 // either signal is too short to compare.
 SyncResult synchronise(const TimeSignal& videoMotion, const TimeSignal& speed, const SyncOptions& options = {});
+
+// Synchronises on what the picture measures: `videoDisplacement` (the needle's tracked
+// displacement along its axis, any unit, either sign, NaN masked; video time) against the
+// recorded `position` (mm, recording time; the rig rests at its first and last position
+// outside the recording). Finds offset, drift and scale that make the two one linear
+// signal: coarse offset scan, then offset and drift refined together around the best
+// peaks; among near-equal peaks the one that agrees with the motion onsets wins. The
+// confidence multiplies how well the fit explains the picture, how unique the peak is, how
+// closely the two halves of the video agree on the offset and whether the onsets agree, so a
+// wrong or imprecise answer carries a low one. `frameDuration_s` sets the scale of
+// "precise". Throws std::invalid_argument when a signal is too short or does not move.
+SyncResult synchroniseDisplacement(const TimeSignal& videoDisplacement, const TimeSignal& position,
+                                   double frameDuration_s, const SyncOptions& options = {});
+
+// The run's needle position (position_mm over time_s).
+TimeSignal needlePosition(const Run& run);
 
 // Pearson correlation of the motion with the speed shifted by `offset_s` (speed is 0 outside
 // the recording: the rig rests). Returns r and the number of pairs.

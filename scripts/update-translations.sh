@@ -4,5 +4,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 lupdate=/usr/lib/qt6/bin/lupdate
-"$lupdate" -locations relative -no-obsolete app widgets core devices \
+"$lupdate" -locations relative -no-obsolete app widgets core devices video \
   -ts translations/needlebench_en.ts translations/needlebench_de.ts "$@"

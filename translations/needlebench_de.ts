@@ -1434,7 +1434,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+41"/>
+        <location filename="../widgets/review_workspace.cpp" line="+43"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -1485,12 +1485,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+268"/>
+        <location line="+274"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-268"/>
+        <location line="-274"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -1603,16 +1603,26 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+0"/>
-        <source>correlate motion in the drawn region with the needle speed</source>
-        <translation>die Bewegung im markierten Bereich mit der Nadelgeschwindigkeit korrelieren</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>r: correlation of the video motion with the needle speed at the offset found; confidence also weighs agreement with the motion onsets</source>
-        <translation>r: Korrelation der Videobewegung mit der Nadelgeschwindigkeit beim gefundenen Versatz; die Konfidenz berücksichtigt auch die Übereinstimmung mit den Bewegungsanfängen</translation>
+        <source>track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position</source>
+        <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
+        <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
+    </message>
+    <message>
+        <location line="+413"/>
+        <source>, drift %1 %</source>
+        <translation>, Drift %1 %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>LOW CONFIDENCE: %1; check it on an event before accepting</source>
+        <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
+    </message>
+    <message>
+        <location line="-412"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -1623,6 +1633,16 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
+        <source>accept a low confidence</source>
+        <translation>geringe Konfidenz akzeptieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the offset found is below the accept threshold: tick only after checking it on an event in both</source>
+        <translation>der gefundene Versatz liegt unter der Annahmeschwelle: erst ankreuzen, nachdem er an einem Ereignis in beiden geprüft wurde</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Reject</source>
         <translation>Verwerfen</translation>
     </message>
@@ -1737,7 +1757,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -2074,7 +2094,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location filename="../app/cmd_plan.cpp" line="+74"/>
         <location line="+156"/>
         <location line="+270"/>
-        <location filename="../app/cmd_sync.cpp" line="+28"/>
+        <location filename="../app/cmd_sync.cpp" line="+36"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -2213,7 +2233,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--out PFAD ist erforderlich</translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="+70"/>
+        <location filename="../app/cmd_demo.cpp" line="+58"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
         <translation>Eine kurze Sitzung in einem Zug simulieren, markieren, auswerten und exportieren.</translation>
     </message>
@@ -2523,9 +2543,9 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Masse zusammen mit der Reibung schätzen (Gl. 19)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>zero-velocity band width (default 0.005 = ±2.5 mm/s)</source>
-        <translation>Breite des Nullgeschwindigkeitsbands (Standard 0,005 = ±2,5 mm/s)</translation>
+        <location line="+2"/>
+        <source>zero-velocity band width, e.g. 0.005 = ±2.5 mm/s (default: found in each run&apos;s data)</source>
+        <translation>Breite des Nullgeschwindigkeitsbands, z. B. 0.005 = ±2,5 mm/s (Standard: aus den Daten jedes Laufs bestimmt)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2565,7 +2585,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--mass-kg: &apos;%1&apos; ist keine Masse</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>--band-m-s: &apos;%1&apos; is not a positive number</source>
         <translation>--band-m-s: &apos;%1&apos; ist keine positive Zahl</translation>
     </message>
@@ -2575,7 +2595,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+62"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -2599,7 +2619,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>not phys.</source>
+        <translation>unphys.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation>run</translation>
@@ -2628,10 +2653,38 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>alle (%1 Läufe)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>%1: D from %2, rms %3 N
 </source>
         <translation>%1: D aus %2, RMS %3 N
+</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: zero-velocity band found in the data: ±%2 mm/s after turning points, ±%3 mm/s before them
+</source>
+        <translation>%1: Nullgeschwindigkeitsband aus den Daten: ±%2 mm/s nach Umkehrpunkten, ±%3 mm/s davor
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: zero-velocity band ±%2 mm/s (given)
+</source>
+        <translation>%1: Nullgeschwindigkeitsband ±%2 mm/s (vorgegeben)
+</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5
+</source>
+        <translation>%1: Standardfehler je Länge: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: NOT PHYSICAL: %2
+</source>
+        <translation>%1: NICHT PHYSIKALISCH: %2
 </translation>
     </message>
     <message>
@@ -2675,7 +2728,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_sync.cpp" line="-6"/>
+        <location filename="../app/cmd_sync.cpp" line="-9"/>
         <source>the run file</source>
         <translation>die Laufdatei</translation>
     </message>
@@ -3163,11 +3216,30 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>größter zu prüfender Versatz in Sekunden (Standard 20)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+3"/>
+        <source>the needle&apos;s line in the picture, in pixels (default: found in the picture)</source>
+        <translation>die Linie der Nadel im Bild, in Pixeln (Standard: im Bild gefunden)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>also write the needle&apos;s tracked displacement per frame (time_s,displacement_px) to FILE</source>
+        <translation>zusätzlich die verfolgte Verschiebung der Nadel je Bild (time_s,displacement_px) in DATEI schreiben</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
 
 </source>
         <translation>needlebench sync: --roi erwartet x,y,w,h in ganzen Pixeln, w und h &gt; 0
+
+</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points
+
+</source>
+        <translation>needlebench sync: --needle erwartet x1,y1,x2,y2 in Pixeln, zwei verschiedene Punkte
 
 </translation>
     </message>
@@ -3186,7 +3258,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+11"/>
+        <source>%1: cannot write the trace here</source>
+        <translation>%1: die Spur kann hier nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -3214,7 +3291,52 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+1"/>
+        <source>drift:       %1 %
+</source>
+        <translation>Drift:       %1 %
+</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uncertainty: %1 frames
+</source>
+        <translation>Unsicherheit: %1 Bilder
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>needle:      %1,%2 to %3,%4 (%5)
+</source>
+        <translation>Nadel:       %1,%2 bis %3,%4 (%5)
+</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>found in the picture</source>
+        <translation>im Bild gefunden</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>given</source>
+        <translation>vorgegeben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>method:      %1
+</source>
+        <translation>Methode:     %1
+</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it
+</source>
+        <translation>GERINGE KONFIDENZ (unter %1): den Versatz vor der Verwendung prüfen, indem ein Ereignis in beiden markiert wird
+</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>cannot synchronise: %1</source>
         <translation>Synchronisierung nicht möglich: %1</translation>
     </message>
@@ -4833,7 +4955,8 @@ Befehle:
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../devices/video/frame_index.cpp" line="+105"/>
+        <location filename="../video/frame_index.cpp" line="+105"/>
+        <location filename="../video/packet_index.cpp" line="+52"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
     </message>
@@ -4859,6 +4982,7 @@ Befehle:
     </message>
     <message>
         <location line="+45"/>
+        <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
@@ -4873,7 +4997,7 @@ Befehle:
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>
     <message>
-        <location filename="../devices/video/frame_reader.cpp" line="+15"/>
+        <location filename="../video/frame_reader.cpp" line="+15"/>
         <source>the video has no indexed frames</source>
         <translation>das Video hat keine indizierten Bilder</translation>
     </message>
@@ -5250,6 +5374,16 @@ Befehle:
         <location line="+2"/>
         <source>driver disabled by a fault (over-temperature or power)</source>
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
+    </message>
+    <message>
+        <location filename="../video/needle_tracker.cpp" line="+510"/>
+        <source>the needle line lies outside the picture</source>
+        <translation>die Nadellinie liegt außerhalb des Bildes</translation>
+    </message>
+    <message>
+        <location filename="../video/packet_index.cpp" line="+15"/>
+        <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
+        <translation>aus den Paketen der Datei indiziert: wiederholte Bilder sind nicht als Duplikate markiert</translation>
     </message>
 </context>
 <context>
@@ -5660,7 +5794,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::fit</name>
     <message>
-        <location filename="../core/friction_fit.cpp" line="+64"/>
+        <location filename="../core/friction_fit.cpp" line="+195"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -5670,7 +5804,22 @@ F = %1 x + %2 x²
         <translation>die Gewebedicke muss positiv sein, erhalten: %1 mm</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-96"/>
+        <source>too few samples (%1) to find the zero-velocity band</source>
+        <translation>zu wenige Messwerte (%1), um das Nullgeschwindigkeitsband zu bestimmen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no motion: the zero-velocity band cannot be found</source>
+        <translation>keine Bewegung: das Nullgeschwindigkeitsband lässt sich nicht bestimmen</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>too few sliding samples to find the zero-velocity band</source>
+        <translation>zu wenige gleitende Messwerte, um das Nullgeschwindigkeitsband zu bestimmen</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>the zero-velocity band must not be negative</source>
         <translation>das Nullgeschwindigkeitsband darf nicht negativ sein</translation>
     </message>
@@ -5680,12 +5829,12 @@ F = %1 x + %2 x²
         <translation>zu wenige Messwerte (%1) für einen Reibungsfit (an jedem Ende werden %2 abgeschnitten)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>%1 phase names for %2 samples</source>
         <translation>%1 Phasennamen für %2 Messwerte</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+38"/>
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation>keine Messwerte der Phase c schneller als das Nullgeschwindigkeitsband</translation>
     </message>
@@ -5704,11 +5853,51 @@ F = %1 x + %2 x²
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
+    <message>
+        <location line="+90"/>
+        <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cn &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation>Cn &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bp &lt; 0: damping cannot feed energy in</source>
+        <translation>bp &lt; 0: Dämpfung kann keine Energie zuführen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bn &lt; 0: damping cannot feed energy in</source>
+        <translation>bn &lt; 0: Dämpfung kann keine Energie zuführen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
+        <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dn is not negative: the static limit in - motion has the wrong sign</source>
+        <translation>Dn ist nicht negativ: die Haftgrenze bei Bewegung in - hat das falsche Vorzeichen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dp| &lt; |Cp|: static friction below dynamic friction</source>
+        <translation>|Dp| &lt; |Cp|: Haftreibung unter der Gleitreibung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
+        <translation>|Dn| &lt; |Cn|: Haftreibung unter der Gleitreibung</translation>
+    </message>
 </context>
 <context>
     <name>video</name>
     <message>
-        <location filename="../devices/video/video_error.cpp" line="+9"/>
+        <location filename="../video/video_error.cpp" line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

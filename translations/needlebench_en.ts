@@ -1431,7 +1431,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+41"/>
+        <location filename="../widgets/review_workspace.cpp" line="+43"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1482,12 +1482,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+268"/>
+        <location line="+274"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-268"/>
+        <location line="-274"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1600,16 +1600,26 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+0"/>
-        <source>correlate motion in the drawn region with the needle speed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>r: correlation of the video motion with the needle speed at the offset found; confidence also weighs agreement with the motion onsets</source>
+        <source>track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+413"/>
+        <source>, drift %1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>LOW CONFIDENCE: %1; check it on an event before accepting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-412"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1620,6 +1630,16 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>accept a low confidence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the offset found is below the accept threshold: tick only after checking it on an event in both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Reject</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1734,7 +1754,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2071,7 +2091,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <location filename="../app/cmd_plan.cpp" line="+74"/>
         <location line="+156"/>
         <location line="+270"/>
-        <location filename="../app/cmd_sync.cpp" line="+28"/>
+        <location filename="../app/cmd_sync.cpp" line="+36"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -2204,7 +2224,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="+70"/>
+        <location filename="../app/cmd_demo.cpp" line="+58"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2506,8 +2526,8 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>zero-velocity band width (default 0.005 = ±2.5 mm/s)</source>
+        <location line="+2"/>
+        <source>zero-velocity band width, e.g. 0.005 = ±2.5 mm/s (default: found in each run&apos;s data)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2547,7 +2567,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>--band-m-s: &apos;%1&apos; is not a positive number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2557,7 +2577,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+62"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -2579,7 +2599,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>not phys.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation type="unfinished"></translation>
@@ -2608,8 +2633,32 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>%1: D from %2, rms %3 N
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: zero-velocity band found in the data: ±%2 mm/s after turning points, ±%3 mm/s before them
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: zero-velocity band ±%2 mm/s (given)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: NOT PHYSICAL: %2
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -2647,7 +2696,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_sync.cpp" line="-6"/>
+        <location filename="../app/cmd_sync.cpp" line="-9"/>
         <source>the run file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3124,8 +3173,25 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+3"/>
+        <source>the needle&apos;s line in the picture, in pixels (default: found in the picture)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>also write the needle&apos;s tracked displacement per frame (time_s,displacement_px) to FILE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
+
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points
 
 </source>
         <translation type="unfinished"></translation>
@@ -3143,7 +3209,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+11"/>
+        <source>%1: cannot write the trace here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -3167,7 +3238,47 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+1"/>
+        <source>drift:       %1 %
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uncertainty: %1 frames
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>needle:      %1,%2 to %3,%4 (%5)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>found in the picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>method:      %1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>cannot synchronise: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4766,7 +4877,8 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/video/frame_index.cpp" line="+105"/>
+        <location filename="../video/frame_index.cpp" line="+105"/>
+        <location filename="../video/packet_index.cpp" line="+52"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4792,6 +4904,7 @@ Commands:
     </message>
     <message>
         <location line="+45"/>
+        <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4806,7 +4919,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/video/frame_reader.cpp" line="+15"/>
+        <location filename="../video/frame_reader.cpp" line="+15"/>
         <source>the video has no indexed frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5182,6 +5295,16 @@ Commands:
     <message>
         <location line="+2"/>
         <source>driver disabled by a fault (over-temperature or power)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../video/needle_tracker.cpp" line="+510"/>
+        <source>the needle line lies outside the picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../video/packet_index.cpp" line="+15"/>
+        <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5591,7 +5714,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::fit</name>
     <message>
-        <location filename="../core/friction_fit.cpp" line="+64"/>
+        <location filename="../core/friction_fit.cpp" line="+195"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5601,7 +5724,22 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-96"/>
+        <source>too few samples (%1) to find the zero-velocity band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no motion: the zero-velocity band cannot be found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>too few sliding samples to find the zero-velocity band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>the zero-velocity band must not be negative</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5611,12 +5749,12 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>%1 phase names for %2 samples</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+38"/>
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5635,11 +5773,51 @@ F = %1 x + %2 x²
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="+90"/>
+        <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cn &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bp &lt; 0: damping cannot feed energy in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bn &lt; 0: damping cannot feed energy in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dn is not negative: the static limit in - motion has the wrong sign</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dp| &lt; |Cp|: static friction below dynamic friction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>video</name>
     <message>
-        <location filename="../devices/video/video_error.cpp" line="+9"/>
+        <location filename="../video/video_error.cpp" line="+9"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>

@@ -9,16 +9,18 @@
 #include "core/label_suggest.h"
 #include "core/labels.h"
 #include "core/run_file.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/motion_signal.h"
-#include "devices/video/video_error.h"
+#include "video/frame_reader.h"
+#include "video/video_sync.h"
+#include "video/video_error.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTimer>
@@ -33,15 +35,15 @@
 namespace nb {
 
 ReviewWorkspace::ReviewWorkspace(QWidget* parent)
-    : QWidget(parent), model_(new LabelModel(this)), undo_(new QUndoStack(this)), decoder_(new devices::VideoDecoder(this))
+    : QWidget(parent), model_(new LabelModel(this)), undo_(new QUndoStack(this)), decoder_(new video::VideoDecoder(this))
 {
     setFocusPolicy(Qt::StrongFocus);
     buildUi();
-    connect(decoder_, &devices::VideoDecoder::indexProgress, this, [this](int done, int expected) {
+    connect(decoder_, &video::VideoDecoder::indexProgress, this, [this](int done, int expected) {
         video_->setMessage(expected > 0 ? tr("Indexing the video: %1 of %2 frames").arg(done).arg(expected)
                                         : tr("Indexing the video: %1 frames").arg(done));
     });
-    connect(decoder_, &devices::VideoDecoder::opened, this, [this](devices::FrameIndexPtr index) {
+    connect(decoder_, &video::VideoDecoder::opened, this, [this](video::FrameIndexPtr index) {
         index_ = index;
         for (const QString& w : index->warnings)
             showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
@@ -51,11 +53,11 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         requestFrameForCursor();
         emit videoOpened();
     });
-    connect(decoder_, &devices::VideoDecoder::failed, this, [this](const QString& message) {
+    connect(decoder_, &video::VideoDecoder::failed, this, [this](const QString& message) {
         video_->setMessage(message);
         showStatus(message);
     });
-    connect(decoder_, &devices::VideoDecoder::frameReady, this, [this](int n, double t, const QImage& image) {
+    connect(decoder_, &video::VideoDecoder::frameReady, this, [this](int n, double t, const QImage& image) {
         frame_ = n;
         video_->setFrame(image, n, t);
         emit frameShown(n);
@@ -186,12 +188,18 @@ void ReviewWorkspace::buildUi()
     });
     syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] { markEventInRecording(); });
     syncButton(tr("Mark event in video"), tr("the event is in the frame shown"), [this] { markEventInVideo(); });
-    syncButton(tr("Auto sync"), tr("correlate motion in the drawn region with the needle speed"), [this] { startAutoSync(); });
+    syncButton(tr("Auto sync"), tr("track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position"),
+               [this] { startAutoSync(); });
     syncLabel_ = new QLabel(this);
-    syncLabel_->setToolTip(tr("r: correlation of the video motion with the needle speed at the offset found; "
-                              "confidence also weighs agreement with the motion onsets"));
+    syncLabel_->setToolTip(tr("r: correlation of the needle's tracked displacement with the recorded position at the offset found; "
+                              "confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets"));
     sync->addWidget(syncLabel_);
     acceptButton_ = syncButton(tr("Accept"), tr("use the offset found"), [this] { acceptSync(); });
+    overrideBox_ = new QCheckBox(tr("accept a low confidence"), this);
+    overrideBox_->setFocusPolicy(Qt::NoFocus);
+    overrideBox_->setToolTip(tr("the offset found is below the accept threshold: tick only after checking it on an event in both"));
+    connect(overrideBox_, &QCheckBox::toggled, this, [this] { updateSyncUi(); });
+    sync->addWidget(overrideBox_);
     rejectButton_ = syncButton(tr("Reject"), tr("keep the current offset"), [this] { rejectSync(); });
     sync->addStretch();
     syncPlot_ = new QCustomPlot(this);
@@ -567,29 +575,40 @@ void ReviewWorkspace::startAutoSync()
         return;
     }
     syncLabel_->setText(tr("correlating…"));
-    const devices::FrameIndex index = *index_;
-    const QRect roi = video_->roi();
-    const TimeSignal speed = needleSpeed(run_);
-    syncWatcher_.setFuture(QtConcurrent::run([index, roi, speed] {
-        devices::FrameReader reader(index, 8);
-        const devices::MotionSignal m = devices::computeMotionSignal(reader, roi);
-        return synchronise({m.time_s, m.value}, speed);
-    }));
+    const video::FrameIndex index = *index_;
+    video::VideoSyncOptions options;
+    options.roi = video_->roi();
+    const Run run = run_;
+    syncWatcher_.setFuture(QtConcurrent::run([index, run, options] { return video::syncVideoToRun(index, run, options).result; }));
 }
 
 void ReviewWorkspace::updateSyncUi()
 {
-    acceptButton_->setEnabled(pendingSync_.has_value());
+    const bool low = pendingSync_ && !pendingSync_->acceptable();
+    // Below the threshold Accept is a deliberate act: the operator ticks the override first.
+    acceptButton_->setEnabled(pendingSync_.has_value() && (!low || overrideBox_->isChecked()));
     rejectButton_->setEnabled(pendingSync_.has_value());
+    overrideBox_->setVisible(low);
+    if (!low && overrideBox_->isChecked()) {
+        const QSignalBlocker block(overrideBox_);
+        overrideBox_->setChecked(false);
+    }
     syncPlot_->setVisible(pendingSync_.has_value());
     if (!pendingSync_) {
         syncLabel_->clear();
+        syncLabel_->setStyleSheet(QString());
         return;
     }
-    syncLabel_->setText(tr("found %1 s (confidence %2, r = %3)")
-                            .arg(pendingSync_->offset_s, 0, 'f', 3)
-                            .arg(pendingSync_->confidence, 0, 'f', 2)
-                            .arg(pendingSync_->correlation, 0, 'f', 2));
+    QString text = tr("found %1 s (confidence %2, r = %3)")
+                       .arg(pendingSync_->offset_s, 0, 'f', 3)
+                       .arg(pendingSync_->confidence, 0, 'f', 2)
+                       .arg(std::abs(pendingSync_->correlation), 0, 'f', 2);
+    if (pendingSync_->drift != 0.0)
+        text += tr(", drift %1 %").arg(100.0 * pendingSync_->drift, 0, 'f', 3);
+    if (low)
+        text = tr("LOW CONFIDENCE: %1; check it on an event before accepting").arg(text);
+    syncLabel_->setText(text);
+    syncLabel_->setStyleSheet(low ? QStringLiteral("QLabel { color: #b00000; font-weight: bold; }") : QString());
     QVector<double> offsets, r;
     for (const auto& [o, c] : pendingSync_->curve) {
         offsets << o;
@@ -605,9 +624,11 @@ void ReviewWorkspace::updateSyncUi()
 
 void ReviewWorkspace::acceptSync()
 {
-    if (!pendingSync_)
+    if (!pendingSync_ || (!pendingSync_->acceptable() && !overrideBox_->isChecked()))
         return;
-    setMapping({pendingSync_->offset_s, mapping_.drift});
+    // The displacement sync measures the drift too; the speed fallback leaves it alone.
+    const bool measuredDrift = pendingSync_->scale_px_per_mm != 0.0;
+    setMapping({pendingSync_->offset_s, measuredDrift ? pendingSync_->drift : mapping_.drift});
     pendingSync_.reset();
     updateSyncUi();
 }
@@ -615,6 +636,7 @@ void ReviewWorkspace::acceptSync()
 void ReviewWorkspace::rejectSync()
 {
     pendingSync_.reset();
+    overrideBox_->setChecked(false);
     updateSyncUi();
 }
 

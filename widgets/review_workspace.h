@@ -12,7 +12,7 @@
 
 #include "core/run.h"
 #include "core/sync.h"
-#include "devices/video/video_decoder.h"
+#include "video/video_decoder.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -23,6 +23,7 @@
 
 class QCPItemStraightLine;
 class QCustomPlot;
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -66,7 +67,7 @@ public:
     QUndoStack* undoStack() const { return undo_; }
     Timeline* timeline() const { return timeline_; }
     VideoView* videoView() const { return video_; }
-    devices::VideoDecoder* decoder() const { return decoder_; }
+    video::VideoDecoder* decoder() const { return decoder_; }
 
     // Applies the labels suggested from the data (one undoable step).
     void suggestLabels();
@@ -76,7 +77,11 @@ public:
     // Runs automatic synchronisation in the background; the result waits for accept/reject.
     void startAutoSync();
     std::optional<SyncResult> pendingSync() const { return pendingSync_; }
+    // Takes the pending offset (and drift); refused below kSyncAcceptConfidence unless the
+    // operator ticked the override.
     void acceptSync();
+    QPushButton* acceptButton() const { return acceptButton_; }
+    QCheckBox* acceptOverride() const { return overrideBox_; }
     void rejectSync();
     // Correlation against offset of the pending automatic sync, the offset found marked;
     // visible from the end of Auto sync until Accept/Reject.
@@ -106,7 +111,7 @@ private:
     TimelineMapping mapping_;
     double cursor_ = 0.0;
     int frame_ = -1, requested_ = -1;
-    devices::FrameIndexPtr index_;
+    video::FrameIndexPtr index_;
     QString videoPath_;
     std::map<QString, std::pair<QString, double>> pending_;  // track -> (label, start)
     std::optional<double> markRecording_, markVideo_;
@@ -120,7 +125,7 @@ private:
 
     LabelModel* model_;
     QUndoStack* undo_;
-    devices::VideoDecoder* decoder_;
+    video::VideoDecoder* decoder_;
     VideoView* video_ = nullptr;
     QCustomPlot* plot_ = nullptr;
     QCPItemStraightLine* plotCursor_ = nullptr;
@@ -135,6 +140,7 @@ private:
     QCustomPlot* syncPlot_ = nullptr;
     QCPItemStraightLine* syncMarker_ = nullptr;
     QPushButton* acceptButton_ = nullptr;
+    QCheckBox* overrideBox_ = nullptr;
     QPushButton* rejectButton_ = nullptr;
     QLabel* status_ = nullptr;
     QLabel* keysHelp_ = nullptr;

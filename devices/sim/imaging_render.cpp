@@ -1,7 +1,7 @@
 #include "imaging_render.h"
 #include "core/tr.h"
 
-#include "devices/video/video_error.h"
+#include "video/video_error.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -133,7 +133,7 @@ void ImagingRenderer::render(double t, int frameNumber, cv::Mat& out) const
 ImagingTruth renderImagingVideo(const Run& run, const QString& path, const ImagingOptions& options)
 {
     if (run.size() < 2)
-        throw VideoError(path, nb::TrDevices::tr("the run has too few samples to render"));
+        throw nb::video::VideoError(path, nb::TrDevices::tr("the run has too few samples to render"));
     const QString ext = QFileInfo(path).suffix().toLower();
     std::vector<int> fourccs;
     if (ext == QLatin1String("avi"))
@@ -143,7 +143,7 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
     else if (ext == QLatin1String("mp4"))
         fourccs = {cv::VideoWriter::fourcc('a', 'v', 'c', '1'), cv::VideoWriter::fourcc('m', 'p', '4', 'v')};
     else
-        throw VideoError(path, nb::TrDevices::tr("unknown video type '.%1' (use .avi, .mkv or .mp4)").arg(ext));
+        throw nb::video::VideoError(path, nb::TrDevices::tr("unknown video type '.%1' (use .avi, .mkv or .mp4)").arg(ext));
     cv::VideoWriter writer;
     for (int fourcc : fourccs) {
         try {
@@ -153,7 +153,7 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
         }
     }
     if (!writer.isOpened())
-        throw VideoError(path, nb::TrDevices::tr("cannot write a video here (folder missing or not writable, or no encoder)"));
+        throw nb::video::VideoError(path, nb::TrDevices::tr("cannot write a video here (folder missing or not writable, or no encoder)"));
     ImagingRenderer renderer(run, options);
     ImagingTruth truth;
     truth.offset_s = options.leadIn_s - run.time_s.front();
@@ -169,7 +169,7 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
     writer.release();
     truth.frames = frames;
     if (!QFileInfo(path).exists() || QFileInfo(path).size() == 0)
-        throw VideoError(path, nb::TrDevices::tr("the video could not be written"));
+        throw nb::video::VideoError(path, nb::TrDevices::tr("the video could not be written"));
     return truth;
 }
 

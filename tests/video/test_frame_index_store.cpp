@@ -1,8 +1,8 @@
 // The stored frame index: a real H.264 video indexed once is read back from the store, equal
 // in every frame; a changed video, a damaged or foreign store file and a cancelled build are
 // never taken for a valid index; the store keeps a bounded number of indexes.
-#include "devices/video/frame_index_store.h"
-#include "devices/video/frame_reader.h"
+#include "video/frame_index_store.h"
+#include "video/frame_reader.h"
 #include "video_fixtures.h"
 
 #include <QDir>
@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-using namespace nb::devices;
+using namespace nb::video;
 using namespace nb::test;
 
 namespace {

@@ -2,9 +2,10 @@
 // and sequentially) must show its own number and carry its true timestamp.
 #include "video_fixtures.h"
 
-#include "devices/video/frame_index.h"
-#include "devices/video/frame_reader.h"
-#include "devices/video/video_error.h"
+#include "video/frame_index.h"
+#include "video/frame_reader.h"
+#include "video/packet_index.h"
+#include "video/video_error.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -12,7 +13,7 @@
 #include <opencv2/videoio.hpp>
 #include <random>
 
-using namespace nb::devices;
+using namespace nb::video;
 using namespace nb::test;
 
 class TestFrameReader : public QObject {
@@ -102,6 +103,21 @@ private slots:
         QCOMPARE(index.duplicateCount(), 0);
         QCOMPARE(index.width, width);
         QVERIFY(std::abs(index.duration_s() - 75 / fps) < 0.002);
+
+        // The index from the packets alone (no picture decoded but the first) agrees with
+        // the decoded one, and a reader on it lands on the right frames.
+        const auto packets = buildFrameIndexFromPackets(path(file));
+        QVERIFY(packets.has_value());
+        QCOMPARE(packets->size(), index.size());
+        QCOMPARE(packets->width, width);
+        for (int i = 0; i < index.size(); ++i) {
+            QVERIFY2(std::abs(packets->frames[std::size_t(i)].time_s - index.frames[std::size_t(i)].time_s) < 1e-3, qPrintable(QString::number(i)));
+            if (index.keyframesKnown)
+                QCOMPARE(packets->frames[std::size_t(i)].keyframe, index.frames[std::size_t(i)].keyframe);
+        }
+        FrameReader reader(*packets, 4);
+        for (int n : {74, 3, 40, 0, 61, 62, 30})
+            QCOMPARE(readCode(reader.read(n).image), spec.codes[std::size_t(n)]);
     }
 
     void keyframesFromProbe()

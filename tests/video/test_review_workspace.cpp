@@ -1,12 +1,14 @@
 // The review workspace driven like an operator: real simulated run and rendered video,
 // hotkeys, undo/redo, edge drag, frame steps, auto sync; saves a screenshot.
 #include "core/labels.h"
+#include "core/run_file.h"
 #include "widgets/label_model.h"
 #include "widgets/label_set_dialog.h"
 #include "widgets/review_workspace.h"
 #include "widgets/timeline.h"
 #include "widgets/video_view.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -251,6 +253,42 @@ private slots:
         QVERIFY(ws.grab().save(shots + "/review_workspace.png"));
     }
 
+    // A video synchronised against a run it does not show: the answer is plainly marked as low
+    // and Accept only works once the operator ticks the override.
+    void lowConfidenceNeedsTheOverride()
+    {
+        nb::Run run = nb::readRunFile(run_).run;
+        for (std::size_t i = 0; i < run.size(); ++i)
+            run.position_mm[i] = 10.0 * std::sin(2.0 * M_PI * 0.37 * run.time_s[i]) * std::exp(-0.2 * run.time_s[i]);
+        const QString other = dir_.filePath("other.csv");
+        nb::writeRunFile(other, run);
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QVERIFY(ws.openRun(other));
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        ws.openVideo(video_);
+        QVERIFY(opened.wait(60000));
+        QSignalSpy synced(&ws, &nb::ReviewWorkspace::syncFinished);
+        ws.startAutoSync();
+        QVERIFY(synced.wait(120000));
+        QVERIFY(ws.pendingSync().has_value());
+        QVERIFY2(!ws.pendingSync()->acceptable(), qPrintable(QString::number(ws.pendingSync()->confidence)));
+        QVERIFY(!ws.acceptButton()->isEnabled());
+        QVERIFY(ws.acceptOverride()->isVisible());
+        const nb::TimelineMapping before = ws.mapping();
+        ws.acceptSync();  // refused
+        QCOMPARE(ws.mapping(), before);
+        QVERIFY(ws.pendingSync().has_value());
+        const double found = ws.pendingSync()->offset_s;
+        ws.acceptOverride()->setChecked(true);
+        QVERIFY(ws.acceptButton()->isEnabled());
+        QTest::mouseClick(ws.acceptButton(), Qt::LeftButton);
+        QCOMPARE(ws.mapping().offset_s, found);
+        QVERIFY(!ws.pendingSync().has_value());
+        QVERIFY(!ws.acceptOverride()->isVisible());
+    }
+
     // Marking one event in both sets the offset; a second, three seconds later, the drift too.
     // The frames are picked so that the marks mean a video clock 1001 ppm fast.
     void twoMarkedEventsSetOffsetAndDrift()
@@ -311,7 +349,7 @@ private slots:
         nb::ReviewWorkspace ws;
         QVERIFY(!ws.openRun(dir_.filePath("missing.csv")));
         QVERIFY(ws.status().contains("missing.csv"));
-        QSignalSpy failed(ws.decoder(), &nb::devices::VideoDecoder::failed);
+        QSignalSpy failed(ws.decoder(), &nb::video::VideoDecoder::failed);
         ws.openVideo(dir_.filePath("missing.avi"));
         QVERIFY(failed.wait(20000));
         QVERIFY(failed.first().first().toString().contains("missing.avi"));

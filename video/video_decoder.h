@@ -17,7 +17,7 @@ namespace cv {
 class Mat;
 }
 
-namespace nb::devices {
+namespace nb::video {
 
 using FrameIndexPtr = std::shared_ptr<const FrameIndex>;
 
@@ -39,7 +39,7 @@ public:
 
 signals:
     void indexProgress(int done, int expected);
-    void opened(nb::devices::FrameIndexPtr index);
+    void opened(nb::video::FrameIndexPtr index);
     void failed(const QString& message);
     void frameReady(int index, double time_s, const QImage& image);
 
@@ -53,6 +53,6 @@ private:
 // QImage (RGB) copy of a BGR OpenCV frame.
 QImage toQImage(const cv::Mat& bgr);
 
-}  // namespace nb::devices
+}  // namespace nb::video
 
-Q_DECLARE_METATYPE(nb::devices::FrameIndexPtr)
+Q_DECLARE_METATYPE(nb::video::FrameIndexPtr)

@@ -8,7 +8,7 @@
 #include <optional>
 #include <unordered_map>
 
-namespace nb::devices {
+namespace nb::video {
 
 class FrameCache {
 public:
@@ -29,4 +29,4 @@ private:
     std::unordered_map<int, std::pair<cv::Mat, std::list<int>::iterator>> map_;
 };
 
-}  // namespace nb::devices
+}  // namespace nb::video

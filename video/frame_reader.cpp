@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace nb::devices {
+namespace nb::video {
 
 FrameReader::FrameReader(FrameIndex index, int cacheFrames) : index_(std::move(index)), cache_(cacheFrames)
 {
@@ -135,4 +135,4 @@ int FrameReader::fillCache(int from, int to, int budget)
     return decoded;
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video

@@ -9,7 +9,7 @@
 
 #include <opencv2/videoio.hpp>
 
-namespace nb::devices {
+namespace nb::video {
 
 struct DecodedFrame {
     int index = -1;
@@ -54,4 +54,4 @@ private:
     ReaderStats stats_;
 };
 
-}  // namespace nb::devices
+}  // namespace nb::video

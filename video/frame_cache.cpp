@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace nb::devices {
+namespace nb::video {
 
 void FrameCache::setCapacity(int frames)
 {
@@ -46,4 +46,4 @@ void FrameCache::evict()
     }
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video

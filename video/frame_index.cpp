@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace nb::devices {
+namespace nb::video {
 
 double FrameIndex::frameDuration() const
 {
@@ -186,4 +186,4 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     return index;
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video

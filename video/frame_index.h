@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-namespace nb::devices {
+namespace nb::video {
 
 struct FrameInfo {
     double time_s = 0.0;     // presentation time, as the decoder reports it
@@ -61,4 +61,4 @@ using IndexProgress = std::function<void(int done, int expected)>;
 FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress = {},
                            const std::atomic_bool* cancel = nullptr);
 
-}  // namespace nb::devices
+}  // namespace nb::video

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-namespace nb::devices {
+namespace nb::video {
 
 MotionSignal computeMotionSignal(FrameReader& reader, QRect roi, const std::function<void(int, int)>& progress,
                                  const std::atomic_bool* cancel)
@@ -57,4 +57,4 @@ MotionSignal computeMotionSignal(FrameReader& reader, QRect roi, const std::func
     return out;
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video

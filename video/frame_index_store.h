@@ -5,11 +5,11 @@
 // beside the video, which may sit on a read-only share; a store that cannot be written only
 // loses the shortcut.
 
-#include "devices/video/frame_index.h"
+#include "video/frame_index.h"
 
 #include <optional>
 
-namespace nb::devices {
+namespace nb::video {
 
 // QStandardPaths' cache location + "/frame-index", or $NEEDLEBENCH_CACHE_DIR/frame-index.
 QString defaultFrameIndexStore();
@@ -26,4 +26,4 @@ FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progr
                                  const std::atomic_bool* cancel = nullptr, bool* fromStore = nullptr,
                                  const QString& storeDir = {});
 
-}  // namespace nb::devices
+}  // namespace nb::video

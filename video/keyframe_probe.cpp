@@ -3,7 +3,7 @@
 #include <QProcess>
 #include <QStandardPaths>
 
-namespace nb::devices {
+namespace nb::video {
 
 static std::optional<QByteArray> runProbe(const QString& exe, const QStringList& args)
 {
@@ -62,4 +62,4 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
     return r;
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video

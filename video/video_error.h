@@ -4,7 +4,7 @@
 #include <QString>
 #include <stdexcept>
 
-namespace nb::devices {
+namespace nb::video {
 
 class VideoError : public std::runtime_error {
 public:
@@ -18,4 +18,4 @@ private:
     QString reason_;
 };
 
-}  // namespace nb::devices
+}  // namespace nb::video

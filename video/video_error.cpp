@@ -2,7 +2,7 @@
 
 #include <QCoreApplication>
 
-namespace nb::devices {
+namespace nb::video {
 
 static QString compose(const QString& file, const QString& reason)
 {
@@ -16,4 +16,4 @@ VideoError::VideoError(QString file, QString reason)
 
 QString VideoError::message() const { return compose(file_, reason_); }
 
-}  // namespace nb::devices
+}  // namespace nb::video

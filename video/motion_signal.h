@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-namespace nb::devices {
+namespace nb::video {
 
 struct MotionSignal {
     std::vector<double> time_s;  // video time, midway between the two frames compared
@@ -23,4 +23,4 @@ MotionSignal computeMotionSignal(FrameReader& reader, QRect roi = {},
                                  const std::function<void(int, int)>& progress = {},
                                  const std::atomic_bool* cancel = nullptr);
 
-}  // namespace nb::devices
+}  // namespace nb::video

@@ -8,7 +8,7 @@
 #include <QMetaObject>
 #include <opencv2/imgproc.hpp>
 
-namespace nb::devices {
+namespace nb::video {
 
 QImage toQImage(const cv::Mat& bgr)
 {
@@ -79,7 +79,7 @@ public:
 
 signals:
     void indexProgress(int done, int expected);
-    void opened(nb::devices::FrameIndexPtr index);
+    void opened(nb::video::FrameIndexPtr index);
     void failed(const QString& message);
     void frameReady(int index, double time_s, const QImage& image);
 
@@ -141,6 +141,6 @@ void VideoDecoder::setPrefetch(int back, int ahead)
     worker_->ahead = ahead;
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video
 
 #include "video_decoder.moc"

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-namespace nb::devices {
+namespace nb::video {
 
 struct ProbeResult {
     QString codec;                    // e.g. "h264"
@@ -16,4 +16,4 @@ struct ProbeResult {
 
 std::optional<ProbeResult> probeKeyframes(const QString& path);
 
-}  // namespace nb::devices
+}  // namespace nb::video

@@ -1,4 +1,6 @@
 #include "frame_index_store.h"
+#include "packet_index.h"
+#include "video_error.h"
 
 #include <QCryptographicHash>
 #include <QDataStream>
@@ -8,7 +10,7 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 
-namespace nb::devices {
+namespace nb::video {
 
 namespace {
 constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
@@ -131,10 +133,22 @@ FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progr
     }
     if (fromStore)
         *fromStore = false;
-    FrameIndex index = buildFrameIndex(path, progress, cancel);
+    // Long videos are indexed from their packets (seconds, not minutes); short ones are
+    // decoded, which also flags repeated pictures.
+    constexpr int kLongVideoFrames = 18000;  // ten minutes at 30 frames/s
+    std::optional<FrameIndex> packets;
+    try {
+        packets = buildFrameIndexFromPackets(path);
+    } catch (const VideoError&) {
+        packets.reset();  // decoding below names the problem
+    }
+    const bool fromPackets = packets && packets->size() > kLongVideoFrames;
+    FrameIndex index = fromPackets ? std::move(*packets) : buildFrameIndex(path, progress, cancel);
+    if (progress && fromPackets)
+        progress(index.size(), index.size());
     if (!(cancel && cancel->load()))
         storeFrameIndex(index, dir);
     return index;
 }
 
-}  // namespace nb::devices
+}  // namespace nb::video

@@ -1,0 +1,313 @@
+// Synchronisation on the needle's tracked displacement (sync.h).
+#include "sync.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace nb {
+
+namespace {
+
+struct Points {
+    std::vector<double> t, d;
+};
+
+// Linear in between; outside the recording the rig rests at its first and last position.
+double positionAt(const TimeSignal& p, double t)
+{
+    const auto& ts = p.time_s;
+    if (t <= ts.front())
+        return p.value.front();
+    if (t >= ts.back())
+        return p.value.back();
+    const auto it = std::upper_bound(ts.begin(), ts.end(), t);
+    const std::size_t i = std::size_t(it - ts.begin());
+    const double w = (t - ts[i - 1]) / std::max(1e-12, ts[i] - ts[i - 1]);
+    return p.value[i - 1] + w * (p.value[i] - p.value[i - 1]);
+}
+
+struct Fit {
+    double r2 = 0.0, slope = 0.0, intercept = 0.0, residual = 0.0;
+    int n = 0;
+};
+
+// d ≈ intercept + slope · position(recording time of each video point).
+Fit fitAt(const Points& v, const TimeSignal& pos, double offset, double drift, std::size_t from, std::size_t to,
+          std::size_t stride = 1)
+{
+    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+    int n = 0;
+    for (std::size_t i = from; i < to; i += stride) {
+        const double x = positionAt(pos, (v.t[i] - offset) / (1.0 + drift)), y = v.d[i];
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        syy += y * y;
+        sxy += x * y;
+        ++n;
+    }
+    Fit f;
+    f.n = n;
+    if (n < 3)
+        return f;
+    const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
+    if (vx <= 0 || vy <= 0)
+        return f;
+    f.r2 = cov * cov / (vx * vy);
+    f.slope = cov / vx;
+    f.intercept = (sy - f.slope * sx) / n;
+    f.residual = std::sqrt(std::max(0.0, (vy - f.slope * cov) / std::max(1, n - 2)));
+    return f;
+}
+
+// The offset in [centre − half, centre + half] with the best fit, to `step` and then to a
+// fraction of it (parabola through the best three).
+std::pair<double, double> bestOffset(const Points& v, const TimeSignal& pos, double drift, double centre, double half,
+                                     double step, std::size_t from, std::size_t to, std::size_t stride = 1)
+{
+    std::vector<double> offs, r2s;
+    for (double o = centre - half; o <= centre + half + 1e-12; o += step) {
+        offs.push_back(o);
+        r2s.push_back(fitAt(v, pos, o, drift, from, to, stride).r2);
+    }
+    const std::size_t k = std::size_t(std::max_element(r2s.begin(), r2s.end()) - r2s.begin());
+    double o = offs[k];
+    if (k > 0 && k + 1 < offs.size()) {
+        const double a = r2s[k - 1], b = r2s[k], c = r2s[k + 1], den = a - 2 * b + c;
+        if (std::abs(den) > 1e-15)
+            o += std::clamp(0.5 * (a - c) / den, -0.5, 0.5) * step;
+    }
+    return {o, r2s[k]};
+}
+
+// Like bestOffset, but with the scale and intercept of the whole fit held: a stretch of
+// steady motion then still pins the offset (with both free it fits any shift).
+double bestOffsetHeld(const Points& v, const TimeSignal& pos, double drift, double centre, double half, double step,
+                      std::size_t from, std::size_t to, double slope, double intercept)
+{
+    std::vector<double> offs, rss;
+    for (double o = centre - half; o <= centre + half + 1e-12; o += step) {
+        double sum = 0.0;
+        for (std::size_t i = from; i < to; ++i) {
+            const double e = v.d[i] - intercept - slope * positionAt(pos, (v.t[i] - o) / (1.0 + drift));
+            sum += e * e;
+        }
+        offs.push_back(o);
+        rss.push_back(sum);
+    }
+    const std::size_t k = std::size_t(std::min_element(rss.begin(), rss.end()) - rss.begin());
+    double o = offs[k];
+    if (k > 0 && k + 1 < offs.size()) {
+        const double a = rss[k - 1], b = rss[k], c = rss[k + 1], den = a - 2 * b + c;
+        if (std::abs(den) > 1e-15)
+            o += std::clamp(0.5 * (a - c) / den, -0.5, 0.5) * step;
+    }
+    return o;
+}
+
+// When the signal first leaves its resting value `base` by a tenth of its range; nullopt
+// when it does not rest at the start (its first `rest_s` already span a twentieth of it).
+std::optional<double> onsetFrom(const std::vector<double>& t, const std::vector<double>& x, double base, double rest_s)
+{
+    if (t.size() < 5)
+        return std::nullopt;
+    std::vector<double> sorted = x;
+    std::sort(sorted.begin(), sorted.end());
+    const double range = sorted[sorted.size() * 98 / 100] - sorted[sorted.size() * 2 / 100];
+    if (!(range > 0))
+        return std::nullopt;
+    double restLo = base, restHi = base;
+    for (std::size_t i = 0; i < t.size() && t[i] - t.front() <= rest_s; ++i) {
+        restLo = std::min(restLo, x[i]);
+        restHi = std::max(restHi, x[i]);
+    }
+    if (rest_s > 0 && restHi - restLo > 0.05 * range)
+        return std::nullopt;
+    for (std::size_t i = 0; i < t.size(); ++i)
+        if (std::abs(x[i] - base) > 0.1 * range)
+            return t[i];
+    return std::nullopt;
+}
+
+double medianOf(std::vector<double> v)
+{
+    if (v.empty())
+        return 0.0;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+TimeSignal needlePosition(const Run& run) { return {run.time_s, run.position_mm}; }
+
+SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& position, double frame_s,
+                                   const SyncOptions& o)
+{
+    Points v;
+    for (std::size_t i = 0; i < video.time_s.size() && i < video.value.size(); ++i)
+        if (std::isfinite(video.value[i]) && std::isfinite(video.time_s[i])) {
+            v.t.push_back(video.time_s[i]);
+            v.d.push_back(video.value[i]);
+        }
+    TimeSignal pos;
+    for (std::size_t i = 0; i < position.time_s.size() && i < position.value.size(); ++i)
+        if (std::isfinite(position.value[i]) && std::isfinite(position.time_s[i])) {
+            pos.time_s.push_back(position.time_s[i]);
+            pos.value.push_back(position.value[i]);
+        }
+    if (v.t.size() < 20 || pos.time_s.size() < 10)
+        throw std::invalid_argument("too few samples to synchronise");
+    const auto [pmin, pmax] = std::minmax_element(pos.value.begin(), pos.value.end());
+    if (!(*pmax - *pmin > 0))
+        throw std::invalid_argument("the recorded position does not change");
+    frame_s = std::clamp(frame_s > 0 ? frame_s : 1.0 / 30.0, 1e-3, 1.0);
+    const std::size_t n = v.t.size();
+
+    SyncResult r;
+    r.method = QStringLiteral("needle displacement along its axis vs recorded position");
+    // Onsets: the rig rests at its first position before the recording.
+    double videoRest = 0.0;
+    {
+        std::vector<double> restD;
+        for (std::size_t i = 0; i < n && v.t[i] - v.t.front() <= 0.5; ++i)
+            restD.push_back(v.d[i]);
+        videoRest = medianOf(restD);
+        const auto a = onsetFrom(v.t, v.d, videoRest, 0.5);
+        const auto b = onsetFrom(pos.time_s, pos.value, pos.value.front(), 0.0);
+        if (a && b)
+            r.onsetOffset_s = *a - *b;
+    }
+
+    // Coarse: every half frame (at most 20 ms), drift 0, on at most ~800 points.
+    const double coarse = std::min(0.02, frame_s / 2);
+    const std::size_t stride = std::max<std::size_t>(1, n / 800);
+    std::vector<double> offs, r2s;
+    for (double off = -o.maxOffset_s; off <= o.maxOffset_s + 1e-9; off += coarse) {
+        offs.push_back(off);
+        r2s.push_back(fitAt(v, pos, off, 0.0, 0, n, stride).r2);
+    }
+    for (std::size_t i = 0; i < offs.size(); i += std::max<std::size_t>(1, offs.size() / 600))
+        r.curve.emplace_back(offs[i], std::sqrt(r2s[i]));
+    // Local maxima, best first.
+    std::vector<std::size_t> peaks;
+    const int w = std::max(1, int(0.1 / coarse));
+    for (std::size_t i = 0; i < offs.size(); ++i) {
+        bool isMax = true;
+        for (int j = -w; j <= w && isMax; ++j) {
+            const long k = long(i) + j;
+            if (j != 0 && k >= 0 && k < long(offs.size()) && r2s[std::size_t(k)] > r2s[i])
+                isMax = false;
+        }
+        if (isMax)
+            peaks.push_back(i);
+    }
+    std::sort(peaks.begin(), peaks.end(), [&](std::size_t a, std::size_t b) { return r2s[a] > r2s[b]; });
+    if (peaks.empty() || r2s[peaks.front()] <= 0)
+        throw std::invalid_argument("the video's displacement does not follow the recorded position");
+
+    // Refine the best few peaks: drift and offset together. The offset is searched around
+    // the coarse peak moved by the drift at the middle of the video, where the coarse scan
+    // (drift 0) matched best.
+    const double videoMid = 0.5 * (v.t.front() + v.t.back());
+    struct Refined {
+        double offset, drift, r2;
+    };
+    std::vector<Refined> refined;
+    for (std::size_t p = 0; p < peaks.size() && p < 4; ++p) {
+        if (r2s[peaks[p]] < r2s[peaks.front()] - 0.1)
+            break;
+        const double o0 = offs[peaks[p]];
+        const double recMid = videoMid - o0;
+        Refined best{o0, 0.0, -1.0};
+        auto tryDrift = [&](double drift) {
+            const double centre = o0 - drift * recMid;
+            const auto [off, r2] = bestOffset(v, pos, drift, centre, 2 * coarse, frame_s / 20, 0, n, std::max<std::size_t>(1, stride / 2));
+            if (r2 > best.r2)
+                best = {off, drift, r2};
+        };
+        const double dStep = std::max(o.maxDrift / 10, 1e-5);
+        for (double d = -o.maxDrift; d <= o.maxDrift + 1e-12; d += dStep)
+            tryDrift(d);
+        const double d0 = best.drift;
+        for (double d = d0 - dStep; d <= d0 + dStep + 1e-12; d += dStep / 10)
+            tryDrift(d);
+        // Last: every point, offset to a fiftieth of a frame.
+        const auto [off, r2] = bestOffset(v, pos, best.drift, best.offset, frame_s / 10, frame_s / 50, 0, n);
+        refined.push_back({off, best.drift, r2});
+    }
+    std::sort(refined.begin(), refined.end(), [](const Refined& a, const Refined& b) { return a.r2 > b.r2; });
+    // Near-equal peaks (a repeating motion): the one the onsets point to.
+    Refined chosen = refined.front();
+    if (o.anchorOnOnset && r.onsetOffset_s && std::abs(*r.onsetOffset_s) <= o.maxOffset_s + 1.0) {
+        double bestDist = std::abs(chosen.offset - *r.onsetOffset_s);
+        for (const Refined& c : refined)
+            if (c.r2 >= refined.front().r2 - 0.01 && std::abs(c.offset - *r.onsetOffset_s) < bestDist) {
+                bestDist = std::abs(c.offset - *r.onsetOffset_s);
+                chosen = c;
+            }
+    }
+    // A video that starts while the needle moves slowly (near a turning point) looks at
+    // rest at first: its "onset" is no onset. It is one only when the picture's resting
+    // place is where the fit puts the rig's resting position.
+    if (r.onsetOffset_s) {
+        const Fit f = fitAt(v, pos, chosen.offset, chosen.drift, 0, n);
+        const auto [dmin, dmax] = std::minmax_element(v.d.begin(), v.d.end());
+        if (std::abs(videoRest - (f.intercept + f.slope * pos.value.front())) > 0.05 * (*dmax - *dmin)) {
+            r.onsetOffset_s.reset();
+            chosen = refined.front();
+        }
+    }
+    const Fit fit = fitAt(v, pos, chosen.offset, chosen.drift, 0, n);
+    r.offset_s = chosen.offset;
+    r.drift = chosen.drift;
+    r.correlation = fit.slope >= 0 ? std::sqrt(fit.r2) : -std::sqrt(fit.r2);
+    r.scale_px_per_mm = fit.slope;
+    r.pairs = fit.n;
+
+    // How precise: the fit's noise against the signal's slope, and the two halves of the
+    // motion (split where half of the travel is done) fitted apart.
+    double sumSlope2 = 0.0, travel = 0.0;
+    std::vector<double> cumulative(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double tr = (v.t[i] - chosen.offset) / (1 + chosen.drift);
+        const double h = 0.5 * frame_s;
+        const double dxdt = fit.slope * (positionAt(pos, tr + h) - positionAt(pos, tr - h)) / (2 * h);
+        sumSlope2 += dxdt * dxdt;
+        if (i > 0)
+            travel += std::abs(positionAt(pos, tr) - positionAt(pos, (v.t[i - 1] - chosen.offset) / (1 + chosen.drift)));
+        cumulative[i] = travel;
+    }
+    const double fitSigma_s = sumSlope2 > 0 ? fit.residual / std::sqrt(sumSlope2) : 1e9;
+    std::size_t split = 0;
+    while (split < n && cumulative[split] < 0.5 * travel)
+        ++split;
+    double halves_s = 1e9;
+    if (split >= 10 && n - split >= 10) {
+        const double a = bestOffsetHeld(v, pos, chosen.drift, chosen.offset, 3 * frame_s, frame_s / 20, 0, split, fit.slope, fit.intercept);
+        const double b = bestOffsetHeld(v, pos, chosen.drift, chosen.offset, 3 * frame_s, frame_s / 20, split, n, fit.slope, fit.intercept);
+        halves_s = std::abs(a - b);
+    }
+    r.uncertainty_s = std::max(3.0 * fitSigma_s, 0.5 * halves_s);
+
+    // Confidence: each factor is 1 when that part is convincing.
+    const double qFit = std::clamp((fit.r2 - 0.8) / 0.15, 0.0, 1.0);
+    double second = 0.0;
+    for (std::size_t p : peaks)
+        if (std::abs(offs[p] - chosen.offset) > 0.15) {
+            second = std::max(second, r2s[p]);
+        }
+    const double qUnique = std::clamp((fit.r2 - second) / 0.05, 0.0, 1.0);
+    const double u = r.uncertainty_s / frame_s;
+    const double qPrecise = 1.0 / (1.0 + (u / 0.5) * (u / 0.5));
+    double qOnset = 1.0;
+    if (r.onsetOffset_s) {
+        const double d = (chosen.offset - *r.onsetOffset_s) / 0.25;
+        qOnset = std::exp(-d * d);
+    }
+    r.confidence = std::clamp(qFit * qUnique * qPrecise * qOnset, 0.0, 1.0);
+    return r;
+}
+
+}  // namespace nb

@@ -1,0 +1,543 @@
+#include "needle_tracker.h"
+
+#include "video_error.h"
+
+#include "core/tr.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nb::video {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+cv::Mat toGray(const cv::Mat& bgr)
+{
+    cv::Mat gray;
+    if (bgr.channels() == 1)
+        gray = bgr;
+    else
+        cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
+    return gray;
+}
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return kNaN;
+    const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+// A strip along a line, sampled every pixel along it and `halfWidth` pixels to either side.
+struct Strip {
+    cv::Mat mapX, mapY;  // (2·halfWidth+1) rows × length columns
+    int length = 0;
+
+    Strip(const NeedleAxis& axis, int width, int height, int halfWidth, double sideOffset = 0.0)
+    {
+        const double len = axis.length();
+        if (len < 2.0)
+            return;
+        const double ux = (axis.x2() - axis.x1()) / len, uy = (axis.y2() - axis.y1()) / len;
+        const double nx = -uy, ny = ux;
+        // Extend the line across the whole picture: the tip may travel past the drawn ends.
+        double s0 = -1e9, s1 = 1e9;
+        auto clip = [&](double p, double d, double lo, double hi) {
+            if (std::abs(d) < 1e-9)
+                return;
+            double a = (lo - p) / d, b = (hi - p) / d;
+            if (a > b)
+                std::swap(a, b);
+            s0 = std::max(s0, a);
+            s1 = std::min(s1, b);
+        };
+        clip(axis.x1(), ux, 0.0, width - 1.0);
+        clip(axis.y1(), uy, 0.0, height - 1.0);
+        if (!(s1 > s0 + 2))
+            return;
+        length = int(s1 - s0);
+        origin = s0;
+        mapX.create(2 * halfWidth + 1, length, CV_32F);
+        mapY.create(2 * halfWidth + 1, length, CV_32F);
+        for (int r = 0; r < mapX.rows; ++r) {
+            double t = r - halfWidth;
+            if (sideOffset != 0.0)
+                t += t >= 0 ? sideOffset : -sideOffset;
+            for (int j = 0; j < length; ++j) {
+                const double s = s0 + j;
+                mapX.at<float>(r, j) = float(axis.x1() + s * ux + t * nx);
+                mapY.at<float>(r, j) = float(axis.y1() + s * uy + t * ny);
+            }
+        }
+    }
+    double origin = 0.0;  // position along the axis (from p1) of profile sample 0
+
+    // The strip's mean across its width, smoothed along it.
+    std::vector<double> profile(const cv::Mat& gray, double smoothing_px = 0.8) const
+    {
+        cv::Mat sampled, column;
+        cv::remap(gray, sampled, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+        sampled.convertTo(sampled, CV_32F);
+        cv::reduce(sampled, column, 0, cv::REDUCE_AVG);
+        if (smoothing_px > 0)
+            cv::GaussianBlur(column, column, cv::Size(0, 0), smoothing_px, 0.1);
+        return std::vector<double>(column.begin<float>(), column.end<float>());
+    }
+};
+
+// A step detector along the profile: the mean of the next `w` samples minus the mean of
+// the previous `w`. Long enough to see a faint edge through heavy noise, short enough to
+// keep neighbouring edges apart.
+constexpr int kStep = 8;
+std::vector<double> gradient(const std::vector<double>& p)
+{
+    const std::size_t n = p.size();
+    std::vector<double> prefix(n + 1, 0.0), g(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        prefix[i + 1] = prefix[i] + p[i];
+    for (std::size_t i = kStep; i + kStep < n; ++i)
+        g[i] = ((prefix[i + 1 + kStep] - prefix[i + 1]) - (prefix[i] - prefix[i - kStep])) / kStep;
+    return g;
+}
+
+// Per position, what is there even in the frames where the tip is not: the low (15 %)
+// percentile over frames of the edge response of one sign. A median would also remove a
+// tip that rests at one place for most of the video.
+std::vector<double> staticPart(const std::vector<std::vector<double>>& gradients, int polarity)
+{
+    if (gradients.empty())
+        return {};
+    const std::size_t n = gradients.front().size();
+    std::vector<double> out(n), column(gradients.size());
+    const std::size_t k15 = gradients.size() * 15 / 100;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = 0; k < gradients.size(); ++k)
+            column[k] = polarity * gradients[k][i];
+        std::nth_element(column.begin(), column.begin() + std::ptrdiff_t(k15), column.end());
+        // Below zero is the opposite edge (e.g. where the tip rests, seen from the other
+        // side), not something of this sign that is always there.
+        out[i] = std::max(0.0, column[k15]);
+    }
+    return out;
+}
+
+// The noise of the edge response: its spread over frames around the median, per position.
+double robustSigma(const std::vector<std::vector<double>>& gradients)
+{
+    if (gradients.empty())
+        return 1e-6;
+    const std::size_t n = gradients.front().size();
+    std::vector<double> dev, column(gradients.size());
+    for (std::size_t i = 0; i < n; i += 2) {
+        for (std::size_t k = 0; k < gradients.size(); ++k)
+            column[k] = gradients[k][i];
+        const double m = median(column);
+        for (double v : column)
+            dev.push_back(std::abs(v - m));
+    }
+    return std::max(1e-6, 1.4826 * median(dev));
+}
+
+struct Peak {
+    double position = kNaN;
+    double strength = 0.0;
+    double second = 0.0;  // the strongest edge of the same sign at least 2·kStep away
+};
+
+// The strongest edge of sign `polarity` above what is always there, to a fraction of a sample.
+Peak strongestEdge(const std::vector<double>& g, const std::vector<double>& still, int polarity)
+{
+    Peak p;
+    const std::size_t n = g.size();
+    if (n < 5)
+        return p;
+    std::size_t best = 0;
+    double bestV = -1e300;
+    auto v = [&](std::size_t i) { return polarity * g[i] - still[i]; };
+    for (std::size_t i = 2; i + 2 < n; ++i)
+        if (v(i) > bestV) {
+            bestV = v(i);
+            best = i;
+        }
+    const double a = v(best - 1), b = v(best), c = v(best + 1);
+    const double den = a - 2 * b + c;
+    const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
+    p.position = double(best) + frac;
+    p.strength = bestV;
+    double second = 0.0;
+    for (std::size_t i = 2; i + 2 < n; ++i)
+        if ((i + 2 * kStep < best || i > best + 2 * kStep) && v(i) > second)
+            second = v(i);
+    p.second = second;
+    return p;
+}
+
+
+struct Samples {
+    std::vector<cv::Mat> gray;
+    int width = 0, height = 0;
+};
+
+Samples sampleFrames(FrameReader& reader, int count)
+{
+    Samples s;
+    const FrameIndex& index = reader.index();
+    s.width = index.width;
+    s.height = index.height;
+    const int n = index.size();
+    if (n == 0)
+        return s;
+    count = std::clamp(count, 1, n);
+    int last = -1;
+    for (int k = 0; k < count; ++k) {
+        int i = count == 1 ? 0 : int(std::lround(double(k) * (n - 1) / (count - 1)));
+        while (i < n - 1 && index.frames[std::size_t(i)].duplicate)
+            ++i;
+        if (i == last)
+            continue;
+        last = i;
+        s.gray.push_back(toGray(reader.read(i).image).clone());
+    }
+    return s;
+}
+
+struct AxisScore {
+    NeedleAxis axis;
+    double ridge = 0.0;
+    double snr = 0.0;
+};
+
+// How clearly an edge moves along `axis` in the sampled frames.
+double movingEdgeSnr(const Samples& s, const NeedleAxis& axis)
+{
+    const Strip strip(axis, s.width, s.height, 2);
+    if (strip.length < 20)
+        return 0.0;
+    std::vector<std::vector<double>> g;
+    for (const cv::Mat& f : s.gray)
+        g.push_back(gradient(strip.profile(f)));
+    const double sigma = robustSigma(g);
+    double best = 0.0;
+    for (int polarity : {1, -1}) {
+        const std::vector<double> still = staticPart(g, polarity);
+        std::vector<double> strength, position, alone;
+        for (const auto& gk : g) {
+            const Peak p = strongestEdge(gk, still, polarity);
+            strength.push_back(p.strength);
+            position.push_back(p.position);
+            alone.push_back(p.strength > 0 ? 1.0 - p.second / p.strength : 0.0);
+        }
+        // An edge that moves: its positions spread beyond a pixel across the video.
+        std::vector<double> sorted = position;
+        std::sort(sorted.begin(), sorted.end());
+        const double spread = sorted[sorted.size() * 9 / 10] - sorted[sorted.size() / 10];
+        if (spread < 1.0)
+            continue;
+        // One tip stands alone on its line; changing text has many edges alike.
+        best = std::max(best, median(strength) / sigma * median(alone));
+    }
+    return best;
+}
+
+// Refines a candidate line: the small turn and shift (±1.5°, ±3 px) that puts the most
+// ridge under it, at full resolution.
+NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough)
+{
+    const double len = rough.length();
+    if (len < 2)
+        return rough;
+    const QPointF mid = 0.5 * (rough.p1() + rough.p2());
+    const double base = std::atan2(rough.y2() - rough.y1(), rough.x2() - rough.x1());
+    auto sumAlong = [&](double angle, double shift) {
+        const double ux = std::cos(angle), uy = std::sin(angle), nx = -uy, ny = ux;
+        double sum = 0.0;
+        for (double s = -len / 2; s <= len / 2; s += 1.0) {
+            const double x = mid.x() + s * ux + shift * nx, y = mid.y() + s * uy + shift * ny;
+            const int xi = int(x), yi = int(y);
+            if (xi < 0 || yi < 0 || xi + 1 >= ridge.cols || yi + 1 >= ridge.rows)
+                continue;
+            const double fx = x - xi, fy = y - yi;
+            sum += (1 - fx) * (1 - fy) * ridge.at<float>(yi, xi) + fx * (1 - fy) * ridge.at<float>(yi, xi + 1)
+                   + (1 - fx) * fy * ridge.at<float>(yi + 1, xi) + fx * fy * ridge.at<float>(yi + 1, xi + 1);
+        }
+        return sum;
+    };
+    double bestA = base, bestS = 0.0, bestV = -1.0;
+    for (double da = -1.5; da <= 1.5 + 1e-9; da += 0.1)
+        for (double sh = -3.0; sh <= 3.0 + 1e-9; sh += 0.25) {
+            const double v = sumAlong(base + da * M_PI / 180.0, sh);
+            if (v > bestV) {
+                bestV = v;
+                bestA = base + da * M_PI / 180.0;
+                bestS = sh;
+            }
+        }
+    const double ux = std::cos(bestA), uy = std::sin(bestA);
+    const QPointF c = mid + QPointF(-uy, ux) * bestS;
+    return NeedleAxis(c - QPointF(ux, uy) * (len / 2), c + QPointF(ux, uy) * (len / 2));
+}
+
+}  // namespace
+
+std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int maxCount, int sampleFrames_,
+                                             std::vector<double>* scores)
+{
+    const Samples s = sampleFrames(reader, sampleFrames_);
+    if (s.gray.size() < 3)
+        return {};
+    cv::Mat mean = cv::Mat::zeros(s.height, s.width, CV_32F);
+    for (const cv::Mat& f : s.gray)
+        cv::accumulate(f, mean);
+    mean /= double(s.gray.size());
+    // Thin structures of either polarity: the picture minus its local mean.
+    cv::Mat local, ridge;
+    cv::blur(mean, local, cv::Size(15, 15));
+    ridge = cv::abs(mean - local);
+    cv::GaussianBlur(ridge, ridge, cv::Size(0, 0), 1.0);
+
+    // Straight-line sums of the ridge at every angle (a Radon transform by rotation), on a
+    // picture at most 360 pixels wide; the strongest lines are the candidates.
+    const double scale = std::min(1.0, 360.0 / std::max(s.width, s.height));
+    cv::Mat small;
+    cv::resize(ridge, small, cv::Size(), scale, scale, cv::INTER_AREA);
+    // Cap the ridge so that a wide bright bar does not outweigh a long thin needle.
+    std::vector<float> values(small.begin<float>(), small.end<float>());
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() * 99 / 100), values.end());
+    const float cap = std::max(1e-3f, values[values.size() * 99 / 100]);
+    cv::min(small, cap, small);
+    const int diag = int(std::ceil(std::hypot(small.cols, small.rows))) + 2;
+    const cv::Point2f centre(small.cols / 2.0f, small.rows / 2.0f);
+    struct Candidate {
+        double angle_deg, rho, score;
+    };
+    std::vector<Candidate> candidates;
+    for (int a = 0; a < 180; ++a) {
+        cv::Mat m = cv::getRotationMatrix2D(centre, a, 1.0);
+        m.at<double>(0, 2) += diag / 2.0 - centre.x;
+        m.at<double>(1, 2) += diag / 2.0 - centre.y;
+        cv::Mat rotated, rows;
+        cv::warpAffine(small, rotated, m, cv::Size(diag, diag), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+        cv::reduce(rotated, rows, 1, cv::REDUCE_SUM);  // one sum per horizontal line
+        for (int y = 1; y + 1 < rows.rows; ++y) {
+            const float v = rows.at<float>(y);
+            if (v > rows.at<float>(y - 1) && v >= rows.at<float>(y + 1))
+                candidates.push_back({double(a), y - diag / 2.0, double(v)});
+        }
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
+    std::vector<Candidate> kept;
+    for (const Candidate& c : candidates) {
+        bool near = false;
+        for (const Candidate& k : kept) {
+            // (angle, rho) and (angle ± 180, −rho) are the same line.
+            const double raw = std::abs(c.angle_deg - k.angle_deg);
+            const bool wrapped = raw > 90.0;
+            const double da = wrapped ? 180.0 - raw : raw;
+            if (da < 8.0 && std::abs(c.rho - (wrapped ? -k.rho : k.rho)) < 8.0)
+                near = true;
+        }
+        if (!near)
+            kept.push_back(c);
+        if (kept.size() >= 16)
+            break;
+    }
+    std::vector<std::pair<double, NeedleAxis>> scored;
+    for (const Candidate& c : kept) {
+        // A horizontal line at height rho (from the centre) in the rotated picture: with
+        // getRotationMatrix2D's y' = −sin·x + cos·y it runs along (cos, sin) in the picture,
+        // rho along the normal (−sin, cos).
+        const double th = c.angle_deg * M_PI / 180.0;
+        const double dx = std::cos(th), dy = std::sin(th);
+        const double nx = -std::sin(th), ny = std::cos(th);
+        const double cx = (centre.x + c.rho * nx) / scale, cy = (centre.y + c.rho * ny) / scale;
+        NeedleAxis rough(QPointF(cx - dx * diag, cy - dy * diag), QPointF(cx + dx * diag, cy + dy * diag));
+        const Strip clipper(rough, s.width, s.height, 0);
+        if (clipper.length < 20)
+            continue;
+        const double len = rough.length();
+        const QPointF u((rough.x2() - rough.x1()) / len, (rough.y2() - rough.y1()) / len);
+        rough = NeedleAxis(rough.p1() + u * clipper.origin, rough.p1() + u * (clipper.origin + clipper.length));
+        const NeedleAxis axis = refineAxis(ridge, rough);
+        const double snr = movingEdgeSnr(s, axis);
+        // Noise alone gives a strongest edge about 3 σ above the noise.
+        const double score = snr < 3.0 ? 0.0 : snr * std::sqrt(c.score);
+        if (score > 0)
+            scored.emplace_back(score, axis);
+    }
+    std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // The region the operator drew (if any) says where the needle is: lines found in the
+    // whole picture (a part of a line is too short to find it reliably) that cross it.
+    auto crosses = [&](const NeedleAxis& axis) {
+        for (double t = 0; t <= 1.0; t += 0.01)
+            if (roi.contains(axis.pointAt(t).toPoint()))
+                return true;
+        return false;
+    };
+    if (!roi.isEmpty() && std::any_of(scored.begin(), scored.end(), [&](const auto& c) { return crosses(c.second); }))
+        scored.erase(std::remove_if(scored.begin(), scored.end(), [&](const auto& c) { return !crosses(c.second); }), scored.end());
+    // Refined lines that ended up alike count once.
+    std::vector<NeedleAxis> out;
+    for (const auto& [score, axis] : scored) {
+        bool alike = false;
+        for (const NeedleAxis& o : out) {
+            const double angle = std::abs(std::remainder(axis.angle() - o.angle(), 180.0));
+            const QPointF mid = 0.5 * (axis.p1() + axis.p2());
+            const double len = o.length();
+            const double dist = std::abs((o.x2() - o.x1()) * (o.y1() - mid.y()) - (o.x1() - mid.x()) * (o.y2() - o.y1())) / len;
+            alike = alike || (angle < 5.0 && dist < 6.0);
+        }
+        if (!alike && int(out.size()) < maxCount) {
+            out.push_back(axis);
+            if (scores)
+                scores->push_back(score);
+        }
+    }
+    return out;
+}
+
+std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int sampleFrames)
+{
+    const std::vector<NeedleAxis> c = needleAxisCandidates(reader, roi, 1, sampleFrames);
+    if (c.empty())
+        return std::nullopt;
+    return c.front();
+}
+
+namespace {
+
+// One axis being tracked: its strip, what is always there, the noise and the tip's sign.
+struct AxisTracker {
+    Strip strip;
+    std::vector<double> still;
+    double sigma = 1.0;
+    int polarity = 1;
+    double last = kNaN;  // last tip position (profile samples)
+    int lost = 0;        // frames since it was last seen
+    std::vector<double> strengths;
+
+    AxisTracker(const NeedleAxis& axis, const Samples& s) : strip(axis, s.width, s.height, 2)
+    {
+        if (strip.length < 20)
+            return;
+        std::vector<std::vector<double>> g;
+        for (const cv::Mat& f : s.gray)
+            g.push_back(gradient(strip.profile(f)));
+        sigma = robustSigma(g);
+        // The tip's edge sign: the one that stands out of the noise more.
+        const std::vector<double> up = staticPart(g, 1), down = staticPart(g, -1);
+        double sp = 0, sn = 0;
+        for (const auto& gk : g) {
+            sp += strongestEdge(gk, up, 1).strength;
+            sn += strongestEdge(gk, down, -1).strength;
+        }
+        polarity = sp >= sn ? 1 : -1;
+        still = polarity > 0 ? up : down;
+    }
+
+    // The tip in this frame: searched near where it was (a faint tip in heavy noise beats
+    // the noise nearby more easily than the noise of the whole line), everywhere when it
+    // has been lost for a while. NaN when no edge stands clearly out of the noise.
+    double locate(const cv::Mat& gray)
+    {
+        const std::vector<double> g = gradient(strip.profile(gray));
+        const int n = int(g.size());
+        int lo = 2, hi = n - 3;
+        const bool near = std::isfinite(last) && lost < 8;
+        if (near) {
+            const int w = 24 + 8 * lost;
+            lo = std::max(2, int(last) - w);
+            hi = std::min(n - 3, int(last) + w);
+        }
+        int best = -1;
+        double bestV = -1e300;
+        for (int i = lo; i <= hi; ++i) {
+            const double v = polarity * g[std::size_t(i)] - still[std::size_t(i)];
+            if (v > bestV) {
+                bestV = v;
+                best = i;
+            }
+        }
+        if (best < 0 || !(bestV > (near ? 3.5 : 5.0) * sigma)) {
+            ++lost;
+            return kNaN;
+        }
+        strengths.push_back(bestV / sigma);
+        auto v = [&](int i) { return polarity * g[std::size_t(i)] - still[std::size_t(i)]; };
+        const double a = v(best - 1), b = v(best), c = v(best + 1), den = a - 2 * b + c;
+        const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
+        last = best + frac;
+        lost = 0;
+        return last;
+    }
+};
+
+// Isolated jumps (a noise peak elsewhere on the strip) against their neighbours: masked.
+void maskJumps(std::vector<double>& d)
+{
+    std::vector<double> cleaned = d;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        if (!std::isfinite(d[i]))
+            continue;
+        std::vector<double> w;
+        for (std::size_t j = i >= 3 ? i - 3 : 0; j <= std::min(d.size() - 1, i + 3); ++j)
+            if (j != i && std::isfinite(d[j]))
+                w.push_back(d[j]);
+        if (w.size() >= 3 && std::abs(d[i] - median(w)) > 10.0)
+            cleaned[i] = kNaN;
+    }
+    d = cleaned;
+}
+
+}  // namespace
+
+std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
+                                      const std::function<void(int, int)>& progress, const std::atomic_bool* cancel)
+{
+    const FrameIndex& index = reader.index();
+    const Samples s = sampleFrames(reader, 40);
+    std::vector<AxisTracker> trackers;
+    std::vector<NeedleTrack> out(axes.size());
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        trackers.emplace_back(axes[a], s);
+        if (trackers.back().strip.length < 20)
+            throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
+        out[a].axis = axes[a];
+    }
+    const int n = index.size();
+    for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
+        // Frames the index calls duplicates are tracked too: a slow needle in a clean
+        // picture changes too little between frames to tell from a repeat, and a real
+        // repeat only shows its tip one frame late, which the fit over all frames absorbs.
+        const FrameInfo& info = index.frames[std::size_t(i)];
+        const cv::Mat gray = toGray(reader.read(i).image);
+        for (std::size_t a = 0; a < axes.size(); ++a) {
+            out[a].time_s.push_back(info.time_s);
+            const double p = trackers[a].locate(gray);
+            out[a].displacement_px.push_back(std::isfinite(p) ? p + trackers[a].strip.origin : kNaN);
+        }
+        if (progress && i % 50 == 0)
+            progress(i, n);
+    }
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        maskJumps(out[a].displacement_px);
+        const auto& d = out[a].displacement_px;
+        out[a].masked = int(std::count_if(d.begin(), d.end(), [](double v) { return !std::isfinite(v); }));
+        out[a].edgeSnr = median(trackers[a].strengths);
+    }
+    return out;
+}
+
+NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis, const std::function<void(int, int)>& progress,
+                        const std::atomic_bool* cancel)
+{
+    return trackNeedles(reader, {axis}, progress, cancel).front();
+}
+
+}  // namespace nb::video

@@ -1,0 +1,55 @@
+#pragma once
+// The needle's signed displacement along its own axis, frame by frame: what the picture
+// measures, in pixels, for synchronisation and for the friction phases.
+//
+// The axis is a line the operator gives or one found in the picture: the straight ridge
+// (bright or dark) along which an edge moves from frame to frame. Along it a strip a few
+// pixels wide is sampled into a profile; what stays put in the profile (plates, overlays
+// crossing the strip, the shaft's own texture) is removed by subtracting the median gradient
+// over the video, and the moving edge that is left is the tip. Its position is found in every
+// frame on its own (no accumulated drift), to a fraction of a pixel. Frames where no edge
+// stands out of the noise are masked (NaN), never guessed.
+
+#include "frame_reader.h"
+
+#include <QLineF>
+#include <QRect>
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace nb::video {
+
+// A line in video pixels. Displacements are positive towards `p2()`.
+using NeedleAxis = QLineF;
+
+struct NeedleTrack {
+    std::vector<double> time_s;           // video time of each frame
+    std::vector<double> displacement_px;  // tip position along the axis; NaN when masked
+    NeedleAxis axis;
+    bool axisDetected = false;            // false: the caller gave the axis
+    double edgeSnr = 0.0;                 // median tip edge strength over the gradient noise
+    int masked = 0;                       // frames without a usable tip (duplicates included)
+};
+
+// Finds the needle's axis in `reader`'s video from `sampleFrames` frames spread over it,
+// inside `roi` when it is not empty. nullopt when nothing moves along a line. Throws VideoError.
+std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, int sampleFrames = 40);
+
+// The likeliest needle axes, best first (at most `maxCount`); `scores` (may be null) gets how
+// clearly each looks like a needle (a moving edge on a straight ridge).
+std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
+                                             std::vector<double>* scores = nullptr);
+
+// Tracks the tip along each axis in every frame, in one pass over the video. Throws VideoError.
+std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
+                                      const std::function<void(int, int)>& progress = {},
+                                      const std::atomic_bool* cancel = nullptr);
+
+// Tracks the tip along `axis` in every frame. Throws VideoError.
+NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis,
+                        const std::function<void(int, int)>& progress = {},
+                        const std::atomic_bool* cancel = nullptr);
+
+}  // namespace nb::video
