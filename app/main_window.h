@@ -15,6 +15,7 @@ class QLabel;
 class QTimer;
 class QDockWidget;
 class QTabWidget;
+class QMenu;
 
 namespace nb {
 
@@ -31,6 +32,8 @@ class SessionView;
 class CalibrationWizard;
 class ReviewWorkspace;
 class AnalysisWorkspace;
+class ExportDialog;
+class WelcomeDialog;
 
 struct WorkbenchOptions {
     bool realtime = true;             // false: the simulated rig runs as fast as it can (tests)
@@ -44,6 +47,9 @@ struct WorkbenchOptions {
     // Makes the devices instead of the settings (tests: one helper connects the simulated rig
     // and keeps a hand on it, as QGroundControl's MockLink does).
     std::function<devices::DeviceSet()> deviceFactory;
+    // With no session given or last used: show the welcome (new / open / recent) instead of
+    // creating an empty session folder.
+    bool welcome = true;
 };
 
 // The workbench window: the control panel and status (left), the live plots (centre), the
@@ -87,12 +93,21 @@ public:
     // opened, with a message). Refused while a run records or the calibration wizard is open.
     // True when every chosen device opened.
     bool switchDevices(const devices::DeviceSpec& spec);
+    // Session ▸ Export session…: the export dialog (non-modal; null without a session).
+    ExportDialog* exportSession();
+    // The welcome: new session, open one, or a recent one.
+    WelcomeDialog* showWelcome();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
     void buildMenus();
+    // Startup, welcome, recent sessions, video and export actions (issue 14).
+    void openStartupSession();
+    QStringList recentSessions() const;
+    void rememberRecentSession(const QString& dir);
+    void addDayActions(QMenu* sessionMenu);
     // A new engine on `spec` (nullopt: the simulated rig); `problem` says why it fell back.
     std::unique_ptr<devices::AcquisitionEngine> makeEngine(const std::optional<devices::DeviceSpec>& spec, QString* problem,
                                                            std::optional<double> forceLimit_N = std::nullopt);

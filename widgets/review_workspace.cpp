@@ -15,6 +15,8 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QDir>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QKeyEvent>
@@ -50,6 +52,8 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
                                         : tr("Indexing the video: %1 frames").arg(done));
     });
     connect(decoder_, &devices::VideoDecoder::opened, this, [this](devices::FrameIndexPtr index) {
+        if (videoPath_.isEmpty())
+            return;  // the run changed to one without video while this one was indexed
         index_ = index;
         for (const QString& w : index->warnings)
             showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
@@ -90,6 +94,8 @@ void ReviewWorkspace::buildUi()
 {
     video_ = new VideoView(this);
     video_->setFocusPolicy(Qt::NoFocus);
+    connect(video_, &VideoView::openRequested, this, &ReviewWorkspace::chooseVideo);
+    connect(video_, &VideoView::videoDropped, this, &ReviewWorkspace::attachVideo);
     plot_ = new QCustomPlot(this);
     plot_->setFocusPolicy(Qt::NoFocus);
     plot_->addGraph();
@@ -156,6 +162,9 @@ void ReviewWorkspace::buildUi()
     connect(offsetBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         if (std::abs(v - mapping_.offset_s) > 1e-7) {
             mapping_.offset_s = v;
+            syncMethod_ = SyncMethod::Manual;
+            syncConfidence_.reset();
+            storeVideoLink();
             requestFrameForCursor();
         }
     });
@@ -168,6 +177,9 @@ void ReviewWorkspace::buildUi()
     driftBox_->setToolTip(tr("clock drift of the video against the force record (video runs fast: positive)"));
     connect(driftBox_, &QDoubleSpinBox::valueChanged, this, [this](double ppm) {
         mapping_.drift = ppm * 1e-6;
+        syncMethod_ = SyncMethod::Manual;
+        syncConfidence_.reset();
+        storeVideoLink();
         requested_ = -1;
         requestFrameForCursor();
     });
@@ -319,6 +331,7 @@ bool ReviewWorkspace::openRun(const QString& path)
         updateShading();
         setCursorTime(run_.time_s.front());
         showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size()));
+        restoreVideoLink();
         return true;
     } catch (const RunFileError& e) {
         showStatus(e.message());
@@ -335,8 +348,106 @@ void ReviewWorkspace::openVideo(const QString& path)
     videoPath_ = path;
     index_.reset();
     frame_ = -1;
+    video_->openButton()->hide();
     video_->setMessage(tr("Indexing the video…"));
     decoder_->open(path);
+}
+
+void ReviewWorkspace::clearVideo()
+{
+    markRecording_.reset();
+    markVideo_.reset();
+    markedEvent_.reset();
+    videoPath_.clear();
+    index_.reset();
+    frame_ = -1;
+    requested_ = -1;
+    video_->clearVideo();
+}
+
+bool ReviewWorkspace::attachVideo(const QString& path)
+{
+    if (runPath_.isEmpty()) {
+        showStatus(tr("Open a run first (double-click it in the session list), then attach its video"));
+        return false;
+    }
+    if (!QFileInfo(path).isFile()) {
+        showStatus(tr("%1: no such video file").arg(QDir::toNativeSeparators(path)));
+        return false;
+    }
+    openVideo(QFileInfo(path).absoluteFilePath());
+    // An offset belongs to one video: a new one starts from nothing.
+    pendingSync_.reset();
+    updateSyncUi();
+    setMapping({}, SyncMethod::None);
+    showStatus(tr("%1 attached to %2; sync it (Auto sync, or mark an event in both)")
+                   .arg(QFileInfo(path).fileName(), QFileInfo(runPath_).fileName()));
+    return true;
+}
+
+void ReviewWorkspace::chooseVideo()
+{
+    if (runPath_.isEmpty()) {
+        showStatus(tr("Open a run first (double-click it in the session list), then attach its video"));
+        return;
+    }
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open the video of %1").arg(QFileInfo(runPath_).fileName()),
+                                                      QFileInfo(runPath_).absolutePath(),
+                                                      tr("Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;All files (*)"));
+    if (!path.isEmpty())
+        attachVideo(path);
+}
+
+void ReviewWorkspace::restoreVideoLink()
+{
+    QString problem;
+    const std::optional<RunVideoLink> link = readRunVideoLink(runPath_, &problem);
+    // The run's own video beside it (RUN.mp4) when the session names none.
+    QString video = link ? link->video : QString();
+    if (!link) {
+        const QFileInfo run(runPath_);
+        for (const char* ext : {"mp4", "mkv", "avi"}) {
+            const QString p = run.dir().filePath(run.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
+            if (QFileInfo::exists(p)) {
+                video = p;
+                break;
+            }
+        }
+    }
+    const QString keepPath = runPath_;
+    runPath_.clear();  // restoring is no change to store
+    pendingSync_.reset();
+    updateSyncUi();
+    setMapping(link ? link->mapping : TimelineMapping{}, link ? link->method : SyncMethod::None, link ? link->confidence : std::nullopt);
+    runPath_ = keepPath;
+    if (video.isEmpty()) {
+        clearVideo();
+    } else if (!QFileInfo::exists(video)) {
+        clearVideo();
+        video_->setMessage(tr("The video of this run, %1, is missing. Open it again where it now lies.").arg(QDir::toNativeSeparators(video)));
+        videoPath_.clear();
+    } else if (video != videoPath_ || !index_) {
+        openVideo(video);
+    } else {
+        requested_ = -1;
+        requestFrameForCursor();
+    }
+    if (!problem.isEmpty())
+        showStatus(problem);
+}
+
+void ReviewWorkspace::storeVideoLink()
+{
+    if (runPath_.isEmpty())
+        return;
+    try {
+        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_};
+        const bool empty = videoPath_.isEmpty() && mapping_ == TimelineMapping{} && syncMethod_ == SyncMethod::None;
+        writeRunVideoLink(runPath_, empty ? std::nullopt : std::optional(link));
+        emit videoLinkChanged();
+    } catch (const Error& e) {
+        showStatus(tr("Video and sync not kept: %1").arg(e.message()));
+    }
 }
 
 void ReviewWorkspace::setCursorTime(double t)
@@ -433,12 +544,12 @@ void ReviewWorkspace::applyMarkedEvent()
                           ? TimelineMapping::fromEvents(markedEvent_->first, markedEvent_->second, r, v)
                           : std::nullopt;
     if (both && std::abs(both->drift) <= kMaxDrift) {
-        setMapping(*both);
+        setMapping(*both, SyncMethod::EventMarks);
         showStatus(tr("Offset and drift set from two events (%1 s apart): drift %2 ppm")
                        .arg(std::abs(r - markedEvent_->first), 0, 'f', 2)
                        .arg(both->drift * 1e6, 0, 'f', 0));
     } else {
-        setMapping(TimelineMapping::fromEvent(r, v, mapping_.drift));
+        setMapping(TimelineMapping::fromEvent(r, v, mapping_.drift), SyncMethod::EventMarks);
         if (both)
             showStatus(tr("Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: "
                           "check both marks; the drift was kept").arg(both->drift * 1e6, 0, 'f', 0));
@@ -448,9 +559,12 @@ void ReviewWorkspace::applyMarkedEvent()
     markedEvent_ = {r, v};
 }
 
-void ReviewWorkspace::setMapping(const TimelineMapping& m)
+void ReviewWorkspace::setMapping(const TimelineMapping& m, SyncMethod method, std::optional<double> confidence)
 {
     mapping_ = m;
+    syncMethod_ = method;
+    syncConfidence_ = confidence;
+    storeVideoLink();
     const QSignalBlocker block(offsetBox_), blockDrift(driftBox_);
     offsetBox_->setValue(m.offset_s);
     driftBox_->setValue(m.drift * 1e6);
@@ -615,7 +729,7 @@ void ReviewWorkspace::acceptSync()
 {
     if (!pendingSync_)
         return;
-    setMapping({pendingSync_->offset_s, mapping_.drift});
+    setMapping({pendingSync_->offset_s, mapping_.drift}, SyncMethod::Automatic, pendingSync_->confidence);
     pendingSync_.reset();
     updateSyncUi();
 }
