@@ -34,6 +34,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QShortcut>
 #include <QStandardPaths>
@@ -83,7 +84,8 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     scroll->setWidget(panel_);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(panel_->sizeHint().width() + 24);
+    // Its minimum, not its preferred width: the window must fit a 1366 px laptop.
+    scroll->setMinimumWidth(panel_->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 4);
     panelDock_ = new QDockWidget(tr("Control panel"), this);
     panelDock_->setObjectName(QStringLiteral("controlDock"));
     panelDock_->setWidget(scroll);
@@ -483,6 +485,9 @@ CalibrationWizard* MainWindow::openCalibrationWizard()
         wizard_->setDwell(options_.calibrationDwell_s);
         if (auto load = engine_->calibrationLoad())
             wizard_->setLoadMassHook([load](double grams) { return std::optional(load->setLoadMass_g(grams)); });
+        // Both the U6's widest input range and the simulated ADC are ±10 V.
+        constexpr double kInputRange_V = 10.0;
+        wizard_->setSensorRange(kInputRange_V, engine_->nominalSlope_V_per_g());
         connect(wizard_, &CalibrationWizard::calibrationAccepted, this, &MainWindow::useCalibration);
         connect(wizard_, &QDialog::finished, this, [this] {
             if (auto load = engine_->calibrationLoad())

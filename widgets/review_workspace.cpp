@@ -97,7 +97,11 @@ void ReviewWorkspace::buildUi()
     connect(video_, &VideoView::openRequested, this, &ReviewWorkspace::chooseVideo);
     connect(video_, &VideoView::videoDropped, this, &ReviewWorkspace::attachVideo);
     plot_ = new QCustomPlot(this);
+    plot_->setObjectName(QStringLiteral("reviewForcePlot"));
     plot_->setFocusPolicy(Qt::NoFocus);
+    // The wheel zooms time; the label timeline below follows (same axis, to the pixel).
+    plot_->setInteractions(QCP::iRangeZoom);
+    plot_->axisRect()->setRangeZoom(Qt::Horizontal);
     plot_->addGraph();
     plot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
     plot_->xAxis->setLabel(tr("recording time [s]"));
@@ -114,6 +118,11 @@ void ReviewWorkspace::buildUi()
     timeline_ = new Timeline(model_, undo_, this);
     timeline_->setFocusPolicy(Qt::NoFocus);
     connect(timeline_, &Timeline::cursorMoved, this, &ReviewWorkspace::setCursorTime);
+    connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this](const QCPRange& r) {
+        timeline_->setRange(r.lower, r.upper);
+    });
+    connect(plot_, &QCustomPlot::afterLayout, this, &ReviewWorkspace::alignTimeline);
+    connect(plot_, &QCustomPlot::afterReplot, this, &ReviewWorkspace::alignTimeline);
 
     // Transport.
     auto* transport = new QHBoxLayout;
@@ -151,6 +160,9 @@ void ReviewWorkspace::buildUi()
 
     // Synchronisation.
     auto* sync = new QHBoxLayout;
+    // Two rows (the offset and drift; finding them) so a laptop screen holds them.
+    auto* syncFind = new QHBoxLayout;
+    QHBoxLayout* syncRow = sync;
     sync->addWidget(new QLabel(tr("video offset"), this));
     offsetBox_ = new QDoubleSpinBox(this);
     offsetBox_->setFocusPolicy(Qt::ClickFocus);
@@ -190,7 +202,7 @@ void ReviewWorkspace::buildUi()
         b->setToolTip(tip);
         b->setFocusPolicy(Qt::NoFocus);
         connect(b, &QPushButton::clicked, this, slot);
-        sync->addWidget(b);
+        syncRow->addWidget(b);
         return b;
     };
     auto frameDuration = [this] { return index_ ? index_->frameDuration() : 1.0 / 29.97; };
@@ -204,13 +216,21 @@ void ReviewWorkspace::buildUi()
         m.nudge(1, frameDuration());
         setMapping(m);
     });
+    syncRow = syncFind;
     syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] { markEventInRecording(); });
     syncButton(tr("Mark event in video"), tr("the event is in the frame shown"), [this] { markEventInVideo(); });
     syncButton(tr("Auto sync"), tr("correlate motion in the drawn region with the needle speed"), [this] { startAutoSync(); });
     syncLabel_ = new QLabel(this);
+    syncLabel_->setObjectName(QStringLiteral("syncResult"));
+    // A long result wraps in the space there is instead of widening the window.
+    syncLabel_->setWordWrap(true);
+    syncLabel_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    syncLabel_->setMinimumWidth(120);
     syncLabel_->setToolTip(tr("r: correlation of the video motion with the needle speed at the offset found; "
                               "confidence also weighs agreement with the motion onsets"));
-    sync->addWidget(syncLabel_);
+    syncFind->addWidget(syncLabel_, 1);
+    // Accept/Reject sit with the offset they set (the row below would not fit a laptop in German).
+    syncRow = sync;
     acceptButton_ = syncButton(tr("Accept"), tr("use the offset found"), [this] { acceptSync(); });
     rejectButton_ = syncButton(tr("Reject"), tr("keep the current offset"), [this] { rejectSync(); });
     sync->addStretch();
@@ -239,11 +259,20 @@ void ReviewWorkspace::buildUi()
     keysHelp_->setWordWrap(true);
     labels->addWidget(keysHelp_, 1);
     status_ = new QLabel(this);
+    status_->setObjectName(QStringLiteral("reviewStatus"));
     status_->setWordWrap(true);
+    status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
 
     auto* top = new QSplitter(Qt::Horizontal, this);
     top->addWidget(video_);
-    top->addWidget(plot_);
+    // The label timeline sits right under the force plot, so both share one time axis.
+    auto* forceColumn = new QWidget(top);
+    auto* forceLayout = new QVBoxLayout(forceColumn);
+    forceLayout->setContentsMargins(0, 0, 0, 0);
+    forceLayout->setSpacing(0);
+    forceLayout->addWidget(plot_, 1);
+    forceLayout->addWidget(timeline_);
+    top->addWidget(forceColumn);
     top->setStretchFactor(0, 1);
     top->setStretchFactor(1, 1);
     top->setSizes({1000, 1000});  // half each: the force needs as much width as the picture
@@ -251,9 +280,9 @@ void ReviewWorkspace::buildUi()
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(top, 1);
     layout->addLayout(transport);
-    layout->addWidget(timeline_);
     layout->addLayout(labels);
     layout->addLayout(sync);
+    layout->addLayout(syncFind);
     layout->addWidget(syncPlot_);
     layout->addWidget(status_);
 
@@ -326,7 +355,7 @@ bool ReviewWorkspace::openRun(const QString& path)
         plot_->graph(0)->setData(t, f, true);
         plot_->rescaleAxes();
         plot_->yAxis->scaleRange(1.1);
-        timeline_->setRange(run_.time_s.front(), run_.time_s.back());
+        timeline_->setRange(plot_->xAxis->range().lower, plot_->xAxis->range().upper);
         updateKeysHelp();
         updateShading();
         setCursorTime(run_.time_s.front());
@@ -351,6 +380,13 @@ void ReviewWorkspace::openVideo(const QString& path)
     video_->openButton()->hide();
     video_->setMessage(tr("Indexing the video…"));
     decoder_->open(path);
+}
+
+void ReviewWorkspace::alignTimeline()
+{
+    const QRect axis = plot_->axisRect()->rect();
+    const QPoint left = timeline_->mapFromGlobal(plot_->mapToGlobal(axis.topLeft()));
+    timeline_->setAxisPixels(left.x(), axis.width());
 }
 
 void ReviewWorkspace::clearVideo()

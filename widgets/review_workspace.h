@@ -108,6 +108,7 @@ private:
     void restoreVideoLink();
     void storeVideoLink();
     void clearVideo();
+    void alignTimeline();  // the timeline's time axis under the plot's, to the pixel
     SyncMethod syncMethod_ = SyncMethod::None;
     std::optional<double> syncConfidence_;
 

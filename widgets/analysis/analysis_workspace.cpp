@@ -47,7 +47,7 @@ QTableView* tableView(QStandardItemModel* model, QWidget* parent)
 QCustomPlot* newPlot(QWidget* parent)
 {
     auto* p = new QCustomPlot(parent);
-    p->setMinimumSize(360, 260);
+    p->setMinimumSize(240, 200);
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     return p;
 }
@@ -107,6 +107,7 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     auto* reload = new QPushButton(tr("Reload labels"), left);
     leftLayout->addWidget(reload);
     status_ = new QLabel(left);
+    status_->setObjectName(QStringLiteral("analysisStatus"));
     status_->setWordWrap(true);
     status_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -134,7 +135,9 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
         auto* bar = new QHBoxLayout;
         bar->addWidget(new QLabel(chooserLabel, page));
         chooser = new QComboBox(page);
-        chooser->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+        // Long run names elide in the box instead of widening the window.
+        chooser->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        chooser->setMinimumContentsLength(12);
         bar->addWidget(chooser);
         bar->addStretch(1);
         auto* fig = new QPushButton(tr("Save figure…"), page);
