@@ -196,11 +196,12 @@ void CalibrationWizard::refuseSaturated(int row, double volts)
     for (int c = 0; c < Columns; ++c)
         table_->item(row, c)->setBackground(QColor(255, 235, 190));
     updating_ = false;
-    suspect_->setText(tr("%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. "
+    saturationNote_ = tr("%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. "
                          "Calibrate only up to the masses the sensor can read.")
                           .arg(massAt(row))
                           .arg(volts, 0, 'f', 4)
-                          .arg(fullScale_V_, 0, 'f', 1));
+                          .arg(fullScale_V_, 0, 'f', 1);
+    suspect_->setText(saturationNote_);
 }
 
 void CalibrationWizard::setDwell(double seconds) { dwell_s_ = std::max(0.01, seconds); }
@@ -208,6 +209,7 @@ void CalibrationWizard::setDwell(double seconds) { dwell_s_ = std::max(0.01, sec
 void CalibrationWizard::setMasses(double from_g, double to_g, double step_g)
 {
     stopMeasuring();
+    saturationNote_.clear();
     for (auto [box, value] : {std::pair{from_, from_g}, {to_, to_g}, {step_, step_g}}) {
         const QSignalBlocker block(box);
         box->setValue(value);
@@ -469,8 +471,18 @@ void CalibrationWizard::findSuspect(const std::vector<CalibrationPoint>& points)
     }
 }
 
+void CalibrationWizard::showSaturation()
+{
+    // The refusal stays in view next to whatever the fit says.
+    if (saturationNote_.isEmpty() || saturatedRows() == 0)
+        return;
+    const QString fitNote = suspect_->text();
+    suspect_->setText(fitNote.isEmpty() || fitNote == saturationNote_ ? saturationNote_ : saturationNote_ + QLatin1Char('\n') + fitNote);
+}
+
 void CalibrationWizard::redraw()
 {
+    showSaturation();
     QVector<double> um, uv, rm, rv, wm, wv, xm, xv;
     for (int r = 0; r < table_->rowCount(); ++r) {
         if (!measuredAt(r))

@@ -91,6 +91,8 @@ private:
     double peakAbs_V_ = 0.0;
     void refuseSaturated(int row, double volts);
     void showStepPrompt(int row);
+    void showSaturation();
+    QString saturationNote_;
     LoadMassHook loadMass_;
     QTableWidget* table_ = nullptr;
     QCustomPlot* plot_ = nullptr;
