@@ -75,6 +75,7 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
     connect(model_, &LabelModel::labelsChanged, this, [this] {
         updateShading();
         saveLabels();
+        updateLabelCount();
     });
     connect(&syncWatcher_, &QFutureWatcher<SyncResult>::finished, this, [this] {
         try {
@@ -102,6 +103,8 @@ void ReviewWorkspace::buildUi()
     // The wheel zooms time; the label timeline below follows (same axis, to the pixel).
     plot_->setInteractions(QCP::iRangeZoom);
     plot_->axisRect()->setRangeZoom(Qt::Horizontal);
+    // Room on the left for the timeline's track names, which sit under the plot's margin.
+    plot_->axisRect()->setMinimumMargins(QMargins(92, 15, 15, 15));
     plot_->addGraph();
     plot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
     plot_->xAxis->setLabel(tr("recording time [s]"));
@@ -255,8 +258,12 @@ void ReviewWorkspace::buildUi()
     editSet->setToolTip(tr("add, rename or remove the labels of this protocol and their hotkeys"));
     connect(editSet, &QPushButton::clicked, this, &ReviewWorkspace::editLabelSet);
     labels->addWidget(editSet);
+    labelCount_ = new QLabel(this);
+    labelCount_->setObjectName(QStringLiteral("labelCount"));
+    labels->addWidget(labelCount_);
     keysHelp_ = new QLabel(this);
     keysHelp_->setWordWrap(true);
+    keysHelp_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     labels->addWidget(keysHelp_, 1);
     status_ = new QLabel(this);
     status_->setObjectName(QStringLiteral("reviewStatus"));
@@ -299,6 +306,7 @@ void ReviewWorkspace::buildUi()
     model_->setDefinitions(savedLabelSet(protocol_));
     updateKeysHelp();
     updateShading();
+    updateLabelCount();
 }
 
 void ReviewWorkspace::updateKeysHelp()
@@ -380,6 +388,11 @@ void ReviewWorkspace::openVideo(const QString& path)
     video_->openButton()->hide();
     video_->setMessage(tr("Indexing the video…"));
     decoder_->open(path);
+}
+
+void ReviewWorkspace::updateLabelCount()
+{
+    labelCount_->setText(tr("%n label(s)", nullptr, int(model_->labels().size())));
 }
 
 void ReviewWorkspace::alignTimeline()
@@ -617,6 +630,25 @@ void ReviewWorkspace::handleLabelKey(int key)
     if (def->point) {
         undo_->push(new AddLabelCommand(model_, Label{def->track, def->label, cursor_, cursor_, {}}));
         return;
+    }
+    // Insertion and withdrawal phases follow one another: a phase started on one track closes
+    // the one still open on another at the cursor (instead of leaving it hanging unseen).
+    for (auto other = pending_.begin(); other != pending_.end();) {
+        if (other->first == def->track) {
+            ++other;
+            continue;
+        }
+        const auto [label, start] = other->second;
+        const QString track = other->first;
+        other = pending_.erase(other);
+        timeline_->setPending(track, {}, std::nullopt);
+        const Label l{track, label, std::min(start, cursor_), std::max(start, cursor_), {}};
+        if (l.end_s > l.start_s && model_->canPlace(l)) {
+            undo_->push(new AddLabelCommand(model_, l));
+            showStatus(tr("%1 on %2 closed at %3 s").arg(label, track).arg(cursor_, 0, 'f', 3));
+        } else {
+            showStatus(tr("%1 on %2 was not closed (it would be empty or overlap another phase): not added").arg(label, track));
+        }
     }
     const auto it = pending_.find(def->track);
     if (it != pending_.end()) {

@@ -108,7 +108,9 @@ private:
     void restoreVideoLink();
     void storeVideoLink();
     void clearVideo();
-    void alignTimeline();  // the timeline's time axis under the plot's, to the pixel
+    void alignTimeline();
+    void updateLabelCount();
+    QLabel* labelCount_ = nullptr;  // the timeline's time axis under the plot's, to the pixel
     SyncMethod syncMethod_ = SyncMethod::None;
     std::optional<double> syncConfidence_;
 

@@ -121,11 +121,14 @@ void Timeline::paintEvent(QPaintEvent*)
     const int axisY = 4 + rowHeight() * int(tracks.size());
     p.setPen(palette().text().color());
     const double span = end_ - start_;
-    const double step = span > 60 ? 10 : span > 20 ? 5 : span > 8 ? 1 : span > 2 ? 0.5 : 0.1;
+    // 1, 2 or 5 times a power of ten, with labels at least 60 px apart (zoomed or narrow).
+    const double minStep = span * 60.0 / std::max(1, axisWidth());
+    const double decade = std::pow(10.0, std::floor(std::log10(std::max(minStep, 1e-6))));
+    const double step = minStep <= decade ? decade : minStep <= 2 * decade ? 2 * decade : minStep <= 5 * decade ? 5 * decade : 10 * decade;
     for (double t = std::ceil(start_ / step) * step; t <= end_; t += step) {
         const int x = xOf(t);
         p.drawLine(x, axisY, x, axisY + 4);
-        p.drawText(x + 2, axisY + 14, QString::number(t, 'g', 4));
+        p.drawText(x + 2, axisY + 14, QString::number(std::abs(t) < 1e-9 * step ? 0.0 : t, 'g', 6));
     }
     p.setPen(QPen(QColor(220, 0, 0), 2));
     p.drawLine(xOf(cursor_), 0, xOf(cursor_), height());

@@ -10,7 +10,9 @@
 
 #include "core/run_file.h"
 #include "core/session.h"
+#include "widgets/analysis/analysis_workspace.h"
 #include "widgets/control_panel.h"
+#include "widgets/label_model.h"
 #include "widgets/review_workspace.h"
 #include "widgets/session_view.h"
 #include "widgets/timeline.h"
@@ -40,9 +42,13 @@ bool makeSession(const QString& dir)
         nb::Session::create(dir, {});
     for (const auto& [protocol, name] : {std::pair{"stiffness", "run_001_linear.csv"}, {"friction", "run_002_sine.csv"},
                                          {"stiffness", "run_003_linear.csv"}, {"stiffness", "run_004_linear.csv"}}) {
+        QStringList args{QStringLiteral("simulate"), QStringLiteral("--protocol"), QLatin1String(protocol),
+                         QStringLiteral("--out"), QDir(dir).filePath(QLatin1String(name))};
+        if (QLatin1String(protocol) == QLatin1String("friction"))  // its imaging video beside it
+            args << QStringLiteral("--cycles") << QStringLiteral("3") << QStringLiteral("--video")
+                 << QDir(dir).filePath(QStringLiteral("run_002_sine.avi")) << QStringLiteral("--video-offset-s") << QStringLiteral("0.8");
         QProcess p;
-        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("simulate"), QStringLiteral("--protocol"), QLatin1String(protocol),
-                                                QStringLiteral("--out"), QDir(dir).filePath(QLatin1String(name))});
+        p.start(QStringLiteral(NB_EXECUTABLE), args);
         if (!p.waitForFinished(120000) || p.exitCode() != 0)
             return false;
     }
@@ -88,9 +94,27 @@ private slots:
             w.resize(1366, 768);
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QSignalSpy opened(w.reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
             w.reviewRun(QDir(session_).filePath(QStringLiteral("run_002_sine.csv")));
+            QVERIFY(opened.count() > 0 || opened.wait(60000));
+            if (w.reviewWorkspace()->labelModel()->labels().empty())
+                w.reviewWorkspace()->suggestLabels();
+            w.reviewWorkspace()->setCursorTime(4.0);
             QTest::qWait(300);
 
+            if (const QString shots = qEnvironmentVariable("NB_SCREENSHOT_DIR");
+                !shots.isEmpty() && QGuiApplication::platformName() == QLatin1String("xcb")) {
+                QDir().mkpath(shots);
+                w.setWindowState(Qt::WindowMaximized);
+                w.setGeometry(0, 0, 1366, 768);
+                w.analysisWorkspace()->findChild<QTabWidget*>()->setCurrentIndex(0);
+                for (int tab = 0; tab < w.workspaces()->count(); ++tab) {
+                    w.workspaces()->setCurrentIndex(tab);
+                    QTest::qWait(800);
+                    const QString name = QStringLiteral("%1/%2_%3.png").arg(shots, QStringList{"record", "review", "analysis"}.value(tab), language);
+                    QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"), name});
+                }
+            }
             // Long results: every result line the operator may see, filled with a long text.
             const QString longText = QStringLiteral("found 1.2345 s (confidence 0.93, r = 0.88) ").repeated(8);
             for (QLabel* l : w.findChildren<QLabel*>())
@@ -161,24 +185,10 @@ private slots:
             check();
             plot->xAxis->setRange(1.0, 3.0);  // a zoom in the plot
             plot->replot();
+            QCOMPARE(timeline->xOf(1.0) < timeline->xOf(3.0), true);
             QApplication::processEvents();
             check();
 
-            if (const QString shots = qEnvironmentVariable("NB_SCREENSHOT_DIR");
-                !shots.isEmpty() && QGuiApplication::platformName() == QLatin1String("xcb")) {
-                QDir().mkpath(shots);
-                w.setWindowState(Qt::WindowMaximized);
-                w.setGeometry(0, 0, 1366, 768);
-                for (int tab = 0; tab < w.workspaces()->count(); ++tab) {
-                    w.workspaces()->setCurrentIndex(tab);
-                    if (tab == 1)
-                        plot->xAxis->setRange(plot->graph(0)->data()->constBegin()->key,
-                                              (plot->graph(0)->data()->constEnd() - 1)->key);
-                    QTest::qWait(800);
-                    const QString name = QStringLiteral("%1/%2_%3.png").arg(shots, QStringList{"record", "review", "analysis"}.value(tab), language);
-                    QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"), name});
-                }
-            }
         }
         for (QTranslator* t : QCoreApplication::instance()->findChildren<QTranslator*>())
             QCoreApplication::removeTranslator(t);

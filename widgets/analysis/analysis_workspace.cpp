@@ -52,6 +52,25 @@ QCustomPlot* newPlot(QWidget* parent)
     return p;
 }
 
+// The legend under the plot, not over its data (the curves fill the corners of a fit plot).
+void legendBelow(QCustomPlot* p)
+{
+    QCPLegend* l = p->legend;
+    if (!l || !l->visible())
+        return;
+    if (l->layout() == p->axisRect()->insetLayout()) {
+        p->axisRect()->insetLayout()->take(l);
+        p->axisRect()->insetLayout()->simplify();
+        const int row = p->plotLayout()->rowCount();
+        p->plotLayout()->addElement(row, 0, l);
+        p->plotLayout()->setRowStretchFactor(row, 0.001);
+        l->setMargins(QMargins(4, 2, 4, 2));
+    }
+    l->setFillOrder(QCPLayoutGrid::foColumnsFirst, false);
+    l->setWrap(3);
+    p->replot();
+}
+
 }  // namespace
 
 void fillTableModel(QStandardItemModel* model, const FitTable& t)
@@ -98,7 +117,7 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     leftLayout->addWidget(new QLabel(tr("Runs in the analysis:"), left));
     runList_ = new QListWidget(left);
     leftLayout->addWidget(runList_, 1);
-    includeJudgedOut_ = new QCheckBox(tr("Include runs cut short or without contact"), left);
+    includeJudgedOut_ = new QCheckBox(tr("Include runs cut short\nor without contact"), left);
     includeJudgedOut_->setObjectName(QStringLiteral("includeJudgedOut"));
     includeJudgedOut_->setToolTip(tr("Runs ended by the force limit, an emergency stop or a fault end where the protection "
                                      "acted, not where the tissue gave way; runs that never touched tissue have nothing to fit. "
@@ -399,7 +418,11 @@ void AnalysisWorkspace::refreshViews()
     showValidation();
 }
 
-void AnalysisWorkspace::showStiffness() { plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentText()); }
+void AnalysisWorkspace::showStiffness()
+{
+    plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentText());
+    legendBelow(stiffnessPlot_);
+}
 
 void AnalysisWorkspace::showFriction()
 {
@@ -413,6 +436,7 @@ void AnalysisWorkspace::showFriction()
         return;
     }
     plotFrictionVelocity(frictionPlot_, *run, *fit);
+    legendBelow(frictionPlot_);
     plotPhases(phasesPlot_, *run);
 }
 
@@ -422,6 +446,7 @@ void AnalysisWorkspace::showValidation()
     for (const ValidationResult& v : analysis_.validation) {
         if (v.run == name) {
             plotValidation(validationPlot_, v);
+            legendBelow(validationPlot_);
             return;
         }
     }
