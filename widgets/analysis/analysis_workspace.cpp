@@ -66,8 +66,8 @@ void legendBelow(QCustomPlot* p)
         p->plotLayout()->setRowStretchFactor(row, 0.001);
         l->setMargins(QMargins(4, 2, 4, 2));
     }
-    l->setFillOrder(QCPLayoutGrid::foColumnsFirst, false);
-    l->setWrap(3);
+    l->setWrap(2);  // two across: long fit formulas keep their room
+    l->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
     p->replot();
 }
 
@@ -174,6 +174,8 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
         for (QStandardItemModel* m : models)
             body->addWidget(tableView(m, body));
         body->setStretchFactor(0, 3);
+        // The figure first: on a laptop the tables get what is left (they scroll).
+        body->setSizes(models.size() > 1 ? QList<int>{600, 150, 150} : QList<int>{600, 200});
         v->addWidget(body, 1);
         tabs_->addTab(page, title);
         connect(fig, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentFigure);
