@@ -22,6 +22,7 @@
 #include <QStatusBar>
 #include <QGuiApplication>
 #include <QLabel>
+#include <QMenuBar>
 #include <QProcess>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -115,6 +116,24 @@ private slots:
                     QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"), name});
                 }
             }
+            // Alt+letter reaches one place: the menus' and the workspace tabs' mnemonics differ
+            // (Alt+V is the View menu, not the Review tab).
+            QStringList mnemonics;
+            auto mnemonicOf = [](const QString& text) {
+                const qsizetype i = text.indexOf(QLatin1Char('&'));
+                return i >= 0 && i + 1 < text.size() ? text.at(i + 1).toLower() : QChar();
+            };
+            for (QAction* a : w.menuBar()->actions())
+                mnemonics << QString(mnemonicOf(a->text())) + QLatin1Char(' ') + a->text();
+            for (int i = 0; i < w.workspaces()->count(); ++i)
+                mnemonics << QString(mnemonicOf(w.workspaces()->tabText(i))) + QLatin1Char(' ') + w.workspaces()->tabText(i);
+            QSet<QChar> seen;
+            for (const QString& m : mnemonics) {
+                QVERIFY2(!seen.contains(m.at(0)), qPrintable(QStringLiteral("%1: Alt+%2 is taken twice (%3)")
+                                                                 .arg(language, m.at(0), mnemonics.join(QStringLiteral(", ")))));
+                seen.insert(m.at(0));
+            }
+
             // Long results: every result line the operator may see, filled with a long text.
             const QString longText = QStringLiteral("found 1.2345 s (confidence 0.93, r = 0.88) ").repeated(8);
             for (QLabel* l : w.findChildren<QLabel*>())
