@@ -108,6 +108,7 @@ ExportDialog::ExportDialog(const QString& sessionDir, AnalysisWorkspace* analysi
     layout->addWidget(status_);
     layout->addWidget(buttons_);
     connect(&watcher_, &QFutureWatcher<Outcome>::finished, this, &ExportDialog::finish);
+    resize(640, sizeHint().height());
 }
 
 ExportDialog::~ExportDialog()

@@ -37,14 +37,22 @@ WelcomeDialog::WelcomeDialog(const QStringList& recent, QWidget* parent) : QDial
     auto* later = new QPushButton(tr("Not now"), this);
     later->setToolTip(tr("look around without a session; runs need one"));
 
+    auto* heading = new QLabel(tr("Welcome to NeedleBench"), this);
+    QFont big = heading->font();
+    big.setPointSizeF(big.pointSizeF() * 1.4);
+    big.setBold(true);
+    heading->setFont(big);
     auto* layout = new QVBoxLayout(this);
+    layout->addWidget(heading);
     layout->addWidget(intro);
     layout->addWidget(newButton);
     layout->addWidget(openButton);
     layout->addWidget(recentLabel);
     layout->addWidget(recent_, 1);
+    if (recent_->count() == 0)
+        layout->addStretch(1);
     layout->addWidget(later, 0, Qt::AlignRight);
-    resize(520, 380);
+    resize(540, recent_->count() ? 420 : sizeHint().height());
 
     connect(newButton, &QPushButton::clicked, this, [this] {
         accept();

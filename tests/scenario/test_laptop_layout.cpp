@@ -12,6 +12,8 @@
 #include "core/session.h"
 #include "widgets/analysis/analysis_workspace.h"
 #include "widgets/control_panel.h"
+#include "widgets/export_dialog.h"
+#include "widgets/welcome_dialog.h"
 #include "widgets/label_model.h"
 #include "widgets/review_workspace.h"
 #include "widgets/session_view.h"
@@ -115,25 +117,19 @@ private slots:
                     const QString name = QStringLiteral("%1/%2_%3.png").arg(shots, QStringList{"record", "review", "analysis"}.value(tab), language);
                     QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"), name});
                 }
+                // The dialogs a new operator meets: the welcome and Export session….
+                w.workspaces()->setCurrentIndex(0);
+                nb::WelcomeDialog* welcome = w.showWelcome();
+                QTest::qWait(800);
+                QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                            QStringLiteral("%1/welcome_%2.png").arg(shots, language)});
+                welcome->reject();
+                nb::ExportDialog* exporter = w.exportSession();
+                QTest::qWait(800);
+                QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                            QStringLiteral("%1/export_%2.png").arg(shots, language)});
+                exporter->reject();
             }
-            // Alt+letter reaches one place: the menus' and the workspace tabs' mnemonics differ
-            // (Alt+V is the View menu, not the Review tab).
-            QStringList mnemonics;
-            auto mnemonicOf = [](const QString& text) {
-                const qsizetype i = text.indexOf(QLatin1Char('&'));
-                return i >= 0 && i + 1 < text.size() ? text.at(i + 1).toLower() : QChar();
-            };
-            for (QAction* a : w.menuBar()->actions())
-                mnemonics << QString(mnemonicOf(a->text())) + QLatin1Char(' ') + a->text();
-            for (int i = 0; i < w.workspaces()->count(); ++i)
-                mnemonics << QString(mnemonicOf(w.workspaces()->tabText(i))) + QLatin1Char(' ') + w.workspaces()->tabText(i);
-            QSet<QChar> seen;
-            for (const QString& m : mnemonics) {
-                QVERIFY2(!seen.contains(m.at(0)), qPrintable(QStringLiteral("%1: Alt+%2 is taken twice (%3)")
-                                                                 .arg(language, m.at(0), mnemonics.join(QStringLiteral(", ")))));
-                seen.insert(m.at(0));
-            }
-
             // Long results: every result line the operator may see, filled with a long text.
             const QString longText = QStringLiteral("found 1.2345 s (confidence 0.93, r = 0.88) ").repeated(8);
             for (QLabel* l : w.findChildren<QLabel*>())
@@ -207,6 +203,24 @@ private slots:
             QCOMPARE(timeline->xOf(1.0) < timeline->xOf(3.0), true);
             QApplication::processEvents();
             check();
+
+            // Alt+letter reaches one place: the menus' and the workspace tabs' mnemonics differ
+            // (Alt+V is the View menu, not the Review tab).
+            QStringList mnemonics;
+            auto mnemonicOf = [](const QString& text) {
+                const qsizetype i = text.indexOf(QLatin1Char('&'));
+                return i >= 0 && i + 1 < text.size() ? text.at(i + 1).toLower() : QChar();
+            };
+            for (QAction* a : w.menuBar()->actions())
+                mnemonics << QString(mnemonicOf(a->text())) + QLatin1Char(' ') + a->text();
+            for (int i = 0; i < w.workspaces()->count(); ++i)
+                mnemonics << QString(mnemonicOf(w.workspaces()->tabText(i))) + QLatin1Char(' ') + w.workspaces()->tabText(i);
+            QSet<QChar> seen;
+            for (const QString& m : mnemonics) {
+                QVERIFY2(!seen.contains(m.at(0)), qPrintable(QStringLiteral("%1: Alt+%2 is taken twice (%3)")
+                                                                 .arg(language, m.at(0), mnemonics.join(QStringLiteral(", ")))));
+                seen.insert(m.at(0));
+            }
 
         }
         for (QTranslator* t : QCoreApplication::instance()->findChildren<QTranslator*>())
