@@ -18,9 +18,14 @@
 #include "widgets/export_dialog.h"
 #include "widgets/label_model.h"
 #include "widgets/review_workspace.h"
+#include "widgets/video_view.h"
 #include "widgets/welcome_dialog.h"
 
 #include <QDir>
+#include <QStatusBar>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QRadioButton>
@@ -169,6 +174,10 @@ private slots:
             QTest::mouseClick(p->button(Control::StartInsertion), Qt::LeftButton);
             QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 60000);
             linearPath = w.lastRunPath();
+            QCOMPARE(w.lastEndReason(), QStringLiteral("completed"));
+            // A plain "Run saved" is news, not an alarm: not in bold red.
+            QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("Run saved")));
+            QVERIFY2(!w.statusBar()->styleSheet().contains(QStringLiteral("bold")), qPrintable(w.statusBar()->styleSheet()));
             QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().moving, 20000);
 
             p->findChild<QRadioButton*>(QStringLiteral("sine"))->setChecked(true);
@@ -195,7 +204,19 @@ private slots:
             nb::ReviewWorkspace* review = w.reviewWorkspace();
             QCOMPARE(review->runPath(), sinePath);
             QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
-            QVERIFY(review->attachVideo(videoPath));
+            // No video yet: the placeholder offers Open video…; the operator drops the file on it.
+            QVERIFY(review->videoView()->openButton()->isVisible());
+            {
+                QMimeData mime;
+                mime.setUrls({QUrl::fromLocalFile(videoPath)});
+                const QPoint at = review->videoView()->rect().center();
+                QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+                QCoreApplication::sendEvent(review->videoView(), &enter);
+                QVERIFY(enter.isAccepted());
+                QDropEvent drop(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+                QCoreApplication::sendEvent(review->videoView(), &drop);
+            }
+            QCOMPARE(review->videoPath(), QFileInfo(videoPath).absoluteFilePath());
             QVERIFY(opened.wait(60000));
             QDoubleSpinBox* drift = nullptr;
             for (QDoubleSpinBox* b : review->findChildren<QDoubleSpinBox*>())
@@ -230,6 +251,7 @@ private slots:
             w.reviewRun(linearPath);
             QVERIFY(review->videoPath().isEmpty());
             QCOMPARE(review->mapping(), nb::TimelineMapping{});
+            QVERIFY(review->videoView()->openButton()->isVisible());
         }  // the window is destroyed: the application quit
 
         {
