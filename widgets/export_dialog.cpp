@@ -160,7 +160,8 @@ void ExportDialog::start()
         b->setEnabled(false);
     progress_->setRange(0, 0);
     status_->setText(tr("Exporting…"));
-    watcher_.setFuture(QtConcurrent::run([this, c, target] { return run(c, target); }));
+    QPointer<QProgressBar> bar = progress_;  // made here: the worker only reads it
+    watcher_.setFuture(QtConcurrent::run([this, c, target, bar] { return run(c, target, bar); }));
 }
 
 void ExportDialog::cancel()
@@ -170,11 +171,10 @@ void ExportDialog::cancel()
 }
 
 // In a worker thread: only the core exporters, no widgets.
-ExportDialog::Outcome ExportDialog::run(const Choice& c, const QString& target)
+ExportDialog::Outcome ExportDialog::run(const Choice& c, const QString& target, QPointer<QProgressBar> bar)
 {
     Outcome out;
     const auto cancel = cancel_;
-    QPointer<QProgressBar> bar = progress_;
     const auto report = [bar](qint64 done, qint64 total) {
         QMetaObject::invokeMethod(bar, [bar, done, total] {
             if (bar) {

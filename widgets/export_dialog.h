@@ -7,6 +7,8 @@
 
 #include <QDialog>
 #include <QFutureWatcher>
+#include <QPointer>
+#include <QProgressBar>
 #include <QStringList>
 #include <atomic>
 #include <memory>
@@ -15,7 +17,6 @@ class QCheckBox;
 class QDialogButtonBox;
 class QLabel;
 class QLineEdit;
-class QProgressBar;
 class QPushButton;
 
 namespace nb {
@@ -53,7 +54,7 @@ private:
         QStringList written, warnings;
         QString error;
     };
-    Outcome run(const Choice& c, const QString& target);
+    Outcome run(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
     void finish();
     Choice choice() const;
 
