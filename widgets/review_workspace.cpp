@@ -392,7 +392,7 @@ void ReviewWorkspace::openVideo(const QString& path)
 
 void ReviewWorkspace::updateLabelCount()
 {
-    labelCount_->setText(tr("%n label(s)", nullptr, int(model_->labels().size())));
+    labelCount_->setText(tr("labels: %n", nullptr, int(model_->labels().size())));
 }
 
 void ReviewWorkspace::alignTimeline()

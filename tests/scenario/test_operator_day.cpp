@@ -22,6 +22,7 @@
 #include "widgets/welcome_dialog.h"
 
 #include <QDir>
+#include <QLabel>
 #include <QStatusBar>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -244,8 +245,21 @@ private slots:
             QTest::keyClick(review, Qt::Key_2);
             review->setCursorTime(t0 + 2.5);
             QTest::keyClick(review, Qt::Key_2);
+            QCOMPARE(review->labelModel()->labels().size(), std::size_t(2));
+            // c on insertion, then 5 (withdrawal a): the open c is closed there, not dropped.
+            review->setCursorTime(t0 + 3.0);
+            QTest::keyClick(review, Qt::Key_4);
+            review->setCursorTime(t0 + 3.5);
+            QTest::keyClick(review, Qt::Key_5);
+            review->setCursorTime(t0 + 4.0);
+            QTest::keyClick(review, Qt::Key_5);
             labelCount = review->labelModel()->labels().size();
-            QCOMPARE(labelCount, std::size_t(2));
+            QCOMPARE(labelCount, std::size_t(4));
+            bool closedC = false;
+            for (const nb::Label& l : review->labelModel()->labels())
+                closedC |= l.label == QLatin1String("c") && std::abs(l.start_s - (t0 + 3.0)) < 1e-9 && std::abs(l.end_s - (t0 + 3.5)) < 1e-9;
+            QVERIFY(closedC);
+            QCOMPARE(review->findChild<QLabel*>(QStringLiteral("labelCount"))->text(), QStringLiteral("labels: 4"));
 
             // A run without a video: switching to it clears the video and the offset.
             w.reviewRun(linearPath);
