@@ -10,7 +10,7 @@ packages=(
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libopencv-dev libusb-1.0-0-dev libhdf5-dev hdf5-tools
   umockdev libumockdev-dev
-  ffmpeg xvfb xauth fonts-dejavu-core
+  ffmpeg xvfb xauth fonts-dejavu-core imagemagick
 )
 
 missing=()
