@@ -13,6 +13,8 @@
 #include "widgets/calibration_wizard.h"
 #include "widgets/control_panel.h"
 #include "widgets/device_dialog.h"
+#include "widgets/export_dialog.h"
+#include "widgets/welcome_dialog.h"
 #include "widgets/force_plots.h"
 #include "widgets/analysis/analysis_workspace.h"
 #include "widgets/review_workspace.h"
@@ -73,7 +75,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     tabs_->setObjectName(QStringLiteral("workspaces"));
     tabs_->setDocumentMode(true);
     tabs_->addTab(plots_, tr("&Record"));
-    tabs_->addTab(review_, tr("Re&view"));
+    tabs_->addTab(review_, tr("Revie&w"));  // Alt+V is the View menu
     tabs_->addTab(analysis_, tr("&Analysis"));
     setCentralWidget(tabs_);
 
@@ -83,6 +85,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     scroll->setWidget(panel_);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // Its minimum, not its preferred width: the window must fit a 1366 px laptop.
     scroll->setMinimumWidth(panel_->minimumSizeHint().width() + 24 + scroll->verticalScrollBar()->sizeHint().width());
     panelDock_ = new QDockWidget(tr("Control panel"), this);
     panelDock_->setObjectName(QStringLiteral("controlDock"));
@@ -148,14 +151,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     engine_->setWithdrawForceLimit(panel_->withdrawForceLimit());
     plots_->setForceLimit(panel_->forceLimit());
 
-    // The session given, else the last one, else a fresh one: a run always has a folder.
-    QString dir = options_.sessionDir;
-    if (dir.isEmpty() && options_.persistSettings && Session::isSession(settings.value(QStringLiteral("session/last")).toString()))
-        dir = settings.value(QStringLiteral("session/last")).toString();
-    if (!dir.isEmpty() && Session::isSession(dir))
-        openSession(dir);
-    else
-        createSession(dir.isEmpty() ? QDir(defaultSessionRoot()).filePath(QDateTime::currentDateTime().toString(QStringLiteral("'session_'yyyyMMdd_HHmmss"))) : dir, {});
+    openStartupSession();
 
     drainTimer_ = new QTimer(this);
     drainTimer_->setInterval(25);  // 40 frames/s at most
@@ -210,7 +206,10 @@ void MainWindow::attachEngine()
         showMessage(tr("Force limit tripped at %1 N, %2 mm: the stage was stopped").arg(force, 0, 'f', 2).arg(position, 0, 'f', 2), true);
         plots_->addEvent(lastT_ - runT0_, tr("force limit"));
     });
-    connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+    connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) {
+        statusBar()->setStyleSheet(QString());  // a plain note is not shown in the last alarm's red
+        statusBar()->showMessage(text, 8000);
+    });
 }
 
 void MainWindow::chooseDevices()
@@ -268,6 +267,7 @@ void MainWindow::buildMenus()
     sessionMenu->addAction(tr("&New session…"), QKeySequence::New, this, &MainWindow::newSessionDialog);
     sessionMenu->addAction(tr("&Open session…"), QKeySequence::Open, this, &MainWindow::openSessionDialog);
     sessionMenu->addAction(tr("Session &details…"), this, &MainWindow::editSessionDetails);
+    addDayActions(sessionMenu);
     sessionMenu->addSeparator();
     sessionMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -340,24 +340,18 @@ bool MainWindow::openSession(const QString& dir)
     sessionView_->setSession(&*session_);
     analysis_->openSession(session_->dir());
     setWindowTitle(tr("NeedleBench – %1").arg(QDir::toNativeSeparators(session_->dir())));
-    if (options_.persistSettings)
+    if (options_.persistSettings) {
         QSettings().setValue(QStringLiteral("session/last"), session_->dir());
+        rememberRecentSession(session_->dir());
+    }
     return true;
 }
 
 void MainWindow::reviewRun(const QString& path)
 {
+    // The workspace restores the run's video and sync kept in the session (or clears them).
     if (!review_->openRun(path))
         return;
-    // A run's imaging video is stored beside it under the same name.
-    const QFileInfo run(path);
-    for (const char* ext : {"mp4", "mkv", "avi"}) {
-        const QString video = run.dir().filePath(run.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
-        if (QFileInfo::exists(video)) {
-            review_->openVideo(video);
-            break;
-        }
-    }
     tabs_->setCurrentWidget(review_);
 }
 
@@ -370,6 +364,81 @@ bool MainWindow::createSession(const QString& dir, const SessionInfo& info)
         return false;
     }
     return openSession(dir);
+}
+
+// ---- Startup, welcome, recent sessions, video and export actions (issue 14) ----
+
+void MainWindow::openStartupSession()
+{
+    // The session given (created when it is not one yet: tests and `--session DIR`), else the
+    // last one; else nothing is created: the welcome asks what to do.
+    QString dir = options_.sessionDir;
+    if (dir.isEmpty() && options_.persistSettings && Session::isSession(QSettings().value(QStringLiteral("session/last")).toString()))
+        dir = QSettings().value(QStringLiteral("session/last")).toString();
+    if (!dir.isEmpty() && Session::isSession(dir))
+        openSession(dir);
+    else if (!dir.isEmpty())
+        createSession(dir, {});
+    else {
+        panel_->setSessionOpen(false);
+        showMessage(tr("No session open: start a new one or open one (Session menu)."));
+        if (options_.welcome)
+            QTimer::singleShot(0, this, &MainWindow::showWelcome);
+    }
+}
+
+QStringList MainWindow::recentSessions() const
+{
+    return QSettings().value(QStringLiteral("session/recent")).toStringList();
+}
+
+void MainWindow::rememberRecentSession(const QString& dir)
+{
+    QStringList recent = recentSessions();
+    recent.removeAll(dir);
+    recent.prepend(dir);
+    while (recent.size() > 8)
+        recent.removeLast();
+    QSettings().setValue(QStringLiteral("session/recent"), recent);
+}
+
+WelcomeDialog* MainWindow::showWelcome()
+{
+    auto* welcome = new WelcomeDialog(options_.persistSettings ? recentSessions() : QStringList(), this);
+    welcome->setAttribute(Qt::WA_DeleteOnClose);
+    connect(welcome, &WelcomeDialog::newSessionRequested, this, &MainWindow::newSessionDialog);
+    connect(welcome, &WelcomeDialog::openSessionRequested, this, &MainWindow::openSessionDialog);
+    connect(welcome, &WelcomeDialog::recentSessionChosen, this, &MainWindow::openSession);
+    welcome->open();
+    return welcome;
+}
+
+void MainWindow::addDayActions(QMenu* sessionMenu)
+{
+    QAction* video = sessionMenu->addAction(tr("Open &video for the run in review…"), this, [this] {
+        tabs_->setCurrentWidget(review_);
+        review_->chooseVideo();
+    });
+    video->setObjectName(QStringLiteral("actionOpenVideo"));
+    QAction* exportAction = sessionMenu->addAction(tr("&Export session…"), this, [this] { exportSession(); });
+    exportAction->setObjectName(QStringLiteral("actionExportSession"));
+    exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+}
+
+ExportDialog* MainWindow::exportSession()
+{
+    if (!session_) {
+        showMessage(tr("Open a session to export it."), true);
+        return nullptr;
+    }
+    auto* dialog = new ExportDialog(session_->dir(), analysis_, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &ExportDialog::exportFinished, this, [this, dialog](bool ok) {
+        if (ok)
+            showMessage(tr("Session exported into %1").arg(QDir::toNativeSeparators(dialog->targetDir())));
+    });
+    dialog->open();
+    return dialog;
 }
 
 void MainWindow::newSessionDialog()
@@ -430,6 +499,9 @@ CalibrationWizard* MainWindow::openCalibrationWizard()
         wizard_->setDwell(options_.calibrationDwell_s);
         if (auto load = engine_->calibrationLoad())
             wizard_->setLoadMassHook([load](double grams) { return std::optional(load->setLoadMass_g(grams)); });
+        // Both the U6's widest input range and the simulated ADC are ±10 V.
+        constexpr double kInputRange_V = 10.0;
+        wizard_->setSensorRange(kInputRange_V, engine_->nominalSlope_V_per_g());
         connect(wizard_, &CalibrationWizard::calibrationAccepted, this, &MainWindow::useCalibration);
         connect(wizard_, &QDialog::finished, this, [this] {
             if (auto load = engine_->calibrationLoad())
@@ -535,7 +607,8 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
                        .arg(summary.dropped);
     if (!summary.fault.isEmpty())
         text += QStringLiteral(" – ") + summary.fault;
-    showMessage(text, !normal || summary.dropped > 0);
+    // Red is for what cut the run short; a few dropped samples are a note, not an alarm.
+    showMessage(text, !normal);
     if (runIsLinear_)
         markDetectedEvents();
     sessionView_->refresh();

@@ -18,6 +18,7 @@ class QLabel;
 class QTimer;
 class QDockWidget;
 class QTabWidget;
+class QMenu;
 
 namespace nb {
 
@@ -35,6 +36,8 @@ class SessionView;
 class CalibrationWizard;
 class ReviewWorkspace;
 class AnalysisWorkspace;
+class ExportDialog;
+class WelcomeDialog;
 
 struct WorkbenchOptions {
     bool realtime = true;             // false: the simulated rig runs as fast as it can (tests)
@@ -48,6 +51,9 @@ struct WorkbenchOptions {
     // Makes the devices instead of the settings (tests: one helper connects the simulated rig
     // and keeps a hand on it, as QGroundControl's MockLink does).
     std::function<devices::DeviceSet()> deviceFactory;
+    // With no session given or last used: show the welcome (new / open / recent) instead of
+    // creating an empty session folder.
+    bool welcome = true;
 };
 
 // The workbench window: the control panel and status (left), the live plots (centre), the
@@ -100,12 +106,21 @@ public:
     // Reads NEEDLEBENCH_SESSION_DIR (a fresh or given session, no saved settings, the default
     // simulated rig) and NEEDLEBENCH_FAST_SIM=1 (simulated clock): scenario tests under X.
     static WorkbenchOptions optionsFromEnvironment();
+    // Session ▸ Export session…: the export dialog (non-modal; null without a session).
+    ExportDialog* exportSession();
+    // The welcome: new session, open one, or a recent one.
+    WelcomeDialog* showWelcome();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
     void buildMenus();
+    // Startup, welcome, recent sessions, video and export actions (issue 14).
+    void openStartupSession();
+    QStringList recentSessions() const;
+    void rememberRecentSession(const QString& dir);
+    void addDayActions(QMenu* sessionMenu);
     // A new engine on `spec` (nullopt: the simulated rig); `problem` says why it fell back.
     std::unique_ptr<devices::AcquisitionEngine> makeEngine(const std::optional<devices::DeviceSpec>& spec, QString* problem,
                                                            std::optional<double> forceLimit_N = std::nullopt);

@@ -24,6 +24,8 @@ def main():
     ap.add_argument('target')
     ap.add_argument('--from', dest='sources', action='append', default=[])
     ap.add_argument('--tsv', action='append', default=[])
+    ap.add_argument('--override', action='store_true',
+                    help='also replace finished translations with the --tsv ones (same context and source)')
     args = ap.parse_args()
 
     by_ctx, by_src = {}, {}
@@ -39,6 +41,7 @@ def main():
                 continue
             by_ctx[(ctx, src)] = value
             by_src.setdefault(src, value)
+    tsv_keys = {}
     for path in args.tsv:
         with open(path, encoding='utf-8') as f:
             for line in f:
@@ -52,6 +55,7 @@ def main():
                 ctx, src, tr = (p.replace('\\n', '\n') for p in parts)
                 if ctx:
                     by_ctx[(ctx, src)] = tr
+                    tsv_keys[(ctx, src)] = tr
                 by_src[src] = tr
                 by_src.setdefault(src.strip(), tr)
 
@@ -59,9 +63,13 @@ def main():
     missing = 0
     for ctx, m in messages(tree.getroot()):
         t = m.find('translation')
+        src = m.findtext('source')
+        if t is not None and args.override and t.get('type') is None and m.get('numerus') != 'yes' \
+                and (ctx, src) in tsv_keys and t.text != tsv_keys[(ctx, src)]:
+            t.text = tsv_keys[(ctx, src)]
+            continue
         if t is None or t.get('type') != 'unfinished':
             continue
-        src = m.findtext('source')
         value = by_ctx.get((ctx, src), by_src.get(src))
         if value is None and src:
             # A text that differs only in its surrounding white space (a trailing newline).
@@ -82,7 +90,7 @@ def main():
                 ET.SubElement(t, 'numerusform').text = form
         else:
             t.text = value[0] if isinstance(value, list) else value
-        del t.attrib['type']
+        t.attrib.pop('type', None)
     tree.write(args.target, encoding='utf-8', xml_declaration=True)
     print(f'{missing} message(s) left untranslated')
 

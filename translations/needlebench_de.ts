@@ -30,17 +30,29 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+95"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+118"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Include runs cut short
+or without contact</source>
+        <translation>Auch abgebrochene Läufe
+oder ohne Kontakt einbeziehen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Runs ended by the force limit, an emergency stop or a fault end where the protection acted, not where the tissue gave way; runs that never touched tissue have nothing to fit. They are left out unless this is on.</source>
+        <translation>Läufe, die die Kraftgrenze, ein Not-Halt oder ein Fehler beendete, enden dort, wo der Schutz eingriff, nicht wo das Gewebe nachgab; Läufe ohne Gewebekontakt haben nichts anzupassen. Sie bleiben draußen, solange dies aus ist.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Reload labels</source>
         <translation>Labels neu laden</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+36"/>
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
@@ -50,7 +62,7 @@
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -76,20 +88,39 @@
         <translation>Validierung</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+127"/>
         <source>%1 runs analysed</source>
         <translation>%1 Läufe ausgewertet</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>%1 runs analysed
-%2</source>
-        <translation>%1 Läufe ausgewertet
-%2</translation>
+        <location line="+2"/>
+        <source>Left out (switch above to include them):</source>
+        <translation>Ausgelassen (oben einschaltbar):</translation>
     </message>
     <message>
-        <location line="+46"/>
-        <location line="+17"/>
+        <location line="+4"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Outliers:</source>
+        <translation>Ausreißer:</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>left out by default: %1</source>
+        <translation>standardmäßig ausgelassen: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+23"/>
+        <source>cannot create the folder</source>
+        <translation>der Ordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <location line="+19"/>
         <source>no run</source>
         <translation>kein Lauf</translation>
     </message>
@@ -190,22 +221,57 @@
     </message>
     <message>
         <location line="+17"/>
-        <location line="+234"/>
+        <location line="+339"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation>Noch kein Fit: mindestens zwei Massen messen.</translation>
     </message>
     <message>
-        <location line="-222"/>
-        <source>Measure selected mass</source>
-        <translation>Gewählte Masse messen</translation>
+        <location line="-326"/>
+        <source>Measure</source>
+        <translation>Messen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Waits until the reading settles, then averages the sensor voltage over the dwell time for the selected mass</source>
+        <translation>Wartet, bis sich der Messwert beruhigt, und mittelt dann die Sensorspannung über die Verweilzeit für die gewählte Masse</translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>Step %1 of %2: the rig hangs %3 g; press Measure.</source>
+        <translation>Schritt %1 von %2: der Versuchsstand hängt %3 g an; Messen drücken.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Averages the sensor voltage over the dwell time for the selected row</source>
-        <translation>Mittelt die Sensorspannung über die Haltezeit für die gewählte Zeile</translation>
+        <source>Step %1 of %2: hang %3 g on the sensor, then press Measure.</source>
+        <translation>Schritt %1 von %2: %3 g an den Sensor hängen, dann Messen drücken.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>saturated</source>
+        <translation>übersteuert</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. Calibrate only up to the masses the sensor can read.</source>
+        <translation>%1 g übersteuert den Eingang (%2 V, der Bereich endet bei ±%3 V): der Punkt wird abgelehnt. Nur bis zu Massen kalibrieren, die der Sensor lesen kann.</translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
+        <translation>Schritt %1 von %2: %3 g – warte, bis sich der Messwert beruhigt, dann %4 s mitteln; die Masse ruhig halten…</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>All masses measured: check the fit and its residuals, then Save and use.</source>
+        <translation>Alle Massen gemessen: Anpassung und Residuen prüfen, dann Speichern und verwenden.</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>All masses measured, but there is no fit yet.</source>
+        <translation>Alle Massen gemessen, aber noch keine Anpassung.</translation>
+    </message>
+    <message>
+        <location line="-271"/>
         <source>Measure all</source>
         <translation>Alle messen</translation>
     </message>
@@ -225,7 +291,7 @@
         <translation>Speichern und verwenden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Saves this calibration in the session and uses it for every following run</source>
         <translation>Speichert diese Kalibrierung in der Sitzung und verwendet sie für alle folgenden Läufe</translation>
     </message>
@@ -235,22 +301,7 @@
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+118"/>
-        <source>Measuring %1 g for %2 s…</source>
-        <translation>Messe %1 g für %2 s…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Measuring %1 g for %2 s: keep the mass hanging still…</source>
-        <translation>Messe %1 g für %2 s: die Masse ruhig hängen lassen…</translation>
-    </message>
-    <message>
-        <location line="+43"/>
-        <source>Hang %1 g on the sensor, then press Measure.</source>
-        <translation>%1 g an den Sensor hängen, dann „Messen“ drücken.</translation>
-    </message>
-    <message>
-        <location line="+38"/>
+        <location line="+300"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation>d = %1 mV/g,  c = %2 V,  r² = %3,  RMS-Residuum = %4 mV,  %5 Punkte</translation>
     </message>
@@ -879,6 +930,112 @@
     </message>
 </context>
 <context>
+    <name>nb::ExportDialog</name>
+    <message>
+        <location filename="../widgets/export_dialog.cpp" line="+54"/>
+        <source>Export session</source>
+        <translation>Sitzung exportieren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export into</source>
+        <translation>Exportieren nach</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CSV per run, with JSON sidecar and label intervals</source>
+        <translation>CSV je Lauf, mit JSON-Begleitdatei und Label-Intervallen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HDF5: the whole session in one file</source>
+        <translation>HDF5: die ganze Sitzung in einer Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ELAN documents (.eaf) linking force and video</source>
+        <translation>ELAN-Dokumente (.eaf), die Kraft und Video verknüpfen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analysis figures (PNG and PDF)</source>
+        <translation>Abbildungen der Auswertung (PNG und PDF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analysis tables (CSV and LaTeX)</source>
+        <translation>Tabellen der Auswertung (CSV und LaTeX)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Session</source>
+        <translation>Sitzung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Into folder</source>
+        <translation>In den Ordner</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Choose a folder to export into.</source>
+        <translation>Einen Zielordner für den Export wählen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: cannot create the folder</source>
+        <translation>%1: der Ordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Exporting…</source>
+        <translation>Exportiere…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: no runs to export</source>
+        <translation>%1: keine Läufe zum Exportieren</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>Cancelled: the files finished before (%1) are kept; none is half written.</source>
+        <translation>Abgebrochen: die zuvor fertigen Dateien (%1) bleiben; keine ist halb geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export failed: %1</source>
+        <translation>Export fehlgeschlagen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Exported %n file(s) into %1</source>
+        <translation>
+            <numerusform>%n Datei(en) nach %1 exportiert</numerusform>
+            <numerusform>%n Datei(en) nach %1 exportiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+</context>
+<context>
     <name>nb::ForcePlots</name>
     <message>
         <location filename="../widgets/force_plots.cpp" line="+60"/>
@@ -1093,27 +1250,22 @@
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+60"/>
+        <location filename="../app/main_window.cpp" line="+62"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>&amp;Record</source>
-        <translation>&amp;Aufnahme</translation>
+        <translation>Auf&amp;nahme</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Re&amp;view</source>
-        <translation>&amp;Sichtung</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Analysis</source>
         <translation>Ana&amp;lyse</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Control panel</source>
         <translation>Bedienfeld</translation>
     </message>
@@ -1215,7 +1367,7 @@
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+76"/>
+        <location filename="../app/main_window.cpp" line="+69"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1240,7 +1392,7 @@
         <translation>Kraftgrenze</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Devices not changed: close the calibration wizard first.</source>
         <translation>Geräte nicht gewechselt: schließen Sie zuerst den Kalibrierassistenten.</translation>
     </message>
@@ -1275,7 +1427,7 @@
         <translation>Sitzungs&amp;details…</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Devices</source>
         <translation>&amp;Geräte</translation>
     </message>
@@ -1360,9 +1512,34 @@
         <translation>NeedleBench – %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+21"/>
         <source>New session</source>
         <translation>Neue Sitzung</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>No session open: start a new one or open one (Session menu).</source>
+        <translation>Keine Sitzung offen: eine neue beginnen oder eine öffnen (Menü Sitzung).</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Open &amp;video for the run in review…</source>
+        <translation>&amp;Video zum Lauf in der Auswertung öffnen…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Export session…</source>
+        <translation>Sitzung &amp;exportieren…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Open a session to export it.</source>
+        <translation>Zum Exportieren eine Sitzung öffnen.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Session exported into %1</source>
+        <translation>Sitzung nach %1 exportiert</translation>
     </message>
     <message>
         <location line="+35"/>
@@ -1380,7 +1557,7 @@
         <translation>Sitzungsordner öffnen</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)</source>
         <translation>Kalibrierung %1 in der Sitzung gespeichert und für alle folgenden Läufe verwendet (d = %2 mV/g, r² = %3)</translation>
     </message>
@@ -1400,22 +1577,27 @@
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-84"/>
-        <location line="+60"/>
+        <location line="-85"/>
+        <location line="+61"/>
         <location line="+2"/>
         <source>contact</source>
         <translation>Kontakt</translation>
     </message>
     <message>
-        <location line="-62"/>
-        <location line="+61"/>
+        <location line="-557"/>
+        <source>Revie&amp;w</source>
+        <translation>Sich&amp;tung</translation>
+    </message>
+    <message>
+        <location line="+494"/>
+        <location line="+62"/>
         <location line="+2"/>
         <source>puncture</source>
         <translation>Durchstich</translation>
@@ -1426,7 +1608,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-312"/>
+        <location line="-385"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1434,7 +1616,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+43"/>
+        <location filename="../widgets/review_workspace.cpp" line="+45"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -1444,17 +1626,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+25"/>
         <source>recording time [s]</source>
         <translation>Aufzeichnungszeit [s]</translation>
     </message>
@@ -1464,7 +1646,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Kraft [N]</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>−10</source>
         <translation>−10</translation>
     </message>
@@ -1485,12 +1667,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+274"/>
+        <location line="+416"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-274"/>
+        <location line="-416"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -1521,12 +1703,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+7"/>
-        <location line="+17"/>
+        <location line="+20"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-19"/>
         <source>jump to a recording time</source>
         <translation>zu einer Aufzeichnungszeit springen</translation>
     </message>
@@ -1536,7 +1718,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>gehe zu</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>video offset</source>
         <translation>Videoversatz</translation>
     </message>
@@ -1546,7 +1728,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Videozeit = Aufzeichnungszeit + Versatz</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source> ppm</source>
         <translation> ppm</translation>
     </message>
@@ -1556,7 +1738,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Taktdrift des Videos gegenüber der Kraftaufzeichnung (Video läuft schneller: positiv)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>drift</source>
         <translation>Drift</translation>
     </message>
@@ -1577,7 +1759,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>+1 Bild</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Mark event in force</source>
         <translation>Ereignis in der Kraft markieren</translation>
     </message>
@@ -1607,12 +1789,66 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
+    <message numerus="yes">
+        <location line="+168"/>
+        <source>labels: %n</source>
+        <translation>
+            <numerusform>Labels: %n</numerusform>
+            <numerusform>Labels: %n</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+413"/>
+        <location line="+25"/>
+        <location line="+20"/>
+        <source>Open a run first (double-click it in the session list), then attach its video</source>
+        <translation>Zuerst einen Lauf öffnen (Doppelklick in der Sitzungsliste), dann sein Video anhängen</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>%1: no such video file</source>
+        <translation>%1: keine solche Videodatei</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 attached to %2; sync it (Auto sync, or mark an event in both)</source>
+        <translation>%1 an %2 angehängt; jetzt synchronisieren (automatisch, oder ein Ereignis in beiden markieren)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Open the video of %1</source>
+        <translation>Video zu %1 öffnen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;All files (*)</source>
+        <translation>Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The video of this run, %1, is missing. Open it again where it now lies.</source>
+        <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Video and sync not kept: %1</source>
+        <translation>Video und Synchronisation nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <location line="+150"/>
+        <source>%1 on %2 closed at %3 s</source>
+        <translation>%1 auf %2 bei %3 s geschlossen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 on %2 was not closed (it would be empty or overlap another phase): not added</source>
+        <translation>%1 auf %2 nicht geschlossen (wäre leer oder überlappte eine andere Phase): nicht hinzugefügt</translation>
+    </message>
+    <message>
+        <location line="+139"/>
         <source>, drift %1 %</source>
         <translation>, Drift %1 %</translation>
     </message>
@@ -1622,7 +1858,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-412"/>
+        <location line="-559"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -1677,7 +1913,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Labels dieses Protokolls und ihre Tasten hinzufügen, umbenennen oder entfernen</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+59"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation>Tasten: %1 · S teilen · Entf löschen · Strg+Z rückgängig</translation>
     </message>
@@ -1692,12 +1928,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+163"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -1727,7 +1963,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Versatz gesetzt; ein zweites Ereignis, mindestens eine Sekunde entfernt, in beiden markieren, um auch die Drift zu setzen</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+57"/>
         <source>%1 overlaps another phase on %2: not added</source>
         <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
     </message>
@@ -1877,7 +2113,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::SessionView</name>
     <message>
-        <location filename="../widgets/session_view.cpp" line="+38"/>
+        <location filename="../widgets/session_view.cpp" line="+50"/>
         <source>No session open (Session ▸ New or Open).</source>
         <translation>Keine Sitzung geöffnet (Sitzung ▸ Neu oder Öffnen).</translation>
     </message>
@@ -1887,12 +2123,27 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Probe %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-13"/>
         <source>%1 tip</source>
-        <translation>%1-Spitze</translation>
+        <translation>Spitze %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-5"/>
+        <source>beveled tip</source>
+        <translation>abgeschrägte Spitze</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>diamond tip</source>
+        <translation>Diamantschliff-Spitze</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>blunt tip</source>
+        <translation>stumpfe Spitze</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 mm thick</source>
         <translation>%1 mm dick</translation>
     </message>
@@ -3645,7 +3896,7 @@ Befehle:
         <translation>Messwertzähler des Sensors (eine Lücke ist ein verlorener Messwert)</translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+27"/>
+        <location filename="../core/export/dataset_loader.cpp" line="+28"/>
         <source>not a folder</source>
         <translation>kein Ordner</translation>
     </message>
@@ -3665,7 +3916,7 @@ Befehle:
         <translation>%1: übersprungen, keine Laufdatei (%2)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+14"/>
         <source>%1: labels ignored (%2)</source>
         <translation>%1: Labels ignoriert (%2)</translation>
     </message>
@@ -3692,7 +3943,7 @@ Befehle:
         <translation>kann nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+57"/>
+        <location filename="../core/export/session_analysis.cpp" line="+69"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation>%1: kein Steifigkeitsfit (%2)</translation>
     </message>
@@ -3702,7 +3953,8 @@ Befehle:
         <translation>%1: kein gepoolter Steifigkeitsfit (%2)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+37"/>
+        <location line="+13"/>
         <source>%1: no friction fit (%2)</source>
         <translation>%1: kein Reibungsfit (%2)</translation>
     </message>
@@ -3741,12 +3993,28 @@ Befehle:
         <translation>Durchstichtiefe</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-134"/>
+        <location line="+135"/>
         <source>puncture force</source>
         <translation>Durchstichkraft</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-191"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>model force at %1 mm</source>
+        <translation>Modellkraft bei %1 mm</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>no tissue contact</source>
+        <translation>kein Gewebekontakt</translation>
+    </message>
+    <message>
+        <location line="+113"/>
         <source>outlier</source>
         <translation>outlier</translation>
     </message>
@@ -4604,6 +4872,67 @@ Befehle:
         <location line="+12"/>
         <source>… (%1 bytes in all)</source>
         <translation>… (insgesamt %1 Bytes)</translation>
+    </message>
+    <message>
+        <location filename="../core/run_judgement.cpp" line="+55"/>
+        <source>no end reason: the recording was cut off</source>
+        <translation>kein Endgrund: die Aufzeichnung wurde abgeschnitten</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>unknown end reason &apos;%1&apos;</source>
+        <translation>unbekannter Endgrund „%1“</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>ended by %1</source>
+        <translation>beendet durch %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no tissue contact (the force never rose above its noise)</source>
+        <translation>kein Gewebekontakt (die Kraft stieg nie über ihr Rauschen)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 %2 %3 is %4 %3 from the median %5 %3 (limit %6 %3: %7 MADs or %8 %)</source>
+        <translation>%1 %2 %3 liegt %4 %3 vom Median %5 %3 entfernt (Grenze %6 %3: %7 MADs oder %8 %)</translation>
+    </message>
+    <message>
+        <location filename="../core/run_video_link.cpp" line="+28"/>
+        <source>%1: cannot read (%2)</source>
+        <translation>%1: nicht lesbar (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: not a video link file (%2)</source>
+        <translation>%1: keine Video-Verknüpfungsdatei (%2)</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>set by hand</source>
+        <translation>von Hand gesetzt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from marked events</source>
+        <translation>aus markierten Ereignissen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>automatic</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not synchronised</source>
+        <translation>nicht synchronisiert</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <location line="+3"/>
+        <source>cannot write (%1)</source>
+        <translation>nicht schreibbar (%1)</translation>
     </message>
 </context>
 <context>
@@ -5545,7 +5874,7 @@ F = %1 x + %2 x²
         <translation>%1 teilen</translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-305"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-405"/>
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>
@@ -5553,14 +5882,68 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+12"/>
-        <source>No video. Open one to review it with the force record.</source>
-        <translation>Kein Video. Öffnen Sie eines, um es mit der Kraftaufzeichnung zu sichten.</translation>
+        <location filename="../widgets/video_view.cpp" line="+17"/>
+        <source>Open video…</source>
+        <translation>Video öffnen…</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+2"/>
+        <source>attach the video filmed during this run (or drop the file here)</source>
+        <translation>das während dieses Laufs gefilmte Video anhängen (oder die Datei hierher ziehen)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No video. Open one, or drop the file here, to review it with the force record.</source>
+        <translation>Kein Video. Eines öffnen oder die Datei hierher ziehen, um es mit der Kraftaufzeichnung auszuwerten.</translation>
+    </message>
+    <message>
+        <location line="+87"/>
         <source>frame %1   %2 s</source>
         <translation>Bild %1   %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>nb::WelcomeDialog</name>
+    <message>
+        <location filename="../widgets/welcome_dialog.cpp" line="+17"/>
+        <location line="+23"/>
+        <source>Welcome to NeedleBench</source>
+        <translation>Willkommen bei NeedleBench</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>A session is a folder for one specimen: its calibration, its runs, their videos and labels. Start a new one or continue one.</source>
+        <translation>Eine Sitzung ist ein Ordner für eine Probe: ihre Kalibrierung, ihre Läufe, deren Videos und Labels. Eine neue beginnen oder eine fortsetzen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;New session…</source>
+        <translation>&amp;Neue Sitzung…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Open session folder…</source>
+        <translation>Sitzungsordner ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Recent sessions (double-click to open):</source>
+        <translation>Zuletzt benutzte Sitzungen (Doppelklick öffnet):</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No recent sessions.</source>
+        <translation>Keine zuletzt benutzten Sitzungen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not now</source>
+        <translation>Jetzt nicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>look around without a session; runs need one</source>
+        <translation>ohne Sitzung umsehen; Läufe brauchen eine</translation>
     </message>
 </context>
 <context>

@@ -30,17 +30,28 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+95"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+118"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Include runs cut short
+or without contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Runs ended by the force limit, an emergency stop or a fault end where the protection acted, not where the tissue gave way; runs that never touched tissue have nothing to fit. They are left out unless this is on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Reload labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+36"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -50,7 +61,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -76,19 +87,39 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+127"/>
         <source>%1 runs analysed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>%1 runs analysed
-%2</source>
+        <location line="+2"/>
+        <source>Left out (switch above to include them):</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+46"/>
-        <location line="+17"/>
+        <location line="+4"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Outliers:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>left out by default: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+23"/>
+        <source>cannot create the folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <location line="+19"/>
         <source>no run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -189,22 +220,57 @@
     </message>
     <message>
         <location line="+17"/>
-        <location line="+234"/>
+        <location line="+339"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-222"/>
-        <source>Measure selected mass</source>
+        <location line="-326"/>
+        <source>Measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Waits until the reading settles, then averages the sensor voltage over the dwell time for the selected mass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>Step %1 of %2: the rig hangs %3 g; press Measure.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Averages the sensor voltage over the dwell time for the selected row</source>
+        <source>Step %1 of %2: hang %3 g on the sensor, then press Measure.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>saturated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. Calibrate only up to the masses the sensor can read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>All masses measured: check the fit and its residuals, then Save and use.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>All masses measured, but there is no fit yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-271"/>
         <source>Measure all</source>
         <translation type="unfinished"></translation>
     </message>
@@ -224,7 +290,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Saves this calibration in the session and uses it for every following run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -234,22 +300,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+118"/>
-        <source>Measuring %1 g for %2 s…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Measuring %1 g for %2 s: keep the mass hanging still…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+43"/>
-        <source>Hang %1 g on the sensor, then press Measure.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+38"/>
+        <location line="+300"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation type="unfinished"></translation>
     </message>
@@ -878,6 +929,112 @@
     </message>
 </context>
 <context>
+    <name>nb::ExportDialog</name>
+    <message>
+        <location filename="../widgets/export_dialog.cpp" line="+54"/>
+        <source>Export session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Choose…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CSV per run, with JSON sidecar and label intervals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HDF5: the whole session in one file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ELAN documents (.eaf) linking force and video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analysis figures (PNG and PDF)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analysis tables (CSV and LaTeX)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Into folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Choose a folder to export into.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: cannot create the folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Exporting…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cancelling…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: no runs to export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>Cancelled: the files finished before (%1) are kept; none is half written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Exported %n file(s) into %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>nb::ForcePlots</name>
     <message>
         <location filename="../widgets/force_plots.cpp" line="+60"/>
@@ -1092,7 +1249,7 @@
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+60"/>
+        <location filename="../app/main_window.cpp" line="+62"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1102,17 +1259,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Re&amp;view</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Analysis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Control panel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1214,7 +1366,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+76"/>
+        <location filename="../app/main_window.cpp" line="+69"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1239,7 +1391,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Devices not changed: close the calibration wizard first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1274,7 +1426,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Devices</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1358,8 +1510,33 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+21"/>
         <source>New session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>No session open: start a new one or open one (Session menu).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Open &amp;video for the run in review…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Export session…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Open a session to export it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Session exported into %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1378,7 +1555,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1398,21 +1575,26 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-84"/>
-        <location line="+60"/>
+        <location line="-85"/>
+        <location line="+61"/>
         <location line="+2"/>
         <source>contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-62"/>
-        <location line="+61"/>
+        <location line="-557"/>
+        <source>Revie&amp;w</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+494"/>
+        <location line="+62"/>
         <location line="+2"/>
         <source>puncture</source>
         <translation type="unfinished"></translation>
@@ -1423,7 +1605,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-312"/>
+        <location line="-385"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1431,7 +1613,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+43"/>
+        <location filename="../widgets/review_workspace.cpp" line="+45"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1441,17 +1623,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+25"/>
         <source>recording time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1461,7 +1643,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>−10</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1482,12 +1664,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+274"/>
+        <location line="+416"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-274"/>
+        <location line="-416"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1518,12 +1700,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+17"/>
+        <location line="+20"/>
         <source> s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-19"/>
         <source>jump to a recording time</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1533,7 +1715,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>video offset</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1543,7 +1725,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source> ppm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1553,7 +1735,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>drift</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1574,7 +1756,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Mark event in force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1604,12 +1786,66 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+168"/>
+        <source>labels: %n</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+413"/>
+        <location line="+25"/>
+        <location line="+20"/>
+        <source>Open a run first (double-click it in the session list), then attach its video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>%1: no such video file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 attached to %2; sync it (Auto sync, or mark an event in both)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Open the video of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The video of this run, %1, is missing. Open it again where it now lies.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Video and sync not kept: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+150"/>
+        <source>%1 on %2 closed at %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 on %2 was not closed (it would be empty or overlap another phase): not added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+139"/>
         <source>, drift %1 %</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1619,7 +1855,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-412"/>
+        <location line="-559"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1674,7 +1910,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+59"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1689,12 +1925,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+163"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1724,7 +1960,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+57"/>
         <source>%1 overlaps another phase on %2: not added</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1874,7 +2110,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::SessionView</name>
     <message>
-        <location filename="../widgets/session_view.cpp" line="+38"/>
+        <location filename="../widgets/session_view.cpp" line="+50"/>
         <source>No session open (Session ▸ New or Open).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1884,12 +2120,27 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-13"/>
         <source>%1 tip</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-5"/>
+        <source>beveled tip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>diamond tip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>blunt tip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 mm thick</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3567,7 +3818,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+27"/>
+        <location filename="../core/export/dataset_loader.cpp" line="+28"/>
         <source>not a folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3587,7 +3838,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+14"/>
         <source>%1: labels ignored (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3614,7 +3865,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+57"/>
+        <location filename="../core/export/session_analysis.cpp" line="+69"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3624,7 +3875,8 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+37"/>
+        <location line="+13"/>
         <source>%1: no friction fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3663,12 +3915,28 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-134"/>
+        <location line="+135"/>
         <source>puncture force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-191"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>model force at %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>no tissue contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+113"/>
         <source>outlier</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4525,6 +4793,67 @@ Commands:
     <message>
         <location line="+12"/>
         <source>… (%1 bytes in all)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/run_judgement.cpp" line="+55"/>
+        <source>no end reason: the recording was cut off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>unknown end reason &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>ended by %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no tissue contact (the force never rose above its noise)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 %2 %3 is %4 %3 from the median %5 %3 (limit %6 %3: %7 MADs or %8 %)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/run_video_link.cpp" line="+28"/>
+        <source>%1: cannot read (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: not a video link file (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>set by hand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from marked events</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not synchronised</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <location line="+3"/>
+        <source>cannot write (%1)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5465,7 +5794,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-305"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-405"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5473,13 +5802,67 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+12"/>
-        <source>No video. Open one to review it with the force record.</source>
+        <location filename="../widgets/video_view.cpp" line="+17"/>
+        <source>Open video…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+2"/>
+        <source>attach the video filmed during this run (or drop the file here)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No video. Open one, or drop the file here, to review it with the force record.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+87"/>
         <source>frame %1   %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::WelcomeDialog</name>
+    <message>
+        <location filename="../widgets/welcome_dialog.cpp" line="+17"/>
+        <location line="+23"/>
+        <source>Welcome to NeedleBench</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>A session is a folder for one specimen: its calibration, its runs, their videos and labels. Start a new one or continue one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;New session…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Open session folder…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Recent sessions (double-click to open):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No recent sessions.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>look around without a session; runs need one</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

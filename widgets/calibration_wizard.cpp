@@ -102,15 +102,20 @@ CalibrationWizard::CalibrationWizard(const QString& sensorName, QWidget* parent)
     suspect_->setWordWrap(true);
     suspect_->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
     prompt_ = new QLabel(this);
+    prompt_->setObjectName(QStringLiteral("calibrationPrompt"));
     prompt_->setWordWrap(true);
-    prompt_->setStyleSheet(QStringLiteral("font-weight: bold;"));
+    prompt_->setStyleSheet(QStringLiteral("font-weight: bold; font-size: 13pt;"));
 
-    measure_ = new QPushButton(tr("Measure selected mass"), this);
-    measure_->setToolTip(tr("Averages the sensor voltage over the dwell time for the selected row"));
+    measure_ = new QPushButton(tr("Measure"), this);
+    measure_->setDefault(true);
+    measure_->setToolTip(tr("Waits until the reading settles, then averages the sensor voltage over the dwell time for the selected mass"));
     measureAll_ = new QPushButton(tr("Measure all"), this);
     measureAll_->setToolTip(tr("Measures every row in turn"));
     auto* stop = new QPushButton(tr("Stop"), this);
     save_ = new QPushButton(tr("Save and use"), this);
+    save_->setObjectName(QStringLiteral("calibrationSave"));
+    measure_->setObjectName(QStringLiteral("calibrationMeasure"));
+    measureAll_->setObjectName(QStringLiteral("calibrationMeasureAll"));
     save_->setToolTip(tr("Saves this calibration in the session and uses it for every following run"));
     save_->setEnabled(false);
     auto* cancel = new QPushButton(tr("Cancel"), this);
@@ -138,14 +143,65 @@ CalibrationWizard::CalibrationWizard(const QString& sensorName, QWidget* parent)
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(massRow);
+    layout->addWidget(prompt_);
     layout->addWidget(split, 1);
     layout->addWidget(fitLabel_);
     layout->addWidget(suspect_);
-    layout->addWidget(prompt_);
     layout->addLayout(buttons);
     resize(980, 640);
 
     this->setMasses(0.0, 850.0, 25.0);
+}
+
+void CalibrationWizard::setSensorRange(double fullScale_V, double nominalSlope_V_per_g)
+{
+    if (fullScale_V > 0.0)
+        fullScale_V_ = fullScale_V;
+    if (!(nominalSlope_V_per_g > 0.0))
+        return;
+    // 90 % of the range leaves room for the bias and a swinging mass.
+    constexpr double kStep_g = 50.0;
+    const double top = std::floor(0.9 * fullScale_V_ / nominalSlope_V_per_g / kStep_g) * kStep_g;
+    if (top >= 2 * kStep_g)
+        setMasses(0.0, top, kStep_g);
+}
+
+int CalibrationWizard::saturatedRows() const
+{
+    int n = 0;
+    for (int r = 0; r < table_->rowCount(); ++r)
+        if (table_->item(r, Voltage)->data(Qt::UserRole + 1).toBool())
+            ++n;
+    return n;
+}
+
+QString CalibrationWizard::promptText() const { return prompt_->text(); }
+
+void CalibrationWizard::showStepPrompt(int row)
+{
+    if (row < 0 || row >= table_->rowCount())
+        return;
+    prompt_->setText(loadMass_ ? tr("Step %1 of %2: the rig hangs %3 g; press Measure.").arg(row + 1).arg(table_->rowCount()).arg(massAt(row))
+                               : tr("Step %1 of %2: hang %3 g on the sensor, then press Measure.").arg(row + 1).arg(table_->rowCount()).arg(massAt(row)));
+}
+
+void CalibrationWizard::refuseSaturated(int row, double volts)
+{
+    auto* item = table_->item(row, Voltage);
+    updating_ = true;
+    item->setData(Qt::UserRole, QVariant());
+    item->setData(Qt::UserRole + 1, true);
+    item->setText(tr("saturated"));
+    table_->item(row, Use)->setCheckState(Qt::Unchecked);
+    for (int c = 0; c < Columns; ++c)
+        table_->item(row, c)->setBackground(QColor(255, 235, 190));
+    updating_ = false;
+    saturationNote_ = tr("%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. "
+                         "Calibrate only up to the masses the sensor can read.")
+                          .arg(massAt(row))
+                          .arg(volts, 0, 'f', 4)
+                          .arg(fullScale_V_, 0, 'f', 1);
+    suspect_->setText(saturationNote_);
 }
 
 void CalibrationWizard::setDwell(double seconds) { dwell_s_ = std::max(0.01, seconds); }
@@ -153,6 +209,7 @@ void CalibrationWizard::setDwell(double seconds) { dwell_s_ = std::max(0.01, sec
 void CalibrationWizard::setMasses(double from_g, double to_g, double step_g)
 {
     stopMeasuring();
+    saturationNote_.clear();
     for (auto [box, value] : {std::pair{from_, from_g}, {to_, to_g}, {step_, step_g}}) {
         const QSignalBlocker block(box);
         box->setValue(value);
@@ -178,6 +235,8 @@ void CalibrationWizard::setMasses(double from_g, double to_g, double step_g)
     table_->selectRow(0);
     refit();
     redraw();
+    if (prompt_)
+        showStepPrompt(0);
 }
 
 int CalibrationWizard::rowCount() const { return table_->rowCount(); }
@@ -227,12 +286,21 @@ void CalibrationWizard::beginRow(int row)
     notBefore_ = std::max(deviceNow_, lastSample_);
     sum_ = 0.0;
     count_ = 0;
+    windowStart_ = -1.0;
+    windowSum_ = windowSumSq_ = 0.0;
+    windowCount_ = 0;
+    previousMean_ = NAN;
+    settled_ = false;
+    peakAbs_V_ = 0.0;
     table_->selectRow(row);
     if (loadMass_)
         if (const auto from = loadMass_(massAt(row)))
             notBefore_ = std::max(notBefore_, *from);
-    prompt_->setText(loadMass_ ? tr("Measuring %1 g for %2 s…").arg(massAt(row)).arg(dwell_s_)
-                               : tr("Measuring %1 g for %2 s: keep the mass hanging still…").arg(massAt(row)).arg(dwell_s_));
+    prompt_->setText(tr("Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…")
+                         .arg(row + 1)
+                         .arg(table_->rowCount())
+                         .arg(massAt(row))
+                         .arg(dwell_s_));
     if (!was)
         emit measuringChanged(true);
 }
@@ -244,14 +312,48 @@ void CalibrationWizard::addSample(double time_s, double volts)
         return;
     if (startTime_ < 0.0)
         startTime_ = time_s;
-    // The first moments after a mass is hung are its swing settling: not averaged.
-    const double settle = std::min(0.5, 0.25 * dwell_s_);
-    const double age = time_s - startTime_;
-    if (age < settle)
+    // A saturated reading says nothing about the mass: refuse the point at once.
+    peakAbs_V_ = std::max(peakAbs_V_, std::abs(volts));
+    if (peakAbs_V_ >= saturation_V()) {
+        const int row = measuringRow_;
+        refuseSaturated(row, volts);
+        refit();
+        redraw();
+        const int next = row + 1;
+        if (all_ && next < table_->rowCount())
+            beginRow(next);
+        else
+            stopMeasuring();
         return;
+    }
+    if (!settled_) {
+        // The swing after hanging a mass dies out: settled when the mean of a 0.1 s window moves
+        // less than 3 standard errors (and 0.2 mV) from the window before. At most 5 s.
+        constexpr double kWindow_s = 0.1, kMaxSettle_s = 5.0;
+        if (windowStart_ < 0.0)
+            windowStart_ = time_s;
+        windowSum_ += volts;
+        windowSumSq_ += volts * volts;
+        ++windowCount_;
+        if (time_s - windowStart_ < kWindow_s && time_s - startTime_ < kMaxSettle_s)
+            return;
+        const double mean = windowSum_ / windowCount_;
+        const double var = std::max(0.0, windowSumSq_ / windowCount_ - mean * mean);
+        const double tolerance = std::max(2e-4, 3.0 * std::sqrt(var / windowCount_) * std::sqrt(2.0));
+        const bool steady = std::isfinite(previousMean_) && std::abs(mean - previousMean_) < tolerance;
+        previousMean_ = mean;
+        windowStart_ = -1.0;
+        windowSum_ = windowSumSq_ = 0.0;
+        windowCount_ = 0;
+        if (!steady && time_s - startTime_ < kMaxSettle_s)
+            return;
+        settled_ = true;
+        startTime_ = time_s;  // the dwell starts now
+        return;
+    }
     sum_ += volts;
     ++count_;
-    if (age >= settle + dwell_s_)
+    if (time_s - startTime_ >= dwell_s_)
         finishRow();
 }
 
@@ -261,6 +363,7 @@ void CalibrationWizard::finishRow()
     const double mean = sum_ / std::max(1, count_);
     auto* item = table_->item(row, Voltage);
     item->setData(Qt::UserRole, mean);
+    item->setData(Qt::UserRole + 1, QVariant());  // not (or no longer) saturated
     updating_ = true;
     item->setText(QString::number(mean, 'f', 5));
     updating_ = false;
@@ -274,8 +377,10 @@ void CalibrationWizard::finishRow()
     stopMeasuring();
     if (next < table_->rowCount()) {
         table_->selectRow(next);
-        if (!loadMass_)
-            prompt_->setText(tr("Hang %1 g on the sensor, then press Measure.").arg(massAt(next)));
+        showStepPrompt(next);
+    } else {
+        prompt_->setText(hasFit_ ? tr("All masses measured: check the fit and its residuals, then Save and use.")
+                                 : tr("All masses measured, but there is no fit yet."));
     }
 }
 
@@ -366,8 +471,18 @@ void CalibrationWizard::findSuspect(const std::vector<CalibrationPoint>& points)
     }
 }
 
+void CalibrationWizard::showSaturation()
+{
+    // The refusal stays in view next to whatever the fit says.
+    if (saturationNote_.isEmpty() || saturatedRows() == 0)
+        return;
+    const QString fitNote = suspect_->text();
+    suspect_->setText(fitNote.isEmpty() || fitNote == saturationNote_ ? saturationNote_ : saturationNote_ + QLatin1Char('\n') + fitNote);
+}
+
 void CalibrationWizard::redraw()
 {
+    showSaturation();
     QVector<double> um, uv, rm, rv, wm, wv, xm, xv;
     for (int r = 0; r < table_->rowCount(); ++r) {
         if (!measuredAt(r))

@@ -34,6 +34,14 @@ public:
     void setLoadMassHook(LoadMassHook hook) { loadMass_ = std::move(hook); }
     // Masses from..to in steps (grams); replaces the table.
     void setMasses(double from_g, double to_g, double step_g);
+    // The input range (±V) and the sensor's nominal slope: readings within 0.2 % of the range
+    // are saturated and refused, and the default masses stop at 90 % of the range (in 50 g
+    // steps). Without a nominal slope the masses stay as they are.
+    void setSensorRange(double fullScale_V, double nominalSlope_V_per_g);
+    double saturation_V() const { return 0.998 * fullScale_V_; }
+    // Rows refused because the reading saturated.
+    int saturatedRows() const;
+    QString promptText() const;
 
     // The live stream: device time and voltage of each sample.
     void addSample(double time_s, double volts);
@@ -75,6 +83,16 @@ private:
 
     QString sensor_;
     double dwell_s_ = 2.0;
+    double fullScale_V_ = 10.0;
+    // Settle detection on the live reading: the mean of consecutive windows stops moving.
+    double windowStart_ = -1.0, windowSum_ = 0.0, windowSumSq_ = 0.0, previousMean_ = NAN;
+    int windowCount_ = 0;
+    bool settled_ = false;
+    double peakAbs_V_ = 0.0;
+    void refuseSaturated(int row, double volts);
+    void showStepPrompt(int row);
+    void showSaturation();
+    QString saturationNote_;
     LoadMassHook loadMass_;
     QTableWidget* table_ = nullptr;
     QCustomPlot* plot_ = nullptr;

@@ -16,6 +16,8 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QDir>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QKeyEvent>
@@ -44,6 +46,8 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
                                         : tr("Indexing the video: %1 frames").arg(done));
     });
     connect(decoder_, &video::VideoDecoder::opened, this, [this](video::FrameIndexPtr index) {
+        if (videoPath_.isEmpty())
+            return;  // the run changed to one without video while this one was indexed
         index_ = index;
         for (const QString& w : index->warnings)
             showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
@@ -65,6 +69,7 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
     connect(model_, &LabelModel::labelsChanged, this, [this] {
         updateShading();
         saveLabels();
+        updateLabelCount();
     });
     connect(&syncWatcher_, &QFutureWatcher<SyncResult>::finished, this, [this] {
         try {
@@ -84,8 +89,16 @@ void ReviewWorkspace::buildUi()
 {
     video_ = new VideoView(this);
     video_->setFocusPolicy(Qt::NoFocus);
+    connect(video_, &VideoView::openRequested, this, &ReviewWorkspace::chooseVideo);
+    connect(video_, &VideoView::videoDropped, this, &ReviewWorkspace::attachVideo);
     plot_ = new QCustomPlot(this);
+    plot_->setObjectName(QStringLiteral("reviewForcePlot"));
     plot_->setFocusPolicy(Qt::NoFocus);
+    // The wheel zooms time; the label timeline below follows (same axis, to the pixel).
+    plot_->setInteractions(QCP::iRangeZoom);
+    plot_->axisRect()->setRangeZoom(Qt::Horizontal);
+    // Room on the left for the timeline's track names, which sit under the plot's margin.
+    plot_->axisRect()->setMinimumMargins(QMargins(92, 15, 15, 15));
     plot_->addGraph();
     plot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
     plot_->xAxis->setLabel(tr("recording time [s]"));
@@ -102,6 +115,11 @@ void ReviewWorkspace::buildUi()
     timeline_ = new Timeline(model_, undo_, this);
     timeline_->setFocusPolicy(Qt::NoFocus);
     connect(timeline_, &Timeline::cursorMoved, this, &ReviewWorkspace::setCursorTime);
+    connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this](const QCPRange& r) {
+        timeline_->setRange(r.lower, r.upper);
+    });
+    connect(plot_, &QCustomPlot::afterLayout, this, &ReviewWorkspace::alignTimeline);
+    connect(plot_, &QCustomPlot::afterReplot, this, &ReviewWorkspace::alignTimeline);
 
     // Transport.
     auto* transport = new QHBoxLayout;
@@ -139,6 +157,9 @@ void ReviewWorkspace::buildUi()
 
     // Synchronisation.
     auto* sync = new QHBoxLayout;
+    // Two rows (the offset and drift; finding them) so a laptop screen holds them.
+    auto* syncFind = new QHBoxLayout;
+    QHBoxLayout* syncRow = sync;
     sync->addWidget(new QLabel(tr("video offset"), this));
     offsetBox_ = new QDoubleSpinBox(this);
     offsetBox_->setFocusPolicy(Qt::ClickFocus);
@@ -150,6 +171,9 @@ void ReviewWorkspace::buildUi()
     connect(offsetBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         if (std::abs(v - mapping_.offset_s) > 1e-7) {
             mapping_.offset_s = v;
+            syncMethod_ = SyncMethod::Manual;
+            syncConfidence_.reset();
+            storeVideoLink();
             requestFrameForCursor();
         }
     });
@@ -162,6 +186,9 @@ void ReviewWorkspace::buildUi()
     driftBox_->setToolTip(tr("clock drift of the video against the force record (video runs fast: positive)"));
     connect(driftBox_, &QDoubleSpinBox::valueChanged, this, [this](double ppm) {
         mapping_.drift = ppm * 1e-6;
+        syncMethod_ = SyncMethod::Manual;
+        syncConfidence_.reset();
+        storeVideoLink();
         requested_ = -1;
         requestFrameForCursor();
     });
@@ -172,7 +199,7 @@ void ReviewWorkspace::buildUi()
         b->setToolTip(tip);
         b->setFocusPolicy(Qt::NoFocus);
         connect(b, &QPushButton::clicked, this, slot);
-        sync->addWidget(b);
+        syncRow->addWidget(b);
         return b;
     };
     auto frameDuration = [this] { return index_ ? index_->frameDuration() : 1.0 / 29.97; };
@@ -186,14 +213,22 @@ void ReviewWorkspace::buildUi()
         m.nudge(1, frameDuration());
         setMapping(m);
     });
+    syncRow = syncFind;
     syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] { markEventInRecording(); });
     syncButton(tr("Mark event in video"), tr("the event is in the frame shown"), [this] { markEventInVideo(); });
     syncButton(tr("Auto sync"), tr("track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position"),
                [this] { startAutoSync(); });
     syncLabel_ = new QLabel(this);
+    syncLabel_->setObjectName(QStringLiteral("syncResult"));
+    // A long result wraps in the space there is instead of widening the window.
+    syncLabel_->setWordWrap(true);
+    syncLabel_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    syncLabel_->setMinimumWidth(120);
     syncLabel_->setToolTip(tr("r: correlation of the needle's tracked displacement with the recorded position at the offset found; "
                               "confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets"));
-    sync->addWidget(syncLabel_);
+    syncFind->addWidget(syncLabel_, 1);
+    // Accept/Reject sit with the offset they set (the row below would not fit a laptop in German).
+    syncRow = sync;
     acceptButton_ = syncButton(tr("Accept"), tr("use the offset found"), [this] { acceptSync(); });
     overrideBox_ = new QCheckBox(tr("accept a low confidence"), this);
     overrideBox_->setFocusPolicy(Qt::NoFocus);
@@ -223,15 +258,28 @@ void ReviewWorkspace::buildUi()
     editSet->setToolTip(tr("add, rename or remove the labels of this protocol and their hotkeys"));
     connect(editSet, &QPushButton::clicked, this, &ReviewWorkspace::editLabelSet);
     labels->addWidget(editSet);
+    labelCount_ = new QLabel(this);
+    labelCount_->setObjectName(QStringLiteral("labelCount"));
+    labels->addWidget(labelCount_);
     keysHelp_ = new QLabel(this);
     keysHelp_->setWordWrap(true);
+    keysHelp_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     labels->addWidget(keysHelp_, 1);
     status_ = new QLabel(this);
+    status_->setObjectName(QStringLiteral("reviewStatus"));
     status_->setWordWrap(true);
+    status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
 
     auto* top = new QSplitter(Qt::Horizontal, this);
     top->addWidget(video_);
-    top->addWidget(plot_);
+    // The label timeline sits right under the force plot, so both share one time axis.
+    auto* forceColumn = new QWidget(top);
+    auto* forceLayout = new QVBoxLayout(forceColumn);
+    forceLayout->setContentsMargins(0, 0, 0, 0);
+    forceLayout->setSpacing(0);
+    forceLayout->addWidget(plot_, 1);
+    forceLayout->addWidget(timeline_);
+    top->addWidget(forceColumn);
     top->setStretchFactor(0, 1);
     top->setStretchFactor(1, 1);
     top->setSizes({1000, 1000});  // half each: the force needs as much width as the picture
@@ -239,9 +287,9 @@ void ReviewWorkspace::buildUi()
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(top, 1);
     layout->addLayout(transport);
-    layout->addWidget(timeline_);
     layout->addLayout(labels);
     layout->addLayout(sync);
+    layout->addLayout(syncFind);
     layout->addWidget(syncPlot_);
     layout->addWidget(status_);
 
@@ -258,6 +306,7 @@ void ReviewWorkspace::buildUi()
     model_->setDefinitions(savedLabelSet(protocol_));
     updateKeysHelp();
     updateShading();
+    updateLabelCount();
 }
 
 void ReviewWorkspace::updateKeysHelp()
@@ -314,11 +363,12 @@ bool ReviewWorkspace::openRun(const QString& path)
         plot_->graph(0)->setData(t, f, true);
         plot_->rescaleAxes();
         plot_->yAxis->scaleRange(1.1);
-        timeline_->setRange(run_.time_s.front(), run_.time_s.back());
+        timeline_->setRange(plot_->xAxis->range().lower, plot_->xAxis->range().upper);
         updateKeysHelp();
         updateShading();
         setCursorTime(run_.time_s.front());
         showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size()));
+        restoreVideoLink();
         return true;
     } catch (const RunFileError& e) {
         showStatus(e.message());
@@ -335,8 +385,118 @@ void ReviewWorkspace::openVideo(const QString& path)
     videoPath_ = path;
     index_.reset();
     frame_ = -1;
+    video_->openButton()->hide();
     video_->setMessage(tr("Indexing the video…"));
     decoder_->open(path);
+}
+
+void ReviewWorkspace::updateLabelCount()
+{
+    labelCount_->setText(tr("labels: %n", nullptr, int(model_->labels().size())));
+}
+
+void ReviewWorkspace::alignTimeline()
+{
+    const QRect axis = plot_->axisRect()->rect();
+    const QPoint left = timeline_->mapFromGlobal(plot_->mapToGlobal(axis.topLeft()));
+    timeline_->setAxisPixels(left.x(), axis.width());
+}
+
+void ReviewWorkspace::clearVideo()
+{
+    markRecording_.reset();
+    markVideo_.reset();
+    markedEvent_.reset();
+    videoPath_.clear();
+    index_.reset();
+    frame_ = -1;
+    requested_ = -1;
+    video_->clearVideo();
+}
+
+bool ReviewWorkspace::attachVideo(const QString& path)
+{
+    if (runPath_.isEmpty()) {
+        showStatus(tr("Open a run first (double-click it in the session list), then attach its video"));
+        return false;
+    }
+    if (!QFileInfo(path).isFile()) {
+        showStatus(tr("%1: no such video file").arg(QDir::toNativeSeparators(path)));
+        return false;
+    }
+    openVideo(QFileInfo(path).absoluteFilePath());
+    // An offset belongs to one video: a new one starts from nothing.
+    pendingSync_.reset();
+    updateSyncUi();
+    setMapping({}, SyncMethod::None);
+    showStatus(tr("%1 attached to %2; sync it (Auto sync, or mark an event in both)")
+                   .arg(QFileInfo(path).fileName(), QFileInfo(runPath_).fileName()));
+    return true;
+}
+
+void ReviewWorkspace::chooseVideo()
+{
+    if (runPath_.isEmpty()) {
+        showStatus(tr("Open a run first (double-click it in the session list), then attach its video"));
+        return;
+    }
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open the video of %1").arg(QFileInfo(runPath_).fileName()),
+                                                      QFileInfo(runPath_).absolutePath(),
+                                                      tr("Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;All files (*)"));
+    if (!path.isEmpty())
+        attachVideo(path);
+}
+
+void ReviewWorkspace::restoreVideoLink()
+{
+    QString problem;
+    const std::optional<RunVideoLink> link = readRunVideoLink(runPath_, &problem);
+    // The run's own video beside it (RUN.mp4) when the session names none.
+    QString video = link ? link->video : QString();
+    if (!link) {
+        const QFileInfo run(runPath_);
+        for (const char* ext : {"mp4", "mkv", "avi"}) {
+            const QString p = run.dir().filePath(run.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
+            if (QFileInfo::exists(p)) {
+                video = p;
+                break;
+            }
+        }
+    }
+    const QString keepPath = runPath_;
+    runPath_.clear();  // restoring is no change to store
+    pendingSync_.reset();
+    updateSyncUi();
+    setMapping(link ? link->mapping : TimelineMapping{}, link ? link->method : SyncMethod::None, link ? link->confidence : std::nullopt);
+    runPath_ = keepPath;
+    if (video.isEmpty()) {
+        clearVideo();
+    } else if (!QFileInfo::exists(video)) {
+        clearVideo();
+        video_->setMessage(tr("The video of this run, %1, is missing. Open it again where it now lies.").arg(QDir::toNativeSeparators(video)));
+        videoPath_.clear();
+    } else if (video != videoPath_ || !index_) {
+        openVideo(video);
+    } else {
+        requested_ = -1;
+        requestFrameForCursor();
+    }
+    if (!problem.isEmpty())
+        showStatus(problem);
+}
+
+void ReviewWorkspace::storeVideoLink()
+{
+    if (runPath_.isEmpty())
+        return;
+    try {
+        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_};
+        const bool empty = videoPath_.isEmpty() && mapping_ == TimelineMapping{} && syncMethod_ == SyncMethod::None;
+        writeRunVideoLink(runPath_, empty ? std::nullopt : std::optional(link));
+        emit videoLinkChanged();
+    } catch (const Error& e) {
+        showStatus(tr("Video and sync not kept: %1").arg(e.message()));
+    }
 }
 
 void ReviewWorkspace::setCursorTime(double t)
@@ -433,12 +593,12 @@ void ReviewWorkspace::applyMarkedEvent()
                           ? TimelineMapping::fromEvents(markedEvent_->first, markedEvent_->second, r, v)
                           : std::nullopt;
     if (both && std::abs(both->drift) <= kMaxDrift) {
-        setMapping(*both);
+        setMapping(*both, SyncMethod::EventMarks);
         showStatus(tr("Offset and drift set from two events (%1 s apart): drift %2 ppm")
                        .arg(std::abs(r - markedEvent_->first), 0, 'f', 2)
                        .arg(both->drift * 1e6, 0, 'f', 0));
     } else {
-        setMapping(TimelineMapping::fromEvent(r, v, mapping_.drift));
+        setMapping(TimelineMapping::fromEvent(r, v, mapping_.drift), SyncMethod::EventMarks);
         if (both)
             showStatus(tr("Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: "
                           "check both marks; the drift was kept").arg(both->drift * 1e6, 0, 'f', 0));
@@ -448,9 +608,12 @@ void ReviewWorkspace::applyMarkedEvent()
     markedEvent_ = {r, v};
 }
 
-void ReviewWorkspace::setMapping(const TimelineMapping& m)
+void ReviewWorkspace::setMapping(const TimelineMapping& m, SyncMethod method, std::optional<double> confidence)
 {
     mapping_ = m;
+    syncMethod_ = method;
+    syncConfidence_ = confidence;
+    storeVideoLink();
     const QSignalBlocker block(offsetBox_), blockDrift(driftBox_);
     offsetBox_->setValue(m.offset_s);
     driftBox_->setValue(m.drift * 1e6);
@@ -467,6 +630,25 @@ void ReviewWorkspace::handleLabelKey(int key)
     if (def->point) {
         undo_->push(new AddLabelCommand(model_, Label{def->track, def->label, cursor_, cursor_, {}}));
         return;
+    }
+    // Insertion and withdrawal phases follow one another: a phase started on one track closes
+    // the one still open on another at the cursor (instead of leaving it hanging unseen).
+    for (auto other = pending_.begin(); other != pending_.end();) {
+        if (other->first == def->track) {
+            ++other;
+            continue;
+        }
+        const auto [label, start] = other->second;
+        const QString track = other->first;
+        other = pending_.erase(other);
+        timeline_->setPending(track, {}, std::nullopt);
+        const Label l{track, label, std::min(start, cursor_), std::max(start, cursor_), {}};
+        if (l.end_s > l.start_s && model_->canPlace(l)) {
+            undo_->push(new AddLabelCommand(model_, l));
+            showStatus(tr("%1 on %2 closed at %3 s").arg(label, track).arg(cursor_, 0, 'f', 3));
+        } else {
+            showStatus(tr("%1 on %2 was not closed (it would be empty or overlap another phase): not added").arg(label, track));
+        }
     }
     const auto it = pending_.find(def->track);
     if (it != pending_.end()) {
@@ -628,7 +810,8 @@ void ReviewWorkspace::acceptSync()
         return;
     // The displacement sync measures the drift too; the speed fallback leaves it alone.
     const bool measuredDrift = pendingSync_->scale_px_per_mm != 0.0;
-    setMapping({pendingSync_->offset_s, measuredDrift ? pendingSync_->drift : mapping_.drift});
+    setMapping({pendingSync_->offset_s, measuredDrift ? pendingSync_->drift : mapping_.drift}, SyncMethod::Automatic,
+               pendingSync_->confidence);
     pendingSync_.reset();
     updateSyncUi();
 }

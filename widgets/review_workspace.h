@@ -11,6 +11,7 @@
 // Ctrl+Z undo; Ctrl+Shift+Z or Ctrl+Y redo.
 
 #include "core/run.h"
+#include "core/run_video_link.h"
 #include "core/sync.h"
 #include "video/video_decoder.h"
 
@@ -47,6 +48,16 @@ public:
     // Both report problems in the workspace (status line) and return false.
     bool openRun(const QString& path);
     void openVideo(const QString& path);  // asynchronous: indexing, then the first frame
+    // Attaches a video to the run in review and keeps it with the run in the session
+    // (videos.json); the offset starts again from 0. False with a message when no run is open.
+    bool attachVideo(const QString& path);
+    // Open video…: the file dialog, then attachVideo().
+    void chooseVideo();
+    QString videoPath() const { return videoPath_; }
+    QString runPath() const { return runPath_; }
+    // How the current offset was found and with what confidence (kept with the run).
+    SyncMethod syncMethod() const { return syncMethod_; }
+    std::optional<double> syncConfidence() const { return syncConfidence_; }
 
     double cursorTime() const { return cursor_; }
     void setCursorTime(double recording_s);
@@ -55,7 +66,8 @@ public:
     bool isPlaying() const;
     void setSpeed(double factor);  // 0.1 .. 2
     TimelineMapping mapping() const { return mapping_; }
-    void setMapping(const TimelineMapping& m);
+    // `method` and `confidence` say how it was found; stored with the run when one is open.
+    void setMapping(const TimelineMapping& m, SyncMethod method = SyncMethod::Manual, std::optional<double> confidence = std::nullopt);
     // Marking one event in both sets the offset; a second one, a second or more away, sets the
     // drift too (the two buttons of the sync bar).
     void markEventInRecording();  // at the cursor
@@ -91,11 +103,22 @@ signals:
     void frameShown(int index);
     void videoOpened();
     void syncFinished();
+    void videoLinkChanged();  // the video or the sync kept with the run changed
 
 protected:
     void keyPressEvent(QKeyEvent* e) override;
 
 private:
+    // Video link kept per run (core/run_video_link.h).
+    void restoreVideoLink();
+    void storeVideoLink();
+    void clearVideo();
+    void alignTimeline();
+    void updateLabelCount();
+    QLabel* labelCount_ = nullptr;  // the timeline's time axis under the plot's, to the pixel
+    SyncMethod syncMethod_ = SyncMethod::None;
+    std::optional<double> syncConfidence_;
+
     void buildUi();
     void handleLabelKey(int key);
     void updateShading();

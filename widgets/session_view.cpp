@@ -111,6 +111,18 @@ void SessionView::setSession(const Session* session)
 
 void SessionView::setBusyPath(const QString& path) { model_->setBusyPath(path); }
 
+// The tip as stored (beveled, diamond, blunt: file values) said in the operator's language.
+static QString tipName(const QString& tip)
+{
+    if (tip == QLatin1String("beveled"))
+        return SessionView::tr("beveled tip");
+    if (tip == QLatin1String("diamond"))
+        return SessionView::tr("diamond tip");
+    if (tip == QLatin1String("blunt"))
+        return SessionView::tr("blunt tip");
+    return SessionView::tr("%1 tip").arg(tip);
+}
+
 void SessionView::refresh()
 {
     if (!session_) {
@@ -122,7 +134,7 @@ void SessionView::refresh()
     const auto cal = session_->activeCalibration();
     QStringList specimen;
     for (const QString& part : {i.organ, i.specimen.isEmpty() ? QString() : tr("specimen %1").arg(i.specimen),
-                                i.tip.isEmpty() ? QString() : tr("%1 tip").arg(i.tip),
+                                i.tip.isEmpty() ? QString() : tipName(i.tip),
                                 i.thickness_mm > 0 ? tr("%1 mm thick").arg(i.thickness_mm) : QString(),
                                 i.operatorName.isEmpty() ? QString() : tr("operator %1").arg(i.operatorName),
                                 i.protocol})

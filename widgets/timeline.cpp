@@ -8,6 +8,7 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <cmath>
 
 namespace nb {
 
@@ -55,8 +56,18 @@ void Timeline::setPending(const QString& track, const QString& label, std::optio
     update();
 }
 
-int Timeline::xOf(double t) const { return kLeft + int((t - start_) / (end_ - start_) * (width() - kLeft - 8)); }
-double Timeline::timeAt(int x) const { return start_ + double(x - kLeft) / std::max(1, width() - kLeft - 8) * (end_ - start_); }
+// Rounded as QCustomPlot places its pixels, so marks line up with the plot above.
+int Timeline::xOf(double t) const { return axisLeft() + int(std::lround((t - start_) / (end_ - start_) * axisWidth())); }
+double Timeline::timeAt(int x) const { return start_ + double(x - axisLeft()) / axisWidth() * (end_ - start_); }
+
+void Timeline::setAxisPixels(int left, int width)
+{
+    if (left == axisLeft_ && width == axisWidth_)
+        return;
+    axisLeft_ = left;
+    axisWidth_ = width;
+    update();
+}
 int Timeline::rowTop(const QString& track) const { return 4 + rowHeight() * int(model_->tracks().indexOf(track)); }
 
 QString Timeline::trackAt(int y) const
@@ -76,11 +87,12 @@ void Timeline::paintEvent(QPaintEvent*)
         if (track == currentTrack_)
             p.fillRect(QRect(0, y, width(), rowHeight()), palette().alternateBase());
         p.setPen(palette().text().color());
-        p.drawText(QRect(4, y, kLeft - 8, rowHeight()), Qt::AlignVCenter | Qt::AlignLeft, track);
+        p.drawText(QRect(2, y, axisLeft() - 6, rowHeight()), Qt::AlignVCenter | Qt::AlignRight,
+                   fontMetrics().elidedText(track, Qt::ElideRight, std::max(8, axisLeft() - 6)));
         p.setPen(palette().mid().color());
-        p.drawLine(kLeft, y + rowHeight() - 1, width(), y + rowHeight() - 1);
+        p.drawLine(axisLeft(), y + rowHeight() - 1, width(), y + rowHeight() - 1);
     }
-    p.setClipRect(QRect(kLeft, 0, width() - kLeft, height()));
+    p.setClipRect(QRect(axisLeft(), 0, axisWidth() + 1, height()));
     for (const Label& l : model_->labels()) {
         const Label& shown = drag_ && l == drag_->original ? drag_->current : l;
         const int y = rowTop(l.track);
@@ -109,11 +121,14 @@ void Timeline::paintEvent(QPaintEvent*)
     const int axisY = 4 + rowHeight() * int(tracks.size());
     p.setPen(palette().text().color());
     const double span = end_ - start_;
-    const double step = span > 60 ? 10 : span > 20 ? 5 : span > 8 ? 1 : span > 2 ? 0.5 : 0.1;
+    // 1, 2 or 5 times a power of ten, with labels at least 60 px apart (zoomed or narrow).
+    const double minStep = span * 60.0 / std::max(1, axisWidth());
+    const double decade = std::pow(10.0, std::floor(std::log10(std::max(minStep, 1e-6))));
+    const double step = minStep <= decade ? decade : minStep <= 2 * decade ? 2 * decade : minStep <= 5 * decade ? 5 * decade : 10 * decade;
     for (double t = std::ceil(start_ / step) * step; t <= end_; t += step) {
         const int x = xOf(t);
         p.drawLine(x, axisY, x, axisY + 4);
-        p.drawText(x + 2, axisY + 14, QString::number(t, 'g', 4));
+        p.drawText(x + 2, axisY + 14, QString::number(std::abs(t) < 1e-9 * step ? 0.0 : t, 'g', 6));
     }
     p.setPen(QPen(QColor(220, 0, 0), 2));
     p.drawLine(xOf(cursor_), 0, xOf(cursor_), height());

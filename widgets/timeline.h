@@ -6,6 +6,7 @@
 #include "core/labels.h"
 
 #include <QWidget>
+#include <algorithm>
 #include <optional>
 
 class QUndoStack;
@@ -20,6 +21,9 @@ public:
     Timeline(LabelModel* model, QUndoStack* undo, QWidget* parent = nullptr);
 
     void setRange(double start_s, double end_s);
+    // Where the time axis lies in this widget (left pixel and width), so that it matches a
+    // plot above to the pixel; the track names go left of it. Negative: the default margins.
+    void setAxisPixels(int left, int width);
     double cursorTime() const { return cursor_; }
     void setCursorTime(double t);
     QString currentTrack() const { return currentTrack_; }
@@ -62,6 +66,9 @@ private:
     std::optional<Drag> drag_;
     bool scrubbing_ = false;
     static constexpr int kLeft = 86;  // track names
+    int axisLeft_ = -1, axisWidth_ = -1;
+    int axisLeft() const { return axisLeft_ >= 0 ? axisLeft_ : kLeft; }
+    int axisWidth() const { return axisWidth_ > 0 ? axisWidth_ : std::max(1, width() - kLeft - 8); }
 };
 
 }  // namespace nb

@@ -1,7 +1,11 @@
 #include "video_view.h"
 
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPushButton>
 
 namespace nb {
 
@@ -9,7 +13,47 @@ VideoView::VideoView(QWidget* parent) : QWidget(parent)
 {
     setMinimumSize(240, 160);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
-    message_ = tr("No video. Open one to review it with the force record.");
+    setAcceptDrops(true);
+    openButton_ = new QPushButton(tr("Open video…"), this);
+    openButton_->setObjectName(QStringLiteral("openVideoButton"));
+    openButton_->setToolTip(tr("attach the video filmed during this run (or drop the file here)"));
+    openButton_->setFocusPolicy(Qt::NoFocus);
+    connect(openButton_, &QPushButton::clicked, this, &VideoView::openRequested);
+    clearVideo();
+}
+
+void VideoView::clearVideo()
+{
+    image_ = QImage();
+    index_ = -1;
+    message_ = tr("No video. Open one, or drop the file here, to review it with the force record.");
+    openButton_->show();
+    placeOpenButton();
+    update();
+}
+
+void VideoView::placeOpenButton()
+{
+    const QSize s = openButton_->sizeHint();
+    openButton_->setGeometry((width() - s.width()) / 2, height() / 2 + fontMetrics().height() * 2, s.width(), s.height());
+}
+
+void VideoView::resizeEvent(QResizeEvent*) { placeOpenButton(); }
+
+void VideoView::dragEnterEvent(QDragEnterEvent* e)
+{
+    const QList<QUrl> urls = e->mimeData()->urls();
+    if (urls.size() == 1 && urls.front().isLocalFile())
+        e->acceptProposedAction();
+}
+
+void VideoView::dropEvent(QDropEvent* e)
+{
+    const QList<QUrl> urls = e->mimeData()->urls();
+    if (urls.size() == 1 && urls.front().isLocalFile()) {
+        e->acceptProposedAction();
+        emit videoDropped(urls.front().toLocalFile());
+    }
 }
 
 void VideoView::setFrame(const QImage& image, int index, double time_s)
@@ -18,12 +62,14 @@ void VideoView::setFrame(const QImage& image, int index, double time_s)
     index_ = index;
     time_ = time_s;
     message_.clear();
+    openButton_->hide();
     update();
 }
 
 void VideoView::setMessage(const QString& text)
 {
     message_ = text;
+    placeOpenButton();
     update();
 }
 

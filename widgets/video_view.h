@@ -6,6 +6,8 @@
 #include <QRect>
 #include <QWidget>
 
+class QPushButton;
+
 namespace nb {
 
 class VideoView : public QWidget {
@@ -18,11 +20,20 @@ public:
     void setRoi(const QRect& roi);
     int frameIndex() const { return index_; }
     QSize sizeHint() const override { return {480, 320}; }
+    // Back to the "No video" placeholder with its Open video… button.
+    void clearVideo();
+    QPushButton* openButton() const { return openButton_; }
 
 signals:
     void roiChanged(const QRect& roi);
+    void openRequested();                   // the placeholder's Open video… button
+    void videoDropped(const QString& path); // a file dropped on the view
 
 protected:
+    void resizeEvent(QResizeEvent*) override;
+    void dragEnterEvent(QDragEnterEvent*) override;
+    void dropEvent(QDropEvent*) override;
+
     void paintEvent(QPaintEvent*) override;
     void mousePressEvent(QMouseEvent*) override;
     void mouseMoveEvent(QMouseEvent*) override;
@@ -38,6 +49,8 @@ private:
     QRect roi_;
     QPoint dragStart_;
     bool dragging_ = false;
+    QPushButton* openButton_ = nullptr;
+    void placeOpenButton();
 };
 
 }  // namespace nb

@@ -5,6 +5,7 @@
 
 #include "core/excerpt.h"
 #include "core/run_file.h"
+#include "core/run_video_link.h"
 #include "core/session.h"
 
 #include <QCoreApplication>
@@ -75,6 +76,12 @@ LoadedDataset loadDataset(const QString& dirPath)
             out.warnings << nb::TrCore::tr("%1: skipped, not a run file (%2)").arg(path, e.message());
             continue;
         }
+        // The video and sync the operator set in the window (videos.json) win over the file's.
+        QString linkProblem;
+        if (const auto link = readRunVideoLink(path, &linkProblem))
+            applyRunVideoLink(r.run, path, *link);
+        if (!linkProblem.isEmpty() && !out.warnings.contains(linkProblem))
+            out.warnings << linkProblem;
         const QString labelsPath = labelsPathFor(path);
         if (QFileInfo::exists(labelsPath)) {
             try {

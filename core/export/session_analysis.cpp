@@ -2,6 +2,7 @@
 #include "core/tr.h"
 
 #include "core/fit_error.h"
+#include "core/run_judgement.h"
 #include "core/statistics.h"
 
 #include <QCoreApplication>
@@ -38,10 +39,21 @@ double thicknessFor(const Run& run, const Dataset& d)
     return 0.0;
 }
 
-void analyseStiffness(const Dataset& d, SessionAnalysis& a)
+// False, with the reason in a.leftOut, for a run the judgement leaves out.
+bool judged(const DatasetRun& r, SessionAnalysis& a, const AnalysisOptions& o)
+{
+    const RunJudgement j = judgeRun(r.run);
+    if (j.usable)
+        return true;
+    if (!o.includeJudgedOut)
+        a.leftOut << nb::TrCore::tr("%1: %2").arg(r.name, j.reason);
+    return o.includeJudgedOut;
+}
+
+void analyseStiffness(const Dataset& d, SessionAnalysis& a, const AnalysisOptions& o)
 {
     for (const DatasetRun& r : d.runs) {
-        if (runKind(r.run) != RunKind::Insertion)
+        if (runKind(r.run) != RunKind::Insertion || !judged(r, a, o))
             continue;
         StiffnessRunResult s;
         s.run = r.name;
@@ -89,30 +101,35 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a)
             std::vector<double> f;
             for (std::size_t i : idx)
                 f.push_back(a.stiffness[i].fit.quadratic.model(x));
-            for (const auto* values : {&f, &forces}) {
-                const double m = median(*values);
-                std::vector<double> dev;
-                for (double v : *values)
-                    dev.push_back(std::abs(v - m));
-                const double mad = 1.4826 * median(dev);
-                for (std::size_t k = 0; k < idx.size(); ++k)
-                    // The 15 % floor keeps near-identical runs (tiny MAD) from all looking odd.
-                    if (std::abs((*values)[k] - m) > std::max(3.0 * mad, 0.15 * std::abs(m)))
-                        a.stiffness[idx[k]].outlier = true;
+            const QStringList byModel = robustOutlierReasons(f, nb::TrCore::tr("model force at %1 mm").arg(x, 0, 'f', 2), QStringLiteral("N"));
+            const QStringList byForce = robustOutlierReasons(forces, nb::TrCore::tr("puncture force"), QStringLiteral("N"));
+            for (std::size_t k = 0; k < idx.size(); ++k) {
+                QStringList why;
+                for (const QString& r : {byModel[qsizetype(k)], byForce[qsizetype(k)]})
+                    if (!r.isEmpty())
+                        why << r;
+                a.stiffness[idx[k]].outlier = !why.isEmpty();
+                a.stiffness[idx[k]].outlierReason = why.join(QStringLiteral("; "));
             }
         }
         a.stiffnessGroups.push_back(std::move(g));
     }
 }
 
-void analyseFriction(const Dataset& d, SessionAnalysis& a)
+void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions& options)
 {
     std::vector<FrictionFit> fits;
     for (const DatasetRun& r : d.runs) {
-        if (runKind(r.run) != RunKind::Sinusoid)
+        if (runKind(r.run) != RunKind::Sinusoid || !judged(r, a, options))
             continue;
         FrictionRunResult f;
         f.run = r.name;
+        if (!touchedTissue(r.run)) {  // even when asked to include it: air has no friction
+            f.error = nb::TrCore::tr("no tissue contact");
+            a.warnings << nb::TrCore::tr("%1: no friction fit (%2)").arg(r.name, f.error);
+            a.friction.push_back(std::move(f));
+            continue;
+        }
         try {
             FrictionOptions o;
             o.thickness_mm = thicknessFor(r.run, d);
@@ -199,11 +216,11 @@ RunKind runKind(const Run& run)
     return RunKind::Other;
 }
 
-SessionAnalysis analyseDataset(const Dataset& dataset)
+SessionAnalysis analyseDataset(const Dataset& dataset, const AnalysisOptions& options)
 {
     SessionAnalysis a;
-    analyseStiffness(dataset, a);
-    analyseFriction(dataset, a);
+    analyseStiffness(dataset, a, options);
+    analyseFriction(dataset, a, options);
     analyseValidation(dataset, a);
     return a;
 }

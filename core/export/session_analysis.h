@@ -32,6 +32,7 @@ struct StiffnessRunResult {
     StiffnessSegment segment;
     StiffnessFit fit;
     bool outlier = false;  // far from the group's other runs (robust, median-based)
+    QString outlierReason; // which value, how far, by which rule (core/run_judgement.h)
     bool ok() const { return error.isEmpty(); }
 };
 
@@ -69,9 +70,14 @@ struct SessionAnalysis {
     std::optional<FrictionGroup> frictionOverall;
     std::vector<ValidationResult> validation;
     QStringList warnings;  // one line per run that could not be fitted, naming it
+    QStringList leftOut;   // "run: reason" per run judged out (core/run_judgement.h)
 };
 
-SessionAnalysis analyseDataset(const Dataset& dataset);
+struct AnalysisOptions {
+    bool includeJudgedOut = false;  // take runs cut short or without contact as well
+};
+
+SessionAnalysis analyseDataset(const Dataset& dataset, const AnalysisOptions& options = {});
 
 // Tables for CSV/LaTeX export and the views.
 FitTable stiffnessRunsTable(const SessionAnalysis& a);

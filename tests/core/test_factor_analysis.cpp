@@ -43,6 +43,7 @@ Dataset makeDataset()
             r.run.metadata.set(QStringLiteral("thickness_mm"), kThickness_mm);
             r.run.metadata.set(QStringLiteral("factor_site"), QString::number(site));
             r.run.metadata.set(QStringLiteral("factor_frequency_hz"), QString::number(kFreqs[k]));
+            r.run.footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));  // as a whole recording has
             d.runs.push_back(std::move(r));
         }
     for (int i = 0; i < 6; ++i) {
@@ -58,6 +59,7 @@ Dataset makeDataset()
         r.run.metadata.set(QStringLiteral("protocol"), QStringLiteral("stiffness"));
         r.run.metadata.set(QStringLiteral("tissue"), QStringLiteral("liver1"));
         r.run.metadata.set(QStringLiteral("tip"), diamond ? QStringLiteral("diamond") : QStringLiteral("beveled"));
+        r.run.footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
         d.runs.push_back(std::move(r));
     }
     return d;

@@ -23,9 +23,14 @@ private slots:
     void initTestCase()
     {
         bool ok = false;
-        seed_ = qEnvironmentVariable("NB_ACCURACY_SEED").toUInt(&ok);
+        // CI must not pass or fail by the draw: the suite repeats one draw (itself drawn at
+        // random once, not chosen for the result). NB_ACCURACY_SEED=random draws a fresh one,
+        // and bench_accuracy draws a fresh matrix every time; their misses are findings.
+        const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
+        seed_ = wanted.toUInt(&ok);
         if (!ok)
-            seed_ = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
+            seed_ = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000)
+                                                      : 371381u;
         qInfo("accuracy matrix seed %u (repeat with NB_ACCURACY_SEED=%u)", seed_, seed_);
     }
 

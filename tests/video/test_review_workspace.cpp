@@ -236,9 +236,17 @@ private slots:
         auto* marker = qobject_cast<QCPItemStraightLine*>(plot->item(0));
         QVERIFY(marker);
         QCOMPARE(marker->point1->coords().x(), ws.pendingSync()->offset_s);
+        const double confidence = ws.pendingSync()->confidence;
         ws.acceptSync();
         QVERIFY(std::abs(ws.mapping().offset_s - truthOffset_) < 1.0 / 29.97);
         QVERIFY(!plot->isVisible());
+        // Kept with the run in its folder: video, offset, how it was found and the confidence.
+        const std::optional<nb::RunVideoLink> kept = nb::readRunVideoLink(run_);
+        QVERIFY(kept);
+        QCOMPARE(QFileInfo(kept->video).canonicalFilePath(), QFileInfo(video_).canonicalFilePath());
+        QCOMPARE(kept->mapping, ws.mapping());
+        QCOMPARE(kept->method, nb::SyncMethod::Automatic);
+        QCOMPARE(kept->confidence.value_or(-1.0), confidence);
         ws.setCursorTime(1.0);  // now shows video time 1.0 + offset
         const int expected = int(std::floor((1.0 + ws.mapping().offset_s) * 29.97 + 1e-9));
         QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), expected, 20000);
@@ -298,7 +306,10 @@ private slots:
         ws.show();
         QVERIFY(ws.openRun(run_));
         QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
-        ws.openVideo(video_);
+        // The run keeps the sync accepted in the test before (videos.json); attaching the video
+        // again starts from offset 0.
+        QVERIFY(ws.attachVideo(video_));
+        QCOMPARE(ws.mapping(), nb::TimelineMapping{});
         QVERIFY(opened.wait(60000));
         QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == 0, 20000);
         const double fps = 29.97;  // what the simulated imaging renders at

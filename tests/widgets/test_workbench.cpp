@@ -259,7 +259,23 @@ private slots:
         nb::CalibrationWizard* wizard = w.findChild<nb::CalibrationWizard*>();
         QVERIFY(wizard);
         QVERIFY(QTest::qWaitForWindowExposed(wizard));
-        QCOMPARE(wizard->rowCount(), 35);  // 0 to 850 g in 25 g steps
+        // The default masses stop short of the ±10 V input: 0 to 700 g in 50 g steps at the
+        // simulated chain's 12.07 mV/g (800 g would saturate).
+        const double slope = w.engine()->nominalSlope_V_per_g();
+        const double top_g = std::floor(0.9 * 10.0 / slope / 50.0) * 50.0;
+        QCOMPARE(wizard->rowCount(), int(top_g / 50.0) + 1);
+        QVERIFY(top_g * slope < wizard->saturation_V());
+        QVERIFY(wizard->promptText().contains(QStringLiteral("Step 1 of")));
+
+        // Masses the sensor cannot read are refused, saying so, not taken as suspect points.
+        wizard->setMasses(600.0, 850.0, 50.0);
+        wizard->measureAll();
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard->isMeasuring(), 60000);
+        QVERIFY2(wizard->saturatedRows() >= 2, qPrintable(QString::number(wizard->saturatedRows())));  // 800 and 850 g
+        QVERIFY(!wizard->table()->item(wizard->rowCount() - 1, 1)->data(Qt::UserRole).isValid());
+        QVERIFY(wizard->findChild<QLabel*>(QStringLiteral("suspectLabel"))->text().contains(QStringLiteral("saturates")));
+        QCOMPARE(wizard->calibration().points.size(), std::size_t(wizard->rowCount() - wizard->saturatedRows()));
+
         wizard->setMasses(0.0, 300.0, 50.0);
         QCOMPARE(wizard->rowCount(), 7);
         auto* measureAll = wizard->findChildren<QPushButton*>().at(0);

@@ -7,9 +7,13 @@
 #include "core/export/dataset_loader.h"
 #include "core/export/export_error.h"
 #include "core/run_file.h"
+#include "core/run_judgement.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QScrollArea>
 #include <QCoreApplication>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -44,9 +48,28 @@ QTableView* tableView(QStandardItemModel* model, QWidget* parent)
 QCustomPlot* newPlot(QWidget* parent)
 {
     auto* p = new QCustomPlot(parent);
-    p->setMinimumSize(360, 260);
+    p->setMinimumSize(240, 200);
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     return p;
+}
+
+// The legend under the plot, not over its data (the curves fill the corners of a fit plot).
+void legendBelow(QCustomPlot* p)
+{
+    QCPLegend* l = p->legend;
+    if (!l || !l->visible())
+        return;
+    if (l->layout() == p->axisRect()->insetLayout()) {
+        p->axisRect()->insetLayout()->take(l);
+        p->axisRect()->insetLayout()->simplify();
+        const int row = p->plotLayout()->rowCount();
+        p->plotLayout()->addElement(row, 0, l);
+        p->plotLayout()->setRowStretchFactor(row, 0.001);
+        l->setMargins(QMargins(4, 2, 4, 2));
+    }
+    l->setWrap(2);  // two across: long fit formulas keep their room
+    l->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    p->replot();
 }
 
 }  // namespace
@@ -95,11 +118,27 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     leftLayout->addWidget(new QLabel(tr("Runs in the analysis:"), left));
     runList_ = new QListWidget(left);
     leftLayout->addWidget(runList_, 1);
+    includeJudgedOut_ = new QCheckBox(tr("Include runs cut short\nor without contact"), left);
+    includeJudgedOut_->setObjectName(QStringLiteral("includeJudgedOut"));
+    includeJudgedOut_->setToolTip(tr("Runs ended by the force limit, an emergency stop or a fault end where the protection "
+                                     "acted, not where the tissue gave way; runs that never touched tissue have nothing to fit. "
+                                     "They are left out unless this is on."));
+    leftLayout->addWidget(includeJudgedOut_);
     auto* reload = new QPushButton(tr("Reload labels"), left);
     leftLayout->addWidget(reload);
     status_ = new QLabel(left);
+    status_->setObjectName(QStringLiteral("analysisStatus"));
     status_->setWordWrap(true);
-    leftLayout->addWidget(status_);
+    status_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Long lists of left-out runs and outlier reasons scroll instead of growing the window.
+    auto* statusScroll = new QScrollArea(left);
+    statusScroll->setWidget(status_);
+    statusScroll->setWidgetResizable(true);
+    statusScroll->setFrameShape(QFrame::NoFrame);
+    statusScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    leftLayout->addWidget(statusScroll, 1);
+    left->setMinimumWidth(160);
     split->addWidget(left);
 
     tabs_ = new QTabWidget(split);
@@ -116,7 +155,9 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
         auto* bar = new QHBoxLayout;
         bar->addWidget(new QLabel(chooserLabel, page));
         chooser = new QComboBox(page);
-        chooser->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+        // Long run names elide in the box instead of widening the window.
+        chooser->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        chooser->setMinimumContentsLength(12);
         bar->addWidget(chooser);
         bar->addStretch(1);
         auto* fig = new QPushButton(tr("Save figure…"), page);
@@ -134,6 +175,8 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
         for (QStandardItemModel* m : models)
             body->addWidget(tableView(m, body));
         body->setStretchFactor(0, 3);
+        // The figure first: on a laptop the tables get what is left (they scroll).
+        body->setSizes(models.size() > 1 ? QList<int>{600, 150, 150} : QList<int>{600, 200});
         v->addWidget(body, 1);
         tabs_->addTab(page, title);
         connect(fig, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentFigure);
@@ -158,6 +201,7 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
             recompute();
     });
     connect(reload, &QPushButton::clicked, this, &AnalysisWorkspace::reloadLabels);
+    connect(includeJudgedOut_, &QCheckBox::toggled, this, &AnalysisWorkspace::recompute);
     // Editors save labels in bursts (temporary + rename): settle before re-reading.
     reloadTimer_.setSingleShot(true);
     reloadTimer_.setInterval(250);
@@ -264,12 +308,85 @@ void AnalysisWorkspace::recompute()
     for (const DatasetRun& r : dataset_.runs)
         if (names.contains(r.name))
             chosen.runs.push_back(r);
-    analysis_ = analyseDataset(chosen);
-    status_->setText(analysis_.warnings.isEmpty()
-                         ? tr("%1 runs analysed").arg(chosen.runs.size())
-                         : tr("%1 runs analysed\n%2").arg(chosen.runs.size()).arg(analysis_.warnings.join(QLatin1Char('\n'))));
+    AnalysisOptions options;
+    options.includeJudgedOut = includeJudgedOut_->isChecked();
+    analysis_ = analyseDataset(chosen, options);
+    QStringList lines{tr("%1 runs analysed").arg(chosen.runs.size() - std::size_t(analysis_.leftOut.size()))};
+    if (!analysis_.leftOut.isEmpty())
+        lines << tr("Left out (switch above to include them):") << analysis_.leftOut;
+    QStringList outliers;
+    for (const StiffnessRunResult& r : analysis_.stiffness)
+        if (r.outlier)
+            outliers << tr("%1: %2").arg(r.run, r.outlierReason);
+    if (!outliers.isEmpty())
+        lines << tr("Outliers:") << outliers;
+    if (!analysis_.warnings.isEmpty())
+        lines << analysis_.warnings;
+    status_->setText(lines.join(QLatin1Char('\n')));
+    markJudgedRuns();
     refreshViews();
     emit analysisUpdated();
+}
+
+void AnalysisWorkspace::setIncludeJudgedOut(bool on) { includeJudgedOut_->setChecked(on); }
+bool AnalysisWorkspace::includeJudgedOut() const { return includeJudgedOut_->isChecked(); }
+QString AnalysisWorkspace::statusText() const { return status_->text(); }
+
+void AnalysisWorkspace::markJudgedRuns()
+{
+    // The list says which runs the analysis leaves out and why, in the run's own row.
+    const QSignalBlocker block(runList_);
+    for (int i = 0; i < runList_->count(); ++i) {
+        QListWidgetItem* item = runList_->item(i);
+        const auto it = std::find_if(dataset_.runs.begin(), dataset_.runs.end(), [&](const DatasetRun& r) { return r.name == item->text(); });
+        const RunJudgement j = it == dataset_.runs.end() ? RunJudgement{} : judgeRun(it->run);
+        item->setToolTip(j.usable ? QString() : tr("left out by default: %1").arg(j.reason));
+        item->setForeground(j.usable ? palette().text() : QBrush(QColor(150, 150, 150)));
+        QFont f = item->font();
+        f.setItalic(!j.usable);
+        item->setFont(f);
+    }
+}
+
+QStringList AnalysisWorkspace::saveAllTables(const QString& dir)
+{
+    if (!QDir().mkpath(dir))
+        throw ExportError(dir, tr("cannot create the folder"));
+    QStringList written;
+    const std::pair<QString, FitTable> tables[] = {{QStringLiteral("stiffness_runs"), stiffnessRunsTable(analysis_)},
+                                                   {QStringLiteral("stiffness_pooled"), stiffnessPooledTable(analysis_)},
+                                                   {QStringLiteral("friction_runs"), frictionRunsTable(analysis_)},
+                                                   {QStringLiteral("friction_summary"), frictionSummaryTable(analysis_)},
+                                                   {QStringLiteral("validation"), validationTable(analysis_)}};
+    for (const auto& [name, table] : tables) {
+        for (const char* ext : {".csv", ".tex"}) {
+            const QString path = QDir(dir).filePath(name + QLatin1String(ext));
+            if (QLatin1String(ext) == QLatin1String(".csv"))
+                writeFitTableCsv(path, table);
+            else
+                writeFitTableLatex(path, table);
+            written << path;
+        }
+    }
+    return written;
+}
+
+QStringList AnalysisWorkspace::saveAllFigures(const QString& dir)
+{
+    if (!QDir().mkpath(dir))
+        throw ExportError(dir, tr("cannot create the folder"));
+    QStringList written;
+    const std::pair<QString, QCustomPlot*> plots[] = {{QStringLiteral("stiffness"), stiffnessPlot_},
+                                                      {QStringLiteral("friction_velocity"), frictionPlot_},
+                                                      {QStringLiteral("friction_phases"), phasesPlot_},
+                                                      {QStringLiteral("validation"), validationPlot_}};
+    for (const auto& [name, plot] : plots)
+        for (const char* ext : {".png", ".pdf"}) {
+            const QString path = QDir(dir).filePath(name + QLatin1String(ext));
+            saveFigure(plot, path);
+            written << path;
+        }
+    return written;
 }
 
 void AnalysisWorkspace::refreshViews()
@@ -304,7 +421,11 @@ void AnalysisWorkspace::refreshViews()
     showValidation();
 }
 
-void AnalysisWorkspace::showStiffness() { plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentText()); }
+void AnalysisWorkspace::showStiffness()
+{
+    plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentText());
+    legendBelow(stiffnessPlot_);
+}
 
 void AnalysisWorkspace::showFriction()
 {
@@ -318,6 +439,7 @@ void AnalysisWorkspace::showFriction()
         return;
     }
     plotFrictionVelocity(frictionPlot_, *run, *fit);
+    legendBelow(frictionPlot_);
     plotPhases(phasesPlot_, *run);
 }
 
@@ -327,6 +449,7 @@ void AnalysisWorkspace::showValidation()
     for (const ValidationResult& v : analysis_.validation) {
         if (v.run == name) {
             plotValidation(validationPlot_, v);
+            legendBelow(validationPlot_);
             return;
         }
     }

@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QCustomPlot;
 class QLabel;
@@ -34,6 +35,16 @@ public:
     // Only these runs take part (by name); an empty list means all.
     void setRuns(const QStringList& runNames);
     QStringList selectedRuns() const;
+
+    // Runs cut short (force limit, emergency stop, fault...) or without tissue contact take
+    // part only when this is on (the switch under the run list); off by default.
+    void setIncludeJudgedOut(bool on);
+    bool includeJudgedOut() const;
+    QString statusText() const;
+    // Every table (CSV and LaTeX) / figure (PNG and PDF) of the analysis into `dir`; returns
+    // the files written. Throws ExportError.
+    QStringList saveAllTables(const QString& dir);
+    QStringList saveAllFigures(const QString& dir);
 
     const SessionAnalysis& analysis() const { return analysis_; }
     const Dataset& dataset() const { return dataset_; }
@@ -73,6 +84,8 @@ private:
 
     QListWidget* runList_ = nullptr;
     QLabel* status_ = nullptr;
+    QCheckBox* includeJudgedOut_ = nullptr;
+    void markJudgedRuns();
     QTabWidget* tabs_ = nullptr;
     QComboBox* stiffnessGroup_ = nullptr;
     QComboBox* frictionRun_ = nullptr;

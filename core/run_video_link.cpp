@@ -1,0 +1,144 @@
+#include "run_video_link.h"
+
+#include "core/run_keys.h"
+#include "core/session.h"
+#include "core/tr.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <cmath>
+
+namespace nb {
+
+namespace {
+
+const QString kFileName = QStringLiteral("videos.json");
+
+QJsonObject readStore(const QString& path, QString* problem)
+{
+    QFile f(path);
+    if (!f.exists())
+        return {};
+    if (!f.open(QIODevice::ReadOnly)) {
+        if (problem)
+            *problem = nb::TrCore::tr("%1: cannot read (%2)").arg(path, f.errorString());
+        return {};
+    }
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &error);
+    if (!doc.isObject()) {
+        if (problem)
+            *problem = nb::TrCore::tr("%1: not a video link file (%2)").arg(path, error.errorString());
+        return {};
+    }
+    return doc.object();
+}
+
+}  // namespace
+
+QString syncMethodKey(SyncMethod m)
+{
+    switch (m) {
+    case SyncMethod::Manual: return QStringLiteral("manual");
+    case SyncMethod::EventMarks: return QStringLiteral("event_marks");
+    case SyncMethod::Automatic: return QStringLiteral("automatic");
+    case SyncMethod::None: break;
+    }
+    return {};
+}
+
+SyncMethod syncMethodFromKey(const QString& key)
+{
+    for (SyncMethod m : {SyncMethod::Manual, SyncMethod::EventMarks, SyncMethod::Automatic})
+        if (key == syncMethodKey(m))
+            return m;
+    return SyncMethod::None;
+}
+
+QString syncMethodName(SyncMethod m)
+{
+    switch (m) {
+    case SyncMethod::Manual: return nb::TrCore::tr("set by hand");
+    case SyncMethod::EventMarks: return nb::TrCore::tr("from marked events");
+    case SyncMethod::Automatic: return nb::TrCore::tr("automatic");
+    case SyncMethod::None: break;
+    }
+    return nb::TrCore::tr("not synchronised");
+}
+
+QString videoLinksPath(const QString& sessionDir) { return QDir(sessionDir).filePath(kFileName); }
+
+std::optional<RunVideoLink> readRunVideoLink(const QString& runPath, QString* problem)
+{
+    const QFileInfo run(runPath);
+    const QJsonObject store = readStore(videoLinksPath(run.absolutePath()), problem);
+    const QJsonValue v = store.value(QStringLiteral("runs")).toObject().value(run.fileName());
+    if (!v.isObject())
+        return std::nullopt;
+    const QJsonObject o = v.toObject();
+    RunVideoLink link;
+    const QString video = o.value(QStringLiteral("video")).toString();
+    if (!video.isEmpty())
+        link.video = QDir::cleanPath(QFileInfo(video).isAbsolute() ? video : run.absoluteDir().filePath(video));
+    link.mapping.offset_s = o.value(QStringLiteral("offset_s")).toDouble(0.0);
+    link.mapping.drift = o.value(QStringLiteral("drift")).toDouble(0.0);
+    if (!std::isfinite(link.mapping.offset_s) || !std::isfinite(link.mapping.drift))
+        link.mapping = {};
+    link.method = syncMethodFromKey(o.value(QStringLiteral("method")).toString());
+    if (o.value(QStringLiteral("confidence")).isDouble())
+        link.confidence = o.value(QStringLiteral("confidence")).toDouble();
+    return link;
+}
+
+void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>& link)
+{
+    const QFileInfo run(runPath);
+    const QString path = videoLinksPath(run.absolutePath());
+    QString problem;
+    QJsonObject store = readStore(path, &problem);
+    if (!problem.isEmpty())
+        throw SessionError(path, problem);
+    QJsonObject runs = store.value(QStringLiteral("runs")).toObject();
+    if (link) {
+        QJsonObject o;
+        if (!link->video.isEmpty()) {
+            const QString rel = run.absoluteDir().relativeFilePath(link->video);
+            o.insert(QStringLiteral("video"), rel.startsWith(QLatin1String("..")) ? QFileInfo(link->video).absoluteFilePath() : rel);
+        }
+        o.insert(QStringLiteral("offset_s"), link->mapping.offset_s);
+        o.insert(QStringLiteral("drift"), link->mapping.drift);
+        o.insert(QStringLiteral("method"), syncMethodKey(link->method));
+        if (link->confidence)
+            o.insert(QStringLiteral("confidence"), *link->confidence);
+        runs.insert(run.fileName(), o);
+    } else {
+        runs.remove(run.fileName());
+    }
+    store.insert(QStringLiteral("runs"), runs);
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly))
+        throw SessionError(path, nb::TrCore::tr("cannot write (%1)").arg(f.errorString()));
+    f.write(QJsonDocument(store).toJson());
+    if (!f.commit())
+        throw SessionError(path, nb::TrCore::tr("cannot write (%1)").arg(f.errorString()));
+}
+
+void applyRunVideoLink(Run& run, const QString& runPath, const RunVideoLink& link)
+{
+    if (!link.video.isEmpty()) {
+        const QString rel = QFileInfo(runPath).absoluteDir().relativeFilePath(link.video);
+        run.metadata.set(key::video_file, rel.startsWith(QLatin1String("..")) ? link.video : rel);
+    }
+    run.metadata.set(key::sync_offset_s, link.mapping.offset_s);
+    run.metadata.set(QStringLiteral("sync_drift"), link.mapping.drift);
+    if (link.method != SyncMethod::None)
+        run.metadata.set(key::sync_method, syncMethodKey(link.method));
+    if (link.confidence)
+        run.metadata.set(key::sync_confidence, *link.confidence);
+}
+
+}  // namespace nb

@@ -1,0 +1,42 @@
+#pragma once
+// The video a run was filmed on and how the two timelines meet, kept per run in the session
+// folder (videos.json beside session.json) so a restart, another workstation or an export
+// finds them again:
+//
+//   { "runs": { "run_002_sine.csv": { "video": "run_002_sine.mp4", "offset_s": 0.41,
+//        "drift": 1e-4, "method": "automatic", "confidence": 0.93 } } }
+//
+// The video is stored relative to the session folder when it lies inside it (the folder may
+// move), absolute otherwise.
+
+#include "core/run.h"
+#include "core/sync.h"
+
+#include <QString>
+#include <optional>
+
+namespace nb {
+
+enum class SyncMethod { None, Manual, EventMarks, Automatic };
+QString syncMethodKey(SyncMethod m);  // "", "manual", "event_marks", "automatic" (file and export values)
+SyncMethod syncMethodFromKey(const QString& key);
+QString syncMethodName(SyncMethod m);  // operator-facing (translated)
+
+struct RunVideoLink {
+    QString video;  // absolute path when read; empty: no video attached
+    TimelineMapping mapping;
+    SyncMethod method = SyncMethod::None;
+    std::optional<double> confidence;  // 0..1, from the automatic sync
+};
+
+QString videoLinksPath(const QString& sessionDir);
+// The link stored for `runPath` (in the videos.json of the run's folder); nullopt when none.
+// A missing or unreadable store reads as none (with `problem` saying why when it is unreadable).
+std::optional<RunVideoLink> readRunVideoLink(const QString& runPath, QString* problem = nullptr);
+// Stores (or, with nullopt, forgets) the link of `runPath`; written atomically. Throws SessionError.
+void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>& link);
+// Puts the link into the run's metadata as the exporters read it (video_file relative to the
+// run file when beside or below it, sync_offset_s, sync_drift, sync_method, sync_confidence).
+void applyRunVideoLink(Run& run, const QString& runPath, const RunVideoLink& link);
+
+}  // namespace nb

@@ -1,0 +1,288 @@
+#include "export_dialog.h"
+
+#include "widgets/analysis/analysis_workspace.h"
+
+#include "core/export/dataset_loader.h"
+#include "core/export/eaf_export.h"
+#include "core/export/export_error.h"
+#include "core/export/label_intervals.h"
+#include "core/export/run_csv_export.h"
+#include "core/export/session_hdf5.h"
+#include "core/run_video_link.h"
+
+#include <QCheckBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace nb {
+
+namespace {
+
+// The video an ELAN document links: the one attached in the window, else one named like the run.
+QString videoOf(const DatasetRun& r)
+{
+    if (r.sourcePath.isEmpty())
+        return {};
+    if (const auto link = readRunVideoLink(r.sourcePath); link && QFileInfo::exists(link->video))
+        return link->video;
+    const QFileInfo fi(r.sourcePath);
+    for (const char* ext : {"mp4", "avi", "mkv", "mov"}) {
+        const QString p = fi.dir().filePath(fi.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
+        if (QFileInfo::exists(p))
+            return p;
+    }
+    return {};
+}
+
+}  // namespace
+
+ExportDialog::ExportDialog(const QString& sessionDir, AnalysisWorkspace* analysis, QWidget* parent)
+    : QDialog(parent), sessionDir_(sessionDir), analysis_(analysis), cancel_(std::make_shared<std::atomic<bool>>(false))
+{
+    setObjectName(QStringLiteral("exportDialog"));
+    setWindowTitle(tr("Export session"));
+    target_ = new QLineEdit(QDir(sessionDir).filePath(QStringLiteral("export")), this);
+    target_->setObjectName(QStringLiteral("exportTarget"));
+    auto* browse = new QPushButton(tr("Choose…"), this);
+    connect(browse, &QPushButton::clicked, this, [this] {
+        const QString d = QFileDialog::getExistingDirectory(this, tr("Export into"), target_->text());
+        if (!d.isEmpty())
+            target_->setText(d);
+    });
+    auto* where = new QHBoxLayout;
+    where->addWidget(target_, 1);
+    where->addWidget(browse);
+
+    csv_ = new QCheckBox(tr("CSV per run, with JSON sidecar and label intervals"), this);
+    hdf5_ = new QCheckBox(tr("HDF5: the whole session in one file"), this);
+    eaf_ = new QCheckBox(tr("ELAN documents (.eaf) linking force and video"), this);
+    figures_ = new QCheckBox(tr("Analysis figures (PNG and PDF)"), this);
+    tables_ = new QCheckBox(tr("Analysis tables (CSV and LaTeX)"), this);
+    csv_->setObjectName(QStringLiteral("exportCsv"));
+    hdf5_->setObjectName(QStringLiteral("exportHdf5"));
+    eaf_->setObjectName(QStringLiteral("exportEaf"));
+    figures_->setObjectName(QStringLiteral("exportFigures"));
+    tables_->setObjectName(QStringLiteral("exportTables"));
+    figures_->setEnabled(analysis_);
+    tables_->setEnabled(analysis_);
+    setChoice({});
+
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1);
+    progress_->setValue(0);
+    status_ = new QLabel(this);
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    buttons_ = new QDialogButtonBox(this);
+    exportButton_ = buttons_->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
+    exportButton_->setObjectName(QStringLiteral("exportStart"));
+    cancelButton_ = buttons_->addButton(QDialogButtonBox::Cancel);
+    connect(exportButton_, &QPushButton::clicked, this, &ExportDialog::start);
+    connect(cancelButton_, &QPushButton::clicked, this, [this] {
+        if (isRunning())
+            cancel();
+        else
+            reject();
+    });
+
+    auto* form = new QFormLayout;
+    form->addRow(tr("Session"), new QLabel(QDir::toNativeSeparators(sessionDir), this));
+    form->addRow(tr("Into folder"), where);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    for (QCheckBox* b : {csv_, hdf5_, eaf_, figures_, tables_})
+        layout->addWidget(b);
+    layout->addWidget(progress_);
+    layout->addWidget(status_);
+    layout->addWidget(buttons_);
+    connect(&watcher_, &QFutureWatcher<Outcome>::finished, this, &ExportDialog::finish);
+    resize(640, sizeHint().height());
+}
+
+ExportDialog::~ExportDialog()
+{
+    cancel_->store(true);
+    watcher_.waitForFinished();
+}
+
+void ExportDialog::setChoice(const Choice& c)
+{
+    csv_->setChecked(c.csv);
+    hdf5_->setChecked(c.hdf5);
+    eaf_->setChecked(c.eaf);
+    figures_->setChecked(c.figures && analysis_);
+    tables_->setChecked(c.tables && analysis_);
+}
+
+ExportDialog::Choice ExportDialog::choice() const
+{
+    return {csv_->isChecked(), hdf5_->isChecked(), eaf_->isChecked(), figures_->isChecked(), tables_->isChecked()};
+}
+
+void ExportDialog::setTargetDir(const QString& dir) { target_->setText(dir); }
+QString ExportDialog::targetDir() const { return target_->text().trimmed(); }
+QString ExportDialog::hdf5Path() const
+{
+    return QDir(targetDir()).filePath(QDir(sessionDir_).dirName() + QStringLiteral(".h5"));
+}
+QString ExportDialog::resultText() const { return status_->text(); }
+
+void ExportDialog::start()
+{
+    if (isRunning())
+        return;
+    const Choice c = choice();
+    const QString target = targetDir();
+    if (target.isEmpty()) {
+        status_->setText(tr("Choose a folder to export into."));
+        return;
+    }
+    if (!QDir().mkpath(target)) {
+        status_->setText(tr("%1: cannot create the folder").arg(QDir::toNativeSeparators(target)));
+        return;
+    }
+    cancel_->store(false);
+    written_.clear();
+    exportButton_->setEnabled(false);
+    for (QCheckBox* b : {csv_, hdf5_, eaf_, figures_, tables_})
+        b->setEnabled(false);
+    progress_->setRange(0, 0);
+    status_->setText(tr("Exporting…"));
+    QPointer<QProgressBar> bar = progress_;  // made here: the worker only reads it
+    watcher_.setFuture(QtConcurrent::run([this, c, target, bar] { return run(c, target, bar); }));
+}
+
+void ExportDialog::cancel()
+{
+    cancel_->store(true);
+    status_->setText(tr("Cancelling…"));
+}
+
+// In a worker thread: only the core exporters, no widgets.
+ExportDialog::Outcome ExportDialog::run(const Choice& c, const QString& target, QPointer<QProgressBar> bar)
+{
+    Outcome out;
+    const auto cancel = cancel_;
+    const auto report = [bar](qint64 done, qint64 total) {
+        QMetaObject::invokeMethod(bar, [bar, done, total] {
+            if (bar) {
+                bar->setRange(0, int(total));
+                bar->setValue(int(done));
+            }
+        }, Qt::QueuedConnection);
+    };
+    try {
+        const LoadedDataset loaded = loadDataset(sessionDir_);
+        out.warnings = loaded.warnings;
+        const Dataset& d = loaded.dataset;
+        if (d.runs.empty()) {
+            out.ok = false;
+            out.error = tr("%1: no runs to export").arg(QDir::toNativeSeparators(sessionDir_));
+            return out;
+        }
+        const qint64 steps = qint64(d.runs.size()) * ((c.csv ? 1 : 0) + (c.eaf ? 1 : 0)) + (c.hdf5 ? qint64(d.runs.size()) : 0);
+        qint64 done = 0;
+        const QDir outDir(target);
+        const auto perRun = [&](const QString& sub, bool eaf) {
+            const QDir dir(outDir.filePath(sub));
+            QDir().mkpath(dir.path());
+            for (const DatasetRun& r : d.runs) {
+                const QString csv = dir.filePath(r.name + QStringLiteral(".csv"));
+                if (!writeRunCsv(csv, r, [&](qint64, qint64) { return !cancel->load(); }))
+                    return false;
+                out.written << csv << sidecarPath(csv);
+                if (eaf) {
+                    const QString path = dir.filePath(r.name + QStringLiteral(".eaf"));
+                    writeEaf(path, r, {csv, videoOf(r)});
+                    out.written << path;
+                } else {
+                    const QString intervals = dir.filePath(r.name + QStringLiteral(".intervals.csv"));
+                    writeLabelIntervalsCsv(intervals, labelIntervals(r.run, r.labels, frameClockFor(r.run)));
+                    out.written << intervals;
+                }
+                report(++done, steps);
+                if (cancel->load())
+                    return false;
+            }
+            return true;
+        };
+        if (c.csv && !perRun(QStringLiteral("csv"), false)) {
+            out.cancelled = true;
+            return out;
+        }
+        if (c.hdf5) {
+            const QString h5 = outDir.filePath(QDir(sessionDir_).dirName() + QStringLiteral(".h5"));
+            const qint64 base = done;
+            if (!writeSessionHdf5(h5, d, [&](qint64 k, qint64) {
+                    report(base + k, steps);
+                    return !cancel->load();
+                })) {
+                out.cancelled = true;
+                return out;
+            }
+            done = base + qint64(d.runs.size());
+            out.written << h5;
+        }
+        if (c.eaf && !perRun(QStringLiteral("eaf"), true)) {
+            out.cancelled = true;
+            return out;
+        }
+    } catch (const Error& e) {
+        out.ok = false;
+        out.error = e.message();
+    }
+    return out;
+}
+
+void ExportDialog::finish()
+{
+    Outcome out = watcher_.result();
+    const Choice c = choice();
+    // Figures and tables are drawn by widgets: here, in the window's thread, after the data.
+    if (out.ok && !out.cancelled && analysis_ && (c.figures || c.tables)) {
+        try {
+            const QString dir = QDir(targetDir()).filePath(QStringLiteral("analysis"));
+            if (c.tables)
+                out.written << analysis_->saveAllTables(dir);
+            if (c.figures)
+                out.written << analysis_->saveAllFigures(dir);
+        } catch (const Error& e) {
+            out.ok = false;
+            out.error = e.message();
+        }
+    }
+    written_ = out.written;
+    progress_->setRange(0, 1);
+    progress_->setValue(out.ok && !out.cancelled ? 1 : 0);
+    QString text;
+    if (out.cancelled)
+        text = tr("Cancelled: the files finished before (%1) are kept; none is half written.").arg(out.written.size());
+    else if (!out.ok)
+        text = tr("Export failed: %1").arg(out.error);
+    else
+        text = tr("Exported %n file(s) into %1", nullptr, int(out.written.size())).arg(QDir::toNativeSeparators(targetDir()));
+    if (!out.warnings.isEmpty())
+        text += QLatin1Char('\n') + out.warnings.join(QLatin1Char('\n'));
+    status_->setText(text);
+    exportButton_->setEnabled(true);
+    for (QCheckBox* b : {csv_, hdf5_, eaf_})
+        b->setEnabled(true);
+    figures_->setEnabled(analysis_);
+    tables_->setEnabled(analysis_);
+    cancelButton_->setText(tr("Close"));
+    emit exportFinished(out.ok && !out.cancelled);
+}
+
+}  // namespace nb
