@@ -268,7 +268,7 @@ int cmdDemo(const QStringList& args, Io io)
     int figures = 0;
     for (const StiffnessGroupResult& g : a.stiffnessGroups) {
         plotStiffness(&plot, a, g.group);
-        saveFigure(&plot, QDir(figDir).filePath(QStringLiteral("stiffness_%1.png").arg(g.group)));
+        saveJournalFigures(&plot, QDir(figDir).filePath(QStringLiteral("stiffness_%1.png").arg(g.group)));
         ++figures;
     }
     for (const FrictionRunResult& f : a.friction) {
@@ -276,14 +276,14 @@ int cmdDemo(const QStringList& args, Io io)
         if (run == d.runs.end())
             continue;
         plotFrictionVelocity(&plot, *run, f);
-        saveFigure(&plot, QDir(figDir).filePath(QStringLiteral("friction_velocity_%1.png").arg(f.run)));
+        saveJournalFigures(&plot, QDir(figDir).filePath(QStringLiteral("friction_velocity_%1.png").arg(f.run)));
         plotPhases(&plot, *run);
-        saveFigure(&plot, QDir(figDir).filePath(QStringLiteral("phases_%1.png").arg(f.run)));
+        saveJournalFigures(&plot, QDir(figDir).filePath(QStringLiteral("phases_%1.png").arg(f.run)));
         figures += 2;
     }
     for (const ValidationResult& v : a.validation) {
         plotValidation(&plot, v);
-        saveFigure(&plot, QDir(figDir).filePath(QStringLiteral("validation_%1.png").arg(v.run)));
+        saveJournalFigures(&plot, QDir(figDir).filePath(QStringLiteral("validation_%1.png").arg(v.run)));
         ++figures;
     }
     step(nb::TrCli::tr("wrote %1 figures").arg(figures));
@@ -293,7 +293,7 @@ int cmdDemo(const QStringList& args, Io io)
            << nb::TrCli::tr("  run CSVs + JSON sidecars:     %1").arg(csvDir) << '\n'
            << nb::TrCli::tr("  HDF5 (all runs):              %1").arg(h5) << '\n'
            << nb::TrCli::tr("  fit tables (CSV, LaTeX):      %1").arg(tablesDir) << '\n'
-           << nb::TrCli::tr("  figures (PNG):                %1").arg(figDir) << '\n'
+           << nb::TrCli::tr("  figures (PNG, PDF, SVG):      %1").arg(figDir) << '\n'
            << nb::TrCli::tr("  simulator ground truth:       %1").arg(root.filePath(QStringLiteral("truth"))) << '\n';
     for (const VideoReport& v : videos) {
         if (v.sync)

@@ -120,7 +120,8 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
         if (h.end <= h.start + 4)
             continue;
         const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
-        const double t0 = run.time_s[h.start], t1 = run.time_s[h.end - 1];
+        // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
+        const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)

@@ -2627,8 +2627,8 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <source>  figures (PNG):                %1</source>
-        <translation>  Abbildungen (PNG):            %1</translation>
+        <source>  figures (PNG, PDF, SVG):      %1</source>
+        <translation>  Abbildungen (PNG, PDF, SVG): %1</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -2618,7 +2618,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>  figures (PNG):                %1</source>
+        <source>  figures (PNG, PDF, SVG):      %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

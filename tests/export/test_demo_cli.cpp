@@ -135,6 +135,10 @@ private slots:
         for (const QString& png : pngs) {
             const QImage img(d.filePath(QStringLiteral("figures/") + png));
             QVERIFY2(!img.isNull() && img.width() >= 600, qPrintable(png));
+            // A journal takes vector figures: PDF and SVG beside every PNG.
+            const QString base = d.filePath(QStringLiteral("figures/") + QFileInfo(png).completeBaseName());
+            QVERIFY2(QFileInfo(base + QStringLiteral(".pdf")).size() > 0, qPrintable(png));
+            QVERIFY2(QFileInfo(base + QStringLiteral(".svg")).size() > 0, qPrintable(png));
         }
     }
 
