@@ -39,6 +39,8 @@ public:
                                 std::span<const double> force_N);
     // After a puncture, watch for the next one (a deeper structure) from the present force on.
     void continueAfterPuncture();
+    // How deep a drop must be, as a fraction of the rise since contact, to count as a puncture.
+    void setDropFraction(double fraction) { o_.dropFraction = fraction; }
     bool contacted() const { return contacted_; }
     bool punctured() const { return punctured_; }
     double airForce_N() const { return offset_; }

@@ -7,6 +7,10 @@
 
 namespace nb::devices {
 
+namespace {
+constexpr double kCapsuleDropFraction = 0.5;
+}
+
 SampleProcessor::SampleProcessor(double rateHz, bool hostPaced, std::shared_ptr<const GroundTruthSource> truth)
     : rate_(rateHz), hostPaced_(hostPaced), truth_(std::move(truth))
 {
@@ -38,6 +42,8 @@ void SampleProcessor::watchPunctures(bool on, LiveEventOptions options)
     punctures_ = 0;
     detector_.reset();
     if (on) {
+        laterDropFraction_ = options.dropFraction;
+        options.dropFraction = std::max(options.dropFraction, kCapsuleDropFraction);
         detector_.emplace(options);
         detectorT0_ = -1.0;
     }
@@ -140,6 +146,7 @@ void SampleProcessor::process(std::span<const VoltageSample> batch, const StageS
                 if (puncture) {
                     e.count = static_cast<std::uint64_t>(++punctures_);
                     detector_->continueAfterPuncture();
+                    detector_->setDropFraction(laterDropFraction_);
                 }
                 events.push_back(e);
             }

@@ -72,7 +72,10 @@ public:
     bool tripped() const { return tripped_; }
     void rearm() { tripped_ = false; }
 
-    // Live contact/puncture on a linear insertion; off by default (null detector).
+    // Live contact/puncture on a linear insertion; off by default (null detector). The first
+    // puncture must collapse the force by half its rise (a capsule gives way to the cutting
+    // level; a diamond tip's pre-puncture notch is a fifth); later ones, interior structures
+    // in tissue already cut, by `options.dropFraction`.
     void watchPunctures(bool on, LiveEventOptions options = {});
     int punctures() const { return punctures_; }
 
@@ -112,6 +115,7 @@ private:
     // Punctures.
     std::optional<LiveEventDetector> detector_;
     int punctures_ = 0;
+    double laterDropFraction_ = 0.2;
     double detectorT0_ = 0.0;
 };
 
