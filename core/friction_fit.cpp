@@ -1,4 +1,5 @@
 #include "friction_fit.h"
+#include "core/tr.h"
 
 #include "fit_error.h"
 #include "signal.h"
@@ -88,7 +89,7 @@ BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
     const std::size_t n = run.size();
     const std::size_t trim = std::size_t(std::max(0, options.trimSamples));
     if (n < 2 * trim + 50)
-        throw FitError(QCoreApplication::translate("nb::fit", "too few samples (%1) to find the zero-velocity band").arg(n));
+        throw FitError(nb::TrCore::tr("too few samples (%1) to find the zero-velocity band").arg(n));
     const int w = windowForDuration(run.time_s, options.smoothing_s);
     const std::vector<double> x = movingAverage(run.position_mm, w);
     std::vector<double> v = movingAverage(derivative(run.time_s, x), w);
@@ -102,7 +103,7 @@ BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
     std::sort(speeds.begin(), speeds.end());
     const double vmax = speeds[speeds.size() * 95 / 100];
     if (!(vmax > 0))
-        throw FitError(QCoreApplication::translate("nb::fit", "no motion: the zero-velocity band cannot be found"));
+        throw FitError(nb::TrCore::tr("no motion: the zero-velocity band cannot be found"));
     const double step = vmax / 40.0;
     const double mass = options.estimateMass ? 0.0 : options.mass_kg;
     auto force = [&](std::size_t i) { return f[i] - mass * a[i]; };
@@ -145,7 +146,7 @@ BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
     for (;;) {
         const auto [lp, ln] = lines();
         if (!lp || !ln)
-            throw FitError(QCoreApplication::translate("nb::fit", "too few sliding samples to find the zero-velocity band"));
+            throw FitError(nb::TrCore::tr("too few sliding samples to find the zero-velocity band"));
         bool any = false;
         for (int k = 0; k < 2; ++k) {
             const int g = k == 0 ? 1 : 3;
@@ -184,15 +185,15 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     FrictionOptions options = givenOptions;
     const std::size_t n = run.size();
     if (!(options.thickness_mm > 0.0) || !std::isfinite(options.thickness_mm))
-        throw FitError(QCoreApplication::translate("nb::fit", "the tissue thickness must be positive, got %1 mm").arg(options.thickness_mm));
+        throw FitError(nb::TrCore::tr("the tissue thickness must be positive, got %1 mm").arg(options.thickness_mm));
     if (!(options.band_m_s >= 0.0))
-        throw FitError(QCoreApplication::translate("nb::fit", "the zero-velocity band must not be negative"));
+        throw FitError(nb::TrCore::tr("the zero-velocity band must not be negative"));
     const std::size_t trim = std::size_t(std::max(0, options.trimSamples));
     if (n < 2 * trim + 20)
-        throw FitError(QCoreApplication::translate("nb::fit", "too few samples (%1) for a friction fit (%2 are trimmed at each end)").arg(n).arg(trim));
+        throw FitError(nb::TrCore::tr("too few samples (%1) for a friction fit (%2 are trimmed at each end)").arg(n).arg(trim));
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(run.position_mm[i]) || !std::isfinite(run.force_N[i]) || !std::isfinite(run.time_s[i]))
-            throw FitError(QCoreApplication::translate("nb::fit", "sample %1 is not a finite number").arg(i + 1));
+            throw FitError(nb::TrCore::tr("sample %1 is not a finite number").arg(i + 1));
 
     std::optional<BandEstimate> found;
     if (options.estimateBand) {
@@ -206,7 +207,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     const bool usePhases =
         qsizetype(n) == phases.size() && std::any_of(phases.begin(), phases.end(), [](const QString& p) { return !p.isEmpty(); });
     if (!phases.isEmpty() && phases.size() != qsizetype(n))
-        throw FitError(QCoreApplication::translate("nb::fit", "%1 phase names for %2 samples").arg(phases.size()).arg(n));
+        throw FitError(nb::TrCore::tr("%1 phase names for %2 samples").arg(phases.size()).arg(n));
 
     // The thesis's conditioning: smooth, differentiate, smooth again.
     const int w = windowForDuration(run.time_s, options.smoothing_s);
@@ -244,11 +245,11 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         (v[i] > 0.0 ? pos : neg) += 1;
     }
     if (pos == 0 && neg == 0)
-        throw FitError(usePhases ? QCoreApplication::translate("nb::fit", "no phase-c samples moving faster than the zero-velocity band")
-                                 : QCoreApplication::translate("nb::fit", "no motion: no sample moves faster than the zero-velocity band (%1 m/s)")
+        throw FitError(usePhases ? nb::TrCore::tr("no phase-c samples moving faster than the zero-velocity band")
+                                 : nb::TrCore::tr("no motion: no sample moves faster than the zero-velocity band (%1 m/s)")
                                        .arg(options.band_m_s));
     if (pos < 3 || neg < 3)
-        throw FitError(QCoreApplication::translate("nb::fit", "motion in one direction only (%1 samples moving in, %2 moving out)").arg(pos).arg(neg));
+        throw FitError(nb::TrCore::tr("motion in one direction only (%1 samples moving in, %2 moving out)").arg(pos).arg(neg));
 
     const int cols = options.estimateMass ? 5 : 4;
     const int off = options.estimateMass ? 1 : 0;
@@ -271,7 +272,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
     if (qr.rank() < cols)
-        throw FitError(QCoreApplication::translate("nb::fit", "the friction fit is singular (velocity does not vary within a direction)"));
+        throw FitError(nb::TrCore::tr("the friction fit is singular (velocity does not vary within a direction)"));
     const Eigen::VectorXd p = qr.solve(y);
     const Eigen::VectorXd res = y - A * p;
     Eigen::VectorXd se = Eigen::VectorXd::Zero(cols);
@@ -361,22 +362,22 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
             fit.notPhysicalValues << QString::fromLatin1(value);
     };
     if (fit.model.Cp_N < 0.0)
-        flag("Cp", QCoreApplication::translate("nb::fit", "Cp < 0: dynamic friction cannot push the needle along"));
+        flag("Cp", nb::TrCore::tr("Cp < 0: dynamic friction cannot push the needle along"));
     if (fit.model.Cn_N < 0.0)
-        flag("Cn", QCoreApplication::translate("nb::fit", "Cn < 0: dynamic friction cannot push the needle along"));
+        flag("Cn", nb::TrCore::tr("Cn < 0: dynamic friction cannot push the needle along"));
     if (fit.model.bp_Ns_per_m < 0.0)
-        flag("bp", QCoreApplication::translate("nb::fit", "bp < 0: damping cannot feed energy in"));
+        flag("bp", nb::TrCore::tr("bp < 0: damping cannot feed energy in"));
     if (fit.model.bn_Ns_per_m < 0.0)
-        flag("bn", QCoreApplication::translate("nb::fit", "bn < 0: damping cannot feed energy in"));
+        flag("bn", nb::TrCore::tr("bn < 0: damping cannot feed energy in"));
     if (fit.staticSource != QLatin1String("none")) {
         if (fit.model.Dp_N <= 0.0)
-            flag("Dp", QCoreApplication::translate("nb::fit", "Dp is not positive: the static limit in + motion has the wrong sign"));
+            flag("Dp", nb::TrCore::tr("Dp is not positive: the static limit in + motion has the wrong sign"));
         if (fit.model.Dn_N >= 0.0)
-            flag("Dn", QCoreApplication::translate("nb::fit", "Dn is not negative: the static limit in - motion has the wrong sign"));
+            flag("Dn", nb::TrCore::tr("Dn is not negative: the static limit in - motion has the wrong sign"));
         if (std::fabs(fit.model.Dp_N) < std::fabs(fit.model.Cp_N))
-            flag("Dp", QCoreApplication::translate("nb::fit", "|Dp| < |Cp|: static friction below dynamic friction"));
+            flag("Dp", nb::TrCore::tr("|Dp| < |Cp|: static friction below dynamic friction"));
         if (std::fabs(fit.model.Dn_N) < std::fabs(fit.model.Cn_N))
-            flag("Dn", QCoreApplication::translate("nb::fit", "|Dn| < |Cn|: static friction below dynamic friction"));
+            flag("Dn", nb::TrCore::tr("|Dn| < |Cn|: static friction below dynamic friction"));
     }
 
     const double L = options.thickness_mm / 1000.0;

@@ -1,4 +1,5 @@
 #include "recorder.h"
+#include "core/tr.h"
 
 #include "core/disk_space.h"
 #include "core/run_file.h"
@@ -59,7 +60,7 @@ QString Recorder::spaceWarning() const
 void Recorder::open(const QString& path, const Metadata& metadata, bool truthColumns)
 {
     if (running_.load())
-        throw RunFileError(path, 0, QCoreApplication::translate("nb::devices::Recorder", "a run is already being recorded"));
+        throw RunFileError(path, 0, nb::TrDevices::tr("a run is already being recorded"));
     QStringList columns{QStringLiteral("time_s"),   QStringLiteral("position_mm"), QStringLiteral("force_N"),
                         QStringLiteral("velocity_mm_s"), QStringLiteral("voltage_V"), QStringLiteral("seq")};
     QStringList text;
@@ -70,8 +71,7 @@ void Recorder::open(const QString& path, const Metadata& metadata, bool truthCol
     const QFileInfo target(path);
     const bool onDisk = !target.exists() || target.isFile();  // not /dev/null or a pipe
     if (const auto free = onDisk ? freeBytes(path) : std::nullopt; free && *free < kMinFreeBytesToRecord)
-        throw RunFileError(path, 0, QCoreApplication::translate("nb::devices::Recorder",
-                                                                "only %1 kB free on the disk; a recording needs at least %2 kB")
+        throw RunFileError(path, 0, nb::TrDevices::tr("only %1 kB free on the disk; a recording needs at least %2 kB")
                                         .arg(*free / 1024)
                                         .arg(kMinFreeBytesToRecord / 1024));
     impl_->writer.open(path, metadata, columns, text);  // throws before anything starts
@@ -165,8 +165,7 @@ void Recorder::watchSpace()
         std::lock_guard lock(mutex_);
         if (spaceWarning_.isEmpty()) {
             spaceWarningPending_ = true;
-            spaceWarning_ = QCoreApplication::translate("nb::devices::Recorder",
-                                                        "the disk holding %1 will be full in about %2 s (%3 kB free)")
+            spaceWarning_ = nb::TrDevices::tr("the disk holding %1 will be full in about %2 s (%3 kB free)")
                                 .arg(impl_->writer.path())
                                 .arg(std::max(0.0, left_s), 0, 'f', 0)
                                 .arg(*free / 1024);

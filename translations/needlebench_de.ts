@@ -15,19 +15,6 @@
     </message>
 </context>
 <context>
-    <name>export</name>
-    <message>
-        <location filename="../core/export/csv_text.cpp" line="+37"/>
-        <source>cannot write: no space left on the disk (%1 kB free)</source>
-        <translation>kann nicht schreiben: kein Platz mehr auf dem Datenträger (%1 kB frei)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>cannot write: %1</source>
-        <translation>kann nicht schreiben: %1</translation>
-    </message>
-</context>
-<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
         <location filename="../widgets/analysis/analysis_workspace.cpp" line="+118"/>
@@ -3931,6 +3918,12 @@ Befehle:
         <translation>zum Messwert aktives Label der Spur &apos;%1&apos;</translation>
     </message>
     <message>
+        <location filename="../core/export/csv_text.cpp" line="+37"/>
+        <source>cannot write: no space left on the disk (%1 kB free)</source>
+        <translation>kann nicht schreiben: kein Platz mehr auf dem Datenträger (%1 kB frei)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
@@ -4520,6 +4513,7 @@ Befehle:
     </message>
     <message>
         <location line="+3"/>
+        <location filename="../core/friction_fit.cpp" line="+196"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -4933,6 +4927,101 @@ Befehle:
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation>nicht schreibbar (%1)</translation>
+    </message>
+    <message>
+        <location filename="../core/friction_fit.cpp" line="-104"/>
+        <source>too few samples (%1) to find the zero-velocity band</source>
+        <translation>zu wenige Messwerte (%1), um das Nullgeschwindigkeitsband zu bestimmen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no motion: the zero-velocity band cannot be found</source>
+        <translation>keine Bewegung: das Nullgeschwindigkeitsband lässt sich nicht bestimmen</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>too few sliding samples to find the zero-velocity band</source>
+        <translation>zu wenige gleitende Messwerte, um das Nullgeschwindigkeitsband zu bestimmen</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>the tissue thickness must be positive, got %1 mm</source>
+        <translation>die Gewebedicke muss positiv sein, erhalten: %1 mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the zero-velocity band must not be negative</source>
+        <translation>das Nullgeschwindigkeitsband darf nicht negativ sein</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>too few samples (%1) for a friction fit (%2 are trimmed at each end)</source>
+        <translation>zu wenige Messwerte (%1) für einen Reibungsfit (an jedem Ende werden %2 abgeschnitten)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 phase names for %2 samples</source>
+        <translation>%1 Phasennamen für %2 Messwerte</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>no phase-c samples moving faster than the zero-velocity band</source>
+        <translation>keine Messwerte der Phase c schneller als das Nullgeschwindigkeitsband</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
+        <translation>keine Bewegung: kein Messwert ist schneller als das Nullgeschwindigkeitsband (%1 m/s)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>motion in one direction only (%1 samples moving in, %2 moving out)</source>
+        <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>the friction fit is singular (velocity does not vary within a direction)</source>
+        <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cn &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation>Cn &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bp &lt; 0: damping cannot feed energy in</source>
+        <translation>bp &lt; 0: Dämpfung kann keine Energie zuführen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bn &lt; 0: damping cannot feed energy in</source>
+        <translation>bn &lt; 0: Dämpfung kann keine Energie zuführen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
+        <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dn is not negative: the static limit in - motion has the wrong sign</source>
+        <translation>Dn ist nicht negativ: die Haftgrenze bei Bewegung in - hat das falsche Vorzeichen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dp| &lt; |Cp|: static friction below dynamic friction</source>
+        <translation>|Dp| &lt; |Cp|: Haftreibung unter der Gleitreibung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
+        <translation>|Dn| &lt; |Cn|: Haftreibung unter der Gleitreibung</translation>
     </message>
 </context>
 <context>
@@ -5714,6 +5803,21 @@ Befehle:
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation>aus den Paketen der Datei indiziert: wiederholte Bilder sind nicht als Duplikate markiert</translation>
     </message>
+    <message>
+        <location filename="../devices/recorder.cpp" line="+63"/>
+        <source>a run is already being recorded</source>
+        <translation>es wird bereits ein Lauf aufgezeichnet</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>only %1 kB free on the disk; a recording needs at least %2 kB</source>
+        <translation>nur %1 kB frei auf dem Datenträger; eine Aufzeichnung braucht mindestens %2 kB</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
+        <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrViews</name>
@@ -6154,135 +6258,6 @@ F = %1 x + %2 x²
         <location line="+156"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation>Kraftgrenze: %1 N &gt; %2 N bei %3 mm; Achse angehalten</translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::Recorder</name>
-    <message>
-        <location filename="../devices/recorder.cpp" line="+62"/>
-        <source>a run is already being recorded</source>
-        <translation>es wird bereits ein Lauf aufgezeichnet</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>only %1 kB free on the disk; a recording needs at least %2 kB</source>
-        <translation>nur %1 kB frei auf dem Datenträger; eine Aufzeichnung braucht mindestens %2 kB</translation>
-    </message>
-    <message>
-        <location line="+95"/>
-        <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
-        <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
-    </message>
-</context>
-<context>
-    <name>nb::fit</name>
-    <message>
-        <location filename="../core/friction_fit.cpp" line="+195"/>
-        <source>sample %1 is not a finite number</source>
-        <translation>Messwert %1 ist keine endliche Zahl</translation>
-    </message>
-    <message>
-        <location line="-8"/>
-        <source>the tissue thickness must be positive, got %1 mm</source>
-        <translation>die Gewebedicke muss positiv sein, erhalten: %1 mm</translation>
-    </message>
-    <message>
-        <location line="-96"/>
-        <source>too few samples (%1) to find the zero-velocity band</source>
-        <translation>zu wenige Messwerte (%1), um das Nullgeschwindigkeitsband zu bestimmen</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>no motion: the zero-velocity band cannot be found</source>
-        <translation>keine Bewegung: das Nullgeschwindigkeitsband lässt sich nicht bestimmen</translation>
-    </message>
-    <message>
-        <location line="+43"/>
-        <source>too few sliding samples to find the zero-velocity band</source>
-        <translation>zu wenige gleitende Messwerte, um das Nullgeschwindigkeitsband zu bestimmen</translation>
-    </message>
-    <message>
-        <location line="+41"/>
-        <source>the zero-velocity band must not be negative</source>
-        <translation>das Nullgeschwindigkeitsband darf nicht negativ sein</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>too few samples (%1) for a friction fit (%2 are trimmed at each end)</source>
-        <translation>zu wenige Messwerte (%1) für einen Reibungsfit (an jedem Ende werden %2 abgeschnitten)</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>%1 phase names for %2 samples</source>
-        <translation>%1 Phasennamen für %2 Messwerte</translation>
-    </message>
-    <message>
-        <location line="+38"/>
-        <source>no phase-c samples moving faster than the zero-velocity band</source>
-        <translation>keine Messwerte der Phase c schneller als das Nullgeschwindigkeitsband</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
-        <translation>keine Bewegung: kein Messwert ist schneller als das Nullgeschwindigkeitsband (%1 m/s)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>motion in one direction only (%1 samples moving in, %2 moving out)</source>
-        <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>the friction fit is singular (velocity does not vary within a direction)</source>
-        <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
-    </message>
-    <message>
-        <location line="+90"/>
-        <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
-        <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Cn &lt; 0: dynamic friction cannot push the needle along</source>
-        <translation>Cn &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bp &lt; 0: damping cannot feed energy in</source>
-        <translation>bp &lt; 0: Dämpfung kann keine Energie zuführen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bn &lt; 0: damping cannot feed energy in</source>
-        <translation>bn &lt; 0: Dämpfung kann keine Energie zuführen</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
-        <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Dn is not negative: the static limit in - motion has the wrong sign</source>
-        <translation>Dn ist nicht negativ: die Haftgrenze bei Bewegung in - hat das falsche Vorzeichen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>|Dp| &lt; |Cp|: static friction below dynamic friction</source>
-        <translation>|Dp| &lt; |Cp|: Haftreibung unter der Gleitreibung</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
-        <translation>|Dn| &lt; |Cn|: Haftreibung unter der Gleitreibung</translation>
-    </message>
-</context>
-<context>
-    <name>video</name>
-    <message>
-        <location filename="../video/video_error.cpp" line="+9"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
 </context>
 </TS>

@@ -15,19 +15,6 @@
     </message>
 </context>
 <context>
-    <name>export</name>
-    <message>
-        <location filename="../core/export/csv_text.cpp" line="+37"/>
-        <source>cannot write: no space left on the disk (%1 kB free)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>cannot write: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>nb::AnalysisWorkspace</name>
     <message>
         <location filename="../widgets/analysis/analysis_workspace.cpp" line="+118"/>
@@ -3853,6 +3840,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../core/export/csv_text.cpp" line="+37"/>
+        <source>cannot write: no space left on the disk (%1 kB free)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
@@ -4442,6 +4435,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
+        <location filename="../core/friction_fit.cpp" line="+196"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4854,6 +4848,101 @@ Commands:
         <location line="+54"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/friction_fit.cpp" line="-104"/>
+        <source>too few samples (%1) to find the zero-velocity band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no motion: the zero-velocity band cannot be found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>too few sliding samples to find the zero-velocity band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>the tissue thickness must be positive, got %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the zero-velocity band must not be negative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>too few samples (%1) for a friction fit (%2 are trimmed at each end)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 phase names for %2 samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>no phase-c samples moving faster than the zero-velocity band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>motion in one direction only (%1 samples moving in, %2 moving out)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>the friction fit is singular (velocity does not vary within a direction)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cn &lt; 0: dynamic friction cannot push the needle along</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bp &lt; 0: damping cannot feed energy in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bn &lt; 0: damping cannot feed energy in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dn is not negative: the static limit in - motion has the wrong sign</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dp| &lt; |Cp|: static friction below dynamic friction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5636,6 +5725,21 @@ Commands:
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../devices/recorder.cpp" line="+63"/>
+        <source>a run is already being recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>only %1 kB free on the disk; a recording needs at least %2 kB</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrViews</name>
@@ -6073,135 +6177,6 @@ F = %1 x + %2 x²
     <message>
         <location line="+156"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::devices::Recorder</name>
-    <message>
-        <location filename="../devices/recorder.cpp" line="+62"/>
-        <source>a run is already being recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>only %1 kB free on the disk; a recording needs at least %2 kB</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+95"/>
-        <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>nb::fit</name>
-    <message>
-        <location filename="../core/friction_fit.cpp" line="+195"/>
-        <source>sample %1 is not a finite number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-8"/>
-        <source>the tissue thickness must be positive, got %1 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-96"/>
-        <source>too few samples (%1) to find the zero-velocity band</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>no motion: the zero-velocity band cannot be found</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+43"/>
-        <source>too few sliding samples to find the zero-velocity band</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+41"/>
-        <source>the zero-velocity band must not be negative</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>too few samples (%1) for a friction fit (%2 are trimmed at each end)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>%1 phase names for %2 samples</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+38"/>
-        <source>no phase-c samples moving faster than the zero-velocity band</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>motion in one direction only (%1 samples moving in, %2 moving out)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>the friction fit is singular (velocity does not vary within a direction)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+90"/>
-        <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Cn &lt; 0: dynamic friction cannot push the needle along</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bp &lt; 0: damping cannot feed energy in</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bn &lt; 0: damping cannot feed energy in</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Dn is not negative: the static limit in - motion has the wrong sign</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>|Dp| &lt; |Cp|: static friction below dynamic friction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>video</name>
-    <message>
-        <location filename="../video/video_error.cpp" line="+9"/>
-        <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

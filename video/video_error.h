@@ -1,21 +1,14 @@
 #pragma once
 // A video that cannot be opened or read: names the file and what is wrong.
 
-#include <QString>
-#include <stdexcept>
+#include "core/error.h"
 
 namespace nb::video {
 
-class VideoError : public std::runtime_error {
+class VideoError : public Error {
 public:
-    VideoError(QString file, QString reason);
-    const QString& file() const { return file_; }
-    const QString& reason() const { return reason_; }
-    QString message() const;
-
-private:
-    QString file_;
-    QString reason_;
+    VideoError(QString file, QString reason) : Error(std::move(file), std::move(reason)) {}
+    const QString& file() const { return subject(); }
 };
 
 }  // namespace nb::video

@@ -34,9 +34,9 @@ QString writeFailure(const QFileDevice& file, const QString& path)
     // QSaveFile reports a failed flush at commit as "Unknown error": say what it usually is.
     const auto free = freeBytes(path);
     if (free && *free < 64 * 1024)
-        return QCoreApplication::translate("export", "cannot write: no space left on the disk (%1 kB free)").arg(*free / 1024);
+        return nb::TrCore::tr("cannot write: no space left on the disk (%1 kB free)").arg(*free / 1024);
     const QString why = file.errorString();
-    return QCoreApplication::translate("export", "cannot write: %1")
+    return nb::TrCore::tr("cannot write: %1")
         .arg(why.isEmpty() || why == QLatin1String("Unknown error") ? QString::fromLocal8Bit(std::strerror(errno)) : why);
 }
 
