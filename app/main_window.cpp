@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "core/run_file.h"
 #include "core/run_keys.h"
 
 #include "translation.h"
@@ -618,10 +619,16 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
 
 void MainWindow::markDetectedEvents()
 {
+    // The run as recorded (every sample, on the run's clock), not the plots' display buffers.
     Run run;
-    run.time_s = plots_->times();
-    run.position_mm = plots_->positions();
-    run.force_N = plots_->forces();
+    try {
+        run = readRunFile(lastRunPath_).run;
+    } catch (const RunFileError& e) {
+        showMessage(tr("Could not read the run back to mark its events: %1").arg(e.message()), true);
+        return;
+    }
+    if (run.size() == 0)
+        return;
     try {
         const InsertionEvents events = detectEvents(run);
         // Only a puncture that stands out from the run is marked (the start of a move gives

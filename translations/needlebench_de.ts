@@ -1237,7 +1237,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+62"/>
+        <location filename="../app/main_window.cpp" line="+63"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1564,27 +1564,32 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+22"/>
+        <source>Could not read the run back to mark its events: %1</source>
+        <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-85"/>
-        <location line="+61"/>
+        <location line="-91"/>
+        <location line="+67"/>
         <location line="+2"/>
         <source>contact</source>
         <translation>Kontakt</translation>
     </message>
     <message>
-        <location line="-557"/>
+        <location line="-563"/>
         <source>Revie&amp;w</source>
         <translation>Sich&amp;tung</translation>
     </message>
     <message>
         <location line="+494"/>
-        <location line="+62"/>
+        <location line="+68"/>
         <location line="+2"/>
         <source>puncture</source>
         <translation>Durchstich</translation>
@@ -1595,7 +1600,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-385"/>
+        <location line="-391"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -1236,7 +1236,7 @@ or without contact</source>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+62"/>
+        <location filename="../app/main_window.cpp" line="+63"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1562,26 +1562,31 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+22"/>
+        <source>Could not read the run back to mark its events: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-85"/>
-        <location line="+61"/>
+        <location line="-91"/>
+        <location line="+67"/>
         <location line="+2"/>
         <source>contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-557"/>
+        <location line="-563"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+494"/>
-        <location line="+62"/>
+        <location line="+68"/>
         <location line="+2"/>
         <source>puncture</source>
         <translation type="unfinished"></translation>
@@ -1592,7 +1597,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-385"/>
+        <location line="-391"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
