@@ -337,6 +337,7 @@ bool MainWindow::openSession(const QString& dir)
     }
     if (const auto cal = session_->activeCalibration())
         engine_->setCalibration(cal->fit.slope_V_per_g, cal->name);
+    restoreSimulatedRig();
     panel_->setSessionOpen(true);
     sessionView_->setSession(&*session_);
     analysis_->openSession(session_->dir());

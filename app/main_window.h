@@ -99,6 +99,8 @@ public:
     bool switchDevices(const devices::DeviceSpec& spec);
     // Devices ▸ Simulated rig…: the dialog, then the engine rebuilt on the chosen rig.
     void chooseSimulatedRig();
+    // The simulated rig kept with the open session, if it differs from the one running.
+    void restoreSimulatedRig();
     // Whether the stage moves or a run records now (Esc is then the emergency stop).
     bool motionOrRecording() const;
     // The emergency stop, from the panel button or Esc anywhere.

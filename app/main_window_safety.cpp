@@ -172,6 +172,24 @@ void MainWindow::zeroOrInsist()
     }
 }
 
+void MainWindow::restoreSimulatedRig()
+{
+    const QJsonObject kept = session_ ? session_->simulatedRig() : QJsonObject();
+    const std::optional<devices::SimulatedRigSpec> rig = devices::simulatedRigFromJson(kept);
+    if (kept.isEmpty() || !rig || engine_->status().recording)
+        return;
+    devices::DeviceSpec spec = currentSpec();
+    const double rate = kept.value(QStringLiteral("rate_hz")).toDouble(options_.rateHz);
+    const bool same = devices::toJson(spec.simulated) == devices::toJson(*rig) && rate == options_.rateHz;
+    if (same || (spec.daq != QLatin1String("sim") && spec.stage != QLatin1String("sim")))
+        return;
+    spec.simulated = *rig;
+    if (rate >= 100.0 && rate <= 10000.0)
+        options_.rateHz = rate;
+    if (switchDevices(spec))
+        showMessage(tr("Simulated rig of this session: %1, seed %2").arg(rig->tissue).arg(rig->seed));
+}
+
 void MainWindow::chooseSimulatedRig()
 {
     if (refused(Control::ChangeSetup))
@@ -186,6 +204,16 @@ void MainWindow::chooseSimulatedRig()
         QSettings settings;
         devices::saveSpec(settings, spec);
         settings.setValue(QStringLiteral("sim/rateHz"), options_.rateHz);
+    }
+    if (session_) {
+        // Kept with the session, so that reopening it runs on the same specimen.
+        QJsonObject kept = devices::toJson(spec.simulated);
+        kept.insert(QStringLiteral("rate_hz"), options_.rateHz);
+        try {
+            session_->setSimulatedRig(kept);
+        } catch (const SessionError& e) {
+            showMessage(e.message(), true);
+        }
     }
     if (switchDevices(spec))
         showMessage(tr("Simulated rig: %1, seed %2, %3 Hz")

@@ -248,13 +248,19 @@ Session Session::open(const QString& dir)
     s.info_.notes = text("notes");
     s.info_.created = QDateTime::fromString(o[QStringLiteral("created")].toString(), Qt::ISODate);
     s.activeCalibration_ = o[QStringLiteral("active_calibration")].toString();
+    s.simulatedRig_ = o[QStringLiteral("simulated_rig")].toObject();
     return s;
+}
+
+void Session::setSimulatedRig(const QJsonObject& settings)
+{
+    simulatedRig_ = settings;
+    save();
 }
 
 void Session::save() const
 {
-    writeJson(QDir(dir_).filePath(kSessionFile),
-              QJsonObject{{QStringLiteral("organ"), info_.organ},
+    QJsonObject o{{QStringLiteral("organ"), info_.organ},
                           {QStringLiteral("specimen"), info_.specimen},
                           {QStringLiteral("tip"), info_.tip},
                           {QStringLiteral("thickness_mm"), info_.thickness_mm},
@@ -262,7 +268,10 @@ void Session::save() const
                           {QStringLiteral("protocol"), info_.protocol},
                           {QStringLiteral("notes"), info_.notes},
                           {QStringLiteral("created"), info_.created.toString(Qt::ISODate)},
-                          {QStringLiteral("active_calibration"), activeCalibration_}});
+                          {QStringLiteral("active_calibration"), activeCalibration_}};
+    if (!simulatedRig_.isEmpty())
+        o.insert(QStringLiteral("simulated_rig"), simulatedRig_);
+    writeJson(QDir(dir_).filePath(kSessionFile), o);
 }
 
 void Session::setInfo(const SessionInfo& info)

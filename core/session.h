@@ -17,6 +17,7 @@
 #include "core/run.h"
 
 #include <QDateTime>
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
 #include <optional>
@@ -117,12 +118,17 @@ public:
     std::vector<StoredCalibration> calibrations() const;
     std::optional<StoredCalibration> activeCalibration() const;
     void setActiveCalibration(const QString& name);
+    // The simulated rig's settings the session runs on (tissue, tip, seed, rate), as the device
+    // chooser writes them; empty when none were chosen. Saved in session.json.
+    const QJsonObject& simulatedRig() const { return simulatedRig_; }
+    void setSimulatedRig(const QJsonObject& settings);  // saves
 
 private:
     void save() const;
     QString dir_;
     SessionInfo info_;
     QString activeCalibration_;
+    QJsonObject simulatedRig_;
 };
 
 }  // namespace nb

@@ -71,6 +71,31 @@ QString checkStageSpec(const QString& spec)
     return nb::TrDevices::tr("unknown stage '%1' (sim | zaber:PORT)").arg(spec);
 }
 
+QJsonObject toJson(const SimulatedRigSpec& spec)
+{
+    return {{QStringLiteral("tissue"), spec.tissue},
+            {QStringLiteral("tip"), spec.tip},
+            {QStringLiteral("setup"), spec.setup},
+            {QStringLiteral("seed"), QString::number(spec.seed)}};
+}
+
+std::optional<SimulatedRigSpec> simulatedRigFromJson(const QJsonObject& o)
+{
+    SimulatedRigSpec spec;
+    spec.tissue = o.value(QStringLiteral("tissue")).toString(spec.tissue);
+    spec.tip = o.value(QStringLiteral("tip")).toString();
+    spec.setup = o.value(QStringLiteral("setup")).toString();
+    bool ok = true;
+    const QJsonValue seed = o.value(QStringLiteral("seed"));
+    if (seed.isString())
+        spec.seed = seed.toString().toULongLong(&ok);
+    else if (seed.isDouble() && seed.toDouble() >= 0)
+        spec.seed = quint64(seed.toDouble());
+    if (!ok || !checkSimulatedRig(spec).isEmpty())
+        return std::nullopt;
+    return spec;
+}
+
 DeviceSpec specFromSettings(const QSettings& s)
 {
     DeviceSpec d;

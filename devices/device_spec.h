@@ -5,6 +5,7 @@
 
 #include "devices/device_set.h"
 
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
 #include <optional>
@@ -59,6 +60,9 @@ std::optional<double> suggestedSineCentre_mm(const DeviceSpec& spec);
 
 // Empty when the simulated rig's settings are valid, else what is wrong (for the user).
 QString checkSimulatedRig(const SimulatedRigSpec& spec);
+// As kept in a session: {tissue, tip, setup, seed}; nullopt for an object that is not a valid one.
+QJsonObject toJson(const SimulatedRigSpec& spec);
+std::optional<SimulatedRigSpec> simulatedRigFromJson(const QJsonObject& object);
 
 struct ConnectedDevice {
     QString kind;         // "daq" | "serial"

@@ -1349,7 +1349,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Position nicht genullt: %1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
+        <source>Simulated rig of this session: %1, seed %2</source>
+        <translation>Simulierter Versuchsstand dieser Sitzung: %1, Seed %2</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Simulated rig: %1, seed %2, %3 Hz</source>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
@@ -1494,7 +1499,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzung öffnen</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>NeedleBench – %1</source>
         <translation>NeedleBench – %1</translation>
     </message>
@@ -1583,12 +1588,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Kontakt</translation>
     </message>
     <message>
-        <location line="-563"/>
+        <location line="-564"/>
         <source>Revie&amp;w</source>
         <translation>Sich&amp;tung</translation>
     </message>
     <message>
-        <location line="+494"/>
+        <location line="+495"/>
         <location line="+68"/>
         <location line="+2"/>
         <source>puncture</source>
@@ -1600,7 +1605,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-391"/>
+        <location line="-392"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -5062,7 +5067,7 @@ Befehle:
         <translation>unbekannte Achse &apos;%1&apos; (sim | zaber:PORT)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+63"/>
         <source>simulated rig</source>
         <translation>simulierter Versuchsstand</translation>
     </message>

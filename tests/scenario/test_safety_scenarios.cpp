@@ -424,13 +424,14 @@ private slots:
     void simulatedRigChosenInTheWindowIsRecorded()
     {
         QTemporaryDir tmp;
+        QString chosen;
+        {
         std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
         nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
         const nb::devices::AcquisitionEngine* before = w.engine();
-        QString chosen;
         QTimer::singleShot(0, this, [&] {
             if (!waitFor([] { return QApplication::activeModalWidget() != nullptr; }, 5000))
                 return;
@@ -453,6 +454,14 @@ private slots:
         const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
         QCOMPARE(r.run.meta(QStringLiteral("sim_tissue")).value_or(QString()), chosen);
         QCOMPARE(r.run.meta(QStringLiteral("sim_seed")).value_or(QString()), QStringLiteral("7"));
+        }
+        // The session keeps the choice: reopened, it runs on the same simulated specimen.
+        std::shared_ptr<nb::devices::sim::SimulatedRig> fresh;
+        nb::MainWindow again(options(tmp.filePath(QStringLiteral("s")), true, &fresh));
+        again.show();
+        QTRY_VERIFY_WITH_TIMEOUT(again.controlPanel()->interlockState().devicesRunning, 20000);
+        QVERIFY2(again.engine()->deviceDescription().contains(chosen), qPrintable(again.engine()->deviceDescription()));
+        QVERIFY2(again.engine()->deviceDescription().contains(QStringLiteral("seed 7")), qPrintable(again.engine()->deviceDescription()));
     }
 
     void sineWithDefaultsTouchesTissue()
