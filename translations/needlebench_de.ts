@@ -1244,7 +1244,7 @@ oder ohne Kontakt einbeziehen</translation>
     <message>
         <location line="+15"/>
         <source>&amp;Record</source>
-        <translation>Auf&amp;nahme</translation>
+        <translation>Aufnah&amp;me</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1590,7 +1590,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="-564"/>
         <source>Revie&amp;w</source>
-        <translation>Sich&amp;tung</translation>
+        <translation>Sic&amp;htung</translation>
     </message>
     <message>
         <location line="+495"/>

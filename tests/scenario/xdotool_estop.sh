@@ -56,7 +56,7 @@ if [ "${1:-}" = "--inner" ]; then
   xdotool windowfocus --sync "$win" || true   # no window manager gives the focus back
   key alt+e                      # Enable stage: the deliberate reset of the latch
   sleep 0.5
-  key alt+z                      # Zero again (enabling lost it): the needle is in tissue, so it asks
+  if [ "$NB_LANG" = de ]; then key alt+n; else key alt+z; fi         # Zero again (enabling lost it): in tissue, so it asks
   sleep 0.5
   if [ "$NB_LANG" = de ]; then key alt+a alt+t; else key alt+a; fi   # "Zero anyway"
   xdotool windowfocus --sync "$win" || true
