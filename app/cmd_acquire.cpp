@@ -142,22 +142,9 @@ int cmdAcquire(const QStringList& args, Io io)
     // A signal stops the stage and closes the run as "interrupted"; a second one (or one
     // before the run started) does not wait.
     InterruptWatcher interrupts;
-    int received = 0;
-    QObject::connect(&interrupts, &InterruptWatcher::interrupted, [&](int signo) {
-        ++received;
-        io.err << "needlebench acquire: "
-               << nb::TrCli::tr("%1 received: stopping the stage and closing the run").arg(InterruptWatcher::signalName(signo))
-               << '\n';
-        io.err.flush();
-    });
+    interrupts.announceOn(io.err, QStringLiteral("acquire"));
     devices::RunOnceOptions options;
-    options.interruption = [&] {
-        devices::RunOnceOptions::Interruption i;
-        i.count = received;
-        if (received)
-            i.footer.set(QStringLiteral("signal"), InterruptWatcher::signalName(interrupts.signalNumber()));
-        return i;
-    };
+    options.interruption = [&] { return interrupts.interruption(); };
     const devices::RunOnceResult run = devices::runOnce(engine, plan, options);
     const std::optional<devices::RunSummary>& summary = run.summary;
     if (!summary) {

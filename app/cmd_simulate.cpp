@@ -253,21 +253,8 @@ int cmdSimulate(const QStringList& args, Io io)
     // A signal stops the stage and closes the run as "interrupted"; a second one (or one
     // before the run started) does not wait.
     InterruptWatcher interrupts;
-    int received = 0;
-    QObject::connect(&interrupts, &InterruptWatcher::interrupted, [&](int signo) {
-        ++received;
-        io.err << "needlebench simulate: "
-               << nb::TrCli::tr("%1 received: stopping the stage and closing the run").arg(InterruptWatcher::signalName(signo))
-               << '\n';
-        io.err.flush();
-    });
-    run.interruption = [&] {
-        devices::RunOnceOptions::Interruption i;
-        i.count = received;
-        if (received)
-            i.footer.set(QStringLiteral("signal"), InterruptWatcher::signalName(interrupts.signalNumber()));
-        return i;
-    };
+    interrupts.announceOn(io.err, QStringLiteral("simulate"));
+    run.interruption = [&] { return interrupts.interruption(); };
     const SimulatedRunResult r = simulateRun(s, run);
     const int signalled = interrupts.signalNumber() ? 128 + interrupts.signalNumber() : 0;
     if (!r.summary) {

@@ -1,5 +1,8 @@
 #include "interrupt_watcher.h"
 
+#include <QTextStream>
+#include "core/tr.h"
+
 #include <QSocketNotifier>
 #include <array>
 #include <cerrno>
@@ -85,9 +88,28 @@ void InterruptWatcher::readPipe()
         for (ssize_t i = 0; i < n; ++i) {
             if (!first_)
                 first_ = bytes[i];
+            ++count_;
             emit interrupted(bytes[i]);
         }
     }
+}
+
+devices::RunOnceOptions::Interruption InterruptWatcher::interruption() const
+{
+    devices::RunOnceOptions::Interruption i;
+    i.count = count_;
+    if (count_)
+        i.footer.set(QStringLiteral("signal"), signalName(first_));
+    return i;
+}
+
+void InterruptWatcher::announceOn(QTextStream& err, const QString& command)
+{
+    connect(this, &InterruptWatcher::interrupted, this, [&err, command](int signo) {
+        err << "needlebench " << command << ": "
+            << nb::TrCli::tr("%1 received: stopping the stage and closing the run").arg(signalName(signo)) << '\n';
+        err.flush();
+    });
 }
 
 }  // namespace nb

@@ -4,10 +4,13 @@
 // handler only writes the signal number to a pipe (async-signal-safe); a QSocketNotifier
 // turns that into interrupted() on the thread that owns the watcher.
 
+#include "devices/run_once.h"
+
 #include <QObject>
 #include <QString>
 
 class QSocketNotifier;
+class QTextStream;
 
 namespace nb {
 
@@ -23,8 +26,14 @@ public:
     // exists: for start-up, before the application object. False when no pipe could be made.
     static bool catchEarly();
 
-    // The first signal received (0 if none).
+    // The first signal received (0 if none), and how many have come.
     int signalNumber() const { return first_; }
+    int count() const { return count_; }
+    // Hands the signals to a headless run (devices/run_once.h): the first ends the run as
+    // `interrupted` with `signal: NAME` in its footer, a second does not wait. Each one is
+    // told on `err` as `needlebench COMMAND: SIGTERM received: ...`.
+    devices::RunOnceOptions::Interruption interruption() const;
+    void announceOn(QTextStream& err, const QString& command);
     // "SIGTERM", "SIGINT", "SIGHUP", else "signal N".
     static QString signalName(int signo);
 
@@ -35,6 +44,7 @@ private:
     void readPipe();
     QSocketNotifier* notifier_ = nullptr;
     int first_ = 0;
+    int count_ = 0;
 };
 
 }  // namespace nb

@@ -2322,14 +2322,13 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <location filename="../app/cmd_simulate.cpp" line="+90"/>
+        <location filename="../app/interrupt_watcher.cpp" line="+110"/>
         <source>%1 received: stopping the stage and closing the run</source>
         <translation>%1 empfangen: Verfahrtisch wird gestoppt und der Lauf abgeschlossen</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <location filename="../app/cmd_simulate.cpp" line="+22"/>
+        <location filename="../app/cmd_acquire.cpp" line="+27"/>
+        <location filename="../app/cmd_simulate.cpp" line="+99"/>
         <source>recording failed: %1; the run file keeps %2 whole rows</source>
         <translation>Aufzeichnung fehlgeschlagen: %1; die Laufdatei behält %2 vollständige Zeilen</translation>
     </message>
@@ -3007,7 +3006,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-251"/>
+        <location filename="../app/cmd_simulate.cpp" line="-238"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>

@@ -2319,14 +2319,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
-        <location filename="../app/cmd_simulate.cpp" line="+90"/>
+        <location filename="../app/interrupt_watcher.cpp" line="+110"/>
         <source>%1 received: stopping the stage and closing the run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
-        <location filename="../app/cmd_simulate.cpp" line="+22"/>
+        <location filename="../app/cmd_acquire.cpp" line="+27"/>
+        <location filename="../app/cmd_simulate.cpp" line="+99"/>
         <source>recording failed: %1; the run file keeps %2 whole rows</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2972,7 +2971,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-251"/>
+        <location filename="../app/cmd_simulate.cpp" line="-238"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
