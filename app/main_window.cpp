@@ -138,13 +138,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     if (options_.persistSettings) {
         restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
         restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
-        if (settings.contains(QStringLiteral("run/forceLimit_N")))
-            panel_->setForceLimit(settings.value(QStringLiteral("run/forceLimit_N")).toDouble());
-        for (QDoubleSpinBox* box : panel_->findChildren<QDoubleSpinBox*>()) {
-            const QString key = QStringLiteral("motion/") + box->objectName();
-            if (box->objectName() != QLatin1String("forceLimit") && settings.contains(key))
-                box->setValue(settings.value(key).toDouble());
-        }
+        panel_->restoreSettings(settings);
     } else {
         resize(1400, 860);
     }
@@ -674,10 +668,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         QSettings settings;
         settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
         settings.setValue(QStringLiteral("window/state"), saveState());
-        settings.setValue(QStringLiteral("run/forceLimit_N"), panel_->forceLimit());
-        for (QDoubleSpinBox* box : panel_->findChildren<QDoubleSpinBox*>())
-            if (box->objectName() != QLatin1String("forceLimit"))
-                settings.setValue(QStringLiteral("motion/") + box->objectName(), box->value());
+        panel_->saveSettings(settings);
     }
     QMainWindow::closeEvent(event);
 }

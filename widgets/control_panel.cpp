@@ -1,5 +1,7 @@
 #include "control_panel.h"
 
+#include <QSettings>
+
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -281,6 +283,25 @@ QString ControlPanel::motionName() const
 
 double ControlPanel::withdrawVelocity() const { return velocity_->value(); }
 double ControlPanel::withdrawForceLimit() const { return withdrawLimit_->value(); }
+
+void ControlPanel::saveSettings(QSettings& settings) const
+{
+    settings.setValue(QStringLiteral("run/forceLimit_N"), forceLimit());
+    for (const QDoubleSpinBox* box : findChildren<QDoubleSpinBox*>())
+        if (box->objectName() != QLatin1String("forceLimit") && !box->objectName().isEmpty())
+            settings.setValue(QStringLiteral("motion/") + box->objectName(), box->value());
+}
+
+void ControlPanel::restoreSettings(const QSettings& settings)
+{
+    if (settings.contains(QStringLiteral("run/forceLimit_N")))
+        setForceLimit(settings.value(QStringLiteral("run/forceLimit_N")).toDouble());
+    for (QDoubleSpinBox* box : findChildren<QDoubleSpinBox*>()) {
+        const QString key = QStringLiteral("motion/") + box->objectName();
+        if (box->objectName() != QLatin1String("forceLimit") && !box->objectName().isEmpty() && settings.contains(key))
+            box->setValue(settings.value(key).toDouble());
+    }
+}
 void ControlPanel::setWithdrawForceLimit(double newtons) { withdrawLimit_->setValue(newtons); }
 double ControlPanel::sineCentre() const { return centre_->value(); }
 void ControlPanel::setSineCentre(double mm) { centre_->setValue(mm); }

@@ -22,6 +22,8 @@ class QRadioButton;
 class QSpinBox;
 class QStackedWidget;
 
+class QSettings;
+
 namespace nb {
 
 class ControlPanel : public QWidget {
@@ -35,6 +37,10 @@ public:
     double withdrawVelocity() const;
     double forceLimit() const;
     void setForceLimit(double newtons);
+    // The operator's fields kept between sessions: the force limit under run/forceLimit_N, the
+    // motion and jog fields under motion/NAME. The panel knows its fields; callers don't.
+    void saveSettings(QSettings& settings) const;
+    void restoreSettings(const QSettings& settings);
     double withdrawForceLimit() const;
     void setWithdrawForceLimit(double newtons);
     // The sine's centre depth (where the run moves first, unrecorded).
