@@ -4,6 +4,7 @@
 // restart) → the video, offset, drift, how they were found and the labels are all back →
 // export HDF5 from the window → read back with the HDF5 C API: offset and video link present.
 #include "main_window.h"
+#include "support/simulated_window.h"
 
 #include "core/export/session_hdf5.h"
 #include "core/labels.h"
@@ -42,16 +43,7 @@ namespace {
 
 nb::WorkbenchOptions options(const QString& sessionDir, std::shared_ptr<nb::devices::sim::SimulatedRig>* rig)
 {
-    nb::WorkbenchOptions o;
-    o.deviceFactory = [rig] {
-        nb::devices::sim::RigConfig c;
-        c.realtime = true;
-        *rig = std::make_shared<nb::devices::sim::SimulatedRig>(c);
-        return nb::devices::sim::simulatedDeviceSet(*rig);
-    };
-    o.realtime = true;
-    o.sessionDir = sessionDir;
-    o.persistSettings = false;
+    nb::WorkbenchOptions o = nbtest::simulatedWindow(sessionDir, true, rig);
     o.calibrationDwell_s = 2.0;  // the thesis's dwell, as an operator gets it
     return o;
 }

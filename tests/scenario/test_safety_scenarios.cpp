@@ -4,6 +4,7 @@
 // override, the emergency stop latches until the operator resets it, and a sine run with the
 // default parameters reaches the tissue.
 #include "main_window.h"
+#include "support/simulated_window.h"
 
 #include "core/run_file.h"
 #include "devices/acquisition_engine.h"
@@ -39,19 +40,7 @@ namespace {
 
 nb::WorkbenchOptions options(const QString& sessionDir, bool realtime, std::shared_ptr<nb::devices::sim::SimulatedRig>* rig)
 {
-    nb::WorkbenchOptions o;
-    o.deviceFactory = [realtime, rig] {
-        nb::devices::sim::RigConfig c;
-        c.realtime = realtime;
-        *rig = std::make_shared<nb::devices::sim::SimulatedRig>(c);
-        return nb::devices::sim::simulatedDeviceSet(*rig);
-    };
-    o.realtime = realtime;
-    o.rateHz = 1000.0;
-    o.sessionDir = sessionDir;
-    o.persistSettings = false;
-    o.calibrationDwell_s = 0.2;
-    return o;
+    return nbtest::simulatedWindow(sessionDir, realtime, rig);
 }
 
 // Waits while processing events; false when `ready` did not come true in time. (No QTRY

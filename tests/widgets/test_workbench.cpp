@@ -3,6 +3,7 @@
 // calibration wizard on the simulated load cell, and recovery of a run cut off by a crash.
 // Screenshots land in build-gui/screenshots/.
 #include "main_window.h"
+#include "support/simulated_window.h"
 #include "translation.h"
 
 #include "core/run_file.h"
@@ -36,6 +37,14 @@ using nb::Control;
 
 namespace {
 
+using nbtest::simulatedWindow;
+// The window tests' rig: see support/simulated_window.h.
+nb::WorkbenchOptions options(const QString& sessionDir, bool realtime,
+                             std::shared_ptr<nb::devices::sim::SimulatedRig>* rig = nullptr)
+{
+    return simulatedWindow(sessionDir, realtime, rig);
+}
+
 QString screenshotDir()
 {
     const QString dir = QStringLiteral(NB_BINARY_DIR "/screenshots");
@@ -43,25 +52,6 @@ QString screenshotDir()
     return dir;
 }
 
-// `rig`: the test keeps a hand on the simulated rig the window drives (faults, masses).
-nb::WorkbenchOptions options(const QString& sessionDir, bool realtime,
-                             std::shared_ptr<nb::devices::sim::SimulatedRig>* rig = nullptr)
-{
-    nb::WorkbenchOptions o;
-    if (rig)
-        o.deviceFactory = [realtime, rig] {
-            nb::devices::sim::RigConfig c;
-            c.realtime = realtime;
-            *rig = std::make_shared<nb::devices::sim::SimulatedRig>(c);
-            return nb::devices::sim::simulatedDeviceSet(*rig);
-        };
-    o.realtime = realtime;
-    o.rateHz = 1000.0;
-    o.sessionDir = sessionDir;
-    o.persistSettings = false;
-    o.calibrationDwell_s = 0.2;
-    return o;
-}
 
 // Enable, bias and zero through the panel's buttons, checking the start stays locked until all are done.
 void prepare(nb::MainWindow& w)
