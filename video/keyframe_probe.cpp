@@ -1,32 +1,11 @@
 #include "keyframe_probe.h"
-
-#include <QProcess>
-#include <QStandardPaths>
+#include "ffprobe.h"
 
 namespace nb::video {
 
-static std::optional<QByteArray> runProbe(const QString& exe, const QStringList& args)
-{
-    QProcess p;
-    p.start(exe, args);
-    if (!p.waitForStarted(5000))
-        return std::nullopt;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        p.waitForFinished(1000);
-        return std::nullopt;
-    }
-    if (p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0)
-        return std::nullopt;
-    return p.readAllStandardOutput();
-}
-
 std::optional<ProbeResult> probeKeyframes(const QString& path)
 {
-    const QString exe = QStandardPaths::findExecutable(QStringLiteral("ffprobe"));
-    if (exe.isEmpty())
-        return std::nullopt;
-    const auto stream = runProbe(exe, {QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
+    const auto stream = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
                                        QStringLiteral("v:0"), QStringLiteral("-show_entries"),
                                        QStringLiteral("stream=codec_name,start_time"), QStringLiteral("-of"),
                                        QStringLiteral("default=noprint_wrappers=1"), path});
@@ -44,7 +23,7 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
                 start = s;  // OpenCV reports time relative to the stream's start
         }
     }
-    const auto packets = runProbe(exe, {QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
+    const auto packets = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
                                         QStringLiteral("v:0"), QStringLiteral("-show_entries"),
                                         QStringLiteral("packet=pts_time,flags"), QStringLiteral("-of"),
                                         QStringLiteral("csv=p=0"), path});

@@ -1,5 +1,6 @@
 #include "packet_index.h"
 
+#include "ffprobe.h"
 #include "video_error.h"
 
 #include "core/tr.h"
@@ -16,24 +17,6 @@ namespace nb::video {
 
 namespace {
 
-std::optional<QByteArray> probe(const QStringList& args)
-{
-    const QString exe = QStandardPaths::findExecutable(QStringLiteral("ffprobe"));
-    if (exe.isEmpty())
-        return std::nullopt;
-    QProcess p;
-    p.start(exe, args);
-    if (!p.waitForStarted(5000))
-        return std::nullopt;
-    if (!p.waitForFinished(300000)) {
-        p.kill();
-        p.waitForFinished(1000);
-        return std::nullopt;
-    }
-    if (p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0)
-        return std::nullopt;
-    return p.readAllStandardOutput();
-}
 
 double rate(const QByteArray& fraction)
 {
@@ -50,7 +33,7 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
 {
     if (!QFileInfo(path).isFile())
         throw VideoError(path, nb::TrDevices::tr("no such file"));
-    const auto stream = probe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
+    const auto stream = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
                                QStringLiteral("-show_entries"),
                                QStringLiteral("stream=codec_name,width,height,avg_frame_rate,r_frame_rate,start_time"),
                                QStringLiteral("-of"), QStringLiteral("default=noprint_wrappers=1"), path});
@@ -80,7 +63,7 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
     index.fpsNominal = avg > 0 ? avg : real;
     if (index.width <= 0 || index.height <= 0)
         return std::nullopt;
-    const auto packets = probe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
+    const auto packets = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
                                 QStringLiteral("-show_entries"), QStringLiteral("packet=pts_time,flags"), QStringLiteral("-of"),
                                 QStringLiteral("csv=p=0"), path});
     if (!packets)

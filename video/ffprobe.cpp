@@ -1,0 +1,27 @@
+#include "ffprobe.h"
+
+#include <QProcess>
+#include <QStandardPaths>
+
+namespace nb::video {
+
+std::optional<QByteArray> runFfprobe(const QStringList& args, int timeout_ms)
+{
+    const QString exe = QStandardPaths::findExecutable(QStringLiteral("ffprobe"));
+    if (exe.isEmpty())
+        return std::nullopt;
+    QProcess p;
+    p.start(exe, args);
+    if (!p.waitForStarted(5000))
+        return std::nullopt;
+    if (!p.waitForFinished(timeout_ms)) {
+        p.kill();
+        p.waitForFinished(1000);
+        return std::nullopt;
+    }
+    if (p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0)
+        return std::nullopt;
+    return p.readAllStandardOutput();
+}
+
+}  // namespace nb::video
