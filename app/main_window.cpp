@@ -6,11 +6,11 @@
 
 #include "core/events.h"
 #include "core/fit_error.h"
-#include "core/live_events.h"
 #include "devices/acquisition_engine.h"
 #include "devices/device_error.h"
 #include "devices/device_set.h"
 #include "devices/device_spec.h"
+#include "devices/live_run.h"
 #include "widgets/calibration_wizard.h"
 #include "widgets/control_panel.h"
 #include "widgets/device_dialog.h"
@@ -69,7 +69,9 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
                                &deviceProblem);
 
     // Record live, review video against the force, analyse the session: one window, three tabs.
+    liveRun_ = new devices::LiveRun(60.0, this);
     plots_ = new ForcePlots(this);
+    plots_->observe(liveRun_);
     review_ = new ReviewWorkspace(this);
     analysis_ = new AnalysisWorkspace(this);
     tabs_ = new QTabWidget(this);
@@ -121,11 +123,11 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     connect(panel_, &ControlPanel::withdrawRequested, this, [this](double v) {
         noteMotionCommand();
         engine_->withdraw(v);
-        plots_->addEvent(lastT_ - runT0_, tr("withdraw"));
+        liveRun_->mark(devices::LiveMarkKind::Withdraw);
     });
     connect(panel_, &ControlPanel::stopMotionRequested, this, [this] {
         engine_->stopMotion();
-        plots_->addEvent(lastT_ - runT0_, tr("stop"));
+        liveRun_->mark(devices::LiveMarkKind::Stop);
     });
     connect(panel_, &ControlPanel::endRunRequested, this, [this] { engine_->endRun(); });
     connect(panel_, &ControlPanel::emergencyStopRequested, this, &MainWindow::emergencyStopNow);
@@ -150,7 +152,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
 
     drainTimer_ = new QTimer(this);
     drainTimer_->setInterval(25);  // 40 frames/s at most
-    connect(drainTimer_, &QTimer::timeout, this, &MainWindow::drain);
+    connect(drainTimer_, &QTimer::timeout, liveRun_, &devices::LiveRun::pull);
     drainTimer_->start();
     engine_->start();
 }
@@ -179,14 +181,10 @@ void MainWindow::attachEngine()
 {
     devices::AcquisitionEngine* e = engine_.get();
     connect(e, &devices::AcquisitionEngine::statusChanged, this, &MainWindow::onStatus);
+    liveRun_->setSource(&e->liveRing());
     connect(e, &devices::AcquisitionEngine::runStarted, this, [this](const QString& path) {
-        recording_ = true;
         lastRunPath_ = path;
-        plots_->clear();
-        runT0_ = lastT_;
-        liveEvents_.reset();
-        if (runIsLinear_)
-            liveEvents_.emplace();
+        liveRun_->beginRun(runIsLinear_);
         sessionView_->setBusyPath(path);
         showMessage(tr("Recording %1").arg(QDir::toNativeSeparators(path)));
         sessionView_->refresh();
@@ -195,11 +193,11 @@ void MainWindow::attachEngine()
     connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) { showMessage(why, true); });
     connect(e, &devices::AcquisitionEngine::faultOccurred, this, [this](const QString& device, const QString& reason) {
         showMessage(tr("Fault: %1: %2").arg(device, reason), true);
-        plots_->addEvent(lastT_ - runT0_, tr("fault"));
+        liveRun_->mark(devices::LiveMarkKind::Fault);
     });
     connect(e, &devices::AcquisitionEngine::forceLimitTripped, this, [this](double force, double position) {
         showMessage(tr("Force limit tripped at %1 N, %2 mm: the stage was stopped").arg(force, 0, 'f', 2).arg(position, 0, 'f', 2), true);
-        plots_->addEvent(lastT_ - runT0_, tr("force limit"));
+        liveRun_->mark(devices::LiveMarkKind::ForceLimit);
     });
     connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) {
         statusBar()->setStyleSheet(QString());  // a plain note is not shown in the last alarm's red
@@ -499,6 +497,11 @@ CalibrationWizard* MainWindow::openCalibrationWizard()
         constexpr double kInputRange_V = 10.0;
         wizard_->setSensorRange(kInputRange_V, engine_->nominalSlope_V_per_g());
         connect(wizard_, &CalibrationWizard::calibrationAccepted, this, &MainWindow::useCalibration);
+        connect(liveRun_, &devices::LiveRun::samplesAppended, wizard_, [this](std::size_t first) {
+            const devices::LiveSeries& live = liveRun_->series();
+            for (std::size_t i = first; i < live.size(); ++i)
+                wizard_->addSample(liveRun_->clockOrigin_s() + live.time_s[i], live.volts[i]);
+        });
         connect(wizard_, &QDialog::finished, this, [this] {
             if (auto load = engine_->calibrationLoad())
                 load->setLoadMass_g(0.0);
@@ -543,36 +546,6 @@ void MainWindow::startRun()
     engine_->startRun(plan);
 }
 
-void MainWindow::drain()
-{
-    drained_.clear();
-    engine_->liveRing().popAll(drained_);
-    if (!drained_.empty()) {
-        t_.resize(drained_.size());
-        x_.resize(drained_.size());
-        f_.resize(drained_.size());
-        for (std::size_t i = 0; i < drained_.size(); ++i) {
-            t_[i] = drained_[i].time_s - runT0_;
-            x_[i] = drained_[i].position_mm;
-            f_[i] = drained_[i].force_N;
-        }
-        lastT_ = drained_.back().time_s;
-        // Between runs the plots show the live signal; keep it to the last minute.
-        if (!recording_ && plots_->sampleCount() > std::size_t(options_.rateHz * 60.0)) {
-            runT0_ = lastT_;
-            plots_->clear();
-        }
-        plots_->appendSamples(t_, x_, f_);
-        if (recording_ && liveEvents_)
-            for (const LiveEvent& e : liveEvents_->feed(t_, x_, f_))
-                plots_->addEvent(e.time_s, e.name == QLatin1String("contact") ? tr("contact") : tr("puncture"));
-        if (wizard_)
-            for (const devices::Sample& s : drained_)
-                wizard_->addSample(s.time_s, s.volts);
-    }
-    plots_->refresh();
-}
-
 void MainWindow::onStatus(const devices::EngineStatus& s)
 {
     panel_->setStatus(s);
@@ -590,7 +563,6 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
 
 void MainWindow::onRunEnded(const devices::RunSummary& summary)
 {
-    recording_ = false;
     sessionView_->setBusyPath({});
     lastRunPath_ = summary.path;
     lastEndReason_ = fileName(summary.endReason);
@@ -605,43 +577,11 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
         text += QStringLiteral(" – ") + summary.fault;
     // Red is for what cut the run short; a few dropped samples are a note, not an alarm.
     showMessage(text, !normal);
-    if (runIsLinear_)
-        markDetectedEvents();
+    if (const QString problem = liveRun_->endRun(summary.path); !problem.isEmpty())
+        showMessage(tr("Could not read the run back to mark its events: %1").arg(problem), true);
     sessionView_->refresh();
     if (session_)
         analysis_->openSession(session_->dir());
-}
-
-void MainWindow::markDetectedEvents()
-{
-    // The run as recorded (every sample, on the run's clock), not the plots' display buffers.
-    Run run;
-    try {
-        run = readRunFile(lastRunPath_).run;
-    } catch (const RunFileError& e) {
-        showMessage(tr("Could not read the run back to mark its events: %1").arg(e.message()), true);
-        return;
-    }
-    if (run.size() == 0)
-        return;
-    try {
-        const InsertionEvents events = detectEvents(run);
-        // Only a puncture that stands out from the run is marked (the start of a move gives
-        // small inertial wiggles that are not one).
-        const double peak = *std::max_element(run.force_N.begin(), run.force_N.end()) - events.zeroOffset_N;
-        if (events.puncture.force_N < std::max(0.1, 0.2 * peak) || events.puncture.position_mm <= events.contact.position_mm)
-            return;
-        // The whole run places them better than the live marks did: those give way.
-        plots_->removeEvents(tr("contact"));
-        plots_->removeEvents(tr("puncture"));
-        plots_->addEvent(events.contact.time_s, tr("contact"));
-        plots_->addEvent(events.puncture.time_s, tr("puncture"));
-        for (const RunEvent& e : events.internalPunctures)
-            plots_->addEvent(e.time_s, QString());
-        plots_->refresh();
-    } catch (const FitError&) {
-        // No puncture in this run (it stopped early or never touched tissue): nothing to mark.
-    }
 }
 
 void MainWindow::showMessage(const QString& text, bool alarm)

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/live_events.h"
+
 #include "core/session.h"
 #include "devices/device_set.h"
 
@@ -29,6 +29,7 @@ struct RunPlan;
 struct EngineStatus;
 struct RunSummary;
 struct Sample;
+class LiveRun;
 }  // namespace devices
 class ControlPanel;
 class ForcePlots;
@@ -129,13 +130,11 @@ private:
     std::unique_ptr<devices::AcquisitionEngine> engineOn(devices::DeviceSet devices, std::optional<double> forceLimit_N = std::nullopt);
     // Connects the engine's signals to the window (the force limit and calibration are the caller's).
     void attachEngine();
-    void drain();
     void onStatus(const devices::EngineStatus& status);
     void onRunEnded(const devices::RunSummary& summary);
     void startRun();
     void newSessionDialog();
     void openSessionDialog();
-    void markDetectedEvents();
     void showMessage(const QString& text, bool alarm = false);
 
     // Operator safety (issue 12), in main_window_safety.cpp.
@@ -164,13 +163,8 @@ private:
     QPointer<CalibrationWizard> wizard_;
     QTimer* drainTimer_ = nullptr;
     QLabel* statusLabel_ = nullptr;
-    std::vector<devices::Sample> drained_;
-    std::vector<double> t_, x_, f_;
-    double runT0_ = 0.0;
-    double lastT_ = 0.0;
-    bool recording_ = false;
+    devices::LiveRun* liveRun_ = nullptr;  // what the plots and the calibration wizard observe
     bool runIsLinear_ = false;
-    std::optional<LiveEventDetector> liveEvents_;  // marks contact and puncture during a linear run
     QString lastRunPath_, lastEndReason_;
     int runsEnded_ = 0;
     QStringList recovered_;

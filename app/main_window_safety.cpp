@@ -99,7 +99,7 @@ void MainWindow::emergencyStopNow()
 {
     engine_->emergencyStop();  // first: everything else can wait
     motionCommand_.invalidate();
-    plots_->addEvent(lastT_ - runT0_, tr("E-STOP"));
+    liveRun_->mark(devices::LiveMarkKind::EmergencyStop);
     showMessage(tr("Emergency stop: the stage is disabled until you reset it in the control panel."), true);
 }
 

@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+36"/>
+        <location filename="../widgets/control_panel.cpp" line="+38"/>
         <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -363,12 +363,12 @@ or without contact</source>
         <location line="+1"/>
         <location line="+6"/>
         <location line="+12"/>
-        <location line="+315"/>
+        <location line="+334"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-332"/>
+        <location line="-351"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -404,12 +404,12 @@ or without contact</source>
     </message>
     <message>
         <location line="-76"/>
-        <location line="+286"/>
+        <location line="+305"/>
         <source>&amp;Enable stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-283"/>
+        <location line="-302"/>
         <source>&amp;Bias force sensor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -496,12 +496,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+268"/>
+        <location line="+287"/>
         <source>Withdraw to start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-258"/>
+        <location line="-277"/>
         <source>Status</source>
         <translation type="unfinished"></translation>
     </message>
@@ -576,7 +576,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+113"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1087,7 +1087,42 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+208"/>
+        <location line="+90"/>
+        <source>contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>withdraw</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>E-STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+166"/>
         <source>limit %1 N%2 · margin %3 N</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1241,7 +1276,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>&amp;Record</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1266,16 +1301,6 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>withdraw</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>stop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location filename="../app/main_window_safety.cpp" line="+47"/>
         <source>Emergency stop reset: the stage is enabled again.</source>
         <translation type="unfinished"></translation>
@@ -1286,12 +1311,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+47"/>
-        <source>E-STOP</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+48"/>
         <source>Emergency stop: the stage is disabled until you reset it in the control panel.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1358,7 +1378,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+69"/>
+        <location filename="../app/main_window.cpp" line="+77"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1368,22 +1388,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>fault</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Force limit tripped at %1 N, %2 mm: the stage was stopped</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>force limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Devices not changed: close the calibration wizard first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1547,7 +1557,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1557,52 +1567,38 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+27"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+18"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+9"/>
         <source>Could not read the run back to mark its events: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+18"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-91"/>
-        <location line="+67"/>
-        <location line="+2"/>
-        <source>contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-564"/>
+        <location line="-518"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+495"/>
-        <location line="+68"/>
-        <location line="+2"/>
-        <source>puncture</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+518"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-392"/>
+        <location line="-334"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5305,7 +5301,7 @@ Commands:
     </message>
     <message>
         <location filename="../video/frame_index.cpp" line="+105"/>
-        <location filename="../video/packet_index.cpp" line="+52"/>
+        <location filename="../video/packet_index.cpp" line="+35"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
     </message>

@@ -144,10 +144,12 @@ ForcePlots::ForcePlots(QWidget* parent) : QWidget(parent)
 void ForcePlots::appendSamples(std::span<const double> time_s, std::span<const double> position_mm,
                                std::span<const double> force_N)
 {
+    if (model_)
+        return;  // the model is the one source while observed
     const std::size_t n = std::min({time_s.size(), position_mm.size(), force_N.size()});
-    t_.insert(t_.end(), time_s.begin(), time_s.begin() + n);
-    x_.insert(x_.end(), position_mm.begin(), position_mm.begin() + n);
-    f_.insert(f_.end(), force_N.begin(), force_N.begin() + n);
+    own_.time_s.insert(own_.time_s.end(), time_s.begin(), time_s.begin() + n);
+    own_.position_mm.insert(own_.position_mm.end(), position_mm.begin(), position_mm.begin() + n);
+    own_.force_N.insert(own_.force_N.end(), force_N.begin(), force_N.begin() + n);
     if (!paused_)
         dirty_ = true;
 }
@@ -159,9 +161,13 @@ void ForcePlots::append(double time_s, double position_mm, double force_N)
 
 void ForcePlots::clear()
 {
-    t_.clear();
-    x_.clear();
-    f_.clear();
+    if (!model_)
+        own_.clear();
+    forgetShown();
+}
+
+void ForcePlots::forgetShown()
+{
     shown_ = 0;
     fMin_ = fMax_ = xMin_ = xMax_ = 0.0;
     for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_}) {
@@ -175,6 +181,55 @@ void ForcePlots::clear()
     dirty_ = true;
     setFollow(true);
     refresh();
+}
+
+void ForcePlots::observe(const devices::LiveRun* run)
+{
+    if (model_)
+        disconnect(model_, nullptr, this, nullptr);
+    model_ = run;
+    data_ = run ? &run->series() : &own_;
+    forgetShown();
+    if (!run)
+        return;
+    connect(run, &devices::LiveRun::reset, this, &ForcePlots::forgetShown);
+    connect(run, &devices::LiveRun::samplesAppended, this, [this] {
+        if (!paused_)
+            dirty_ = true;
+    });
+    connect(run, &devices::LiveRun::marksChanged, this, &ForcePlots::showMarks);
+    connect(run, &devices::LiveRun::pulled, this, &ForcePlots::refresh);
+    connect(run, &QObject::destroyed, this, [this] { observe(nullptr); });
+    showMarks();
+}
+
+QString ForcePlots::markLabel(devices::LiveMarkKind kind)
+{
+    using K = devices::LiveMarkKind;
+    switch (kind) {
+    case K::Contact: return tr("contact");
+    case K::Puncture: return tr("puncture");
+    case K::MinorPuncture: return QString();  // marked without text: it would clutter the plot
+    case K::Withdraw: return tr("withdraw");
+    case K::Stop: return tr("stop");
+    case K::EmergencyStop: return tr("E-STOP");
+    case K::Fault: return tr("fault");
+    case K::ForceLimit: return tr("force limit");
+    }
+    return {};
+}
+
+void ForcePlots::showMarks()
+{
+    if (!model_)
+        return;
+    for (Event& e : events_)
+        for (QCPAbstractItem* item : e.items)
+            item->parentPlot()->removeItem(item);
+    events_.clear();
+    for (const devices::LiveMark& m : model_->marks())
+        addEvent(m.time_s, markLabel(m.kind));
+    dirty_ = true;
 }
 
 void ForcePlots::setForceLimit(double force_N)
@@ -213,20 +268,20 @@ void ForcePlots::addEvent(double time_s, const QString& label)
         event.items.push_back(text);
     }
     // On the force-position plot the event sits on the curve at its sample.
-    const auto it = std::lower_bound(t_.begin(), t_.end(), time_s);
-    if (it != t_.end()) {
-        const std::size_t i = std::size_t(it - t_.begin());
+    const auto it = std::lower_bound(data_->time_s.begin(), data_->time_s.end(), time_s);
+    if (it != data_->time_s.end()) {
+        const std::size_t i = std::size_t(it - data_->time_s.begin());
         auto* mark = new QCPItemTracer(forcePosition_);
-        mark->position->setCoords(x_[i], f_[i]);
+        mark->position->setCoords(data_->position_mm[i], data_->force_N[i]);
         mark->setStyle(QCPItemTracer::tsCircle);
         mark->setSize(label.isEmpty() ? 5 : 8);
         mark->setPen(QPen(QColor(230, 140, 0), 2));
         event.items.push_back(mark);
         if (!label.isEmpty()) {
             auto* text = new QCPItemText(forcePosition_);
-            text->position->setCoords(x_[i], f_[i]);
+            text->position->setCoords(data_->position_mm[i], data_->force_N[i]);
             // Text on the side away from the nearer edge: the newest point sits at the right edge.
-            const Qt::Alignment side = x_[i] > 0.5 * (xMin_ + xMax_) ? Qt::AlignRight : Qt::AlignLeft;
+            const Qt::Alignment side = data_->position_mm[i] > 0.5 * (xMin_ + xMax_) ? Qt::AlignRight : Qt::AlignLeft;
             text->setPositionAlignment(side | (slot % 2 ? Qt::AlignTop : Qt::AlignBottom));
             text->setText(label);
             text->setColor(QColor(180, 100, 0));
@@ -287,7 +342,7 @@ void ForcePlots::showAll()
     if (shown_ == 0)
         return;
     settingRanges_ = true;
-    forceTime_->xAxis->setRange(padded(t_.front(), t_[shown_ - 1], 0.1));
+    forceTime_->xAxis->setRange(padded(data_->time_s.front(), data_->time_s[shown_ - 1], 0.1));
     forceTime_->yAxis->setRange(padded(std::min(fMin_, 0.0), std::max(fMax_, limit_N_), kMinForceSpan_N));
     positionTime_->yAxis->setRange(padded(xMin_, xMax_, kMinPositionSpan_mm));
     forcePosition_->xAxis->setRange(padded(xMin_, xMax_, kMinPositionSpan_mm));
@@ -308,22 +363,22 @@ void ForcePlots::refresh()
         return;
     dirty_ = false;
     if (!paused_) {
-        for (std::size_t i = shown_; i < t_.size(); ++i) {
+        for (std::size_t i = shown_; i < data_->time_s.size(); ++i) {
             if (i == 0) {
-                fMin_ = fMax_ = f_[0];
-                xMin_ = xMax_ = x_[0];
+                fMin_ = fMax_ = data_->force_N[0];
+                xMin_ = xMax_ = data_->position_mm[0];
             }
-            fMin_ = std::min(fMin_, f_[i]);
-            fMax_ = std::max(fMax_, f_[i]);
-            xMin_ = std::min(xMin_, x_[i]);
-            xMax_ = std::max(xMax_, x_[i]);
+            fMin_ = std::min(fMin_, data_->force_N[i]);
+            fMax_ = std::max(fMax_, data_->force_N[i]);
+            xMin_ = std::min(xMin_, data_->position_mm[i]);
+            xMax_ = std::max(xMax_, data_->position_mm[i]);
         }
-        shown_ = t_.size();
+        shown_ = data_->time_s.size();
     }
     if (follow_ && !paused_)
         applyFollowRanges();
     if (limit_N_ > 0.0) {
-        const double latest = shown_ ? f_[shown_ - 1] : 0.0;
+        const double latest = shown_ ? data_->force_N[shown_ - 1] : 0.0;
         const bool above = forceTime_->yAxis->range().upper < limit_N_;
         limitLabel_->setText(tr("limit %1 N%2 · margin %3 N")
                                  .arg(limit_N_, 0, 'f', 2)
@@ -338,8 +393,8 @@ void ForcePlots::refresh()
 void ForcePlots::applyFollowRanges()
 {
     settingRanges_ = true;
-    const double tEnd = shown_ ? t_[shown_ - 1] : 0.0;
-    const double tStart = std::max(shown_ ? t_.front() : 0.0, tEnd - window_s_);
+    const double tEnd = shown_ ? data_->time_s[shown_ - 1] : 0.0;
+    const double tStart = std::max(shown_ ? data_->time_s.front() : 0.0, tEnd - window_s_);
     forceTime_->xAxis->setRange(tStart, std::max(tEnd, tStart + window_s_));
     // The limit line comes into view once the force gets within half of it; until then a
     // label states it, so small forces are not squashed flat by a far-away limit.
@@ -356,7 +411,7 @@ void ForcePlots::applyFollowRanges()
 void ForcePlots::updateData()
 {
     auto* plot = qobject_cast<QCustomPlot*>(sender());
-    const std::span<const double> t(t_.data(), shown_), x(x_.data(), shown_), f(f_.data(), shown_);
+    const std::span<const double> t(data_->time_s.data(), shown_), x(data_->position_mm.data(), shown_), f(data_->force_N.data(), shown_);
     std::vector<double> keys, values, values2;
     auto fill = [&](const std::vector<std::size_t>& idx, std::span<const double> a, std::span<const double> b) {
         gather(a, idx, keys);

@@ -1,8 +1,11 @@
 #pragma once
 // The live plots of a run: force vs time, position vs time (sharing the time axis) and
-// force vs position (thesis Fig. 20). Samples are appended as they are drained from the
-// engine; each redraw reduces what is visible to min/max per pixel column, so a 10 kHz
-// recording costs the same to draw as a slow one.
+// force vs position (thesis Fig. 20). In the workbench they observe the live run
+// (devices::LiveRun: its samples and marks); standing alone (benchmarks, tests) they are fed
+// with appendSamples. Each redraw reduces what is visible to min/max per pixel column, so a
+// 10 kHz recording costs the same to draw as a slow one.
+
+#include "devices/live_run.h"
 
 #include <QString>
 #include <QStringList>
@@ -26,11 +29,17 @@ class ForcePlots : public QWidget {
 public:
     explicit ForcePlots(QWidget* parent = nullptr);
 
+    // Shows the live run's samples and marks from now on, redrawing after each of its pulls
+    // (null: stand alone again, with no samples).
+    void observe(const devices::LiveRun* run);
+    // Stand alone only (ignored while observing a live run).
     void appendSamples(std::span<const double> time_s, std::span<const double> position_mm,
                        std::span<const double> force_N);
     void append(double time_s, double position_mm, double force_N);
-    // Forgets every sample and event (a new run).
+    // Forgets every sample and event (stand alone) or what was drawn of the observed run.
     void clear();
+    // The text an observed mark is drawn with.
+    static QString markLabel(devices::LiveMarkKind kind);
     // Draws the maximum-force limit as a line on both force plots; <= 0 hides it.
     void setForceLimit(double force_N);
     // Marks a detected event (puncture, contact, ...) at a time; an empty label marks it
@@ -59,10 +68,10 @@ public:
     // Redraws if anything changed since the last call; called by the drain timer.
     void refresh();
 
-    std::size_t sampleCount() const { return t_.size(); }
-    const std::vector<double>& times() const { return t_; }
-    const std::vector<double>& positions() const { return x_; }
-    const std::vector<double>& forces() const { return f_; }
+    std::size_t sampleCount() const { return data_->size(); }
+    const std::vector<double>& times() const { return data_->time_s; }
+    const std::vector<double>& positions() const { return data_->position_mm; }
+    const std::vector<double>& forces() const { return data_->force_N; }
     // Points handed to the plots at the last redraw (after reduction), per plot.
     std::size_t pointsDrawnForceTime() const { return drawnForceTime_; }
     std::size_t pointsDrawnForcePosition() const { return drawnForcePosition_; }
@@ -79,6 +88,8 @@ signals:
 
 private:
     void updateData();
+    void forgetShown();
+    void showMarks();
     void applyFollowRanges();
     void userMovedView();
 
@@ -94,7 +105,9 @@ private:
     QToolButton* followButton_ = nullptr;
     QToolButton* pauseButton_ = nullptr;
 
-    std::vector<double> t_, x_, f_;
+    devices::LiveSeries own_;
+    const devices::LiveRun* model_ = nullptr;
+    const devices::LiveSeries* data_ = &own_;
     std::size_t shown_ = 0;  // samples the plots show (frozen while paused)
     double fMin_ = 0.0, fMax_ = 0.0, xMin_ = 0.0, xMax_ = 0.0;
     struct Event {
