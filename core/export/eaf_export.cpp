@@ -69,6 +69,16 @@ QByteArray eafDocument(const DatasetRun& r, const EafLinks& links)
     for (const Label& l : r.labels)
         commentCount += l.comment.isEmpty() ? 0 : 1;
     const qsizetype annotationCount = qsizetype(r.labels.size()) + commentCount;
+    // The run's place in an experiment plan (factor levels, plan name and run number), so a
+    // document opened on its own in ELAN still says which condition it shows.
+    for (const auto& [key, value] : r.run.metadata.entries()) {
+        if (!key.startsWith(QLatin1String("factor_")) && !key.startsWith(QLatin1String("plan_")))
+            continue;
+        x.writeStartElement(QStringLiteral("PROPERTY"));
+        x.writeAttribute(QStringLiteral("NAME"), key);
+        x.writeCharacters(value);
+        x.writeEndElement();
+    }
     x.writeStartElement(QStringLiteral("PROPERTY"));
     x.writeAttribute(QStringLiteral("NAME"), QStringLiteral("lastUsedAnnotationId"));
     x.writeCharacters(QString::number(annotationCount));

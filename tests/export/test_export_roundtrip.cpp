@@ -439,7 +439,10 @@ private slots:
     void eafIsElanXml()
     {
         QTemporaryDir dir;
-        const DatasetRun r = makeRun(QStringLiteral("run01"));
+        DatasetRun r = makeRun(QStringLiteral("run01"));
+        r.run.metadata.set(QStringLiteral("factor_frequency_hz"), 0.5);
+        r.run.metadata.set(QStringLiteral("factor_site"), QStringLiteral("3"));
+        r.run.metadata.set(QStringLiteral("plan_run"), QStringLiteral("7"));
         const QString path = dir.filePath(QStringLiteral("run01.eaf"));
         writeEaf(path, r, {dir.filePath(QStringLiteral("run01.csv")), dir.filePath(QStringLiteral("run01.mp4"))});
         QFile f(path);
@@ -450,6 +453,7 @@ private slots:
         QString tier, media, linked, origin, commentParent;
         QStringList values;
         QStringList refs;
+        QMap<QString, QString> properties;
         while (!x.atEnd()) {
             x.readNext();
             if (!x.isStartElement())
@@ -472,7 +476,16 @@ private slots:
                 origin = a.value("TIME_ORIGIN").toString();
             } else if (x.name() == u"LINKED_FILE_DESCRIPTOR")
                 linked = a.value("RELATIVE_LINK_URL").toString();
+            else if (x.name() == u"PROPERTY") {
+                const QString name = a.value("NAME").toString();
+                properties[name] = x.readElementText();
+            }
         }
+        // The plan's factor levels travel with the document; other metadata stays in the CSV.
+        QCOMPARE(properties.value(QStringLiteral("factor_frequency_hz")), QStringLiteral("0.5"));
+        QCOMPARE(properties.value(QStringLiteral("factor_site")), QStringLiteral("3"));
+        QCOMPARE(properties.value(QStringLiteral("plan_run")), QStringLiteral("7"));
+        QVERIFY(!properties.contains(QStringLiteral("protocol")));
         QVERIFY2(!x.hasError(), qPrintable(x.errorString()));
         QCOMPARE(values, (QStringList{"a", "c", "puncture", "steady, then \"drop\""}));
         QCOMPARE(tierOf["a"], QStringLiteral("insertion"));
