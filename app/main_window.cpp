@@ -86,8 +86,10 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     scroll->setWidget(panel_);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    // Its minimum, not its preferred width: the window must fit a 1366 px laptop.
-    scroll->setMinimumWidth(panel_->minimumSizeHint().width() + 24 + scroll->verticalScrollBar()->sizeHint().width());
+    scroll->setFrameShape(QFrame::NoFrame);
+    // Its minimum, not its preferred width: the window must fit a 1366 px laptop. Room for the
+    // scroll bar, which shows only when the jog fields or the latch banner are open on a low screen.
+    scroll->setMinimumWidth(panel_->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
     panelDock_ = new QDockWidget(tr("Control panel"), this);
     panelDock_->setObjectName(QStringLiteral("controlDock"));
     panelDock_->setWidget(scroll);

@@ -168,7 +168,7 @@ private slots:
         QVERIFY(!startButton->isEnabled());
         QVERIFY(panel.button(Control::StopMotion)->isEnabled());
         QVERIFY(!panel.button(Control::EndRun)->isEnabled());
-        QVERIFY(panel.button(Control::Withdraw)->text().contains(QStringLiteral("recorded in this run")));
+        QVERIFY(panel.button(Control::Withdraw)->text() == QStringLiteral("Withdraw (recorded)"));
         QVERIFY(panel.findChild<QLabel*>(QStringLiteral("status_margin"))->text().startsWith(QStringLiteral("0.50 N")));
         QVERIFY(!panel.findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->isEnabled());
         QVERIFY(estopButton->isEnabled());

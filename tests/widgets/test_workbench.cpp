@@ -177,7 +177,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(w.plots()->sampleCount() > before + 300, 20000);
         QVERIFY(p->interlockState().recording);  // the stop did not close the run
         QCOMPARE(w.runsEnded(), 0);
-        QVERIFY(p->button(Control::Withdraw)->text().contains(QStringLiteral("recorded in this run")));
+        QVERIFY(p->button(Control::Withdraw)->text() == QStringLiteral("Withdraw (recorded)"));
         QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::EndRun)->isEnabled(), 20000);
         QTest::mouseClick(p->button(Control::EndRun), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
@@ -356,7 +356,7 @@ private slots:
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             QCOMPARE(w.controlPanel()->button(Control::EmergencyStop)->text(), QStringLiteral("NOT-HALT (Esc)"));
-            QCOMPARE(w.controlPanel()->button(Control::EndRun)->text(), QStringLiteral("Lauf beenden (schließt die Datei)"));
+            QCOMPARE(w.controlPanel()->button(Control::EndRun)->text(), QStringLiteral("Lauf beenden (Datei zu)"));
             QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
             // Interlock reasons (free functions) are translated too.
             QVERIFY(w.controlPanel()->button(Control::StartInsertion)->toolTip().contains(QStringLiteral("Zuerst die Achse einschalten")));
