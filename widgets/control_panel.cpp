@@ -1,5 +1,7 @@
 #include "control_panel.h"
 
+#include "core/data_names.h"
+
 #include <QSettings>
 
 #include <QButtonGroup>
@@ -450,7 +452,8 @@ void ControlPanel::updateControls()
         state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(margin, 0, 'f', 2).arg(100.0 * margin / state_.forceLimit_N, 0, 'f', 0)
                                 : tr("no limit set"),
         state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
-    set("calibration", s.calibrationName.isEmpty() ? tr("none") : s.calibrationName, s.calibrationName.isEmpty());
+    set("calibration", s.calibrationName.isEmpty() ? tr("none") : calibrationDisplayName(s.calibrationName),
+        s.calibrationName.isEmpty());
     updateSafetyControls();
     set("fault", s.fault.isEmpty() ? (s.forceLimitTripped ? tr("force limit tripped") : tr("none")) : s.fault,
         !s.fault.isEmpty() || s.forceLimitTripped);

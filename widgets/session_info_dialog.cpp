@@ -1,6 +1,6 @@
 #include "session_info_dialog.h"
 
-#include "data_names.h"
+#include "core/data_names.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -361,6 +361,11 @@ private slots:
             QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
             // Interlock reasons (free functions) are translated too.
             QVERIFY(w.controlPanel()->button(Control::StartInsertion)->toolTip().contains(QStringLiteral("Zuerst die Achse einschalten")));
+            // The calibration's name goes into every run file: the same words in every language,
+            // shown translated.
+            QCOMPARE(w.engine()->status().calibrationName, QStringLiteral("nominal (device)"));
+            QTRY_COMPARE(w.controlPanel()->findChild<QLabel*>(QStringLiteral("status_calibration"))->text(), QStringLiteral("nominal (Gerät)"));
+            QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("Spitze: abgeschrägt")), qPrintable(w.engine()->deviceDescription()));
             QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_de.png")));
         }
         {
