@@ -228,13 +228,13 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     auto* grid = compact(new QGridLayout(statusBox));
     grid->setHorizontalSpacing(6);
     grid->setVerticalSpacing(3);
-    // The time in run is said on the recording row: one row less to fit a laptop.
+    // The time in run is said on the recording row and the devices' state by their sample rate:
+    // fewer rows to fit a laptop.
     const std::pair<const char*, QString> rows[] = {
-        {"devices", tr("Devices")},       {"stage", tr("Stage")},         {"bias", tr("Bias done")},
-        {"zero", tr("Zero done")},        {"force", tr("Force")},         {"position", tr("Position")},
-        {"motion", tr("Moving")},         {"margin", tr("Limit margin")}, {"rate", tr("Sample rate")},
-        {"dropped", tr("Dropped")},       {"recording", tr("Recording")}, {"calibration", tr("Calibration")},
-        {"fault", tr("Fault")},
+        {"devices", tr("Sampling")},    {"stage", tr("Stage")},           {"bias", tr("Bias done")},
+        {"zero", tr("Zero done")},      {"force", tr("Force")},           {"position", tr("Position")},
+        {"motion", tr("Moving")},       {"margin", tr("Margin")},         {"dropped", tr("Dropped")},
+        {"recording", tr("Recording")}, {"calibration", tr("Calibration")}, {"fault", tr("Fault")},
     };
     int index = 0;
     for (const auto& [key, title] : rows) {
@@ -243,8 +243,11 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
         auto* name = new QLabel(title + QLatin1Char(':'), statusBox);
         name->setStyleSheet(QStringLiteral("color: palette(mid);"));
+        if (QByteArray(key) == "margin")
+            name->setToolTip(tr("Force left before the maximum force stops the stage"));
         // Long values (file, calibration, fault) get a whole row; the rest share rows in pairs.
-        const bool wide = QByteArray(key) == "recording" || QByteArray(key) == "calibration" || QByteArray(key) == "fault";
+        const bool wide = QByteArray(key) == "recording" || QByteArray(key) == "calibration" || QByteArray(key) == "fault" ||
+                          QByteArray(key) == "dropped";
         const int row = index / 2;
         if (wide) {
             if (index % 2)
@@ -264,6 +267,14 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     }
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(3, 1);
+    // Room for what a busy rig shows (values never widen the panel by themselves).
+    int valueWidth = 0;
+    for (const QString& busy : {tr("%1 Hz").arg(10000), tr("yes (%1 V)").arg(-1.2345, 0, 'f', 4), tr("%1 N").arg(-12.345, 0, 'f', 3),
+                                tr("%1 mm").arg(123.456, 0, 'f', 3), tr("%1 mm/s").arg(12.5, 0, 'f', 2),
+                                tr("%1 N (%2 %)").arg(-0.25, 0, 'f', 2).arg(-3), tr("enabled"), tr("disabled"), tr("at rest")})
+        valueWidth = std::max(valueWidth, statusBox->fontMetrics().horizontalAdvance(busy) + 2);
+    grid->setColumnMinimumWidth(1, valueWidth);
+    grid->setColumnMinimumWidth(3, valueWidth);
     status_labels_[QStringLiteral("fault")]->setWordWrap(true);
     status_labels_[QStringLiteral("recording")]->setWordWrap(true);
     status_labels_[QStringLiteral("calibration")]->setWordWrap(true);
@@ -436,14 +447,13 @@ void ControlPanel::updateControls()
         }
     };
     const devices::EngineStatus& s = status_;
-    set("devices", s.running ? tr("running") : tr("stopped"), !s.running);
+    set("devices", s.running ? tr("%1 Hz").arg(s.rateHz, 0, 'f', 0) : tr("stopped"), !s.running);
     set("stage", s.stageEnabled ? tr("enabled") : tr("disabled"));
     set("bias", s.biased ? tr("yes (%1 V)").arg(s.bias_V, 0, 'f', 4) : yesNo(false), !s.biased);
     set("zero", yesNo(s.zeroed), !s.zeroed);
     set("motion", s.moving ? tr("%1 mm/s").arg(s.velocity_mm_s, 0, 'f', 2) : tr("at rest"));
     set("recording", s.recording ? tr("RECORDING %1, %2 s").arg(s.runPath.section(QLatin1Char('/'), -1)).arg(s.runTime_s, 0, 'f', 1)
                                  : tr("not recording"));
-    set("rate", tr("%1 Hz").arg(s.rateHz, 0, 'f', 0));
     set("dropped", tr("%1 (overruns %2)").arg(s.dropped).arg(s.overruns), s.dropped + s.overruns > 0);
     set("force", tr("%1 N").arg(s.force_N, 0, 'f', 3));
     set("position", tr("%1 mm").arg(s.position_mm, 0, 'f', 3));

@@ -12,6 +12,7 @@
 #include "core/session.h"
 #include "widgets/analysis/analysis_workspace.h"
 #include "widgets/control_panel.h"
+#include "devices/acquisition_engine.h"
 #include "widgets/export_dialog.h"
 #include "widgets/welcome_dialog.h"
 #include "widgets/label_model.h"
@@ -191,6 +192,27 @@ private slots:
                      qPrintable(QStringLiteral("%1, sine: the control panel scrolls by %2 px at 700 px")
                                     .arg(language).arg(panelScroll->verticalScrollBar()->maximum())));
             w.controlPanel()->findChild<QRadioButton*>(QStringLiteral("linear"))->setChecked(true);
+            // Busy values fit their place in the status (none clipped): values never widen the
+            // panel, so the panel's width must hold them. Checked at once, before the engine's
+            // next status replaces them.
+            {
+                nb::devices::EngineStatus busy;
+                busy.running = busy.stageEnabled = busy.biased = busy.zeroed = busy.moving = true;
+                busy.rateHz = 10000.0;
+                busy.force_N = -1.234;
+                busy.position_mm = 123.456;
+                busy.velocity_mm_s = 12.5;
+                busy.bias_V = -1.2345;
+                busy.dropped = 1234;
+                busy.overruns = 56;
+                busy.calibrationName = QStringLiteral("nominal (device)");
+                w.controlPanel()->setStatus(busy);
+                for (QLabel* value : w.controlPanel()->findChildren<QLabel*>())
+                    if (value->objectName().startsWith(QLatin1String("status_")) && !value->wordWrap())
+                        QVERIFY2(value->sizeHint().width() <= value->width(),
+                                 qPrintable(QStringLiteral("%1: '%2' needs %3 px, has %4").arg(language, value->text())
+                                                .arg(value->sizeHint().width()).arg(value->width())));
+            }
             // Narrow enough to leave the plots room: about 420 px in either language.
             QDockWidget* panelDock = w.findChild<QDockWidget*>(QStringLiteral("controlDock"));
             QVERIFY2(panelDock->minimumSizeHint().width() <= 420,
