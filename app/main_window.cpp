@@ -597,7 +597,9 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
     lastRunPath_ = summary.path;
     lastEndReason_ = fileName(summary.endReason);
     ++runsEnded_;
-    const QString file = QDir::toNativeSeparators(summary.path);
+    // The file's name: the session's folder is on screen, and a whole path pushed the run's
+    // end reason out of the status bar at 1366 px.
+    const QString file = QFileInfo(summary.path).fileName();
     const bool normal = endedNormally(summary.endReason);
     QString text = tr("Run saved: %1 (%2, %3 samples, %4 dropped)")
                        .arg(file, displayName(summary.endReason))

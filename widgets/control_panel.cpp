@@ -13,6 +13,7 @@
 #include <QGroupBox>
 #include <QIcon>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSpinBox>
@@ -39,6 +40,14 @@ QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int de
 }
 
 QString yesNo(bool on) { return on ? QObject::tr("yes") : QObject::tr("no"); }
+
+// Numbers as the spin boxes beside them write them (4,00 in German), without group separators.
+QString num(double value, int decimals)
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'f', decimals);
+}
 
 // The panel must fit a 1366x768 laptop without scrolling: group boxes with tight margins.
 template <typename Layout>
@@ -269,9 +278,9 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     grid->setColumnStretch(3, 1);
     // Room for what a busy rig shows (values never widen the panel by themselves).
     int valueWidth = 0;
-    for (const QString& busy : {tr("%1 Hz").arg(10000), tr("yes (%1 V)").arg(-1.2345, 0, 'f', 4), tr("%1 N").arg(-12.345, 0, 'f', 3),
-                                tr("%1 mm").arg(123.456, 0, 'f', 3), tr("%1 mm/s").arg(12.5, 0, 'f', 2),
-                                tr("%1 N (%2 %)").arg(-0.25, 0, 'f', 2).arg(-3), tr("enabled"), tr("disabled"), tr("at rest")})
+    for (const QString& busy : {tr("%1 Hz").arg(10000), tr("yes (%1 V)").arg(num(-1.2345, 4)), tr("%1 N").arg(num(-12.345, 3)),
+                                tr("%1 mm").arg(num(123.456, 3)), tr("%1 mm/s").arg(num(12.5, 2)),
+                                tr("%1 N (%2 %)").arg(num(-0.25, 2)).arg(-3), tr("enabled"), tr("disabled"), tr("at rest")})
         valueWidth = std::max(valueWidth, statusBox->fontMetrics().horizontalAdvance(busy) + 2);
     grid->setColumnMinimumWidth(1, valueWidth);
     grid->setColumnMinimumWidth(3, valueWidth);
@@ -378,15 +387,15 @@ QString ControlPanel::motionProblem() const
     if (sine_->isChecked()) {
         const double peak = centre_->value() + amplitude_->value();
         if (peak > 150.0)
-            return tr("The sine would reach %1 mm, past the stage's travel.").arg(peak, 0, 'f', 1);
+            return tr("The sine would reach %1 mm, past the stage's travel.").arg(num(peak, 1));
         if (centre_->value() - amplitude_->value() < 0.0)
             return tr("The sine would go above 0 mm: make the centre at least the amplitude.");
         return {};
     }
     if (depth_->value() <= status_.position_mm + 0.01)
         return tr("The depth (%1 mm) is not deeper than the needle is now (%2 mm).")
-            .arg(depth_->value(), 0, 'f', 1)
-            .arg(status_.position_mm, 0, 'f', 1);
+            .arg(num(depth_->value(), 1))
+            .arg(num(status_.position_mm, 1));
     return {};
 }
 
@@ -447,19 +456,19 @@ void ControlPanel::updateControls()
         }
     };
     const devices::EngineStatus& s = status_;
-    set("devices", s.running ? tr("%1 Hz").arg(s.rateHz, 0, 'f', 0) : tr("stopped"), !s.running);
+    set("devices", s.running ? tr("%1 Hz").arg(num(s.rateHz, 0)) : tr("stopped"), !s.running);
     set("stage", s.stageEnabled ? tr("enabled") : tr("disabled"));
-    set("bias", s.biased ? tr("yes (%1 V)").arg(s.bias_V, 0, 'f', 4) : yesNo(false), !s.biased);
+    set("bias", s.biased ? tr("yes (%1 V)").arg(num(s.bias_V, 4)) : yesNo(false), !s.biased);
     set("zero", yesNo(s.zeroed), !s.zeroed);
-    set("motion", s.moving ? tr("%1 mm/s").arg(s.velocity_mm_s, 0, 'f', 2) : tr("at rest"));
-    set("recording", s.recording ? tr("RECORDING %1, %2 s").arg(s.runPath.section(QLatin1Char('/'), -1)).arg(s.runTime_s, 0, 'f', 1)
+    set("motion", s.moving ? tr("%1 mm/s").arg(num(s.velocity_mm_s, 2)) : tr("at rest"));
+    set("recording", s.recording ? tr("RECORDING %1, %2 s").arg(s.runPath.section(QLatin1Char('/'), -1)).arg(num(s.runTime_s, 1))
                                  : tr("not recording"));
     set("dropped", tr("%1 (overruns %2)").arg(s.dropped).arg(s.overruns), s.dropped + s.overruns > 0);
-    set("force", tr("%1 N").arg(s.force_N, 0, 'f', 3));
-    set("position", tr("%1 mm").arg(s.position_mm, 0, 'f', 3));
+    set("force", tr("%1 N").arg(num(s.force_N, 3)));
+    set("position", tr("%1 mm").arg(num(s.position_mm, 3)));
     const double margin = state_.forceLimit_N - s.force_N;
     set("margin",
-        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(margin, 0, 'f', 2).arg(100.0 * margin / state_.forceLimit_N, 0, 'f', 0)
+        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(100.0 * margin / state_.forceLimit_N, 0))
                                 : tr("no limit set"),
         state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
     set("calibration", s.calibrationName.isEmpty() ? tr("none") : calibrationDisplayName(s.calibrationName),
@@ -536,7 +545,7 @@ void ControlPanel::updateSafetyControls()
     const bool deeper = status_.lastRunStart_mm && status_.position_mm > *status_.lastRunStart_mm + 0.05;
     withdrawToStart_->setEnabled(out.enabled && deeper);
     withdrawToStart_->setText(status_.lastRunStart_mm
-                                  ? tr("To start (%1 mm)").arg(*status_.lastRunStart_mm, 0, 'f', 1)
+                                  ? tr("To start (%1 mm)").arg(num(*status_.lastRunStart_mm, 1))
                                   : tr("To start"));
     withdrawToStart_->setToolTip(!out.enabled ? tr("Not now: %1").arg(out.reason)
                                  : deeper     ? tr("Moves the needle out to where the last run began (not recorded)")
