@@ -88,8 +88,10 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     scroll->setWidget(panel_);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    // Its minimum, not its preferred width: the window must fit a 1366 px laptop.
-    scroll->setMinimumWidth(panel_->minimumSizeHint().width() + 24 + scroll->verticalScrollBar()->sizeHint().width());
+    scroll->setFrameShape(QFrame::NoFrame);
+    // Its minimum, not its preferred width: the window must fit a 1366 px laptop. Room for the
+    // scroll bar, which shows only when the jog fields or the latch banner are open on a low screen.
+    scroll->setMinimumWidth(panel_->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
     panelDock_ = new QDockWidget(tr("Control panel"), this);
     panelDock_->setObjectName(QStringLiteral("controlDock"));
     panelDock_->setWidget(scroll);
@@ -567,7 +569,9 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
     lastRunPath_ = summary.path;
     lastEndReason_ = fileName(summary.endReason);
     ++runsEnded_;
-    const QString file = QDir::toNativeSeparators(summary.path);
+    // The file's name: the session's folder is on screen, and a whole path pushed the run's
+    // end reason out of the status bar at 1366 px.
+    const QString file = QFileInfo(summary.path).fileName();
     const bool normal = endedNormally(summary.endReason);
     QString text = tr("Run saved: %1 (%2, %3 samples, %4 dropped)")
                        .arg(file, displayName(summary.endReason))

@@ -1,5 +1,7 @@
 #include "acquisition_engine.h"
 
+#include "core/data_names.h"
+
 #include "core/run_file.h"
 #include "core/run_keys.h"
 #include "core/tr.h"
@@ -113,7 +115,8 @@ AcquisitionEngine::AcquisitionEngine(DeviceSet devices, EngineConfig config, QOb
     s.proc = std::make_unique<SampleProcessor>(config_.rateHz, hostPaced_, truth_);
     s.proc->setSlope(nominalSlope_);
     s.proc->setLimits(config_.forceLimit_N, config_.withdrawForceLimit_N);
-    s.calibrationName = nominalSlope_ > 0 ? tr("nominal (device)") : QString();
+    // Stored in every run file: the same words in every language (views translate it).
+    s.calibrationName = nominalSlope_ > 0 ? QString::fromLatin1(kNominalCalibration) : QString();
     s.noiseBand_N = config_.noiseBand_N;
     status_.rateHz = config_.rateHz;
     status_.forceLimit_N = config_.forceLimit_N;

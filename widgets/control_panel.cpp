@@ -1,5 +1,7 @@
 #include "control_panel.h"
 
+#include "core/data_names.h"
+
 #include <QSettings>
 
 #include <QButtonGroup>
@@ -11,10 +13,12 @@
 #include <QGroupBox>
 #include <QIcon>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSpinBox>
 #include <QStackedWidget>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 // The icons live in a static library: their resource must be registered by hand.
@@ -37,6 +41,23 @@ QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int de
 
 QString yesNo(bool on) { return on ? QObject::tr("yes") : QObject::tr("no"); }
 
+// Numbers as the spin boxes beside them write them (4,00 in German), without group separators.
+QString num(double value, int decimals)
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'f', decimals);
+}
+
+// The panel must fit a 1366x768 laptop without scrolling: group boxes with tight margins.
+template <typename Layout>
+Layout* compact(Layout* l)
+{
+    l->setContentsMargins(6, 4, 6, 6);
+    l->setSpacing(4);
+    return l;
+}
+
 }  // namespace
 
 ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
@@ -45,6 +66,8 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     static const bool resourcesReady = (initResources(), true);
     Q_UNUSED(resourcesReady);
     auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(6);
 
     // Emergency stop first, big and always enabled.
     auto* estop = addButton(Control::EmergencyStop, tr("EMERGENCY STOP (Esc)"),
@@ -58,7 +81,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(buildLatchBanner());
 
     auto* prep = new QGroupBox(tr("1. Prepare"), this);
-    auto* prepLayout = new QVBoxLayout(prep);
+    auto* prepLayout = compact(new QGridLayout(prep));
     auto* enable = addButton(Control::Enable, tr("&Enable stage"), tr("Powers the stage drive"));
     enable->setCheckable(true);
     connect(enable, &QPushButton::clicked, this, [this, enable] { emit enableRequested(enable->isChecked()); });
@@ -71,12 +94,14 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
                                 tr("Known masses on the load cell, fit V = d·m + c"));
     calibrate->setIcon(QIcon(QStringLiteral(":/icons/calibrate.svg")));
     connect(calibrate, &QPushButton::clicked, this, &ControlPanel::calibrateRequested);
-    for (auto* b : {enable, bias, zero, calibrate})
-        prepLayout->addWidget(b);
+    prepLayout->addWidget(enable, 0, 0);
+    prepLayout->addWidget(bias, 0, 1);
+    prepLayout->addWidget(zero, 1, 0);
+    prepLayout->addWidget(calibrate, 1, 1);
     layout->addWidget(prep);
 
     motionBox_ = new QGroupBox(tr("2. Motion"), this);
-    auto* motionLayout = new QVBoxLayout(motionBox_);
+    auto* motionLayout = compact(new QVBoxLayout(motionBox_));
     auto* kinds = new QHBoxLayout;
     linear_ = new QRadioButton(tr("Linear"), motionBox_);
     sine_ = new QRadioButton(tr("Sinusoidal"), motionBox_);
@@ -86,15 +111,25 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     motionLayout->addLayout(kinds);
     motionPages_ = new QStackedWidget(motionBox_);
     auto* linearPage = new QWidget(motionPages_);
-    auto* linearForm = new QFormLayout(linearPage);
+    // Label, field, label, field: two fields a row, only the chosen motion's fields shown.
+    auto* linearForm = new QGridLayout(linearPage);
     linearForm->setContentsMargins(0, 0, 0, 0);
+    linearForm->setVerticalSpacing(4);
     velocity_ = spin(linearPage, 0.1, 50.0, 4.0, 2, tr(" mm/s"));
     depth_ = spin(linearPage, 0.5, 150.0, 30.0, 1, tr(" mm"));
-    linearForm->addRow(tr("Velocity"), velocity_);
-    linearForm->addRow(tr("Depth"), depth_);
+    const auto addField = [](QGridLayout* grid, int row, int column, const QString& label, QWidget* field) {
+        auto* l = new QLabel(label, field->parentWidget());
+        l->setBuddy(field);
+        grid->addWidget(l, row, 2 * column);
+        grid->addWidget(field, row, 2 * column + 1);
+        grid->setColumnStretch(2 * column + 1, 1);
+    };
+    addField(linearForm, 0, 0, tr("Velocity"), velocity_);
+    addField(linearForm, 0, 1, tr("Depth"), depth_);
     auto* sinePage = new QWidget(motionPages_);
-    auto* sineForm = new QFormLayout(sinePage);
+    auto* sineForm = new QGridLayout(sinePage);
     sineForm->setContentsMargins(0, 0, 0, 0);
+    sineForm->setVerticalSpacing(4);
     amplitude_ = spin(sinePage, 0.1, 50.0, 10.0, 1, tr(" mm"));
     frequency_ = spin(sinePage, 0.01, 5.0, 0.5, 2, tr(" Hz"));
     cycles_ = new QSpinBox(sinePage);
@@ -110,10 +145,10 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     centre_ = spin(sinePage, 0.0, 150.0, 15.0, 1, tr(" mm"));
     centre_->setObjectName(QStringLiteral("centre"));
     centre_->setToolTip(tr("The sine oscillates about this depth; the needle moves there first (not recorded)"));
-    sineForm->addRow(tr("Centre depth"), centre_);
-    sineForm->addRow(tr("Amplitude"), amplitude_);
-    sineForm->addRow(tr("Frequency"), frequency_);
-    sineForm->addRow(tr("Cycles"), cycles_);
+    addField(sineForm, 0, 0, tr("Centre depth"), centre_);
+    addField(sineForm, 0, 1, tr("Amplitude"), amplitude_);
+    addField(sineForm, 1, 0, tr("Frequency"), frequency_);
+    addField(sineForm, 1, 1, tr("Cycles"), cycles_);
     motionPages_->addWidget(linearPage);
     motionPages_->addWidget(sinePage);
     motionLayout->addWidget(motionPages_);
@@ -136,7 +171,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(motionBox_);
 
     auto* runBox = new QGroupBox(tr("3. Run"), this);
-    auto* runLayout = new QGridLayout(runBox);
+    auto* runLayout = compact(new QGridLayout(runBox));
     auto* start = addButton(Control::StartInsertion, tr("Start &insertion (moves + records)"),
                             tr("Starts recording a new run file, then moves the needle in"));
     start->setStyleSheet(QStringLiteral("QPushButton:enabled { font-weight: bold; }"));
@@ -150,20 +185,22 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     auto* withdraw = addButton(Control::Withdraw, tr("Withdraw"), tr("Moves the needle back to 0 mm"));
     withdraw->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
     connect(withdraw, &QPushButton::clicked, this, [this] { emit withdrawRequested(withdrawVelocity()); });
-    auto* stop = addButton(Control::StopMotion, tr("Stop motion (keeps recording)"),
+    auto* stop = addButton(Control::StopMotion, tr("Stop (keeps recording)"),
                            tr("Decelerates the stage; the run keeps recording until End run"));
     stop->setIcon(QIcon(QStringLiteral(":/icons/stop.svg")));
     connect(stop, &QPushButton::clicked, this, &ControlPanel::stopMotionRequested);
-    auto* end = addButton(Control::EndRun, tr("End run (closes the file)"),
+    auto* end = addButton(Control::EndRun, tr("End run (closes file)"),
                           tr("Stops recording and closes the run file"));
     end->setIcon(QIcon(QStringLiteral(":/icons/end_run.svg")));
     connect(end, &QPushButton::clicked, this, &ControlPanel::endRunRequested);
     runLayout->addWidget(start, 0, 0, 1, 2);
-    runLayout->addWidget(withdraw, 1, 0);
-    runLayout->addWidget(stop, 2, 0);
-    runLayout->addWidget(end, 2, 1);
+    runLayout->addWidget(stop, 1, 0);
+    runLayout->addWidget(end, 1, 1);
+    runLayout->addWidget(withdraw, 2, 0);
     auto* limitRow = new QHBoxLayout;
-    limitRow->addWidget(new QLabel(tr("Maximum force"), runBox));
+    auto* limitLabel = new QLabel(tr("Max. force"), runBox);
+    limitLabel->setToolTip(tr("Maximum force"));
+    limitRow->addWidget(limitLabel);
     limit_ = spin(runBox, 0.0, 20.0, 8.0, 2, tr(" N"));
     limit_->setToolTip(tr("The stage stops at once when the force reaches this (0 = no limit: runs refused)"));
     limit_->setObjectName(QStringLiteral("forceLimit"));
@@ -181,26 +218,32 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     connect(withdrawLimit_, &QDoubleSpinBox::valueChanged, this, &ControlPanel::withdrawForceLimitChanged);
     limitRow->addWidget(withdrawLimit_, 1);
     runLayout->addLayout(limitRow, 3, 0, 1, 2);
-    withdrawToStart_ = new QPushButton(tr("Withdraw to start"), runBox);
+    withdrawToStart_ = new QPushButton(tr("To start"), runBox);
     withdrawToStart_->setObjectName(QStringLiteral("withdrawToStart"));
     withdrawToStart_->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
     connect(withdrawToStart_, &QPushButton::clicked, this, [this] {
         if (status_.lastRunStart_mm)
             emit withdrawToRequested(withdrawVelocity(), *status_.lastRunStart_mm);
     });
-    runLayout->addWidget(withdrawToStart_, 1, 1);
+    runLayout->addWidget(withdrawToStart_, 2, 1);
+    // Two equal columns: the button texts, not the longer of each pair, set the width.
+    runLayout->setColumnStretch(0, 1);
+    runLayout->setColumnStretch(1, 1);
+    prepLayout->setColumnStretch(0, 1);
+    prepLayout->setColumnStretch(1, 1);
     layout->addWidget(runBox);
 
     auto* statusBox = new QGroupBox(tr("Status"), this);
-    auto* grid = new QGridLayout(statusBox);
-    grid->setHorizontalSpacing(8);
+    auto* grid = compact(new QGridLayout(statusBox));
+    grid->setHorizontalSpacing(6);
     grid->setVerticalSpacing(3);
+    // The time in run is said on the recording row and the devices' state by their sample rate:
+    // fewer rows to fit a laptop.
     const std::pair<const char*, QString> rows[] = {
-        {"devices", tr("Devices")},       {"stage", tr("Stage")},         {"bias", tr("Bias done")},
-        {"zero", tr("Zero done")},        {"motion", tr("Moving")},       {"rate", tr("Sample rate")},
-        {"force", tr("Force")},           {"position", tr("Position")},   {"margin", tr("Limit margin")},
-        {"dropped", tr("Dropped")},       {"recording", tr("Recording")}, {"runtime", tr("Time in run")},
-        {"calibration", tr("Calibration")}, {"fault", tr("Fault")},
+        {"devices", tr("Sampling")},    {"stage", tr("Stage")},           {"bias", tr("Bias done")},
+        {"zero", tr("Zero done")},      {"force", tr("Force")},           {"position", tr("Position")},
+        {"motion", tr("Moving")},       {"margin", tr("Margin")},         {"dropped", tr("Dropped")},
+        {"recording", tr("Recording")}, {"calibration", tr("Calibration")}, {"fault", tr("Fault")},
     };
     int index = 0;
     for (const auto& [key, title] : rows) {
@@ -209,8 +252,11 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
         auto* name = new QLabel(title + QLatin1Char(':'), statusBox);
         name->setStyleSheet(QStringLiteral("color: palette(mid);"));
+        if (QByteArray(key) == "margin")
+            name->setToolTip(tr("Force left before the maximum force stops the stage"));
         // Long values (file, calibration, fault) get a whole row; the rest share rows in pairs.
-        const bool wide = QByteArray(key) == "recording" || QByteArray(key) == "calibration" || QByteArray(key) == "fault";
+        const bool wide = QByteArray(key) == "recording" || QByteArray(key) == "calibration" || QByteArray(key) == "fault" ||
+                          QByteArray(key) == "dropped";
         const int row = index / 2;
         if (wide) {
             if (index % 2)
@@ -219,6 +265,9 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
             grid->addWidget(value, index / 2, 1, 1, 3);
             index += 2;
         } else {
+            // Values come and go at run time: they must not widen the panel (full text in the tip).
+            value->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+            value->setMinimumWidth(40);
             grid->addWidget(name, row, (index % 2) * 2);
             grid->addWidget(value, row, (index % 2) * 2 + 1);
             ++index;
@@ -227,12 +276,37 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     }
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(3, 1);
+    // Room for what a busy rig shows (values never widen the panel by themselves).
+    int valueWidth = 0;
+    for (const QString& busy : {tr("%1 Hz").arg(10000), tr("yes (%1 V)").arg(num(-1.2345, 4)), tr("%1 N").arg(num(-12.345, 3)),
+                                tr("%1 mm").arg(num(123.456, 3)), tr("%1 mm/s").arg(num(12.5, 2)),
+                                tr("%1 N (%2 %)").arg(num(-0.25, 2)).arg(-3), tr("enabled"), tr("disabled"), tr("at rest")})
+        valueWidth = std::max(valueWidth, statusBox->fontMetrics().horizontalAdvance(busy) + 2);
+    grid->setColumnMinimumWidth(1, valueWidth);
+    grid->setColumnMinimumWidth(3, valueWidth);
     status_labels_[QStringLiteral("fault")]->setWordWrap(true);
     status_labels_[QStringLiteral("recording")]->setWordWrap(true);
-    layout->addWidget(statusBox);
-    // Jog is for after a stop: below the status, which must stay in sight.
+    status_labels_[QStringLiteral("calibration")]->setWordWrap(true);
+    grid->setRowStretch(grid->rowCount(), 1);
+    // The status takes what height remains.
+    layout->addWidget(statusBox, 1);
+    // Jog is for after a stop: below the status, which must stay in sight, and folded away
+    // until asked for.
+    auto* jogToggle = new QToolButton(this);
+    jogToggle->setObjectName(QStringLiteral("jogToggle"));
+    jogToggle->setText(tr("Jog (never recorded)"));
+    jogToggle->setCheckable(true);
+    jogToggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    jogToggle->setArrowType(Qt::RightArrow);
+    jogToggle->setAutoRaise(true);
+    jogToggle->setToolTip(tr("Unrecorded moves of the needle: steps in and out, or to a position"));
+    layout->addWidget(jogToggle);
     layout->addWidget(buildJogBox());
-    layout->addStretch();
+    jogBox_->setVisible(false);
+    connect(jogToggle, &QToolButton::toggled, this, [this, jogToggle](bool open) {
+        jogToggle->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+        jogBox_->setVisible(open);
+    });
 
     state_.forceLimit_N = limit_->value();
     updateControls();
@@ -313,15 +387,15 @@ QString ControlPanel::motionProblem() const
     if (sine_->isChecked()) {
         const double peak = centre_->value() + amplitude_->value();
         if (peak > 150.0)
-            return tr("The sine would reach %1 mm, past the stage's travel.").arg(peak, 0, 'f', 1);
+            return tr("The sine would reach %1 mm, past the stage's travel.").arg(num(peak, 1));
         if (centre_->value() - amplitude_->value() < 0.0)
             return tr("The sine would go above 0 mm: make the centre at least the amplitude.");
         return {};
     }
     if (depth_->value() <= status_.position_mm + 0.01)
         return tr("The depth (%1 mm) is not deeper than the needle is now (%2 mm).")
-            .arg(depth_->value(), 0, 'f', 1)
-            .arg(status_.position_mm, 0, 'f', 1);
+            .arg(num(depth_->value(), 1))
+            .arg(num(status_.position_mm, 1));
     return {};
 }
 
@@ -366,12 +440,15 @@ void ControlPanel::updateControls()
     enable->setChecked(state_.stageEnabled);
     enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("&Enable stage"));
     // Whether a withdrawal lands in a file is never left to memory.
-    buttons_[Control::Withdraw]->setText(state_.recording ? tr("Withdraw (recorded in this run)")
-                                                          : tr("Withdraw (not recorded)"));
+    buttons_[Control::Withdraw]->setText(state_.recording ? tr("Withdraw (recorded)") : tr("Withdraw (not recorded)"));
 
     const auto set = [this](const char* key, const QString& text, bool alarm = false) {
         QLabel* l = status_labels_[QString::fromLatin1(key)];
+        if (l->text() == text)
+            return;
         l->setText(text);
+        if (l->sizePolicy().horizontalPolicy() == QSizePolicy::Ignored)
+            l->setToolTip(text);
         // Re-polishing a style sheet is not free and this runs at the status rate (25 Hz).
         if (l->property("alarm").toBool() != alarm || !l->property("alarm").isValid()) {
             l->setProperty("alarm", alarm);
@@ -379,23 +456,23 @@ void ControlPanel::updateControls()
         }
     };
     const devices::EngineStatus& s = status_;
-    set("devices", s.running ? tr("running") : tr("stopped"), !s.running);
+    set("devices", s.running ? tr("%1 Hz").arg(num(s.rateHz, 0)) : tr("stopped"), !s.running);
     set("stage", s.stageEnabled ? tr("enabled") : tr("disabled"));
-    set("bias", s.biased ? tr("yes (%1 V)").arg(s.bias_V, 0, 'f', 4) : yesNo(false), !s.biased);
+    set("bias", s.biased ? tr("yes (%1 V)").arg(num(s.bias_V, 4)) : yesNo(false), !s.biased);
     set("zero", yesNo(s.zeroed), !s.zeroed);
-    set("motion", s.moving ? tr("moving, %1 mm/s").arg(s.velocity_mm_s, 0, 'f', 2) : tr("at rest"));
-    set("recording", s.recording ? tr("RECORDING %1").arg(s.runPath.section(QLatin1Char('/'), -1)) : tr("not recording"));
-    set("rate", tr("%1 Hz").arg(s.rateHz, 0, 'f', 0));
+    set("motion", s.moving ? tr("%1 mm/s").arg(num(s.velocity_mm_s, 2)) : tr("at rest"));
+    set("recording", s.recording ? tr("RECORDING %1, %2 s").arg(s.runPath.section(QLatin1Char('/'), -1)).arg(num(s.runTime_s, 1))
+                                 : tr("not recording"));
     set("dropped", tr("%1 (overruns %2)").arg(s.dropped).arg(s.overruns), s.dropped + s.overruns > 0);
-    set("force", tr("%1 N").arg(s.force_N, 0, 'f', 3));
-    set("position", tr("%1 mm").arg(s.position_mm, 0, 'f', 3));
-    set("runtime", s.recording ? tr("%1 s").arg(s.runTime_s, 0, 'f', 1) : QStringLiteral("–"));
+    set("force", tr("%1 N").arg(num(s.force_N, 3)));
+    set("position", tr("%1 mm").arg(num(s.position_mm, 3)));
     const double margin = state_.forceLimit_N - s.force_N;
     set("margin",
-        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(margin, 0, 'f', 2).arg(100.0 * margin / state_.forceLimit_N, 0, 'f', 0)
+        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(100.0 * margin / state_.forceLimit_N, 0))
                                 : tr("no limit set"),
         state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
-    set("calibration", s.calibrationName.isEmpty() ? tr("none") : s.calibrationName, s.calibrationName.isEmpty());
+    set("calibration", s.calibrationName.isEmpty() ? tr("none") : calibrationDisplayName(s.calibrationName),
+        s.calibrationName.isEmpty());
     updateSafetyControls();
     set("fault", s.fault.isEmpty() ? (s.forceLimitTripped ? tr("force limit tripped") : tr("none")) : s.fault,
         !s.fault.isEmpty() || s.forceLimitTripped);
@@ -424,9 +501,10 @@ QWidget* ControlPanel::buildLatchBanner()
 
 QWidget* ControlPanel::buildJogBox()
 {
-    auto* box = new QGroupBox(tr("Jog (never recorded)"), this);
+    auto* box = new QWidget(this);
     jogBox_ = box;
     auto* grid = new QGridLayout(box);
+    grid->setContentsMargins(6, 0, 6, 0);
     // Three steps an operator needs: fine, normal, coarse.
     jogStep_ = new QComboBox(box);
     jogStep_->setObjectName(QStringLiteral("jogStep"));
@@ -467,8 +545,8 @@ void ControlPanel::updateSafetyControls()
     const bool deeper = status_.lastRunStart_mm && status_.position_mm > *status_.lastRunStart_mm + 0.05;
     withdrawToStart_->setEnabled(out.enabled && deeper);
     withdrawToStart_->setText(status_.lastRunStart_mm
-                                  ? tr("Withdraw to start (%1 mm)").arg(*status_.lastRunStart_mm, 0, 'f', 1)
-                                  : tr("Withdraw to start"));
+                                  ? tr("To start (%1 mm)").arg(num(*status_.lastRunStart_mm, 1))
+                                  : tr("To start"));
     withdrawToStart_->setToolTip(!out.enabled ? tr("Not now: %1").arg(out.reason)
                                  : deeper     ? tr("Moves the needle out to where the last run began (not recorded)")
                                               : tr("The needle is not deeper than where the last run began."));

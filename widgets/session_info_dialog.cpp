@@ -1,5 +1,7 @@
 #include "session_info_dialog.h"
 
+#include "core/data_names.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -22,9 +24,14 @@ SessionInfoDialog::SessionInfoDialog(Mode mode, const SessionInfo& info, const Q
     specimen_->setObjectName(QStringLiteral("specimen"));
     tip_->setObjectName(QStringLiteral("tip"));
     tip_->setEditable(true);
-    // Tip names are data (run metadata, fits group by them): never translated.
-    tip_->addItems({QString(), QStringLiteral("beveled"), QStringLiteral("diamond"), QStringLiteral("blunt")});
-    tip_->setCurrentText(info.tip);
+    // Tip names are data (run metadata, fits group by them): shown translated, stored as they are.
+    tip_->addItem(QString(), QString());
+    for (const QString& tip : {QStringLiteral("beveled"), QStringLiteral("diamond"), QStringLiteral("blunt")})
+        tip_->addItem(tipDisplayName(tip), tip);
+    if (const int known = tip_->findData(info.tip); known >= 0)
+        tip_->setCurrentIndex(known);
+    else
+        tip_->setCurrentText(info.tip);
     thickness_->setObjectName(QStringLiteral("thickness"));
     thickness_->setRange(0, 500);
     thickness_->setSuffix(tr(" mm"));
@@ -68,7 +75,10 @@ SessionInfo SessionInfoDialog::info() const
     SessionInfo i = original_;
     i.organ = organ_->text().trimmed();
     i.specimen = specimen_->text().trimmed();
-    i.tip = tip_->currentText().trimmed();
+    // A known tip by its shown name gives its stored name; anything typed is kept as typed.
+    const QString tip = tip_->currentText().trimmed();
+    const int known = tip_->findText(tip);
+    i.tip = known >= 0 ? tip_->itemData(known).toString() : tip;
     i.thickness_mm = thickness_->value();
     i.operatorName = operator_->text().trimmed();
     i.protocol = protocol_->text().trimmed();

@@ -1,5 +1,7 @@
 #include "session_view.h"
 
+#include "core/data_names.h"
+
 #include <QBrush>
 #include <QHeaderView>
 #include <QLabel>
@@ -35,10 +37,10 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const
         switch (index.column()) {
         case Number: return r.number;
         case File: return r.fileName;
-        case Motion: return r.motion;
+        case Motion: return motionDisplayName(r.motion);
         case State:
             return (!busy_.isEmpty() && r.path == busy_) ? tr("recording") : runStateName(r.state);
-        case Calibration: return r.calibration;
+        case Calibration: return calibrationDisplayName(r.calibration);
         case Modified: return QLocale().toString(r.modified, QLocale::ShortFormat);
         }
     } else if (role == Qt::ToolTipRole) {

@@ -1,5 +1,7 @@
 #include "simulated_rig_dialog.h"
 
+#include "core/data_names.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -19,13 +21,14 @@ SimulatedRigDialog::SimulatedRigDialog(const devices::SimulatedRigSpec& spec, do
     auto* form = new QFormLayout;
     tissue_ = new QComboBox(this);
     tissue_->setObjectName(QStringLiteral("tissue"));
-    tissue_->addItems(devices::simulatedTissues());
-    tissue_->setCurrentText(spec.tissue);
+    for (const QString& t : devices::simulatedTissues())
+        tissue_->addItem(tissueDisplayName(t), t);
+    tissue_->setCurrentIndex(std::max(0, tissue_->findData(spec.tissue)));
     tip_ = new QComboBox(this);
     tip_->setObjectName(QStringLiteral("tip"));
     tip_->addItem(tr("the preset's usual tip"), QString());
     for (const QString& t : devices::tipNames())
-        tip_->addItem(t, t);
+        tip_->addItem(tipDisplayName(t), t);
     tip_->setCurrentIndex(std::max(0, tip_->findData(spec.tip)));
     seed_ = new QSpinBox(this);
     seed_->setObjectName(QStringLiteral("seed"));
@@ -58,7 +61,7 @@ SimulatedRigDialog::SimulatedRigDialog(const devices::SimulatedRigSpec& spec, do
 devices::SimulatedRigSpec SimulatedRigDialog::spec() const
 {
     devices::SimulatedRigSpec s = base_;
-    s.tissue = tissue_->currentText();
+    s.tissue = tissue_->currentData().toString();
     s.tip = tip_->currentData().toString();
     s.seed = quint64(seed_->value());
     return s;

@@ -1,4 +1,5 @@
 #include "devices/sim/simulated_rig.h"
+#include "core/data_names.h"
 #include "core/tr.h"
 
 #include <QCoreApplication>
@@ -16,7 +17,7 @@ DeviceSet simulatedDeviceSet(const std::shared_ptr<SimulatedRig>& rig)
     const RigConfig& config = rig->config();
     set.nominalSlope_V_per_g = config.sensor.slope_V_per_g();
     set.description = nb::TrDevices::tr("simulated rig (%1, %2 tip, seed %3%4)")
-                          .arg(config.tissue, tipName(config.tip))
+                          .arg(config.tissue, tipDisplayName(tipName(config.tip)))
                           .arg(config.seed)
                           .arg(config.realtime ? QString() : nb::TrDevices::tr(", simulated clock"));
     return set;

@@ -427,7 +427,7 @@ private slots:
             auto* d = qobject_cast<QDialog*>(QApplication::activeModalWidget());
             auto* tissue = d->findChild<QComboBox*>(QStringLiteral("tissue"));
             tissue->setCurrentIndex(tissue->count() > 1 ? 1 : 0);
-            chosen = tissue->currentText();
+            chosen = tissue->currentData().toString();  // the stored name (the shown one is translated)
             d->findChild<QSpinBox*>(QStringLiteral("seed"))->setValue(7);
             d->accept();
         });

@@ -7,6 +7,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QSignalSpy>
+#include <QLocale>
 #include <QtTest>
 
 using nb::Control;
@@ -168,10 +169,19 @@ private slots:
         QVERIFY(!startButton->isEnabled());
         QVERIFY(panel.button(Control::StopMotion)->isEnabled());
         QVERIFY(!panel.button(Control::EndRun)->isEnabled());
-        QVERIFY(panel.button(Control::Withdraw)->text().contains(QStringLiteral("recorded in this run")));
+        QVERIFY(panel.button(Control::Withdraw)->text() == QStringLiteral("Withdraw (recorded)"));
         QVERIFY(panel.findChild<QLabel*>(QStringLiteral("status_margin"))->text().startsWith(QStringLiteral("0.50 N")));
         QVERIFY(!panel.findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->isEnabled());
         QVERIFY(estopButton->isEnabled());
+
+        // Numbers in the status are written as in the fields beside them: 4,500 N in German.
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        s.rateHz = 10000.0;
+        panel.setStatus(s);
+        QCOMPARE(panel.findChild<QLabel*>(QStringLiteral("status_force"))->text(), QStringLiteral("4,500 N"));
+        QCOMPARE(panel.findChild<QLabel*>(QStringLiteral("status_devices"))->text(), QStringLiteral("10000 Hz"));
+        QLocale::setDefault(before);
     }
 };
 

@@ -16,6 +16,7 @@
 #include "widgets/force_plots.h"
 #include "widgets/session_info_dialog.h"
 #include "widgets/session_view.h"
+#include "widgets/simulated_rig_dialog.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
@@ -177,7 +178,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(w.plots()->sampleCount() > before + 300, 20000);
         QVERIFY(p->interlockState().recording);  // the stop did not close the run
         QCOMPARE(w.runsEnded(), 0);
-        QVERIFY(p->button(Control::Withdraw)->text().contains(QStringLiteral("recorded in this run")));
+        QVERIFY(p->button(Control::Withdraw)->text() == QStringLiteral("Withdraw (recorded)"));
         QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::EndRun)->isEnabled(), 20000);
         QTest::mouseClick(p->button(Control::EndRun), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
@@ -356,11 +357,47 @@ private slots:
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             QCOMPARE(w.controlPanel()->button(Control::EmergencyStop)->text(), QStringLiteral("NOT-HALT (Esc)"));
-            QCOMPARE(w.controlPanel()->button(Control::EndRun)->text(), QStringLiteral("Lauf beenden (schließt die Datei)"));
+            QCOMPARE(w.controlPanel()->button(Control::EndRun)->text(), QStringLiteral("Lauf beenden (Datei zu)"));
             QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
             // Interlock reasons (free functions) are translated too.
             QVERIFY(w.controlPanel()->button(Control::StartInsertion)->toolTip().contains(QStringLiteral("Zuerst die Achse einschalten")));
+            // The calibration's name goes into every run file: the same words in every language,
+            // shown translated.
+            QCOMPARE(w.engine()->status().calibrationName, QStringLiteral("nominal (device)"));
+            QTRY_COMPARE(w.controlPanel()->findChild<QLabel*>(QStringLiteral("status_calibration"))->text(), QStringLiteral("nominal (Gerät)"));
+            QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("Spitze: abgeschrägt")), qPrintable(w.engine()->deviceDescription()));
             QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_de.png")));
+        }
+        {
+            // Data names (tips, tissue presets) are shown in German and stored as they are.
+            nb::SessionInfo info;
+            info.tip = QStringLiteral("beveled");
+            nb::SessionInfoDialog d(nb::SessionInfoDialog::Mode::Edit, info);
+            auto* tip = d.findChild<QComboBox*>(QStringLiteral("tip"));
+            QCOMPARE(tip->currentText(), QStringLiteral("abgeschrägt"));
+            QCOMPARE(d.info().tip, QStringLiteral("beveled"));
+            tip->setCurrentText(QStringLiteral("stumpf"));
+            QCOMPARE(d.info().tip, QStringLiteral("blunt"));
+            tip->setCurrentText(QStringLiteral("Trokar"));  // a tip of the operator's own
+            QCOMPARE(d.info().tip, QStringLiteral("Trokar"));
+
+            nb::devices::SimulatedRigSpec spec;
+            spec.tissue = QStringLiteral("liver2");
+            spec.tip = QStringLiteral("diamond");
+            nb::SimulatedRigDialog rig(spec, 1000.0);
+            auto* tissue = rig.findChild<QComboBox*>(QStringLiteral("tissue"));
+            QCOMPARE(tissue->currentText(), QStringLiteral("Leber 2"));
+            QCOMPARE(rig.findChild<QComboBox*>(QStringLiteral("tip"))->currentText(), QStringLiteral("Diamantschliff"));
+            QCOMPARE(rig.spec().tissue, QStringLiteral("liver2"));
+            QCOMPARE(rig.spec().tip, QStringLiteral("diamond"));
+            tissue->setCurrentIndex(tissue->findText(QStringLiteral("Prostata")));
+            QCOMPARE(rig.spec().tissue, QStringLiteral("prostate"));
+            // No stored English name is shown anywhere in either dialog.
+            const QStringList stored = nb::devices::simulatedTissues() + nb::devices::tipNames();
+            for (const QDialog* dialog : std::initializer_list<const QDialog*>{&d, &rig})
+                for (const QComboBox* box : dialog->findChildren<QComboBox*>())
+                    for (int i = 0; i < box->count(); ++i)
+                        QVERIFY2(!stored.contains(box->itemText(i)), qPrintable(box->itemText(i)));
         }
         for (QTranslator* t : QCoreApplication::instance()->findChildren<QTranslator*>())
             QCoreApplication::removeTranslator(t);

@@ -8,6 +8,7 @@
 #include "core/export/export_error.h"
 #include "core/run_file.h"
 #include "core/run_judgement.h"
+#include "core/data_names.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -88,7 +89,8 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
             auto* item = new QStandardItem;
             if (c < row.size()) {
                 if (const auto* s = std::get_if<QString>(&row[c])) {
-                    item->setText(*s);
+                    // A tip is data ("beveled" in the exported table), said in the operator's language here.
+                    item->setText(t.columns[c].key == QLatin1String("tip") ? tipDisplayName(*s) : *s);
                     // Outliers and failed fits stand out; other text columns are just text.
                     if ((t.columns[c].key == QLatin1String("outlier") && !s->isEmpty()) ||
                         *s == nb::TrViews::tr("not fitted"))
@@ -138,7 +140,8 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     statusScroll->setFrameShape(QFrame::NoFrame);
     statusScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     leftLayout->addWidget(statusScroll, 1);
-    left->setMinimumWidth(160);
+    // The switch's two lines never clip (German is wider than the 160 px the list needs).
+    left->setMinimumWidth(std::max(160, includeJudgedOut_->sizeHint().width()));
     split->addWidget(left);
 
     tabs_ = new QTabWidget(split);
@@ -148,6 +151,7 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     frictionSummaryModel_ = new QStandardItemModel(this);
     validationModel_ = new QStandardItemModel(this);
 
+    std::vector<QTabWidget*> tableTabs;
     auto addTab = [&](const QString& title, QComboBox*& chooser, const QString& chooserLabel,
                       std::initializer_list<QCustomPlot**> plots, std::initializer_list<QStandardItemModel*> models) {
         auto* page = new QWidget(tabs_);
@@ -172,11 +176,26 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
             plotRow->addWidget(*p);
         }
         body->addWidget(plotRow);
-        for (QStandardItemModel* m : models)
-            body->addWidget(tableView(m, body));
-        body->setStretchFactor(0, 3);
-        // The figure first: on a laptop the tables get what is left (they scroll).
-        body->setSizes(models.size() > 1 ? QList<int>{600, 150, 150} : QList<int>{600, 200});
+        // Two tables share one place as tabs: on a laptop the figure keeps its height, and each
+        // table shows more than a row.
+        if (models.size() > 1) {
+            auto* tables = new QTabWidget(body);
+            tables->setDocumentMode(true);
+            tables->setObjectName(QStringLiteral("analysisTables"));
+            for (QStandardItemModel* m : models)
+                tables->addTab(tableView(m, tables), QString());
+            body->addWidget(tables);
+            tableTabs.push_back(tables);
+        } else {
+            for (QStandardItemModel* m : models)
+                body->addWidget(tableView(m, body));
+        }
+        // The figure first: two thirds of the height, whatever the window's size, and the
+        // tables (which scroll) the rest. Without the tables' share every change of the
+        // window's height went to the figure, down to its minimum on a laptop.
+        body->setStretchFactor(0, 2);
+        body->setStretchFactor(1, 1);
+        body->setSizes({400, 200});
         v->addWidget(body, 1);
         tabs_->addTab(page, title);
         connect(fig, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentFigure);
@@ -185,6 +204,10 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     addTab(tr("Stiffness"), stiffnessGroup_, tr("Tissue:"), {&stiffnessPlot_}, {stiffnessRunsModel_, stiffnessPooledModel_});
     addTab(tr("Friction"), frictionRun_, tr("Run:"), {&frictionPlot_, &phasesPlot_}, {frictionRunsModel_, frictionSummaryModel_});
     addTab(tr("Validation"), validationRun_, tr("Run:"), {&validationPlot_}, {validationModel_});
+    tableTabs[0]->setTabText(0, tr("Per run"));
+    tableTabs[0]->setTabText(1, tr("Pooled per tissue"));
+    tableTabs[1]->setTabText(0, tr("Per run"));
+    tableTabs[1]->setTabText(1, tr("Summary"));
     split->addWidget(tabs_);
     split->setStretchFactor(1, 1);
     split->setSizes({200, 900});

@@ -1,0 +1,44 @@
+#include "data_names.h"
+
+#include "core/tr.h"
+
+#include <QRegularExpression>
+
+namespace nb {
+
+QString tipDisplayName(const QString& tip)
+{
+    if (tip == QLatin1String("beveled"))
+        return nb::TrCore::tr("beveled");
+    if (tip == QLatin1String("diamond"))
+        return nb::TrCore::tr("diamond");
+    if (tip == QLatin1String("blunt"))
+        return nb::TrCore::tr("blunt");
+    return tip;
+}
+
+QString tissueDisplayName(const QString& tissue)
+{
+    static const QRegularExpression liver(QStringLiteral("^liver(\\d+)$"));
+    if (const auto m = liver.match(tissue); m.hasMatch())
+        return nb::TrCore::tr("Liver %1").arg(m.captured(1));
+    if (tissue == QLatin1String("prostate"))
+        return nb::TrCore::tr("Prostate");
+    return tissue;
+}
+
+QString motionDisplayName(const QString& motion)
+{
+    if (motion == QLatin1String("linear"))
+        return nb::TrCore::tr("linear");
+    if (motion == QLatin1String("sine"))
+        return nb::TrCore::tr("sine");
+    return motion;
+}
+
+QString calibrationDisplayName(const QString& calibration)
+{
+    return calibration == QLatin1String(kNominalCalibration) ? nb::TrCore::tr("nominal (device)") : calibration;
+}
+
+}  // namespace nb

@@ -1,0 +1,24 @@
+#pragma once
+// Data values that files store in English (needle tips, simulated tissue presets, motions, the
+// nominal calibration) said in the operator's language. The stored value never changes:
+// "beveled" stays "beveled" in session.json and in every run file; only what is shown is
+// translated.
+
+#include <QString>
+
+namespace nb {
+
+// "beveled" → "beveled" / "abgeschrägt"; an unknown tip is shown as stored.
+QString tipDisplayName(const QString& tip);
+// "liver2" → "Liver 2" / "Leber 2", "prostate" → "Prostate" / "Prostata".
+QString tissueDisplayName(const QString& tissue);
+
+// "linear" → "linear", "sine" → "sine" / "Sinus".
+QString motionDisplayName(const QString& motion);
+// The name a run file gives the device's own calibration ("nominal (device)"), translated;
+// a calibration of the operator's naming is shown as named.
+QString calibrationDisplayName(const QString& calibration);
+// What the acquisition engine stores as the calibration before one is chosen.
+inline constexpr char kNominalCalibration[] = "nominal (device)";
+
+}  // namespace nb
