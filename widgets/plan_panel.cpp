@@ -130,8 +130,10 @@ void PlanPanel::setView(const PlanPanelView& v)
     zero_->setChecked(v.zeroDone);
     for (QCheckBox* b : {instruction_, bias_, zero_})
         b->setEnabled(ready && !v.recording);
+    bias_->setVisible(!v.next.isEmpty());
+    zero_->setVisible(!v.next.isEmpty());
     skip_->setEnabled(ready && !v.recording);
-    redo_->setEnabled(v.walking && !v.recording && !v.redoWhat.isEmpty());
+    redo_->setEnabled(!v.recording && !v.redoWhat.isEmpty());
     redo_->setToolTip(v.redoWhat.isEmpty() ? tr("No run of the plan is done yet") : tr("Makes %1 again, with a reason").arg(v.redoWhat));
     leave_->setText(v.walking ? tr("Leave plan") : tr("Return to plan"));
     leave_->setToolTip(v.walking ? tr("Releases the control panel's settings; runs made meanwhile are not the plan's")

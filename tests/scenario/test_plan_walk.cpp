@@ -21,6 +21,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QDialogButtonBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -305,6 +306,28 @@ private slots:
         QCOMPARE(skipped.runs[3].reason, QStringLiteral("vessel at site 4"));
         QCOMPARE(velocity->value(), 10.0);
         QVERIFY(p->motionLocked());
+
+        // Redo asks for a reason and makes the run done last (three) again; its attempt stays.
+        QVERIFY(w.planPanel()->redoButton()->isEnabled());
+        QTest::mouseClick(w.planPanel()->redoButton(), Qt::LeftButton);
+        nb::PlanReasonDialog* redoDialog = nullptr;
+        QTRY_VERIFY([&] {
+            for (auto* d : w.planPanel()->findChildren<nb::PlanReasonDialog*>())
+                if (d->isVisible())
+                    redoDialog = d;
+            return redoDialog != nullptr;
+        }());
+        QVERIFY(!redoDialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->isEnabled());  // no reason yet
+        QTest::keyClicks(redoDialog->edit(), QStringLiteral("air bubble in the trace"));
+        redoDialog->accept();
+        QTRY_COMPARE(walker->nextRun()->number, 3);
+        QVERIFY(w.planPanel()->progressText().startsWith(QStringLiteral("Run 3 of 5 · ")));
+        const nb::Plan redone = readPlan(sessionDir);
+        QCOMPARE(redone.runs[2].status, nb::PlanRunStatus::Pending);
+        QCOMPARE(int(redone.runs[2].attempts.size()), 1);
+        QCOMPARE(redone.runs[2].attempts[0].discarded, QStringLiteral("air bubble in the trace"));
+        QVERIFY(QFileInfo::exists(QDir(sessionDir).filePath(redone.runs[2].attempts[0].runFile)));
+        QCOMPARE(redone.runs[3].status, nb::PlanRunStatus::Skipped);
     }
 
     void planFromTemplateThroughTheMenu()
