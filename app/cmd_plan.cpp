@@ -9,6 +9,7 @@
 #include "core/export/dataset_loader.h"
 #include "core/export/export_error.h"
 #include "core/export/factor_analysis.h"
+#include "core/plan_session.h"
 #include "core/export/session_analysis.h"
 #include "core/plan.h"
 #include "core/run_file.h"
@@ -29,7 +30,7 @@ namespace nb::cli {
 
 namespace {
 
-const QString kPlanFile = QStringLiteral("plan.json");
+const QString kPlanFile = planFileName();
 
 int usage(Io io, const QString& sub, const QString& why)
 {
@@ -348,25 +349,10 @@ int cmdRun(const QStringList& args, Io io)
             io.out << nb::TrCli::tr("recovered %1").arg(line) << '\n';
         for (const QString& line : problems)
             io.err << line << '\n';
-        // Killed after its run had ended and been tagged, before plan.json said so: keep it.
-        for (std::size_t i = 0; i < plan.runs.size(); ++i) {
-            const PlannedRun& r = plan.runs[i];
-            if (r.status != PlanRunStatus::Running || r.attempts.empty())
-                continue;
-            const QString file = QDir(s->dir()).filePath(r.attempts.back().runFile);
-            try {
-                const Run run = readRunFile(file).run;
-                const QString end = run.meta(QStringLiteral("end_reason")).value_or(QString());
-                if (run.meta(QStringLiteral("plan_run")) == QString::number(r.number) &&
-                    run.meta(QStringLiteral("plan_attempt")) == QString::number(r.attempts.size()) && isCompletingEndReason(end)) {
-                    finishAttempt(plan, int(i), end, QFileInfo(file).lastModified().toUTC());
-                    io.out << nb::TrCli::tr("run %1 had ended before the interruption: %2").arg(r.number).arg(r.attempts.back().runFile) << '\n';
-                }
-            } catch (const RunFileError&) {
-                // Absent or cut off: the run is done again.
-            }
-        }
-        for (int n : recoverInterruptedRuns(plan))
+        const PlanResumption resumed = resumePlan(plan, s->dir());
+        for (const auto& [number, file] : resumed.endedBefore)
+            io.out << nb::TrCli::tr("run %1 had ended before the interruption: %2").arg(number).arg(file) << '\n';
+        for (int n : resumed.interrupted)
             io.out << nb::TrCli::tr("run %1 was interrupted; it runs again").arg(n) << '\n';
         writePlanFile(planPath, plan);
     } catch (const PlanError& e) {

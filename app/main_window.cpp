@@ -106,6 +106,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     // The control panel (with the E-stop and the status) gets the full height of the window.
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
     resizeDocks({sessionDock_}, {190}, Qt::Vertical);
+    buildPlanDock();
 
     statusLabel_ = new QLabel(this);
     statusBar()->addPermanentWidget(statusLabel_);
@@ -192,7 +193,11 @@ void MainWindow::attachEngine()
         sessionView_->refresh();
     });
     connect(e, &devices::AcquisitionEngine::runEnded, this, &MainWindow::onRunEnded);
-    connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) { showMessage(why, true); });
+    connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) {
+        showMessage(why, true);
+        if (!engine_->status().recording)
+            endPlanRun(QStringLiteral("not started"));
+    });
     connect(e, &devices::AcquisitionEngine::faultOccurred, this, [this](const QString& device, const QString& reason) {
         showMessage(tr("Fault: %1: %2").arg(device, reason), true);
         liveRun_->mark(devices::LiveMarkKind::Fault);
@@ -263,6 +268,7 @@ void MainWindow::buildMenus()
     sessionMenu->addAction(tr("&Open session…"), QKeySequence::Open, this, &MainWindow::openSessionDialog);
     sessionMenu->addAction(tr("Session &details…"), this, &MainWindow::editSessionDetails);
     addDayActions(sessionMenu);
+    addPlanActions(sessionMenu);
     sessionMenu->addSeparator();
     sessionMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -291,6 +297,7 @@ void MainWindow::buildMenus()
     auto* view = menuBar()->addMenu(tr("&View"));
     view->addAction(panelDock_->toggleViewAction());
     view->addAction(sessionDock_->toggleViewAction());
+    view->addAction(planDock_->toggleViewAction());
     view->addSeparator();
     auto* language = view->addMenu(tr("&Language"));
     auto* group = new QActionGroup(this);
@@ -340,6 +347,7 @@ bool MainWindow::openSession(const QString& dir)
         QSettings().setValue(QStringLiteral("session/last"), session_->dir());
         rememberRecentSession(session_->dir());
     }
+    openSessionPlan();
     return true;
 }
 
@@ -542,6 +550,8 @@ void MainWindow::startRun()
     for (const auto& [k, v] : sm.entries())
         plan.metadata.set(k, v);
     plan.metadata.set(key::session, QDir(session_->dir()).dirName());
+    if (!beginPlanRun(plan))
+        return;
     runIsLinear_ = plan.motion == devices::RunPlan::Motion::Linear;
     addRigMetadata(plan);
     noteMotionCommand();
@@ -551,6 +561,7 @@ void MainWindow::startRun()
 void MainWindow::onStatus(const devices::EngineStatus& s)
 {
     panel_->setStatus(s);
+    planStatus(s);
     if (wizard_)
         wizard_->setDeviceTime(s.deviceTime_s);
     statusLabel_->setText(tr("%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn")
@@ -568,6 +579,7 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
     sessionView_->setBusyPath({});
     lastRunPath_ = summary.path;
     lastEndReason_ = fileName(summary.endReason);
+    endPlanRun(lastEndReason_);
     ++runsEnded_;
     // The file's name: the session's folder is on screen, and a whole path pushed the run's
     // end reason out of the status bar at 1366 px.

@@ -39,6 +39,9 @@ class ReviewWorkspace;
 class AnalysisWorkspace;
 class ExportDialog;
 class WelcomeDialog;
+class PlanPanel;
+class PlanWalker;
+struct Plan;
 
 struct WorkbenchOptions {
     bool realtime = true;             // false: the simulated rig runs as fast as it can (tests)
@@ -113,6 +116,13 @@ public:
     ExportDialog* exportSession();
     // The welcome: new session, open one, or a recent one.
     WelcomeDialog* showWelcome();
+    // The experiment plan walked in this window (issue 16; main_window_plan.cpp).
+    PlanWalker* planWalker() const { return planWalker_; }
+    PlanPanel* planPanel() const { return planPanel_; }
+    // Session ▸ New plan from template…: the dialog, then startPlan() with the plan made.
+    void newPlanDialog();
+    // Makes `plan` the session's plan.json and walks it (false with a message when refused).
+    bool startPlan(const Plan& plan);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -146,6 +156,19 @@ private:
     void zeroOrInsist();
     void noteMotionCommand() { motionCommand_.start(); }
     devices::DeviceSpec currentSpec() const;
+    // The plan walker's part (main_window_plan.cpp): its dock and menu entries, the session's
+    // plan on opening, the next run's settings set and locked, each plan run's attempt.
+    void buildPlanDock();
+    void addPlanActions(QMenu* sessionMenu);
+    void openSessionPlan();
+    void armPlanRun();
+    void showPlan();
+    // At Start: the plan run's file and metadata into `plan`; false when refused (message shown).
+    bool beginPlanRun(devices::RunPlan& plan);
+    void endPlanRun(const QString& endReason);
+    void planStatus(const devices::EngineStatus& status);
+    // The simulated rig the next plan run asks for, once the rig is at rest.
+    void applyPlanRig();
     // The simulated rig's preset, tip and seed in the run's metadata (sim_tissue, sim_tip, sim_seed).
     void addRigMetadata(devices::RunPlan& plan) const;
 
@@ -171,6 +194,10 @@ private:
     QString nominalSensor_;
     QElapsedTimer motionCommand_;  // since the last motion the window asked for (status lags)
     std::shared_ptr<devices::DeviceSpec> spec_;  // the devices the engine runs on (null: the factory's)
+    PlanWalker* planWalker_ = nullptr;
+    PlanPanel* planPanel_ = nullptr;
+    QDockWidget* planDock_ = nullptr;
+    bool planRigPending_ = false;
 };
 
 }  // namespace nb

@@ -126,15 +126,13 @@ PlannedRunOutcome runSimulated(const PlannedRunRequest& r)
     if (s.contains(QStringLiteral("bone_depth_mm")))
         q.rig.boneDepth_mm = s.value(QStringLiteral("bone_depth_mm")).toDouble();
     q.rateHz = s.value(QStringLiteral("rate_hz")).toDouble(500.0);
-    q.velocity_mm_s = s.value(QStringLiteral("velocity_mm_s")).toDouble(internal ? 2.5 : 4.0);
-    q.depth_mm = s.value(QStringLiteral("depth_mm")).toDouble(40.0);
-    q.sine = {s.value(QStringLiteral("amplitude_mm")).toDouble(10.0), s.value(QStringLiteral("frequency_hz")).toDouble(0.5),
-              int(s.value(QStringLiteral("cycles")).toDouble(7.0))};
+    const devices::RunPlan motion = runPlanForSettings(s);
+    q.velocity_mm_s = motion.linear.velocity_mm_s;
+    q.depth_mm = motion.linear.target_mm;
+    q.sine = motion.sine;
     q.maxForce_N = s.value(QStringLiteral("max_force_n")).toDouble(8.0);
-    const QString stopAt = s.value(QStringLiteral("stop_at")).toString();
-    if (stopAt.startsWith(QLatin1String("puncture")))
-        q.stopAtPuncture = stopAt.contains(QLatin1Char(':')) ? stopAt.section(QLatin1Char(':'), 1).toInt() : 1;
-    q.slowAfterPuncture_mm_s = s.value(QStringLiteral("slow_after_puncture_mm_s")).toDouble(0.0);
+    q.stopAtPuncture = motion.stopAtPuncture;
+    q.slowAfterPuncture_mm_s = motion.slowAfterPuncture_mm_s;
     q.out = r.runFile;
     q.truth = r.truthFile;
     q.video = r.videoFile;
@@ -156,6 +154,38 @@ PlannedRunOutcome runSimulated(const PlannedRunRequest& r)
 }
 
 }  // namespace
+
+devices::RunPlan runPlanForSettings(const QJsonObject& s)
+{
+    devices::RunPlan plan;
+    const bool internal = s.value(QStringLiteral("protocol")).toString() == QLatin1String("internal");
+    const bool sine = s.value(QStringLiteral("motion")).toString() == QLatin1String("sine") ||
+                      (!s.contains(QStringLiteral("motion")) && s.value(QStringLiteral("protocol")).toString() == QLatin1String("friction"));
+    plan.motion = sine ? devices::RunPlan::Motion::Sine : devices::RunPlan::Motion::Linear;
+    plan.linear.velocity_mm_s = s.value(QStringLiteral("velocity_mm_s")).toDouble(internal ? 2.5 : 4.0);
+    plan.linear.target_mm = s.value(QStringLiteral("depth_mm")).toDouble(40.0);
+    plan.sine = {s.value(QStringLiteral("amplitude_mm")).toDouble(10.0), s.value(QStringLiteral("frequency_hz")).toDouble(0.5),
+                 int(s.value(QStringLiteral("cycles")).toDouble(7.0))};
+    const QString stopAt = s.value(QStringLiteral("stop_at")).toString();
+    if (stopAt.startsWith(QLatin1String("puncture")))
+        plan.stopAtPuncture = stopAt.contains(QLatin1Char(':')) ? stopAt.section(QLatin1Char(':'), 1).toInt() : 1;
+    plan.slowAfterPuncture_mm_s = s.value(QStringLiteral("slow_after_puncture_mm_s")).toDouble(0.0);
+    return plan;
+}
+
+devices::SimulatedRigSpec simulatedRigForSettings(const QJsonObject& s, devices::SimulatedRigSpec rig)
+{
+    const QString protocol = s.value(QStringLiteral("protocol")).toString();
+    const bool friction = protocol == QLatin1String("friction");
+    rig.tissue = s.contains(QStringLiteral("tissue"))         ? s.value(QStringLiteral("tissue")).toString()
+                 : protocol == QLatin1String("prostate")      ? QStringLiteral("prostate")
+                 : (protocol == QLatin1String("internal") || friction) ? QStringLiteral("liver7")
+                                                               : QStringLiteral("liver1");
+    rig.tip = s.value(QStringLiteral("tip")).toString();
+    rig.setup = friction ? QStringLiteral("platform") : QStringLiteral("organ");
+    rig.seed = quint64(s.value(QStringLiteral("seed")).toDouble(1.0));
+    return rig;
+}
 
 PlannedRunOutcome runPlannedRun(const PlannedRunRequest& request)
 {

@@ -6,6 +6,8 @@
 
 #include "commands.h"
 #include "core/run.h"
+#include "devices/acquisition_engine.h"
+#include "devices/device_spec.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -30,6 +32,17 @@ struct PlannedRunOutcome {
 };
 
 PlannedRunOutcome runPlannedRun(const PlannedRunRequest& request);
+
+// The motion of a run from its settings, with the simulate command's defaults for what they
+// leave out (velocity 4 mm/s, 2.5 for the internal protocol; depth 40 mm; sine 10 mm, 0.5 Hz,
+// 7 cycles), and its stop at puncture / slow-down. No path, no metadata. The window's plan
+// walker sets the control panel from it; `plan run` on the simulated rig moves by it.
+devices::RunPlan runPlanForSettings(const QJsonObject& settings);
+
+// The simulated rig a run's settings ask for, as `plan run` makes it: tissue (by protocol when
+// absent), tip (the preset's usual one when absent), seed, and the friction platform for the
+// friction protocol, the whole organ otherwise. `base` gives what the settings do not.
+devices::SimulatedRigSpec simulatedRigForSettings(const QJsonObject& settings, devices::SimulatedRigSpec base);
 
 // The `simulate` / `acquire` arguments for a run's settings (exposed for tests and --help).
 QStringList plannedRunArguments(const PlannedRunRequest& request, bool simulated);

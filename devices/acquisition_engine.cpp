@@ -55,6 +55,7 @@ struct AcquisitionEngine::State {
     std::unique_ptr<SampleProcessor> proc;
     QString calibrationName;
     bool enabled = false, zeroed = false, latched = false;
+    std::uint64_t biasCount = 0, zeroCount = 0;
     double noiseBand_N = 0.05;
     std::optional<double> contactDepth_mm;
     std::optional<double> lastRunStart_mm;
@@ -224,6 +225,7 @@ void AcquisitionEngine::zeroStage(bool insist)
         }
         s.dev.stage->zero();
         s.zeroed = true;
+        ++s.zeroCount;
         s.contactDepth_mm.reset();  // depths before the zero mean nothing now
         s.lastRunStart_mm.reset();
         s.proc->forgetStageHistory();
@@ -503,6 +505,8 @@ EngineStatus AcquisitionEngine::snapshot() const
     st.latched = s.latched;
     st.biased = s.proc->biased();
     st.zeroed = s.zeroed;
+    st.biasCount = s.biasCount;
+    st.zeroCount = s.zeroCount;
     st.moving = s.stage.moving;
     st.approaching = s.approach.has_value();
     st.jogging = s.jogging;
@@ -624,6 +628,7 @@ void AcquisitionEngine::handle(const ProcessorEvent& e)
     switch (e.kind) {
     case ProcessorEvent::Kind::BiasDone:
         s.statusDirty = true;
+        ++s.biasCount;
         emit message(tr("force sensor biased: V0 = %1 V (%2 samples)").arg(e.bias_V, 0, 'f', 5).arg(e.count));
         break;
     case ProcessorEvent::Kind::ForceLimit:

@@ -83,6 +83,8 @@ struct EngineStatus {
     QString realtimeWarning;     // empty when SCHED_FIFO + mlockall were granted
     QString runPath;
     std::uint64_t punctures = 0; // during the open run
+    // Biases and zeroes done since the engine started: "done since the last run" for a checklist.
+    std::uint64_t biasCount = 0, zeroCount = 0;
 
     // What the operator may do now, as far as the engine can tell (the window adds what it
     // knows: the session, the motion fields).

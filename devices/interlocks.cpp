@@ -97,6 +97,8 @@ Permission permission(Control control, const InterlockState& s)
             return deny(nb::TrDevices::tr("The stage is moving."));
         if (!s.motionProblem.isEmpty())
             return deny(s.motionProblem);
+        if (!s.planHold.isEmpty())
+            return deny(s.planHold);
         return allow();
     case Control::Withdraw:
         if (s.latched)

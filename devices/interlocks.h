@@ -23,6 +23,7 @@ struct InterlockState {
     double forceLimit_N = 0.0;
     bool sessionOpen = false;
     QString motionProblem;        // why the chosen motion parameters are invalid; empty when valid
+    QString planHold;             // what the plan being walked needs before its next run (its checklist); empty when nothing
     // Bias and zero make sense only with the needle free: not while the force is above the
     // noise band, nor past the depth where the last insertion met tissue.
     bool loaded = false;

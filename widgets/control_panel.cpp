@@ -21,6 +21,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 // The icons live in a static library: their resource must be registered by hand.
 static void initResources() { Q_INIT_RESOURCE(resources); }
 
@@ -347,7 +349,51 @@ devices::RunPlan ControlPanel::motionPlan() const
         plan.metadata.set(QStringLiteral("velocity_mm_s"), velocity_->value());
         plan.metadata.set(QStringLiteral("depth_mm"), depth_->value());
     }
+    if (locked_) {
+        plan.stopAtPuncture = locked_->stopAtPuncture;
+        plan.slowAfterPuncture_mm_s = locked_->slowAfterPuncture_mm_s;
+    }
     return plan;
+}
+
+QString ControlPanel::lockMotion(const devices::RunPlan& plan, const QString& why)
+{
+    const bool sine = plan.motion == devices::RunPlan::Motion::Sine;
+    const std::pair<QDoubleSpinBox*, double> values[] = {{velocity_, plan.linear.velocity_mm_s}, {depth_, plan.linear.target_mm},
+                                                         {amplitude_, plan.sine.amplitude_mm},   {frequency_, plan.sine.frequency_hz}};
+    for (const auto& [box, v] : values)
+        if (v < box->minimum() || v > box->maximum() || std::abs(std::round(v * std::pow(10.0, box->decimals())) / std::pow(10.0, box->decimals()) - v) > 1e-9)
+            return tr("%1 %2 cannot be set here (%3 to %4 in steps of %5)")
+                .arg(box->objectName())
+                .arg(v)
+                .arg(box->minimum())
+                .arg(box->maximum())
+                .arg(std::pow(10.0, -box->decimals()));
+    if (plan.sine.cycles < cycles_->minimum() || plan.sine.cycles > cycles_->maximum())
+        return tr("%1 cycles cannot be set here (%2 to %3)").arg(plan.sine.cycles).arg(cycles_->minimum()).arg(cycles_->maximum());
+    (sine ? sine_ : linear_)->setChecked(true);
+    for (const auto& [box, v] : values)
+        box->setValue(v);
+    cycles_->setValue(plan.sine.cycles);
+    locked_ = plan;
+    lockReason_ = why;
+    motionBox_->setTitle(tr("2. Motion (set by the plan)"));
+    updateControls();
+    return {};
+}
+
+void ControlPanel::unlockMotion()
+{
+    locked_.reset();
+    lockReason_.clear();
+    motionBox_->setTitle(tr("2. Motion"));
+    updateControls();
+}
+
+void ControlPanel::setStartHold(const QString& reason)
+{
+    startHold_ = reason;
+    updateControls();
 }
 
 QString ControlPanel::motionName() const
@@ -427,6 +473,7 @@ void ControlPanel::setStatus(const devices::EngineStatus& s)
 void ControlPanel::updateControls()
 {
     state_.motionProblem = motionProblem();
+    state_.planHold = startHold_;
     for (auto& [control, b] : buttons_) {
         const Permission p = permission(control, state_);
         // Refused but insistable (bias or zero under load): clickable, the window asks first.
@@ -434,8 +481,8 @@ void ControlPanel::updateControls()
         b->setToolTip(p.enabled ? help_[control] : help_[control] + QStringLiteral("\n") + tr("Not now: %1").arg(p.reason));
     }
     const Permission motion = permission(Control::MotionSettings, state_);
-    motionBox_->setEnabled(motion.enabled);
-    motionBox_->setToolTip(motion.enabled ? QString() : motion.reason);
+    motionBox_->setEnabled(motion.enabled && !locked_);
+    motionBox_->setToolTip(!motion.enabled ? motion.reason : lockReason_);
     auto* enable = buttons_[Control::Enable];
     enable->setChecked(state_.stageEnabled);
     enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("&Enable stage"));

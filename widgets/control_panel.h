@@ -10,6 +10,7 @@
 
 #include <QWidget>
 #include <map>
+#include <optional>
 
 class QAbstractButton;
 class QButtonGroup;
@@ -46,6 +47,16 @@ public:
     // The sine's centre depth (where the run moves first, unrecorded).
     double sineCentre() const;
     void setSineCentre(double mm);
+
+    // A plan sets the next run's motion: the fields show `plan`'s and stay locked, with `why` in
+    // their tooltip, until unlockMotion(); motionPlan() then carries its stop at puncture too.
+    // Returns what the fields cannot hold (a value out of their range; nothing is locked then).
+    QString lockMotion(const devices::RunPlan& plan, const QString& why);
+    void unlockMotion();
+    bool motionLocked() const { return locked_.has_value(); }
+    // What must be done before Start besides the interlocks' own rules (a plan's checklist);
+    // empty: nothing. Start stays disabled with it in its tooltip.
+    void setStartHold(const QString& reason);
 
     void setStatus(const devices::EngineStatus& status);
     void setSessionOpen(bool open);
@@ -109,6 +120,8 @@ private:
     QWidget* jogBox_ = nullptr;
     std::map<QString, QLabel*> status_labels_;
     QString calibrationName_;
+    std::optional<devices::RunPlan> locked_;
+    QString lockReason_, startHold_;
 };
 
 }  // namespace nb

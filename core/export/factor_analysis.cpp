@@ -86,6 +86,17 @@ QString factorLevel(const Run& run, const QString& factor)
     return run.meta(factor).value_or(QString()).trimmed();
 }
 
+QStringList datasetFactors(const Dataset& dataset)
+{
+    const QString prefix = QStringLiteral("factor_");
+    QStringList names;
+    for (const DatasetRun& r : dataset.runs)
+        for (const auto& [key, value] : r.run.metadata.entries())
+            if (key.startsWith(prefix) && key.size() > prefix.size() && !names.contains(key.mid(prefix.size())))
+                names << key.mid(prefix.size());
+    return names;
+}
+
 std::vector<RunFactorValues> runFactorValues(const Dataset& dataset, const SessionAnalysis& analysis, const QStringList& factors,
                                              const FactorAnalysisOptions& options, QStringList* warnings)
 {

@@ -42,6 +42,10 @@ struct FactorAnalysisOptions {
 
 QString factorLevel(const Run& run, const QString& factor);
 
+// The factors a dataset's runs carry as `factor_<name>` metadata (a plan's runs), in the order
+// first met; empty for runs recorded without a plan.
+QStringList datasetFactors(const Dataset& dataset);
+
 // One entry per run with at least one fitted quantity, in the dataset's order. Warnings for
 // runs whose friction re-fit failed go to *warnings.
 std::vector<RunFactorValues> runFactorValues(const Dataset& dataset, const SessionAnalysis& analysis, const QStringList& factors,

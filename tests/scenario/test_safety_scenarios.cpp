@@ -181,7 +181,7 @@ private slots:
     {
         QTest::addColumn<QString>("which");
         for (const char* name : {"new session", "file chooser", "session details", "devices", "simulated rig",
-                                 "calibration wizard", "label set", "quit confirmation", "menu"})
+                                 "calibration wizard", "label set", "quit confirmation", "menu", "new plan"})
             QTest::newRow(name) << QString::fromLatin1(name);
     }
 
@@ -208,6 +208,8 @@ private slots:
             open = [&] { action(w, QStringLiteral("Session &details…"))->trigger(); };
         else if (which == QLatin1String("devices"))
             open = [&] { action(w, QStringLiteral("&Choose devices…"))->trigger(); };
+        else if (which == QLatin1String("new plan"))
+            open = [&] { action(w, QStringLiteral("New &plan from template…"))->trigger(); };
         else if (which == QLatin1String("simulated rig"))
             open = [&] { action(w, QStringLiteral("&Simulated rig…"))->trigger(); };
         else if (which == QLatin1String("calibration wizard")) {

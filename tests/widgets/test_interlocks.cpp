@@ -98,6 +98,16 @@ private slots:
         s.motionProblem = QStringLiteral("too deep");
         QCOMPARE(permission(Control::StartInsertion, s).reason, QStringLiteral("too deep"));
         s.motionProblem.clear();
+        // A plan's checklist holds the start; it never lifts another rule.
+        s.planHold = QStringLiteral("Tick the plan's checklist first.");
+        QCOMPARE(permission(Control::StartInsertion, s).reason, s.planHold);
+        QVERIFY(permission(Control::EmergencyStop, s).enabled);
+        QVERIFY(permission(Control::Bias, s).enabled);
+        s.biased = false;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("Bias")));
+        s.biased = true;
+        s.planHold.clear();
+        QVERIFY(permission(Control::StartInsertion, s).enabled);
         s.fault = QStringLiteral("sensor: no reply");
         QVERIFY(!permission(Control::StartInsertion, s).enabled);
         QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("no reply")));

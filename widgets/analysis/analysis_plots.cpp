@@ -293,4 +293,58 @@ void plotValidation(QCustomPlot* plot, const ValidationResult& v)
     plot->replot();
 }
 
+void plotByFactor(QCustomPlot* plot, const std::vector<RunFactorValues>& runs, const std::vector<FactorCell>& cells,
+                  const QString& factor, const FactorQuantity& q)
+{
+    const QString unit = q.unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(q.unit);
+    reset(plot, nb::TrViews::tr("%1 by %2: mean ± std, n per level").arg(q.title, factor), factor, q.title + unit);
+    auto ticker = QSharedPointer<QCPAxisTickerText>::create();
+    QVector<double> runX, runY, meanX, meanY, spread;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        const FactorCell& c = cells[i];
+        const QString level = c.levels.isEmpty() || c.levels.first().isEmpty() ? nb::TrViews::tr("(none)") : c.levels.first();
+        const auto it = c.stats.find(q.key);
+        const std::size_t n = it == c.stats.end() ? 0 : it->second.n;
+        ticker->addTick(double(i), QStringLiteral("%1\nn = %2").arg(level).arg(n));
+        if (n > 0) {
+            meanX << double(i);
+            meanY << it->second.mean;
+            spread << it->second.stdDev;
+        }
+        // The runs of this level, spread a little sideways so that equal values stay visible.
+        std::vector<double> values;
+        for (const RunFactorValues& r : runs) {
+            const auto level = r.levels.find(factor);
+            const auto v = r.values.find(q.key);
+            if (level != r.levels.end() && level->second == (c.levels.isEmpty() ? QString() : c.levels.first()) && v != r.values.end())
+                values.push_back(v->second);
+        }
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            runX << double(i) + (values.size() > 1 ? 0.24 * (double(k) / double(values.size() - 1) - 0.5) : 0.0);
+            runY << values[k];
+        }
+    }
+    scatter(plot, runX, runY, QColor(150, 150, 150), 5.0, nb::TrViews::tr("runs"));
+    QCPGraph* means = scatter(plot, meanX, meanY, QColor(31, 119, 180), 9.0, nb::TrViews::tr("mean ± std"));
+    auto* bars = new QCPErrorBars(plot->xAxis, plot->yAxis);
+    bars->removeFromLegend();
+    bars->setDataPlottable(means);
+    bars->setData(spread);
+    bars->setPen(QPen(QColor(31, 119, 180), 1.5));
+    plot->xAxis->setTicker(ticker);
+    plot->xAxis->setRange(-0.6, std::max<double>(0.6, double(cells.size()) - 0.4));
+    if (runY.isEmpty()) {
+        plot->yAxis->setRange(0.0, 1.0);
+    } else {
+        double lo = *std::min_element(runY.begin(), runY.end()), hi = *std::max_element(runY.begin(), runY.end());
+        for (int i = 0; i < meanY.size(); ++i) {
+            lo = std::min(lo, meanY[i] - spread[i]);
+            hi = std::max(hi, meanY[i] + spread[i]);
+        }
+        const double pad = hi > lo ? 0.08 * (hi - lo) : std::max(1e-9, 0.1 * std::abs(hi));
+        plot->yAxis->setRange(lo - pad, hi + pad);
+    }
+    plot->replot();
+}
+
 }  // namespace nb

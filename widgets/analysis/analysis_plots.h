@@ -3,6 +3,7 @@
 // the headless demo, so the figures written to files are the ones on screen.
 
 #include "core/export/dataset.h"
+#include "core/export/factor_analysis.h"
 #include "core/export/session_analysis.h"
 
 class QCustomPlot;
@@ -21,5 +22,10 @@ void plotPhases(QCustomPlot* plot, const DatasetRun& run);
 
 // Thesis Fig. 38: the summed model against a recorded insertion, rms error in the title.
 void plotValidation(QCustomPlot* plot, const ValidationResult& v);
+
+// A fitted quantity against one factor of a plan's runs: each run (grey), and per level the
+// mean ± standard deviation with n under the level (levels as groupByFactors sorts them).
+void plotByFactor(QCustomPlot* plot, const std::vector<RunFactorValues>& runs, const std::vector<FactorCell>& cells,
+                  const QString& factor, const FactorQuantity& quantity);
 
 }  // namespace nb

@@ -208,6 +208,7 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     tableTabs[0]->setTabText(1, tr("Pooled per tissue"));
     tableTabs[1]->setTabText(0, tr("Per run"));
     tableTabs[1]->setTabText(1, tr("Summary"));
+    tabs_->addTab(buildFactorPage(), tr("By factor"));
     split->addWidget(tabs_);
     split->setStretchFactor(1, 1);
     split->setSizes({200, 900});
@@ -219,6 +220,8 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     connect(stiffnessGroup_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showStiffness);
     connect(frictionRun_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showFriction);
     connect(validationRun_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showValidation);
+    connect(factorChoice_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showByFactor);
+    connect(quantityChoice_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showByFactor);
     connect(runList_, &QListWidget::itemChanged, this, [this] {
         if (!updatingList_)
             recompute();
@@ -381,7 +384,11 @@ QStringList AnalysisWorkspace::saveAllTables(const QString& dir)
                                                    {QStringLiteral("friction_runs"), frictionRunsTable(analysis_)},
                                                    {QStringLiteral("friction_summary"), frictionSummaryTable(analysis_)},
                                                    {QStringLiteral("validation"), validationTable(analysis_)}};
-    for (const auto& [name, table] : tables) {
+    std::vector<std::pair<QString, FitTable>> all(std::begin(tables), std::end(tables));
+    // A plan's runs: each quantity per level of each of their factors.
+    for (const QString& factor : datasetFactors(dataset_))
+        all.emplace_back(QStringLiteral("by_factor_") + factor, factorTableFor(factor));
+    for (const auto& [name, table] : all) {
         for (const char* ext : {".csv", ".tex"}) {
             const QString path = QDir(dir).filePath(name + QLatin1String(ext));
             if (QLatin1String(ext) == QLatin1String(".csv"))
@@ -403,7 +410,10 @@ QStringList AnalysisWorkspace::saveAllFigures(const QString& dir)
                                                       {QStringLiteral("friction_velocity"), frictionPlot_},
                                                       {QStringLiteral("friction_phases"), phasesPlot_},
                                                       {QStringLiteral("validation"), validationPlot_}};
-    for (const auto& [name, plot] : plots)
+    std::vector<std::pair<QString, QCustomPlot*>> all(std::begin(plots), std::end(plots));
+    if (!factorChoice_->currentText().isEmpty())
+        all.emplace_back(QStringLiteral("by_factor"), factorPlot_);
+    for (const auto& [name, plot] : all)
         for (const char* ext : {".png", ".pdf"}) {
             const QString path = QDir(dir).filePath(name + QLatin1String(ext));
             saveFigure(plot, path);
@@ -439,9 +449,91 @@ void AnalysisWorkspace::refreshViews()
     refill(stiffnessGroup_, groups);
     refill(frictionRun_, friction);
     refill(validationRun_, validation);
+    // By factor: the factors of every run in the session (so the choice survives unticking),
+    // the quantities of the runs analysed.
+    const QStringList factors = datasetFactors(dataset_);
+    factorValues_ = runFactorValues(dataset_, analysis_, factors);
+    refill(factorChoice_, factors);
+    {
+        const QString keep = quantityChoice_->currentData().toString();
+        const QSignalBlocker block(quantityChoice_);
+        quantityChoice_->clear();
+        for (const FactorQuantity& q : factorQuantities())
+            if (std::any_of(factorValues_.begin(), factorValues_.end(), [&](const RunFactorValues& r) { return r.values.count(q.key) > 0; }))
+                quantityChoice_->addItem(q.unit.isEmpty() ? q.title : QStringLiteral("%1 [%2]").arg(q.title, q.unit), q.key);
+        const int i = quantityChoice_->findData(keep);
+        quantityChoice_->setCurrentIndex(i >= 0 ? i : (quantityChoice_->count() ? 0 : -1));
+    }
     showStiffness();
     showFriction();
     showValidation();
+    showByFactor();
+}
+
+QWidget* AnalysisWorkspace::buildFactorPage()
+{
+    auto* page = new QWidget(tabs_);
+    page->setObjectName(QStringLiteral("analysisByFactor"));
+    auto* v = new QVBoxLayout(page);
+    auto* bar = new QHBoxLayout;
+    factorChoice_ = new QComboBox(page);
+    factorChoice_->setObjectName(QStringLiteral("analysisFactor"));
+    factorChoice_->setToolTip(tr("The factors of a plan's runs (their factor_… metadata)"));
+    quantityChoice_ = new QComboBox(page);
+    quantityChoice_->setObjectName(QStringLiteral("analysisFactorQuantity"));
+    bar->addWidget(new QLabel(tr("Quantity:"), page));
+    bar->addWidget(quantityChoice_);
+    bar->addWidget(new QLabel(tr("against factor:"), page));
+    bar->addWidget(factorChoice_);
+    bar->addStretch(1);
+    auto* fig = new QPushButton(tr("Save figure…"), page);
+    auto* tab = new QPushButton(tr("Save tables…"), page);
+    bar->addWidget(fig);
+    bar->addWidget(tab);
+    v->addLayout(bar);
+    factorModel_ = new QStandardItemModel(this);
+    auto* body = new QSplitter(Qt::Vertical, page);
+    factorPlot_ = newPlot(body);
+    body->addWidget(factorPlot_);
+    body->addWidget(tableView(factorModel_, body));
+    body->setStretchFactor(0, 3);
+    body->setSizes({600, 200});
+    v->addWidget(body, 1);
+    connect(fig, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentFigure);
+    connect(tab, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentTables);
+    return page;
+}
+
+FitTable AnalysisWorkspace::factorTableFor(const QString& factor) const
+{
+    return factorTable(groupByFactors(factorValues_, {factor}), {factor});
+}
+
+void AnalysisWorkspace::showByFactor()
+{
+    const QString factor = factorChoice_->currentText();
+    const QString key = quantityChoice_->currentData().toString();
+    const auto q = std::find_if(factorQuantities().begin(), factorQuantities().end(), [&](const FactorQuantity& x) { return x.key == key; });
+    if (factor.isEmpty() || q == factorQuantities().end()) {
+        factorModel_->clear();
+        plotByFactor(factorPlot_, {}, {}, factor.isEmpty() ? tr("no factor") : factor,
+                     q == factorQuantities().end() ? FactorQuantity{{}, tr("no fitted quantity"), {}} : *q);
+        return;
+    }
+    const std::vector<FactorCell> cells = groupByFactors(factorValues_, {factor});
+    // The table of the quantity shown: its rows of the long by-factor table.
+    FitTable table = factorTable(cells, {factor});
+    const auto quantityColumn = std::find_if(table.columns.begin(), table.columns.end(), [](const TableColumn& c) { return c.key == QLatin1String("quantity"); });
+    const std::size_t qc = std::size_t(quantityColumn - table.columns.begin());
+    table.rows.erase(std::remove_if(table.rows.begin(), table.rows.end(),
+                                    [&](const std::vector<TableCell>& row) {
+                                        const auto* text = qc < row.size() ? std::get_if<QString>(&row[qc]) : nullptr;
+                                        return !text || *text != key;
+                                    }),
+                     table.rows.end());
+    fillTableModel(factorModel_, table);
+    plotByFactor(factorPlot_, factorValues_, cells, factor, *q);
+    legendBelow(factorPlot_);
 }
 
 void AnalysisWorkspace::showStiffness()
@@ -482,9 +574,10 @@ void AnalysisWorkspace::showValidation()
 void AnalysisWorkspace::exportCurrentFigure()
 {
     const int tab = tabs_->currentIndex();
-    std::vector<QCustomPlot*> plots = tab == 0 ? std::vector<QCustomPlot*>{stiffnessPlot_}
+    std::vector<QCustomPlot*> plots = tab == 0   ? std::vector<QCustomPlot*>{stiffnessPlot_}
                                       : tab == 1 ? std::vector<QCustomPlot*>{frictionPlot_, phasesPlot_}
-                                                 : std::vector<QCustomPlot*>{validationPlot_};
+                                      : tab == 2 ? std::vector<QCustomPlot*>{validationPlot_}
+                                                 : std::vector<QCustomPlot*>{factorPlot_};
     const QString path = QFileDialog::getSaveFileName(this, tr("Save figure"), QString(),
                                                       tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"));
     if (path.isEmpty())
@@ -508,8 +601,10 @@ void AnalysisWorkspace::exportCurrentTables()
         tables = {{QStringLiteral("stiffness_runs"), stiffnessRunsTable(analysis_)}, {QStringLiteral("stiffness_pooled"), stiffnessPooledTable(analysis_)}};
     else if (tab == 1)
         tables = {{QStringLiteral("friction_runs"), frictionRunsTable(analysis_)}, {QStringLiteral("friction_summary"), frictionSummaryTable(analysis_)}};
-    else
+    else if (tab == 2)
         tables = {{QStringLiteral("validation"), validationTable(analysis_)}};
+    else
+        tables = {{QStringLiteral("by_factor_") + factorChoice_->currentText(), factorTableFor(factorChoice_->currentText())}};
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Save tables (CSV and LaTeX) into"));
     if (dir.isEmpty())
         return;

@@ -1,10 +1,12 @@
 #pragma once
 // The analysis workspace: a session's runs fitted to the thesis's models, in three views.
-// Stiffness (Fig. 23, Table 2), Friction (Figs. 34b/35, Tables 4/5), Validation (Fig. 38).
+// Stiffness (Fig. 23, Table 2), Friction (Figs. 34b/35, Tables 4/5), Validation (Fig. 38),
+// and By factor: any fitted quantity against a factor of a plan's runs (issue 16).
 // Runs are chosen in the list on the left; results follow label edits (labels files are
 // watched) and every figure and table can be saved (PNG/SVG/PDF, CSV/LaTeX).
 
 #include "core/export/dataset.h"
+#include "core/export/factor_analysis.h"
 #include "core/export/session_analysis.h"
 
 #include <QFileSystemWatcher>
@@ -58,6 +60,13 @@ public:
     QStandardItemModel* stiffnessPooledModel() const { return stiffnessPooledModel_; }
     QStandardItemModel* frictionSummaryModel() const { return frictionSummaryModel_; }
     QStandardItemModel* validationModel() const { return validationModel_; }
+    // By factor: the factors the runs carry, the quantity shown, and its table per level.
+    QComboBox* factorChooser() const { return factorChoice_; }
+    QComboBox* quantityChooser() const { return quantityChoice_; }
+    QCustomPlot* factorPlot() const { return factorPlot_; }
+    QStandardItemModel* factorModel() const { return factorModel_; }
+    // Each fitted quantity per level of `factor` (mean, std, n), as `plan report --by` prints it.
+    FitTable factorTableFor(const QString& factor) const;
 
 public slots:
     // Re-reads every run's labels file and recomputes.
@@ -72,6 +81,8 @@ private:
     void showStiffness();
     void showFriction();
     void showValidation();
+    void showByFactor();
+    QWidget* buildFactorPage();
     void watchLabels();
     void exportCurrentFigure();
     void exportCurrentTables();
@@ -99,6 +110,11 @@ private:
     QStandardItemModel* frictionRunsModel_ = nullptr;
     QStandardItemModel* frictionSummaryModel_ = nullptr;
     QStandardItemModel* validationModel_ = nullptr;
+    QComboBox* factorChoice_ = nullptr;
+    QComboBox* quantityChoice_ = nullptr;
+    QCustomPlot* factorPlot_ = nullptr;
+    QStandardItemModel* factorModel_ = nullptr;
+    std::vector<RunFactorValues> factorValues_;  // every analysed run's quantities and levels
     bool updatingList_ = false;
 };
 

@@ -1,0 +1,68 @@
+#include "plan_session.h"
+#include "core/run_file.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <algorithm>
+
+namespace nb {
+
+QString planFileName() { return QStringLiteral("plan.json"); }
+
+QString planFilePath(const QString& sessionDir) { return QDir(sessionDir).filePath(planFileName()); }
+
+PlanResumption resumePlan(Plan& plan, const QString& sessionDir)
+{
+    PlanResumption out;
+    // Killed after its run had ended and been tagged, before plan.json said so: keep it.
+    for (std::size_t i = 0; i < plan.runs.size(); ++i) {
+        const PlannedRun& r = plan.runs[i];
+        if (r.status != PlanRunStatus::Running || r.attempts.empty())
+            continue;
+        const QString file = QDir(sessionDir).filePath(r.attempts.back().runFile);
+        try {
+            const Run run = readRunFile(file).run;
+            const QString end = run.meta(QStringLiteral("end_reason")).value_or(QString());
+            if (run.meta(QStringLiteral("plan_run")) == QString::number(r.number) &&
+                run.meta(QStringLiteral("plan_attempt")) == QString::number(r.attempts.size()) && isCompletingEndReason(end)) {
+                finishAttempt(plan, int(i), end, QFileInfo(file).lastModified().toUTC());
+                out.endedBefore.emplace_back(r.number, r.attempts.back().runFile);
+            }
+        } catch (const RunFileError&) {
+            // Absent or cut off: the run is done again.
+        }
+    }
+    out.interrupted = recoverInterruptedRuns(plan);
+    return out;
+}
+
+}  // namespace nb
+
+namespace nb {
+
+double estimatedPlanTimeLeft_s(const Plan& plan)
+{
+    // Starts of the attempts made, in time order; gaps over an hour are breaks, not pace.
+    std::vector<QDateTime> starts;
+    for (const PlannedRun& r : plan.runs)
+        for (const PlanAttempt& a : r.attempts)
+            if (a.started.isValid())
+                starts.push_back(a.started);
+    std::sort(starts.begin(), starts.end());
+    double sum_s = 0.0;
+    int gaps = 0;
+    for (std::size_t i = 1; i < starts.size(); ++i) {
+        const double gap_s = starts[i - 1].msecsTo(starts[i]) / 1000.0;
+        if (gap_s > 0.0 && gap_s < 3600.0) {
+            sum_s += gap_s;
+            ++gaps;
+        }
+    }
+    const double motion_s = remainingPlanDuration_s(plan);
+    if (gaps == 0)
+        return motion_s;
+    const int left = int(std::count_if(plan.runs.begin(), plan.runs.end(), [](const PlannedRun& r) { return !r.completed(); }));
+    return std::max(motion_s, left * sum_s / gaps);
+}
+
+}  // namespace nb
