@@ -3,7 +3,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+38" />
+        <location filename="../widgets/control_panel.cpp" line="+44" />
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -16,7 +16,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+118" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+120" />
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -38,17 +38,19 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Labels neu laden</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+38" />
+        <location line="+322" />
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-321" />
+        <location line="+322" />
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="-286" />
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -74,7 +76,28 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Validierung</translation>
     </message>
     <message>
-        <location line="+127" />
+        <location line="+1" />
+        <location line="+2" />
+        <source>Per run</source>
+        <translation>Je Lauf</translation>
+    </message>
+    <message>
+        <location line="-1" />
+        <source>Pooled per tissue</source>
+        <translation>Gepoolt je Gewebe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Summary</source>
+        <translation>Zusammenfassung</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>By factor</source>
+        <translation>Nach Faktor</translation>
+    </message>
+    <message>
+        <location line="+129" />
         <source>%1 runs analysed</source>
         <translation>%1 Läufe ausgewertet</translation>
     </message>
@@ -100,18 +123,43 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+11" />
-        <location line="+23" />
+        <location line="+27" />
         <source>cannot create the folder</source>
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+74" />
+        <source>The factors of a plan's runs (their factor_… metadata)</source>
+        <translation>Die Faktoren der Planläufe (ihre factor_…-Metadaten)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Quantity:</source>
+        <translation>Größe:</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>against factor:</source>
+        <translation>gegen Faktor:</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>no factor</source>
+        <translation>kein Faktor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no fitted quantity</source>
+        <translation>keine angepasste Größe</translation>
+    </message>
+    <message>
+        <location line="+32" />
         <location line="+19" />
         <source>no run</source>
         <translation>kein Lauf</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <location line="+11" />
         <source>Save figure</source>
         <translation>Abbildung speichern</translation>
@@ -122,7 +170,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>PNG-Bild (*.png);;SVG-Zeichnung (*.svg);;PDF-Dokument (*.pdf)</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+26" />
         <source>Save tables (CSV and LaTeX) into</source>
         <translation>Tabellen (CSV und LaTeX) speichern in</translation>
     </message>
@@ -300,7 +348,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+12" />
+        <location filename="../widgets/control_panel.cpp" line="+31" />
         <source>EMERGENCY STOP (Esc)</source>
         <translation>NOT-HALT (Esc)</translation>
     </message>
@@ -340,12 +388,13 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Bekannte Massen an der Kraftmessdose, Fit V = d·m + c</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+9" />
+        <location line="+284" />
         <source>2. Motion</source>
         <translation>2. Bewegung</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-281" />
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
@@ -355,20 +404,20 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sinusförmig</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
         <source> mm/s</source>
         <translation> mm/s</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+6" />
+        <location line="+14" />
         <location line="+12" />
-        <location line="+334" />
+        <location line="+422" />
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="-351" />
+        <location line="-440" />
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -378,7 +427,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Tiefe</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source> Hz</source>
         <translation> Hz</translation>
     </message>
@@ -403,13 +452,18 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>3. Lauf</translation>
     </message>
     <message>
-        <location line="-76" />
-        <location line="+305" />
+        <location line="+420" />
+        <source>To start (%1 mm)</source>
+        <translation>Zum Start (%1 mm)</translation>
+    </message>
+    <message>
+        <location line="-508" />
+        <location line="+401" />
         <source>&amp;Enable stage</source>
         <translation>Achse &amp;einschalten</translation>
     </message>
     <message>
-        <location line="-302" />
+        <location line="-398" />
         <source>&amp;Bias force sensor</source>
         <translation>Kraftsensor &amp;tarieren</translation>
     </message>
@@ -419,7 +473,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Position &amp;nullen</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+56" />
         <source>The sine oscillates about this depth; the needle moves there first (not recorded)</source>
         <translation>Der Sinus schwingt um diese Tiefe; die Nadel fährt zuerst dorthin (nicht aufgezeichnet)</translation>
     </message>
@@ -449,32 +503,22 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Fährt die Nadel zurück auf 0 mm</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>Stop motion (keeps recording)</source>
-        <translation>Bewegung stoppen (zeichnet weiter auf)</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+4" />
         <source>Decelerates the stage; the run keeps recording until End run</source>
         <translation>Bremst die Achse ab; der Lauf zeichnet weiter auf bis „Lauf beenden“</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>End run (closes the file)</source>
-        <translation>Lauf beenden (schließt die Datei)</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+4" />
         <source>Stops recording and closes the run file</source>
         <translation>Beendet die Aufzeichnung und schließt die Laufdatei</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Maximum force</source>
         <translation>Maximale Kraft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <location line="+11" />
         <source> N</source>
         <translation> N</translation>
@@ -495,48 +539,32 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>|F|, bei dem das Zurückziehen stoppt (nie unter der maximalen Kraft, damit ein Grenzstopp die Nadel nie festhält)</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+287" />
-        <source>Withdraw to start</source>
-        <translation>Zurück zum Start</translation>
-    </message>
-    <message>
-        <location line="-277" />
+        <location line="+19" />
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>Devices</source>
-        <translation>Geräte</translation>
-    </message>
-    <message>
-        <location line="+0" />
+        <location line="+7" />
         <source>Stage</source>
         <translation>Achse</translation>
     </message>
     <message>
         <location line="+0" />
         <source>Bias done</source>
-        <translation>Tara erfolgt</translation>
+        <translation>Tariert</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Zero done</source>
-        <translation>Nullpunkt gesetzt</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Moving</source>
-        <translation>Bewegt sich</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Sample rate</source>
-        <translation>Abtastrate</translation>
+        <translation>Genullt</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Moving</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <location line="-1" />
         <source>Force</source>
         <translation>Kraft</translation>
     </message>
@@ -546,27 +574,17 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Position</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>Limit margin</source>
-        <translation>Abstand zur Grenze</translation>
-    </message>
-    <message>
         <location line="+1" />
         <source>Dropped</source>
         <translation>Verloren</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>Recording</source>
         <translation>Aufzeichnung</translation>
     </message>
     <message>
         <location line="+0" />
-        <source>Time in run</source>
-        <translation>Zeit im Lauf</translation>
-    </message>
-    <message>
-        <location line="+1" />
         <source>Calibration</source>
         <translation>Kalibrierung</translation>
     </message>
@@ -576,7 +594,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="+113" />
+        <location line="+188" />
         <source>The sine would reach %1 mm, past the stage's travel.</source>
         <translation>Der Sinus würde %1 mm erreichen, jenseits des Verfahrwegs der Achse.</translation>
     </message>
@@ -591,100 +609,83 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Tiefe (%1 mm) liegt nicht tiefer als die Nadel jetzt (%2 mm).</translation>
     </message>
     <message>
-        <location line="+38" />
-        <location line="+103" />
+        <location line="+39" />
+        <location line="+107" />
         <location line="+9" />
         <source>Not now: %1</source>
         <translation>Jetzt nicht: %1</translation>
     </message>
     <message>
-        <location line="-105" />
+        <location line="-109" />
         <source>Disable stage</source>
         <translation>Achse ausschalten</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>Withdraw (recorded in this run)</source>
-        <translation>Zurückziehen (in diesem Lauf aufgezeichnet)</translation>
-    </message>
-    <message>
-        <location line="+1" />
         <source>Withdraw (not recorded)</source>
-        <translation>Zurückziehen (nicht aufgezeichnet)</translation>
+        <translation>Rückzug (ohne Aufnahme)</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>running</source>
-        <translation>läuft</translation>
-    </message>
-    <message>
-        <location line="+0" />
+        <location line="+16" />
         <source>stopped</source>
-        <translation>abgebrochen</translation>
+        <translation>angehalten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-221" />
+        <location line="+222" />
         <source>enabled</source>
         <translation>eingeschaltet</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-222" />
+        <location line="+222" />
         <source>disabled</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-224" />
+        <location line="+225" />
         <source>yes (%1 V)</source>
         <translation>ja (%1 V)</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>moving, %1 mm/s</source>
-        <translation>in Bewegung, %1 mm/s</translation>
-    </message>
-    <message>
-        <location line="+0" />
+        <location line="-223" />
+        <location line="+225" />
         <source>at rest</source>
         <translation>in Ruhe</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>RECORDING %1</source>
-        <translation>AUFZEICHNUNG %1</translation>
-    </message>
-    <message>
-        <location line="+0" />
+        <location line="+2" />
         <source>not recording</source>
         <translation>keine Aufzeichnung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-229" />
+        <location line="+223" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+7" />
         <source>%1 (overruns %2)</source>
         <translation>%1 (Überläufe %2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-230" />
+        <location line="+231" />
         <source>%1 N</source>
         <translation>%1 N</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+43" />
+        <location line="-230" />
+        <location line="+231" />
+        <location line="+44" />
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="-42" />
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <location line="+3" />
+        <location line="-274" />
+        <location line="+233" />
         <source>%1 N (%2 %)</source>
         <translation>%1 N (%2 %)</translation>
     </message>
@@ -695,7 +696,7 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+2" />
+        <location line="+3" />
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -715,12 +716,84 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt zurücksetzen (Achse einschalten)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="-241" />
         <source>Jog (never recorded)</source>
         <translation>Tippbetrieb (nie aufgezeichnet)</translation>
     </message>
     <message>
+        <location line="-109" />
+        <source>Stop (keeps recording)</source>
+        <translation>Stopp (zeichnet weiter)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>End run (closes file)</source>
+        <translation>Lauf beenden (Datei zu)</translation>
+    </message>
+    <message>
         <location line="+9" />
+        <source>Max. force</source>
+        <translation>Max. Kraft</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <location line="+373" />
+        <source>To start</source>
+        <translation>Zum Start</translation>
+    </message>
+    <message>
+        <location line="-351" />
+        <source>Sampling</source>
+        <translation>Abtastung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Margin</source>
+        <translation>Reserve</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Force left before the maximum force stops the stage</source>
+        <translation>Kraft, die bis zum Stopp durch die maximale Kraft noch bleibt</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <location line="+226" />
+        <source>%1 mm/s</source>
+        <translation>%1 mm/s</translation>
+    </message>
+    <message>
+        <location line="-206" />
+        <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
+        <translation>Bewegungen der Nadel ohne Aufzeichnung: Schritte hinein und heraus oder zu einer Position</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>%1 %2 cannot be set here (%3 to %4 in steps of %5)</source>
+        <translation>%1 %2 lässt sich hier nicht einstellen (%3 bis %4 in Schritten von %5)</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1 cycles cannot be set here (%2 to %3)</source>
+        <translation>%1 Zyklen lassen sich hier nicht einstellen (%2 bis %3)</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>2. Motion (set by the plan)</source>
+        <translation>2. Bewegung (vom Plan gesetzt)</translation>
+    </message>
+    <message>
+        <location line="+110" />
+        <source>Withdraw (recorded)</source>
+        <translation>Rückzug (aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>RECORDING %1, %2 s</source>
+        <translation>AUFZEICHNUNG %1, %2 s</translation>
+    </message>
+    <message>
+        <location line="+50" />
         <source>Step of one jog</source>
         <translation>Weg eines Tippschritts</translation>
     </message>
@@ -745,12 +818,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Bewegt die Nadel ohne Aufzeichnung</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>Withdraw to start (%1 mm)</source>
-        <translation>Zurück zum Start (%1 mm)</translation>
-    </message>
-    <message>
-        <location line="+3" />
+        <location line="+10" />
         <source>Moves the needle out to where the last run began (not recorded)</source>
         <translation>Zieht die Nadel bis dorthin zurück, wo der letzte Lauf begann (nicht aufgezeichnet)</translation>
     </message>
@@ -1286,7 +1354,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Ana&amp;lyse</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+13" />
         <source>Control panel</source>
         <translation>Bedienfeld</translation>
     </message>
@@ -1296,7 +1364,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzung</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>Could not open the configured devices (%1); using the simulated rig.</source>
         <translation>Die eingestellten Geräte konnten nicht geöffnet werden (%1); der simulierte Prüfstand wird verwendet.</translation>
     </message>
@@ -1383,7 +1451,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Zeichne %1 auf</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+10" />
         <source>Fault: %1: %2</source>
         <translation>Fehler: %1: %2</translation>
     </message>
@@ -1428,7 +1496,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzungs&amp;details…</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>&amp;Devices</source>
         <translation>&amp;Geräte</translation>
     </message>
@@ -1468,7 +1536,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
@@ -1513,7 +1581,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>NeedleBench – %1</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>New session</source>
         <translation>Neue Sitzung</translation>
     </message>
@@ -1568,12 +1636,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+30" />
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+21" />
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
@@ -1590,19 +1658,447 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-518" />
+        <location line="-534" />
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+518" />
+        <location line="+534" />
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-334" />
+        <location line="-342" />
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_plan.cpp" line="+33" />
+        <source>pending</source>
+        <translation>ausstehend</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>again (%1)</source>
+        <translation>erneut (%1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>running</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>done</source>
+        <translation>erledigt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>skipped: %1</source>
+        <translation>übersprungen: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>redone</source>
+        <translation>wiederholt</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>sine ±%1 mm at %2 Hz, %3 cycles</source>
+        <translation>Sinus ±%1 mm bei %2 Hz, %3 Zyklen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>linear to %1 mm at %2 mm/s</source>
+        <translation>linear bis %1 mm mit %2 mm/s</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>seed %1</source>
+        <translation>Seed %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>stop at the first puncture</source>
+        <translation>Halt bei der ersten Punktion</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>stop after %1 punctures</source>
+        <translation>Halt nach %1 Punktionen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>slow to %1 mm/s after a puncture</source>
+        <translation>nach einer Punktion auf %1 mm/s verlangsamen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>force limit %1 N</source>
+        <translation>Kraftgrenze %1 N</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Plan</source>
+        <translation>Plan</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Plan run %1 skipped: %2</source>
+        <translation>Planlauf %1 übersprungen: %2</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Plan run %1 is made again: %2</source>
+        <translation>Planlauf %1 wird wiederholt: %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Left the plan: the control panel is yours; runs made now are not the plan's.</source>
+        <translation>Plan verlassen: Das Bedienfeld ist frei; Läufe von jetzt an gehören nicht zum Plan.</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>New &amp;plan from template…</source>
+        <translation>Neuer &amp;Plan aus Vorlage…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Open plan &amp;file…</source>
+        <translation>Pl&amp;andatei öffnen…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+7" />
+        <source>Open plan file</source>
+        <translation>Plandatei öffnen</translation>
+    </message>
+    <message>
+        <location line="-7" />
+        <source>Plans (*.json)</source>
+        <translation>Pläne (*.json)</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Open a session first: the plan is kept in it.</source>
+        <translation>Zuerst eine Sitzung öffnen: Der Plan wird darin gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>New plan</source>
+        <translation>Neuer Plan</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Experiment plan</source>
+        <translation>Versuchsplan</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5" />
+        <source>Plan "%1": %n run(s), kept in %2</source>
+        <translation>
+            <numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform><numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform></translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>The session's plan could not be opened: %1</source>
+        <translation>Der Plan der Sitzung konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Set by plan run %1 (%2); Leave plan in the Plan dock frees it.</source>
+        <translation>Vom Planlauf %1 (%2) gesetzt; „Plan verlassen“ im Plan-Fenster gibt es frei.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Plan run %1 cannot be set: %2. Left the plan.</source>
+        <translation>Planlauf %1 lässt sich nicht einstellen: %2. Plan verlassen.</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>Plan run %1: %2</source>
+        <translation>Planlauf %1: %2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Simulated rig for plan run %1: %2, seed %3 (enable, bias and zero again)</source>
+        <translation>Simulierter Prüfstand für Planlauf %1: %2, Seed %3 (erneut freigeben, Nullabgleich und Nullposition)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1 (template %2)</source>
+        <translation>%1 (Vorlage %2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Run %1: %2</source>
+        <translation>Lauf %1: %2</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1. %2 – %3</source>
+        <translation>%1. %2 – %3</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>run %1 (%2)</source>
+        <translation>Lauf %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+31" />
+        <source>Plan run %1 could not be recorded in plan.json: %2</source>
+        <translation>Planlauf %1 konnte nicht in plan.json vermerkt werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>nb::NewPlanDialog</name>
+    <message>
+        <location filename="../widgets/plan_panel.cpp" line="+186" />
+        <source>New plan from template</source>
+        <translation>Neuer Plan aus Vorlage</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>as listed</source>
+        <translation>wie aufgeführt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>randomised</source>
+        <translation>zufällig</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>blocked by site</source>
+        <translation>in Blöcken nach Stelle</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Recorded in the plan: the same seed gives the same order</source>
+        <translation>Im Plan vermerkt: derselbe Seed ergibt dieselbe Reihenfolge</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Template</source>
+        <translation>Vorlage</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Order</source>
+        <translation>Reihenfolge</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Seed</source>
+        <translation>Seed</translation>
+    </message>
+</context>
+<context>
+    <name>nb::PlanPanel</name>
+    <message>
+        <location line="-183" />
+        <source>No experiment plan in this session. Session ▸ New plan from template… makes one; its runs are then set here one after the other.</source>
+        <translation>Kein Versuchsplan in dieser Sitzung. Sitzung ▸ Neuer Plan aus Vorlage… legt einen an; seine Läufe werden dann hier nacheinander eingestellt.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>New plan from template…</source>
+        <translation>Neuer Plan aus Vorlage…</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>Bias done</source>
+        <translation>Nullabgleich erledigt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Ticks itself when the sensor has been biased since the last run</source>
+        <translation>Hakt sich selbst ab, sobald der Sensor seit dem letzten Lauf abgeglichen wurde</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Zero done</source>
+        <translation>Nullposition erledigt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Ticks itself when the position has been zeroed since the last run</source>
+        <translation>Hakt sich selbst ab, sobald die Position seit dem letzten Lauf genullt wurde</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Skip run…</source>
+        <translation>Lauf überspringen…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Marks the next run skipped, with a reason, and moves on</source>
+        <translation>Markiert den nächsten Lauf mit Grund als übersprungen und geht weiter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Redo run…</source>
+        <translation>Lauf wiederholen…</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Skip run</source>
+        <translation>Lauf überspringen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Why is %1 skipped?</source>
+        <translation>Warum wird %1 übersprungen?</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Redo run</source>
+        <translation>Lauf wiederholen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Why is %1 made again? Its attempt stays in the plan, marked discarded.</source>
+        <translation>Warum wird %1 wiederholt? Der Versuch bleibt im Plan, als verworfen markiert.</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>Every run of the plan is completed.</source>
+        <translation>Alle Läufe des Plans sind abgeschlossen.</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Next: %1</source>
+        <translation>Als Nächstes: %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Done: %1</source>
+        <translation>Erledigt: %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>No run of the plan is done yet</source>
+        <translation>Noch kein Lauf des Plans erledigt</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Makes %1 again, with a reason</source>
+        <translation>Wiederholt %1, mit Grund</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Leave plan</source>
+        <translation>Plan verlassen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Return to plan</source>
+        <translation>Zurück zum Plan</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Releases the control panel's settings; runs made meanwhile are not the plan's</source>
+        <translation>Gibt die Einstellungen des Bedienfelds frei; Läufe in der Zwischenzeit gehören nicht zum Plan</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Sets and locks the next plan run's settings again</source>
+        <translation>Stellt die Einstellungen des nächsten Planlaufs wieder ein und sperrt sie</translation>
+    </message>
+</context>
+<context>
+    <name>nb::PlanReasonDialog</name>
+    <message>
+        <location line="+29" />
+        <source>e.g. a vessel at this site</source>
+        <translation>z. B. ein Gefäß an dieser Stelle</translation>
+    </message>
+</context>
+<context>
+    <name>nb::PlanWalker</name>
+    <message>
+        <location filename="../app/plan_walker.cpp" line="+27" />
+        <source>Plan run %1 had ended before the interruption (%2).</source>
+        <translation>Planlauf %1 war vor der Unterbrechung beendet (%2).</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Plan run %1 was interrupted; it runs again.</source>
+        <translation>Planlauf %1 wurde unterbrochen; er wird wiederholt.</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>Open a session first: the plan is kept in it.</source>
+        <translation>Zuerst eine Sitzung öffnen: Der Plan wird darin gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <location line="+190" />
+        <location line="+27" />
+        <source>A plan run is recording: end it first.</source>
+        <translation>Ein Planlauf zeichnet auf: Zuerst beenden.</translation>
+    </message>
+    <message>
+        <location line="-210" />
+        <source>%1 already holds the plan "%2" with runs made; use another session for a new plan.</source>
+        <translation>%1 enthält bereits den Plan „%2“ mit durchgeführten Läufen; für einen neuen Plan eine andere Sitzung verwenden.</translation>
+    </message>
+    <message>
+        <location line="+111" />
+        <source>the operator's step</source>
+        <translation>der Handgriff</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>bias</source>
+        <translation>Nullabgleich</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>zero</source>
+        <translation>Nullposition</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Plan run %1: tick the checklist first (%2).</source>
+        <translation>Planlauf %1: Zuerst die Checkliste abhaken (%2).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>No plan</source>
+        <translation>Kein Plan</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>All %1 runs completed</source>
+        <translation>Alle %1 Läufe abgeschlossen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>less than a minute left</source>
+        <translation>weniger als eine Minute übrig</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>about %1 min left</source>
+        <translation>noch etwa %1 min</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Run %1 of %2 · %3</source>
+        <translation>Lauf %1 von %2 · %3</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+44" />
+        <source>No plan run is next.</source>
+        <translation>Kein Planlauf steht an.</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <location line="+27" />
+        <source>Give a reason.</source>
+        <translation>Einen Grund angeben.</translation>
     </message>
 </context>
 <context>
@@ -1993,7 +2489,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::RunListModel</name>
     <message>
-        <location filename="../widgets/session_view.cpp" line="+40" />
+        <location filename="../widgets/session_view.cpp" line="+42" />
         <source>recording</source>
         <translation>Aufzeichnung läuft</translation>
     </message>
@@ -2031,7 +2527,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::SessionInfoDialog</name>
     <message>
-        <location filename="../widgets/session_info_dialog.cpp" line="+20" />
+        <location filename="../widgets/session_info_dialog.cpp" line="+22" />
         <source>New session</source>
         <translation>Neue Sitzung</translation>
     </message>
@@ -2041,7 +2537,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Sitzungsdetails</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+15" />
         <source> mm</source>
         <translation> mm</translation>
     </message>
@@ -2163,12 +2659,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::SimulatedRigDialog</name>
     <message>
-        <location filename="../widgets/simulated_rig_dialog.cpp" line="+17" />
+        <location filename="../widgets/simulated_rig_dialog.cpp" line="+19" />
         <source>Simulated rig</source>
         <translation>Simulierter Versuchsstand</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>the preset's usual tip</source>
         <translation>die übliche Spitze der Vorlage</translation>
     </message>
@@ -2333,9 +2829,9 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location filename="../app/cmd_fit.cpp" line="+84" />
         <location line="+49" />
         <location line="+126" />
-        <location filename="../app/cmd_plan.cpp" line="+74" />
+        <location filename="../app/cmd_plan.cpp" line="+75" />
         <location line="+156" />
-        <location line="+270" />
+        <location line="+255" />
         <location filename="../app/cmd_sync.cpp" line="+36" />
         <location filename="../app/cmd_video.cpp" line="+46" />
         <location line="+36" />
@@ -3148,7 +3644,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>'needlebench simulate --help' zeigt die Optionen.</translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-442" />
+        <location filename="../app/cmd_plan.cpp" line="-427" />
         <source>Run 'needlebench plan %1 --help' for the options.</source>
         <translation>'needlebench plan %1 --help' zeigt die Optionen.</translation>
     </message>
@@ -3296,12 +3792,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+6" />
-        <location line="+138" />
+        <location line="+123" />
         <source>run %1: %2</source>
         <translation>Lauf %1: %2</translation>
     </message>
     <message>
-        <location line="-127" />
+        <location line="-112" />
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation>der Sitzungsordner (wird angelegt, wenn er fehlt; enthält plan.json und die Läufe)</translation>
     </message>
@@ -3341,12 +3837,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>wiederhergestellt: %1</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+5" />
         <source>run %1 had ended before the interruption: %2</source>
         <translation>Lauf %1 war vor der Unterbrechung beendet: %2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+2" />
         <source>run %1 was interrupted; it runs again</source>
         <translation>Lauf %1 wurde unterbrochen; er läuft erneut</translation>
     </message>
@@ -3819,7 +4315,7 @@ Befehle:
         <translation>%1: keine Spaltenüberschrift</translation>
     </message>
     <message>
-        <location line="+98" />
+        <location line="+128" />
         <source>the run did not start (exit code %1)</source>
         <translation>der Lauf hat nicht begonnen (Rückgabewert %1)</translation>
     </message>
@@ -3970,7 +4466,7 @@ Befehle:
         <location line="+50" />
         <location line="+55" />
         <source>run</source>
-        <translation>run</translation>
+        <translation>Lauf</translation>
     </message>
     <message>
         <location line="-104" />
@@ -4013,7 +4509,7 @@ Befehle:
     <message>
         <location line="+113" />
         <source>outlier</source>
-        <translation>outlier</translation>
+        <translation>Ausreißer</translation>
     </message>
     <message>
         <location line="+4" />
@@ -4060,12 +4556,12 @@ Befehle:
     <message>
         <location line="-42" />
         <source>pooled</source>
-        <translation>pooled</translation>
+        <translation>gepoolt</translation>
     </message>
     <message>
         <location line="+3" />
         <source>mean of runs</source>
-        <translation>mean of runs</translation>
+        <translation>Mittel der Läufe</translation>
     </message>
     <message>
         <location line="+9" />
@@ -4089,7 +4585,7 @@ Befehle:
         <translation>Karnopp-Reibung pro Länge, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau der Tabellen 4/5)</translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+211" />
+        <location filename="../core/export/factor_analysis.cpp" line="+222" />
         <location filename="../core/export/session_analysis.cpp" line="+2" />
         <source>group</source>
         <translation>Gruppe</translation>
@@ -4130,7 +4626,7 @@ Befehle:
         <location line="+1" />
         <location filename="../core/export/session_analysis.cpp" line="+0" />
         <source>mean</source>
-        <translation>mean</translation>
+        <translation>Mittelwert</translation>
     </message>
     <message>
         <location line="+28" />
@@ -4145,7 +4641,7 @@ Befehle:
     <message>
         <location filename="../core/export/session_analysis.cpp" line="+12" />
         <source>overall</source>
-        <translation>overall</translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <location line="+7" />
@@ -5027,6 +5523,46 @@ Befehle:
         <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
         <translation>|Dn| &lt; |Cn|: Haftreibung unter der Gleitreibung</translation>
     </message>
+    <message>
+        <location filename="../core/data_names.cpp" line="+12" />
+        <source>beveled</source>
+        <translation>abgeschrägt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>diamond</source>
+        <translation>Diamantschliff</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>blunt</source>
+        <translation>stumpf</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Liver %1</source>
+        <translation>Leber %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Prostate</source>
+        <translation>Prostata</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>linear</source>
+        <translation>linear</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>sine</source>
+        <translation>Sinus</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>nominal (device)</source>
+        <translation>nominal (Gerät)</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrDevices</name>
@@ -5545,13 +6081,13 @@ Befehle:
     </message>
     <message>
         <location line="+7" />
-        <location line="+60" />
+        <location line="+62" />
         <location line="+10" />
         <source>Stop the motion first.</source>
         <translation>Zuerst die Bewegung stoppen.</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-70" />
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation>Zuerst den Lauf beenden: das Ausschalten des Antriebs würde das Experiment unaufgezeichnet beenden.</translation>
     </message>
@@ -5578,13 +6114,13 @@ Befehle:
     <message>
         <location line="+4" />
         <location line="+20" />
-        <location line="+20" />
+        <location line="+22" />
         <location line="+10" />
         <source>Enable the stage first.</source>
         <translation>Zuerst die Achse einschalten.</translation>
     </message>
     <message>
-        <location line="-48" />
+        <location line="-50" />
         <source>Zeroing needs the stage at rest.</source>
         <translation>Nullen geht nur bei stehender Achse.</translation>
     </message>
@@ -5610,13 +6146,13 @@ Befehle:
     </message>
     <message>
         <location line="+4" />
-        <location line="+22" />
+        <location line="+24" />
         <location line="+10" />
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation>Not-Aus: Schalten Sie die Achse wieder ein, um ihn zurückzusetzen.</translation>
     </message>
     <message>
-        <location line="-30" />
+        <location line="-32" />
         <source>Open or create a session first: the run needs a folder.</source>
         <translation>Zuerst eine Sitzung öffnen oder anlegen: der Lauf braucht einen Ordner.</translation>
     </message>
@@ -5627,12 +6163,12 @@ Befehle:
     </message>
     <message>
         <location line="+2" />
-        <location line="+18" />
+        <location line="+20" />
         <source>Zero the stage position first.</source>
         <translation>Zuerst die Achsposition nullen.</translation>
     </message>
     <message>
-        <location line="-16" />
+        <location line="-18" />
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
         <translation>Keine aktive Kalibrierung: Sensor kalibrieren oder eine Kalibrierung wählen.</translation>
     </message>
@@ -5648,7 +6184,7 @@ Befehle:
     </message>
     <message>
         <location line="+2" />
-        <location line="+36" />
+        <location line="+38" />
         <source>The stage is moving.</source>
         <translation>Die Achse bewegt sich.</translation>
     </message>
@@ -5688,9 +6224,9 @@ Befehle:
         <translation>die Messung endete nicht innerhalb von %1 Minuten</translation>
     </message>
     <message>
-        <location filename="../devices/sim/simulated_devices.cpp" line="+18" />
+        <location filename="../devices/sim/simulated_devices.cpp" line="+19" />
         <source>simulated rig (%1, %2 tip, seed %3%4)</source>
-        <translation>simulierter Versuchsstand (%1, %2-Spitze, Startwert %3%4)</translation>
+        <translation>simulierter Versuchsstand (%1, Spitze: %2, Startwert %3%4)</translation>
     </message>
     <message>
         <location line="+3" />
@@ -5947,6 +6483,26 @@ F = %1 x + %2 x²
         <translation>Summenmodell</translation>
     </message>
     <message>
+        <location line="+12" />
+        <source>%1 by %2: mean ± std, n per level</source>
+        <translation>%1 nach %2: Mittelwert ± Std.-Abw., n je Stufe</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>runs</source>
+        <translation>Läufe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>mean ± std</source>
+        <translation>Mittelwert ± Std.-Abw.</translation>
+    </message>
+    <message>
         <location filename="../widgets/analysis/figure_export.cpp" line="+44" />
         <source>unknown figure format '%1' (png, svg or pdf)</source>
         <translation>unbekanntes Abbildungsformat '%1' (png, svg oder pdf)</translation>
@@ -5982,7 +6538,7 @@ F = %1 x + %2 x²
         <translation>%1 teilen</translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-405" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-521" />
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>
@@ -6057,12 +6613,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+116" />
-        <source>nominal (device)</source>
-        <translation>nominal (Gerät)</translation>
-    </message>
-    <message>
-        <location line="+74" />
+        <location filename="../devices/acquisition_engine.cpp" line="+194" />
         <source>stage enabled; fault cleared</source>
         <translation>Achse eingeschaltet; Fehler zurückgesetzt</translation>
     </message>
@@ -6087,7 +6638,7 @@ F = %1 x + %2 x²
         <translation>Kraftsensor wird tariert: Mittelung über %1 s</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
         <source>stage position zeroed</source>
         <translation>Achsposition genullt</translation>
     </message>
@@ -6148,7 +6699,7 @@ F = %1 x + %2 x²
         <translation>Bewegung gestoppt</translation>
     </message>
     <message>
-        <location line="+141" />
+        <location line="+143" />
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation>Lauf beendet (%1): %2 Messwerte, %3 verloren, %4</translation>
     </message>
@@ -6163,7 +6714,7 @@ F = %1 x + %2 x²
         <translation>Fehler: %1</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+50" />
         <source>puncture %1 at %2 mm: stage stopped</source>
         <translation>Punktion %1 bei %2 mm: Achse angehalten</translation>
     </message>
@@ -6194,7 +6745,7 @@ F = %1 x + %2 x²
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-419" />
+        <location line="-423" />
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -6204,7 +6755,7 @@ F = %1 x + %2 x²
         <translation>Nullen abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+60" />
         <source>a run is already on its way to its start position</source>
         <translation>eine Messung fährt bereits ihre Startposition an</translation>
     </message>
@@ -6259,7 +6810,7 @@ F = %1 x + %2 x²
         <translation>Not-Aus: die Achse bleibt aus, bis Sie sie wieder einschalten</translation>
     </message>
     <message>
-        <location line="+156" />
+        <location line="+159" />
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation>Kraftgrenze: %1 N &gt; %2 N bei %3 mm; Achse angehalten</translation>
     </message>

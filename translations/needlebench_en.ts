@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+38"/>
+        <location filename="../widgets/control_panel.cpp" line="+44"/>
         <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+118"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+120"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -38,17 +38,19 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
+        <location line="+322"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-321"/>
+        <location line="+322"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-286"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -74,7 +76,28 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+127"/>
+        <location line="+1"/>
+        <location line="+2"/>
+        <source>Per run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Pooled per tissue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Summary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>By factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+129"/>
         <source>%1 runs analysed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -100,18 +123,43 @@ or without contact</source>
     </message>
     <message>
         <location line="+11"/>
-        <location line="+23"/>
+        <location line="+27"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+74"/>
+        <source>The factors of a plan&apos;s runs (their factor_… metadata)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Quantity:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>against factor:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>no factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no fitted quantity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <location line="+19"/>
         <source>no run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <location line="+11"/>
         <source>Save figure</source>
         <translation type="unfinished"></translation>
@@ -122,7 +170,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Save tables (CSV and LaTeX) into</source>
         <translation type="unfinished"></translation>
     </message>
@@ -300,7 +348,7 @@ or without contact</source>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+12"/>
+        <location filename="../widgets/control_panel.cpp" line="+31"/>
         <source>EMERGENCY STOP (Esc)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -340,12 +388,13 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
+        <location line="+284"/>
         <source>2. Motion</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-281"/>
         <source>Linear</source>
         <translation type="unfinished"></translation>
     </message>
@@ -355,20 +404,20 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source> mm/s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+6"/>
+        <location line="+14"/>
         <location line="+12"/>
-        <location line="+334"/>
+        <location line="+422"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-351"/>
+        <location line="-440"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -378,7 +427,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source> Hz</source>
         <translation type="unfinished"></translation>
     </message>
@@ -403,13 +452,18 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-76"/>
-        <location line="+305"/>
+        <location line="+420"/>
+        <source>To start (%1 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-508"/>
+        <location line="+401"/>
         <source>&amp;Enable stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-302"/>
+        <location line="-398"/>
         <source>&amp;Bias force sensor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -419,7 +473,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+56"/>
         <source>The sine oscillates about this depth; the needle moves there first (not recorded)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -449,32 +503,22 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Stop motion (keeps recording)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Decelerates the stage; the run keeps recording until End run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>End run (closes the file)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Stops recording and closes the run file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Maximum force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <location line="+11"/>
         <source> N</source>
         <translation type="unfinished"></translation>
@@ -495,23 +539,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+287"/>
-        <source>Withdraw to start</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-277"/>
+        <location line="+19"/>
         <source>Status</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Devices</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+7"/>
         <source>Stage</source>
         <translation type="unfinished"></translation>
     </message>
@@ -526,17 +559,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Moving</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>Sample rate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="-1"/>
         <source>Force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -546,27 +574,17 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>Limit margin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location line="+1"/>
         <source>Dropped</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Recording</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>Time in run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>Calibration</source>
         <translation type="unfinished"></translation>
     </message>
@@ -576,7 +594,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+188"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -591,100 +609,83 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
-        <location line="+103"/>
+        <location line="+39"/>
+        <location line="+107"/>
         <location line="+9"/>
         <source>Not now: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="-109"/>
         <source>Disable stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Withdraw (recorded in this run)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>Withdraw (not recorded)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>running</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+16"/>
         <source>stopped</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-221"/>
+        <location line="+222"/>
         <source>enabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-222"/>
+        <location line="+222"/>
         <source>disabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-224"/>
+        <location line="+225"/>
         <source>yes (%1 V)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>moving, %1 mm/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="-223"/>
+        <location line="+225"/>
         <source>at rest</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>RECORDING %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>not recording</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-229"/>
+        <location line="+223"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>%1 (overruns %2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-230"/>
+        <location line="+231"/>
         <source>%1 N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+43"/>
+        <location line="-230"/>
+        <location line="+231"/>
+        <location line="+44"/>
         <source>%1 mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-42"/>
-        <source>%1 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="-274"/>
+        <location line="+233"/>
         <source>%1 N (%2 %)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -695,7 +696,7 @@ or without contact</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>none</source>
         <translation type="unfinished"></translation>
     </message>
@@ -715,12 +716,84 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-241"/>
         <source>Jog (never recorded)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="-109"/>
+        <source>Stop (keeps recording)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>End run (closes file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+9"/>
+        <source>Max. force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <location line="+373"/>
+        <source>To start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-351"/>
+        <source>Sampling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Margin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Force left before the maximum force stops the stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <location line="+226"/>
+        <source>%1 mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-206"/>
+        <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>%1 %2 cannot be set here (%3 to %4 in steps of %5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 cycles cannot be set here (%2 to %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>2. Motion (set by the plan)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+110"/>
+        <source>Withdraw (recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>RECORDING %1, %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>Step of one jog</source>
         <translation type="unfinished"></translation>
     </message>
@@ -745,12 +818,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Withdraw to start (%1 mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+10"/>
         <source>Moves the needle out to where the last run began (not recorded)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1286,7 +1354,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>Control panel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1296,7 +1364,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Could not open the configured devices (%1); using the simulated rig.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1383,7 +1451,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>Fault: %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1428,7 +1496,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;Devices</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1468,7 +1536,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1512,7 +1580,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>New session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1567,12 +1635,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1588,18 +1656,448 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-518"/>
+        <location line="-534"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+518"/>
+        <location line="+534"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-334"/>
+        <location line="-342"/>
         <source>&amp;Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_plan.cpp" line="+33"/>
+        <source>pending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>again (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>skipped: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>redone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>sine ±%1 mm at %2 Hz, %3 cycles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>linear to %1 mm at %2 mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>seed %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stop at the first puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stop after %1 punctures</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>slow to %1 mm/s after a puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>force limit %1 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Plan run %1 skipped: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Plan run %1 is made again: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Left the plan: the control panel is yours; runs made now are not the plan&apos;s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>New &amp;plan from template…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open plan &amp;file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+7"/>
+        <source>Open plan file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>Plans (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Open a session first: the plan is kept in it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>New plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Experiment plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Plan &quot;%1&quot;: %n run(s), kept in %2</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The session&apos;s plan could not be opened: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Set by plan run %1 (%2); Leave plan in the Plan dock frees it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Plan run %1 cannot be set: %2. Left the plan.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Plan run %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Simulated rig for plan run %1: %2, seed %3 (enable, bias and zero again)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 (template %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Run %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1. %2 – %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>run %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Plan run %1 could not be recorded in plan.json: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::NewPlanDialog</name>
+    <message>
+        <location filename="../widgets/plan_panel.cpp" line="+186"/>
+        <source>New plan from template</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>as listed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>randomised</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>blocked by site</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Recorded in the plan: the same seed gives the same order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Template</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Seed</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::PlanPanel</name>
+    <message>
+        <location line="-183"/>
+        <source>No experiment plan in this session. Session ▸ New plan from template… makes one; its runs are then set here one after the other.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>New plan from template…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Bias done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ticks itself when the sensor has been biased since the last run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zero done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ticks itself when the position has been zeroed since the last run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Skip run…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Marks the next run skipped, with a reason, and moves on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Redo run…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Skip run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Why is %1 skipped?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Redo run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Why is %1 made again? Its attempt stays in the plan, marked discarded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Every run of the plan is completed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Next: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Done: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No run of the plan is done yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Makes %1 again, with a reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Leave plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Return to plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Releases the control panel&apos;s settings; runs made meanwhile are not the plan&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sets and locks the next plan run&apos;s settings again</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::PlanReasonDialog</name>
+    <message>
+        <location line="+29"/>
+        <source>e.g. a vessel at this site</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>nb::PlanWalker</name>
+    <message>
+        <location filename="../app/plan_walker.cpp" line="+27"/>
+        <source>Plan run %1 had ended before the interruption (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Plan run %1 was interrupted; it runs again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Open a session first: the plan is kept in it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+190"/>
+        <location line="+27"/>
+        <source>A plan run is recording: end it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-210"/>
+        <source>%1 already holds the plan &quot;%2&quot; with runs made; use another session for a new plan.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+111"/>
+        <source>the operator&apos;s step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bias</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Plan run %1: tick the checklist first (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>All %1 runs completed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>less than a minute left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>about %1 min left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run %1 of %2 · %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+44"/>
+        <source>No plan run is next.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+27"/>
+        <source>Give a reason.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1991,7 +2489,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::RunListModel</name>
     <message>
-        <location filename="../widgets/session_view.cpp" line="+40"/>
+        <location filename="../widgets/session_view.cpp" line="+42"/>
         <source>recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2029,7 +2527,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::SessionInfoDialog</name>
     <message>
-        <location filename="../widgets/session_info_dialog.cpp" line="+20"/>
+        <location filename="../widgets/session_info_dialog.cpp" line="+22"/>
         <source>New session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2039,7 +2537,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2161,12 +2659,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::SimulatedRigDialog</name>
     <message>
-        <location filename="../widgets/simulated_rig_dialog.cpp" line="+17"/>
+        <location filename="../widgets/simulated_rig_dialog.cpp" line="+19"/>
         <source>Simulated rig</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>the preset&apos;s usual tip</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2331,9 +2829,9 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <location filename="../app/cmd_fit.cpp" line="+84"/>
         <location line="+49"/>
         <location line="+126"/>
-        <location filename="../app/cmd_plan.cpp" line="+74"/>
+        <location filename="../app/cmd_plan.cpp" line="+75"/>
         <location line="+156"/>
-        <location line="+270"/>
+        <location line="+255"/>
         <location filename="../app/cmd_sync.cpp" line="+36"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -3114,7 +3612,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-442"/>
+        <location filename="../app/cmd_plan.cpp" line="-427"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3254,12 +3752,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+138"/>
+        <location line="+123"/>
         <source>run %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-112"/>
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3299,12 +3797,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+5"/>
         <source>run %1 had ended before the interruption: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+2"/>
         <source>run %1 was interrupted; it runs again</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3742,7 +4240,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+128"/>
         <source>the run did not start (exit code %1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4012,7 +4510,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+211"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+222"/>
         <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation type="unfinished"></translation>
@@ -4950,6 +5448,46 @@ Commands:
         <source>|Dn| &lt; |Cn|: static friction below dynamic friction</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../core/data_names.cpp" line="+12"/>
+        <source>beveled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>diamond</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>blunt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Liver %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Prostate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>linear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>sine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>nominal (device)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrDevices</name>
@@ -5468,13 +6006,13 @@ Commands:
     </message>
     <message>
         <location line="+7"/>
-        <location line="+60"/>
+        <location line="+62"/>
         <location line="+10"/>
         <source>Stop the motion first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-70"/>
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5501,13 +6039,13 @@ Commands:
     <message>
         <location line="+4"/>
         <location line="+20"/>
-        <location line="+20"/>
+        <location line="+22"/>
         <location line="+10"/>
         <source>Enable the stage first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-50"/>
         <source>Zeroing needs the stage at rest.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5533,13 +6071,13 @@ Commands:
     </message>
     <message>
         <location line="+4"/>
-        <location line="+22"/>
+        <location line="+24"/>
         <location line="+10"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="-32"/>
         <source>Open or create a session first: the run needs a folder.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5550,12 +6088,12 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Zero the stage position first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-18"/>
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5571,7 +6109,7 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+36"/>
+        <location line="+38"/>
         <source>The stage is moving.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5611,7 +6149,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/sim/simulated_devices.cpp" line="+18"/>
+        <location filename="../devices/sim/simulated_devices.cpp" line="+19"/>
         <source>simulated rig (%1, %2 tip, seed %3%4)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5868,6 +6406,26 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+12"/>
+        <source>%1 by %2: mean ± std, n per level</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mean ± std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../widgets/analysis/figure_export.cpp" line="+44"/>
         <source>unknown figure format &apos;%1&apos; (png, svg or pdf)</source>
         <translation type="unfinished"></translation>
@@ -5903,7 +6461,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-405"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-521"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5978,12 +6536,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+116"/>
-        <source>nominal (device)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+74"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+194"/>
         <source>stage enabled; fault cleared</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6008,7 +6561,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>stage position zeroed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6069,7 +6622,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+143"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6084,7 +6637,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+50"/>
         <source>puncture %1 at %2 mm: stage stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6115,7 +6668,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-419"/>
+        <location line="-423"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6125,7 +6678,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>a run is already on its way to its start position</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6180,7 +6733,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+156"/>
+        <location line="+159"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation type="unfinished"></translation>
     </message>
