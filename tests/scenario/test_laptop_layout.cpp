@@ -18,6 +18,9 @@
 #include "widgets/label_model.h"
 #include "widgets/review_workspace.h"
 #include "widgets/session_view.h"
+#include "widgets/session_info_dialog.h"
+#include "widgets/simulated_rig_dialog.h"
+#include "widgets/calibration_wizard.h"
 #include "widgets/timeline.h"
 
 #include <QDir>
@@ -131,6 +134,22 @@ private slots:
                 QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
                                                             QStringLiteral("%1/export_%2.png").arg(shots, language)});
                 exporter->reject();
+                // The dialogs that show data names (tips, tissue presets) and the calibration.
+                auto shoot = [&](QWidget* dialog, const char* name) {
+                    dialog->show();
+                    QTest::qWait(600);
+                    QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                                QStringLiteral("%1/%2_%3.png").arg(shots, QLatin1String(name), language)});
+                    dialog->close();
+                };
+                nb::SessionInfo info;
+                info.tip = QStringLiteral("beveled");
+                info.organ = QStringLiteral("liver");
+                nb::SessionInfoDialog details(nb::SessionInfoDialog::Mode::Edit, info, QString(), &w);
+                shoot(&details, "session_details");
+                nb::SimulatedRigDialog rig(nb::devices::SimulatedRigSpec{}, 1000.0, &w);
+                shoot(&rig, "simulated_rig");
+                shoot(w.openCalibrationWizard(), "calibration");
             }
             // Long results: every result line the operator may see, filled with a long text.
             const QString longText = QStringLiteral("found 1.2345 s (confidence 0.93, r = 0.88) ").repeated(8);
