@@ -109,6 +109,10 @@ private slots:
                 w.reviewWorkspace()->suggestLabels();
             w.reviewWorkspace()->setCursorTime(4.0);
             QTest::qWait(300);
+            // The default label tracks are said in the operator's language (stored as insertion).
+            const QString keys = w.reviewWorkspace()->findChild<QLabel*>(QStringLiteral("keysHelp"))->text();
+            QVERIFY2(keys.contains(language == QLatin1String("de") ? QStringLiteral("1 Einstich/a") : QStringLiteral("1 insertion/a")), qPrintable(keys));
+            QVERIFY(w.reviewWorkspace()->labelModel()->tracks().contains(QStringLiteral("insertion")));
 
             if (const QString shots = qEnvironmentVariable("NB_SCREENSHOT_DIR");
                 !shots.isEmpty() && QGuiApplication::platformName() == QLatin1String("xcb")) {
