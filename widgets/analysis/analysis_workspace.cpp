@@ -90,7 +90,9 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
             if (c < row.size()) {
                 if (const auto* s = std::get_if<QString>(&row[c])) {
                     // A tip is data ("beveled" in the exported table), said in the operator's language here.
-                    item->setText(t.columns[c].key == QLatin1String("tip") ? tipDisplayName(*s) : *s);
+                    item->setText(t.columns[c].key == QLatin1String("tip")                     ? tipDisplayName(*s)
+                                  : t.columns[c].key == QLatin1String("tissue") && s->isEmpty() ? nb::TrViews::tr("no tissue given")
+                                                                                                  : *s);
                     // Outliers and failed fits stand out; other text columns are just text.
                     if ((t.columns[c].key == QLatin1String("outlier") && !s->isEmpty()) ||
                         *s == nb::TrViews::tr("not fitted"))
@@ -425,7 +427,9 @@ void AnalysisWorkspace::refreshViews()
         const QString keep = box->currentText();
         const QSignalBlocker block(box);
         box->clear();
-        box->addItems(items);
+        // The item's data is the name in the runs; runs that name no tissue are said so.
+        for (const QString& item : items)
+            box->addItem(item.isEmpty() ? nb::TrViews::tr("no tissue given") : item, item);
         const int i = box->findText(keep);
         box->setCurrentIndex(i >= 0 ? i : (items.isEmpty() ? -1 : 0));
     };
@@ -446,7 +450,7 @@ void AnalysisWorkspace::refreshViews()
 
 void AnalysisWorkspace::showStiffness()
 {
-    plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentText());
+    plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentData().toString());
     legendBelow(stiffnessPlot_);
 }
 
