@@ -126,6 +126,21 @@ private slots:
                     const QString name = QStringLiteral("%1/%2_%3.png").arg(shots, QStringList{"record", "review", "analysis"}.value(tab), language);
                     QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"), name});
                 }
+                // Analysis' other figures, and the panel with the sine's fields.
+                auto* analysisTabs = w.analysisWorkspace()->findChild<QTabWidget*>();
+                for (int inner = 1; inner < analysisTabs->count(); ++inner) {
+                    analysisTabs->setCurrentIndex(inner);
+                    QTest::qWait(800);
+                    QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                                QStringLiteral("%1/analysis%2_%3.png").arg(shots).arg(inner).arg(language)});
+                }
+                analysisTabs->setCurrentIndex(0);
+                w.controlPanel()->findChild<QRadioButton*>(QStringLiteral("sine"))->setChecked(true);
+                w.workspaces()->setCurrentIndex(0);
+                QTest::qWait(800);
+                QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                            QStringLiteral("%1/record_sine_%2.png").arg(shots, language)});
+                w.controlPanel()->findChild<QRadioButton*>(QStringLiteral("linear"))->setChecked(true);
                 // The dialogs a new operator meets: the welcome and Export session….
                 w.workspaces()->setCurrentIndex(0);
                 nb::WelcomeDialog* welcome = w.showWelcome();

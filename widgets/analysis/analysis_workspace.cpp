@@ -55,7 +55,7 @@ QCustomPlot* newPlot(QWidget* parent)
 }
 
 // The legend under the plot, not over its data (the curves fill the corners of a fit plot).
-void legendBelow(QCustomPlot* p)
+void legendBelow(QCustomPlot* p, int columns = 2)
 {
     QCPLegend* l = p->legend;
     if (!l || !l->visible())
@@ -68,7 +68,7 @@ void legendBelow(QCustomPlot* p)
         p->plotLayout()->setRowStretchFactor(row, 0.001);
         l->setMargins(QMargins(4, 2, 4, 2));
     }
-    l->setWrap(2);  // two across: long fit formulas keep their room
+    l->setWrap(columns);  // two across: long fit formulas keep their room
     l->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
     p->replot();
 }
@@ -468,6 +468,9 @@ void AnalysisWorkspace::showFriction()
     plotFrictionVelocity(frictionPlot_, *run, *fit);
     legendBelow(frictionPlot_);
     plotPhases(phasesPlot_, *run);
+    // In the window the phases plot is half as wide as a figure: its one-row legend ran past
+    // the plot's edge and over the force.
+    legendBelow(phasesPlot_);
 }
 
 void AnalysisWorkspace::showValidation()
