@@ -14,6 +14,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QListWidget>
+#include <QLocale>
 #include <QStandardItemModel>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -136,6 +137,17 @@ private slots:
         for (int r = 0; r < w.stiffnessRunsModel()->rowCount(); ++r)
             saidInTable |= w.stiffnessRunsModel()->item(r, 1)->text() == QStringLiteral("no tissue given");
         QVERIFY(saidInTable);
+
+        // Numbers in the window's tables as the plots write them: 0,0474 in German.
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        AnalysisWorkspace german;
+        QVERIFY(german.openSession(tmp.path()));
+        QLocale::setDefault(before);
+        const QString a1 = german.stiffnessRunsModel()->item(0, 2)->text();
+        QVERIFY2(a1.startsWith(QStringLiteral("0,")), qPrintable(a1));
+        QVERIFY2(german.stiffnessRunsModel()->horizontalHeaderItem(3)->text().endsWith(QStringLiteral("[N/mm²]")),
+                 qPrintable(german.stiffnessRunsModel()->horizontalHeaderItem(3)->text()));
     }
 
     void runChoiceAndLabelEditsUpdateResults()

@@ -21,6 +21,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSplitter>
@@ -80,7 +81,11 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
     model->clear();
     QStringList headers;
     for (const TableColumn& c : t.columns)
-        headers << (c.unit.isEmpty() ? c.title : QStringLiteral("%1 [%2]").arg(c.title, c.unit));
+        headers << (c.unit.isEmpty() ? c.title : QStringLiteral("%1 [%2]").arg(c.title, QString(c.unit).replace(QLatin1String("^2"), QStringLiteral("²"))));
+    // Numbers as the plots beside the table write them (0,0474 in German); the exported tables
+    // keep their own format.
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
     model->setHorizontalHeaderLabels(headers);
     for (const auto& row : t.rows) {
         QList<QStandardItem*> items;
@@ -99,7 +104,7 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
                         flagged = true;
                 } else {
                     const double v = std::get<double>(row[c]);
-                    item->setText(std::isnan(v) ? QStringLiteral("–") : QString::number(v, 'f', std::max(0, t.columns[c].decimals)));
+                    item->setText(std::isnan(v) ? QStringLiteral("–") : locale.toString(v, 'f', std::max(0, t.columns[c].decimals)));
                     item->setData(v, Qt::UserRole);
                     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
                 }
