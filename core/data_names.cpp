@@ -36,6 +36,15 @@ QString motionDisplayName(const QString& motion)
     return motion;
 }
 
+QString trackDisplayName(const QString& track)
+{
+    if (track == QLatin1String("insertion"))
+        return nb::TrCore::tr("insertion");
+    if (track == QLatin1String("withdrawal"))
+        return nb::TrCore::tr("withdrawal");
+    return track;
+}
+
 QString calibrationDisplayName(const QString& calibration)
 {
     return calibration == QLatin1String(kNominalCalibration) ? nb::TrCore::tr("nominal (device)") : calibration;

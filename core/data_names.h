@@ -18,6 +18,9 @@ QString motionDisplayName(const QString& motion);
 // The name a run file gives the device's own calibration ("nominal (device)"), translated;
 // a calibration of the operator's naming is shown as named.
 QString calibrationDisplayName(const QString& calibration);
+// A label track of the default label sets ("insertion" → "Einstich"); tracks the operator
+// named are shown as named.
+QString trackDisplayName(const QString& track);
 // What the acquisition engine stores as the calibration before one is chosen.
 inline constexpr char kNominalCalibration[] = "nominal (device)";
 

@@ -6,6 +6,7 @@
 #include "timeline.h"
 #include "video_view.h"
 
+#include "core/data_names.h"
 #include "core/label_suggest.h"
 #include "core/labels.h"
 #include "core/run_file.h"
@@ -262,6 +263,7 @@ void ReviewWorkspace::buildUi()
     labelCount_->setObjectName(QStringLiteral("labelCount"));
     labels->addWidget(labelCount_);
     keysHelp_ = new QLabel(this);
+    keysHelp_->setObjectName(QStringLiteral("keysHelp"));
     keysHelp_->setWordWrap(true);
     keysHelp_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     labels->addWidget(keysHelp_, 1);
@@ -313,7 +315,7 @@ void ReviewWorkspace::updateKeysHelp()
 {
     QStringList keys;
     for (const LabelDef& d : model_->definitions())
-        keys << QStringLiteral("%1 %2/%3").arg(QKeySequence(d.key).toString(QKeySequence::NativeText), d.track, d.label);
+        keys << QStringLiteral("%1 %2/%3").arg(QKeySequence(d.key).toString(QKeySequence::NativeText), trackDisplayName(d.track), d.label);
     keysHelp_->setText(tr("Keys: %1 · S split · Del delete · Ctrl+Z undo").arg(keys.join(QStringLiteral(", "))));
 }
 
@@ -645,9 +647,9 @@ void ReviewWorkspace::handleLabelKey(int key)
         const Label l{track, label, std::min(start, cursor_), std::max(start, cursor_), {}};
         if (l.end_s > l.start_s && model_->canPlace(l)) {
             undo_->push(new AddLabelCommand(model_, l));
-            showStatus(tr("%1 on %2 closed at %3 s").arg(label, track).arg(cursor_, 0, 'f', 3));
+            showStatus(tr("%1 on %2 closed at %3 s").arg(label, trackDisplayName(track)).arg(cursor_, 0, 'f', 3));
         } else {
-            showStatus(tr("%1 on %2 was not closed (it would be empty or overlap another phase): not added").arg(label, track));
+            showStatus(tr("%1 on %2 was not closed (it would be empty or overlap another phase): not added").arg(label, trackDisplayName(track)));
         }
     }
     const auto it = pending_.find(def->track);
@@ -660,7 +662,7 @@ void ReviewWorkspace::handleLabelKey(int key)
             if (model_->canPlace(l))
                 undo_->push(new AddLabelCommand(model_, l));
             else
-                showStatus(tr("%1 overlaps another phase on %2: not added").arg(label, def->track));
+                showStatus(tr("%1 overlaps another phase on %2: not added").arg(label, trackDisplayName(def->track)));
         }
         if (label == def->label)
             return;  // the same key closes the phase

@@ -1,5 +1,7 @@
 #include "timeline.h"
 
+#include "core/data_names.h"
+
 #include "label_commands.h"
 #include "label_model.h"
 
@@ -88,7 +90,7 @@ void Timeline::paintEvent(QPaintEvent*)
             p.fillRect(QRect(0, y, width(), rowHeight()), palette().alternateBase());
         p.setPen(palette().text().color());
         p.drawText(QRect(2, y, axisLeft() - 6, rowHeight()), Qt::AlignVCenter | Qt::AlignRight,
-                   fontMetrics().elidedText(track, Qt::ElideRight, std::max(8, axisLeft() - 6)));
+                   fontMetrics().elidedText(trackDisplayName(track), Qt::ElideRight, std::max(8, axisLeft() - 6)));
         p.setPen(palette().mid().color());
         p.drawLine(axisLeft(), y + rowHeight() - 1, width(), y + rowHeight() - 1);
     }

@@ -14,9 +14,11 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QListWidget>
+#include <QLocale>
 #include <QStandardItemModel>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QComboBox>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -99,6 +101,53 @@ private slots:
             QVERIFY(shot.save(QStringLiteral(NB_BINARY_DIR "/screenshots/analysis_%1.png").arg(QLatin1String(names[t]))));
             QVERIFY(colourCount(shot) > 20);
         }
+    }
+
+    // Runs that name no tissue (recorded in the window, say) are one group said so, not a
+    // blank entry; choosing it plots them.
+    void runsWithoutATissueAreNamed()
+    {
+        QTemporaryDir tmp;
+        const QDir d(tmp.path());
+        QVERIFY(QFile::copy(QDir(dir_.path()).filePath(QStringLiteral("run_001_linear.csv")), d.filePath(QStringLiteral("run_001_linear.csv"))));
+        QFile in(QDir(dir_.path()).filePath(QStringLiteral("run_002_linear.csv")));
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        QByteArray text = in.readAll();
+        QVERIFY(text.contains("# tissue: liver1\n"));
+        text.replace("# tissue: liver1\n", "");
+        QFile out(d.filePath(QStringLiteral("run_002_linear.csv")));
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(text);
+        out.close();
+
+        AnalysisWorkspace w;
+        QVERIFY(w.openSession(tmp.path()));
+        QCOMPARE(w.analysis().stiffnessGroups.size(), std::size_t(2));
+        QComboBox* groups = nullptr;
+        for (QComboBox* box : w.findChildren<QComboBox*>())
+            if (box->findData(QStringLiteral("liver1")) >= 0)
+                groups = box;
+        QVERIFY(groups);
+        const int unnamed = groups->findData(QString());
+        QVERIFY(unnamed >= 0);
+        QCOMPARE(groups->itemText(unnamed), QStringLiteral("no tissue given"));
+        groups->setCurrentIndex(unnamed);
+        QVERIFY(w.stiffnessPlot()->graphCount() >= 3);  // the run (points + fit) + pooled
+        bool saidInTable = false;
+        for (int r = 0; r < w.stiffnessRunsModel()->rowCount(); ++r)
+            saidInTable |= w.stiffnessRunsModel()->item(r, 1)->text() == QStringLiteral("no tissue given");
+        QVERIFY(saidInTable);
+
+        // Numbers in the window's tables as the plots write them: 0,0474 in German.
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        AnalysisWorkspace german;
+        QVERIFY(german.openSession(tmp.path()));
+        QLocale::setDefault(before);
+        const QString a1 = german.stiffnessRunsModel()->item(0, 2)->text();
+        QVERIFY2(a1.startsWith(QStringLiteral("0,")), qPrintable(a1));
+        QVERIFY2(german.stiffnessRunsModel()->horizontalHeaderItem(3)->text().endsWith(QStringLiteral("[N/mm²]")),
+                 qPrintable(german.stiffnessRunsModel()->horizontalHeaderItem(3)->text()));
     }
 
     void runChoiceAndLabelEditsUpdateResults()

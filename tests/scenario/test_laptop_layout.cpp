@@ -18,6 +18,9 @@
 #include "widgets/label_model.h"
 #include "widgets/review_workspace.h"
 #include "widgets/session_view.h"
+#include "widgets/session_info_dialog.h"
+#include "widgets/simulated_rig_dialog.h"
+#include "widgets/calibration_wizard.h"
 #include "widgets/timeline.h"
 
 #include <QDir>
@@ -106,6 +109,10 @@ private slots:
                 w.reviewWorkspace()->suggestLabels();
             w.reviewWorkspace()->setCursorTime(4.0);
             QTest::qWait(300);
+            // The default label tracks are said in the operator's language (stored as insertion).
+            const QString keys = w.reviewWorkspace()->findChild<QLabel*>(QStringLiteral("keysHelp"))->text();
+            QVERIFY2(keys.contains(language == QLatin1String("de") ? QStringLiteral("1 Einstich/a") : QStringLiteral("1 insertion/a")), qPrintable(keys));
+            QVERIFY(w.reviewWorkspace()->labelModel()->tracks().contains(QStringLiteral("insertion")));
 
             if (const QString shots = qEnvironmentVariable("NB_SCREENSHOT_DIR");
                 !shots.isEmpty() && QGuiApplication::platformName() == QLatin1String("xcb")) {
@@ -119,6 +126,21 @@ private slots:
                     const QString name = QStringLiteral("%1/%2_%3.png").arg(shots, QStringList{"record", "review", "analysis"}.value(tab), language);
                     QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"), name});
                 }
+                // Analysis' other figures, and the panel with the sine's fields.
+                auto* analysisTabs = w.analysisWorkspace()->findChild<QTabWidget*>();
+                for (int inner = 1; inner < analysisTabs->count(); ++inner) {
+                    analysisTabs->setCurrentIndex(inner);
+                    QTest::qWait(800);
+                    QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                                QStringLiteral("%1/analysis%2_%3.png").arg(shots).arg(inner).arg(language)});
+                }
+                analysisTabs->setCurrentIndex(0);
+                w.controlPanel()->findChild<QRadioButton*>(QStringLiteral("sine"))->setChecked(true);
+                w.workspaces()->setCurrentIndex(0);
+                QTest::qWait(800);
+                QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                            QStringLiteral("%1/record_sine_%2.png").arg(shots, language)});
+                w.controlPanel()->findChild<QRadioButton*>(QStringLiteral("linear"))->setChecked(true);
                 // The dialogs a new operator meets: the welcome and Export session….
                 w.workspaces()->setCurrentIndex(0);
                 nb::WelcomeDialog* welcome = w.showWelcome();
@@ -131,6 +153,22 @@ private slots:
                 QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
                                                             QStringLiteral("%1/export_%2.png").arg(shots, language)});
                 exporter->reject();
+                // The dialogs that show data names (tips, tissue presets) and the calibration.
+                auto shoot = [&](QWidget* dialog, const char* name) {
+                    dialog->show();
+                    QTest::qWait(600);
+                    QProcess::execute(QStringLiteral("import"), {QStringLiteral("-window"), QStringLiteral("root"),
+                                                                QStringLiteral("%1/%2_%3.png").arg(shots, QLatin1String(name), language)});
+                    dialog->close();
+                };
+                nb::SessionInfo info;
+                info.tip = QStringLiteral("beveled");
+                info.organ = QStringLiteral("liver");
+                nb::SessionInfoDialog details(nb::SessionInfoDialog::Mode::Edit, info, QString(), &w);
+                shoot(&details, "session_details");
+                nb::SimulatedRigDialog rig(nb::devices::SimulatedRigSpec{}, 1000.0, &w);
+                shoot(&rig, "simulated_rig");
+                shoot(w.openCalibrationWizard(), "calibration");
             }
             // Long results: every result line the operator may see, filled with a long text.
             const QString longText = QStringLiteral("found 1.2345 s (confidence 0.93, r = 0.88) ").repeated(8);

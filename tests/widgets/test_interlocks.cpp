@@ -8,6 +8,8 @@
 #include <QLabel>
 #include <QSignalSpy>
 #include <QLocale>
+#include <QPushButton>
+#include <QToolButton>
 #include <QtTest>
 
 using nb::Control;
@@ -183,6 +185,16 @@ private slots:
         QVERIFY(panel.findChild<QLabel*>(QStringLiteral("status_margin"))->text().startsWith(QStringLiteral("0.50 N")));
         QVERIFY(!panel.findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->isEnabled());
         QVERIFY(estopButton->isEnabled());
+
+        // Jog is folded away until asked for, and folds away again.
+        auto* jogToggle = panel.findChild<QToolButton*>(QStringLiteral("jogToggle"));
+        auto* jogOut = panel.findChild<QPushButton*>(QStringLiteral("jogOut"));
+        QVERIFY(jogToggle && jogOut);
+        QVERIFY(!jogOut->isVisibleTo(&panel));
+        jogToggle->click();
+        QVERIFY(jogOut->isVisibleTo(&panel));
+        jogToggle->click();
+        QVERIFY(!jogOut->isVisibleTo(&panel));
 
         // Numbers in the status are written as in the fields beside them: 4,500 N in German.
         const QLocale before;

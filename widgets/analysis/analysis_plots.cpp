@@ -94,7 +94,7 @@ void fitRanges(QCustomPlot* plot, double margin = 0.05)
 
 void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& group)
 {
-    reset(plot, nb::TrViews::tr("Stiffness before puncture: %1").arg(group.isEmpty() ? nb::TrViews::tr("all runs") : group),
+    reset(plot, nb::TrViews::tr("Stiffness before puncture: %1").arg(group.isEmpty() ? nb::TrViews::tr("no tissue given") : group),
           nb::TrViews::tr("depth past contact [mm]"), nb::TrViews::tr("force [N]"));
     const StiffnessGroupResult* g = nullptr;
     for (const auto& candidate : a.stiffnessGroups)

@@ -21,6 +21,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSplitter>
@@ -55,7 +56,7 @@ QCustomPlot* newPlot(QWidget* parent)
 }
 
 // The legend under the plot, not over its data (the curves fill the corners of a fit plot).
-void legendBelow(QCustomPlot* p)
+void legendBelow(QCustomPlot* p, int columns = 2)
 {
     QCPLegend* l = p->legend;
     if (!l || !l->visible())
@@ -68,7 +69,7 @@ void legendBelow(QCustomPlot* p)
         p->plotLayout()->setRowStretchFactor(row, 0.001);
         l->setMargins(QMargins(4, 2, 4, 2));
     }
-    l->setWrap(2);  // two across: long fit formulas keep their room
+    l->setWrap(columns);  // two across: long fit formulas keep their room
     l->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
     p->replot();
 }
@@ -80,7 +81,11 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
     model->clear();
     QStringList headers;
     for (const TableColumn& c : t.columns)
-        headers << (c.unit.isEmpty() ? c.title : QStringLiteral("%1 [%2]").arg(c.title, c.unit));
+        headers << (c.unit.isEmpty() ? c.title : QStringLiteral("%1 [%2]").arg(c.title, QString(c.unit).replace(QLatin1String("^2"), QStringLiteral("²"))));
+    // Numbers as the plots beside the table write them (0,0474 in German); the exported tables
+    // keep their own format.
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
     model->setHorizontalHeaderLabels(headers);
     for (const auto& row : t.rows) {
         QList<QStandardItem*> items;
@@ -90,14 +95,16 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
             if (c < row.size()) {
                 if (const auto* s = std::get_if<QString>(&row[c])) {
                     // A tip is data ("beveled" in the exported table), said in the operator's language here.
-                    item->setText(t.columns[c].key == QLatin1String("tip") ? tipDisplayName(*s) : *s);
+                    item->setText(t.columns[c].key == QLatin1String("tip")                     ? tipDisplayName(*s)
+                                  : t.columns[c].key == QLatin1String("tissue") && s->isEmpty() ? nb::TrViews::tr("no tissue given")
+                                                                                                  : *s);
                     // Outliers and failed fits stand out; other text columns are just text.
                     if ((t.columns[c].key == QLatin1String("outlier") && !s->isEmpty()) ||
                         *s == nb::TrViews::tr("not fitted"))
                         flagged = true;
                 } else {
                     const double v = std::get<double>(row[c]);
-                    item->setText(std::isnan(v) ? QStringLiteral("–") : QString::number(v, 'f', std::max(0, t.columns[c].decimals)));
+                    item->setText(std::isnan(v) ? QStringLiteral("–") : locale.toString(v, 'f', std::max(0, t.columns[c].decimals)));
                     item->setData(v, Qt::UserRole);
                     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
                 }
@@ -435,7 +442,9 @@ void AnalysisWorkspace::refreshViews()
         const QString keep = box->currentText();
         const QSignalBlocker block(box);
         box->clear();
-        box->addItems(items);
+        // The item's data is the name in the runs; runs that name no tissue are said so.
+        for (const QString& item : items)
+            box->addItem(item.isEmpty() ? nb::TrViews::tr("no tissue given") : item, item);
         const int i = box->findText(keep);
         box->setCurrentIndex(i >= 0 ? i : (items.isEmpty() ? -1 : 0));
     };
@@ -538,7 +547,7 @@ void AnalysisWorkspace::showByFactor()
 
 void AnalysisWorkspace::showStiffness()
 {
-    plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentText());
+    plotStiffness(stiffnessPlot_, analysis_, stiffnessGroup_->currentData().toString());
     legendBelow(stiffnessPlot_);
 }
 
@@ -556,6 +565,9 @@ void AnalysisWorkspace::showFriction()
     plotFrictionVelocity(frictionPlot_, *run, *fit);
     legendBelow(frictionPlot_);
     plotPhases(phasesPlot_, *run);
+    // In the window the phases plot is half as wide as a figure: its one-row legend ran past
+    // the plot's edge and over the force.
+    legendBelow(phasesPlot_);
 }
 
 void AnalysisWorkspace::showValidation()
