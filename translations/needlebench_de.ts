@@ -16,7 +16,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+120" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+127" />
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -39,18 +39,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38" />
-        <location line="+322" />
+        <location line="+324" />
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-321" />
-        <location line="+322" />
+        <location line="-323" />
+        <location line="+324" />
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-286" />
+        <location line="-288" />
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -128,7 +128,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+74" />
+        <location line="+76" />
         <source>The factors of a plan's runs (their factor_… metadata)</source>
         <translation>Die Faktoren der Planläufe (ihre factor_…-Metadaten)</translation>
     </message>
@@ -154,7 +154,7 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+32" />
-        <location line="+19" />
+        <location line="+22" />
         <source>no run</source>
         <translation>kein Lauf</translation>
     </message>
@@ -1797,7 +1797,9 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location line="+5" />
         <source>Plan "%1": %n run(s), kept in %2</source>
         <translation>
-            <numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform><numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform></translation>
+            <numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform>
+            <numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+10" />
@@ -2104,7 +2106,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+45" />
+        <location filename="../widgets/review_workspace.cpp" line="+46" />
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2155,12 +2157,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1" />
-        <location line="+416" />
+        <location line="+417" />
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-416" />
+        <location line="-417" />
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2282,7 +2284,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
     <message numerus="yes">
-        <location line="+168" />
+        <location line="+169" />
         <source>labels: %n</source>
         <translation>
             <numerusform>Labels: %n</numerusform>
@@ -2346,7 +2348,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-559" />
+        <location line="-560" />
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2401,7 +2403,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Labels dieses Protokolls und ihre Tasten hinzufügen, umbenennen oder entfernen</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+60" />
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation>Tasten: %1 · S teilen · Entf löschen · Strg+Z rückgängig</translation>
     </message>
@@ -5559,6 +5561,16 @@ Befehle:
         <translation>Sinus</translation>
     </message>
     <message>
+        <location line="+7" />
+        <source>insertion</source>
+        <translation>Einstich</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>withdrawal</source>
+        <translation>Rückzug</translation>
+    </message>
+    <message>
         <location line="+6" />
         <source>nominal (device)</source>
         <translation>nominal (Gerät)</translation>
@@ -6367,11 +6379,6 @@ Befehle:
         <translation>Steifigkeit vor dem Durchstich: %1</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>all runs</source>
-        <translation>alle Läufe</translation>
-    </message>
-    <message>
         <location line="+1" />
         <source>depth past contact [mm]</source>
         <translation>Tiefe nach dem Kontakt [mm]</translation>
@@ -6409,7 +6416,14 @@ Befehle:
         <translation>Karnopp-Fit (%1 Hz)</translation>
     </message>
     <message>
-        <location line="-59" />
+        <location line="-109" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-530" />
+        <location line="+348" />
+        <source>no tissue given</source>
+        <translation>ohne Gewebeangabe</translation>
+    </message>
+    <message>
+        <location line="+50" />
         <source>pooled fit:
 F = %1 x + %2 x²
 (F in N, x in mm)</source>
@@ -6538,7 +6552,7 @@ F = %1 x + %2 x²
         <translation>%1 teilen</translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-521" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-344" />
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>

@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+120"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+127"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+322"/>
+        <location line="+324"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-321"/>
-        <location line="+322"/>
+        <location line="-323"/>
+        <location line="+324"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-286"/>
+        <location line="-288"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -128,7 +128,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+76"/>
         <source>The factors of a plan&apos;s runs (their factor_… metadata)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -154,7 +154,7 @@ or without contact</source>
     </message>
     <message>
         <location line="+32"/>
-        <location line="+19"/>
+        <location line="+22"/>
         <source>no run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2104,7 +2104,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+45"/>
+        <location filename="../widgets/review_workspace.cpp" line="+46"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2155,12 +2155,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+416"/>
+        <location line="+417"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-416"/>
+        <location line="-417"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2282,7 +2282,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+168"/>
+        <location line="+169"/>
         <source>labels: %n</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -2346,7 +2346,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-559"/>
+        <location line="-560"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2401,7 +2401,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5484,6 +5484,16 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>insertion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>withdrawal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>nominal (device)</source>
         <translation type="unfinished"></translation>
@@ -6292,11 +6302,6 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>all runs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location line="+1"/>
         <source>depth past contact [mm]</source>
         <translation type="unfinished"></translation>
@@ -6334,7 +6339,14 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-109"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-530"/>
+        <location line="+348"/>
+        <source>no tissue given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>pooled fit:
 F = %1 x + %2 x²
 (F in N, x in mm)</source>
@@ -6461,7 +6473,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-521"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-344"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>

@@ -3,6 +3,7 @@
 #include "core/decimate.h"
 
 #include <QHBoxLayout>
+#include <QLocale>
 #include <QSplitter>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -380,10 +381,11 @@ void ForcePlots::refresh()
     if (limit_N_ > 0.0) {
         const double latest = shown_ ? data_->force_N[shown_ - 1] : 0.0;
         const bool above = forceTime_->yAxis->range().upper < limit_N_;
+        const QLocale locale;  // as the control panel's spin boxes write the limit
         limitLabel_->setText(tr("limit %1 N%2 · margin %3 N")
-                                 .arg(limit_N_, 0, 'f', 2)
+                                 .arg(locale.toString(limit_N_, 'f', 2))
                                  .arg(above ? tr(" (above the plot)") : QString())
-                                 .arg(limit_N_ - latest, 0, 'f', 2));
+                                 .arg(locale.toString(limit_N_ - latest, 'f', 2)));
     }
     for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_})
         plot->replot();

@@ -1,5 +1,7 @@
 #include "video_view.h"
 
+#include <QLocale>
+
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QMimeData>
@@ -113,7 +115,7 @@ void VideoView::paintEvent(QPaintEvent*)
         p.setPen(QPen(QColor(255, 200, 0), 1, Qt::DashLine));
         p.drawRect(QRectF(t.x() + roi_.x() * sx, t.y() + roi_.y() * sy, roi_.width() * sx, roi_.height() * sy));
     }
-    const QString caption = tr("frame %1   %2 s").arg(index_).arg(time_, 0, 'f', 3);
+    const QString caption = tr("frame %1   %2 s").arg(index_).arg(QLocale().toString(time_, 'f', 3));
     p.setPen(Qt::white);
     p.fillRect(QRect(t.x() + 4, t.y() + 4, p.fontMetrics().horizontalAdvance(caption) + 8, p.fontMetrics().height() + 4),
                QColor(0, 0, 0, 150));
