@@ -1,4 +1,5 @@
 #include "session_analysis.h"
+#include "core/run_keys.h"
 #include "core/tr.h"
 
 #include "core/fit_error.h"
@@ -13,6 +14,20 @@
 namespace nb {
 
 namespace {
+
+// The tissue a run's fits are grouped by: what the run names (`tissue`, from the command line
+// or a plan), else the session's organ and specimen (runs recorded in the window), else the
+// simulated rig's preset.
+QString tissueOf(const Run& run)
+{
+    if (const auto tissue = run.meta(key::tissue); tissue && !tissue->trimmed().isEmpty())
+        return *tissue;
+    const QString organ = run.meta(key::organ).value_or(QString()).trimmed();
+    const QString specimen = run.meta(key::specimen).value_or(QString()).trimmed();
+    if (!organ.isEmpty() || !specimen.isEmpty())
+        return QStringList{organ, specimen}.join(u' ').trimmed();
+    return run.meta(QStringLiteral("sim_tissue")).value_or(QString());
+}
 
 double median(std::vector<double> v)
 {
@@ -57,7 +72,7 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a, const AnalysisOption
             continue;
         StiffnessRunResult s;
         s.run = r.name;
-        s.group = r.run.meta(QStringLiteral("tissue")).value_or(QString());
+        s.group = tissueOf(r.run);
         s.tip = r.run.meta(QStringLiteral("tip")).value_or(QString());
         try {
             s.events = detectEvents(r.run);

@@ -115,6 +115,31 @@ private slots:
         QVERIFY(all.leftOut.isEmpty());
     }
 
+    void runsAreGroupedByTheTissueTheyName()
+    {
+        // Recorded in the window: the session's organ and specimen; on the command line: tissue;
+        // on the simulated rig in the window without details: its preset.
+        auto run = [](std::initializer_list<std::pair<QString, QString>> meta) {
+            nb::DatasetRun r;
+            r.name = QStringLiteral("r%1").arg(meta.size());
+            r.run = noiseRun(0.001, 0.0, 7);
+            r.run.metadata.set(QStringLiteral("motion"), QStringLiteral("linear"));
+            for (const auto& [k, v] : meta)
+                r.run.metadata.set(k, v);
+            return r;
+        };
+        nb::Dataset d;
+        d.runs.push_back(run({{nb::key::organ, QStringLiteral("liver")}, {nb::key::specimen, QStringLiteral("5")}}));
+        d.runs.push_back(run({{nb::key::tissue, QStringLiteral("liver7")}, {nb::key::organ, QStringLiteral("liver")}}));
+        d.runs.push_back(run({{QStringLiteral("sim_tissue"), QStringLiteral("liver3")}}));
+        d.runs.push_back(run({}));
+        const nb::SessionAnalysis a = nb::analyseDataset(d, {.includeJudgedOut = true});
+        QStringList groups;
+        for (const nb::StiffnessRunResult& s : a.stiffness)
+            groups << s.group;
+        QCOMPARE(groups, (QStringList{QStringLiteral("liver 5"), QStringLiteral("liver7"), QStringLiteral("liver3"), QString()}));
+    }
+
     void videoLinkKeptWithTheRun()
     {
         QTemporaryDir tmp;
