@@ -482,8 +482,10 @@ QWidget* AnalysisWorkspace::buildFactorPage()
     factorPlot_ = newPlot(body);
     body->addWidget(factorPlot_);
     body->addWidget(tableView(factorModel_, body));
-    body->setStretchFactor(0, 3);
-    body->setSizes({600, 200});
+    // As the other tabs: the figure two thirds of the height, the table the rest.
+    body->setStretchFactor(0, 2);
+    body->setStretchFactor(1, 1);
+    body->setSizes({400, 200});
     v->addWidget(body, 1);
     connect(fig, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentFigure);
     connect(tab, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentTables);
