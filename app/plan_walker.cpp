@@ -72,10 +72,16 @@ bool PlanWalker::adopt(const Plan& plan, QString* error)
                          .arg(QDir::toNativeSeparators(planPath()), plan_->name);
         return false;
     }
-    plan_ = plan;
-    if (!save(error)) {
-        plan_.reset();
-        return false;
+    // The same design again (e.g. its file opened once more): the session's record of the runs
+    // made is kept, as `plan run` keeps it.
+    const bool keepRecord = plan_ && plan_->sameDesign(plan);
+    if (!keepRecord) {
+        std::optional<Plan> before = plan_;
+        plan_ = plan;
+        if (!save(error)) {
+            plan_ = before;
+            return false;
+        }
     }
     walking_ = true;
     armedIndex_ = -2;

@@ -2,7 +2,10 @@
 // instructions, plan.json round trips and errors that name the file and field, and the
 // status bookkeeping that lets an interrupted plan resume at the first run not completed.
 #include "core/plan.h"
+#include "core/plan_session.h"
+#include "core/run_file.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -366,6 +369,65 @@ private slots:
         QVERIFY(isCompletingEndReason(QStringLiteral("puncture")));
         QVERIFY(isCompletingEndReason(QStringLiteral("force_limit")));
         QVERIFY(!isCompletingEndReason(QStringLiteral("stopped")));
+    }
+
+    // The window and `plan run` settle a plan left "running" the same way (core/plan_session).
+    void resumeKeepsARunThatEndedBeforeTheCrash()
+    {
+        QTemporaryDir session;
+        Plan p = generatePlan(tmpl("overall-stiffness"), PlanOrder::Listed, 1);
+        const QDateTime t0 = QDateTime::currentDateTimeUtc();
+        auto runFile = [&](int index, const QString& name, const QString& endReason) {
+            Run r;
+            for (int i = 0; i < 10; ++i) {
+                r.time_s.push_back(i * 0.01);
+                r.position_mm.push_back(i * 0.1);
+                r.force_N.push_back(0.0);
+            }
+            r.metadata = planRunMetadata(p, p.runs[std::size_t(index)], planFileName());
+            if (!endReason.isEmpty())
+                r.footer.set(QStringLiteral("end_reason"), endReason);
+            writeRunFile(QDir(session.path()).filePath(name), r);
+        };
+        // Run 1 ended and was written, then the program died before plan.json said so.
+        beginAttempt(p, 0, QStringLiteral("run_001_linear.csv"), {}, t0);
+        runFile(0, QStringLiteral("run_001_linear.csv"), QStringLiteral("completed"));
+        // Run 2 (in another plan.json state) died mid-run: its file has no end reason.
+        beginAttempt(p, 1, QStringLiteral("run_002_linear.csv"), {}, t0);
+        runFile(1, QStringLiteral("run_002_linear.csv"), {});
+        // Run 3 died before its file existed.
+        beginAttempt(p, 2, QStringLiteral("run_003_linear.csv"), {}, t0);
+        const PlanResumption r = resumePlan(p, session.path());
+        QCOMPARE(r.endedBefore.size(), std::size_t(1));
+        QCOMPARE(r.endedBefore[0].first, 1);
+        QCOMPARE(r.endedBefore[0].second, QStringLiteral("run_001_linear.csv"));
+        QCOMPARE(r.interrupted, (std::vector<int>{2, 3}));
+        QCOMPARE(p.runs[0].status, PlanRunStatus::Done);
+        QCOMPARE(p.runs[1].attempts.back().result, QStringLiteral("interrupted"));
+        QCOMPARE(p.firstIncomplete(), 1);
+        QCOMPARE(planFilePath(session.path()), QDir(session.path()).filePath(QStringLiteral("plan.json")));
+    }
+
+    void timeLeftFollowsThePlansPace()
+    {
+        Plan p = generatePlan(tmpl("overall-stiffness"), PlanOrder::Listed, 1);  // 21 runs of 10 s motion
+        QCOMPARE(estimatedPlanTimeLeft_s(p), 21 * 10.0);  // no pace yet: the motion alone
+        const QDateTime t0 = QDateTime::currentDateTimeUtc();
+        // Three runs, one every 60 s (the operator's steps included).
+        for (int i = 0; i < 3; ++i) {
+            beginAttempt(p, i, QStringLiteral("run_%1_linear.csv").arg(i + 1), {}, t0.addSecs(60 * i));
+            finishAttempt(p, i, QStringLiteral("completed"), t0.addSecs(60 * i + 10));
+        }
+        QCOMPARE(estimatedPlanTimeLeft_s(p), 18 * 60.0);
+        // A break of two hours is not the pace.
+        beginAttempt(p, 3, QStringLiteral("run_4_linear.csv"), {}, t0.addSecs(120 + 7200));
+        finishAttempt(p, 3, QStringLiteral("completed"), t0.addSecs(120 + 7210));
+        QCOMPARE(estimatedPlanTimeLeft_s(p), 17 * 60.0);
+        // Never below the motion still to come.
+        Plan fast = generatePlan(tmpl("overall-stiffness"), PlanOrder::Listed, 1);
+        beginAttempt(fast, 0, QStringLiteral("a.csv"), {}, t0);
+        beginAttempt(fast, 1, QStringLiteral("b.csv"), {}, t0.addSecs(1));
+        QCOMPARE(estimatedPlanTimeLeft_s(fast), remainingPlanDuration_s(fast));
     }
 };
 

@@ -328,6 +328,39 @@ private slots:
         QCOMPARE(redone.runs[2].attempts[0].discarded, QStringLiteral("air bubble in the trace"));
         QVERIFY(QFileInfo::exists(QDir(sessionDir).filePath(redone.runs[2].attempts[0].runFile)));
         QCOMPARE(redone.runs[3].status, nb::PlanRunStatus::Skipped);
+
+        // The emergency stop works on a plan run as on any: Esc ends it, the attempt is recorded
+        // as such and the run stays next.
+        QTest::qWait(200);  // run three's rig (its seed), switched once the redo is handled
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().running && p->button(Control::Enable)->isEnabled(), 20000);
+        if (!w.engine()->status().stageEnabled)
+            p->button(Control::Enable)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().stageEnabled && p->interlockState().stageEnabled, 20000);
+        p->button(Control::Bias)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.planPanel()->checkBox(nb::PlanPanel::Item::Bias)->isChecked(), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::Zero)->isEnabled(), 20000);
+        p->button(Control::Zero)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.planPanel()->checkBox(nb::PlanPanel::Item::Zero)->isChecked(), 20000);
+        QCheckBox* step = w.planPanel()->checkBox(nb::PlanPanel::Item::Instruction);
+        QTest::mouseClick(step, Qt::LeftButton, {}, QPoint(5, step->height() / 2));
+        QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), qPrintable(p->button(Control::StartInsertion)->toolTip()), 20000);
+        const int ended = w.runsEnded();
+        QTest::mouseClick(p->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().moving && w.engine()->status().recording, 20000);
+        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : static_cast<QWidget*>(&w), Qt::Key_Escape);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), ended + 1, 10000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("emergency_stop"));
+        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().latched, 5000);
+        QCOMPARE(walker->nextRun()->number, 3);
+        const nb::Plan stopped = readPlan(sessionDir);
+        QCOMPARE(int(stopped.runs[2].attempts.size()), 2);
+        QCOMPARE(stopped.runs[2].attempts[1].result, QStringLiteral("emergency_stop"));
+        QCOMPARE(stopped.runs[2].status, nb::PlanRunStatus::Pending);
+        const nb::Run stoppedRun = nb::readRunFile(w.lastRunPath()).run;
+        QCOMPARE(QFileInfo(w.lastRunPath()).fileName(), stopped.runs[2].attempts[1].runFile);
+        QCOMPARE(stoppedRun.meta(QStringLiteral("plan_attempt")).value_or(QString()), QStringLiteral("2"));
+        QCOMPARE(stoppedRun.meta(QStringLiteral("sim_seed")).value_or(QString()), QStringLiteral("7003"));
+        QVERIFY(!w.planPanel()->checkBox(nb::PlanPanel::Item::Bias)->isChecked());  // again before the next attempt
     }
 
     void planFromTemplateThroughTheMenu()

@@ -490,23 +490,34 @@ QWidget* AnalysisWorkspace::buildFactorPage()
     factorChoice_->setToolTip(tr("The factors of a plan's runs (their factor_… metadata)"));
     quantityChoice_ = new QComboBox(page);
     quantityChoice_->setObjectName(QStringLiteral("analysisFactorQuantity"));
+    // Long names elide in the boxes instead of widening the window (as the other tabs' choosers).
+    for (QComboBox* box : {factorChoice_, quantityChoice_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(8);
+    }
     bar->addWidget(new QLabel(tr("Quantity:"), page));
-    bar->addWidget(quantityChoice_);
+    bar->addWidget(quantityChoice_, 1);
     bar->addWidget(new QLabel(tr("against factor:"), page));
-    bar->addWidget(factorChoice_);
-    bar->addStretch(1);
+    bar->addWidget(factorChoice_, 1);
+    v->addLayout(bar);
+    // The saves on a row of their own: two choosers and two buttons side by side would make the
+    // window wider than a 1366 px laptop in German.
+    auto* saves = new QHBoxLayout;
+    saves->addStretch(1);
     auto* fig = new QPushButton(tr("Save figure…"), page);
     auto* tab = new QPushButton(tr("Save tables…"), page);
-    bar->addWidget(fig);
-    bar->addWidget(tab);
-    v->addLayout(bar);
+    saves->addWidget(fig);
+    saves->addWidget(tab);
+    v->addLayout(saves);
     factorModel_ = new QStandardItemModel(this);
     auto* body = new QSplitter(Qt::Vertical, page);
     factorPlot_ = newPlot(body);
     body->addWidget(factorPlot_);
     body->addWidget(tableView(factorModel_, body));
-    body->setStretchFactor(0, 3);
-    body->setSizes({600, 200});
+    // As the other tabs: the figure two thirds of the height, the table the rest.
+    body->setStretchFactor(0, 2);
+    body->setStretchFactor(1, 1);
+    body->setSizes({400, 200});
     v->addWidget(body, 1);
     connect(fig, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentFigure);
     connect(tab, &QPushButton::clicked, this, &AnalysisWorkspace::exportCurrentTables);
