@@ -39,18 +39,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38" />
-        <location line="+324" />
+        <location line="+333" />
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-323" />
-        <location line="+324" />
+        <location line="-332" />
+        <location line="+333" />
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-288" />
+        <location line="-297" />
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -133,7 +133,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Faktoren der Planläufe (ihre factor_…-Metadaten)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+8" />
         <source>Quantity:</source>
         <translation>Größe:</translation>
     </message>
@@ -143,7 +143,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>gegen Faktor:</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+39" />
         <source>no factor</source>
         <translation>kein Faktor</translation>
     </message>
@@ -1092,7 +1092,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ForcePlots</name>
     <message>
-        <location filename="../widgets/force_plots.cpp" line="+60" />
+        <location filename="../widgets/force_plots.cpp" line="+61" />
         <location line="+1" />
         <source>time [s]</source>
         <translation>Zeit [s]</translation>
@@ -1190,7 +1190,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kraftgrenze</translation>
     </message>
     <message>
-        <location line="+166" />
+        <location line="+167" />
         <source>limit %1 N%2 · margin %3 N</source>
         <translation>Grenze %1 N%2 · Abstand %3 N</translation>
     </message>
@@ -1797,8 +1797,8 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location line="+5" />
         <source>Plan "%1": %n run(s), kept in %2</source>
         <translation>
-            <numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform>
-            <numerusform>Plan „%1“: %n Lauf/Läufe, gespeichert in %2</numerusform>
+            <numerusform>Plan „%1“: %n Lauf, gespeichert in %2</numerusform>
+            <numerusform>Plan „%1“: %n Läufe, gespeichert in %2</numerusform>
         </translation>
     </message>
     <message>
@@ -2035,18 +2035,18 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+5" />
-        <location line="+190" />
+        <location line="+196" />
         <location line="+27" />
         <source>A plan run is recording: end it first.</source>
         <translation>Ein Planlauf zeichnet auf: Zuerst beenden.</translation>
     </message>
     <message>
-        <location line="-210" />
+        <location line="-216" />
         <source>%1 already holds the plan "%2" with runs made; use another session for a new plan.</source>
         <translation>%1 enthält bereits den Plan „%2“ mit durchgeführten Läufen; für einen neuen Plan eine andere Sitzung verwenden.</translation>
     </message>
     <message>
-        <location line="+111" />
+        <location line="+117" />
         <source>the operator's step</source>
         <translation>der Handgriff</translation>
     </message>
@@ -4438,7 +4438,7 @@ Befehle:
         <translation>kann nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+69" />
+        <location filename="../core/export/session_analysis.cpp" line="+84" />
         <source>%1: no stiffness fit (%2)</source>
         <translation>%1: kein Steifigkeitsfit (%2)</translation>
     </message>
@@ -6417,7 +6417,7 @@ Befehle:
     </message>
     <message>
         <location line="-109" />
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-530" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-541" />
         <location line="+348" />
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>
@@ -6560,7 +6560,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+17" />
+        <location filename="../widgets/video_view.cpp" line="+19" />
         <source>Open video…</source>
         <translation>Video öffnen…</translation>
     </message>

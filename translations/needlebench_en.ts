@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+324"/>
+        <location line="+333"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-323"/>
-        <location line="+324"/>
+        <location line="-332"/>
+        <location line="+333"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-288"/>
+        <location line="-297"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -133,7 +133,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>Quantity:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -143,7 +143,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+39"/>
         <source>no factor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1092,7 +1092,7 @@ or without contact</source>
 <context>
     <name>nb::ForcePlots</name>
     <message>
-        <location filename="../widgets/force_plots.cpp" line="+60"/>
+        <location filename="../widgets/force_plots.cpp" line="+61"/>
         <location line="+1"/>
         <source>time [s]</source>
         <translation type="unfinished"></translation>
@@ -1190,7 +1190,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+166"/>
+        <location line="+167"/>
         <source>limit %1 N%2 · margin %3 N</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2033,18 +2033,18 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+190"/>
+        <location line="+196"/>
         <location line="+27"/>
         <source>A plan run is recording: end it first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-216"/>
         <source>%1 already holds the plan &quot;%2&quot; with runs made; use another session for a new plan.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+117"/>
         <source>the operator&apos;s step</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4361,7 +4361,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+69"/>
+        <location filename="../core/export/session_analysis.cpp" line="+84"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6340,7 +6340,7 @@ Commands:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-530"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-541"/>
         <location line="+348"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
@@ -6481,7 +6481,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+17"/>
+        <location filename="../widgets/video_view.cpp" line="+19"/>
         <source>Open video…</source>
         <translation type="unfinished"></translation>
     </message>
