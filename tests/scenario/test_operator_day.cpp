@@ -150,7 +150,10 @@ private slots:
             QVERIFY(w.session());
 
             // Guided calibration: the rig hangs each mass; the wizard settles, measures, fits.
+            // As an operator would, once the devices are running (the sensor's first batch).
+            QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().running, 20000);
             nb::CalibrationWizard* wizard = w.openCalibrationWizard();
+            QVERIFY2(wizard, qPrintable(w.statusBar()->currentMessage()));  // refused: the window says why
             QVERIFY(QTest::qWaitForWindowExposed(wizard));
             QVERIFY(wizard->rowCount() >= 4);  // the default masses, from the sensor's range
             QElapsedTimer calibrationClock;
