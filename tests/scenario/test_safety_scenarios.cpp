@@ -230,7 +230,9 @@ private slots:
         const EscResult r = escInDialog(w, motionFirst, open, dialog);
         QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
         qInfo("%s (%s): stopped %.0f ms after Esc (device time)", qPrintable(which), qPrintable(r.dialogClass), r.stopDelay_s * 1000.0);
-        QVERIFY2(r.stopDelay_s >= 0.0 && r.stopDelay_s <= 0.2, qPrintable(QString::number(r.stopDelay_s)));
+        // The figure is printed above (about 0.1 s on a quiet machine); the bound only catches a
+        // stop that waited for something, with room for a machine busy with other work.
+        QVERIFY2(r.stopDelay_s >= 0.0 && r.stopDelay_s <= 0.5, qPrintable(QString::number(r.stopDelay_s)));
         // Esc stopped; it closed nothing the operator was working in.
         QVERIFY(r.dialogStayedOpen);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 10000);
