@@ -93,7 +93,10 @@ double FrictionPlatform::step(double t, double dt, double v_mm_s, double a_mm_s2
         if (force > k_.Dp_N || force < k_.Dn_N) {
             stuck_ = false;
             force = force > 0 ? k_.Dp_N : k_.Dn_N;
-            if (phase_ == 'a')
+            // Phase a ends where the tissue meets the plate ahead and relative motion begins
+            // (models.md 5). A slip while the tissue is still leaving the plate behind (its
+            // reaction and damping at the reversal) is not that: the tissue is carried on.
+            if (phase_ == 'a' && dir_ * y_ > gap_)
                 enter('1', t, truth);
         }
     } else {
@@ -118,6 +121,9 @@ double FrictionPlatform::step(double t, double dt, double v_mm_s, double a_mm_s2
 
     if (!stuck_ && dir_ != 0) {
         const double into = dir_ * y_;
+        // Sliding already when it reaches the plate ahead: relative motion from there on.
+        if (phase_ == 'a' && into > gap_)
+            enter('1', t, truth);
         if (phase_ == '1' && into >= gap_ + w1_)
             enter('2', t, truth);
         if ((phase_ == '1' || phase_ == '2') && std::fabs(vy_) < kStopped * std::fabs(vn))
