@@ -7,11 +7,16 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <optional>
 
 namespace nb {
 
 namespace {
+
+// The needle settling back by more than this after its last stroke counts as a reversal
+// (a few encoder counts: the thesis's stage resolves 1.5 µm).
+constexpr double kSettleBack_mm = 0.01;
 
 std::vector<double> velocity(const Run& run)
 {
@@ -92,15 +97,60 @@ std::optional<FrictionFit> slidingLines(const Run& run)
 
 }  // namespace
 
+namespace {
+
+// Where the phases of one half-cycle [start, end) begin: a at start, b1 at aEnd, b2 at
+// b2Start, c at cStart.
+struct PhaseBounds {
+    std::size_t aEnd, b2Start, cStart;
+};
+
+// The tissue's velocity at each sample (linear between measurements; NaN outside them).
+std::vector<double> tissueVelocityAt(const Run& run, const TissueMotion& m)
+{
+    std::vector<double> out(run.size(), std::numeric_limits<double>::quiet_NaN());
+    std::vector<std::pair<double, double>> pts;
+    for (std::size_t k = 0; k < m.time_s.size() && k < m.velocity_mm_s.size(); ++k)
+        if (std::isfinite(m.velocity_mm_s[k]) && std::isfinite(m.time_s[k]))
+            pts.emplace_back(m.time_s[k], m.velocity_mm_s[k]);
+    std::sort(pts.begin(), pts.end());
+    if (pts.size() < 2)
+        return out;
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < run.size(); ++i) {
+        const double t = run.time_s[i];
+        if (t < pts.front().first || t > pts.back().first)
+            continue;
+        while (j + 2 < pts.size() && pts[j + 1].first < t)
+            ++j;
+        const auto& [t0, v0] = pts[j];
+        const auto& [t1, v1] = pts[j + 1];
+        out[i] = t1 > t0 ? v0 + (v1 - v0) * (t - t0) / (t1 - t0) : v0;
+    }
+    return out;
+}
+
+}  // namespace
+
 Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
+{
+    return suggestPhaseLabels(run, nullptr, o);
+}
+
+Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const SuggestOptions& o)
 {
     Labels out;
     if (run.size() < 10)
         return out;
     const std::vector<double> v = velocity(run);
     const std::optional<FrictionFit> lines = slidingLines(run);
-    const QString source = lines ? QStringLiteral("suggested from force and position")
-                                 : QStringLiteral("suggested from position (velocity band)");
+    std::vector<double> vt;
+    if (tissue)
+        vt = tissueVelocityAt(run, *tissue);
+    const QString forceSource = lines ? QStringLiteral("suggested from force and position")
+                                      : QStringLiteral("suggested from position (velocity band)");
+    const QString videoSource = tissue ? QStringLiteral("suggested from the tissue's motion in %1, force and position").arg(tissue->source)
+                                       : QString();
     // Force less the needle holder's inertia, lightly smoothed.
     const std::size_t n = run.size();
     std::vector<double> force(n);
@@ -116,18 +166,20 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             force[i] = sum / double(b - a + 1) - kNeedleHolderMass_kg * acc;
         }
     }
-    for (const HalfCycle& h : halfCycles(v, o.zeroBand_mm_s)) {
+    const std::vector<HalfCycle> cycles = halfCycles(v, o.zeroBand_mm_s);
+    const HalfCycle* lastStroke = nullptr;
+    for (const HalfCycle& h : cycles) {
         if (h.end <= h.start + 4)
             continue;
+        lastStroke = &h;
         const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
         // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
         const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
+        QString source = forceSource;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)
-            // from here to the turning point; a: the tissue is carried until it lets go, at
-            // the force's peak in the direction of motion; b1/b2: in between, b2 once the gap
-            // to the line has closed to a quarter of its largest.
+            // from here to the turning point.
             const KarnoppModel& m = lines->model;
             auto line = [&](std::size_t i) {
                 const double vi = v[i] / 1000.0;
@@ -141,9 +193,9 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             while (last > h.start + 1 && std::abs(v[last - 1]) < slowest)
                 --last;
             // Backwards while the force follows the line; a few stray samples (noise) do not
-            // end c, a run of them does.
-            // The samples nearest the turning point may still be off the line (a slow needle
-            // inside the band): they do not end the search before it has begun.
+            // end c, a run of them does. The samples nearest the turning point may still be
+            // off the line (a slow needle inside the band): they do not end the search
+            // before it has begun.
             cStart = last;
             int off = 0;
             bool onLine = false;
@@ -158,16 +210,45 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             }
             if (cStart == last)
                 cStart = h.end;
-            std::size_t peak = h.start;
-            for (std::size_t i = h.start; i < cStart; ++i)
-                if (h.direction * force[i] > h.direction * force[peak])
-                    peak = i;
-            aEnd = cStart > h.start ? peak : h.start;
-            double widest = 0.0;
+            // a: the tissue is carried with the needle (static friction) and pulls on it only
+            // through its inertia, well below the sliding line, until it meets the plate
+            // ahead: from there the plate's reaction drives the force up to the line. a ends
+            // where the force rises from that low level for the last time before c, or, when
+            // the tissue still sticks there (the force overshoots the line and drops back
+            // when it breaks away: static friction above dynamic), at that peak.
+            auto level = [&](std::size_t i) { return h.direction * force[i] / std::max(1e-9, std::abs(line(i))); };
+            // The valley: backwards from c to the lowest level, stopping where the force
+            // climbs again towards the turning point (the tissue leaving the plate behind
+            // pushes while it relaxes) or turns to the previous direction's sign.
+            std::size_t valley = cStart;
+            double lowest = std::numeric_limits<double>::infinity();
+            for (std::size_t i = cStart; i > h.start; --i) {
+                const double l = level(i - 1);
+                if (l < 0.0 || l > lowest + 0.3)
+                    break;
+                if (l < lowest) {
+                    lowest = l;
+                    valley = i - 1;
+                }
+            }
+            aEnd = valley;
+            const double risen = std::max(0.0, lowest) + 0.35 * (1.0 - std::max(0.0, lowest));
+            while (aEnd < cStart && level(aEnd) < risen)
+                ++aEnd;
+            if (cStart >= h.end)
+                aEnd = h.end;  // the force never reached the sliding line: the tissue was carried throughout
+            std::size_t peak = aEnd;
             for (std::size_t i = aEnd; i < cStart; ++i)
-                widest = std::max(widest, std::abs(force[i] - line(i)));
+                if (h.direction * force[i] - std::abs(line(i)) > h.direction * force[peak] - std::abs(line(peak)))
+                    peak = i;
+            if (peak < cStart && h.direction * force[peak] - std::abs(line(peak)) > std::max(tolerance, 0.1 * std::abs(line(peak))))
+                aEnd = peak;
+            // b1/b2: the tissue bears on the plate progressively, then fully (the force
+            // closes on the line, models.md 5: the relative velocity grows); b2 once the gap
+            // to the line has closed to a quarter of what it was when the tissue met the plate.
+            const double gap0 = aEnd < cStart ? std::abs(force[aEnd] - line(aEnd)) : 0.0;
             b2Start = cStart;
-            while (b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * widest)
+            while (b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
                 --b2Start;
         } else {
             while (aEnd < h.end && std::abs(v[aEnd]) < o.zeroBand_mm_s / 2)
@@ -183,6 +264,37 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
                 ++cStart;
             b2Start = aEnd + (cStart - std::min(cStart, aEnd)) / 2;
         }
+        if (tissue) {
+            // The picture measures the relative velocity itself: a while the tissue keeps up
+            // with the needle, c from where it has stopped; b1/b2 split as the force says.
+            const PhaseBounds fromForce{aEnd, b2Start, cStart};
+            std::optional<std::size_t> va, vc;
+            for (std::size_t i = h.start; i < h.end; ++i) {
+                if (!std::isfinite(vt[i]))
+                    continue;
+                const double vn = h.direction * v[i], vti = h.direction * vt[i];
+                if (vn < o.zeroBand_mm_s / 2)
+                    continue;  // too slow to tell moving from resting
+                if (!va && vti < 0.5 * vn)
+                    va = i;
+                if (va && vti < 0.1 * vn) {
+                    vc = i;
+                    break;
+                }
+            }
+            if (va) {
+                aEnd = *va;
+                cStart = vc ? *vc : h.end;
+                b2Start = std::clamp(fromForce.b2Start, aEnd, cStart);
+                if (b2Start == aEnd || b2Start == cStart)
+                    b2Start = cStart - (cStart - aEnd) / 4;
+                source = videoSource;
+            }
+        }
+        if (aEnd >= h.end) {
+            out.push_back({track, QStringLiteral("a"), t0, t1, source});
+            continue;
+        }
         cStart = std::min(std::max(cStart, aEnd), h.end - 1);
         b2Start = std::clamp(b2Start, aEnd, cStart);
         const double ta = run.time_s[std::min(aEnd, h.end - 1)], tb = run.time_s[b2Start], tc = run.time_s[cStart];
@@ -190,10 +302,30 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             out.push_back({track, QStringLiteral("a"), t0, ta, source});
         if (tb > ta)
             out.push_back({track, QStringLiteral("b1"), ta, tb, source});
-        if (tc > tb)
+        if (tb < tc)
             out.push_back({track, QStringLiteral("b2"), tb, tc, source});
         if (t1 > tc)
             out.push_back({track, QStringLiteral("c"), tc, t1, source});
+    }
+    // After the last stroke the needle comes to rest. When it settles back from its last
+    // extreme, that is one more turning point and the tissue it holds is carried (a) to the
+    // end; otherwise the tissue stays at rest (c).
+    if (lastStroke && lastStroke->end < n) {
+        const HalfCycle& h = *lastStroke;
+        std::size_t extreme = h.start;
+        for (std::size_t i = h.start; i < n; ++i)
+            if (h.direction * run.position_mm[i] > h.direction * run.position_mm[extreme])
+                extreme = i;
+        const double back_mm = h.direction * (run.position_mm[extreme] - run.position_mm[n - 1]);
+        Label& lastLabel = out.back();
+        const double tx = run.time_s[extreme];
+        if (back_mm > kSettleBack_mm && tx > lastLabel.start_s && lastLabel.label != QLatin1String("a")) {
+            lastLabel.end_s = std::min(lastLabel.end_s, tx);
+            const QString track = h.direction > 0 ? QStringLiteral("withdrawal") : QStringLiteral("insertion");
+            out.push_back({track, QStringLiteral("a"), lastLabel.end_s, run.time_s.back(), lastLabel.comment});
+        } else {
+            lastLabel.end_s = run.time_s.back();
+        }
     }
     return out;
 }
