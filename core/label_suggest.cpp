@@ -97,41 +97,6 @@ std::optional<FrictionFit> slidingLines(const Run& run)
 
 }  // namespace
 
-namespace {
-
-// Where the phases of one half-cycle [start, end) begin: a at start, b1 at aEnd, b2 at
-// b2Start, c at cStart.
-struct PhaseBounds {
-    std::size_t aEnd, b2Start, cStart;
-};
-
-// The tissue's velocity at each sample (linear between measurements; NaN outside them).
-std::vector<double> tissueVelocityAt(const Run& run, const TissueMotion& m)
-{
-    std::vector<double> out(run.size(), std::numeric_limits<double>::quiet_NaN());
-    std::vector<std::pair<double, double>> pts;
-    for (std::size_t k = 0; k < m.time_s.size() && k < m.velocity_mm_s.size(); ++k)
-        if (std::isfinite(m.velocity_mm_s[k]) && std::isfinite(m.time_s[k]))
-            pts.emplace_back(m.time_s[k], m.velocity_mm_s[k]);
-    std::sort(pts.begin(), pts.end());
-    if (pts.size() < 2)
-        return out;
-    std::size_t j = 0;
-    for (std::size_t i = 0; i < run.size(); ++i) {
-        const double t = run.time_s[i];
-        if (t < pts.front().first || t > pts.back().first)
-            continue;
-        while (j + 2 < pts.size() && pts[j + 1].first < t)
-            ++j;
-        const auto& [t0, v0] = pts[j];
-        const auto& [t1, v1] = pts[j + 1];
-        out[i] = t1 > t0 ? v0 + (v1 - v0) * (t - t0) / (t1 - t0) : v0;
-    }
-    return out;
-}
-
-}  // namespace
-
 Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
 {
     return suggestPhaseLabels(run, nullptr, o);
@@ -144,12 +109,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         return out;
     const std::vector<double> v = velocity(run);
     const std::optional<FrictionFit> lines = slidingLines(run);
-    std::vector<double> vt;
-    if (tissue)
-        vt = tissueVelocityAt(run, *tissue);
     const QString forceSource = lines ? QStringLiteral("suggested from force and position")
                                       : QStringLiteral("suggested from position (velocity band)");
-    const QString videoSource = tissue ? QStringLiteral("suggested from the tissue's motion in %1, force and position").arg(tissue->source)
+    const QString videoSource = tissue ? QStringLiteral("suggested from the tissue's motion in %1 (timed by force and position)").arg(tissue->source)
                                        : QString();
     // Force less the needle holder's inertia, lightly smoothed.
     const std::size_t n = run.size();
@@ -265,28 +227,62 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             b2Start = aEnd + (cStart - std::min(cStart, aEnd)) / 2;
         }
         if (tissue) {
-            // The picture measures the relative velocity itself: a while the tissue keeps up
-            // with the needle, c from where it has stopped; b1/b2 split as the force says.
-            const PhaseBounds fromForce{aEnd, b2Start, cStart};
-            std::optional<std::size_t> va, vc;
-            for (std::size_t i = h.start; i < h.end; ++i) {
-                if (!std::isfinite(vt[i]))
+            // The picture measures the relative velocity itself, one value per pair of frames:
+            // a while the tissue keeps up with the needle, c once it has stopped. It decides
+            // between which frames each boundary lies; the force, sampled far finer, places
+            // it there when it agrees, and is overruled when it does not.
+            const std::size_t forceA = aEnd, forceC = std::min(cStart, h.end);
+            std::optional<std::pair<double, double>> aWindow, cWindow;
+            bool followed = false, measured = false;
+            double lastFollow = t0, lastMoving = t0;
+            for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
+                const double tk = tissue->time_s[k];
+                if (tk < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
                     continue;
-                const double vn = h.direction * v[i], vti = h.direction * vt[i];
+                const std::size_t i = std::min(h.end - 1, std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start),
+                                                                                         run.time_s.begin() + std::ptrdiff_t(h.end), tk) -
+                                                                        run.time_s.begin()));
+                const double vn = h.direction * v[i], vtk = h.direction * tissue->velocity_mm_s[k];
                 if (vn < o.zeroBand_mm_s / 2)
                     continue;  // too slow to tell moving from resting
-                if (!va && vti < 0.5 * vn)
-                    va = i;
-                if (va && vti < 0.1 * vn) {
-                    vc = i;
-                    break;
+                measured = true;
+                if (!aWindow) {
+                    if (vtk >= 0.5 * vn) {
+                        followed = true;
+                        lastFollow = tk;
+                    } else {
+                        aWindow = std::make_pair(lastFollow, tk);
+                    }
+                }
+                if (aWindow && !cWindow) {
+                    if (vtk >= 0.25 * vn)
+                        lastMoving = std::max(tk, aWindow->first);
+                    else
+                        cWindow = std::make_pair(std::max(lastMoving, aWindow->first), tk);
                 }
             }
-            if (va) {
-                aEnd = *va;
-                cStart = vc ? *vc : h.end;
-                b2Start = std::clamp(fromForce.b2Start, aEnd, cStart);
-                if (b2Start == aEnd || b2Start == cStart)
+            auto sampleAt = [&](double t) {
+                return std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start), run.time_s.begin() + std::ptrdiff_t(h.end), t) -
+                                   run.time_s.begin());
+            };
+            // Half a frame of slack each side: a value stands for the whole pair of frames.
+            const double slack = tissue->time_s.size() > 1
+                                     ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
+                                     : 0.0;
+            auto place = [&](std::size_t fromForce, const std::pair<double, double>& w) {
+                const double tf = fromForce < h.end ? run.time_s[fromForce] : t1;
+                if (tf >= w.first - slack && tf <= w.second + slack)
+                    return fromForce;
+                return sampleAt(0.5 * (w.first + w.second));
+            };
+            if (measured && !aWindow && followed) {
+                aEnd = h.end;  // the tissue kept up with the needle throughout
+                source = videoSource;
+            } else if (aWindow) {
+                aEnd = place(forceA, *aWindow);
+                cStart = cWindow ? place(forceC, *cWindow) : h.end;
+                cStart = std::max(cStart, aEnd);
+                if (b2Start < aEnd || b2Start > cStart)
                     b2Start = cStart - (cStart - aEnd) / 4;
                 source = videoSource;
             }
