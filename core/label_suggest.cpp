@@ -8,6 +8,8 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 
 namespace nb {
@@ -109,6 +111,22 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         return out;
     const std::vector<double> v = velocity(run);
     const std::optional<FrictionFit> lines = slidingLines(run);
+    // The picture's velocity noise: most of the time the tissue rests (c), so a low
+    // quantile of its measured speed is the noise the picture adds.
+    double videoNoise_mm_s = 0.0;
+    if (tissue) {
+        std::vector<double> speeds;
+        for (double x : tissue->velocity_mm_s)
+            if (std::isfinite(x))
+                speeds.push_back(std::abs(x));
+        if (!speeds.empty()) {
+            std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 4), speeds.end());
+            videoNoise_mm_s = speeds[speeds.size() / 4];
+        }
+    }
+    const double frameHalf_s = tissue && tissue->time_s.size() > 1
+                                   ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
+                                   : 0.0;
     const QString forceSource = lines ? QStringLiteral("suggested from force and position")
                                       : QStringLiteral("suggested from position (velocity band)");
     const QString videoSource = tissue ? QStringLiteral("suggested from the tissue's motion in %1 (timed by force and position)").arg(tissue->source)
@@ -232,54 +250,97 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // between which frames each boundary lies; the force, sampled far finer, places
             // it there when it agrees, and is overruled when it does not.
             const std::size_t forceA = aEnd, forceC = std::min(cStart, h.end);
+            // a ends between the last pair of frames in which the tissue had kept up with the
+            // needle since the turning point (its displacement equal to the needle's, within
+            // the picture's noise) and the first in which it has fallen behind; c starts
+            // between the last in which it still moved and the first in which it rests.
+            // Displacements, not speeds, for a: a slow needle moves the picture by a fraction
+            // of a pixel per frame, too little to judge frame by frame.
             std::optional<std::pair<double, double>> aWindow, cWindow;
-            bool followed = false, measured = false;
+            std::optional<double> firstBehind;
+            bool followed = false, measured = false, anyClear = false;
             double lastFollow = t0, lastMoving = t0;
+            const double frame_s = 2.0 * frameHalf_s;
+            std::optional<double> reference_mm;
+            double carried_mm = 0.0;
+            int steps = 0;
+            auto positionAt = [&](double t) {
+                const std::size_t j = std::min(n - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), t) - run.time_s.begin()));
+                return run.position_mm[j];
+            };
             for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
                 const double tk = tissue->time_s[k];
-                if (tk < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
+                if (tk - frameHalf_s < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
                     continue;
                 const std::size_t i = std::min(h.end - 1, std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start),
                                                                                          run.time_s.begin() + std::ptrdiff_t(h.end), tk) -
                                                                         run.time_s.begin()));
                 const double vn = h.direction * v[i], vtk = h.direction * tissue->velocity_mm_s[k];
-                if (vn < o.zeroBand_mm_s / 2)
-                    continue;  // too slow to tell moving from resting
-                measured = true;
-                if (!aWindow) {
-                    if (vtk >= 0.5 * vn) {
+                if (!reference_mm)
+                    reference_mm = positionAt(tk - frameHalf_s);
+                carried_mm += vtk * frame_s;
+                ++steps;
+                const double needle_mm = h.direction * (positionAt(tk + frameHalf_s) - *reference_mm);
+                // Kept up: within the noise and a sixth of the travel; fallen behind: by more than
+                // the noise and 40 % (slow motion reads short in the picture: sub-pixel shifts
+                // are pulled towards whole pixels).
+                const double noise_mm = 3.0 * videoNoise_mm_s * frame_s * std::sqrt(double(steps));
+                // Frame by frame where the picture moves clearly (speeds read true), else by the
+                // displacement since the turning point.
+                const bool clear = tissue->px_per_mm > 0.0 && vn * frame_s * tissue->px_per_mm >= 1.5 && vn >= 4.0 * videoNoise_mm_s;
+                anyClear |= clear;
+                if (!firstBehind) {
+                    if ((clear && vtk < 0.5 * vn) || needle_mm - carried_mm > noise_mm + 0.4 * needle_mm) {
+                        firstBehind = tk + frameHalf_s;
+                    } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && needle_mm - carried_mm <= noise_mm + 0.15 * needle_mm)) {
                         followed = true;
-                        lastFollow = tk;
-                    } else {
-                        aWindow = std::make_pair(lastFollow, tk);
+                        lastFollow = tk + frameHalf_s;
                     }
                 }
-                if (aWindow && !cWindow) {
-                    if (vtk >= 0.25 * vn)
-                        lastMoving = std::max(tk, aWindow->first);
+                if (vn < std::max(o.zeroBand_mm_s / 2, 4.0 * videoNoise_mm_s))
+                    continue;  // too slow to tell moving from resting
+                measured = true;
+                const bool resting = vtk < std::max(0.25 * vn, 2.0 * videoNoise_mm_s);
+                if (firstBehind && !cWindow) {
+                    if (!resting)
+                        lastMoving = std::max(tk, lastFollow);
                     else
-                        cWindow = std::make_pair(std::max(lastMoving, aWindow->first), tk);
+                        cWindow = std::make_pair(std::max(lastMoving, lastFollow), tk);
                 }
             }
+            // The tissue slows down once it meets the plate (b1) and still reads as keeping up
+            // in the pair of frames it does so: a may have ended a frame before lastFollow.
+            if (firstBehind)
+                aWindow = std::make_pair(lastFollow - frame_s, cWindow ? cWindow->second : *firstBehind);
             auto sampleAt = [&](double t) {
                 return std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start), run.time_s.begin() + std::ptrdiff_t(h.end), t) -
                                    run.time_s.begin());
             };
             // Half a frame of slack each side: a value stands for the whole pair of frames.
-            const double slack = tissue->time_s.size() > 1
-                                     ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
-                                     : 0.0;
+            const double slack = frameHalf_s;
             auto place = [&](std::size_t fromForce, const std::pair<double, double>& w) {
                 const double tf = fromForce < h.end ? run.time_s[fromForce] : t1;
                 if (tf >= w.first - slack && tf <= w.second + slack)
                     return fromForce;
                 return sampleAt(0.5 * (w.first + w.second));
             };
-            if (measured && !aWindow && followed) {
+            const std::pair<double, double> aMid = aWindow ? std::make_pair(aWindow->first, *firstBehind) : std::make_pair(t0, t0);
+            if (std::getenv("NB_PHASE_DEBUG"))
+                std::fprintf(stderr, "half %.3f-%.3f forceA %.3f aWin %.3f-%.3f behind %.3f forceC %.3f cWin %.3f-%.3f\n", t0, t1,
+                             run.time_s[std::min(forceA, h.end - 1)], aWindow ? aWindow->first : -1.0, aWindow ? aWindow->second : -1.0,
+                             firstBehind.value_or(-1.0), run.time_s[std::min(forceC, h.end - 1)], cWindow ? cWindow->first : -1.0,
+                             cWindow ? cWindow->second : -1.0);
+            if (!anyClear) {
+                // The picture moved less than a pixel or two a frame all through: what it
+                // measures reads short and cannot overrule the force.
+                source = forceSource + QStringLiteral(" (the tissue moved too little per frame in %1 to judge)").arg(tissue->source);
+            } else if (measured && !aWindow && followed) {
                 aEnd = h.end;  // the tissue kept up with the needle throughout
                 source = videoSource;
             } else if (aWindow) {
                 aEnd = place(forceA, *aWindow);
+                if (aEnd != forceA)
+                    aEnd = sampleAt(0.5 * (aMid.first + aMid.second));
                 cStart = cWindow ? place(forceC, *cWindow) : h.end;
                 cStart = std::max(cStart, aEnd);
                 if (b2Start < aEnd || b2Start > cStart)

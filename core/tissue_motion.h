@@ -13,6 +13,8 @@ struct TissueMotion {
     std::vector<double> time_s;          // recording time of each measurement
     std::vector<double> velocity_mm_s;   // NaN where the picture gave no measurement
     QString source;                      // what it came from, e.g. the video file's name
+    double px_per_mm = 0.0;              // the picture's scale (0: unknown); below a pixel or so a
+                                         // frame the measured speed reads short
 };
 
 }  // namespace nb

@@ -87,7 +87,7 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         }
     }
     cv::Mat previous, window;
-    double previousTime = 0.0;
+    double previousTime = 0.0, clip = 0.0;
     for (int i = 0; i < n; ++i) {
         if (cancel && cancel->load())
             break;
@@ -96,6 +96,17 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         if (i > 0 && index.frames[std::size_t(i)].duplicate)
             continue;  // the same picture again: no motion to measure, and a false zero
         cv::Mat image = workingImage(reader.read(i).image, r, scale) - background;
+        // A few strong edges moving their own way (the needle's tip, bright against the
+        // tissue) would outvote the tissue's faint texture: values are clipped to the
+        // picture's typical contrast, so that every part counts by its area.
+        if (clip <= 0.0) {
+            const cv::Mat a = cv::abs(image);
+            std::vector<float> v(a.begin<float>(), a.end<float>());
+            std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+            clip = std::max(1.0, 2.5 * 1.4826 * double(v[v.size() / 2]));
+        }
+        cv::min(image, clip, image);
+        cv::max(image, -clip, image);
         // The picture's own noise changes every frame; the tissue's texture does not.
         cv::GaussianBlur(image, image, cv::Size(0, 0), 1.0);
         const double t = index.frames[std::size_t(i)].time_s;
@@ -186,6 +197,7 @@ TissueMotion tissueMotionFromShifts(const TissueShifts& s, const Run& run, const
     if (std::getenv("NB_TISSUE_DEBUG"))
         for (std::size_t i = 0; i < k; ++i)
             std::fprintf(stderr, "%.3f dx %.2f dy %.2f resp %.3f dp %.3f\n", 0.5 * (ta[i] + tb[i]), s.dx_px[i], s.dy_px[i], s.response[i], dp[i]);
+    m.px_per_mm = pxPerMm;
     m.time_s.resize(k);
     m.velocity_mm_s.resize(k);
     for (std::size_t i = 0; i < k; ++i) {
