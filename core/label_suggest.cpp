@@ -83,6 +83,65 @@ std::vector<HalfCycle> halfCycles(const std::vector<double>& v, double band)
 
 namespace {
 
+struct EnvelopeLine {
+    double c0_N = 0.0, b_Ns_per_m = 0.0, rms_N = 0.0;
+    bool ok = false;
+};
+
+// The sliding line of one direction, F = c0 + b·v, as the upper envelope of the force in the
+// direction of motion: while the tissue is carried (a) the force lies well below the line and
+// in b it climbs to it, so a plain least-squares fit over all moving samples (what the friction
+// fit does without phases) sits too low when the tissue is carried for much of the stroke.
+// Samples below the line are dropped and the rest refitted until it settles.
+EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double>& v_mm_s, int dir, double minSpeed_mm_s)
+{
+    std::vector<std::size_t> use;
+    for (std::size_t i = 0; i < f.size(); ++i)
+        if (dir * v_mm_s[i] >= minSpeed_mm_s)
+            use.push_back(i);
+    EnvelopeLine line;
+    for (int iteration = 0; iteration < 12 && use.size() >= 20; ++iteration) {
+        double sv = 0, sf = 0, svv = 0, svf = 0;
+        for (std::size_t i : use) {
+            const double vi = v_mm_s[i] / 1000.0;
+            sv += vi;
+            sf += f[i];
+            svv += vi * vi;
+            svf += vi * f[i];
+        }
+        const double k = double(use.size()), det = k * svv - sv * sv;
+        if (!(std::abs(det) > 1e-18))
+            break;
+        // Damping cannot be negative: a line that falls with speed is the carried tissue's
+        // low force at speed pulling it down, not friction.
+        line.b_Ns_per_m = std::max(0.0, (k * svf - sv * sf) / det);
+        line.c0_N = (sf - line.b_Ns_per_m * sv) / k;
+        line.ok = true;
+        std::vector<double> r;
+        for (std::size_t i : use)
+            r.push_back(dir * (f[i] - line.c0_N - line.b_Ns_per_m * v_mm_s[i] / 1000.0));
+        std::vector<double> sorted = r;
+        std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+        const double median = sorted[sorted.size() / 2];
+        for (double& x : sorted)
+            x = std::abs(x - median);
+        std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+        const double spread = 1.4826 * sorted[sorted.size() / 2];
+        line.rms_N = spread;
+        // First the upper half, then what does not lie clearly below the line: the carried
+        // tissue's low force drops out, the sliding force stays.
+        const double keepAbove = iteration == 0 ? median : -1.5 * spread;
+        std::vector<std::size_t> kept;
+        for (std::size_t j = 0; j < use.size(); ++j)
+            if (r[j] >= keepAbove)
+                kept.push_back(use[j]);
+        if (kept.size() == use.size())
+            break;
+        use.swap(kept);
+    }
+    return line;
+}
+
 // The sliding lines F = C + b·v of the run (friction_fit.h, its band found in the data, no
 // phases used); nullopt when the fit fails.
 std::optional<FrictionFit> slidingLines(const Run& run)
@@ -110,7 +169,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     if (run.size() < 10)
         return out;
     const std::vector<double> v = velocity(run);
-    const std::optional<FrictionFit> lines = slidingLines(run);
     // The picture's velocity noise: most of the time the tissue rests (c), so a low
     // quantile of its measured speed is the noise the picture adds.
     double videoNoise_mm_s = 0.0;
@@ -127,8 +185,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     const double frameHalf_s = tissue && tissue->time_s.size() > 1
                                    ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
                                    : 0.0;
-    const QString forceSource = lines ? QStringLiteral("suggested from force and position")
-                                      : QStringLiteral("suggested from position (velocity band)");
     const QString videoSource = tissue ? QStringLiteral("suggested from the tissue's motion in %1 (timed by force and position)").arg(tissue->source)
                                        : QString();
     // Force less the needle holder's inertia, lightly smoothed.
@@ -146,6 +202,26 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             force[i] = sum / double(b - a + 1) - kNeedleHolderMass_kg * acc;
         }
     }
+    std::optional<FrictionFit> lines = slidingLines(run);
+    if (lines) {
+        double fastest = 0.0;
+        for (double x : v)
+            fastest = std::max(fastest, std::abs(x));
+        const double minSpeed = std::max(1000.0 * lines->bandSlowingDown_m_s / 2.0, 0.2 * fastest);
+        const EnvelopeLine up = envelopeLine(force, v, 1, minSpeed), down = envelopeLine(force, v, -1, minSpeed);
+        if (up.ok && down.ok) {
+            lines->model.Cp_N = up.c0_N;
+            lines->model.bp_Ns_per_m = up.b_Ns_per_m;
+            lines->model.Cn_N = -down.c0_N;
+            lines->model.bn_Ns_per_m = down.b_Ns_per_m;
+            lines->rms_N = std::max(up.rms_N, down.rms_N);
+        }
+        if (std::getenv("NB_PHASE_DEBUG"))
+            std::fprintf(stderr, "lines Cp %.3f bp %.2f Cn %.3f bn %.2f rms %.4f band %.4f up %d down %d\n", lines->model.Cp_N, lines->model.bp_Ns_per_m,
+                         lines->model.Cn_N, lines->model.bn_Ns_per_m, lines->rms_N, lines->bandSlowingDown_m_s, up.ok, down.ok);
+    }
+    const QString forceSource = lines ? QStringLiteral("suggested from force and position")
+                                      : QStringLiteral("suggested from position (velocity band)");
     const std::vector<HalfCycle> cycles = halfCycles(v, o.zeroBand_mm_s);
     const HalfCycle* lastStroke = nullptr;
     for (const HalfCycle& h : cycles) {
@@ -165,7 +241,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 const double vi = v[i] / 1000.0;
                 return h.direction > 0 ? m.Cp_N + m.bp_Ns_per_m * vi : -m.Cn_N + m.bn_Ns_per_m * vi;
             };
-            const double tolerance = std::max(3.0 * lines->rms_N, 0.05 * std::max(std::abs(m.Cp_N), std::abs(m.Cn_N)));
+            // Noise decides, within bounds: a twentieth to a quarter of the sliding force.
+            const double sliding = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
+            const double tolerance = std::clamp(3.0 * lines->rms_N, 0.05 * sliding, 0.25 * sliding);
             // Just before the turning point the needle is slower than the band and the force
             // leaves the line although the tissue still rests: scanned from before that.
             std::size_t last = h.end;
@@ -180,7 +258,13 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             int off = 0;
             bool onLine = false;
             for (std::size_t i = last; i > h.start; --i) {
-                if (std::abs(force[i - 1] - line(i - 1)) <= tolerance) {
+                // Above the line decides nothing: the tissue still stuck, pressed to the plate
+                // up to static friction (a), or resting there while the needle, slower than the
+                // band, is held (c).
+                const double off_N = h.direction * (force[i - 1] - line(i - 1));
+                if (off_N > tolerance)
+                    continue;
+                if (off_N >= -tolerance) {
                     off = 0;
                     onLine = true;
                     cStart = i - 1;
