@@ -241,9 +241,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 const double vi = v[i] / 1000.0;
                 return h.direction > 0 ? m.Cp_N + m.bp_Ns_per_m * vi : -m.Cn_N + m.bn_Ns_per_m * vi;
             };
-            // Noise decides, within bounds: a twentieth to a quarter of the sliding force.
+            // Noise decides, within bounds: a tenth to a quarter of the sliding force.
             const double sliding = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
-            const double tolerance = std::clamp(3.0 * lines->rms_N, 0.05 * sliding, 0.25 * sliding);
+            const double tolerance = std::clamp(3.0 * lines->rms_N, 0.1 * sliding, 0.25 * sliding);
             // Just before the turning point the needle is slower than the band and the force
             // leaves the line although the tissue still rests: scanned from before that.
             std::size_t last = h.end;
