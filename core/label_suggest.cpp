@@ -341,7 +341,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // Displacements, not speeds, for a: a slow needle moves the picture by a fraction
             // of a pixel per frame, too little to judge frame by frame.
             std::optional<std::pair<double, double>> aWindow, cWindow;
-            std::optional<double> firstBehind;
+            std::optional<double> firstBehind, pendingBehind, pendingRest;
             bool followed = false, measured = false, anyClear = false;
             double lastFollow = t0, lastMoving = t0;
             const double frame_s = 2.0 * frameHalf_s;
@@ -373,12 +373,17 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // displacement since the turning point.
                 const bool clear = tissue->px_per_mm > 0.0 && vn * frame_s * tissue->px_per_mm >= 1.5 && vn >= 4.0 * videoNoise_mm_s;
                 anyClear |= clear;
+                // Two readings in a row decide: one may be a repeated or garbled frame.
                 if (!firstBehind) {
                     if ((clear && vtk < 0.5 * vn) || needle_mm - carried_mm > noise_mm + 0.4 * needle_mm) {
-                        firstBehind = tk + frameHalf_s;
+                        if (pendingBehind)
+                            firstBehind = pendingBehind;
+                        else
+                            pendingBehind = tk + frameHalf_s;
                     } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && needle_mm - carried_mm <= noise_mm + 0.15 * needle_mm)) {
                         followed = true;
                         lastFollow = tk + frameHalf_s;
+                        pendingBehind.reset();
                     }
                 }
                 if (vn < std::max(o.zeroBand_mm_s / 2, 4.0 * videoNoise_mm_s))
@@ -386,10 +391,14 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 measured = true;
                 const bool resting = vtk < std::max(0.25 * vn, 2.0 * videoNoise_mm_s);
                 if (firstBehind && !cWindow) {
-                    if (!resting)
+                    if (!resting) {
                         lastMoving = std::max(tk, lastFollow);
-                    else
-                        cWindow = std::make_pair(std::max(lastMoving, lastFollow), tk);
+                        pendingRest.reset();
+                    } else if (pendingRest) {
+                        cWindow = std::make_pair(std::max(lastMoving, lastFollow), *pendingRest);
+                    } else {
+                        pendingRest = tk;
+                    }
                 }
             }
             // The tissue slows down once it meets the plate (b1) and still reads as keeping up
@@ -400,8 +409,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 return std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start), run.time_s.begin() + std::ptrdiff_t(h.end), t) -
                                    run.time_s.begin());
             };
-            // Half a frame of slack each side: a value stands for the whole pair of frames.
-            const double slack = frameHalf_s;
+            // A frame and a half of slack each side: a value stands for the whole pair of
+            // frames, and a picture that is noisy, compressed or repeats frames is off by one.
+            const double slack = 3.0 * frameHalf_s;
             auto place = [&](std::size_t fromForce, const std::pair<double, double>& w) {
                 const double tf = fromForce < h.end ? run.time_s[fromForce] : t1;
                 if (tf >= w.first - slack && tf <= w.second + slack)
