@@ -8,8 +8,6 @@
 #include <cmath>
 #include <exception>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
 #include <optional>
 
 namespace nb {
@@ -216,9 +214,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             lines->model.bn_Ns_per_m = down.b_Ns_per_m;
             lines->rms_N = std::max(up.rms_N, down.rms_N);
         }
-        if (std::getenv("NB_PHASE_DEBUG"))
-            std::fprintf(stderr, "lines Cp %.3f bp %.2f Cn %.3f bn %.2f rms %.4f band %.4f up %d down %d\n", lines->model.Cp_N, lines->model.bp_Ns_per_m,
-                         lines->model.Cn_N, lines->model.bn_Ns_per_m, lines->rms_N, lines->bandSlowingDown_m_s, up.ok, down.ok);
     }
     const QString forceSource = lines ? QStringLiteral("suggested from force and position")
                                       : QStringLiteral("suggested from position (velocity band)");
@@ -419,11 +414,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 return sampleAt(0.5 * (w.first + w.second));
             };
             const std::pair<double, double> aMid = aWindow ? std::make_pair(aWindow->first, *firstBehind) : std::make_pair(t0, t0);
-            if (std::getenv("NB_PHASE_DEBUG"))
-                std::fprintf(stderr, "half %.3f-%.3f forceA %.3f aWin %.3f-%.3f behind %.3f forceC %.3f cWin %.3f-%.3f\n", t0, t1,
-                             run.time_s[std::min(forceA, h.end - 1)], aWindow ? aWindow->first : -1.0, aWindow ? aWindow->second : -1.0,
-                             firstBehind.value_or(-1.0), run.time_s[std::min(forceC, h.end - 1)], cWindow ? cWindow->first : -1.0,
-                             cWindow ? cWindow->second : -1.0);
             if (!anyClear) {
                 // The picture moved less than a pixel or two a frame all through: what it
                 // measures reads short and cannot overrule the force.

@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
 
 namespace nb::video {
 
@@ -194,9 +192,6 @@ TissueMotion tissueMotionFromShifts(const TissueShifts& s, const Run& run, const
     }(), 0.1);
     if (!(pxPerMm > 0.0) || pxPerMm * 0.15 * fastest < 2.0 * noise)
         return fail(nb::TrDevices::tr("the tissue's motion does not stand out of the picture's noise"));
-    if (std::getenv("NB_TISSUE_DEBUG"))
-        for (std::size_t i = 0; i < k; ++i)
-            std::fprintf(stderr, "%.3f dx %.2f dy %.2f resp %.3f dp %.3f\n", 0.5 * (ta[i] + tb[i]), s.dx_px[i], s.dy_px[i], s.response[i], dp[i]);
     m.px_per_mm = pxPerMm;
     m.time_s.resize(k);
     m.velocity_mm_s.resize(k);
