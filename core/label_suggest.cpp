@@ -180,6 +180,29 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             videoNoise_mm_s = speeds[speeds.size() / 4];
         }
     }
+    // A picture to be trusted where it disagrees with the force must first agree with it
+    // where the force is plain: moving with the needle in the force's a, resting in its c,
+    // wherever the picture moves clearly. Below three in four it is too unclear to judge
+    // (noise, blur, a wrong clock) and leaves the force's phases as they are.
+    bool videoTrusted = tissue != nullptr;
+    if (tissue && tissue->px_per_mm > 0.0 && tissue->time_s.size() > 1) {
+        const double frame_s = (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1);
+        const QStringList plain = phasePerSample(suggestPhaseLabels(run, nullptr, o), tissue->time_s);
+        int judged = 0, agreed = 0;
+        for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
+            const QString& p = plain[qsizetype(k)];
+            if (!std::isfinite(tissue->velocity_mm_s[k]) || (p != QLatin1String("a") && p != QLatin1String("c")))
+                continue;
+            const std::size_t i = std::min(run.size() - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), tissue->time_s[k]) -
+                                                                          run.time_s.begin()));
+            if (std::abs(v[i]) * frame_s * tissue->px_per_mm < 1.5 || std::abs(v[i]) < 4.0 * videoNoise_mm_s)
+                continue;
+            const double ratio = tissue->velocity_mm_s[k] / v[i];
+            ++judged;
+            agreed += p == QLatin1String("a") ? ratio >= 0.5 : ratio < 0.25;
+        }
+        videoTrusted = judged < 10 || agreed >= 0.75 * judged;
+    }
     const double frameHalf_s = tissue && tissue->time_s.size() > 1
                                    ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
                                    : 0.0;
@@ -414,7 +437,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 return sampleAt(0.5 * (w.first + w.second));
             };
             const std::pair<double, double> aMid = aWindow ? std::make_pair(aWindow->first, *firstBehind) : std::make_pair(t0, t0);
-            if (!anyClear) {
+            if (!videoTrusted) {
+                source = forceSource + QStringLiteral(" (the tissue's motion in %1 too unclear to judge)").arg(tissue->source);
+            } else if (!anyClear) {
                 // The picture moved less than a pixel or two a frame all through: what it
                 // measures reads short and cannot overrule the force.
                 source = forceSource + QStringLiteral(" (the tissue moved too little per frame in %1 to judge)").arg(tissue->source);
