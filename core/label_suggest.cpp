@@ -182,7 +182,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     }
     // A picture to be trusted where it disagrees with the force must first agree with it
     // where the force is plain: moving with the needle in the force's a, resting in its c,
-    // wherever the picture moves clearly. Below three in four it is too unclear to judge
+    // wherever the picture moves clearly. Below nine in ten it is too unclear to judge
     // (noise, blur, a wrong clock) and leaves the force's phases as they are.
     bool videoTrusted = tissue != nullptr;
     if (tissue && tissue->px_per_mm > 0.0 && tissue->time_s.size() > 1) {
@@ -201,7 +201,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             ++judged;
             agreed += p == QLatin1String("a") ? ratio >= 0.5 : ratio < 0.25;
         }
-        videoTrusted = judged < 10 || agreed >= 0.75 * judged;
+        videoTrusted = judged < 10 || agreed >= 0.9 * judged;
     }
     const double frameHalf_s = tissue && tissue->time_s.size() > 1
                                    ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
