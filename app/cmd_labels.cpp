@@ -1,13 +1,29 @@
-// `needlebench labels suggest RUN.csv --out LABELS.csv`: labels suggested from the data, in
-// the labels file format `track,label,start_s,end_s,comment`.
+// `needlebench labels suggest RUN.csv --out LABELS.csv [--video VIDEO]`: labels suggested from
+// the data, in the labels file format `track,label,start_s,end_s,comment`. With a video (the
+// given one, else the one linked to the run) the friction phases also use the tissue's motion
+// in the picture; the video's clock comes from --video-offset-s, else the run's stored link,
+// else the automatic sync.
 #include "cli_support.h"
 #include "core/tr.h"
 
 #include "core/label_suggest.h"
 #include "core/run_file.h"
+#include "core/run_video_link.h"
+#include "video/frame_index_store.h"
+#include "video/frame_reader.h"
+#include "video/tissue_tracker.h"
+#include "video/video_error.h"
+#include "video/video_sync.h"
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QTextStream>
 #include <QJsonArray>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
 
 namespace nb::cli {
 
@@ -20,7 +36,19 @@ int cmdLabels(const QStringList& args, Io io)
     const QCommandLineOption out(QStringLiteral("out"), nb::TrCli::tr("labels file to write (default RUN.labels.csv)"),
                                  QStringLiteral("LABELS.csv"));
     const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print the labels as JSON"));
-    parser.addOptions({out, json});
+    const QCommandLineOption video(QStringLiteral("video"),
+                                   nb::TrCli::tr("the run's imaging video: friction phases also from the tissue's motion in it "
+                                                 "(default: the video linked to the run, if any)"),
+                                   QStringLiteral("VIDEO"));
+    const QCommandLineOption videoOffset(QStringLiteral("video-offset-s"),
+                                         nb::TrCli::tr("video time at the recording's start (default: the run's stored sync, else found automatically)"),
+                                         QStringLiteral("S"));
+    const QCommandLineOption videoDrift(QStringLiteral("video-drift"), nb::TrCli::tr("the video clock's rate error, e.g. 0.001 (default 0)"),
+                                        QStringLiteral("D"));
+    const QCommandLineOption tissueTrace(QStringLiteral("tissue-trace"),
+                                         nb::TrCli::tr("write the tissue's velocity read off the video as CSV (time_s,tissue_velocity_mm_s)"),
+                                         QStringLiteral("FILE.csv"));
+    parser.addOptions({out, json, video, videoOffset, videoDrift, tissueTrace});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("labels"), args, io, 2, 2, &code))
         return code;
@@ -33,9 +61,89 @@ int cmdLabels(const QStringList& args, Io io)
     QString outPath = parser.value(out);
     if (outPath.isEmpty())
         outPath = labelsPathFor(runPath);
+    std::optional<TimelineMapping> given;
+    if (parser.isSet(videoOffset) || parser.isSet(videoDrift)) {
+        bool okOffset = true, okDrift = true;
+        TimelineMapping m;
+        if (parser.isSet(videoOffset))
+            m.offset_s = parser.value(videoOffset).toDouble(&okOffset);
+        if (parser.isSet(videoDrift))
+            m.drift = parser.value(videoDrift).toDouble(&okDrift);
+        if (!okOffset || !okDrift || !std::isfinite(m.offset_s) || !(std::abs(m.drift) < 0.1)) {
+            io.err << nb::TrCli::tr("needlebench labels: --video-offset-s wants seconds and --video-drift a rate error below 0.1\n");
+            return Usage;
+        }
+        given = m;
+    }
     try {
         const Run run = readRunFile(runPath).run;
-        const Labels labels = suggestLabels(run);
+        QJsonObject videoReport;
+        std::optional<TissueMotion> tissue;
+        {
+            QString videoPath = parser.value(video);
+            QString linkProblem;
+            const std::optional<RunVideoLink> link = readRunVideoLink(runPath, &linkProblem);
+            std::optional<TimelineMapping> mapping = given;
+            QString mappingSource = given ? QStringLiteral("given") : QString();
+            if (videoPath.isEmpty() && link && !link->video.isEmpty())
+                videoPath = link->video;
+            if (!mapping && link && !videoPath.isEmpty() && link->method != SyncMethod::None &&
+                QFileInfo(link->video).canonicalFilePath() == QFileInfo(videoPath).canonicalFilePath()) {
+                mapping = link->mapping;
+                mappingSource = QStringLiteral("stored");
+            }
+            if (!videoPath.isEmpty()) {
+                videoReport[QStringLiteral("file")] = videoPath;
+                QString problem;
+                try {
+                    const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
+                    if (!mapping) {
+                        const video::VideoSync vs = video::syncVideoToRun(index, run);
+                        mapping = vs.result.mapping();
+                        mappingSource = QStringLiteral("automatic");
+                        videoReport[QStringLiteral("sync_confidence")] = vs.result.confidence;
+                    }
+                    video::FrameReader reader(index);
+                    TissueMotion m = video::tissueMotionFromShifts(video::trackTissueShifts(reader), run, *mapping, &problem);
+                    if (!m.time_s.empty()) {
+                        m.source = QFileInfo(videoPath).fileName();
+                        tissue = std::move(m);
+                    }
+                } catch (const video::VideoError& e) {
+                    problem = e.message();
+                } catch (const std::exception& e) {
+                    problem = QString::fromUtf8(e.what());
+                }
+                if (mapping) {
+                    videoReport[QStringLiteral("offset_s")] = mapping->offset_s;
+                    videoReport[QStringLiteral("drift")] = mapping->drift;
+                    videoReport[QStringLiteral("sync")] = mappingSource;
+                }
+                videoReport[QStringLiteral("used")] = bool(tissue);
+                if (!tissue) {
+                    videoReport[QStringLiteral("problem")] = problem;
+                    io.err << nb::TrCli::tr("needlebench labels: %1: the tissue's motion could not be read (%2); phases from force and position only\n")
+                                  .arg(videoPath, problem);
+                }
+            }
+        }
+        if (tissue && parser.isSet(tissueTrace)) {
+            QFile f(parser.value(tissueTrace));
+            if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
+                io.err << "needlebench labels: " << nb::TrCli::tr("%1: cannot write the trace here").arg(f.fileName()) << '\n';
+                return Failure;
+            }
+            QTextStream ts(&f);
+            ts << "time_s,tissue_velocity_mm_s\n";
+            for (std::size_t i = 0; i < tissue->time_s.size(); ++i)
+                ts << QString::number(tissue->time_s[i], 'f', 6) << ','
+                   << (std::isfinite(tissue->velocity_mm_s[i]) ? QString::number(tissue->velocity_mm_s[i], 'f', 4) : QString()) << '\n';
+        }
+        const QString protocol = run.metadata.value(QStringLiteral("protocol"), QString());
+        Labels labels = suggestLabels(run);
+        const bool phases = std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.track != QLatin1String("events"); });
+        if (tissue && (protocol == QLatin1String("friction") || (protocol.isEmpty() && phases)))
+            labels = suggestPhaseLabels(run, &*tissue);
         writeLabelsFile(outPath, labels);
         if (parser.isSet(json)) {
             QJsonArray a;
@@ -45,7 +153,10 @@ int cmdLabels(const QStringList& args, Io io)
                                      {QStringLiteral("start_s"), l.start_s},
                                      {QStringLiteral("end_s"), l.end_s},
                                      {QStringLiteral("comment"), l.comment}});
-            printJson(io, QJsonObject{{QStringLiteral("labels"), a}, {QStringLiteral("out"), outPath}});
+            QJsonObject o{{QStringLiteral("labels"), a}, {QStringLiteral("out"), outPath}};
+            if (!videoReport.isEmpty())
+                o[QStringLiteral("video")] = videoReport;
+            printJson(io, o);
         } else {
             io.out << nb::TrCli::tr("%1 labels suggested, written to %2\n").arg(labels.size()).arg(outPath);
         }

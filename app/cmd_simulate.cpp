@@ -47,12 +47,16 @@ struct OptionSet {
     QCommandLineOption video{QStringLiteral("video"), nb::TrCli::tr("also render the imaging view (29.97 frames/s; .avi, .mkv or .mp4)"), QStringLiteral("FILE")};
     QCommandLineOption stopAt{QStringLiteral("stop-at"), nb::TrCli::tr("stop the insertion at a puncture: puncture (the first) or puncture:N (the N-th)"), QStringLiteral("puncture[:N]")};
     QCommandLineOption slowAfter{QStringLiteral("slow-after-puncture"), nb::TrCli::tr("slow the insertion to V mm/s after the first puncture"), QStringLiteral("V")};
+    QCommandLineOption stickBand{QStringLiteral("stick-band-mm-s"), nb::TrCli::tr("friction platform: the tissue sticks while the relative velocity is within ±V (default 2.5)"), QStringLiteral("V"), QStringLiteral("2.5")};
+    QCommandLineOption plateGap{QStringLiteral("plate-gap-mm"), nb::TrCli::tr("friction platform: free travel of the slab before it meets a plate (default 1.5)"), QStringLiteral("MM"), QStringLiteral("1.5")};
+    QCommandLineOption forceNoise{QStringLiteral("force-noise-n"), nb::TrCli::tr("rms noise of the force sensor in newtons (default about 0.0012)"), QStringLiteral("N")};
     QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), nb::TrCli::tr("the video starts this long before the recording (default 0)"), QStringLiteral("S"), QStringLiteral("0")};
 
     void addTo(QCommandLineParser& p) const
     {
         for (const auto* o : {&protocol, &tissue, &tip, &seed, &rate, &velocity, &depth, &amplitude, &frequency,
-                              &cycles, &thickness, &bone, &maxForce, &realtime, &truth, &out, &video, &videoOffset, &stopAt, &slowAfter})
+                              &cycles, &thickness, &bone, &maxForce, &realtime, &truth, &out, &video, &videoOffset, &stopAt, &slowAfter,
+                              &stickBand, &plateGap, &forceNoise})
             p.addOption(*o);
     }
 };
@@ -158,6 +162,24 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
     s.sine = {*a, *f, cycles};
     s.rig.thickness_mm = *t;
     s.maxForce_N = *m;
+    auto band = number(p, o.stickBand, &error);
+    auto gap = band ? number(p, o.plateGap, &error) : std::nullopt;
+    if (!gap)
+        return error;
+    if (*band <= 0.0 || *band > 50.0)
+        return nb::TrCli::tr("--stick-band-mm-s must be in (0, 50]");
+    if (*gap < 0.0 || *gap > 20.0)
+        return nb::TrCli::tr("--plate-gap-mm must be in [0, 20]");
+    s.rig.stickBand_mm_s = *band;
+    s.rig.plateGap_mm = *gap;
+    if (p.isSet(o.forceNoise)) {
+        auto noise = number(p, o.forceNoise, &error);
+        if (!noise)
+            return error;
+        if (*noise < 0.0 || *noise > 1.0)
+            return nb::TrCli::tr("--force-noise-n must be in [0, 1]");
+        s.rig.sensor.noise_V = *noise * s.rig.sensor.sensitivity_V_per_N * s.rig.sensor.gain;
+    }
     if (p.isSet(o.bone)) {
         auto b = number(p, o.bone, &error);
         if (!b)

@@ -7,11 +7,16 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <optional>
 
 namespace nb {
 
 namespace {
+
+// The needle settling back by more than this after its last stroke counts as a reversal
+// (a few encoder counts: the thesis's stage resolves 1.5 µm).
+constexpr double kSettleBack_mm = 0.01;
 
 std::vector<double> velocity(const Run& run)
 {
@@ -76,6 +81,65 @@ std::vector<HalfCycle> halfCycles(const std::vector<double>& v, double band)
 
 namespace {
 
+struct EnvelopeLine {
+    double c0_N = 0.0, b_Ns_per_m = 0.0, rms_N = 0.0;
+    bool ok = false;
+};
+
+// The sliding line of one direction, F = c0 + b·v, as the upper envelope of the force in the
+// direction of motion: while the tissue is carried (a) the force lies well below the line and
+// in b it climbs to it, so a plain least-squares fit over all moving samples (what the friction
+// fit does without phases) sits too low when the tissue is carried for much of the stroke.
+// Samples below the line are dropped and the rest refitted until it settles.
+EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double>& v_mm_s, int dir, double minSpeed_mm_s)
+{
+    std::vector<std::size_t> use;
+    for (std::size_t i = 0; i < f.size(); ++i)
+        if (dir * v_mm_s[i] >= minSpeed_mm_s)
+            use.push_back(i);
+    EnvelopeLine line;
+    for (int iteration = 0; iteration < 12 && use.size() >= 20; ++iteration) {
+        double sv = 0, sf = 0, svv = 0, svf = 0;
+        for (std::size_t i : use) {
+            const double vi = v_mm_s[i] / 1000.0;
+            sv += vi;
+            sf += f[i];
+            svv += vi * vi;
+            svf += vi * f[i];
+        }
+        const double k = double(use.size()), det = k * svv - sv * sv;
+        if (!(std::abs(det) > 1e-18))
+            break;
+        // Damping cannot be negative: a line that falls with speed is the carried tissue's
+        // low force at speed pulling it down, not friction.
+        line.b_Ns_per_m = std::max(0.0, (k * svf - sv * sf) / det);
+        line.c0_N = (sf - line.b_Ns_per_m * sv) / k;
+        line.ok = true;
+        std::vector<double> r;
+        for (std::size_t i : use)
+            r.push_back(dir * (f[i] - line.c0_N - line.b_Ns_per_m * v_mm_s[i] / 1000.0));
+        std::vector<double> sorted = r;
+        std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+        const double median = sorted[sorted.size() / 2];
+        for (double& x : sorted)
+            x = std::abs(x - median);
+        std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+        const double spread = 1.4826 * sorted[sorted.size() / 2];
+        line.rms_N = spread;
+        // First the upper half, then what does not lie clearly below the line: the carried
+        // tissue's low force drops out, the sliding force stays.
+        const double keepAbove = iteration == 0 ? median : -1.5 * spread;
+        std::vector<std::size_t> kept;
+        for (std::size_t j = 0; j < use.size(); ++j)
+            if (r[j] >= keepAbove)
+                kept.push_back(use[j]);
+        if (kept.size() == use.size())
+            break;
+        use.swap(kept);
+    }
+    return line;
+}
+
 // The sliding lines F = C + b·v of the run (friction_fit.h, its band found in the data, no
 // phases used); nullopt when the fit fails.
 std::optional<FrictionFit> slidingLines(const Run& run)
@@ -94,13 +158,56 @@ std::optional<FrictionFit> slidingLines(const Run& run)
 
 Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
 {
+    return suggestPhaseLabels(run, nullptr, o);
+}
+
+Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const SuggestOptions& o)
+{
     Labels out;
     if (run.size() < 10)
         return out;
     const std::vector<double> v = velocity(run);
-    const std::optional<FrictionFit> lines = slidingLines(run);
-    const QString source = lines ? QStringLiteral("suggested from force and position")
-                                 : QStringLiteral("suggested from position (velocity band)");
+    // The picture's velocity noise: most of the time the tissue rests (c), so a low
+    // quantile of its measured speed is the noise the picture adds.
+    double videoNoise_mm_s = 0.0;
+    if (tissue) {
+        std::vector<double> speeds;
+        for (double x : tissue->velocity_mm_s)
+            if (std::isfinite(x))
+                speeds.push_back(std::abs(x));
+        if (!speeds.empty()) {
+            std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 4), speeds.end());
+            videoNoise_mm_s = speeds[speeds.size() / 4];
+        }
+    }
+    // A picture to be trusted where it disagrees with the force must first agree with it
+    // where the force is plain: moving with the needle in the force's a, resting in its c,
+    // wherever the picture moves clearly. Below nine in ten it is too unclear to judge
+    // (noise, blur, a wrong clock) and leaves the force's phases as they are.
+    bool videoTrusted = tissue != nullptr;
+    if (tissue && tissue->px_per_mm > 0.0 && tissue->time_s.size() > 1) {
+        const double frame_s = (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1);
+        const QStringList plain = phasePerSample(suggestPhaseLabels(run, nullptr, o), tissue->time_s);
+        int judged = 0, agreed = 0;
+        for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
+            const QString& p = plain[qsizetype(k)];
+            if (!std::isfinite(tissue->velocity_mm_s[k]) || (p != QLatin1String("a") && p != QLatin1String("c")))
+                continue;
+            const std::size_t i = std::min(run.size() - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), tissue->time_s[k]) -
+                                                                          run.time_s.begin()));
+            if (std::abs(v[i]) * frame_s * tissue->px_per_mm < 1.5 || std::abs(v[i]) < 4.0 * videoNoise_mm_s)
+                continue;
+            const double ratio = tissue->velocity_mm_s[k] / v[i];
+            ++judged;
+            agreed += p == QLatin1String("a") ? ratio >= 0.5 : ratio < 0.25;
+        }
+        videoTrusted = judged < 10 || agreed >= 0.9 * judged;
+    }
+    const double frameHalf_s = tissue && tissue->time_s.size() > 1
+                                   ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
+                                   : 0.0;
+    const QString videoSource = tissue ? QStringLiteral("suggested from the tissue's motion in %1 (timed by force and position)").arg(tissue->source)
+                                       : QString();
     // Force less the needle holder's inertia, lightly smoothed.
     const std::size_t n = run.size();
     std::vector<double> force(n);
@@ -116,24 +223,45 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             force[i] = sum / double(b - a + 1) - kNeedleHolderMass_kg * acc;
         }
     }
-    for (const HalfCycle& h : halfCycles(v, o.zeroBand_mm_s)) {
+    std::optional<FrictionFit> lines = slidingLines(run);
+    if (lines) {
+        double fastest = 0.0;
+        for (double x : v)
+            fastest = std::max(fastest, std::abs(x));
+        const double minSpeed = std::max(1000.0 * lines->bandSlowingDown_m_s / 2.0, 0.2 * fastest);
+        const EnvelopeLine up = envelopeLine(force, v, 1, minSpeed), down = envelopeLine(force, v, -1, minSpeed);
+        if (up.ok && down.ok) {
+            lines->model.Cp_N = up.c0_N;
+            lines->model.bp_Ns_per_m = up.b_Ns_per_m;
+            lines->model.Cn_N = -down.c0_N;
+            lines->model.bn_Ns_per_m = down.b_Ns_per_m;
+            lines->rms_N = std::max(up.rms_N, down.rms_N);
+        }
+    }
+    const QString forceSource = lines ? QStringLiteral("suggested from force and position")
+                                      : QStringLiteral("suggested from position (velocity band)");
+    const std::vector<HalfCycle> cycles = halfCycles(v, o.zeroBand_mm_s);
+    const HalfCycle* lastStroke = nullptr;
+    for (const HalfCycle& h : cycles) {
         if (h.end <= h.start + 4)
             continue;
+        lastStroke = &h;
         const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
         // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
         const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
+        QString source = forceSource;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)
-            // from here to the turning point; a: the tissue is carried until it lets go, at
-            // the force's peak in the direction of motion; b1/b2: in between, b2 once the gap
-            // to the line has closed to a quarter of its largest.
+            // from here to the turning point.
             const KarnoppModel& m = lines->model;
             auto line = [&](std::size_t i) {
                 const double vi = v[i] / 1000.0;
                 return h.direction > 0 ? m.Cp_N + m.bp_Ns_per_m * vi : -m.Cn_N + m.bn_Ns_per_m * vi;
             };
-            const double tolerance = std::max(3.0 * lines->rms_N, 0.05 * std::max(std::abs(m.Cp_N), std::abs(m.Cn_N)));
+            // Noise decides, within bounds: a tenth to a quarter of the sliding force.
+            const double sliding = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
+            const double tolerance = std::clamp(3.0 * lines->rms_N, 0.1 * sliding, 0.25 * sliding);
             // Just before the turning point the needle is slower than the band and the force
             // leaves the line although the tissue still rests: scanned from before that.
             std::size_t last = h.end;
@@ -141,14 +269,20 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             while (last > h.start + 1 && std::abs(v[last - 1]) < slowest)
                 --last;
             // Backwards while the force follows the line; a few stray samples (noise) do not
-            // end c, a run of them does.
-            // The samples nearest the turning point may still be off the line (a slow needle
-            // inside the band): they do not end the search before it has begun.
+            // end c, a run of them does. The samples nearest the turning point may still be
+            // off the line (a slow needle inside the band): they do not end the search
+            // before it has begun.
             cStart = last;
             int off = 0;
             bool onLine = false;
             for (std::size_t i = last; i > h.start; --i) {
-                if (std::abs(force[i - 1] - line(i - 1)) <= tolerance) {
+                // Above the line decides nothing: the tissue still stuck, pressed to the plate
+                // up to static friction (a), or resting there while the needle, slower than the
+                // band, is held (c).
+                const double off_N = h.direction * (force[i - 1] - line(i - 1));
+                if (off_N > tolerance)
+                    continue;
+                if (off_N >= -tolerance) {
                     off = 0;
                     onLine = true;
                     cStart = i - 1;
@@ -158,16 +292,45 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             }
             if (cStart == last)
                 cStart = h.end;
-            std::size_t peak = h.start;
-            for (std::size_t i = h.start; i < cStart; ++i)
-                if (h.direction * force[i] > h.direction * force[peak])
-                    peak = i;
-            aEnd = cStart > h.start ? peak : h.start;
-            double widest = 0.0;
+            // a: the tissue is carried with the needle (static friction) and pulls on it only
+            // through its inertia, well below the sliding line, until it meets the plate
+            // ahead: from there the plate's reaction drives the force up to the line. a ends
+            // where the force rises from that low level for the last time before c, or, when
+            // the tissue still sticks there (the force overshoots the line and drops back
+            // when it breaks away: static friction above dynamic), at that peak.
+            auto level = [&](std::size_t i) { return h.direction * force[i] / std::max(1e-9, std::abs(line(i))); };
+            // The valley: backwards from c to the lowest level, stopping where the force
+            // climbs again towards the turning point (the tissue leaving the plate behind
+            // pushes while it relaxes) or turns to the previous direction's sign.
+            std::size_t valley = cStart;
+            double lowest = std::numeric_limits<double>::infinity();
+            for (std::size_t i = cStart; i > h.start; --i) {
+                const double l = level(i - 1);
+                if (l < 0.0 || l > lowest + 0.3)
+                    break;
+                if (l < lowest) {
+                    lowest = l;
+                    valley = i - 1;
+                }
+            }
+            aEnd = valley;
+            const double risen = std::max(0.0, lowest) + 0.35 * (1.0 - std::max(0.0, lowest));
+            while (aEnd < cStart && level(aEnd) < risen)
+                ++aEnd;
+            if (cStart >= h.end)
+                aEnd = h.end;  // the force never reached the sliding line: the tissue was carried throughout
+            std::size_t peak = aEnd;
             for (std::size_t i = aEnd; i < cStart; ++i)
-                widest = std::max(widest, std::abs(force[i] - line(i)));
+                if (h.direction * force[i] - std::abs(line(i)) > h.direction * force[peak] - std::abs(line(peak)))
+                    peak = i;
+            if (peak < cStart && h.direction * force[peak] - std::abs(line(peak)) > std::max(tolerance, 0.1 * std::abs(line(peak))))
+                aEnd = peak;
+            // b1/b2: the tissue bears on the plate progressively, then fully (the force
+            // closes on the line, models.md 5: the relative velocity grows); b2 once the gap
+            // to the line has closed to a quarter of what it was when the tissue met the plate.
+            const double gap0 = aEnd < cStart ? std::abs(force[aEnd] - line(aEnd)) : 0.0;
             b2Start = cStart;
-            while (b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * widest)
+            while (b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
                 --b2Start;
         } else {
             while (aEnd < h.end && std::abs(v[aEnd]) < o.zeroBand_mm_s / 2)
@@ -183,6 +346,121 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
                 ++cStart;
             b2Start = aEnd + (cStart - std::min(cStart, aEnd)) / 2;
         }
+        if (tissue) {
+            // The picture measures the relative velocity itself, one value per pair of frames:
+            // a while the tissue keeps up with the needle, c once it has stopped. It decides
+            // between which frames each boundary lies; the force, sampled far finer, places
+            // it there when it agrees, and is overruled when it does not.
+            const std::size_t forceA = aEnd, forceC = std::min(cStart, h.end);
+            // a ends between the last pair of frames in which the tissue had kept up with the
+            // needle since the turning point (its displacement equal to the needle's, within
+            // the picture's noise) and the first in which it has fallen behind; c starts
+            // between the last in which it still moved and the first in which it rests.
+            // Displacements, not speeds, for a: a slow needle moves the picture by a fraction
+            // of a pixel per frame, too little to judge frame by frame.
+            std::optional<std::pair<double, double>> aWindow, cWindow;
+            std::optional<double> firstBehind, pendingBehind, pendingRest;
+            bool followed = false, measured = false, anyClear = false;
+            double lastFollow = t0, lastMoving = t0;
+            const double frame_s = 2.0 * frameHalf_s;
+            std::optional<double> reference_mm;
+            double carried_mm = 0.0;
+            int steps = 0;
+            auto positionAt = [&](double t) {
+                const std::size_t j = std::min(n - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), t) - run.time_s.begin()));
+                return run.position_mm[j];
+            };
+            for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
+                const double tk = tissue->time_s[k];
+                if (tk - frameHalf_s < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
+                    continue;
+                const std::size_t i = std::min(h.end - 1, std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start),
+                                                                                         run.time_s.begin() + std::ptrdiff_t(h.end), tk) -
+                                                                        run.time_s.begin()));
+                const double vn = h.direction * v[i], vtk = h.direction * tissue->velocity_mm_s[k];
+                if (!reference_mm)
+                    reference_mm = positionAt(tk - frameHalf_s);
+                carried_mm += vtk * frame_s;
+                ++steps;
+                const double needle_mm = h.direction * (positionAt(tk + frameHalf_s) - *reference_mm);
+                // Kept up: within the noise and a sixth of the travel; fallen behind: by more than
+                // the noise and 40 % (slow motion reads short in the picture: sub-pixel shifts
+                // are pulled towards whole pixels).
+                const double noise_mm = 3.0 * videoNoise_mm_s * frame_s * std::sqrt(double(steps));
+                // Frame by frame where the picture moves clearly (speeds read true), else by the
+                // displacement since the turning point.
+                const bool clear = tissue->px_per_mm > 0.0 && vn * frame_s * tissue->px_per_mm >= 1.5 && vn >= 4.0 * videoNoise_mm_s;
+                anyClear |= clear;
+                // Two readings in a row decide: one may be a repeated or garbled frame.
+                if (!firstBehind) {
+                    if ((clear && vtk < 0.5 * vn) || needle_mm - carried_mm > noise_mm + 0.4 * needle_mm) {
+                        if (pendingBehind)
+                            firstBehind = pendingBehind;
+                        else
+                            pendingBehind = tk + frameHalf_s;
+                    } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && needle_mm - carried_mm <= noise_mm + 0.15 * needle_mm)) {
+                        followed = true;
+                        lastFollow = tk + frameHalf_s;
+                        pendingBehind.reset();
+                    }
+                }
+                if (vn < std::max(o.zeroBand_mm_s / 2, 4.0 * videoNoise_mm_s))
+                    continue;  // too slow to tell moving from resting
+                measured = true;
+                const bool resting = vtk < std::max(0.25 * vn, 2.0 * videoNoise_mm_s);
+                if (firstBehind && !cWindow) {
+                    if (!resting) {
+                        lastMoving = std::max(tk, lastFollow);
+                        pendingRest.reset();
+                    } else if (pendingRest) {
+                        cWindow = std::make_pair(std::max(lastMoving, lastFollow), *pendingRest);
+                    } else {
+                        pendingRest = tk;
+                    }
+                }
+            }
+            // The tissue slows down once it meets the plate (b1) and still reads as keeping up
+            // in the pair of frames it does so: a may have ended a frame before lastFollow.
+            if (firstBehind)
+                aWindow = std::make_pair(lastFollow - frame_s, cWindow ? cWindow->second : *firstBehind);
+            auto sampleAt = [&](double t) {
+                return std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start), run.time_s.begin() + std::ptrdiff_t(h.end), t) -
+                                   run.time_s.begin());
+            };
+            // A frame and a half of slack each side: a value stands for the whole pair of
+            // frames, and a picture that is noisy, compressed or repeats frames is off by one.
+            const double slack = 3.0 * frameHalf_s;
+            auto place = [&](std::size_t fromForce, const std::pair<double, double>& w) {
+                const double tf = fromForce < h.end ? run.time_s[fromForce] : t1;
+                if (tf >= w.first - slack && tf <= w.second + slack)
+                    return fromForce;
+                return sampleAt(0.5 * (w.first + w.second));
+            };
+            const std::pair<double, double> aMid = aWindow ? std::make_pair(aWindow->first, *firstBehind) : std::make_pair(t0, t0);
+            if (!videoTrusted) {
+                source = forceSource + QStringLiteral(" (the tissue's motion in %1 too unclear to judge)").arg(tissue->source);
+            } else if (!anyClear) {
+                // The picture moved less than a pixel or two a frame all through: what it
+                // measures reads short and cannot overrule the force.
+                source = forceSource + QStringLiteral(" (the tissue moved too little per frame in %1 to judge)").arg(tissue->source);
+            } else if (measured && !aWindow && followed) {
+                aEnd = h.end;  // the tissue kept up with the needle throughout
+                source = videoSource;
+            } else if (aWindow) {
+                aEnd = place(forceA, *aWindow);
+                if (aEnd != forceA)
+                    aEnd = sampleAt(0.5 * (aMid.first + aMid.second));
+                cStart = cWindow ? place(forceC, *cWindow) : h.end;
+                cStart = std::max(cStart, aEnd);
+                if (b2Start < aEnd || b2Start > cStart)
+                    b2Start = cStart - (cStart - aEnd) / 4;
+                source = videoSource;
+            }
+        }
+        if (aEnd >= h.end) {
+            out.push_back({track, QStringLiteral("a"), t0, t1, source});
+            continue;
+        }
         cStart = std::min(std::max(cStart, aEnd), h.end - 1);
         b2Start = std::clamp(b2Start, aEnd, cStart);
         const double ta = run.time_s[std::min(aEnd, h.end - 1)], tb = run.time_s[b2Start], tc = run.time_s[cStart];
@@ -190,10 +468,30 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
             out.push_back({track, QStringLiteral("a"), t0, ta, source});
         if (tb > ta)
             out.push_back({track, QStringLiteral("b1"), ta, tb, source});
-        if (tc > tb)
+        if (tb < tc)
             out.push_back({track, QStringLiteral("b2"), tb, tc, source});
         if (t1 > tc)
             out.push_back({track, QStringLiteral("c"), tc, t1, source});
+    }
+    // After the last stroke the needle comes to rest. When it settles back from its last
+    // extreme, that is one more turning point and the tissue it holds is carried (a) to the
+    // end; otherwise the tissue stays at rest (c).
+    if (lastStroke && lastStroke->end < n) {
+        const HalfCycle& h = *lastStroke;
+        std::size_t extreme = h.start;
+        for (std::size_t i = h.start; i < n; ++i)
+            if (h.direction * run.position_mm[i] > h.direction * run.position_mm[extreme])
+                extreme = i;
+        const double back_mm = h.direction * (run.position_mm[extreme] - run.position_mm[n - 1]);
+        Label& lastLabel = out.back();
+        const double tx = run.time_s[extreme];
+        if (back_mm > kSettleBack_mm && tx > lastLabel.start_s && lastLabel.label != QLatin1String("a")) {
+            lastLabel.end_s = std::min(lastLabel.end_s, tx);
+            const QString track = h.direction > 0 ? QStringLiteral("withdrawal") : QStringLiteral("insertion");
+            out.push_back({track, QStringLiteral("a"), lastLabel.end_s, run.time_s.back(), lastLabel.comment});
+        } else {
+            lastLabel.end_s = run.time_s.back();
+        }
     }
     return out;
 }

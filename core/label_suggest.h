@@ -1,14 +1,16 @@
 #pragma once
 // Suggested labels from the data, a starting point the operator corrects:
 // - sinusoidal (friction) runs: turning points split the motion into half-cycles
-//   (insertion: needle going deeper, withdrawal: coming back); in each, phase a runs from the
-//   turning point while the speed is inside the zero band (needle and tissue stuck), c from
-//   where the force has settled to the end, and b1, b2 split what lies between;
+//   (insertion: needle going deeper, withdrawal: coming back); in each (models.md 5), a
+//   runs from the turning point while the tissue is carried with the needle (the force well
+//   below the sliding line), b1/b2 while it bears on the plate (the force rising to the
+//   line), c from where the force follows the sliding line (tissue at rest) to the end;
 // - linear (stiffness) runs: contact, puncture, relaxation and internal punctures from
 //   core/events.h on the "events" point track.
 
 #include "labels.h"
 #include "run.h"
+#include "tissue_motion.h"
 
 namespace nb {
 
@@ -23,6 +25,9 @@ struct SuggestOptions {
 Labels suggestLabels(const Run& run, const SuggestOptions& options = {});
 
 Labels suggestPhaseLabels(const Run& run, const SuggestOptions& options = {});
+// With the tissue's motion from the imaging video (null: without): a and c from the
+// relative velocity it gives, b1/b2 from the force; each label's comment says which.
+Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const SuggestOptions& options = {});
 
 Labels suggestEventLabels(const Run& run);
 

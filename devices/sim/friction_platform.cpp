@@ -6,7 +6,6 @@
 namespace nb::devices::sim {
 
 namespace {
-constexpr double kBand_m_s = 0.005;
 constexpr double kMoving_m_s = 2.0e-4;   // below this the needle counts as at a turning point
 constexpr double kStopped = 0.05;        // slab speed / needle speed under which the tissue has stopped
 
@@ -23,7 +22,8 @@ QString phaseLabel(char p)
 }  // namespace
 
 FrictionPlatform::FrictionPlatform(const TissuePreset& preset, const RigConfig& config)
-    : k_(preset.friction.forLength(config.thickness_mm / 1000.0, kBand_m_s)),
+    : k_(preset.friction.forLength(config.thickness_mm / 1000.0, 2.0 * config.stickBand_mm_s / 1000.0)),
+      band_m_s_(2.0 * config.stickBand_mm_s / 1000.0),
       m_(preset.tissueMass_kg),
       gap_(config.plateGap_mm / 1000.0),
       damping_(2.0 * std::sqrt(k2_ * preset.tissueMass_kg)),
@@ -93,13 +93,16 @@ double FrictionPlatform::step(double t, double dt, double v_mm_s, double a_mm_s2
         if (force > k_.Dp_N || force < k_.Dn_N) {
             stuck_ = false;
             force = force > 0 ? k_.Dp_N : k_.Dn_N;
-            if (phase_ == 'a')
+            // Phase a ends where the tissue meets the plate ahead and relative motion begins
+            // (models.md 5). A slip while the tissue is still leaving the plate behind (its
+            // reaction and damping at the reversal) is not that: the tissue is carried on.
+            if (phase_ == 'a' && dir_ * y_ > gap_)
                 enter('1', t, truth);
         }
     } else {
         const double vrel = vn - vy_;
         const double plate = plateForce(y_, vy_);
-        if (std::fabs(vrel) < kBand_m_s / 2.0) {
+        if (std::fabs(vrel) < band_m_s_ / 2.0) {
             // Inside the zero band: sticks again if static friction can carry the slab.
             const double need = m_ * an + plate;
             if (need <= k_.Dp_N && need >= k_.Dn_N) {
@@ -111,13 +114,16 @@ double FrictionPlatform::step(double t, double dt, double v_mm_s, double a_mm_s2
         }
         // Inside the band the friction is static and saturates at D (eq. 15 leaves v = 0
         // itself to either side; the sign of the load decides here).
-        force = std::fabs(vrel) < kBand_m_s / 2.0 ? std::clamp(m_ * an + plate, k_.Dn_N, k_.Dp_N) : k_(vrel, 0.0);
+        force = std::fabs(vrel) < band_m_s_ / 2.0 ? std::clamp(m_ * an + plate, k_.Dn_N, k_.Dp_N) : k_(vrel, 0.0);
         vy_ += (force - plate) / m_ * dt;
         y_ += vy_ * dt;
     }
 
     if (!stuck_ && dir_ != 0) {
         const double into = dir_ * y_;
+        // Sliding already when it reaches the plate ahead: relative motion from there on.
+        if (phase_ == 'a' && into > gap_)
+            enter('1', t, truth);
         if (phase_ == '1' && into >= gap_ + w1_)
             enter('2', t, truth);
         if ((phase_ == '1' || phase_ == '2') && std::fabs(vy_) < kStopped * std::fabs(vn))

@@ -26,6 +26,7 @@ private:
     double plateForce(double y, double vy) const;
     void enter(char phase, double t, GroundTruth& truth);
     KarnoppModel k_;
+    double band_m_s_;      // Δv, the whole width of the zero band
     double m_;
     double gap_, w1_ = 1.0e-3, k1_ = 200.0, k2_ = 5000.0, damping_, dampingB1_;
     double y_ = 0.0, vy_ = 0.0;

@@ -50,6 +50,7 @@ struct RigConfig {
     double surface_mm = 5.0;            // where the tip meets the surface (stage zero = start)
     double thickness_mm = 30.0;         // the slab on the platform
     double plateGap_mm = 1.5;           // free travel of the slab before it meets a plate
+    double stickBand_mm_s = 2.5;        // the slab sticks while |relative velocity| is below this (±Δv/2)
     std::optional<double> boneDepth_mm; // past the surface; very stiff
     bool realtime = true;               // false: as fast as possible on a simulated clock
     StageConfig stage;

@@ -55,23 +55,6 @@ std::vector<SyncCase> drawSyncCases(std::mt19937& rng, int count, bool small);
 // needlebench program (for `simulate`).
 SyncOutcome runSyncCase(const SyncCase& c, const QString& executable, const QString& workDir);
 
-struct PhaseCase {
-    double frequency_hz = 0.5;
-    QString tissue = QStringLiteral("liver7");
-    int cycles = 3;
-    unsigned seed = 1;
-};
-
-struct PhaseOutcome {
-    PhaseCase c;
-    bool ok = false;
-    QString problem;
-    double agreementWithoutVideo = 0.0;  // fraction of samples whose suggested phase is true
-};
-
-std::vector<PhaseCase> drawPhaseCases(std::mt19937& rng, int count);
-PhaseOutcome runPhaseCase(const PhaseCase& c, const QString& executable, const QString& workDir);
-
 struct FrictionCase {
     double frequency_hz = 0.5;
     double band_mm_s = 2.5;       // the true stick band (half-width)

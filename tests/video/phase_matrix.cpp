@@ -1,0 +1,273 @@
+#include "phase_matrix.h"
+
+#include "core/label_suggest.h"
+#include "core/labels.h"
+#include "core/run_file.h"
+#include "devices/sim/imaging_render.h"
+#include "video/frame_index.h"
+#include "video/frame_reader.h"
+#include "video/tissue_tracker.h"
+#include "video/video_error.h"
+
+#include <QDir>
+#include <QProcess>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace nb::accuracy {
+
+namespace {
+
+QString phaseLookName(Look l)
+{
+    switch (l) {
+    case Look::Rendered: return QStringLiteral("rendered imaging view");
+    case Look::Plain: return QStringLiteral("blurred, little texture");
+    case Look::NoisyLowContrast: return QStringLiteral("heavy noise, low contrast");
+    case Look::Overlays: return QStringLiteral("burnt-in clock and frame counter");
+    case Look::Angle30: return QStringLiteral("needle at 30 deg");
+    case Look::Angle90: return QStringLiteral("picture turned 90 deg");
+    case Look::VariableRate: return QStringLiteral("dropped/repeated frames");
+    }
+    return {};
+}
+
+QString runSimulate(const QStringList& args, const QString& executable, const QString& out)
+{
+    QProcess p;
+    p.start(executable, QStringList{QStringLiteral("simulate")} << args << QStringLiteral("--out") << out);
+    if (!p.waitForFinished(180000) || p.exitCode() != 0)
+        return QStringLiteral("simulate failed: ") + QString::fromUtf8(p.readAllStandardError());
+    return {};
+}
+
+// The look applied to one rendered picture (8-bit grey).
+void applyLook(const PhaseMatrixCase& c, int frameNumber, double videoTime_s, cv::Mat& m)
+{
+    cv::RNG rng(std::uint64_t(c.seed) * 104729u + std::uint64_t(frameNumber));
+    auto addNoise = [&](double sigma) {
+        cv::Mat f, n(m.size(), CV_32F);
+        m.convertTo(f, CV_32F);
+        rng.fill(n, cv::RNG::NORMAL, 0.0, sigma);
+        f += n;
+        f.convertTo(m, CV_8U);
+    };
+    auto turn = [&](double degrees) {
+        const cv::Mat r = cv::getRotationMatrix2D(cv::Point2f(m.cols / 2.0f, m.rows / 2.0f), degrees, 1.0);
+        cv::Mat out;
+        cv::warpAffine(m, out, r, m.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(35));
+        m = out;
+    };
+    switch (c.look) {
+    case Look::Rendered: break;
+    case Look::Plain:
+        cv::GaussianBlur(m, m, cv::Size(0, 0), 2.5);
+        addNoise(3.0);
+        break;
+    case Look::NoisyLowContrast: {
+        cv::Mat f;
+        m.convertTo(f, CV_32F, 0.35, 0.65 * 90.0);
+        f.convertTo(m, CV_8U);
+        addNoise(18.0);
+        break;
+    }
+    case Look::Overlays: {
+        const int ms = int(std::lround(videoTime_s * 1000));
+        const QString clock = QStringLiteral("%1:%2:%3.%4")
+                                  .arg(10 + ms / 3600000, 2, 10, QLatin1Char('0'))
+                                  .arg(ms / 60000 % 60, 2, 10, QLatin1Char('0'))
+                                  .arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'))
+                                  .arg(ms % 1000, 3, 10, QLatin1Char('0'));
+        const double scale = m.rows / 480.0;
+        cv::putText(m, clock.toStdString(), cv::Point(int(10 * scale), int(30 * scale)), cv::FONT_HERSHEY_SIMPLEX, 0.9 * scale,
+                    cv::Scalar(250), 2);
+        cv::putText(m, QStringLiteral("FRM %1").arg(frameNumber, 6, 10, QLatin1Char('0')).toStdString(),
+                    cv::Point(int(m.cols - 200 * scale), int(m.rows - 15 * scale)), cv::FONT_HERSHEY_SIMPLEX, 0.9 * scale,
+                    cv::Scalar(250), 2);
+        break;
+    }
+    case Look::Angle30: turn(60.0); addNoise(6.0); break;  // the rendered needle is vertical
+    case Look::Angle90: turn(90.0); addNoise(6.0); break;
+    case Look::VariableRate: break;  // frames, not pixels: see renderVideo
+    }
+}
+
+QString encode(const PhaseMatrixCase& c, const std::vector<cv::Mat>& frames, double fps, const QString& path)
+{
+    QStringList codec;
+    switch (c.codec) {
+    case Codec::Mjpeg: codec = {QStringLiteral("-c:v"), QStringLiteral("mjpeg"), QStringLiteral("-q:v"), QStringLiteral("4"), QStringLiteral("-pix_fmt"), QStringLiteral("yuvj420p")}; break;
+    case Codec::H264: codec = {QStringLiteral("-c:v"), QStringLiteral("libx264"), QStringLiteral("-bf"), QStringLiteral("2"), QStringLiteral("-g"), QStringLiteral("30"), QStringLiteral("-preset"), QStringLiteral("veryfast"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv420p")}; break;
+    case Codec::Dv: codec = {QStringLiteral("-c:v"), QStringLiteral("dvvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv411p")}; break;
+    }
+    const QString rate = c.codec == Codec::Dv ? QStringLiteral("30000/1001") : QString::number(fps, 'f', 6);
+    QProcess p;
+    p.start(QStringLiteral("ffmpeg"), QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"), QStringLiteral("-f"),
+                                                  QStringLiteral("rawvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("gray"), QStringLiteral("-s"),
+                                                  QStringLiteral("%1x%2").arg(c.width).arg(c.height), QStringLiteral("-r"), rate,
+                                                  QStringLiteral("-i"), QStringLiteral("-")}
+                                          << codec << path);
+    if (!p.waitForStarted(10000))
+        return QStringLiteral("ffmpeg did not start");
+    for (const cv::Mat& m : frames) {
+        p.write(reinterpret_cast<const char*>(m.data), qint64(m.total()));
+        while (p.bytesToWrite() > 0)
+            if (!p.waitForBytesWritten(60000))
+                return QStringLiteral("ffmpeg stopped reading: ") + QString::fromUtf8(p.readAllStandardError());
+    }
+    p.closeWriteChannel();
+    if (!p.waitForFinished(300000) || p.exitCode() != 0)
+        return QStringLiteral("ffmpeg: ") + QString::fromUtf8(p.readAllStandardError());
+    return {};
+}
+
+double agreement(const std::vector<QString>& truth, const Labels& labels, const std::vector<double>& time_s)
+{
+    const QStringList suggested = phasePerSample(labels, time_s);
+    int agree = 0, counted = 0;
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        if (truth[i].isEmpty())
+            continue;
+        ++counted;
+        agree += suggested.value(qsizetype(i)) == truth[i];
+    }
+    return counted ? double(agree) / counted : 0.0;
+}
+
+}  // namespace
+
+QString PhaseMatrixCase::describe() const
+{
+    return QStringLiteral("%1 %2 Hz ±%3 mm, band ±%4 mm/s, gap %5 mm, noise %6 N, %7, %8")
+        .arg(tissue)
+        .arg(frequency_hz, 0, 'f', 2)
+        .arg(amplitude_mm, 0, 'f', 1)
+        .arg(stickBand_mm_s, 0, 'f', 1)
+        .arg(plateGap_mm, 0, 'f', 2)
+        .arg(forceNoise_N, 0, 'f', 4)
+        .arg(phaseLookName(look), codecName(codec));
+}
+
+std::vector<PhaseMatrixCase> drawPhaseMatrix(std::mt19937& rng, int count, bool small)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const QStringList tissues{QStringLiteral("liver1"), QStringLiteral("liver2"), QStringLiteral("liver3"),
+                              QStringLiteral("liver5"), QStringLiteral("liver7")};
+    std::vector<PhaseMatrixCase> out;
+    for (int i = 0; i < count; ++i) {
+        PhaseMatrixCase c;
+        c.frequency_hz = 0.1 + 0.9 * u(rng);
+        c.amplitude_mm = 4.0 + 6.0 * u(rng);
+        c.stickBand_mm_s = 1.0 + 5.0 * u(rng);
+        c.plateGap_mm = 0.5 + 2.5 * u(rng);
+        c.forceNoise_N = 0.0005 * std::pow(20.0, u(rng));  // 0.5 to 10 mN, log-uniform
+        c.tissue = tissues[int(rng() % tissues.size())];
+        // At least three half-cycles, at most about 12 s of video.
+        c.cycles = std::clamp(int(std::floor(12.0 * c.frequency_hz)), 2, 4);
+        c.look = Look(rng() % 7);
+        c.codec = Codec(rng() % 3);
+        if (c.codec == Codec::Dv) {
+            c.width = 720;
+            c.height = 480;
+        } else if (small) {
+            c.width = 480;
+            c.height = 360;
+        }
+        c.offset_s = 2.0 * u(rng);
+        c.drift = 0.002 * u(rng);
+        c.seed = unsigned(rng() % 100000 + 1);
+        out.push_back(c);
+    }
+    return out;
+}
+
+PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& executable, const QString& workDir)
+{
+    PhaseMatrixOutcome out;
+    QDir().mkpath(workDir);
+    const QString runPath = QDir(workDir).filePath(QStringLiteral("run.csv"));
+    const QStringList args{QStringLiteral("--protocol"), QStringLiteral("friction"), QStringLiteral("--tissue"), c.tissue,
+                           QStringLiteral("--frequency-hz"), QString::number(c.frequency_hz, 'f', 4),
+                           QStringLiteral("--amplitude-mm"), QString::number(c.amplitude_mm, 'f', 3),
+                           QStringLiteral("--stick-band-mm-s"), QString::number(c.stickBand_mm_s, 'f', 3),
+                           QStringLiteral("--plate-gap-mm"), QString::number(c.plateGap_mm, 'f', 3),
+                           QStringLiteral("--force-noise-n"), QString::number(c.forceNoise_N, 'f', 5),
+                           QStringLiteral("--cycles"), QString::number(c.cycles), QStringLiteral("--seed"), QString::number(c.seed % 1000 + 1)};
+    if (const QString e = runSimulate(args, executable, runPath); !e.isEmpty()) {
+        out.problem = e;
+        return out;
+    }
+    try {
+        const Run run = readRunFile(runPath).run;
+        const auto* truthColumn = run.textColumn(QStringLiteral("phase"));
+        if (!truthColumn || !run.numericColumn(QStringLiteral("tissue_position_mm"))) {
+            out.problem = QStringLiteral("the simulated run has no phase or tissue column");
+            return out;
+        }
+        const std::vector<QString> truth = *truthColumn;
+        // What a lab has: force and position. Neither the true phases nor the tissue's position.
+        Run blind = run;
+        blind.text.erase(std::remove_if(blind.text.begin(), blind.text.end(),
+                                        [](const auto& column) { return column.first == QLatin1String("phase"); }),
+                         blind.text.end());
+        blind.numeric.erase(std::remove_if(blind.numeric.begin(), blind.numeric.end(),
+                                           [](const auto& column) { return column.first == QLatin1String("tissue_position_mm"); }),
+                            blind.numeric.end());
+        out.withoutVideo = agreement(truth, suggestLabels(blind), blind.time_s);
+
+        // The imaging view of the true motion (the renderer reads the tissue column of the
+        // full run), given the case's look, codec and clock.
+        const double fps = c.codec == Codec::Dv ? 30000.0 / 1001.0 : ((c.seed % 2) ? 30000.0 / 1001.0 : 25.0);
+        devices::sim::ImagingOptions io;
+        io.width = c.width;
+        io.height = c.height;
+        io.fps = fps;
+        io.seed = c.seed;
+        const devices::sim::ImagingRenderer renderer(run, io);
+        const double duration = (1 + c.drift) * (run.time_s.back() + 1.0) + c.offset_s;
+        std::vector<cv::Mat> frames;
+        std::mt19937 frameRng(c.seed * 31u + 7u);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        cv::Mat last;
+        for (int k = 0; k < int(duration * fps); ++k) {
+            const double tv = k / fps;
+            cv::Mat m;
+            renderer.render((tv - c.offset_s) / (1 + c.drift), k, m);
+            applyLook(c, k, tv, m);
+            // Dropped and repeated frames at the container's constant rate: the capture shows
+            // the previous picture again.
+            if (c.look == Look::VariableRate && !last.empty() && u(frameRng) < 0.1)
+                m = last.clone();
+            last = m;
+            frames.push_back(m);
+        }
+        const QString ext = c.codec == Codec::H264 ? QStringLiteral(".mp4") : QStringLiteral(".avi");
+        const QString videoPath = QDir(workDir).filePath(QStringLiteral("video") + ext);
+        if (const QString e = encode(c, frames, fps, videoPath); !e.isEmpty()) {
+            out.problem = e;
+            return out;
+        }
+        frames.clear();
+        const video::FrameIndex index = video::buildFrameIndex(videoPath);
+        video::FrameReader reader(index);
+        QString problem;
+        TissueMotion motion = video::tissueMotionFromShifts(video::trackTissueShifts(reader), blind, {c.offset_s, c.drift}, &problem);
+        motion.source = QStringLiteral("video") + ext;
+        out.videoUsed = !motion.time_s.empty();
+        const Labels withVideo = out.videoUsed ? suggestPhaseLabels(blind, &motion) : suggestLabels(blind);
+        out.videoSource = out.videoUsed ? (withVideo.empty() ? QString() : withVideo.front().comment) : problem;
+        out.withVideo = agreement(truth, withVideo, blind.time_s);
+        out.ok = true;
+    } catch (const RunFileError& e) {
+        out.problem = e.message();
+    } catch (const video::VideoError& e) {
+        out.problem = e.message();
+    } catch (const std::exception& e) {
+        out.problem = QString::fromUtf8(e.what());
+    }
+    return out;
+}
+
+}  // namespace nb::accuracy

@@ -1,0 +1,116 @@
+// `needlebench labels suggest RUN.csv --video VIDEO`: the friction phases also from the
+// tissue's motion in the imaging video (real processes, a real rendered and encoded video,
+// real files); bad input named, the command's contract without --video unchanged.
+#include "core/labels.h"
+#include "core/run_file.h"
+#include "support/needlebench_cli.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <algorithm>
+
+class TestLabelsVideo : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString blind_, video_;
+    std::vector<QString> truth_;
+    std::vector<double> time_s_;
+
+    double agreement(const QString& labelsPath) const
+    {
+        const QStringList suggested = nb::phasePerSample(nb::readLabelsFile(labelsPath), time_s_);
+        int agree = 0, counted = 0;
+        for (std::size_t i = 0; i < truth_.size(); ++i) {
+            if (truth_[i].isEmpty())
+                continue;
+            ++counted;
+            agree += suggested.value(qsizetype(i)) == truth_[i];
+        }
+        return counted ? double(agree) / counted : 0.0;
+    }
+
+private slots:
+    // A simulated friction run with its imaging video (the video starts 0.8 s early), and a
+    // copy of the run without the simulator's phase and tissue columns: what a lab has.
+    void initTestCase()
+    {
+        const QString full = dir_.filePath(QStringLiteral("run.csv"));
+        video_ = dir_.filePath(QStringLiteral("scan.avi"));
+        const nbtest::CliResult r = nbtest::runCli({"simulate", "--protocol", "friction", "--tissue", "liver3", "--frequency-hz", "0.6",
+                                                    "--cycles", "3", "--out", full, "--video", video_, "--video-offset-s", "0.8"},
+                                                   240000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        nb::Run run = nb::readRunFile(full).run;
+        truth_ = *run.textColumn(QStringLiteral("phase"));
+        time_s_ = run.time_s;
+        run.text.erase(std::remove_if(run.text.begin(), run.text.end(), [](const auto& c) { return c.first == QLatin1String("phase"); }),
+                       run.text.end());
+        run.numeric.erase(std::remove_if(run.numeric.begin(), run.numeric.end(),
+                                         [](const auto& c) { return c.first == QLatin1String("tissue_position_mm"); }),
+                          run.numeric.end());
+        blind_ = dir_.filePath(QStringLiteral("blind.csv"));
+        nb::writeRunFile(blind_, run);
+    }
+
+    void withTheVideo()
+    {
+        const QString out = dir_.filePath(QStringLiteral("video.labels.csv")), trace = dir_.filePath(QStringLiteral("tissue.csv"));
+        const nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind_, "--video", video_, "--video-offset-s", "0.8", "--out", out,
+                                                    "--tissue-trace", trace, "--json"},
+                                                   240000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject j = r.json();
+        const QJsonObject v = j["video"].toObject();
+        QVERIFY2(v["used"].toBool(), qPrintable(r.out + r.err));
+        QCOMPARE(v["sync"].toString(), QStringLiteral("given"));
+        QCOMPARE(v["offset_s"].toDouble(), 0.8);
+        // Each label says what it came from; here the video's name.
+        const QJsonArray labels = j["labels"].toArray();
+        QVERIFY(labels.size() >= 12);
+        int fromVideo = 0;
+        for (const auto& l : labels)
+            fromVideo += l.toObject()["comment"].toString().contains(QStringLiteral("scan.avi"));
+        QVERIFY(fromVideo >= labels.size() / 2);
+        const double a = agreement(out);
+        QVERIFY2(a >= 0.9, qPrintable(QString::number(a)));
+        // The tissue's velocity as read off the picture.
+        QFile f(trace);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readLine().trimmed(), QByteArray("time_s,tissue_velocity_mm_s"));
+        QVERIFY(f.readAll().count('\n') > 100);
+    }
+
+    // Without a video the command is what it was: the same keys, labels from force and position.
+    void withoutAVideo()
+    {
+        const QString out = dir_.filePath(QStringLiteral("plain.labels.csv"));
+        const nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind_, "--out", out, "--json"});
+        QCOMPARE(r.code, 0);
+        const QJsonObject j = r.json();
+        QCOMPARE(j.keys(), (QStringList{"labels", "out"}));
+        for (const auto& l : j["labels"].toArray())
+            QCOMPARE(l.toObject()["comment"].toString(), QStringLiteral("suggested from force and position"));
+        QVERIFY(agreement(out) >= 0.8);
+    }
+
+    void badInput()
+    {
+        // A video that is not there: named, and the phases still come from the force.
+        const QString missing = dir_.filePath(QStringLiteral("missing.avi"));
+        const nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind_, "--video", missing, "--video-offset-s", "0",
+                                                    "--out", dir_.filePath(QStringLiteral("m.csv")), "--json"});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.err.contains(missing), qPrintable(r.err));
+        QCOMPARE(r.json()["video"].toObject()["used"].toBool(), false);
+        QVERIFY(!r.json()["labels"].toArray().isEmpty());
+        // Offsets that are not numbers are usage errors.
+        QCOMPARE(nbtest::runCli({"labels", "suggest", blind_, "--video", video_, "--video-offset-s", "soon"}).code, 2);
+        QCOMPARE(nbtest::runCli({"labels", "suggest", blind_, "--video-drift", "0.5"}).code, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLabelsVideo)
+#include "test_labels_video.moc"

@@ -1,0 +1,205 @@
+#include "tissue_tracker.h"
+#include "core/tr.h"
+
+#include "video_error.h"
+
+#include <QFileInfo>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nb::video {
+
+namespace {
+
+constexpr int kWorkingSize_px = 480;  // longer side the picture is reduced to (speed; the texture survives)
+constexpr int kBackgroundFrames = 41; // frames whose median is the static background
+
+cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
+{
+    cv::Mat gray;
+    if (bgr.channels() == 3)
+        cv::cvtColor(bgr(roi), gray, cv::COLOR_BGR2GRAY);
+    else
+        gray = bgr(roi);
+    cv::Mat small;
+    if (scale < 1.0)
+        cv::resize(gray, small, cv::Size(), scale, scale, cv::INTER_AREA);
+    else
+        small = gray;
+    cv::Mat f;
+    small.convertTo(f, CV_32F);
+    return f;
+}
+
+double interpolate(const std::vector<double>& t, const std::vector<double>& v, double x)
+{
+    if (t.empty())
+        return 0.0;
+    if (x <= t.front())
+        return v.front();
+    if (x >= t.back())
+        return v.back();
+    const std::size_t i = std::size_t(std::upper_bound(t.begin(), t.end(), x) - t.begin());
+    const double w = (x - t[i - 1]) / std::max(1e-12, t[i] - t[i - 1]);
+    return v[i - 1] + w * (v[i] - v[i - 1]);
+}
+
+double quantileOf(std::vector<double> v, double p)
+{
+    if (v.empty())
+        return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, std::size_t(p * double(v.size() - 1) + 0.5))];
+}
+
+}  // namespace
+
+TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::function<void(int, int)>& progress,
+                               const std::atomic_bool* cancel)
+{
+    const FrameIndex& index = reader.index();
+    TissueShifts out;
+    const int n = index.size();
+    if (n < 2)
+        return out;
+    const cv::Rect full(0, 0, index.width, index.height);
+    cv::Rect r = roi.isEmpty() ? full : (cv::Rect(roi.x(), roi.y(), roi.width(), roi.height()) & full);
+    if (r.width < 16 || r.height < 16)
+        throw VideoError(index.path, nb::TrDevices::tr("the region for the tissue's motion is too small or outside the picture"));
+    const double scale = std::min(1.0, double(kWorkingSize_px) / std::max(r.width, r.height));
+    // What does not move (plates, the surround, burnt-in text) would pull the match to zero
+    // shift: its per-pixel mean over frames spread through the video is taken away first. (The
+    // mean, not the median: the tissue rests at two places, and a median keeps one of them
+    // sharp, which would pull to zero in its turn; the mean smears it along the motion.)
+    cv::Mat background;
+    {
+        const int count = std::min(n, kBackgroundFrames);
+        for (int j = 0; j < count; ++j) {
+            const cv::Mat f = workingImage(reader.read(int((long long)j * (n - 1) / std::max(1, count - 1))).image, r, scale);
+            if (background.empty())
+                background = cv::Mat::zeros(f.size(), CV_32F);
+            background += f / double(count);
+        }
+    }
+    cv::Mat previous, window;
+    double previousTime = 0.0, clip = 0.0;
+    for (int i = 0; i < n; ++i) {
+        if (cancel && cancel->load())
+            break;
+        if (progress && i % 25 == 0)
+            progress(i, n);
+        if (i > 0 && index.frames[std::size_t(i)].duplicate)
+            continue;  // the same picture again: no motion to measure, and a false zero
+        cv::Mat image = workingImage(reader.read(i).image, r, scale) - background;
+        // A few strong edges moving their own way (the needle's tip, bright against the
+        // tissue) would outvote the tissue's faint texture: values are clipped to the
+        // picture's typical contrast, so that every part counts by its area.
+        if (clip <= 0.0) {
+            const cv::Mat a = cv::abs(image);
+            std::vector<float> v(a.begin<float>(), a.end<float>());
+            std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+            clip = std::max(1.0, 2.5 * 1.4826 * double(v[v.size() / 2]));
+        }
+        cv::min(image, clip, image);
+        cv::max(image, -clip, image);
+        // The picture's own noise changes every frame; the tissue's texture does not.
+        cv::GaussianBlur(image, image, cv::Size(0, 0), 1.0);
+        const double t = index.frames[std::size_t(i)].time_s;
+        if (window.empty())
+            cv::createHanningWindow(window, image.size(), CV_32F);
+        if (!previous.empty() && t > previousTime) {
+            double response = 0.0;
+            const cv::Point2d shift = cv::phaseCorrelate(previous, image, window, &response);
+            out.time_s.push_back(0.5 * (t + previousTime));
+            out.dt_s.push_back(t - previousTime);
+            out.dx_px.push_back(shift.x / scale);
+            out.dy_px.push_back(shift.y / scale);
+            out.response.push_back(response);
+        }
+        previous = image;
+        previousTime = t;
+    }
+    if (progress)
+        progress(n, n);
+    return out;
+}
+
+TissueMotion tissueMotionFromShifts(const TissueShifts& s, const Run& run, const TimelineMapping& mapping, QString* problem)
+{
+    TissueMotion m;
+    auto fail = [&](const QString& why) {
+        if (problem)
+            *problem = why;
+        return TissueMotion{};
+    };
+    if (s.time_s.size() < 8 || run.size() < 2)
+        return fail(nb::TrDevices::tr("too few frames or samples to follow the tissue"));
+    const std::size_t k = s.time_s.size();
+    // The needle's displacement over each pair of frames, on the recording's clock.
+    std::vector<double> dp(k), ta(k), tb(k);
+    for (std::size_t i = 0; i < k; ++i) {
+        ta[i] = mapping.toRecording(s.time_s[i] - 0.5 * s.dt_s[i]);
+        tb[i] = mapping.toRecording(s.time_s[i] + 0.5 * s.dt_s[i]);
+        const bool inside = ta[i] >= run.time_s.front() && tb[i] <= run.time_s.back();
+        dp[i] = inside ? interpolate(run.time_s, run.position_mm, tb[i]) - interpolate(run.time_s, run.position_mm, ta[i])
+                       : std::numeric_limits<double>::quiet_NaN();
+    }
+    // The direction the picture moves in: the principal axis of the shifts.
+    double sxx = 0, sxy = 0, syy = 0;
+    for (std::size_t i = 0; i < k; ++i) {
+        sxx += s.dx_px[i] * s.dx_px[i];
+        sxy += s.dx_px[i] * s.dy_px[i];
+        syy += s.dy_px[i] * s.dy_px[i];
+    }
+    const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+    const double ux = std::cos(angle), uy = std::sin(angle);
+    std::vector<double> along(k);
+    for (std::size_t i = 0; i < k; ++i)
+        along[i] = s.dx_px[i] * ux + s.dy_px[i] * uy;
+    // Scale and sign against the needle, where the needle moves clearly.
+    double fastest = 0.0;
+    for (double d : dp)
+        if (std::isfinite(d))
+            fastest = std::max(fastest, std::abs(d));
+    if (fastest <= 0.0)
+        return fail(nb::TrDevices::tr("the needle does not move while the video runs"));
+    double agreement = 0.0;
+    for (std::size_t i = 0; i < k; ++i)
+        if (std::isfinite(dp[i]))
+            agreement += along[i] * dp[i];
+    const double sign = agreement < 0 ? -1.0 : 1.0;
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < k; ++i)
+        if (std::isfinite(dp[i]) && std::abs(dp[i]) > 0.15 * fastest)
+            ratios.push_back(sign * along[i] / dp[i]);
+    const double high = quantileOf(ratios, 0.9);
+    if (!(high > 0.0))
+        return fail(nb::TrDevices::tr("nothing in the picture moves with the needle"));
+    std::vector<double> carried;
+    for (double r : ratios)
+        if (std::abs(r - high) < 0.25 * high)
+            carried.push_back(r);
+    const double pxPerMm = quantileOf(carried, 0.5);
+    // A picture whose motion is mostly noise: the tissue never visibly follows the needle.
+    const double noise = quantileOf([&] {
+        std::vector<double> a;
+        for (double v : along)
+            a.push_back(std::abs(v));
+        return a;
+    }(), 0.1);
+    if (!(pxPerMm > 0.0) || pxPerMm * 0.15 * fastest < 2.0 * noise)
+        return fail(nb::TrDevices::tr("the tissue's motion does not stand out of the picture's noise"));
+    m.px_per_mm = pxPerMm;
+    m.time_s.resize(k);
+    m.velocity_mm_s.resize(k);
+    for (std::size_t i = 0; i < k; ++i) {
+        m.time_s[i] = 0.5 * (ta[i] + tb[i]);
+        m.velocity_mm_s[i] = sign * along[i] / pxPerMm / std::max(1e-9, tb[i] - ta[i]);
+    }
+    return m;
+}
+
+}  // namespace nb::video
