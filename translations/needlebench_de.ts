@@ -2799,7 +2799,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+2" />
-        <location filename="../app/cmd_simulate.cpp" line="+34" />
+        <location filename="../app/cmd_simulate.cpp" line="+38" />
         <source>--out RUN.csv is required</source>
         <translation>--out LAUF.csv ist erforderlich</translation>
     </message>
@@ -2810,7 +2810,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+57" />
-        <location filename="../app/cmd_simulate.cpp" line="+87" />
+        <location filename="../app/cmd_simulate.cpp" line="+105" />
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got '%1')</source>
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
@@ -3457,7 +3457,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+17" />
+        <location filename="../app/cmd_labels.cpp" line="+33" />
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation>Labels eines Laufs. Aktionen: suggest (Phasen oder Ereignisse aus den Daten).</translation>
     </message>
@@ -3483,7 +3483,27 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Labels als JSON ausgeben</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+2" />
+        <source>the run's imaging video: friction phases also from the tissue's motion in it (default: the video linked to the run, if any)</source>
+        <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Bewegung des Gewebes darin (Standard: das mit der Messung verknüpfte Video, falls vorhanden)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>video time at the recording's start (default: the run's stored sync, else found automatically)</source>
+        <translation>Videozeit beim Start der Aufnahme (Standard: die gespeicherte Synchronisation der Messung, sonst automatisch ermittelt)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the video clock's rate error, e.g. 0.001 (default 0)</source>
+        <translation>Gangfehler der Videouhr, z. B. 0,001 (Standard 0)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>write the tissue's velocity read off the video as CSV (time_s,tissue_velocity_mm_s)</source>
+        <translation>die aus dem Video gelesene Geschwindigkeit des Gewebes als CSV schreiben (time_s,tissue_velocity_mm_s)</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>needlebench labels: unknown action '%1' (suggest)
 
 </source>
@@ -3492,14 +3512,28 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+17" />
+        <source>needlebench labels: --video-offset-s wants seconds and --video-drift a rate error below 0.1
+</source>
+        <translation>needlebench labels: --video-offset-s erwartet Sekunden und --video-drift einen Gangfehler unter 0,1
+</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>needlebench labels: %1: the tissue's motion could not be read (%2); phases from force and position only
+</source>
+        <translation>needlebench labels: %1: Die Bewegung des Gewebes ließ sich nicht lesen (%2); Phasen nur aus Kraft und Position
+</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1 labels suggested, written to %2
 </source>
         <translation>%1 Labels vorgeschlagen, nach %2 geschrieben
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-238" />
+        <location filename="../app/cmd_simulate.cpp" line="-260" />
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -3550,11 +3584,26 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3" />
+        <source>friction platform: the tissue sticks while the relative velocity is within ±V (default 2.5)</source>
+        <translation>Reibungsplattform: das Gewebe haftet, solange die Relativgeschwindigkeit innerhalb ±V liegt (Standard 2,5)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>friction platform: free travel of the slab before it meets a plate (default 1.5)</source>
+        <translation>Reibungsplattform: freier Weg der Gewebeplatte, bevor sie an eine Platte stößt (Standard 1,5)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>rms noise of the force sensor in newtons (default about 0.0012)</source>
+        <translation>Effektivwert des Rauschens des Kraftsensors in Newton (Standard etwa 0,0012)</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>the video starts this long before the recording (default 0)</source>
         <translation>das Video beginnt so lange vor der Aufzeichnung (Standard 0)</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>--%1: '%2' is not a number</source>
         <translation>--%1: '%2' ist keine Zahl</translation>
     </message>
@@ -3631,7 +3680,22 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--cycles muss eine positive ganze Zahl sein</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+9" />
+        <source>--stick-band-mm-s must be in (0, 50]</source>
+        <translation>--stick-band-mm-s muss in (0, 50] liegen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>--plate-gap-mm must be in [0, 20]</source>
+        <translation>--plate-gap-mm muss in [0, 20] liegen</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>--force-noise-n must be in [0, 1]</source>
+        <translation>--force-noise-n muss in [0, 1] liegen</translation>
+    </message>
+    <message>
+        <location line="+20" />
         <source>--slow-after-puncture must be in (0, %1] mm/s</source>
         <translation>--slow-after-puncture muss in (0, %1] mm/s liegen</translation>
     </message>
@@ -3998,12 +4062,13 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+11" />
+        <location filename="../app/cmd_labels.cpp" line="-28" />
+        <location filename="../app/cmd_sync.cpp" line="+11" />
         <source>%1: cannot write the trace here</source>
         <translation>%1: die Spur kann hier nicht geschrieben werden</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location filename="../app/cmd_sync.cpp" line="+32" />
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -6369,6 +6434,31 @@ Befehle:
         <location line="+94" />
         <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
         <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
+    </message>
+    <message>
+        <location filename="../video/tissue_tracker.cpp" line="+71" />
+        <source>the region for the tissue's motion is too small or outside the picture</source>
+        <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
+    </message>
+    <message>
+        <location line="+68" />
+        <source>too few frames or samples to follow the tissue</source>
+        <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>the needle does not move while the video runs</source>
+        <translation>die Nadel bewegt sich nicht, während das Video läuft</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>nothing in the picture moves with the needle</source>
+        <translation>nichts im Bild bewegt sich mit der Nadel</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the tissue's motion does not stand out of the picture's noise</source>
+        <translation>die Bewegung des Gewebes hebt sich nicht vom Bildrauschen ab</translation>
     </message>
 </context>
 <context>

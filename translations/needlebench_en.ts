@@ -2797,7 +2797,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+34"/>
+        <location filename="../app/cmd_simulate.cpp" line="+38"/>
         <source>--out RUN.csv is required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2808,7 +2808,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+87"/>
+        <location filename="../app/cmd_simulate.cpp" line="+105"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3426,7 +3426,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+17"/>
+        <location filename="../app/cmd_labels.cpp" line="+33"/>
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3452,20 +3452,52 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+2"/>
+        <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it (default: the video linked to the run, if any)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>video time at the recording&apos;s start (default: the run&apos;s stored sync, else found automatically)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the video clock&apos;s rate error, e.g. 0.001 (default 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>write the tissue&apos;s velocity read off the video as CSV (time_s,tissue_velocity_mm_s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
 
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+17"/>
+        <source>needlebench labels: --video-offset-s wants seconds and --video-drift a rate error below 0.1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>needlebench labels: %1: the tissue&apos;s motion could not be read (%2); phases from force and position only
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-238"/>
+        <location filename="../app/cmd_simulate.cpp" line="-260"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3516,11 +3548,26 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
+        <source>friction platform: the tissue sticks while the relative velocity is within ±V (default 2.5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>friction platform: free travel of the slab before it meets a plate (default 1.5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rms noise of the force sensor in newtons (default about 0.0012)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the video starts this long before the recording (default 0)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3597,7 +3644,22 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+9"/>
+        <source>--stick-band-mm-s must be in (0, 50]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--plate-gap-mm must be in [0, 20]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--force-noise-n must be in [0, 1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>--slow-after-puncture must be in (0, %1] mm/s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3950,12 +4012,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location filename="../app/cmd_labels.cpp" line="-28"/>
+        <location filename="../app/cmd_sync.cpp" line="+11"/>
         <source>%1: cannot write the trace here</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location filename="../app/cmd_sync.cpp" line="+32"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -6291,6 +6354,31 @@ Commands:
     <message>
         <location line="+94"/>
         <source>the disk holding %1 will be full in about %2 s (%3 kB free)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../video/tissue_tracker.cpp" line="+71"/>
+        <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>too few frames or samples to follow the tissue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>the needle does not move while the video runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>nothing in the picture moves with the needle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the tissue&apos;s motion does not stand out of the picture&apos;s noise</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
