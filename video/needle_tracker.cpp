@@ -447,8 +447,9 @@ struct AxisTracker {
     // noise beats the noise nearby more easily than the noise of the whole line), everywhere
     // when it has been lost for a while. A fast needle moves further between two frames than
     // the search reaches around its last place, so the search follows its last velocity.
-    // NaN when no edge stands clearly out of the noise.
-    double locate(const cv::Mat& gray, double time_s)
+    // NaN when no edge stands clearly out of the noise. `repeated`: the index calls the
+    // picture a repeat of the one before, which says nothing about the velocity.
+    double locate(const cv::Mat& gray, double time_s, bool repeated)
     {
         const std::vector<double> g = gradient(strip.profile(gray));
         const int n = int(g.size());
@@ -481,10 +482,9 @@ struct AxisTracker {
         const double a = v(best - 1), b = v(best), c = v(best + 1), den = a - 2 * b + c;
         const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
         const double found = best + frac;
-        if (std::isfinite(lastTime_s) && !(time_s > lastTime_s) && lost == 0)
-            return found;  // a repeated picture: nothing new about the motion
         // The velocity only from two sightings close in time (not across a loss).
-        velocity = std::isfinite(last) && lost == 0 ? (found - last) / (time_s - lastTime_s) : 0.0;
+        if (!repeated)
+            velocity = std::isfinite(last) && lost == 0 && time_s > lastTime_s ? (found - last) / (time_s - lastTime_s) : 0.0;
         last = found;
         lastTime_s = time_s;
         lost = 0;
@@ -539,18 +539,16 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
         out[a].axis = axes[a];
     }
     const int n = index.size();
-    double taken_s = 0.0;
     for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
-        // A repeated picture (the capture had no new one) was taken when the picture it
-        // repeats was: it shows the tip there, a frame or more late for its own timestamp.
-        // A still needle in a clean picture may look repeated too; it is where it was.
+        // Frames the index calls duplicates are tracked too, at their own time: a slow
+        // needle in a clean, smoothly coded picture changes too little between frames to
+        // tell from a repeat (whole runs of frames get flagged), and a real repeat only shows
+        // its tip one frame late, which the fit over all frames absorbs.
         const FrameInfo& info = index.frames[std::size_t(i)];
-        if (!info.duplicate || i == 0)
-            taken_s = info.time_s;
         const cv::Mat gray = toGray(reader.read(i).image);
         for (std::size_t a = 0; a < axes.size(); ++a) {
-            out[a].time_s.push_back(taken_s);
-            const double p = trackers[a].locate(gray, taken_s);
+            out[a].time_s.push_back(info.time_s);
+            const double p = trackers[a].locate(gray, info.time_s, info.duplicate);
             out[a].displacement_px.push_back(std::isfinite(p) ? p + trackers[a].strip.origin : kNaN);
         }
         if (progress && i % 50 == 0)

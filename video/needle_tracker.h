@@ -25,8 +25,7 @@ namespace nb::video {
 using NeedleAxis = QLineF;
 
 struct NeedleTrack {
-    std::vector<double> time_s;           // video time each frame's picture was taken (a repeated
-                                          // picture: that of the picture it repeats)
+    std::vector<double> time_s;           // video time of each frame
     std::vector<double> displacement_px;  // tip position along the axis; NaN when masked
     NeedleAxis axis;
     bool axisDetected = false;            // false: the caller gave the axis
