@@ -36,10 +36,13 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
         double bestRank = -1.0;
         std::string problem;
         for (std::size_t a = 0; a < tracks.size(); ++a) {
+            const double looks = scores.empty() ? 1.0 : std::sqrt(scores[a] / scores.front());
+            // Even a perfect fit (confidence 1, |r| 1) could not outrank the best so far.
+            if (best && looks + 1e-3 <= bestRank)
+                continue;
             try {
                 const SyncResult r = synchroniseDisplacement({tracks[a].time_s, tracks[a].displacement_px}, needlePosition(run),
                                                              index.frameDuration(), options.sync);
-                const double looks = scores.empty() ? 1.0 : std::sqrt(scores[a] / scores.front());
                 const double rank = r.confidence * looks + 1e-3 * std::abs(r.correlation);
                 if (!best || rank > bestRank) {
                     best = a;
