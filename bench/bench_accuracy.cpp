@@ -1,6 +1,6 @@
 // Accuracy of video sync (and, as they land, phases and friction fits) over a matrix drawn
 // at random from a printed seed: `bench_accuracy [--seed N] [--sync-cases N] [--small]
-// [--keep DIR]`. Prints one line per case and the summary against issue 13's targets.
+// [--case N] [--keep DIR]` (--case: only sync case N of the draw, to look at one again). Prints one line per case and the summary against issue 13's targets.
 #include "video/accuracy_matrix.h"
 #include "video/phase_matrix.h"
 
@@ -62,6 +62,7 @@ int main(int argc, char** argv)
     unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
     int syncCases = 20, frictionCases = 24, phaseCases = 24;
     bool small = false;
+    int onlyCase = -1;
     QString keep;
     for (int i = 1; i < a.size(); ++i) {
         if (a[i] == QLatin1String("--seed") && i + 1 < a.size())
@@ -72,12 +73,14 @@ int main(int argc, char** argv)
             frictionCases = a[++i].toInt();
         else if (a[i] == QLatin1String("--phase-cases") && i + 1 < a.size())
             phaseCases = a[++i].toInt();
+        else if (a[i] == QLatin1String("--case") && i + 1 < a.size())
+            onlyCase = a[++i].toInt();
         else if (a[i] == QLatin1String("--small"))
             small = true;
         else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
             keep = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--phase-cases N] [--small] [--keep DIR]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--phase-cases N] [--small] [--case N] [--keep DIR]\n");
             return 2;
         }
     }
@@ -92,6 +95,8 @@ int main(int argc, char** argv)
     int within1 = 0, within2 = 0, failed = 0, honestMisses = 0, misses = 0;
     const std::vector<SyncCase> cases = drawSyncCases(rng, syncCases, small);
     for (std::size_t i = 0; i < cases.size(); ++i) {
+        if (onlyCase >= 0 && int(i) != onlyCase)
+            continue;  // the draw stays the same: one case of it again
         const SyncOutcome o = runSyncCase(cases[i], QStringLiteral(NB_EXECUTABLE), QDir(root).filePath(QStringLiteral("sync%1").arg(i)));
         if (!o.ok) {
             ++failed;

@@ -2,14 +2,19 @@
 // the same run, and one-frame-back steps from the cache.
 //   bench_video [FILE]   (without FILE: makes a 640x480 H.264 file, keyframes 90 apart,
 //                         B-frames, with the ffmpeg tool)
+//   bench_video --hour   indexes a real one-hour 640x480 H.264 video at 30 frames/s (made
+//                         once with the ffmpeg tool in the temporary folder and kept there)
 #include "video/frame_index.h"
 #include "video/frame_index_store.h"
 #include "video/frame_reader.h"
 #include "video/packet_index.h"
+#include "video/video_error.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <opencv2/videoio.hpp>
@@ -26,9 +31,66 @@ static double percentile(std::vector<double> v, double p)
     return v[std::min(v.size() - 1, std::size_t(p * double(v.size() - 1) + 0.5))];
 }
 
+// Issue 13's figure: how long the operator waits before a one-hour video is frame-exact.
+// The index is built the way the application builds it (loadOrBuildFrameIndex, nothing
+// stored yet), then frames spread over the hour are decoded on demand and checked against it.
+static int hourBench()
+{
+    const QString file = QDir::temp().filePath(QStringLiteral("needlebench-bench-hour-640x480-30fps.mp4"));
+    if (!QFileInfo::exists(file)) {
+        std::printf("making %s (one hour, 640x480, 30 frames/s, H.264 with B-frames; once, a few minutes)\n", qPrintable(file));
+        std::fflush(stdout);
+        const QString part = file + QStringLiteral(".part.mp4");
+        QProcess ffmpeg;
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-f", "lavfi", "-i", "testsrc2=size=640x480:rate=30", "-t", "3600",
+                                                "-c:v", "libx264", "-preset", "ultrafast", "-bf", "2", "-g", "90", "-b:v", "400k",
+                                                "-pix_fmt", "yuv420p", part});
+        if (!ffmpeg.waitForFinished(-1) || ffmpeg.exitCode() != 0 || !QFile::rename(part, file)) {
+            std::fprintf(stderr, "cannot make the one-hour file with ffmpeg: %s\n", ffmpeg.readAllStandardError().constData());
+            QFile::remove(part);
+            return 1;
+        }
+    }
+    QTemporaryDir store;
+    QElapsedTimer clock;
+    clock.start();
+    bool fromStore = true;
+    const nb::video::FrameIndex index = nb::video::loadOrBuildFrameIndex(file, {}, nullptr, &fromStore, store.path());
+    const double indexS = clock.nsecsElapsed() / 1e9;
+    std::printf("one hour: %s, %.1f MB, %d frames, %.1f s of video, %dx%d, %s\n", qPrintable(file),
+                QFileInfo(file).size() / 1e6, index.size(), index.duration_s(), index.width, index.height,
+                fromStore ? "from the store (not a build!)" : "built");
+    std::printf("one-hour index: %.2f s (target 10 s)\n", indexS);
+    clock.restart();
+    const auto stored = nb::video::loadStoredFrameIndex(file, store.path());
+    std::printf("stored one-hour index load: %.0f ms\n", clock.nsecsElapsed() / 1e6);
+    // Decoding on demand: frames spread over the hour land where the index says.
+    nb::video::FrameReader reader(index, 4);
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> pick(0, index.size() - 1);
+    int checked = 0;
+    std::vector<double> seekMs;
+    try {
+        for (int k = 0; k < 30; ++k) {
+            const int n = k == 0 ? index.size() - 1 : pick(rng);
+            clock.restart();
+            const nb::video::DecodedFrame f = reader.read(n);
+            seekMs.push_back(clock.nsecsElapsed() / 1e6);
+            checked += f.index == n && std::abs(f.time_s - index.frames[std::size_t(n)].time_s) < 1e-3;
+        }
+    } catch (const nb::video::VideoError& e) {
+        std::printf("decoding on demand failed: %s\n", qPrintable(e.message()));
+    }
+    std::printf("decoded on demand: %d of 30 frames (last one included) where the index puts them; seek p50 %.0f ms, p95 %.0f ms\n",
+                checked, seekMs.empty() ? 0.0 : percentile(seekMs, 0.5), seekMs.empty() ? 0.0 : percentile(seekMs, 0.95));
+    return stored && checked == 30 ? 0 : 1;
+}
+
 int main(int argc, char** argv)
 {
     QCoreApplication app(argc, argv);
+    if (argc > 1 && QByteArray(argv[1]) == "--hour")
+        return hourBench();
     QTemporaryDir dir;
     QString file = argc > 1 ? QString::fromLocal8Bit(argv[1]) : dir.filePath(QStringLiteral("bench.mp4"));
     if (argc <= 1) {

@@ -73,6 +73,7 @@ struct SyncResult {
     // From the displacement sync (synchroniseDisplacement); zero otherwise.
     double drift = 0.0;            // video clock rate error (TimelineMapping::drift)
     double scale_px_per_mm = 0.0;  // tracked displacement per recorded millimetre (signed)
+    double intercept_px = 0.0;     // tracked displacement where the recorded position is 0 mm
     double uncertainty_s = 0.0;    // how far the offset could be off (split halves, fit noise)
     QString method;                // what was compared, for the run's metadata
 
@@ -101,6 +102,12 @@ SyncResult synchronise(const TimeSignal& videoMotion, const TimeSignal& speed, c
 // "precise". Throws std::invalid_argument when a signal is too short or does not move.
 SyncResult synchroniseDisplacement(const TimeSignal& videoDisplacement, const TimeSignal& position,
                                    double frameDuration_s, const SyncOptions& options = {});
+
+// The tracked displacement (video time, pixels) as the position it stands for: in recording
+// time through `mapping` and in millimetres through the fit's scale and intercept, to lay
+// over the recorded position. Masked (NaN) samples stay masked; empty when `fit` has no
+// scale (it did not come from the displacement sync).
+TimeSignal trackedPosition(const TimeSignal& videoDisplacement, const SyncResult& fit, const TimelineMapping& mapping);
 
 // The run's needle position (position_mm over time_s).
 TimeSignal needlePosition(const Run& run);

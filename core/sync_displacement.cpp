@@ -142,6 +142,21 @@ double medianOf(std::vector<double> v)
 
 TimeSignal needlePosition(const Run& run) { return {run.time_s, run.position_mm}; }
 
+TimeSignal trackedPosition(const TimeSignal& video, const SyncResult& fit, const TimelineMapping& mapping)
+{
+    TimeSignal out;
+    if (fit.scale_px_per_mm == 0.0 || !std::isfinite(fit.scale_px_per_mm))
+        return out;
+    const std::size_t n = std::min(video.time_s.size(), video.value.size());
+    out.time_s.reserve(n);
+    out.value.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        out.time_s.push_back(mapping.toRecording(video.time_s[i]));
+        out.value.push_back((video.value[i] - fit.intercept_px) / fit.scale_px_per_mm);
+    }
+    return out;
+}
+
 SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& position, double frame_s,
                                    const SyncOptions& o)
 {
@@ -264,6 +279,7 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     r.drift = chosen.drift;
     r.correlation = fit.slope >= 0 ? std::sqrt(fit.r2) : -std::sqrt(fit.r2);
     r.scale_px_per_mm = fit.slope;
+    r.intercept_px = fit.intercept;
     r.pairs = fit.n;
 
     // How precise: the fit's noise against the signal's slope, and the two halves of the

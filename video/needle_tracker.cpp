@@ -419,6 +419,8 @@ struct AxisTracker {
     double sigma = 1.0;
     int polarity = 1;
     double last = kNaN;  // last tip position (profile samples)
+    double lastTime_s = kNaN;
+    double velocity = 0.0;  // profile samples per second, from the last two positions found
     int lost = 0;        // frames since it was last seen
     std::vector<double> strengths;
 
@@ -441,19 +443,24 @@ struct AxisTracker {
         still = polarity > 0 ? up : down;
     }
 
-    // The tip in this frame: searched near where it was (a faint tip in heavy noise beats
-    // the noise nearby more easily than the noise of the whole line), everywhere when it
-    // has been lost for a while. NaN when no edge stands clearly out of the noise.
-    double locate(const cv::Mat& gray)
+    // The tip in this frame: searched near where it should be by now (a faint tip in heavy
+    // noise beats the noise nearby more easily than the noise of the whole line), everywhere
+    // when it has been lost for a while. A fast needle moves further between two frames than
+    // the search reaches around its last place, so the search follows its last velocity.
+    // NaN when no edge stands clearly out of the noise. `repeated`: the index calls the
+    // picture a repeat of the one before, which says nothing about the velocity.
+    double locate(const cv::Mat& gray, double time_s, bool repeated)
     {
         const std::vector<double> g = gradient(strip.profile(gray));
         const int n = int(g.size());
         int lo = 2, hi = n - 3;
         const bool near = std::isfinite(last) && lost < 8;
         if (near) {
-            const int w = 24 + 8 * lost;
-            lo = std::max(2, int(last) - w);
-            hi = std::min(n - 3, int(last) + w);
+            const double ahead = std::isfinite(lastTime_s) ? velocity * (time_s - lastTime_s) : 0.0;
+            const double expected = last + ahead;
+            const double w = 24 + 8 * lost + 0.5 * std::abs(ahead);
+            lo = std::clamp(int(expected - w), 2, n - 3);
+            hi = std::clamp(int(expected + w), 2, n - 3);
         }
         int best = -1;
         double bestV = -1e300;
@@ -466,30 +473,51 @@ struct AxisTracker {
         }
         if (best < 0 || !(bestV > (near ? 3.5 : 5.0) * sigma)) {
             ++lost;
+            if (lost >= 8)
+                velocity = 0.0;
             return kNaN;
         }
         strengths.push_back(bestV / sigma);
         auto v = [&](int i) { return polarity * g[std::size_t(i)] - still[std::size_t(i)]; };
         const double a = v(best - 1), b = v(best), c = v(best + 1), den = a - 2 * b + c;
         const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
-        last = best + frac;
+        const double found = best + frac;
+        // The velocity only from two sightings close in time (not across a loss).
+        if (!repeated)
+            velocity = std::isfinite(last) && lost == 0 && time_s > lastTime_s ? (found - last) / (time_s - lastTime_s) : 0.0;
+        last = found;
+        lastTime_s = time_s;
         lost = 0;
         return last;
     }
 };
 
 // Isolated jumps (a noise peak elsewhere on the strip) against their neighbours: masked.
-void maskJumps(std::vector<double>& d)
+// What the neighbours say a point should be is the median of three guesses in time (the
+// line through the nearest point on each side, and each side's two nearest extended), so
+// that a needle moving many pixels a frame is no jump and one bad neighbour does not decide.
+void maskJumps(const std::vector<double>& t, std::vector<double>& d)
 {
+    std::vector<std::size_t> finite;
+    for (std::size_t i = 0; i < d.size(); ++i)
+        if (std::isfinite(d[i]))
+            finite.push_back(i);
     std::vector<double> cleaned = d;
-    for (std::size_t i = 0; i < d.size(); ++i) {
-        if (!std::isfinite(d[i]))
+    auto line = [&](std::size_t a, std::size_t b, double at) {
+        const double dt = t[b] - t[a];
+        return std::abs(dt) > 1e-9 ? d[a] + (d[b] - d[a]) * (at - t[a]) / dt : 0.5 * (d[a] + d[b]);
+    };
+    for (std::size_t k = 2; k + 2 < finite.size(); ++k) {
+        const std::size_t i = finite[k];
+        const std::size_t p1 = finite[k - 1], p2 = finite[k - 2], n1 = finite[k + 1], n2 = finite[k + 2];
+        // Neighbours far away in time say little about this frame.
+        if (t[n1] - t[p1] > 0.5)
             continue;
-        std::vector<double> w;
-        for (std::size_t j = i >= 3 ? i - 3 : 0; j <= std::min(d.size() - 1, i + 3); ++j)
-            if (j != i && std::isfinite(d[j]))
-                w.push_back(d[j]);
-        if (w.size() >= 3 && std::abs(d[i] - median(w)) > 10.0)
+        const double guess = median({line(p1, n1, t[i]), line(p2, p1, t[i]), line(n1, n2, t[i])});
+        const double step = std::max(std::abs(d[n1] - d[i]), std::abs(d[i] - d[p1]));
+        const double sideSteps = std::min(std::abs(d[p1] - d[p2]), std::abs(d[n2] - d[n1]));
+        // A jump leaves both neighbours far behind while they move little themselves.
+        if (std::abs(d[i] - guess) > 10.0 + sideSteps && step > 10.0 + sideSteps)
             cleaned[i] = kNaN;
     }
     d = cleaned;
@@ -512,21 +540,22 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
     }
     const int n = index.size();
     for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
-        // Frames the index calls duplicates are tracked too: a slow needle in a clean
-        // picture changes too little between frames to tell from a repeat, and a real
-        // repeat only shows its tip one frame late, which the fit over all frames absorbs.
+        // Frames the index calls duplicates are tracked too, at their own time: a slow
+        // needle in a clean, smoothly coded picture changes too little between frames to
+        // tell from a repeat (whole runs of frames get flagged), and a real repeat only shows
+        // its tip one frame late, which the fit over all frames absorbs.
         const FrameInfo& info = index.frames[std::size_t(i)];
         const cv::Mat gray = toGray(reader.read(i).image);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);
-            const double p = trackers[a].locate(gray);
+            const double p = trackers[a].locate(gray, info.time_s, info.duplicate);
             out[a].displacement_px.push_back(std::isfinite(p) ? p + trackers[a].strip.origin : kNaN);
         }
         if (progress && i % 50 == 0)
             progress(i, n);
     }
     for (std::size_t a = 0; a < axes.size(); ++a) {
-        maskJumps(out[a].displacement_px);
+        maskJumps(out[a].time_s, out[a].displacement_px);
         const auto& d = out[a].displacement_px;
         out[a].masked = int(std::count_if(d.begin(), d.end(), [](double v) { return !std::isfinite(v); }));
         out[a].edgeSnr = median(trackers[a].strengths);

@@ -18,7 +18,12 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     FrameReader reader(index, 8);
     const bool detected = !options.axis;
     std::vector<double> scores;
-    const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(reader, options.roi, 6, 40, &scores)
+    // Every line that looks at all like a needle is tracked, not the few that look most like
+    // one: a surface that moves across the picture (the tissue pushed by the needle) makes a
+    // fan of lines crossing it at a shallow angle, along which its edge races, and those look
+    // more like a moving tip than the needle itself (seed 461476: the needle's line ranked
+    // seventh behind six of them). Which one is the needle, the fit to the recording decides.
+    const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(reader, options.roi, 16, 40, &scores)
                                                   : std::vector<NeedleAxis>{*options.axis};
     if (!axes.empty()) {
         // Several lines may look like a needle (a plate's edge, a line of text): the one
@@ -31,10 +36,13 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
         double bestRank = -1.0;
         std::string problem;
         for (std::size_t a = 0; a < tracks.size(); ++a) {
+            const double looks = scores.empty() ? 1.0 : std::sqrt(scores[a] / scores.front());
+            // Even a perfect fit (confidence 1, |r| 1) could not outrank the best so far.
+            if (best && looks + 1e-3 <= bestRank)
+                continue;
             try {
                 const SyncResult r = synchroniseDisplacement({tracks[a].time_s, tracks[a].displacement_px}, needlePosition(run),
                                                              index.frameDuration(), options.sync);
-                const double looks = scores.empty() ? 1.0 : std::sqrt(scores[a] / scores.front());
                 const double rank = r.confidence * looks + 1e-3 * std::abs(r.correlation);
                 if (!best || rank > bestRank) {
                     best = a;

@@ -57,6 +57,7 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         requested_ = -1;
         requestFrameForCursor();
         emit videoOpened();
+        trackInBackground();
     });
     connect(decoder_, &video::VideoDecoder::failed, this, [this](const QString& message) {
         video_->setMessage(message);
@@ -72,19 +73,43 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         saveLabels();
         updateLabelCount();
     });
-    connect(&syncWatcher_, &QFutureWatcher<SyncResult>::finished, this, [this] {
+    connect(&syncWatcher_, &QFutureWatcher<video::VideoSync>::finished, this, [this] {
+        if (watchedGeneration_ != jobGeneration_)
+            return;  // the run or the video changed while it ran
+        const bool forOperator = wantPending_;
+        wantPending_ = false;
         try {
-            pendingSync_ = syncWatcher_.result();
+            video::VideoSync vs = syncWatcher_.result();
+            if (forOperator)
+                pendingSync_ = vs.result;
+            tracked_ = std::move(vs);
+            trackedRoi_ = jobRoi_;
         } catch (const std::exception& e) {
-            pendingSync_.reset();
-            showStatus(tr("Automatic sync failed: %1").arg(QString::fromUtf8(e.what())));
+            tracked_.reset();
+            if (forOperator) {
+                pendingSync_.reset();
+                showStatus(tr("Automatic sync failed: %1").arg(QString::fromUtf8(e.what())));
+            }
         }
-        updateSyncUi();
-        emit syncFinished();
+        if (forOperator) {
+            updateSyncUi();
+            emit syncFinished();
+        }
+        updateTrace();
+        emit trackingFinished();
     });
 }
 
-ReviewWorkspace::~ReviewWorkspace() { syncWatcher_.waitForFinished(); }
+ReviewWorkspace::~ReviewWorkspace()
+{
+    if (jobCancel_)
+        jobCancel_->store(true);
+    try {
+        syncWatcher_.waitForFinished();
+    } catch (const std::exception&) {
+        // A cancelled job may end in an exception (too little tracked): nobody needs it now.
+    }
+}
 
 void ReviewWorkspace::buildUi()
 {
@@ -104,6 +129,22 @@ void ReviewWorkspace::buildUi()
     plot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
     plot_->xAxis->setLabel(tr("recording time [s]"));
     plot_->yAxis->setLabel(tr("force [N]"));
+    // The recorded position and the needle tracked in the video, on the right axis.
+    plot_->graph(0)->setName(tr("force"));
+    positionGraph_ = plot_->addGraph(plot_->xAxis, plot_->yAxis2);
+    positionGraph_->setName(tr("recorded position"));
+    positionGraph_->setPen(QPen(QColor(40, 90, 200), 1.0));
+    trackedGraph_ = plot_->addGraph(plot_->xAxis, plot_->yAxis2);
+    trackedGraph_->setName(tr("needle tracked in the video"));
+    trackedGraph_->setPen(QPen(QColor(230, 120, 0), 1.6, Qt::DashLine));
+    plot_->yAxis2->setVisible(true);
+    plot_->yAxis2->setLabel(tr("position [mm]"));
+    plot_->legend->setVisible(true);
+    QFont legendFont = font();
+    legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
+    plot_->legend->setFont(legendFont);
+    plot_->legend->setBrush(QColor(255, 255, 255, 200));
+    plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
     plotCursor_ = new QCPItemStraightLine(plot_);
     plotCursor_->setPen(QPen(QColor(220, 0, 0), 1.5));
     plotCursor_->point1->setCoords(0, 0);
@@ -176,6 +217,7 @@ void ReviewWorkspace::buildUi()
             syncConfidence_.reset();
             storeVideoLink();
             requestFrameForCursor();
+            updateTrace();
         }
     });
     sync->addWidget(offsetBox_);
@@ -192,6 +234,7 @@ void ReviewWorkspace::buildUi()
         storeVideoLink();
         requested_ = -1;
         requestFrameForCursor();
+        updateTrace();
     });
     sync->addWidget(new QLabel(tr("drift"), this));
     sync->addWidget(driftBox_);
@@ -348,6 +391,7 @@ bool ReviewWorkspace::openRun(const QString& path)
     markedEvent_.reset();
     try {
         Run run = readRunFile(path).run;
+        resetTrack();
         Labels labels;
         const QString lp = labelsPathFor(path);
         if (QFileInfo::exists(lp))
@@ -363,8 +407,11 @@ bool ReviewWorkspace::openRun(const QString& path)
         pending_.clear();
         QVector<double> t(run_.time_s.begin(), run_.time_s.end()), f(run_.force_N.begin(), run_.force_N.end());
         plot_->graph(0)->setData(t, f, true);
+        positionGraph_->setData(t, QVector<double>(run_.position_mm.begin(), run_.position_mm.end()), true);
+        trackedGraph_->data()->clear();
         plot_->rescaleAxes();
         plot_->yAxis->scaleRange(1.1);
+        plot_->yAxis2->scaleRange(1.1);
         timeline_->setRange(plot_->xAxis->range().lower, plot_->xAxis->range().upper);
         updateKeysHelp();
         updateShading();
@@ -386,6 +433,7 @@ void ReviewWorkspace::openVideo(const QString& path)
     markedEvent_.reset();
     videoPath_ = path;
     index_.reset();
+    resetTrack();
     frame_ = -1;
     video_->openButton()->hide();
     video_->setMessage(tr("Indexing the video…"));
@@ -411,6 +459,7 @@ void ReviewWorkspace::clearVideo()
     markedEvent_.reset();
     videoPath_.clear();
     index_.reset();
+    resetTrack();
     frame_ = -1;
     requested_ = -1;
     video_->clearVideo();
@@ -482,6 +531,7 @@ void ReviewWorkspace::restoreVideoLink()
     } else {
         requested_ = -1;
         requestFrameForCursor();
+        trackInBackground();
     }
     if (!problem.isEmpty())
         showStatus(problem);
@@ -621,6 +671,7 @@ void ReviewWorkspace::setMapping(const TimelineMapping& m, SyncMethod method, st
     driftBox_->setValue(m.drift * 1e6);
     requested_ = -1;
     requestFrameForCursor();
+    updateTrace();
 }
 
 void ReviewWorkspace::handleLabelKey(int key)
@@ -754,16 +805,77 @@ void ReviewWorkspace::suggestLabels()
 
 void ReviewWorkspace::startAutoSync()
 {
-    if (!index_ || run_.size() == 0 || syncWatcher_.isRunning()) {
+    if (!index_ || run_.size() == 0) {
         showStatus(tr("Open a run and a video first"));
         return;
     }
+    const QRect roi = video_->roi();
+    const bool running = syncWatcher_.isRunning() && watchedGeneration_ == jobGeneration_;
+    if (!running && tracked_ && trackedRoi_ == roi) {
+        // The background tracking already fitted this run and video in this region.
+        pendingSync_ = tracked_->result;
+        updateSyncUi();
+        updateTrace();
+        QTimer::singleShot(0, this, [this] { emit syncFinished(); });
+        return;
+    }
     syncLabel_->setText(tr("correlating…"));
+    if (running && jobRoi_ == roi)
+        wantPending_ = true;  // the background job is doing just this
+    else
+        startSyncJob(true);
+}
+
+void ReviewWorkspace::startSyncJob(bool forOperator)
+{
+    if (jobCancel_)
+        jobCancel_->store(true);
+    jobCancel_ = std::make_shared<std::atomic_bool>(false);
+    watchedGeneration_ = jobGeneration_;
+    wantPending_ = forOperator;
+    jobRoi_ = video_->roi();
     const video::FrameIndex index = *index_;
     video::VideoSyncOptions options;
-    options.roi = video_->roi();
+    options.roi = jobRoi_;
     const Run run = run_;
-    syncWatcher_.setFuture(QtConcurrent::run([index, run, options] { return video::syncVideoToRun(index, run, options).result; }));
+    const std::shared_ptr<std::atomic_bool> cancel = jobCancel_;
+    syncWatcher_.setFuture(QtConcurrent::run([index, run, options, cancel] {
+        return video::syncVideoToRun(index, run, options, {}, cancel.get());
+    }));
+}
+
+void ReviewWorkspace::trackInBackground()
+{
+    if (!index_ || run_.size() == 0 || tracked_ || (syncWatcher_.isRunning() && watchedGeneration_ == jobGeneration_))
+        return;
+    startSyncJob(false);
+}
+
+void ReviewWorkspace::resetTrack()
+{
+    ++jobGeneration_;
+    if (jobCancel_)
+        jobCancel_->store(true);
+    if (wantPending_) {
+        wantPending_ = false;
+        syncLabel_->clear();
+    }
+    tracked_.reset();
+    updateTrace();
+}
+
+void ReviewWorkspace::updateTrace()
+{
+    // While a sync waits for Accept, the trace shows what accepting it would do.
+    const bool pending = pendingSync_.has_value();
+    TimeSignal s;
+    if (tracked_ && !tracked_->track.time_s.empty())
+        s = trackedPosition({tracked_->track.time_s, tracked_->track.displacement_px}, tracked_->result,
+                            pending ? pendingSync_->mapping() : mapping_);
+    QVector<double> t(s.time_s.begin(), s.time_s.end()), x(s.value.begin(), s.value.end());
+    trackedGraph_->setData(t, x, true);
+    trackedGraph_->setName(pending ? tr("needle tracked in the video (at the offset found)") : tr("needle tracked in the video"));
+    plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void ReviewWorkspace::updateSyncUi()
@@ -781,6 +893,8 @@ void ReviewWorkspace::updateSyncUi()
     if (!pendingSync_) {
         syncLabel_->clear();
         syncLabel_->setStyleSheet(QString());
+        if (trackedGraph_)
+            updateTrace();
         return;
     }
     QString text = tr("found %1 s (confidence %2, r = %3)")
@@ -804,6 +918,7 @@ void ReviewWorkspace::updateSyncUi()
     syncMarker_->point1->setCoords(pendingSync_->offset_s, 0);
     syncMarker_->point2->setCoords(pendingSync_->offset_s, 1);
     syncPlot_->replot(QCustomPlot::rpQueuedReplot);
+    updateTrace();
 }
 
 void ReviewWorkspace::acceptSync()

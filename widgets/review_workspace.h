@@ -14,14 +14,18 @@
 #include "core/run_video_link.h"
 #include "core/sync.h"
 #include "video/video_decoder.h"
+#include "video/video_sync.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QWidget>
 
+#include <atomic>
 #include <map>
+#include <memory>
 #include <optional>
 
+class QCPGraph;
 class QCPItemStraightLine;
 class QCustomPlot;
 class QCheckBox;
@@ -98,12 +102,22 @@ public:
     // Correlation against offset of the pending automatic sync, the offset found marked;
     // visible from the end of Auto sync until Accept/Reject.
     QCustomPlot* syncPlot() const { return syncPlot_; }
+    // The recorded position (mm, right axis of the force plot) and, over it, the needle's
+    // displacement tracked in the video, in recording time through the pending sync (while one
+    // waits) or the offset and drift in use, and in mm through the sync's fit: where the two
+    // part, the sync is wrong. The tracking runs in the background once a run and its video
+    // are open (the same tracking Auto sync fits, which then takes its result); empty until then
+    // or when no needle was found.
+    QCPGraph* positionGraph() const { return positionGraph_; }
+    QCPGraph* trackedGraph() const { return trackedGraph_; }
+    bool isTracking() const { return syncWatcher_.isRunning(); }
 
 signals:
     void frameShown(int index);
     void videoOpened();
     void syncFinished();
     void videoLinkChanged();  // the video or the sync kept with the run changed
+    void trackingFinished();  // the background tracking ended (the trace may have changed)
 
 protected:
     void keyPressEvent(QKeyEvent* e) override;
@@ -127,6 +141,12 @@ private:
     void requestFrameForCursor();
     void updateSyncUi();
     void updateKeysHelp();
+    // The one background job that tracks the needle and fits it (video::syncVideoToRun);
+    // `forOperator`: Auto sync asked, its result becomes the pending sync.
+    void startSyncJob(bool forOperator);
+    void trackInBackground();
+    void resetTrack();  // the run or the video changed: what was tracked no longer applies
+    void updateTrace();
 
     Run run_;
     QString runPath_;
@@ -167,7 +187,15 @@ private:
     QPushButton* rejectButton_ = nullptr;
     QLabel* status_ = nullptr;
     QLabel* keysHelp_ = nullptr;
-    QFutureWatcher<SyncResult> syncWatcher_;
+    QFutureWatcher<video::VideoSync> syncWatcher_;
+    std::shared_ptr<std::atomic_bool> jobCancel_;
+    QRect jobRoi_;
+    int jobGeneration_ = 0, watchedGeneration_ = -1;
+    bool wantPending_ = false;
+    std::optional<video::VideoSync> tracked_;  // the last job's answer for this run and video
+    QRect trackedRoi_;
+    QCPGraph* positionGraph_ = nullptr;
+    QCPGraph* trackedGraph_ = nullptr;
 };
 
 }  // namespace nb

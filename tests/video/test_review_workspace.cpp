@@ -1,6 +1,7 @@
 // The review workspace driven like an operator: real simulated run and rendered video,
 // hotkeys, undo/redo, edge drag, frame steps, auto sync; saves a screenshot.
 #include "core/labels.h"
+#include "core/run_video_link.h"
 #include "core/run_file.h"
 #include "widgets/label_model.h"
 #include "widgets/label_set_dialog.h"
@@ -259,6 +260,78 @@ private slots:
         const QString shots = QStringLiteral(NB_BINARY_DIR "/screenshots");
         QDir().mkpath(shots);
         QVERIFY(ws.grab().save(shots + "/review_workspace.png"));
+    }
+
+    // The needle tracked in the video lies over the recorded position once the sync is
+    // accepted, and visibly apart before (offset 0) and after a nudge: the operator sees
+    // whether the two agree. The tracking runs in the background as soon as the run's own
+    // video is found beside it, and Auto sync takes its answer.
+    void trackedTraceLinesUpWithThePosition()
+    {
+        QTemporaryDir own;
+        const QString run = own.filePath("run.csv");
+        QVERIFY(QFile::copy(run_, run));
+        QVERIFY(QFile::copy(video_, own.filePath("run.avi")));  // the run's own video, found beside it
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QSignalSpy tracked(&ws, &nb::ReviewWorkspace::trackingFinished);
+        QVERIFY(ws.openRun(run));
+        QVERIFY(ws.positionGraph()->dataCount() > 100);
+        // The window stays responsive while the needle is tracked: frames still follow the cursor.
+        QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == 0, 60000);
+        ws.setCursorTime(1.0);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), 29, 20000);
+        QVERIFY(tracked.count() > 0 || tracked.wait(120000));
+        QVERIFY(!ws.isTracking());
+
+        const nb::Run recorded = nb::readRunFile(run).run;
+        const auto [pmin, pmax] = std::minmax_element(recorded.position_mm.begin(), recorded.position_mm.end());
+        const double span = *pmax - *pmin;
+        // Root-mean-square gap between the trace and the recorded position where both exist.
+        auto gap = [&](int* points) {
+            double sum = 0.0;
+            int n = 0;
+            for (auto it = ws.trackedGraph()->data()->constBegin(); it != ws.trackedGraph()->data()->constEnd(); ++it) {
+                if (!std::isfinite(it->value) || it->key < recorded.time_s.front() || it->key > recorded.time_s.back())
+                    continue;
+                const auto k = std::size_t(std::lower_bound(recorded.time_s.begin(), recorded.time_s.end(), it->key) - recorded.time_s.begin());
+                const double e = it->value - recorded.position_mm[std::min(k, recorded.size() - 1)];
+                sum += e * e;
+                ++n;
+            }
+            *points = n;
+            return n ? std::sqrt(sum / n) : 1e9;
+        };
+        int points = 0;
+        const double atZero = gap(&points);
+        QVERIFY2(points > 100, qPrintable(QString::number(points)));
+
+        QSignalSpy synced(&ws, &nb::ReviewWorkspace::syncFinished);
+        ws.startAutoSync();
+        QVERIFY(synced.wait(120000));
+        QVERIFY(ws.pendingSync().has_value());
+        QVERIFY2(ws.pendingSync()->acceptable(), qPrintable(QString::number(ws.pendingSync()->confidence)));
+        QVERIFY(std::abs(ws.pendingSync()->offset_s - truthOffset_) < 1.0 / 29.97);
+        // Before Accept the trace already shows the offset found.
+        const double preview = gap(&points);
+        ws.acceptSync();
+        const double accepted = gap(&points);
+        QVERIFY2(points > 100, qPrintable(QString::number(points)));
+        qInfo("trace vs recorded position: %.3f mm at offset 0, %.3f mm at the offset found, %.3f mm accepted (span %.1f mm)",
+              atZero, preview, accepted, span);
+        QVERIFY2(accepted < 0.03 * span, qPrintable(QString::number(accepted)));
+        QVERIFY(std::abs(preview - accepted) < 1e-9);
+        QVERIFY2(atZero > 5 * accepted, qPrintable(QString::number(atZero)));
+        // Three frames off show as a gap the eye can see.
+        ws.setMapping({ws.mapping().offset_s + 3 / 29.97, ws.mapping().drift});
+        QVERIFY(gap(&points) > 2 * accepted);
+
+        const QString shots = QStringLiteral(NB_BINARY_DIR "/screenshots");
+        QDir().mkpath(shots);
+        ws.setMapping({ws.mapping().offset_s - 3 / 29.97, ws.mapping().drift});
+        QTest::qWait(200);
+        QVERIFY(ws.grab().save(shots + "/review_tracked_trace.png"));
     }
 
     // A video synchronised against a run it does not show: the answer is plainly marked as low
