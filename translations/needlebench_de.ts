@@ -2121,12 +2121,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+37" />
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+39" />
         <source>recording time [s]</source>
         <translation>Aufzeichnungszeit [s]</translation>
     </message>
@@ -2136,7 +2136,28 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Kraft [N]</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+2" />
+        <source>force</source>
+        <translation>Kraft</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>recorded position</source>
+        <translation>aufgezeichnete Position</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+739" />
+        <source>needle tracked in the video</source>
+        <translation>im Video verfolgte Nadel</translation>
+    </message>
+    <message>
+        <location line="-736" />
+        <source>position [mm]</source>
+        <translation>Position [mm]</translation>
+    </message>
+    <message>
+        <location line="+35" />
         <source>−10</source>
         <translation>−10</translation>
     </message>
@@ -2157,12 +2178,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1" />
-        <location line="+417" />
+        <location line="+426" />
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-417" />
+        <location line="-426" />
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2218,7 +2239,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Videozeit = Aufzeichnungszeit + Versatz</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source> ppm</source>
         <translation> ppm</translation>
     </message>
@@ -2228,7 +2249,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Taktdrift des Videos gegenüber der Kraftaufzeichnung (Video läuft schneller: positiv)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>drift</source>
         <translation>Drift</translation>
     </message>
@@ -2284,7 +2305,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
     <message numerus="yes">
-        <location line="+169" />
+        <location line="+174" />
         <source>labels: %n</source>
         <translation>
             <numerusform>Labels: %n</numerusform>
@@ -2292,7 +2313,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+26" />
         <location line="+20" />
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation>Zuerst einen Lauf öffnen (Doppelklick in der Sitzungsliste), dann sein Video anhängen</translation>
@@ -2323,12 +2344,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+23" />
         <source>Video and sync not kept: %1</source>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+150" />
+        <location line="+151" />
         <source>%1 on %2 closed at %3 s</source>
         <translation>%1 auf %2 bei %3 s geschlossen</translation>
     </message>
@@ -2338,7 +2359,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 auf %2 nicht geschlossen (wäre leer oder überlappte eine andere Phase): nicht hinzugefügt</translation>
     </message>
     <message>
-        <location line="+139" />
+        <location line="+174" />
+        <source>needle tracked in the video (at the offset found)</source>
+        <translation>im Video verfolgte Nadel (beim gefundenen Versatz)</translation>
+    </message>
+    <message>
+        <location line="+28" />
         <source>, drift %1 %</source>
         <translation>, Drift %1 %</translation>
     </message>
@@ -2348,7 +2374,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-560" />
+        <location line="-631" />
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2413,17 +2439,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+41" />
         <source>%1: %2 samples, %3 labels</source>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+20" />
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+163" />
+        <location line="+165" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -2453,7 +2479,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Versatz gesetzt; ein zweites Ereignis, mindestens eine Sekunde entfernt, in beiden markieren, um auch die Drift zu setzen</translation>
     </message>
     <message>
-        <location line="+57" />
+        <location line="+58" />
         <source>%1 overlaps another phase on %2: not added</source>
         <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
     </message>
@@ -2478,12 +2504,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+13" />
         <source>correlating…</source>
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+78" />
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -6411,7 +6437,7 @@ Befehle:
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+510" />
+        <location filename="../video/needle_tracker.cpp" line="+538" />
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>

@@ -2119,12 +2119,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+37"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+39"/>
         <source>recording time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2134,7 +2134,28 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+2"/>
+        <source>force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>recorded position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+739"/>
+        <source>needle tracked in the video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-736"/>
+        <source>position [mm]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>−10</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2155,12 +2176,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+417"/>
+        <location line="+426"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-417"/>
+        <location line="-426"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2216,7 +2237,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source> ppm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2226,7 +2247,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>drift</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2282,7 +2303,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+169"/>
+        <location line="+174"/>
         <source>labels: %n</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -2290,7 +2311,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <location line="+20"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation type="unfinished"></translation>
@@ -2321,12 +2342,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Video and sync not kept: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+151"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2336,7 +2357,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+174"/>
+        <source>needle tracked in the video (at the offset found)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>, drift %1 %</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2346,7 +2372,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-560"/>
+        <location line="-631"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2411,17 +2437,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+41"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+163"/>
+        <location line="+165"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2451,7 +2477,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+58"/>
         <source>%1 overlaps another phase on %2: not added</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2476,12 +2502,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+13"/>
         <source>correlating…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+78"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6332,7 +6358,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+510"/>
+        <location filename="../video/needle_tracker.cpp" line="+538"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
