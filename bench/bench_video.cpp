@@ -122,7 +122,6 @@ int main(int argc, char** argv)
             for (int i = 0; i < std::min(packets->size(), index.size()); ++i)
                 same += std::abs(packets->frames[std::size_t(i)].time_s - index.frames[std::size_t(i)].time_s) < 1e-3
                         && packets->frames[std::size_t(i)].keyframe == index.frames[std::size_t(i)].keyframe;
-            const double duration_s = index.duration_s();
             std::printf("packet index: %.0f ms for %d frames (%.3f ms/frame, %.0fx faster than decoding); %d of %d frames "
                         "agree with the decoded index (time and keyframe)\n",
                         packetMs, packets->size(), packetMs / packets->size(), buildMs / std::max(packetMs, 1.0), same, index.size());
