@@ -8,6 +8,7 @@
 #include "plan_runner.h"
 #include "plan_walker.h"
 
+#include "core/data_names.h"
 #include "core/plan.h"
 #include "devices/acquisition_engine.h"
 #include "devices/device_spec.h"
@@ -18,6 +19,7 @@
 #include <QDockWidget>
 #include <QDir>
 #include <QFileDialog>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
 #include <QTimer>
@@ -48,13 +50,14 @@ QString settingsLine(const QJsonObject& s, const devices::RunPlan& m, bool simul
 {
     QStringList parts;
     if (m.motion == devices::RunPlan::Motion::Sine)
-        parts << MainWindow::tr("sine ±%1 mm at %2 Hz, %3 cycles").arg(m.sine.amplitude_mm).arg(m.sine.frequency_hz).arg(m.sine.cycles);
+        parts << MainWindow::tr("sine ±%1 mm at %2 Hz, %3 cycles").arg(QLocale().toString(m.sine.amplitude_mm)).arg(QLocale().toString(m.sine.frequency_hz)).arg(m.sine.cycles);
     else
-        parts << MainWindow::tr("linear to %1 mm at %2 mm/s").arg(m.linear.target_mm).arg(m.linear.velocity_mm_s);
+        parts << MainWindow::tr("linear to %1 mm at %2 mm/s").arg(QLocale().toString(m.linear.target_mm)).arg(QLocale().toString(m.linear.velocity_mm_s));
     QStringList specimen;
-    for (const char* key : {"tissue", "tip"})
-        if (s.contains(QLatin1String(key)))
-            specimen << levelText(s.value(QLatin1String(key)));
+    if (s.contains(QStringLiteral("tissue")))
+        specimen << tissueDisplayName(levelText(s.value(QStringLiteral("tissue"))));
+    if (s.contains(QStringLiteral("tip")))
+        specimen << tipDisplayName(levelText(s.value(QStringLiteral("tip"))));
     if (simulated && s.contains(QStringLiteral("seed")))
         specimen << MainWindow::tr("seed %1").arg(levelText(s.value(QStringLiteral("seed"))));
     if (!specimen.isEmpty())
@@ -64,9 +67,9 @@ QString settingsLine(const QJsonObject& s, const devices::RunPlan& m, bool simul
     else if (m.stopAtPuncture > 1)
         parts << MainWindow::tr("stop after %1 punctures").arg(m.stopAtPuncture);
     if (m.slowAfterPuncture_mm_s > 0.0)
-        parts << MainWindow::tr("slow to %1 mm/s after a puncture").arg(m.slowAfterPuncture_mm_s);
+        parts << MainWindow::tr("slow to %1 mm/s after a puncture").arg(QLocale().toString(m.slowAfterPuncture_mm_s));
     if (s.contains(QStringLiteral("max_force_n")))
-        parts << MainWindow::tr("force limit %1 N").arg(s.value(QStringLiteral("max_force_n")).toDouble());
+        parts << MainWindow::tr("force limit %1 N").arg(QLocale().toString(s.value(QStringLiteral("max_force_n")).toDouble()));
     return parts.join(QStringLiteral(" · "));
 }
 

@@ -1,4 +1,5 @@
 #include "plan.h"
+#include "core/data_names.h"
 #include "core/tr.h"
 
 #include <QFile>
@@ -107,7 +108,7 @@ QString settingText(const QString& key, const QJsonValue& value, bool sine)
     if (key == QLatin1String("site"))
         return sine ? nb::TrCore::tr("Move the slab to site %1.").arg(v) : nb::TrCore::tr("Move the specimen to site %1.").arg(v);
     if (key == QLatin1String("tip"))
-        return nb::TrCore::tr("Change to the %1 tip.").arg(v);
+        return nb::TrCore::tr("Change to the %1 tip.").arg(tipDisplayName(v));
     if (key == QLatin1String("tissue"))
         return nb::TrCore::tr("Mount %1.").arg(v);
     if (key == QLatin1String("thickness_mm"))
@@ -407,7 +408,7 @@ QString operatorInstruction(const Plan& plan, const PlannedRun* previous, const 
         if (previous && before.value(key) == now.value(key))
             continue;
         if (!previous && key == QLatin1String("tip")) {
-            steps << nb::TrCore::tr("Fit the %1 tip.").arg(levelText(now.value(key)));
+            steps << nb::TrCore::tr("Fit the %1 tip.").arg(tipDisplayName(levelText(now.value(key))));
             continue;
         }
         steps << settingText(key, now.value(key), sine);

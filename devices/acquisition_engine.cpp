@@ -1,5 +1,7 @@
 #include "acquisition_engine.h"
 
+#include <QLocale>
+
 #include "core/data_names.h"
 
 #include "core/run_file.h"
@@ -255,7 +257,7 @@ void AcquisitionEngine::setWithdrawForceLimit(double newtons)
             return;
         }
         s.proc->setLimits(s.proc->insertionLimit(), newtons);
-        emit message(tr("withdrawal force limit %1 N").arg(s.proc->withdrawalLimit()));
+        emit message(tr("withdrawal force limit %1 N").arg(QLocale().toString(s.proc->withdrawalLimit())));
     });
 }
 

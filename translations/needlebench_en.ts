@@ -1671,7 +1671,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window_plan.cpp" line="+33"/>
+        <location filename="../app/main_window_plan.cpp" line="+35"/>
         <source>pending</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1711,7 +1711,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>seed %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4441,7 +4441,7 @@ Commands:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+944"/>
+        <location filename="../core/plan.cpp" line="+945"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -6662,7 +6662,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+194"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+196"/>
         <source>stage enabled; fault cleared</source>
         <translation type="unfinished"></translation>
     </message>
