@@ -227,51 +227,63 @@ Timing timing(const SyncCase& c, double fps, double duration_s)
 QString encode(const SyncCase& c, const std::vector<cv::Mat>& frames, const Timing& t, double fps, const QString& dir,
                QString* path)
 {
-    QStringList codec;
-    QString ext;
-    switch (c.codec) {
-    case Codec::Mjpeg: codec = {QStringLiteral("-c:v"), QStringLiteral("mjpeg"), QStringLiteral("-q:v"), QStringLiteral("4"), QStringLiteral("-pix_fmt"), QStringLiteral("yuvj420p")}; ext = QStringLiteral(".avi"); break;
-    case Codec::H264: codec = {QStringLiteral("-c:v"), QStringLiteral("libx264"), QStringLiteral("-bf"), QStringLiteral("2"), QStringLiteral("-g"), QStringLiteral("30"), QStringLiteral("-preset"), QStringLiteral("veryfast"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv420p")}; ext = QStringLiteral(".mp4"); break;
-    case Codec::Dv: codec = {QStringLiteral("-c:v"), QStringLiteral("dvvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv411p")}; ext = QStringLiteral(".avi"); break;
-    }
     const bool vfr = c.look == Look::VariableRate && c.codec != Codec::Dv;
-    if (vfr)
-        ext = QStringLiteral(".mkv");
+    const QString ext = vfr ? QStringLiteral(".mkv") : c.codec == Codec::H264 ? QStringLiteral(".mp4") : QStringLiteral(".avi");
     *path = QDir(dir).filePath(QStringLiteral("video") + ext);
-    QStringList args{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y")};
-    QProcess p;
-    if (vfr) {
-        // Timestamps as written: raw frames at a fine clock, each shown until the next.
-        // ffmpeg's concat demuxer takes a duration per picture.
-        QFile list(QDir(dir).filePath(QStringLiteral("frames.txt")));
-        if (!list.open(QIODevice::WriteOnly))
-            return QStringLiteral("cannot write the frame list");
-        for (std::size_t k = 0; k < frames.size(); ++k) {
-            const QString name = QDir(dir).filePath(QStringLiteral("f%1.pgm").arg(k, 6, 10, QLatin1Char('0')));
-            cv::Mat m = frames[k];
-            QFile f(name);
-            if (!f.open(QIODevice::WriteOnly))
-                return QStringLiteral("cannot write a frame");
-            f.write(QStringLiteral("P5\n%1 %2\n255\n").arg(m.cols).arg(m.rows).toLatin1());
-            f.write(reinterpret_cast<const char*>(m.data), qint64(m.total()));
-            f.close();
-            const double next = k + 1 < frames.size() ? t.time_s[k + 1] : t.time_s[k] + 1.0 / fps;
-            list.write(QStringLiteral("file '%1'\nduration %2\n").arg(name).arg(next - t.time_s[k], 0, 'f', 6).toUtf8());
-        }
-        list.close();
-        args << QStringLiteral("-f") << QStringLiteral("concat") << QStringLiteral("-safe") << QStringLiteral("0")
-             << QStringLiteral("-i") << list.fileName() << QStringLiteral("-fps_mode") << QStringLiteral("vfr")
-             << QStringLiteral("-enc_time_base") << QStringLiteral("1/1000") << codec << *path;
-        p.start(QStringLiteral("ffmpeg"), args);
-        if (!p.waitForFinished(300000) || p.exitCode() != 0)
-            return QStringLiteral("ffmpeg: ") + QString::fromUtf8(p.readAllStandardError());
-        return {};
+    if (!vfr)
+        return encodeConstantRate(frames, c.codec, fps, *path);
+    // Timestamps as written: raw frames at a fine clock, each shown until the next.
+    // ffmpeg's concat demuxer takes a duration per picture.
+    QFile list(QDir(dir).filePath(QStringLiteral("frames.txt")));
+    if (!list.open(QIODevice::WriteOnly))
+        return QStringLiteral("cannot write the frame list");
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const QString name = QDir(dir).filePath(QStringLiteral("f%1.pgm").arg(k, 6, 10, QLatin1Char('0')));
+        cv::Mat m = frames[k];
+        QFile f(name);
+        if (!f.open(QIODevice::WriteOnly))
+            return QStringLiteral("cannot write a frame");
+        f.write(QStringLiteral("P5\n%1 %2\n255\n").arg(m.cols).arg(m.rows).toLatin1());
+        f.write(reinterpret_cast<const char*>(m.data), qint64(m.total()));
+        f.close();
+        const double next = k + 1 < frames.size() ? t.time_s[k + 1] : t.time_s[k] + 1.0 / fps;
+        list.write(QStringLiteral("file '%1'\nduration %2\n").arg(name).arg(next - t.time_s[k], 0, 'f', 6).toUtf8());
     }
-    const QString rate = c.codec == Codec::Dv ? QStringLiteral("30000/1001") : QString::number(fps, 'f', 6);
-    args << QStringLiteral("-f") << QStringLiteral("rawvideo") << QStringLiteral("-pix_fmt") << QStringLiteral("gray")
-         << QStringLiteral("-s") << QStringLiteral("%1x%2").arg(c.width).arg(c.height) << QStringLiteral("-r") << rate
-         << QStringLiteral("-i") << QStringLiteral("-") << codec << *path;
-    p.start(QStringLiteral("ffmpeg"), args);
+    list.close();
+    QProcess p;
+    p.start(QStringLiteral("ffmpeg"), QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"), QStringLiteral("-f"),
+                                                  QStringLiteral("concat"), QStringLiteral("-safe"), QStringLiteral("0"), QStringLiteral("-i"),
+                                                  list.fileName(), QStringLiteral("-fps_mode"), QStringLiteral("vfr"),
+                                                  QStringLiteral("-enc_time_base"), QStringLiteral("1/1000")}
+                                          << codecArguments(c.codec) << *path);
+    if (!p.waitForFinished(300000) || p.exitCode() != 0)
+        return QStringLiteral("ffmpeg: ") + QString::fromUtf8(p.readAllStandardError());
+    return {};
+}
+
+}  // namespace
+
+QStringList codecArguments(Codec c)
+{
+    switch (c) {
+    case Codec::Mjpeg: return {QStringLiteral("-c:v"), QStringLiteral("mjpeg"), QStringLiteral("-q:v"), QStringLiteral("4"), QStringLiteral("-pix_fmt"), QStringLiteral("yuvj420p")};
+    case Codec::H264: return {QStringLiteral("-c:v"), QStringLiteral("libx264"), QStringLiteral("-bf"), QStringLiteral("2"), QStringLiteral("-g"), QStringLiteral("30"), QStringLiteral("-preset"), QStringLiteral("veryfast"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv420p")};
+    case Codec::Dv: return {QStringLiteral("-c:v"), QStringLiteral("dvvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv411p")};
+    }
+    return {};
+}
+
+QString encodeConstantRate(const std::vector<cv::Mat>& frames, Codec codec, double fps, const QString& path)
+{
+    if (frames.empty())
+        return QStringLiteral("no frames to encode");
+    const QString rate = codec == Codec::Dv ? QStringLiteral("30000/1001") : QString::number(fps, 'f', 6);
+    QProcess p;
+    p.start(QStringLiteral("ffmpeg"), QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"), QStringLiteral("-f"),
+                                                  QStringLiteral("rawvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("gray"), QStringLiteral("-s"),
+                                                  QStringLiteral("%1x%2").arg(frames.front().cols).arg(frames.front().rows),
+                                                  QStringLiteral("-r"), rate, QStringLiteral("-i"), QStringLiteral("-")}
+                                          << codecArguments(codec) << path);
     if (!p.waitForStarted(10000))
         return QStringLiteral("ffmpeg did not start");
     for (const cv::Mat& m : frames) {
@@ -285,8 +297,6 @@ QString encode(const SyncCase& c, const std::vector<cv::Mat>& frames, const Timi
         return QStringLiteral("ffmpeg: ") + QString::fromUtf8(p.readAllStandardError());
     return {};
 }
-
-}  // namespace
 
 SyncOutcome runSyncCase(const SyncCase& c, const QString& executable, const QString& workDir)
 {

@@ -13,6 +13,10 @@
 #include <random>
 #include <vector>
 
+namespace cv {
+class Mat;
+}
+
 namespace nb::accuracy {
 
 enum class Look { Rendered, Plain, NoisyLowContrast, Overlays, Angle30, Angle90, VariableRate };
@@ -20,6 +24,11 @@ enum class Codec { Mjpeg, H264, Dv };
 
 QString lookName(Look l);
 QString codecName(Codec c);
+// The ffmpeg encoder arguments of a codec.
+QStringList codecArguments(Codec c);
+// Grey frames encoded at a constant rate with the ffmpeg tool (DV at NTSC's 30000/1001);
+// returns what went wrong, empty when the file is written.
+QString encodeConstantRate(const std::vector<cv::Mat>& frames, Codec codec, double fps, const QString& path);
 
 struct SyncCase {
     bool sine = true;

@@ -94,34 +94,6 @@ void applyLook(const PhaseMatrixCase& c, int frameNumber, double videoTime_s, cv
     }
 }
 
-QString encode(const PhaseMatrixCase& c, const std::vector<cv::Mat>& frames, double fps, const QString& path)
-{
-    QStringList codec;
-    switch (c.codec) {
-    case Codec::Mjpeg: codec = {QStringLiteral("-c:v"), QStringLiteral("mjpeg"), QStringLiteral("-q:v"), QStringLiteral("4"), QStringLiteral("-pix_fmt"), QStringLiteral("yuvj420p")}; break;
-    case Codec::H264: codec = {QStringLiteral("-c:v"), QStringLiteral("libx264"), QStringLiteral("-bf"), QStringLiteral("2"), QStringLiteral("-g"), QStringLiteral("30"), QStringLiteral("-preset"), QStringLiteral("veryfast"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv420p")}; break;
-    case Codec::Dv: codec = {QStringLiteral("-c:v"), QStringLiteral("dvvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("yuv411p")}; break;
-    }
-    const QString rate = c.codec == Codec::Dv ? QStringLiteral("30000/1001") : QString::number(fps, 'f', 6);
-    QProcess p;
-    p.start(QStringLiteral("ffmpeg"), QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"), QStringLiteral("-f"),
-                                                  QStringLiteral("rawvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("gray"), QStringLiteral("-s"),
-                                                  QStringLiteral("%1x%2").arg(c.width).arg(c.height), QStringLiteral("-r"), rate,
-                                                  QStringLiteral("-i"), QStringLiteral("-")}
-                                          << codec << path);
-    if (!p.waitForStarted(10000))
-        return QStringLiteral("ffmpeg did not start");
-    for (const cv::Mat& m : frames) {
-        p.write(reinterpret_cast<const char*>(m.data), qint64(m.total()));
-        while (p.bytesToWrite() > 0)
-            if (!p.waitForBytesWritten(60000))
-                return QStringLiteral("ffmpeg stopped reading: ") + QString::fromUtf8(p.readAllStandardError());
-    }
-    p.closeWriteChannel();
-    if (!p.waitForFinished(300000) || p.exitCode() != 0)
-        return QStringLiteral("ffmpeg: ") + QString::fromUtf8(p.readAllStandardError());
-    return {};
-}
 
 double agreement(const std::vector<QString>& truth, const Labels& labels, const std::vector<double>& time_s)
 {
@@ -245,7 +217,7 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         }
         const QString ext = c.codec == Codec::H264 ? QStringLiteral(".mp4") : QStringLiteral(".avi");
         const QString videoPath = QDir(workDir).filePath(QStringLiteral("video") + ext);
-        if (const QString e = encode(c, frames, fps, videoPath); !e.isEmpty()) {
+        if (const QString e = encodeConstantRate(frames, c.codec, fps, videoPath); !e.isEmpty()) {
             out.problem = e;
             return out;
         }
