@@ -9,6 +9,7 @@
 #include "core/events.h"
 #include "core/fit_error.h"
 #include "core/friction_fit.h"
+#include "core/friction_peak_line.h"
 #include "core/labels.h"
 #include "core/run_file.h"
 #include "core/stiffness_fit.h"
@@ -310,6 +311,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
         return usage(nb::TrCli::tr("--labels applies to a single run; give one run per call"));
 
     std::vector<FrictionFit> fits;
+    std::vector<RunPeaks> peaks;
     for (const QString& path : files) {
         const Run run = loadRun(path, io);
         QStringList phases;
@@ -323,9 +325,15 @@ int fitFrictionCommand(const QStringList& args, Io io)
         fits.push_back(onFile(path, [&] { return fitFriction(run, options, phases); }));
         const KarnoppModel& k = fits.back().model;
         requireFinite(path, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, k.Dp_N, k.Dn_N, fits.back().rms_N});
+        peaks.push_back(peakPoints(run, options));
     }
     const auto groups = groupByFrequency(fits);
     const FrictionGroup all = overall(fits);
+    const std::optional<PeakSpeedLine> peakLine = peakSpeedLine(peaks);
+    const double L = options.thickness_mm / 1000.0;
+    auto linePerLength = [&](const PeakSpeedLine& l) {
+        return KarnoppPerLength{l.model.Cp_N / L, l.model.Cn_N / L, l.model.bp_Ns_per_m / L, l.model.bn_Ns_per_m / L, 0.0, 0.0};
+    };
 
     if (parser.isSet(json)) {
         QJsonArray runs;
@@ -356,17 +364,53 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           {QStringLiteral("not_physical_values"), QJsonArray::fromStringList(f.notPhysicalValues)}};
             if (f.massEstimate_kg)
                 o.insert(QStringLiteral("m_est_kg"), *f.massEstimate_kg);
+            QJsonObject top;
+            auto peakJson = [](const PeakPoint& p) {
+                return QJsonObject{{QStringLiteral("speed_m_s"), p.speed_m_s}, {QStringLiteral("force_N"), p.force_N},
+                                   {QStringLiteral("settled"), p.settled}};
+            };
+            if (peaks[i].positive)
+                top.insert(QStringLiteral("positive"), peakJson(*peaks[i].positive));
+            if (peaks[i].negative)
+                top.insert(QStringLiteral("negative"), peakJson(*peaks[i].negative));
+            o.insert(QStringLiteral("peak"), top);
+            if (peakLine) {
+                const LineDeparture d = departureFromLine(f, *peakLine);
+                o.insert(QStringLiteral("C_from_peak_line_percent"),
+                         QJsonObject{{QStringLiteral("Cp"), d.Cp_percent}, {QStringLiteral("Cn"), d.Cn_percent}});
+                o.insert(QStringLiteral("departs_from_peak_line"), d.significant);
+            }
             runs.append(o);
         }
         QJsonArray byFrequency;
         for (const FrictionGroup& g : groups)
             byFrequency.append(groupJson(g, true));
-        printJson(io, {{QStringLiteral("runs"), runs},
-                       {QStringLiteral("by_frequency"), byFrequency},
-                       {QStringLiteral("overall"), groupJson(all, false)},
-                       {QStringLiteral("thickness_mm"), options.thickness_mm},
-                       {QStringLiteral("band_m_s"), options.estimateBand && !fits.empty() ? fits.front().band_m_s : options.band_m_s},
-                       {QStringLiteral("band_estimated"), options.estimateBand}});
+        QJsonObject doc{{QStringLiteral("runs"), runs},
+                        {QStringLiteral("by_frequency"), byFrequency},
+                        {QStringLiteral("overall"), groupJson(all, false)},
+                        {QStringLiteral("thickness_mm"), options.thickness_mm},
+                        {QStringLiteral("band_m_s"), options.estimateBand && !fits.empty() ? fits.front().band_m_s : options.band_m_s},
+                        {QStringLiteral("band_estimated"), options.estimateBand}};
+        if (peakLine) {
+            const KarnoppPerLength pl = linePerLength(*peakLine);
+            doc.insert(QStringLiteral("peak_speed_line"),
+                       QJsonObject{{QStringLiteral("Cp_N"), peakLine->model.Cp_N},
+                                   {QStringLiteral("Cn_N"), peakLine->model.Cn_N},
+                                   {QStringLiteral("bp_Ns_per_m"), peakLine->model.bp_Ns_per_m},
+                                   {QStringLiteral("bn_Ns_per_m"), peakLine->model.bn_Ns_per_m},
+                                   {QStringLiteral("per_length"), QJsonObject{{QStringLiteral("Cp_N_per_m"), pl.Cp_N_per_m},
+                                                                              {QStringLiteral("Cn_N_per_m"), pl.Cn_N_per_m},
+                                                                              {QStringLiteral("bp_Ns_per_m2"), pl.bp_Ns_per_m2},
+                                                                              {QStringLiteral("bn_Ns_per_m2"), pl.bn_Ns_per_m2}}},
+                                   {QStringLiteral("standard_errors"), QJsonObject{{QStringLiteral("Cp_N"), peakLine->seCp_N},
+                                                                                   {QStringLiteral("Cn_N"), peakLine->seCn_N},
+                                                                                   {QStringLiteral("bp_Ns_per_m"), peakLine->seBp_Ns_per_m},
+                                                                                   {QStringLiteral("bn_Ns_per_m"), peakLine->seBn_Ns_per_m}}},
+                                   {QStringLiteral("runs"), qint64(peakLine->runs)},
+                                   {QStringLiteral("slowest_m_s"), peakLine->slowest_m_s},
+                                   {QStringLiteral("fastest_m_s"), peakLine->fastest_m_s}});
+        }
+        printJson(io, doc);
         return Ok;
     }
     io.out << nb::TrCli::tr("friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²\n")
@@ -399,6 +443,15 @@ int fitFrictionCommand(const QStringList& args, Io io)
     }
     line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("mean"), QString(), all.massEstimateMean_kg, all.mean);
     line(nb::TrCli::tr("all (%1 runs)").arg(all.runs), nb::TrCli::tr("std"), QString(), all.massEstimateStdDev_kg, all.stdDev, all.runs > 1);
+    if (peakLine) {
+        // D is not defined by the line: printed empty (the line() columns are all or nothing).
+        io.out << nb::TrCli::tr("peak speeds").leftJustified(17) << ' ' << nb::TrCli::tr("line").leftJustified(9) << ' '
+               << QString().rightJustified(7) << ' ' << (m ? QString().rightJustified(10) + QLatin1Char(' ') : QString());
+        const KarnoppPerLength pl = linePerLength(*peakLine);
+        for (double v : {pl.Cp_N_per_m, pl.bp_Ns_per_m2, pl.Cn_N_per_m, pl.bn_Ns_per_m2})
+            io.out << num(v, 5).rightJustified(9) << ' ';
+        io.out << '\n';
+    }
     for (std::size_t i = 0; i < fits.size(); ++i) {
         const FrictionFit& f = fits[i];
         const QString name = QFileInfo(files[qsizetype(i)]).fileName();
@@ -408,11 +461,28 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           .arg(name, num(f.band_m_s * 500.0, 3), num(f.bandSlowingDown_m_s * 500.0, 3));
         else
             io.out << nb::TrCli::tr("%1: zero-velocity band ±%2 mm/s (given)\n").arg(name, num(f.band_m_s * 500.0, 3));
-        const double L = options.thickness_mm / 1000.0;
         io.out << nb::TrCli::tr("%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5\n")
                       .arg(name, num(f.seCp_N / L, 3), num(f.seBp_Ns_per_m / L, 3), num(f.seCn_N / L, 3), num(f.seBn_Ns_per_m / L, 3));
         for (const QString& why : f.notPhysical)
             io.out << nb::TrCli::tr("%1: NOT PHYSICAL: %2\n").arg(name, why);
+        if (peakLine) {
+            const LineDeparture d = departureFromLine(f, *peakLine);
+            if (d.significant)
+                io.out << nb::TrCli::tr("%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %): the tissue moves while the "
+                                        "needle slows, so this run's sliding line is tilted; prefer the peak-speed line\n")
+                              .arg(name, num(d.Cp_percent, 2), num(d.Cn_percent, 2));
+        }
+    }
+    if (peakLine) {
+        io.out << nb::TrCli::tr("peak-speed line: C and b through the top speeds of %1 runs (%2 to %3 mm/s), where the needle "
+                                "does not accelerate and the tissue rests against the plate; standard errors per length: "
+                                "Cp ±%4, bp ±%5, Cn ±%6, bn ±%7\n")
+                      .arg(peakLine->runs)
+                      .arg(num(peakLine->slowest_m_s * 1000.0, 3), num(peakLine->fastest_m_s * 1000.0, 3), num(peakLine->seCp_N / L, 3),
+                           num(peakLine->seBp_Ns_per_m / L, 3), num(peakLine->seCn_N / L, 3), num(peakLine->seBn_Ns_per_m / L, 3));
+    } else if (fits.size() > 1) {
+        io.out << nb::TrCli::tr("no peak-speed line: it needs two runs or more whose top speeds differ by a fifth or more "
+                                "(e.g. the same slab at 0.2, 0.5 and 0.8 Hz)\n");
     }
     return Ok;
 }

@@ -3,6 +3,7 @@
 // [--case N] [--keep DIR]` (--case: only sync case N of the draw, to look at one again). Prints one line per case and the summary against issue 13's targets.
 #include "video/accuracy_matrix.h"
 #include "video/phase_matrix.h"
+#include "core/rig_friction_matrix.h"
 
 #include "core/sync.h"
 
@@ -53,6 +54,57 @@ void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString&
     out << "targets: >= 80 % without video and >= 90 % with video, in every case\n";
 }
 
+// The simulated rig's own friction runs (its own generator, so the draws above stay as they were).
+void printRigFriction(QTextStream& out, unsigned seed, int count, const QString& root)
+{
+    out << "\n== friction on the simulated rig: one slab at three frequencies, force and position only\n";
+    std::mt19937 rng(seed + 1u);
+    std::vector<double> runC, runB, lineC, lineB;
+    int failed = 0, offRuns = 0, offFlagged = 0, noLine = 0;
+    const auto sets = nb::accuracy::drawRigFrictionSets(rng, count);
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+        const auto o = nb::accuracy::runRigFrictionSet(sets[i], QStringLiteral(NB_EXECUTABLE), QDir(root).filePath(QStringLiteral("rigfriction%1").arg(i)));
+        if (!o.ok) {
+            ++failed;
+            out << QStringLiteral("  %1  FAILED %2: %3\n").arg(i, 2).arg(sets[i].describe(), o.problem);
+            continue;
+        }
+        QString runs;
+        for (std::size_t k = 0; k < 3; ++k) {
+            runC.push_back(100 * o.runErrC[k]);
+            runB.push_back(100 * o.runErrB[k]);
+            if (o.runErrC[k] > 0.05) {
+                ++offRuns;
+                offFlagged += o.runDeparts[k];
+            }
+            runs += QStringLiteral(" %1/%2%3").arg(100 * o.runErrC[k], 0, 'f', 1).arg(100 * o.runErrB[k], 0, 'f', 1)
+                        .arg(o.runDeparts[k] ? QStringLiteral("*") : QString());
+        }
+        if (o.line) {
+            lineC.push_back(100 * o.lineErrC);
+            lineB.push_back(100 * o.lineErrB);
+        } else {
+            ++noLine;
+        }
+        out << QStringLiteral("  %1  line C %2 % b %3 %   runs C/b %:%4   %5\n")
+                   .arg(i, 2)
+                   .arg(o.line ? QString::number(100 * o.lineErrC, 'f', 2) : QStringLiteral("-"))
+                   .arg(o.line ? QString::number(100 * o.lineErrB, 'f', 2) : QStringLiteral("-"))
+                   .arg(runs, sets[i].describe());
+    }
+    out << QStringLiteral("rig friction: %1 sets (%2 failed, %3 without a line): peak-speed line C error p50 %4 %, max %5 %; "
+                          "b error p50 %6 %, max %7 %\n")
+               .arg(sets.size()).arg(failed).arg(noLine)
+               .arg(quantile(lineC, 0.5), 0, 'f', 2).arg(quantile(lineC, 1.0), 0, 'f', 2)
+               .arg(quantile(lineB, 0.5), 0, 'f', 2).arg(quantile(lineB, 1.0), 0, 'f', 2);
+    out << QStringLiteral("  single runs: C error p50 %1 %, max %2 %; b error p50 %3 %, max %4 %; %5 runs off by more than 5 % in C, "
+                          "%6 of them flagged as departing from the line (* above)\n")
+               .arg(quantile(runC, 0.5), 0, 'f', 2).arg(quantile(runC, 1.0), 0, 'f', 2)
+               .arg(quantile(runB, 0.5), 0, 'f', 2).arg(quantile(runB, 1.0), 0, 'f', 2)
+               .arg(offRuns).arg(offFlagged);
+    out << "targets: C within 5 %, b within 15 %\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -60,7 +112,7 @@ int main(int argc, char** argv)
     QCoreApplication app(argc, argv);
     const QStringList a = app.arguments();
     unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
-    int syncCases = 20, frictionCases = 24, phaseCases = 24;
+    int syncCases = 20, frictionCases = 24, phaseCases = 24, rigFrictionSets = 8;
     bool small = false;
     int onlyCase = -1;
     QString keep;
@@ -71,6 +123,8 @@ int main(int argc, char** argv)
             syncCases = a[++i].toInt();
         else if (a[i] == QLatin1String("--friction-cases") && i + 1 < a.size())
             frictionCases = a[++i].toInt();
+        else if (a[i] == QLatin1String("--rig-friction-sets") && i + 1 < a.size())
+            rigFrictionSets = a[++i].toInt();
         else if (a[i] == QLatin1String("--phase-cases") && i + 1 < a.size())
             phaseCases = a[++i].toInt();
         else if (a[i] == QLatin1String("--case") && i + 1 < a.size())
@@ -80,7 +134,7 @@ int main(int argc, char** argv)
         else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
             keep = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--phase-cases N] [--small] [--case N] [--keep DIR]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--small] [--case N] [--keep DIR]\n");
             return 2;
         }
     }
@@ -156,5 +210,7 @@ int main(int argc, char** argv)
                .arg(quantile(errC, 0.5), 0, 'f', 2).arg(quantile(errC, 1.0), 0, 'f', 2)
                .arg(quantile(errB, 0.5), 0, 'f', 2).arg(quantile(errB, 1.0), 0, 'f', 2);
     out << "targets: C within 5 %, b within 15 %\n";
+
+    printRigFriction(out, seed, rigFrictionSets, root);
     return 0;
 }

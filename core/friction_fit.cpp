@@ -82,6 +82,76 @@ std::optional<Line> lineThrough(const std::vector<double>& v, const std::vector<
     return l;
 }
 
+// Without phases the band alone decides what slides, and it cannot see a stroke where the
+// tissue is carried, still arriving at the plate or ringing against it (short strokes, large
+// gaps, wide bands): those samples lie off the sliding line, below it while the tissue moves
+// with the needle, above it in the overshoot. So per direction the line is started from the
+// samples that surely slide (slowing down, after the stroke's largest force: the tissue has
+// met the plate by then) and grown to every candidate that follows it, the others dropped.
+std::vector<std::size_t> consistentlySliding(const std::vector<std::size_t>& rows, const std::vector<double>& v,
+                                             const std::vector<double>& a, const std::vector<double>& f, double mass,
+                                             std::size_t trim, int w)
+{
+    const std::size_t n = v.size();
+    auto force = [&](std::size_t i) { return f[i] - mass * a[i]; };
+    // Index of the largest force (in the direction of motion) of the stroke each sample is in.
+    std::vector<std::size_t> strokePeak(n, n);
+    for (std::size_t i = trim; i < n - trim;) {
+        const int s = v[i] > 0.0 ? 1 : v[i] < 0.0 ? -1 : 0;
+        std::size_t j = i;
+        std::size_t best = i;
+        while (j < n - trim && (s == 0 ? v[j] == 0.0 : s * v[j] > 0.0)) {
+            if (s * force(j) > s * force(best))
+                best = j;
+            ++j;
+        }
+        for (std::size_t k = i; k < j; ++k)
+            strokePeak[k] = s == 0 ? n : best;
+        i = j;
+    }
+    std::vector<std::size_t> kept;
+    for (int s : {1, -1}) {
+        std::vector<std::size_t> all, seeds;
+        for (std::size_t i : rows) {
+            if (s * v[i] <= 0.0)
+                continue;
+            all.push_back(i);
+            if (strokePeak[i] < n && i >= strokePeak[i] + std::size_t(std::max(1, w)) && v[i] * a[i] <= 0.0)
+                seeds.push_back(i);
+        }
+        auto fitOf = [&](const std::vector<std::size_t>& idx) {
+            std::vector<double> vv, ff;
+            for (std::size_t i : idx) {
+                vv.push_back(v[i]);
+                ff.push_back(force(i));
+            }
+            return lineThrough(vv, ff);
+        };
+        std::vector<std::size_t> current = seeds.size() >= 20 ? seeds : all;
+        for (int iteration = 0; iteration < 12; ++iteration) {
+            const auto l = fitOf(current);
+            if (!l)
+                break;
+            std::vector<double> dev;
+            for (std::size_t i : current)
+                dev.push_back(std::fabs(force(i) - l->c - l->b * v[i]));
+            const auto mid = dev.begin() + std::ptrdiff_t(dev.size() / 2);
+            std::nth_element(dev.begin(), mid, dev.end());
+            const double sigma = 1.4826 * *mid;
+            std::vector<std::size_t> next;
+            for (std::size_t i : all)
+                if (std::fabs(force(i) - l->c - l->b * v[i]) <= 3.0 * sigma)
+                    next.push_back(i);
+            if (next.size() < 20 || next == current)
+                break;
+            current = std::move(next);
+        }
+        kept.insert(kept.end(), current.begin(), current.end());
+    }
+    std::sort(kept.begin(), kept.end());
+    return kept;
+}
+
 }  // namespace
 
 BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
@@ -236,14 +306,18 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         notSliding[i + 1] = notSliding[i] + (sliding(i) ? 0 : 1);
     const std::size_t reach = std::size_t(w / 2 + 1);
     std::vector<std::size_t> rows;
-    std::size_t pos = 0, neg = 0;
     for (std::size_t i = trim; i < n - trim; ++i) {
         const std::size_t lo = i >= reach ? i - reach : 0, hi = std::min(n, i + reach + 1);
         if (notSliding[hi] - notSliding[lo] != 0)
             continue;
         rows.push_back(i);
-        (v[i] > 0.0 ? pos : neg) += 1;
     }
+    const double mass0 = options.estimateMass ? 0.0 : options.mass_kg;
+    if (!usePhases)
+        rows = consistentlySliding(rows, v, a, f, mass0, trim, w);
+    std::size_t pos = 0, neg = 0;
+    for (std::size_t i : rows)
+        (v[i] > 0.0 ? pos : neg) += 1;
     if (pos == 0 && neg == 0)
         throw FitError(usePhases ? nb::TrCore::tr("no phase-c samples moving faster than the zero-velocity band")
                                  : nb::TrCore::tr("no motion: no sample moves faster than the zero-velocity band (%1 m/s)")

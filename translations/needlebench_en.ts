@@ -2852,7 +2852,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+84"/>
+        <location filename="../app/cmd_fit.cpp" line="+85"/>
         <location line="+49"/>
         <location line="+126"/>
         <location filename="../app/cmd_plan.cpp" line="+75"/>
@@ -3344,7 +3344,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+105"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -3400,7 +3400,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>peak speeds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>%1: D from %2, rms %3 N
 </source>
         <translation type="unfinished"></translation>
@@ -3418,7 +3428,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5
 </source>
         <translation type="unfinished"></translation>
@@ -3430,7 +3440,25 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %): the tissue moves while the needle slows, so this run&apos;s sliding line is tilted; prefer the peak-speed line
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>peak-speed line: C and b through the top speeds of %1 runs (%2 to %3 mm/s), where the needle does not accelerate and the tissue rests against the plate; standard errors per length: Cp ±%4, bp ±%5, Cn ±%6, bn ±%7
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+7"/>
+        <source>no peak-speed line: it needs two runs or more whose top speeds differ by a fifth or more (e.g. the same slab at 0.2, 0.5 and 0.8 Hz)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Usage: needlebench fit calibration FILE.csv [--json]
        needlebench fit stiffness RUN.csv... [--json]
        needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass]
@@ -4460,13 +4488,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
-        <location line="+13"/>
+        <location line="+38"/>
+        <location line="+19"/>
         <source>%1: no friction fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+50"/>
         <source>%1: no validation (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4478,12 +4506,12 @@ Commands:
     <message>
         <location line="+2"/>
         <location line="+50"/>
-        <location line="+55"/>
+        <location line="+63"/>
         <source>run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-112"/>
         <location line="+26"/>
         <source>tissue</source>
         <translation type="unfinished"></translation>
@@ -4500,13 +4528,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-134"/>
-        <location line="+135"/>
+        <location line="-153"/>
+        <location line="+154"/>
         <source>puncture force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-191"/>
+        <location line="-210"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4516,12 +4544,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>no tissue contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+131"/>
         <source>outlier</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4658,7 +4686,22 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
+        <source>peak speeds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>peak speeds, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Summed model against the recorded insertions (Fig. 38)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5027,7 +5070,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+196"/>
+        <location filename="../core/friction_fit.cpp" line="+266"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5478,7 +5521,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+42"/>
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation type="unfinished"></translation>
     </message>

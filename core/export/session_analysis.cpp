@@ -134,6 +134,7 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a, const AnalysisOption
 void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions& options)
 {
     std::vector<FrictionFit> fits;
+    std::vector<std::pair<QString, RunPeaks>> peaks;  // per length, by tissue
     for (const DatasetRun& r : d.runs) {
         if (runKind(r.run) != RunKind::Sinusoid || !judged(r, a, options))
             continue;
@@ -152,6 +153,12 @@ void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions
                 f.phases = phasePerSample(r.labels, r.run.time_s);
             f.fit = fitFriction(r.run, o, f.phases);
             fits.push_back(f.fit);
+            // Per unit length, so slabs of different thickness share the line.
+            RunPeaks p = peakPoints(r.run, o);
+            for (std::optional<PeakPoint>* side : {&p.positive, &p.negative})
+                if (*side)
+                    (*side)->force_N /= o.thickness_mm / 1000.0;
+            peaks.emplace_back(tissueOf(r.run), p);
         } catch (const FitError& e) {
             f.error = e.message();
             a.warnings << nb::TrCore::tr("%1: no friction fit (%2)").arg(r.name, e.message());
@@ -161,6 +168,18 @@ void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions
     if (!fits.empty()) {
         a.frictionGroups = groupByFrequency(fits);
         a.frictionOverall = overall(fits);
+    }
+    QStringList tissues;
+    for (const auto& [tissue, p] : peaks)
+        if (!tissues.contains(tissue))
+            tissues << tissue;
+    for (const QString& tissue : tissues) {
+        std::vector<RunPeaks> mine;
+        for (const auto& [t, p] : peaks)
+            if (t == tissue)
+                mine.push_back(p);
+        if (const auto line = peakSpeedLine(mine))
+            a.frictionPeakLines.push_back({tissue, *line});
     }
 }
 
@@ -342,6 +361,14 @@ FitTable frictionSummaryTable(const SessionAnalysis& a)
         add(QStringLiteral("%1Hz").arg(g.frequency_hz, 0, 'g', 3), g);
     if (a.frictionOverall)
         add(nb::TrCore::tr("overall"), *a.frictionOverall);
+    for (const auto& [tissue, line] : a.frictionPeakLines) {
+        // Already per unit length (see analyseFriction); D is not defined by the line.
+        const KarnoppModel& k = line.model;
+        std::vector<TableCell> row{tissue.isEmpty() ? nb::TrCore::tr("peak speeds") : nb::TrCore::tr("peak speeds, %1").arg(tissue),
+                                   nb::TrCore::tr("line"), std::nan(""), double(line.runs)};
+        appendKarnopp(row, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, std::nan(""), std::nan("")});
+        t.rows.push_back(std::move(row));
+    }
     return t;
 }
 

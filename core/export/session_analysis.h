@@ -10,6 +10,7 @@
 
 #include "core/events.h"
 #include "core/friction_fit.h"
+#include "core/friction_peak_line.h"
 #include "core/insertion_model.h"
 #include "core/stiffness_fit.h"
 
@@ -68,6 +69,13 @@ struct SessionAnalysis {
     std::vector<FrictionRunResult> friction;
     std::vector<FrictionGroup> frictionGroups;
     std::optional<FrictionGroup> frictionOverall;
+    // Per tissue, C and b through the runs' peak speeds (core/friction_peak_line.h), per unit
+    // length; only for tissues whose runs span frequencies enough to make the line.
+    struct FrictionPeakLine {
+        QString tissue;
+        PeakSpeedLine line;
+    };
+    std::vector<FrictionPeakLine> frictionPeakLines;
     std::vector<ValidationResult> validation;
     QStringList warnings;  // one line per run that could not be fitted, naming it
     QStringList leftOut;   // "run: reason" per run judged out (core/run_judgement.h)

@@ -1,0 +1,58 @@
+#pragma once
+// Dynamic friction C and damping b through the peak speeds of several sinusoidal runs of one
+// slab (models.md section 5, the thesis's 0.2 / 0.5 / 0.8 Hz protocol).
+//
+// Why: a single run's sliding line assumes the tissue rests in phase c, so that the relative
+// velocity is the needle's. A compliant slab does not: as the needle slows, friction falls
+// and the tissue springs back off the plate, the relative velocity exceeds the needle's and
+// the line tilts (C high, b low; a quarter too high for a slab with C small against b, like
+// the thesis's Table 4 liver). At the top of a stroke the needle does not accelerate and the
+// tissue, come to rest against the plate, has not yet begun to spring back: there the force
+// is C + b·v with v the needle's own speed, whatever the band and however soft the tissue.
+// Runs at different frequencies put that point at different speeds; the line through them
+// gives C and b.
+
+#include "friction_fit.h"
+#include "run.h"
+
+#include <optional>
+#include <span>
+
+namespace nb {
+
+// One direction's peak: the mean needle speed and force (the holder's mass removed, as
+// measured: negative for - motion) over the samples just past the top speed.
+struct PeakPoint {
+    double speed_m_s = 0.0;
+    double force_N = 0.0;
+    std::size_t samples = 0;
+    // False when the force went on rising well past the top speed: the tissue was still
+    // carried or arriving at the plate there (wide band, large gap, short stroke), so the
+    // point is not on the sliding line and the line leaves it out.
+    bool settled = true;
+};
+struct RunPeaks {
+    std::optional<PeakPoint> positive, negative;
+};
+// Uses the fit's smoothing, trimming and mass. Empty sides when a direction never moves.
+RunPeaks peakPoints(const Run& run, const FrictionOptions& options);
+
+struct PeakSpeedLine {
+    KarnoppModel model;          // C and b only; D and the band are not defined by this line
+    double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;  // 0 with two runs
+    std::size_t runs = 0;        // runs with a settled peak in at least one direction
+    double slowest_m_s = 0.0, fastest_m_s = 0.0;  // the peak speeds spanned
+};
+// Per direction, from the runs whose peak in that direction settled; nullopt when a direction
+// has fewer than two such runs or their peak speeds differ by less than a fifth (the line
+// would be an extrapolation from one point).
+std::optional<PeakSpeedLine> peakSpeedLine(std::span<const RunPeaks> runs);
+
+// How far (percent of the line's value) a run's own C departs from the line's, per direction.
+struct LineDeparture {
+    double Cp_percent = 0.0, Cn_percent = 0.0;
+    bool significant = false;  // beyond 5 % and three standard errors of both
+};
+LineDeparture departureFromLine(const FrictionFit& fit, const PeakSpeedLine& line);
+
+}  // namespace nb
