@@ -5,6 +5,7 @@
 #include "core/export/label_intervals.h"
 #include "core/export/run_csv_export.h"
 #include "core/export/session_hdf5.h"
+#include "support/hdf5_attributes.h"
 
 #include <QDir>
 #include <QJsonArray>
@@ -133,35 +134,14 @@ QStringList readStrings(hid_t file, const char* path)
     return out;
 }
 
+// Fixed-length strings only (Octave and MATLAB need them): a variable-length one reads as such.
 QString readStringAttr(hid_t obj, const char* name)
 {
-    const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
-    if (a < 0)
-        return QStringLiteral("<missing>");
-    const hid_t t = H5Aget_type(a);
-    QString out = QStringLiteral("<unreadable>");
-    if (H5Tget_class(t) == H5T_STRING && H5Tis_variable_str(t) == 0) {
-        std::vector<char> buf(H5Tget_size(t) + 1, '\0');
-        if (H5Aread(a, t, buf.data()) >= 0)
-            out = QString::fromUtf8(buf.data());
-    } else if (H5Tget_class(t) == H5T_STRING) {
-        out = QStringLiteral("<variable-length>");
-    }
-    H5Tclose(t);
-    H5Aclose(a);
-    return out;
+    const nbtest::StringAttribute a = nbtest::readStringAttribute(obj, name);
+    return a.variableLength ? QStringLiteral("<variable-length>") : a.text;
 }
 
-double readDoubleAttr(hid_t obj, const char* name)
-{
-    const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
-    if (a < 0)
-        return std::nan("");
-    double v = std::nan("");
-    H5Aread(a, H5T_NATIVE_DOUBLE, &v);
-    H5Aclose(a);
-    return v;
-}
+double readDoubleAttr(hid_t obj, const char* name) { return nbtest::readDoubleAttribute(obj, name); }
 
 QStringList filesIn(const QString& dir) { return QDir(dir).entryList(QDir::Files | QDir::Hidden); }
 

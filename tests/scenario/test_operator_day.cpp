@@ -4,6 +4,7 @@
 // restart) → the video, offset, drift, how they were found and the labels are all back →
 // export HDF5 from the window → read back with the HDF5 C API: offset and video link present.
 #include "main_window.h"
+#include "support/hdf5_attributes.h"
 #include "support/simulated_window.h"
 
 #include "core/export/session_hdf5.h"
@@ -62,45 +63,6 @@ void prepare(nb::MainWindow& w)
     QTest::mouseClick(p->button(Control::Zero), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
     QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), 20000);
-}
-
-QString readStringAttribute(hid_t obj, const char* name)
-{
-    const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
-    if (a < 0)
-        return QStringLiteral("<missing>");
-    const hid_t stored = H5Aget_type(a);
-    QString out = QStringLiteral("<unreadable>");
-    if (H5Tis_variable_str(stored) > 0) {
-        const hid_t t = H5Tcopy(H5T_C_S1);
-        H5Tset_size(t, H5T_VARIABLE);
-        H5Tset_cset(t, H5Tget_cset(stored));
-        char* s = nullptr;
-        if (H5Aread(a, t, &s) >= 0 && s)
-            out = QString::fromUtf8(s);
-        if (s)
-            H5free_memory(s);
-        H5Tclose(t);
-    } else {
-        // Fixed-length, as the exporter writes for Octave and MATLAB.
-        QByteArray buffer(int(H5Tget_size(stored)), '\0');
-        if (H5Aread(a, stored, buffer.data()) >= 0)
-            out = QString::fromUtf8(buffer.constData(), qstrnlen(buffer.constData(), buffer.size()));
-    }
-    H5Tclose(stored);
-    H5Aclose(a);
-    return out;
-}
-
-double readDoubleAttribute(hid_t obj, const char* name)
-{
-    const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
-    if (a < 0)
-        return std::nan("");
-    double v = std::nan("");
-    H5Aread(a, H5T_NATIVE_DOUBLE, &v);
-    H5Aclose(a);
-    return v;
 }
 
 }  // namespace
@@ -310,10 +272,10 @@ private slots:
             const QByteArray group = (QStringLiteral("/runs/") + nb::hdf5GroupName(QFileInfo(sinePath).completeBaseName())).toUtf8();
             const hid_t g = H5Gopen2(f, group.constData(), H5P_DEFAULT);
             QVERIFY2(g >= 0, group.constData());
-            const double offset = readDoubleAttribute(g, "sync_offset_s");
-            const QString video = readStringAttribute(g, "video_file");
-            const QString method = readStringAttribute(g, "sync_method");
-            const double driftRead = readDoubleAttribute(g, "sync_drift");
+            const double offset = nbtest::readDoubleAttribute(g, "sync_offset_s");
+            const QString video = nbtest::readStringAttribute(g, "video_file").text;
+            const QString method = nbtest::readStringAttribute(g, "sync_method").text;
+            const double driftRead = nbtest::readDoubleAttribute(g, "sync_drift");
             H5Gclose(g);
             H5Fclose(f);
             QVERIFY2(std::abs(offset - accepted.offset_s) < 1e-9, qPrintable(QString::number(offset)));
