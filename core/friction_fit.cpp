@@ -455,6 +455,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     }
 
     const double L = options.thickness_mm / 1000.0;
+    fit.thickness_mm = options.thickness_mm;
     fit.perLength = {fit.model.Cp_N / L, fit.model.Cn_N / L, fit.model.bp_Ns_per_m / L,
                      fit.model.bn_Ns_per_m / L, fit.model.Dp_N / L,  fit.model.Dn_N / L};
     const auto metaF = run.meta(QStringLiteral("frequency_hz"));

@@ -27,6 +27,7 @@ struct FrictionOptions {
 struct FrictionFit {
     KarnoppModel model;              // C, b from sliding samples; D from sticking ones
     KarnoppPerLength perLength;      // divided by the thickness in m
+    double thickness_mm = 0.0;       // the length of needle in tissue used
     std::optional<double> massEstimate_kg;  // eq. 19 only
     double frequency_hz = 0.0;       // metadata `frequency_hz`, else estimated from position
     double rms_N = 0.0;              // of the sliding-sample residuals

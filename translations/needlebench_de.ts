@@ -39,18 +39,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38" />
-        <location line="+333" />
+        <location line="+345" />
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-332" />
-        <location line="+333" />
+        <location line="-344" />
+        <location line="+345" />
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-297" />
+        <location line="-309" />
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -117,7 +117,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Ausreißer:</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+5" />
+        <source>%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %); see Friction ▸ Summary</source>
+        <translation>%1: C weicht von der Geraden durch die Spitzengeschwindigkeiten ab (Cp %2 %, Cn %3 %); siehe Reibung ▸ Zusammenfassung</translation>
+    </message>
+    <message>
+        <location line="+28" />
         <source>left out by default: %1</source>
         <translation>standardmäßig ausgelassen: %1</translation>
     </message>
@@ -4570,13 +4575,13 @@ Befehle:
         <translation>%1: kein gepoolter Steifigkeitsfit (%2)</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+39" />
         <location line="+19" />
         <source>%1: no friction fit (%2)</source>
         <translation>%1: kein Reibungsfit (%2)</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+64" />
         <source>%1: no validation (%2)</source>
         <translation>%1: keine Validierung (%2)</translation>
     </message>
@@ -4610,13 +4615,13 @@ Befehle:
         <translation>Durchstichtiefe</translation>
     </message>
     <message>
-        <location line="-153" />
-        <location line="+154" />
+        <location line="-168" />
+        <location line="+169" />
         <source>puncture force</source>
         <translation>Durchstichkraft</translation>
     </message>
     <message>
-        <location line="-210" />
+        <location line="-225" />
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4626,12 +4631,12 @@ Befehle:
         <translation>Modellkraft bei %1 mm</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+26" />
         <source>no tissue contact</source>
         <translation>kein Gewebekontakt</translation>
     </message>
     <message>
-        <location line="+131" />
+        <location line="+145" />
         <source>outlier</source>
         <translation>Ausreißer</translation>
     </message>
@@ -6579,8 +6584,8 @@ Befehle:
     </message>
     <message>
         <location line="-109" />
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-541" />
-        <location line="+348" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-553" />
+        <location line="+360" />
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>
     </message>
@@ -6714,7 +6719,7 @@ F = %1 x + %2 x²
         <translation>%1 teilen</translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-344" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-356" />
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>

@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+333"/>
+        <location line="+345"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-332"/>
-        <location line="+333"/>
+        <location line="-344"/>
+        <location line="+345"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-309"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -117,7 +117,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+5"/>
+        <source>%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %); see Friction ▸ Summary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>left out by default: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4488,13 +4493,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <location line="+19"/>
         <source>%1: no friction fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+64"/>
         <source>%1: no validation (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4528,13 +4533,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-153"/>
-        <location line="+154"/>
+        <location line="-168"/>
+        <location line="+169"/>
         <source>puncture force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-225"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4544,12 +4549,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>no tissue contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+131"/>
+        <location line="+145"/>
         <source>outlier</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6497,8 +6502,8 @@ Commands:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-541"/>
-        <location line="+348"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-553"/>
+        <location line="+360"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6630,7 +6635,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-344"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-356"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>

@@ -140,6 +140,7 @@ void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions
             continue;
         FrictionRunResult f;
         f.run = r.name;
+        f.tissue = tissueOf(r.run);
         if (!touchedTissue(r.run)) {  // even when asked to include it: air has no friction
             f.error = nb::TrCore::tr("no tissue contact");
             a.warnings << nb::TrCore::tr("%1: no friction fit (%2)").arg(r.name, f.error);
@@ -158,7 +159,7 @@ void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions
             for (std::optional<PeakPoint>* side : {&p.positive, &p.negative})
                 if (*side)
                     (*side)->force_N /= o.thickness_mm / 1000.0;
-            peaks.emplace_back(tissueOf(r.run), p);
+            peaks.emplace_back(f.tissue, p);
         } catch (const FitError& e) {
             f.error = e.message();
             a.warnings << nb::TrCore::tr("%1: no friction fit (%2)").arg(r.name, e.message());
@@ -178,8 +179,22 @@ void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions
         for (const auto& [t, p] : peaks)
             if (t == tissue)
                 mine.push_back(p);
-        if (const auto line = peakSpeedLine(mine))
-            a.frictionPeakLines.push_back({tissue, *line});
+        const auto line = peakSpeedLine(mine);
+        if (!line)
+            continue;
+        a.frictionPeakLines.push_back({tissue, *line});
+        for (FrictionRunResult& f : a.friction) {
+            if (!f.ok() || f.tissue != tissue)
+                continue;
+            // The line is per unit length, the run's C in N.
+            const double L = f.fit.thickness_mm / 1000.0;
+            PeakSpeedLine inN = *line;
+            inN.model.Cp_N *= L;
+            inN.model.Cn_N *= L;
+            inN.seCp_N *= L;
+            inN.seCn_N *= L;
+            f.peakLineDeparture = departureFromLine(f.fit, inN);
+        }
     }
 }
 

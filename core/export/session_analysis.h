@@ -51,6 +51,9 @@ struct FrictionRunResult {
     QString error;
     FrictionFit fit;
     QStringList phases;  // per sample, as used for the fit (empty when the velocity band decided)
+    QString tissue;      // what the run is grouped by
+    // Against its tissue's line through the peak speeds, when there is one.
+    std::optional<LineDeparture> peakLineDeparture;
     bool ok() const { return error.isEmpty(); }
 };
 

@@ -353,11 +353,23 @@ void AnalysisWorkspace::recompute()
             outliers << tr("%1: %2").arg(r.run, r.outlierReason);
     if (!outliers.isEmpty())
         lines << tr("Outliers:") << outliers;
+    // A run whose own C is off the line through the peak speeds (the tissue moving as the
+    // needle slows) is named: its row in the table looks as good as the others.
+    for (const FrictionRunResult& f : analysis_.friction)
+        if (f.peakLineDeparture && f.peakLineDeparture->significant)
+            lines << tr("%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %); see Friction ▸ Summary")
+                         .arg(f.run, QLocale().toString(f.peakLineDeparture->Cp_percent, 'f', 1),
+                              QLocale().toString(f.peakLineDeparture->Cn_percent, 'f', 1));
     if (!analysis_.warnings.isEmpty())
         lines << analysis_.warnings;
     status_->setText(lines.join(QLatin1Char('\n')));
     markJudgedRuns();
     refreshViews();
+    // Open on what there is: friction runs only, the Friction page; insertions only, Stiffness.
+    if (tabs_->currentIndex() == 0 && analysis_.stiffness.empty() && !analysis_.friction.empty())
+        tabs_->setCurrentIndex(1);
+    else if (tabs_->currentIndex() == 1 && analysis_.friction.empty() && !analysis_.stiffness.empty())
+        tabs_->setCurrentIndex(0);
     emit analysisUpdated();
 }
 
