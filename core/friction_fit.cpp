@@ -25,6 +25,19 @@ struct Extremes {
 
 }  // namespace
 
+ConditionedSignals conditionSignals(const Run& run, double smoothing_s)
+{
+    ConditionedSignals c;
+    c.window = windowForDuration(run.time_s, smoothing_s);
+    const std::vector<double> x = movingAverage(run.position_mm, c.window);
+    c.v_m_s = movingAverage(derivative(run.time_s, x), c.window);
+    for (double& e : c.v_m_s)
+        e /= 1000.0;  // mm/s -> m/s
+    c.a_m_s2 = movingAverage(derivative(run.time_s, c.v_m_s), c.window);
+    c.force_N = movingAverage(run.force_N, c.window);
+    return c;
+}
+
 double estimateFrequency(const Run& run)
 {
     const std::size_t n = run.size();
@@ -160,13 +173,11 @@ BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
     const std::size_t trim = std::size_t(std::max(0, options.trimSamples));
     if (n < 2 * trim + 50)
         throw FitError(nb::TrCore::tr("too few samples (%1) to find the zero-velocity band").arg(n));
-    const int w = windowForDuration(run.time_s, options.smoothing_s);
-    const std::vector<double> x = movingAverage(run.position_mm, w);
-    std::vector<double> v = movingAverage(derivative(run.time_s, x), w);
-    for (double& e : v)
-        e /= 1000.0;
-    const std::vector<double> a = movingAverage(derivative(run.time_s, v), w);
-    const std::vector<double> f = movingAverage(run.force_N, w);
+    const ConditionedSignals c = conditionSignals(run, options.smoothing_s);
+    const int w = c.window;
+    const std::vector<double>& v = c.v_m_s;
+    const std::vector<double>& a = c.a_m_s2;
+    const std::vector<double>& f = c.force_N;
     std::vector<double> speeds;
     for (std::size_t i = trim; i < n - trim; ++i)
         speeds.push_back(std::fabs(v[i]));
@@ -279,14 +290,11 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     if (!phases.isEmpty() && phases.size() != qsizetype(n))
         throw FitError(nb::TrCore::tr("%1 phase names for %2 samples").arg(phases.size()).arg(n));
 
-    // The thesis's conditioning: smooth, differentiate, smooth again.
-    const int w = windowForDuration(run.time_s, options.smoothing_s);
-    const std::vector<double> x = movingAverage(run.position_mm, w);
-    std::vector<double> v = movingAverage(derivative(run.time_s, x), w);
-    for (double& e : v)
-        e /= 1000.0;  // mm/s -> m/s
-    const std::vector<double> a = movingAverage(derivative(run.time_s, v), w);
-    const std::vector<double> f = movingAverage(run.force_N, w);
+    const ConditionedSignals c = conditionSignals(run, options.smoothing_s);
+    const int w = c.window;
+    const std::vector<double>& v = c.v_m_s;
+    const std::vector<double>& a = c.a_m_s2;
+    const std::vector<double>& f = c.force_N;
 
     const double half = options.band_m_s / 2.0;
     // A found band may differ between speeding up (after a turning point the tissue is

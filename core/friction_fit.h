@@ -66,6 +66,15 @@ struct BandEstimate {
 BandEstimate estimateBand(const Run& run, const FrictionOptions& options);
 double estimateBand_m_s(const Run& run, const FrictionOptions& options);  // the wider of the two
 
+// The thesis's conditioning (models.md 5, step 1): position and force smoothed with a moving
+// average of `smoothing_s`, velocity and acceleration differentiated from the smoothed position
+// and smoothed again. SI units.
+struct ConditionedSignals {
+    int window = 1;                       // samples in the moving average
+    std::vector<double> v_m_s, a_m_s2, force_N;
+};
+ConditionedSignals conditionSignals(const Run& run, double smoothing_s);
+
 // Frequency of a sinusoidal position signal from its mean crossings; 0 when fewer than
 // two crossings.
 double estimateFrequency(const Run& run);

@@ -1,6 +1,5 @@
 #include "friction_peak_line.h"
 
-#include "signal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,13 +63,11 @@ RunPeaks peakPoints(const Run& run, const FrictionOptions& options)
     const std::size_t trim = std::size_t(std::max(0, options.trimSamples));
     if (n < 2 * trim + 20)
         return peaks;
-    const int w = windowForDuration(run.time_s, options.smoothing_s);
-    const std::vector<double> x = movingAverage(run.position_mm, w);
-    std::vector<double> v = movingAverage(derivative(run.time_s, x), w);
-    for (double& e : v)
-        e /= 1000.0;
-    const std::vector<double> a = movingAverage(derivative(run.time_s, v), w);
-    const std::vector<double> f = movingAverage(run.force_N, w);
+    const ConditionedSignals c = conditionSignals(run, options.smoothing_s);
+    const int w = c.window;
+    const std::vector<double>& v = c.v_m_s;
+    const std::vector<double>& a = c.a_m_s2;
+    const std::vector<double>& f = c.force_N;
     const double mass = options.estimateMass ? 0.0 : options.mass_kg;
     // The smoothed force's own noise, from the sample-to-sample steps of the raw force (their
     // median: the stick-slip jumps are few and must not count), shrunk by the window.
