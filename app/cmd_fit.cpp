@@ -326,6 +326,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
         const KarnoppModel& k = fits.back().model;
         requireFinite(path, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, k.Dp_N, k.Dn_N, fits.back().rms_N});
         peaks.push_back(peakPoints(run, options));
+        checkAgainstFit(peaks.back(), fits.back());
     }
     const auto groups = groupByFrequency(fits);
     const FrictionGroup all = overall(fits);

@@ -73,12 +73,12 @@ void printRigFriction(QTextStream& out, unsigned seed, int count, const QString&
         for (std::size_t k = 0; k < 3; ++k) {
             runC.push_back(100 * o.runErrC[k]);
             runB.push_back(100 * o.runErrB[k]);
-            if (o.runErrC[k] > 0.05) {
+            if (o.runErrC[k] > 0.05 || o.runErrB[k] > 0.15) {
                 ++offRuns;
-                offFlagged += o.runDeparts[k];
+                offFlagged += o.runDeparts[k] || o.runFlagged[k];
             }
-            runs += QStringLiteral(" %1/%2%3").arg(100 * o.runErrC[k], 0, 'f', 1).arg(100 * o.runErrB[k], 0, 'f', 1)
-                        .arg(o.runDeparts[k] ? QStringLiteral("*") : QString());
+            runs += QStringLiteral(" %1/%2%3%4").arg(100 * o.runErrC[k], 0, 'f', 1).arg(100 * o.runErrB[k], 0, 'f', 1)
+                        .arg(o.runDeparts[k] ? QStringLiteral("*") : QString(), o.runFlagged[k] ? QStringLiteral("!") : QString());
         }
         if (o.line) {
             lineC.push_back(100 * o.lineErrC);
@@ -97,8 +97,8 @@ void printRigFriction(QTextStream& out, unsigned seed, int count, const QString&
                .arg(sets.size()).arg(failed).arg(noLine)
                .arg(quantile(lineC, 0.5), 0, 'f', 2).arg(quantile(lineC, 1.0), 0, 'f', 2)
                .arg(quantile(lineB, 0.5), 0, 'f', 2).arg(quantile(lineB, 1.0), 0, 'f', 2);
-    out << QStringLiteral("  single runs: C error p50 %1 %, max %2 %; b error p50 %3 %, max %4 %; %5 runs off by more than 5 % in C, "
-                          "%6 of them flagged as departing from the line (* above)\n")
+    out << QStringLiteral("  single runs: C error p50 %1 %, max %2 %; b error p50 %3 %, max %4 %; %5 runs off by more than 5 % in C "
+                          "or 15 % in b, %6 of them flagged (* departs from the line, ! not physical or not determined)\n")
                .arg(quantile(runC, 0.5), 0, 'f', 2).arg(quantile(runC, 1.0), 0, 'f', 2)
                .arg(quantile(runB, 0.5), 0, 'f', 2).arg(quantile(runB, 1.0), 0, 'f', 2)
                .arg(offRuns).arg(offFlagged);

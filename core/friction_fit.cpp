@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <random>
 
 namespace nb {
 
@@ -35,6 +36,17 @@ ConditionedSignals conditionSignals(const Run& run, double smoothing_s)
         e /= 1000.0;  // mm/s -> m/s
     c.a_m_s2 = movingAverage(derivative(run.time_s, c.v_m_s), c.window);
     c.force_N = movingAverage(run.force_N, c.window);
+    // From the sample-to-sample steps of the raw force, their median: the stick-slip jumps are
+    // few and must not count.
+    std::vector<double> steps;
+    for (std::size_t i = 1; i < run.force_N.size(); ++i)
+        if (std::isfinite(run.force_N[i]) && std::isfinite(run.force_N[i - 1]))
+            steps.push_back(std::fabs(run.force_N[i] - run.force_N[i - 1]));
+    if (!steps.empty()) {
+        const auto mid = steps.begin() + std::ptrdiff_t(steps.size() / 2);
+        std::nth_element(steps.begin(), mid, steps.end());
+        c.noise_N = *mid / 0.6745 / std::sqrt(2.0) / std::sqrt(double(std::max(1, c.window)));
+    }
     return c;
 }
 
@@ -96,41 +108,56 @@ std::optional<Line> lineThrough(const std::vector<double>& v, const std::vector<
 }
 
 // Without phases the band alone decides what slides, and it cannot see a stroke where the
-// tissue is carried, still arriving at the plate or ringing against it (short strokes, large
-// gaps, wide bands): those samples lie off the sliding line, below it while the tissue moves
-// with the needle, above it in the overshoot. So per direction the line is started from the
-// samples that surely slide (slowing down, after the stroke's largest force: the tissue has
-// met the plate by then) and grown to every candidate that follows it, the others dropped.
+// tissue is carried, still arriving at the plate, ringing against it or held by it as the
+// needle stops (short strokes, large gaps, wide bands): those samples lie off the sliding
+// line. So per direction the line is started from the one most slowing-down samples follow
+// (a consensus of lines through pairs of them, within the force's noise; carried samples
+// mostly speed up, and no other stretch is a line with C > 0 and b > 0), then grown to every
+// candidate that follows it, the others dropped.
 std::vector<std::size_t> consistentlySliding(const std::vector<std::size_t>& rows, const std::vector<double>& v,
                                              const std::vector<double>& a, const std::vector<double>& f, double mass,
-                                             std::size_t trim, int w)
+                                             double noise_N)
 {
-    const std::size_t n = v.size();
     auto force = [&](std::size_t i) { return f[i] - mass * a[i]; };
-    // Index of the largest force (in the direction of motion) of the stroke each sample is in.
-    std::vector<std::size_t> strokePeak(n, n);
-    for (std::size_t i = trim; i < n - trim;) {
-        const int s = v[i] > 0.0 ? 1 : v[i] < 0.0 ? -1 : 0;
-        std::size_t j = i;
-        std::size_t best = i;
-        while (j < n - trim && (s == 0 ? v[j] == 0.0 : s * v[j] > 0.0)) {
-            if (s * force(j) > s * force(best))
-                best = j;
-            ++j;
-        }
-        for (std::size_t k = i; k < j; ++k)
-            strokePeak[k] = s == 0 ? n : best;
-        i = j;
-    }
+    std::mt19937 rng(20021);  // fixed: the same run always gives the same fit
     std::vector<std::size_t> kept;
     for (int s : {1, -1}) {
-        std::vector<std::size_t> all, seeds;
+        std::vector<std::size_t> all, slowing;
         for (std::size_t i : rows) {
             if (s * v[i] <= 0.0)
                 continue;
             all.push_back(i);
-            if (strokePeak[i] < n && i >= strokePeak[i] + std::size_t(std::max(1, w)) && v[i] * a[i] <= 0.0)
-                seeds.push_back(i);
+            if (v[i] * a[i] <= 0.0)
+                slowing.push_back(i);
+        }
+        std::vector<std::size_t> seeds;
+        if (slowing.size() >= 20) {
+            double lo = INFINITY, hi = 0.0, top = 0.0;
+            for (std::size_t i : slowing) {
+                lo = std::min(lo, std::fabs(v[i]));
+                hi = std::max(hi, std::fabs(v[i]));
+                top = std::max(top, std::fabs(force(i)));
+            }
+            const double tolerance = 3.0 * noise_N + 0.002 * top;
+            std::uniform_int_distribution<std::size_t> pick(0, slowing.size() - 1);
+            std::size_t bestCount = 0;
+            for (int trial = 0; trial < 300; ++trial) {
+                const std::size_t i = slowing[pick(rng)], j = slowing[pick(rng)];
+                if (std::fabs(v[i] - v[j]) < 0.25 * (hi - lo))
+                    continue;
+                const double b = (force(i) - force(j)) / (v[i] - v[j]);
+                const double c = force(i) - b * v[i];
+                if (!(b > 0.0) || !(s * c > 0.0))
+                    continue;
+                std::vector<std::size_t> inliers;
+                for (std::size_t k : slowing)
+                    if (std::fabs(force(k) - c - b * v[k]) <= tolerance)
+                        inliers.push_back(k);
+                if (inliers.size() > bestCount) {
+                    bestCount = inliers.size();
+                    seeds = std::move(inliers);
+                }
+            }
         }
         auto fitOf = [&](const std::vector<std::size_t>& idx) {
             std::vector<double> vv, ff;
@@ -322,7 +349,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     }
     const double mass0 = options.estimateMass ? 0.0 : options.mass_kg;
     if (!usePhases)
-        rows = consistentlySliding(rows, v, a, f, mass0, trim, w);
+        rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N);
     std::size_t pos = 0, neg = 0;
     for (std::size_t i : rows)
         (v[i] > 0.0 ? pos : neg) += 1;
@@ -451,6 +478,17 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         flag("bp", nb::TrCore::tr("bp < 0: damping cannot feed energy in"));
     if (fit.model.bn_Ns_per_m < 0.0)
         flag("bn", nb::TrCore::tr("bn < 0: damping cannot feed energy in"));
+    // A line through too narrow a range of sliding speeds leaves its slope, and with it C, to
+    // the noise: not a result either (b = 1.8 ± 2.5 from a run that slides between 4.6 and 6.8 mm/s).
+    auto undetermined = [&](const char* c, const char* b, double slope, double se) {
+        if (se > 0.25 * std::fabs(slope)) {
+            flag(b, nb::TrCore::tr("%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds")
+                        .arg(QString::fromLatin1(b)).arg(slope, 0, 'g', 3).arg(se, 0, 'g', 2));
+            flag(c, nb::TrCore::tr("%1 rests on an undetermined %2").arg(QString::fromLatin1(c), QString::fromLatin1(b)));
+        }
+    };
+    undetermined("Cp", "bp", fit.model.bp_Ns_per_m, fit.seBp_Ns_per_m);
+    undetermined("Cn", "bn", fit.model.bn_Ns_per_m, fit.seBn_Ns_per_m);
     if (fit.staticSource != QLatin1String("none")) {
         if (fit.model.Dp_N <= 0.0)
             flag("Dp", nb::TrCore::tr("Dp is not positive: the static limit in + motion has the wrong sign"));

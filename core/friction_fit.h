@@ -37,7 +37,8 @@ struct FrictionFit {
     double bandSlowingDown_m_s = 0.0;  // found band before turning points (band_m_s: the wider)
     // Standard errors (N, N·s/m), widened for the smoothing (neighbouring samples share noise).
     double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;
-    // Values that cannot be physical (b < 0, C < 0, |D| below C, D of the wrong sign),
+    // Values that cannot be physical (b < 0, C < 0, |D| below C, D of the wrong sign) or that
+    // the run does not determine (b's standard error above a quarter of it, and its C),
     // one sentence each; empty when all are plausible. Such values are not results.
     QStringList notPhysical;
     QStringList notPhysicalValues;   // which: "Cp", "Cn", "bp", "bn", "Dp", "Dn"
@@ -72,6 +73,7 @@ double estimateBand_m_s(const Run& run, const FrictionOptions& options);  // the
 struct ConditionedSignals {
     int window = 1;                       // samples in the moving average
     std::vector<double> v_m_s, a_m_s2, force_N;
+    double noise_N = 0.0;                 // of the smoothed force (robust, from the raw samples)
 };
 ConditionedSignals conditionSignals(const Run& run, double smoothing_s);
 

@@ -69,14 +69,7 @@ RunPeaks peakPoints(const Run& run, const FrictionOptions& options)
     const std::vector<double>& a = c.a_m_s2;
     const std::vector<double>& f = c.force_N;
     const double mass = options.estimateMass ? 0.0 : options.mass_kg;
-    // The smoothed force's own noise, from the sample-to-sample steps of the raw force (their
-    // median: the stick-slip jumps are few and must not count), shrunk by the window.
-    std::vector<double> steps;
-    for (std::size_t i = trim + 1; i < n - trim; ++i)
-        steps.push_back(std::fabs(run.force_N[i] - run.force_N[i - 1]));
-    const auto mid = steps.begin() + std::ptrdiff_t(steps.size() / 2);
-    std::nth_element(steps.begin(), mid, steps.end());
-    const double noise_N = *mid / 0.6745 / std::sqrt(2.0) / std::sqrt(double(std::max(1, w)));
+    const double noise_N = c.noise_N;
 
     for (int sign : {1, -1}) {
         std::vector<double> speeds;
@@ -91,6 +84,7 @@ RunPeaks peakPoints(const Run& run, const FrictionOptions& options)
         const double top = *k;
         double sumV = 0, sumF = 0, sumAfter = 0;
         std::size_t count = 0, after = 0;
+        std::vector<double> atTop;
         for (std::size_t i = trim; i < n - trim; ++i) {
             if (v[i] * a[i] > 0.0 || sign * v[i] < kSlowerAfter * top)
                 continue;
@@ -101,11 +95,16 @@ RunPeaks peakPoints(const Run& run, const FrictionOptions& options)
             }
             sumV += std::fabs(v[i]);
             sumF += f[i] - mass * a[i];
+            atTop.push_back(f[i] - mass * a[i]);
             ++count;
         }
         if (count < kMinSamples || after < kMinSamples || !std::isfinite(sumF) || !std::isfinite(sumAfter))
             continue;
-        PeakPoint p{sumV / double(count), sumF / double(count), count};
+        // The median: a stroke whose tissue arrives at the plate just at the top adds a few
+        // samples below the line, which must not pull the point down.
+        const auto mid = atTop.begin() + std::ptrdiff_t(atTop.size() / 2);
+        std::nth_element(atTop.begin(), mid, atTop.end());
+        PeakPoint p{sumV / double(count), *mid, count};
         // Resting against the plate, the force falls as soon as the needle slows; if it is
         // higher a little later, the tissue had not come to rest at the top.
         const double rise = sign * (sumAfter / double(after) - p.force_N);
@@ -114,6 +113,25 @@ RunPeaks peakPoints(const Run& run, const FrictionOptions& options)
         (sign > 0 ? peaks.positive : peaks.negative) = p;
     }
     return peaks;
+}
+
+void checkAgainstFit(RunPeaks& peaks, const FrictionFit& fit)
+{
+    auto check = [&](std::optional<PeakPoint>& p, bool positive) {
+        if (!p)
+            return;
+        const QStringList own = positive ? QStringList{QStringLiteral("Cp"), QStringLiteral("bp")}
+                                         : QStringList{QStringLiteral("Cn"), QStringLiteral("bn")};
+        for (const QString& name : own)
+            if (fit.notPhysicalValues.contains(name))
+                p->settled = false;
+        const double onLine = positive ? fit.model.Cp_N + fit.model.bp_Ns_per_m * p->speed_m_s
+                                       : -fit.model.Cn_N - fit.model.bn_Ns_per_m * p->speed_m_s;
+        if (std::fabs(p->force_N - onLine) > 0.015 * std::fabs(onLine))
+            p->settled = false;
+    };
+    check(peaks.positive, true);
+    check(peaks.negative, false);
 }
 
 std::optional<PeakSpeedLine> peakSpeedLine(std::span<const RunPeaks> runs)

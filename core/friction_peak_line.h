@@ -37,6 +37,11 @@ struct RunPeaks {
 // Uses the fit's smoothing, trimming and mass. Empty sides when a direction never moves.
 RunPeaks peakPoints(const Run& run, const FrictionOptions& options);
 
+// A peak point must also lie on its own run's sliding line (within 1.5 % of its force): one
+// below it was taken while the tissue still moved with the needle. A direction whose C or b
+// the fit flagged cannot vouch for its point. Marks such points not settled.
+void checkAgainstFit(RunPeaks& peaks, const FrictionFit& fit);
+
 struct PeakSpeedLine {
     KarnoppModel model;          // C and b only; D and the band are not defined by this line
     double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;  // 0 with two runs

@@ -3366,7 +3366,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+105" />
+        <location line="+106" />
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -4576,7 +4576,7 @@ Befehle:
     </message>
     <message>
         <location line="+39" />
-        <location line="+19" />
+        <location line="+20" />
         <source>%1: no friction fit (%2)</source>
         <translation>%1: kein Reibungsfit (%2)</translation>
     </message>
@@ -4615,13 +4615,13 @@ Befehle:
         <translation>Durchstichtiefe</translation>
     </message>
     <message>
-        <location line="-168" />
-        <location line="+169" />
+        <location line="-169" />
+        <location line="+170" />
         <source>puncture force</source>
         <translation>Durchstichkraft</translation>
     </message>
     <message>
-        <location line="-225" />
+        <location line="-226" />
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4636,7 +4636,7 @@ Befehle:
         <translation>kein Gewebekontakt</translation>
     </message>
     <message>
-        <location line="+145" />
+        <location line="+146" />
         <source>outlier</source>
         <translation>Ausreißer</translation>
     </message>
@@ -5157,7 +5157,7 @@ Befehle:
     </message>
     <message>
         <location line="+3" />
-        <location filename="../core/friction_fit.cpp" line="+266" />
+        <location filename="../core/friction_fit.cpp" line="+304" />
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -5573,12 +5573,12 @@ Befehle:
         <translation>nicht schreibbar (%1)</translation>
     </message>
     <message>
-        <location filename="../core/friction_fit.cpp" line="-104" />
+        <location filename="../core/friction_fit.cpp" line="-102" />
         <source>too few samples (%1) to find the zero-velocity band</source>
         <translation>zu wenige Messwerte (%1), um das Nullgeschwindigkeitsband zu bestimmen</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+12" />
         <source>no motion: the zero-velocity band cannot be found</source>
         <translation>keine Bewegung: das Nullgeschwindigkeitsband lässt sich nicht bestimmen</translation>
     </message>
@@ -5608,7 +5608,7 @@ Befehle:
         <translation>%1 Phasennamen für %2 Messwerte</translation>
     </message>
     <message>
-        <location line="+42" />
+        <location line="+39" />
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation>keine Messwerte der Phase c schneller als das Nullgeschwindigkeitsband</translation>
     </message>
@@ -5648,7 +5648,17 @@ Befehle:
         <translation>bn &lt; 0: Dämpfung kann keine Energie zuführen</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+5" />
+        <source>%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds</source>
+        <translation>%1 = %2 ± %3 N·s/m ist durch diesen Lauf nicht bestimmt: er gleitet über einen zu engen Geschwindigkeitsbereich</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 rests on an undetermined %2</source>
+        <translation>%1 beruht auf einem unbestimmten %2</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
     </message>

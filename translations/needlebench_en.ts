@@ -3349,7 +3349,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+106"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -4494,7 +4494,7 @@ Commands:
     </message>
     <message>
         <location line="+39"/>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>%1: no friction fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4533,13 +4533,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-168"/>
-        <location line="+169"/>
+        <location line="-169"/>
+        <location line="+170"/>
         <source>puncture force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-225"/>
+        <location line="-226"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4554,7 +4554,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+146"/>
         <source>outlier</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5075,7 +5075,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+266"/>
+        <location filename="../core/friction_fit.cpp" line="+304"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5491,12 +5491,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/friction_fit.cpp" line="-104"/>
+        <location filename="../core/friction_fit.cpp" line="-102"/>
         <source>too few samples (%1) to find the zero-velocity band</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+12"/>
         <source>no motion: the zero-velocity band cannot be found</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5526,7 +5526,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+39"/>
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5566,7 +5566,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
+        <source>%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 rests on an undetermined %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation type="unfinished"></translation>
     </message>

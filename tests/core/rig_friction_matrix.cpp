@@ -100,6 +100,7 @@ RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& e
             o.estimateBand = true;
             fits.push_back(fitFriction(blind, o));
             peaks.push_back(peakPoints(blind, o));
+            checkAgainstFit(peaks.back(), fits.back());
         }
     } catch (const FitError& e) {
         out.problem = e.message();
@@ -115,6 +116,8 @@ RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& e
         out.runErrC[k] = std::max(rel(p.Cp_N_per_m, truth.Cp_N_per_m), rel(p.Cn_N_per_m, truth.Cn_N_per_m));
         out.runErrB[k] = std::max(rel(p.bp_Ns_per_m2, truth.bp_Ns_per_m2), rel(p.bn_Ns_per_m2, truth.bn_Ns_per_m2));
         out.runDeparts[k] = line && departureFromLine(fits[k], *line).significant;
+        for (const char* name : {"Cp", "Cn", "bp", "bn"})
+            out.runFlagged[k] = out.runFlagged[k] || fits[k].notPhysicalValues.contains(QLatin1String(name));
     }
     if (line) {
         // The line is in N; the truth per metre of needle in tissue (one slab, one thickness).

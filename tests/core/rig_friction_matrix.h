@@ -33,6 +33,7 @@ struct RigFrictionOutcome {
     // Largest relative error of the two directions (fractions), per run and for the line.
     std::array<double, 3> runErrC{}, runErrB{};
     std::array<bool, 3> runDeparts{};   // the fit said this run's C departs from the line
+    std::array<bool, 3> runFlagged{};   // the fit flagged its C or b (not physical, not determined)
     bool line = false;
     double lineErrC = 0.0, lineErrB = 0.0;
 };
