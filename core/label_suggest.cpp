@@ -126,12 +126,15 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
         std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
         const double spread = 1.4826 * sorted[sorted.size() / 2];
         line.rms_N = spread;
-        // First the upper half, then what does not lie clearly below the line: the carried
-        // tissue's low force drops out, the sliding force stays.
+        // First the upper half, then what lies neither clearly below the line (the carried
+        // tissue's low force) nor far above it (the break-away peaks at static friction, and
+        // the tissue stuck again while the needle, slower than the band, turns): the sliding
+        // force stays.
         const double keepAbove = iteration == 0 ? median : -1.5 * spread;
+        const double keepBelow = iteration == 0 ? std::numeric_limits<double>::infinity() : 2.5 * spread;
         std::vector<std::size_t> kept;
         for (std::size_t j = 0; j < use.size(); ++j)
-            if (r[j] >= keepAbove)
+            if (r[j] >= keepAbove && r[j] <= keepBelow)
                 kept.push_back(use[j]);
         if (kept.size() == use.size())
             break;
@@ -276,6 +279,13 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             int off = 0;
             bool onLine = false;
             for (std::size_t i = last; i > h.start; --i) {
+                // Off the line while the needle is still fast, before any sample on it: the
+                // stroke ended without the tissue coming to rest (the last, often partial,
+                // stroke stopped mid-way): no c here, whatever the force does earlier (the
+                // tissue leaving the plate behind pushes near the line after a turning point).
+                if (!onLine && std::abs(v[i - 1]) > 2.0 * slowest &&
+                    h.direction * (force[i - 1] - line(i - 1)) < -tolerance && ++off >= 5)
+                    break;
                 // Above the line decides nothing: the tissue still stuck, pressed to the plate
                 // up to static friction (a), or resting there while the needle, slower than the
                 // band, is held (c).
@@ -292,6 +302,31 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             }
             if (cStart == last)
                 cStart = h.end;
+            // The tissue comes to rest only after it has broken away: a peak clearly above the
+            // line (static friction) followed by the line means c starts after that peak (the
+            // soft first contact with the plate can bring the force close to the line before).
+            // The first such peak: later ones may be the tissue stuck again as the needle
+            // slows into the band before the turning point.
+            if (cStart < last) {
+                std::size_t above = 0;
+                for (std::size_t i = cStart; i < last; ++i) {
+                    above = h.direction * (force[i] - line(i)) > tolerance ? above + 1 : 0;
+                    if (above < 3)  // a peak, not a stray sample
+                        continue;
+                    std::size_t after = i + 1;
+                    while (after < last && h.direction * (force[after] - line(after)) > tolerance)
+                        ++after;
+                    std::size_t onAfter = 0, end = after;
+                    for (; end < last && h.direction * (force[end] - line(end)) <= tolerance; ++end)
+                        onAfter += std::abs(force[end] - line(end)) <= tolerance;
+                    if (onAfter >= std::max<std::size_t>(10, (last - after) / 5)) {
+                        while (after < last && std::abs(force[after] - line(after)) > tolerance)
+                            ++after;
+                        cStart = after;
+                    }
+                    break;
+                }
+            }
             // a: the tissue is carried with the needle (static friction) and pulls on it only
             // through its inertia, well below the sliding line, until it meets the plate
             // ahead: from there the plate's reaction drives the force up to the line. a ends

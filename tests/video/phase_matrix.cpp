@@ -187,7 +187,10 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         blind.numeric.erase(std::remove_if(blind.numeric.begin(), blind.numeric.end(),
                                            [](const auto& column) { return column.first == QLatin1String("tissue_position_mm"); }),
                             blind.numeric.end());
-        out.withoutVideo = agreement(truth, suggestLabels(blind), blind.time_s);
+        const Labels withoutVideo = suggestLabels(blind);
+        out.withoutVideo = agreement(truth, withoutVideo, blind.time_s);
+        // Beside the run, to look at a case again (bench_accuracy --keep).
+        writeLabelsFile(QDir(workDir).filePath(QStringLiteral("labels_without_video.csv")), withoutVideo);
 
         // The imaging view of the true motion (the renderer reads the tissue column of the
         // full run), given the case's look, codec and clock.
@@ -231,6 +234,7 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         const Labels withVideo = out.videoUsed ? suggestPhaseLabels(blind, &motion) : suggestLabels(blind);
         out.videoSource = out.videoUsed ? (withVideo.empty() ? QString() : withVideo.front().comment) : problem;
         out.withVideo = agreement(truth, withVideo, blind.time_s);
+        writeLabelsFile(QDir(workDir).filePath(QStringLiteral("labels_with_video.csv")), withVideo);
         out.ok = true;
     } catch (const RunFileError& e) {
         out.problem = e.message();
