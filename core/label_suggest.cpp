@@ -323,7 +323,19 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                         while (after < last && std::abs(force[after] - line(after)) > tolerance)
                             ++after;
                         cStart = after;
+                        break;
                     }
+                    // Where the needle is not much faster than the band, the sliding force is
+                    // seen only briefly and the line found may lie below it: the force falling
+                    // back from the peak and staying down is the break-away all the same.
+                    std::size_t top = i, fall = i, down = 0;
+                    for (; fall < last && h.direction * (force[top] - force[fall]) <= 2.0 * tolerance; ++fall)
+                        if (h.direction * force[fall] > h.direction * force[top])
+                            top = fall;
+                    for (std::size_t j = fall; j < last && h.direction * (force[top] - force[j]) > tolerance; ++j)
+                        ++down;
+                    if (fall < last && down >= 10)
+                        cStart = fall;
                     break;
                 }
             }
