@@ -275,6 +275,19 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // end c, a run of them does. The samples nearest the turning point may still be
             // off the line (a slow needle inside the band): they do not end the search
             // before it has begun.
+            // A stroke may end with the needle stopping while still fast instead of slowing into
+            // a turning point (the run's last, often partial, stroke): in its last tenth the
+            // needle keeps more than half its top speed.
+            bool stopsFast = false;
+            if (last > h.start + 10) {
+                double top = 0.0, lastTenth = 0.0;
+                for (std::size_t i = h.start; i < last; ++i) {
+                    top = std::max(top, std::abs(v[i]));
+                    if (i >= last - (last - h.start) / 10)
+                        lastTenth = std::max(lastTenth, std::abs(v[i]));
+                }
+                stopsFast = lastTenth > 0.5 * top;
+            }
             cStart = last;
             int off = 0;
             bool onLine = false;
@@ -283,8 +296,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // stroke ended without the tissue coming to rest (the last, often partial,
                 // stroke stopped mid-way): no c here, whatever the force does earlier (the
                 // tissue leaving the plate behind pushes near the line after a turning point).
-                if (!onLine && std::abs(v[i - 1]) > 2.0 * slowest &&
-                    h.direction * (force[i - 1] - line(i - 1)) < -tolerance && ++off >= 5)
+                if (!onLine && stopsFast && std::abs(v[i - 1]) > 2.0 * slowest &&
+                    h.direction * (force[i - 1] - line(i - 1)) < -tolerance &&
+                    std::size_t(++off) >= std::max<std::size_t>(25, (last - h.start) / 10))
                     break;
                 // Above the line decides nothing: the tissue still stuck, pressed to the plate
                 // up to static friction (a), or resting there while the needle, slower than the

@@ -91,6 +91,13 @@ private slots:
                                                                 "--amplitude-mm", "7"};
         QTest::newRow("liver1 0.8 Hz small gap, noisy") << QStringList{"--tissue", "liver1", "--frequency-hz", "0.8", "--cycles", "3", "--plate-gap-mm",
                                                                        "0.7", "--force-noise-n", "0.008"};
+        // Wide stick bands and large plate gaps with short strokes: the needle is barely faster
+        // than the band, the last stroke stops mid-way with the tissue still carried (both
+        // below 80 % before the sliding line left out the break-away peaks).
+        QTest::newRow("liver5 0.8 Hz wide band, large gap") << QStringList{"--tissue", "liver5", "--frequency-hz", "0.82", "--cycles", "3",
+                                                                           "--amplitude-mm", "5", "--stick-band-mm-s", "4.2", "--plate-gap-mm", "2.45"};
+        QTest::newRow("liver1 0.8 Hz band 5.6, large gap") << QStringList{"--tissue", "liver1", "--frequency-hz", "0.78", "--cycles", "3",
+                                                                          "--amplitude-mm", "4.4", "--stick-band-mm-s", "5.6", "--plate-gap-mm", "2.56"};
     }
     void fromForceAndPosition()
     {
