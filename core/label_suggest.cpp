@@ -244,6 +244,20 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     const QString forceSource = lines ? QStringLiteral("suggested from force and position")
                                       : QStringLiteral("suggested from position (velocity band)");
     const std::vector<HalfCycle> cycles = halfCycles(v, o.zeroBand_mm_s);
+    // A stroke far shorter than the run's usual one is the stage settling (an overshoot when it
+    // stops), not a stroke: the tissue cannot break away in it and stays carried (a).
+    auto travel_mm = [&](const HalfCycle& h) { return std::abs(run.position_mm[h.end - 1] - run.position_mm[h.start]); };
+    double usualTravel_mm = 0.0;
+    {
+        std::vector<double> travels;
+        for (const HalfCycle& h : cycles)
+            if (h.end > h.start + 4)
+                travels.push_back(travel_mm(h));
+        if (!travels.empty()) {
+            std::nth_element(travels.begin(), travels.begin() + std::ptrdiff_t(travels.size() / 2), travels.end());
+            usualTravel_mm = travels[travels.size() / 2];
+        }
+    }
     const HalfCycle* lastStroke = nullptr;
     for (const HalfCycle& h : cycles) {
         if (h.end <= h.start + 4)
@@ -252,6 +266,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
         // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
         const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
+        if (travel_mm(h) < 0.1 * usualTravel_mm) {
+            out.push_back({track, QStringLiteral("a"), t0, t1, forceSource});
+            continue;
+        }
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
         QString source = forceSource;
         if (lines) {

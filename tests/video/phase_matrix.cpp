@@ -10,6 +10,7 @@
 #include "video/video_error.h"
 
 #include <QDir>
+#include <QFile>
 #include <QProcess>
 #include <opencv2/imgproc.hpp>
 
@@ -235,6 +236,10 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         out.videoSource = out.videoUsed ? (withVideo.empty() ? QString() : withVideo.front().comment) : problem;
         out.withVideo = agreement(truth, withVideo, blind.time_s);
         writeLabelsFile(QDir(workDir).filePath(QStringLiteral("labels_with_video.csv")), withVideo);
+        // The clock the video was made on, for `labels suggest --video-offset-s --video-drift`.
+        QFile clock(QDir(workDir).filePath(QStringLiteral("video_clock.txt")));
+        if (clock.open(QIODevice::WriteOnly | QIODevice::Text))
+            clock.write(QStringLiteral("--video-offset-s %1 --video-drift %2\n").arg(c.offset_s, 0, 'g', 17).arg(c.drift, 0, 'g', 17).toUtf8());
         out.ok = true;
     } catch (const RunFileError& e) {
         out.problem = e.message();
