@@ -529,7 +529,11 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 aEnd = place(forceA, *aWindow);
                 if (aEnd != forceA)
                     aEnd = sampleAt(0.5 * (aMid.first + aMid.second));
-                cStart = cWindow ? place(forceC, *cWindow) : h.end;
+                // No resting pair of readings: the tissue moved up to the turning point, unless
+                // the picture stopped telling (the video ends, or the needle too slow to judge)
+                // before the force's c began: then the force's c stands.
+                const double forceC_s = forceC < h.end ? run.time_s[forceC] : t1;
+                cStart = cWindow ? place(forceC, *cWindow) : (lastMoving > forceC_s + slack ? h.end : forceC);
                 cStart = std::max(cStart, aEnd);
                 if (b2Start < aEnd || b2Start > cStart)
                     b2Start = cStart - (cStart - aEnd) / 4;

@@ -16,6 +16,10 @@ namespace {
 
 constexpr int kWorkingSize_px = 480;  // longer side the picture is reduced to (speed; the texture survives)
 constexpr int kBackgroundFrames = 41; // frames whose median is the static background
+// The tissue's texture is coarser than the picture's noise (grain, compression): smoothed at
+// this scale (in the working picture) before matching, heavy noise no longer decides the
+// match, while the texture still does.
+constexpr double kTextureBlur_px = 3.0;
 
 cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
 {
@@ -116,7 +120,7 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         cv::min(image, clip, image);
         cv::max(image, -clip, image);
         // The picture's own noise changes every frame; the tissue's texture does not.
-        cv::GaussianBlur(image, image, cv::Size(0, 0), 1.0);
+        cv::GaussianBlur(image, image, cv::Size(0, 0), kTextureBlur_px);
         const double t = index.frames[std::size_t(i)].time_s;
         if (window.empty())
             cv::createHanningWindow(window, image.size(), CV_32F);
