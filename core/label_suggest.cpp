@@ -98,6 +98,7 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
         if (dir * v_mm_s[i] >= minSpeed_mm_s)
             use.push_back(i);
     EnvelopeLine line;
+    int halvings = 0;
     for (int iteration = 0; iteration < 12 && use.size() >= 20; ++iteration) {
         double sv = 0, sf = 0, svv = 0, svf = 0;
         for (std::size_t i : use) {
@@ -110,9 +111,28 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
         const double k = double(use.size()), det = k * svv - sv * sv;
         if (!(std::abs(det) > 1e-18))
             break;
-        // Damping cannot be negative: a line that falls with speed is the carried tissue's
-        // low force at speed pulling it down, not friction.
-        line.b_Ns_per_m = std::max(0.0, (k * svf - sv * sf) / det);
+        // Damping cannot be negative. Among the upper samples a line that falls with speed is
+        // static friction at the slower speeds (the tissue held against the plate while the
+        // needle is inside the band saturates the force at D, above the sliding force) on top
+        // of sliding at the faster ones: the faster half is kept (at most twice).
+        const double slope = (k * svf - sv * sf) / det;
+        if (slope < 0.0 && iteration > 0 && halvings < 2 && use.size() >= 80) {
+            std::vector<double> speeds;
+            for (std::size_t i : use)
+                speeds.push_back(dir * v_mm_s[i]);
+            std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
+            const double middle = speeds[speeds.size() / 2];
+            std::vector<std::size_t> faster;
+            for (std::size_t i : use)
+                if (dir * v_mm_s[i] >= middle)
+                    faster.push_back(i);
+            use.swap(faster);
+            ++halvings;
+            continue;
+        }
+        // Otherwise a falling line is the carried tissue's low force at speed pulling it down,
+        // not friction.
+        line.b_Ns_per_m = std::max(0.0, slope);
         line.c0_N = (sf - line.b_Ns_per_m * sv) / k;
         line.ok = true;
         std::vector<double> r;
