@@ -309,10 +309,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             const double slowest = 1000.0 * lines->bandSlowingDown_m_s / 2.0;
             while (last > h.start + 1 && std::abs(v[last - 1]) < slowest)
                 --last;
-            // Backwards while the force follows the line; a few stray samples (noise) do not
-            // end c, a run of them does. The samples nearest the turning point may still be
-            // off the line (a slow needle inside the band): they do not end the search
-            // before it has begun.
             // A stroke may end with the needle stopping while still fast instead of slowing into
             // a turning point (the run's last, often partial, stroke): in its last tenth the
             // needle keeps more than half its top speed.
@@ -326,6 +322,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 }
                 stopsFast = lastTenth > 0.5 * top;
             }
+            // Backwards while the force follows the line; a few stray samples (noise) do not
+            // end c, a run of them does. The samples nearest the turning point may still be
+            // off the line (a slow needle inside the band): they do not end the search
+            // before it has begun.
             cStart = last;
             int off = 0;
             bool onLine = false;
