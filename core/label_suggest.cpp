@@ -422,8 +422,16 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             for (std::size_t i = aEnd; i < cStart; ++i)
                 if (h.direction * force[i] - std::abs(line(i)) > h.direction * force[peak] - std::abs(line(peak)))
                     peak = i;
-            if (peak < cStart && h.direction * force[peak] - std::abs(line(peak)) > std::max(tolerance, 0.1 * std::abs(line(peak))))
+            if (peak < cStart && h.direction * force[peak] - std::abs(line(peak)) > std::max(tolerance, 0.1 * std::abs(line(peak)))) {
+                // While stuck the force cannot exceed static friction: the tissue slips where it
+                // first reaches the peak's level. A plateau there (the force held at D while the
+                // tissue slips slowly over the plate's soft part, b1, which the picture hardly
+                // shows) belongs to b.
+                const double peakLevel_N = h.direction * force[peak] - std::max(3.0 * lines->rms_N, 0.03 * std::abs(force[peak]));
+                while (peak > aEnd && h.direction * force[peak - 1] >= peakLevel_N)
+                    --peak;
                 aEnd = peak;
+            }
             // b1/b2: the tissue bears on the plate progressively, then fully (the force
             // closes on the line, models.md 5: the relative velocity grows); b2 once the gap
             // to the line has closed to a quarter of what it was when the tissue met the plate.
@@ -459,7 +467,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // of a pixel per frame, too little to judge frame by frame.
             std::optional<std::pair<double, double>> aWindow, cWindow;
             std::optional<double> firstBehind, pendingBehind, pendingRest;
-            bool followed = false, measured = false, anyClear = false;
+            bool followed = false, measured = false, anyClear = false, wasNotResting = false;
             double lastFollow = t0, lastMoving = t0;
             const double frame_s = 2.0 * frameHalf_s;
             std::optional<double> reference_mm;
@@ -507,16 +515,23 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     continue;  // too slow to tell moving from resting
                 measured = true;
                 const bool resting = vtk < std::max(0.25 * vn, 2.0 * videoNoise_mm_s);
-                if (firstBehind && !cWindow) {
-                    if (!resting) {
+                // From the first reading behind the needle on (a tissue that stops within a
+                // frame is behind and resting in the same reading). One reading between resting
+                // and clearly moving is noise, two in a row are motion.
+                if ((firstBehind || pendingBehind) && !cWindow) {
+                    const bool moving = !resting && (vtk >= 0.5 * vn || wasNotResting);
+                    if (moving) {
                         lastMoving = std::max(tk, lastFollow);
                         pendingRest.reset();
-                    } else if (pendingRest) {
+                    } else if (resting && pendingRest) {
                         cWindow = std::make_pair(std::max(lastMoving, lastFollow), *pendingRest);
-                    } else {
+                    } else if (resting) {
                         pendingRest = tk;
                     }
+                } else if (!cWindow) {
+                    pendingRest.reset();
                 }
+                wasNotResting = !resting;
             }
             // The tissue slows down once it meets the plate (b1) and still reads as keeping up
             // in the pair of frames it does so: a may have ended a frame before lastFollow.
