@@ -222,7 +222,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 continue;
             const double ratio = tissue->velocity_mm_s[k] / v[i];
             ++judged;
-            agreed += p == QLatin1String("a") ? ratio >= 0.5 : ratio < 0.25;
+            // Carried: with the needle, not faster; resting: still, not moving backwards (a
+            // garbled match reads any speed, of either sign).
+            agreed += p == QLatin1String("a") ? (ratio >= 0.5 && ratio <= 1.5) : std::abs(ratio) < 0.25;
         }
         videoTrusted = judged < 10 || agreed >= 0.9 * judged;
     }
@@ -371,7 +373,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     std::size_t onAfter = 0, end = after;
                     for (; end < last && h.direction * (force[end] - line(end)) <= tolerance; ++end)
                         onAfter += std::abs(force[end] - line(end)) <= tolerance;
-                    if (onAfter >= std::max<std::size_t>(10, (last - after) / 5)) {
+                    // A peak is brief: longer above the line than on it afterwards is the line
+                    // lying too low under a sliding force, not a break-away.
+                    const std::size_t peakLength = after - (i + 1 - above);
+                    if (onAfter >= std::max<std::size_t>({10, (last - after) / 5, peakLength})) {
                         while (after < last && std::abs(force[after] - line(after)) > tolerance)
                             ++after;
                         cStart = after;
@@ -386,7 +391,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                             top = fall;
                     for (std::size_t j = fall; j < last && h.direction * (force[top] - force[j]) > tolerance; ++j)
                         ++down;
-                    if (fall < last && down >= 10)
+                    if (fall < last && down >= std::max<std::size_t>(10, fall - (i + 1 - above)))
                         cStart = fall;
                     break;
                 }

@@ -38,12 +38,10 @@ private slots:
             QVERIFY2(o.ok, qPrintable(what + QStringLiteral(": ") + o.problem));
             qInfo("%s: without video %.1f %%, with video %.1f %% (%s)", qPrintable(what), 100 * o.withoutVideo, 100 * o.withVideo,
                   qPrintable(o.videoSource));
-            // Issue 13's targets are 80 % without the video and 90 % with it, in every case. The
-            // first holds; the second not quite everywhere (this draw's short, fast strokes of
-            // liver1 read 90.0 %: the tissue slips over the plate's soft part by less than a
-            // pixel, b1, which neither the picture nor the force places well). Asserted: 85 %.
+            // Issue 13's targets in every case: 80 % without the video, 90 % with it (this draw's
+            // closest, liver1's short fast strokes at 0.82 Hz, reads 90.1 %).
             QVERIFY2(o.withoutVideo >= 0.8, qPrintable(what + QStringLiteral(": without video %1").arg(o.withoutVideo)));
-            QVERIFY2(o.withVideo >= 0.85, qPrintable(what + QStringLiteral(": with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
+            QVERIFY2(o.withVideo >= 0.9, qPrintable(what + QStringLiteral(": with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
         }
     }
 };
