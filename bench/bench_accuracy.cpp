@@ -1,6 +1,7 @@
 // Accuracy of video sync (and, as they land, phases and friction fits) over a matrix drawn
 // at random from a printed seed: `bench_accuracy [--seed N] [--sync-cases N] [--small]
-// [--case N] [--keep DIR]` (--case: only sync case N of the draw, to look at one again). Prints one line per case and the summary against issue 13's targets.
+// [--case N] [--phase-case N] [--keep DIR]` (--case, --phase-case: only sync or phase case N of the
+// draw, to look at one again; --keep leaves each case's run, video and suggested labels there). Prints one line per case and the summary against issue 13's targets.
 #include "video/accuracy_matrix.h"
 #include "video/phase_matrix.h"
 #include "core/rig_friction_matrix.h"
@@ -21,7 +22,7 @@ namespace {
 
 // Phase agreement per case, without and with the video (tests/video/phase_matrix.h). Its own
 // generator (from the same seed), so that its draw does not depend on the other sections'.
-void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString& root)
+void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString& root, int onlyCase)
 {
     out << "\n== phases: simulated friction runs, truth hidden from the suggestion (agreement per sample, without / with video)\n";
     std::mt19937 rng(seed ^ 0x9e3779b9u);
@@ -29,6 +30,8 @@ void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString&
     int failed = 0, unread = 0;
     const std::vector<PhaseMatrixCase> cases = drawPhaseMatrix(rng, count, false);
     for (std::size_t i = 0; i < cases.size(); ++i) {
+        if (onlyCase >= 0 && int(i) != onlyCase)
+            continue;  // the same draw: one case of it again
         const PhaseMatrixOutcome o = runPhaseMatrixCase(cases[i], QStringLiteral(NB_EXECUTABLE), QDir(root).filePath(QStringLiteral("phase%1").arg(i)));
         if (!o.ok) {
             ++failed;
@@ -114,7 +117,7 @@ int main(int argc, char** argv)
     unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
     int syncCases = 20, frictionCases = 24, phaseCases = 24, rigFrictionSets = 8;
     bool small = false;
-    int onlyCase = -1;
+    int onlyCase = -1, onlyPhaseCase = -1;
     QString keep;
     for (int i = 1; i < a.size(); ++i) {
         if (a[i] == QLatin1String("--seed") && i + 1 < a.size())
@@ -129,12 +132,14 @@ int main(int argc, char** argv)
             phaseCases = a[++i].toInt();
         else if (a[i] == QLatin1String("--case") && i + 1 < a.size())
             onlyCase = a[++i].toInt();
+        else if (a[i] == QLatin1String("--phase-case") && i + 1 < a.size())
+            onlyPhaseCase = a[++i].toInt();
         else if (a[i] == QLatin1String("--small"))
             small = true;
         else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
             keep = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--small] [--case N] [--keep DIR]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--small] [--case N] [--phase-case N] [--keep DIR]\n");
             return 2;
         }
     }
@@ -186,7 +191,7 @@ int main(int argc, char** argv)
                .arg(misses).arg(honestMisses);
     out << "targets: within 1 frame >= 95 %, within 2 frames 100 %, every miss below the threshold\n";
 
-    printPhaseMatrix(out, seed, phaseCases, root);
+    printPhaseMatrix(out, seed, phaseCases, root, onlyPhaseCase);
 
     out << "\n== friction: synthetic Karnopp runs, band found by the fit (no phases given)\n";
     std::vector<double> errC, errB;

@@ -98,6 +98,7 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
         if (dir * v_mm_s[i] >= minSpeed_mm_s)
             use.push_back(i);
     EnvelopeLine line;
+    int halvings = 0;
     for (int iteration = 0; iteration < 12 && use.size() >= 20; ++iteration) {
         double sv = 0, sf = 0, svv = 0, svf = 0;
         for (std::size_t i : use) {
@@ -110,9 +111,28 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
         const double k = double(use.size()), det = k * svv - sv * sv;
         if (!(std::abs(det) > 1e-18))
             break;
-        // Damping cannot be negative: a line that falls with speed is the carried tissue's
-        // low force at speed pulling it down, not friction.
-        line.b_Ns_per_m = std::max(0.0, (k * svf - sv * sf) / det);
+        // Damping cannot be negative. Among the upper samples a line that falls with speed is
+        // static friction at the slower speeds (the tissue held against the plate while the
+        // needle is inside the band saturates the force at D, above the sliding force) on top
+        // of sliding at the faster ones: the faster half is kept (at most twice).
+        const double slope = (k * svf - sv * sf) / det;
+        if (slope < 0.0 && iteration > 0 && halvings < 2 && use.size() >= 80) {
+            std::vector<double> speeds;
+            for (std::size_t i : use)
+                speeds.push_back(dir * v_mm_s[i]);
+            std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
+            const double middle = speeds[speeds.size() / 2];
+            std::vector<std::size_t> faster;
+            for (std::size_t i : use)
+                if (dir * v_mm_s[i] >= middle)
+                    faster.push_back(i);
+            use.swap(faster);
+            ++halvings;
+            continue;
+        }
+        // Otherwise a falling line is the carried tissue's low force at speed pulling it down,
+        // not friction.
+        line.b_Ns_per_m = std::max(0.0, slope);
         line.c0_N = (sf - line.b_Ns_per_m * sv) / k;
         line.ok = true;
         std::vector<double> r;
@@ -126,12 +146,15 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
         std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
         const double spread = 1.4826 * sorted[sorted.size() / 2];
         line.rms_N = spread;
-        // First the upper half, then what does not lie clearly below the line: the carried
-        // tissue's low force drops out, the sliding force stays.
+        // First the upper half, then what lies neither clearly below the line (the carried
+        // tissue's low force) nor far above it (the break-away peaks at static friction, and
+        // the tissue stuck again while the needle, slower than the band, turns): the sliding
+        // force stays.
         const double keepAbove = iteration == 0 ? median : -1.5 * spread;
+        const double keepBelow = iteration == 0 ? std::numeric_limits<double>::infinity() : 2.5 * spread;
         std::vector<std::size_t> kept;
         for (std::size_t j = 0; j < use.size(); ++j)
-            if (r[j] >= keepAbove)
+            if (r[j] >= keepAbove && r[j] <= keepBelow)
                 kept.push_back(use[j]);
         if (kept.size() == use.size())
             break;
@@ -199,7 +222,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 continue;
             const double ratio = tissue->velocity_mm_s[k] / v[i];
             ++judged;
-            agreed += p == QLatin1String("a") ? ratio >= 0.5 : ratio < 0.25;
+            // Carried: with the needle, not faster; resting: still, not moving backwards (a
+            // garbled match reads any speed, of either sign).
+            agreed += p == QLatin1String("a") ? (ratio >= 0.5 && ratio <= 1.5) : std::abs(ratio) < 0.25;
         }
         videoTrusted = judged < 10 || agreed >= 0.9 * judged;
     }
@@ -241,6 +266,20 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     const QString forceSource = lines ? QStringLiteral("suggested from force and position")
                                       : QStringLiteral("suggested from position (velocity band)");
     const std::vector<HalfCycle> cycles = halfCycles(v, o.zeroBand_mm_s);
+    // A stroke far shorter than the run's usual one is the stage settling (an overshoot when it
+    // stops), not a stroke: the tissue cannot break away in it and stays carried (a).
+    auto travel_mm = [&](const HalfCycle& h) { return std::abs(run.position_mm[h.end - 1] - run.position_mm[h.start]); };
+    double usualTravel_mm = 0.0;
+    {
+        std::vector<double> travels;
+        for (const HalfCycle& h : cycles)
+            if (h.end > h.start + 4)
+                travels.push_back(travel_mm(h));
+        if (!travels.empty()) {
+            std::nth_element(travels.begin(), travels.begin() + std::ptrdiff_t(travels.size() / 2), travels.end());
+            usualTravel_mm = travels[travels.size() / 2];
+        }
+    }
     const HalfCycle* lastStroke = nullptr;
     for (const HalfCycle& h : cycles) {
         if (h.end <= h.start + 4)
@@ -249,6 +288,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
         // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
         const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
+        if (travel_mm(h) < 0.1 * usualTravel_mm) {
+            out.push_back({track, QStringLiteral("a"), t0, t1, forceSource});
+            continue;
+        }
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
         QString source = forceSource;
         if (lines) {
@@ -268,6 +311,19 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             const double slowest = 1000.0 * lines->bandSlowingDown_m_s / 2.0;
             while (last > h.start + 1 && std::abs(v[last - 1]) < slowest)
                 --last;
+            // A stroke may end with the needle stopping while still fast instead of slowing into
+            // a turning point (the run's last, often partial, stroke): in its last tenth the
+            // needle keeps more than half its top speed.
+            bool stopsFast = false;
+            if (last > h.start + 10) {
+                double top = 0.0, lastTenth = 0.0;
+                for (std::size_t i = h.start; i < last; ++i) {
+                    top = std::max(top, std::abs(v[i]));
+                    if (i >= last - (last - h.start) / 10)
+                        lastTenth = std::max(lastTenth, std::abs(v[i]));
+                }
+                stopsFast = lastTenth > 0.5 * top;
+            }
             // Backwards while the force follows the line; a few stray samples (noise) do not
             // end c, a run of them does. The samples nearest the turning point may still be
             // off the line (a slow needle inside the band): they do not end the search
@@ -276,6 +332,14 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             int off = 0;
             bool onLine = false;
             for (std::size_t i = last; i > h.start; --i) {
+                // Off the line while the needle is still fast, before any sample on it: the
+                // stroke ended without the tissue coming to rest (the last, often partial,
+                // stroke stopped mid-way): no c here, whatever the force does earlier (the
+                // tissue leaving the plate behind pushes near the line after a turning point).
+                if (!onLine && stopsFast && std::abs(v[i - 1]) > 2.0 * slowest &&
+                    h.direction * (force[i - 1] - line(i - 1)) < -tolerance &&
+                    std::size_t(++off) >= std::max<std::size_t>(25, (last - h.start) / 10))
+                    break;
                 // Above the line decides nothing: the tissue still stuck, pressed to the plate
                 // up to static friction (a), or resting there while the needle, slower than the
                 // band, is held (c).
@@ -292,6 +356,46 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             }
             if (cStart == last)
                 cStart = h.end;
+            // The tissue comes to rest only after it has broken away: a peak clearly above the
+            // line (static friction) followed by the line means c starts after that peak (the
+            // soft first contact with the plate can bring the force close to the line before).
+            // The first such peak: later ones may be the tissue stuck again as the needle
+            // slows into the band before the turning point.
+            if (cStart < last) {
+                std::size_t above = 0;
+                for (std::size_t i = cStart; i < last; ++i) {
+                    above = h.direction * (force[i] - line(i)) > tolerance ? above + 1 : 0;
+                    if (above < 3)  // a peak, not a stray sample
+                        continue;
+                    std::size_t after = i + 1;
+                    while (after < last && h.direction * (force[after] - line(after)) > tolerance)
+                        ++after;
+                    std::size_t onAfter = 0, end = after;
+                    for (; end < last && h.direction * (force[end] - line(end)) <= tolerance; ++end)
+                        onAfter += std::abs(force[end] - line(end)) <= tolerance;
+                    // A peak is brief: longer above the line than on it afterwards is the line
+                    // lying too low under a sliding force, not a break-away.
+                    const std::size_t peakLength = after - (i + 1 - above);
+                    if (onAfter >= std::max<std::size_t>({10, (last - after) / 5, peakLength})) {
+                        while (after < last && std::abs(force[after] - line(after)) > tolerance)
+                            ++after;
+                        cStart = after;
+                        break;
+                    }
+                    // Where the needle is not much faster than the band, the sliding force is
+                    // seen only briefly and the line found may lie below it: the force falling
+                    // back from the peak and staying down is the break-away all the same.
+                    std::size_t top = i, fall = i, down = 0;
+                    for (; fall < last && h.direction * (force[top] - force[fall]) <= 2.0 * tolerance; ++fall)
+                        if (h.direction * force[fall] > h.direction * force[top])
+                            top = fall;
+                    for (std::size_t j = fall; j < last && h.direction * (force[top] - force[j]) > tolerance; ++j)
+                        ++down;
+                    if (fall < last && down >= std::max<std::size_t>(10, fall - (i + 1 - above)))
+                        cStart = fall;
+                    break;
+                }
+            }
             // a: the tissue is carried with the needle (static friction) and pulls on it only
             // through its inertia, well below the sliding line, until it meets the plate
             // ahead: from there the plate's reaction drives the force up to the line. a ends
@@ -323,8 +427,16 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             for (std::size_t i = aEnd; i < cStart; ++i)
                 if (h.direction * force[i] - std::abs(line(i)) > h.direction * force[peak] - std::abs(line(peak)))
                     peak = i;
-            if (peak < cStart && h.direction * force[peak] - std::abs(line(peak)) > std::max(tolerance, 0.1 * std::abs(line(peak))))
+            if (peak < cStart && h.direction * force[peak] - std::abs(line(peak)) > std::max(tolerance, 0.1 * std::abs(line(peak)))) {
+                // While stuck the force cannot exceed static friction: the tissue slips where it
+                // first reaches the peak's level. A plateau there (the force held at D while the
+                // tissue slips slowly over the plate's soft part, b1, which the picture hardly
+                // shows) belongs to b.
+                const double peakLevel_N = h.direction * force[peak] - std::max(3.0 * lines->rms_N, 0.03 * std::abs(force[peak]));
+                while (peak > aEnd && h.direction * force[peak - 1] >= peakLevel_N)
+                    --peak;
                 aEnd = peak;
+            }
             // b1/b2: the tissue bears on the plate progressively, then fully (the force
             // closes on the line, models.md 5: the relative velocity grows); b2 once the gap
             // to the line has closed to a quarter of what it was when the tissue met the plate.
@@ -360,7 +472,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // of a pixel per frame, too little to judge frame by frame.
             std::optional<std::pair<double, double>> aWindow, cWindow;
             std::optional<double> firstBehind, pendingBehind, pendingRest;
-            bool followed = false, measured = false, anyClear = false;
+            bool followed = false, measured = false, anyClear = false, wasNotResting = false;
             double lastFollow = t0, lastMoving = t0;
             const double frame_s = 2.0 * frameHalf_s;
             std::optional<double> reference_mm;
@@ -408,16 +520,23 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     continue;  // too slow to tell moving from resting
                 measured = true;
                 const bool resting = vtk < std::max(0.25 * vn, 2.0 * videoNoise_mm_s);
-                if (firstBehind && !cWindow) {
-                    if (!resting) {
+                // From the first reading behind the needle on (a tissue that stops within a
+                // frame is behind and resting in the same reading). One reading between resting
+                // and clearly moving is noise, two in a row are motion.
+                if ((firstBehind || pendingBehind) && !cWindow) {
+                    const bool moving = !resting && (vtk >= 0.5 * vn || wasNotResting);
+                    if (moving) {
                         lastMoving = std::max(tk, lastFollow);
                         pendingRest.reset();
-                    } else if (pendingRest) {
+                    } else if (resting && pendingRest) {
                         cWindow = std::make_pair(std::max(lastMoving, lastFollow), *pendingRest);
-                    } else {
+                    } else if (resting) {
                         pendingRest = tk;
                     }
+                } else if (!cWindow) {
+                    pendingRest.reset();
                 }
+                wasNotResting = !resting;
             }
             // The tissue slows down once it meets the plate (b1) and still reads as keeping up
             // in the pair of frames it does so: a may have ended a frame before lastFollow.
@@ -450,7 +569,11 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 aEnd = place(forceA, *aWindow);
                 if (aEnd != forceA)
                     aEnd = sampleAt(0.5 * (aMid.first + aMid.second));
-                cStart = cWindow ? place(forceC, *cWindow) : h.end;
+                // No resting pair of readings: the tissue moved up to the turning point, unless
+                // the picture stopped telling (the video ends, or the needle too slow to judge)
+                // before the force's c began: then the force's c stands.
+                const double forceC_s = forceC < h.end ? run.time_s[forceC] : t1;
+                cStart = cWindow ? place(forceC, *cWindow) : (lastMoving > forceC_s + slack ? h.end : forceC);
                 cStart = std::max(cStart, aEnd);
                 if (b2Start < aEnd || b2Start > cStart)
                     b2Start = cStart - (cStart - aEnd) / 4;

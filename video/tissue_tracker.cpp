@@ -16,6 +16,10 @@ namespace {
 
 constexpr int kWorkingSize_px = 480;  // longer side the picture is reduced to (speed; the texture survives)
 constexpr int kBackgroundFrames = 41; // frames whose median is the static background
+// The tissue's texture is coarser than the picture's noise (grain, compression): smoothed at
+// this scale (in the working picture) before matching, heavy noise no longer decides the
+// match, while the texture still does.
+constexpr double kTextureBlur_px = 3.0;
 
 cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
 {
@@ -84,8 +88,18 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             background += f / double(count);
         }
     }
-    cv::Mat previous, window;
+    // Each picture is matched against a reference picture, not only against the one before:
+    // a slow tissue moves a fraction of a pixel a frame, and frame-to-frame shifts of that size
+    // read short (pulled towards whole pixels) and add up their errors. Against a reference
+    // the displacement grows to whole pixels and is measured once; the reference moves on when
+    // the picture has moved well away from it (or the match weakens). The shift between two
+    // frames is then the difference of their positions, so the shifts add up to the measured
+    // displacement.
+    constexpr double kRekey_px = 6.0;      // in the working picture
+    constexpr double kWeakResponse = 0.05;
+    cv::Mat previous, window, reference;
     double previousTime = 0.0, clip = 0.0;
+    cv::Point2d referencePosition(0, 0), previousPosition(0, 0);
     for (int i = 0; i < n; ++i) {
         if (cancel && cancel->load())
             break;
@@ -106,18 +120,31 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         cv::min(image, clip, image);
         cv::max(image, -clip, image);
         // The picture's own noise changes every frame; the tissue's texture does not.
-        cv::GaussianBlur(image, image, cv::Size(0, 0), 1.0);
+        cv::GaussianBlur(image, image, cv::Size(0, 0), kTextureBlur_px);
         const double t = index.frames[std::size_t(i)].time_s;
         if (window.empty())
             cv::createHanningWindow(window, image.size(), CV_32F);
-        if (!previous.empty() && t > previousTime) {
+        if (reference.empty()) {
+            reference = image.clone();
+        } else if (t > previousTime) {
             double response = 0.0;
-            const cv::Point2d shift = cv::phaseCorrelate(previous, image, window, &response);
+            cv::Point2d position = referencePosition + cv::phaseCorrelate(reference, image, window, &response);
+            if (std::hypot(position.x - referencePosition.x, position.y - referencePosition.y) > kRekey_px || response < kWeakResponse) {
+                // Too far from the reference (or no longer like it): the previous picture,
+                // whose position is known, becomes the reference.
+                reference = previous;
+                referencePosition = previousPosition;
+                position = referencePosition + cv::phaseCorrelate(reference, image, window, &response);
+            }
+            const cv::Point2d shift = position - previousPosition;
             out.time_s.push_back(0.5 * (t + previousTime));
             out.dt_s.push_back(t - previousTime);
             out.dx_px.push_back(shift.x / scale);
             out.dy_px.push_back(shift.y / scale);
             out.response.push_back(response);
+            previousPosition = position;
+        } else {
+            continue;  // no time between them: keep the earlier picture
         }
         previous = image;
         previousTime = t;

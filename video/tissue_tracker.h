@@ -2,8 +2,9 @@
 // The tissue's motion in the imaging video, for the friction phases (models.md 5: the
 // operator reads a, b1, b2, c off how the tissue moves against the needle).
 //
-// The tissue fills most of the picture with its texture; frame to frame, phase correlation
-// of the whole picture (or the operator's region) finds the shift of that texture. Static
+// The tissue fills most of the picture with its texture; phase correlation of the whole
+// picture (or the operator's region) against a reference picture finds the displacement of
+// that texture, sub-pixel and without adding up frame-to-frame errors. Static
 // parts (plates, burnt-in clocks, the black surround) add a peak at zero shift; the texture's
 // shift wins where it covers more of the picture. The shifts are then put on the recording's
 // clock, projected on the direction the tissue moves in (any angle in the picture), and
@@ -29,8 +30,10 @@ struct TissueShifts {
     std::vector<double> response;  // phase correlation peak (0..1): how sure the match is
 };
 
-// Frame-to-frame shifts of the picture inside `roi` (empty: everywhere). Frames the index
-// calls duplicates are skipped (compared with the last distinct picture). Throws VideoError.
+// Frame-to-frame shifts of the picture inside `roi` (empty: everywhere), as differences of
+// the displacement measured against a reference picture, so that they add up to it. Frames
+// the index calls duplicates are skipped (compared with the last distinct picture). Throws
+// VideoError.
 TissueShifts trackTissueShifts(FrameReader& reader, QRect roi = {}, const std::function<void(int, int)>& progress = {},
                                const std::atomic_bool* cancel = nullptr);
 

@@ -86,22 +86,34 @@ private slots:
     void fromForceAndPosition_data()
     {
         QTest::addColumn<QStringList>("args");
-        QTest::newRow("liver7 0.5 Hz") << QStringList{"--tissue", "liver7", "--frequency-hz", "0.5", "--cycles", "3"};
+        QTest::addColumn<bool>("everyPhase");  // b2 may be too short to be told from b1 by the force
+        QTest::newRow("liver7 0.5 Hz") << QStringList{"--tissue", "liver7", "--frequency-hz", "0.5", "--cycles", "3"} << true;
         QTest::newRow("liver3 0.3 Hz wide band") << QStringList{"--tissue", "liver3", "--frequency-hz", "0.3", "--cycles", "2", "--stick-band-mm-s", "4.5",
-                                                                "--amplitude-mm", "7"};
+                                                                "--amplitude-mm", "7"} << true;
         QTest::newRow("liver1 0.8 Hz small gap, noisy") << QStringList{"--tissue", "liver1", "--frequency-hz", "0.8", "--cycles", "3", "--plate-gap-mm",
-                                                                       "0.7", "--force-noise-n", "0.008"};
+                                                                       "0.7", "--force-noise-n", "0.008"} << true;
+        // Wide stick bands and large plate gaps with short strokes: the needle is barely faster
+        // than the band, the last stroke stops mid-way with the tissue still carried (both
+        // below 80 % before the sliding line left out the break-away peaks).
+        QTest::newRow("liver5 0.8 Hz wide band, large gap") << QStringList{"--tissue", "liver5", "--frequency-hz", "0.82", "--cycles", "3",
+                                                                           "--amplitude-mm", "5", "--stick-band-mm-s", "4.2", "--plate-gap-mm", "2.45"}
+                                                            << false;
+        QTest::newRow("liver1 0.8 Hz band 5.6, large gap") << QStringList{"--tissue", "liver1", "--frequency-hz", "0.78", "--cycles", "3",
+                                                                          "--amplitude-mm", "4.4", "--stick-band-mm-s", "5.6", "--plate-gap-mm", "2.56"}
+                                                           << false;
     }
     void fromForceAndPosition()
     {
         QFETCH(QStringList, args);
+        QFETCH(bool, everyPhase);
         const Simulated s = simulate(dir_.path(), args);
         const nb::Labels labels = nb::suggestLabels(s.blind);
         const double a = agreement(s, labels);
         QVERIFY2(a >= 0.8, qPrintable(QStringLiteral("agreement %1").arg(a)));
         // Every phase of the four appears, and each label says what it came from.
         for (const char* p : {"a", "b1", "b2", "c"})
-            QVERIFY2(std::any_of(labels.begin(), labels.end(), [&](const nb::Label& l) { return l.label == QLatin1String(p); }), p);
+            if (everyPhase || QLatin1String(p) != QLatin1String("b2"))
+                QVERIFY2(std::any_of(labels.begin(), labels.end(), [&](const nb::Label& l) { return l.label == QLatin1String(p); }), p);
         for (const nb::Label& l : labels) {
             QVERIFY(l.track == QLatin1String("insertion") || l.track == QLatin1String("withdrawal"));
             QCOMPARE(l.comment, QStringLiteral("suggested from force and position"));

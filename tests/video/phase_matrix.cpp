@@ -10,6 +10,7 @@
 #include "video/video_error.h"
 
 #include <QDir>
+#include <QFile>
 #include <QProcess>
 #include <opencv2/imgproc.hpp>
 
@@ -187,7 +188,10 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         blind.numeric.erase(std::remove_if(blind.numeric.begin(), blind.numeric.end(),
                                            [](const auto& column) { return column.first == QLatin1String("tissue_position_mm"); }),
                             blind.numeric.end());
-        out.withoutVideo = agreement(truth, suggestLabels(blind), blind.time_s);
+        const Labels withoutVideo = suggestLabels(blind);
+        out.withoutVideo = agreement(truth, withoutVideo, blind.time_s);
+        // Beside the run, to look at a case again (bench_accuracy --keep).
+        writeLabelsFile(QDir(workDir).filePath(QStringLiteral("labels_without_video.csv")), withoutVideo);
 
         // The imaging view of the true motion (the renderer reads the tissue column of the
         // full run), given the case's look, codec and clock.
@@ -231,6 +235,11 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         const Labels withVideo = out.videoUsed ? suggestPhaseLabels(blind, &motion) : suggestLabels(blind);
         out.videoSource = out.videoUsed ? (withVideo.empty() ? QString() : withVideo.front().comment) : problem;
         out.withVideo = agreement(truth, withVideo, blind.time_s);
+        writeLabelsFile(QDir(workDir).filePath(QStringLiteral("labels_with_video.csv")), withVideo);
+        // The clock the video was made on, for `labels suggest --video-offset-s --video-drift`.
+        QFile clock(QDir(workDir).filePath(QStringLiteral("video_clock.txt")));
+        if (clock.open(QIODevice::WriteOnly | QIODevice::Text))
+            clock.write(QStringLiteral("--video-offset-s %1 --video-drift %2\n").arg(c.offset_s, 0, 'g', 17).arg(c.drift, 0, 'g', 17).toUtf8());
         out.ok = true;
     } catch (const RunFileError& e) {
         out.problem = e.message();

@@ -38,12 +38,10 @@ private slots:
             QVERIFY2(o.ok, qPrintable(what + QStringLiteral(": ") + o.problem));
             qInfo("%s: without video %.1f %%, with video %.1f %% (%s)", qPrintable(what), 100 * o.withoutVideo, 100 * o.withVideo,
                   qPrintable(o.videoSource));
+            // Issue 13's targets in every case: 80 % without the video, 90 % with it (this draw's
+            // closest, liver1's short fast strokes at 0.82 Hz, reads 90.1 %).
             QVERIFY2(o.withoutVideo >= 0.8, qPrintable(what + QStringLiteral(": without video %1").arg(o.withoutVideo)));
-            // Issue 13 asks 90 % with video in every case; that is not reached yet (the bench
-            // prints where it falls short: the picture mostly confirms the force, and can cost a
-            // point where a boundary moves by a frame). Asserted: the target without video holds
-            // with it too.
-            QVERIFY2(o.withVideo >= 0.8, qPrintable(what + QStringLiteral(": with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
+            QVERIFY2(o.withVideo >= 0.9, qPrintable(what + QStringLiteral(": with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
         }
     }
 };
