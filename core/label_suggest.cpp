@@ -629,8 +629,10 @@ Labels suggestEventLabels(const Run& run)
         };
         point(QStringLiteral("contact"), e.contact.time_s);
         point(QStringLiteral("puncture"), e.puncture.time_s);
-        if (e.relaxation)
-            point(QStringLiteral("relaxation"), e.relaxation->time_s);
+        // No relaxation: the tissue's surface springing back after the puncture (to x_s3,
+        // models.md 4) takes a few tenths of a second, and the force does not show when it is
+        // done; the end of the force's drop, a few milliseconds after the puncture, is not it.
+        // The operator marks it from the imaging video.
         for (const RunEvent& p : e.internalPunctures)
             point(QStringLiteral("internal puncture"), p.time_s);
     } catch (const std::exception&) {

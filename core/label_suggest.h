@@ -5,8 +5,9 @@
 //   runs from the turning point while the tissue is carried with the needle (the force well
 //   below the sliding line), b1/b2 while it bears on the plate (the force rising to the
 //   line), c from where the force follows the sliding line (tissue at rest) to the end;
-// - linear (stiffness) runs: contact, puncture, relaxation and internal punctures from
-//   core/events.h on the "events" point track.
+// - linear (stiffness) runs: contact, puncture and internal punctures from core/events.h
+//   on the "events" point track (not relaxation: the force does not show when the surface
+//   has sprung back; the operator marks it from the video).
 
 #include "labels.h"
 #include "run.h"
