@@ -307,10 +307,28 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     const double scale = std::min(1.0, 360.0 / std::max(s.width, s.height));
     cv::Mat small;
     cv::resize(ridge, small, cv::Size(), scale, scale, cv::INTER_AREA);
-    // Cap the ridge so that a wide bright bar does not outweigh a long thin needle.
+    // What noise leaves in the ridge everywhere is taken off first: in a noisy picture it
+    // adds up along a line with its length, and the picture's long diagonals outweighed a
+    // needle reaching half across it (seed 586261: 16 candidates, all diagonals).
     std::vector<float> values(small.begin<float>(), small.end<float>());
+    const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
+    std::nth_element(values.begin(), mid, values.end());
+    const float floor = *mid;
+    std::vector<float> spread;
+    spread.reserve(values.size());
+    for (float v : values)
+        spread.push_back(std::abs(v - floor));
+    std::nth_element(spread.begin(), spread.begin() + std::ptrdiff_t(spread.size() / 2), spread.end());
+    const float noise = 1.4826f * spread[spread.size() / 2];
+    small -= floor;
+    cv::max(small, 0.0f, small);
+    // Cap the ridge so that a wide bright bar does not outweigh a long thin needle, but
+    // well above the noise: a thin needle is less than a hundredth of the picture, and a
+    // cap at the noise's own tail made it no more than noise.
+    for (float& v : values)
+        v = std::max(0.0f, v - floor);
     std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() * 99 / 100), values.end());
-    const float cap = std::max(1e-3f, values[values.size() * 99 / 100]);
+    const float cap = std::max({1e-3f, values[values.size() * 99 / 100], 6.0f * noise});
     cv::min(small, cap, small);
     const int diag = int(std::ceil(std::hypot(small.cols, small.rows))) + 2;
     const cv::Point2f centre(small.cols / 2.0f, small.rows / 2.0f);

@@ -112,6 +112,27 @@ private slots:
         expectSynchronised(c);
     }
 
+    // Heavy noise, low contrast, a needle reaching from the top edge to the middle, at rest
+    // for most of the video: the noise, summed along the picture's long diagonals, outweighed
+    // the needle's line and no needle was found at all (seed 586261, 1004 frames off).
+    void noisyNeedleAcrossHalfThePicture()
+    {
+        if (!nb::test::haveFfmpeg())
+            QSKIP("the ffmpeg tool is needed to encode the videos");
+        SyncCase c;
+        c.sine = false;
+        c.velocity_mm_s = 6.0;
+        c.depth_mm = 30.0;
+        c.offset_s = 13.5;
+        c.drift = 0.0007;
+        c.look = Look::NoisyLowContrast;
+        c.codec = Codec::Dv;
+        c.width = 720;
+        c.height = 480;
+        c.seed = 4013;  // a needle at 96 deg, darker than the background
+        expectSynchronised(c);
+    }
+
     void frictionFindsItsBand()
     {
         std::mt19937 rng(seed_ + 1);
