@@ -170,13 +170,14 @@ int main(int argc, char** argv)
             ++misses;
             honestMisses += !o.acceptable;
         }
-        out << QStringLiteral("%1  err %2 fr  conf %3%4  %5 s  %6\n")
+        out << QStringLiteral("%1  err %2 fr  conf %3%4  %5 s  %6  (%7 % of frames without a tip)\n")
                    .arg(i, 3)
                    .arg(o.errorFrames, 6, 'f', 2)
                    .arg(o.confidence, 4, 'f', 2)
                    .arg(o.errorFrames > 1.0 ? (o.acceptable ? QStringLiteral(" MISS!") : QStringLiteral(" miss ")) : QStringLiteral("      "))
                    .arg(o.seconds, 5, 'f', 1)
-                   .arg(cases[i].describe());
+                   .arg(cases[i].describe())
+                   .arg(100 * o.maskedFraction, 0, 'f', 1);
         out.flush();
     }
     // A case the pipeline could not finish counts as a miss (with no offset to accept).

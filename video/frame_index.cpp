@@ -163,10 +163,17 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
         throw VideoError(path, nb::TrDevices::tr("no frame could be decoded (truncated or corrupt file?)"));
     if (progress)
         progress(index.size(), index.containerFrames);
-    if (!(cancel && cancel->load()) && index.containerFrames > 0 && index.size() < index.containerFrames * 0.98 - 1)
+    // The container's count is often its duration times the nominal rate; when that rate is
+    // a time base (a variable-rate MKV says 1000 frames/s for 30 pictures a second) the
+    // count is as many times too high. What it stands for is then only an estimate (the
+    // duration over the usual interval counts dropped frames too), taken with more slack.
+    const double picturesPerNominal = index.fpsNominal * index.frameDuration();
+    const bool timeBase = picturesPerNominal > 2.0;
+    const int expected = timeBase ? int(std::lround(index.containerFrames / picturesPerNominal)) : index.containerFrames;
+    if (!(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1)
         index.warnings << nb::TrDevices::tr("the file ends early: %1 of %2 frames are readable (truncated?)")
                               .arg(index.size())
-                              .arg(index.containerFrames);
+                              .arg(expected);
     if (!index.timestampsMonotonic)
         index.warnings << nb::TrDevices::tr("frame timestamps are not increasing: frames are reached by decoding from the start");
 

@@ -16,6 +16,13 @@ FrameReader::FrameReader(FrameIndex index, int cacheFrames) : index_(std::move(i
     if (index_.medianInterval_s <= 0)
         index_.updateStats();
     firstFrameNumber_ = int(std::llround(index_.timeOrigin_s * index_.fpsNominal));
+    // OpenCV seeks to a frame number as time × nominal rate, then counts one per frame it
+    // decodes. When the nominal rate is a time base rather than the picture rate (a
+    // variable-rate MKV says 1000 frames/s for 30 pictures a second) it decodes on some 30
+    // times too far, often to the end of the file, and every read after a seek decodes from
+    // the start again: 6 minutes to sync a 25 s video. Such a file is read forward only.
+    const double picturesPerNominal = index_.fpsNominal * index_.frameDuration();
+    seekable_ = index_.timestampsMonotonic && !(index_.fpsNominal > 0 && (picturesPerNominal > 2.0 || picturesPerNominal < 0.5));
     reopen();
     stats_.sequentialResets = 0;
 }
@@ -54,7 +61,8 @@ int FrameReader::grabNext()
 
 bool FrameReader::forwardIsCheaper(int from, int to) const
 {
-    if (to - from <= 12)
+    // Without a usable seek the alternative is decoding from the start.
+    if (!seekable_ || to - from <= 12)
         return true;
     if (!index_.keyframesKnown)
         return to - from <= 30;
@@ -65,7 +73,7 @@ bool FrameReader::forwardIsCheaper(int from, int to) const
 
 void FrameReader::seekTo(int n)
 {
-    if (!index_.timestampsMonotonic || n == 0) {
+    if (!seekable_ || n == 0) {
         reopen();
         return;
     }

@@ -51,6 +51,7 @@ private:
     bool fresh_ = true;     // just opened: the next grab is frame 0
     int current_ = -1;      // index of the last grabbed frame; -1 before the first
     int firstFrameNumber_ = 0;
+    bool seekable_ = true;  // OpenCV's frame seek can land near a frame (see the constructor)
     ReaderStats stats_;
 };
 

@@ -307,10 +307,28 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     const double scale = std::min(1.0, 360.0 / std::max(s.width, s.height));
     cv::Mat small;
     cv::resize(ridge, small, cv::Size(), scale, scale, cv::INTER_AREA);
-    // Cap the ridge so that a wide bright bar does not outweigh a long thin needle.
+    // What noise leaves in the ridge everywhere is taken off first: in a noisy picture it
+    // adds up along a line with its length, and the picture's long diagonals outweighed a
+    // needle reaching half across it (seed 586261: 16 candidates, all diagonals).
     std::vector<float> values(small.begin<float>(), small.end<float>());
+    const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
+    std::nth_element(values.begin(), mid, values.end());
+    const float floor = *mid;
+    std::vector<float> spread;
+    spread.reserve(values.size());
+    for (float v : values)
+        spread.push_back(std::abs(v - floor));
+    std::nth_element(spread.begin(), spread.begin() + std::ptrdiff_t(spread.size() / 2), spread.end());
+    const float noise = 1.4826f * spread[spread.size() / 2];
+    small -= floor;
+    cv::max(small, 0.0f, small);
+    // Cap the ridge so that a wide bright bar does not outweigh a long thin needle, but
+    // well above the noise: a thin needle is less than a hundredth of the picture, and a
+    // cap at the noise's own tail made it no more than noise.
+    for (float& v : values)
+        v = std::max(0.0f, v - floor);
     std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() * 99 / 100), values.end());
-    const float cap = std::max(1e-3f, values[values.size() * 99 / 100]);
+    const float cap = std::max({1e-3f, values[values.size() * 99 / 100], 6.0f * noise});
     cv::min(small, cap, small);
     const int diag = int(std::ceil(std::hypot(small.cols, small.rows))) + 2;
     const cv::Point2f centre(small.cols / 2.0f, small.rows / 2.0f);
@@ -418,13 +436,16 @@ struct AxisTracker {
     std::vector<double> still;
     double sigma = 1.0;
     int polarity = 1;
+    double frame_s = 1.0 / 30.0;  // the video's usual frame interval
     double last = kNaN;  // last tip position (profile samples)
     double lastTime_s = kNaN;
-    double velocity = 0.0;  // profile samples per second, from the last two positions found
+    double velocity = 0.0;  // profile samples per second, over the last few sightings
     int lost = 0;        // frames since it was last seen
     std::vector<double> strengths;
+    std::vector<std::pair<double, double>> recent;  // (time, position) of the last sightings in a row
 
-    AxisTracker(const NeedleAxis& axis, const Samples& s) : strip(axis, s.width, s.height, 2)
+    AxisTracker(const NeedleAxis& axis, const Samples& s, double frameDuration_s)
+        : strip(axis, s.width, s.height, 2), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0)
     {
         if (strip.length < 20)
             return;
@@ -443,12 +464,28 @@ struct AxisTracker {
         still = polarity > 0 ? up : down;
     }
 
+    // How strong the tip's edge has been lately. In a clean picture the noise is a fraction
+    // of a grey level and coding artefacts along the shaft (block edges, ringing) stand
+    // many σ out of it; the tip stands out far more. A tip hidden for long may come back
+    // fainter (other background), so the memory fades while it is lost.
+    double typicalStrength() const
+    {
+        if (strengths.size() < 5)
+            return 0.0;
+        const std::size_t k = std::min<std::size_t>(strengths.size(), 25);
+        const double m = median(std::vector<double>(strengths.end() - std::ptrdiff_t(k), strengths.end()));
+        return lost > 8 ? m * std::pow(0.9, lost - 8) : m;
+    }
+
     // The tip in this frame: searched near where it should be by now (a faint tip in heavy
     // noise beats the noise nearby more easily than the noise of the whole line), everywhere
     // when it has been lost for a while. A fast needle moves further between two frames than
-    // the search reaches around its last place, so the search follows its last velocity.
-    // NaN when no edge stands clearly out of the noise. `repeated`: the index calls the
-    // picture a repeat of the one before, which says nothing about the velocity.
+    // the search reaches around its last place, so the search follows its velocity.
+    // NaN when no edge stands clearly out of the noise and like the tip seen so far.
+    // `repeated`: the index calls the picture a repeat of the one before; taken only when
+    // the tip has not moved either (the index judges the whole picture, in which a thin
+    // needle is a few hundred pixels: a clean, smoothly coded video of a fast needle gets
+    // most frames flagged).
     double locate(const cv::Mat& gray, double time_s, bool repeated)
     {
         const std::vector<double> g = gradient(strip.profile(gray));
@@ -471,10 +508,13 @@ struct AxisTracker {
                 best = i;
             }
         }
-        if (best < 0 || !(bestV > (near ? 3.5 : 5.0) * sigma)) {
+        const double needed = std::max((near ? 3.5 : 5.0) * sigma, 0.25 * typicalStrength() * sigma);
+        if (best < 0 || !(bestV > needed)) {
             ++lost;
-            if (lost >= 8)
+            if (lost >= 8) {
                 velocity = 0.0;
+                recent.clear();
+            }
             return kNaN;
         }
         strengths.push_back(bestV / sigma);
@@ -482,13 +522,45 @@ struct AxisTracker {
         const double a = v(best - 1), b = v(best), c = v(best + 1), den = a - 2 * b + c;
         const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
         const double found = best + frac;
-        // The velocity only from two sightings close in time (not across a loss).
-        if (!repeated)
-            velocity = std::isfinite(last) && lost == 0 && time_s > lastTime_s ? (found - last) / (time_s - lastTime_s) : 0.0;
+        const bool repeat = repeated && std::isfinite(last) && std::abs(found - last) < 0.5;
+        if (!repeat)
+            updateVelocity(time_s, found);
         last = found;
         lastTime_s = time_s;
         lost = 0;
         return last;
+    }
+
+    // The velocity as the straight line through the last few sightings, not from the last
+    // two alone: a variable-rate file's timestamps may sit a millisecond apart for frames a
+    // frame apart (a writer's rounding), and two such points make any velocity.
+    void updateVelocity(double time_s, double found)
+    {
+        recent.emplace_back(time_s, found);
+        while (recent.size() > 4 || (recent.size() > 1 && time_s - recent.front().first > 0.3))
+            recent.erase(recent.begin());
+        const double span = recent.back().first - recent.front().first;
+        if (recent.size() < 2 || span < 0.5 * frame_s) {
+            velocity = 0.0;
+            return;
+        }
+        double mt = 0, mx = 0;
+        for (const auto& [t, x] : recent) {
+            mt += t;
+            mx += x;
+        }
+        mt /= double(recent.size());
+        mx /= double(recent.size());
+        double stt = 0, stx = 0;
+        for (const auto& [t, x] : recent) {
+            stt += (t - mt) * (t - mt);
+            stx += (t - mt) * (x - mx);
+        }
+        // The line lags a needle that speeds up; the newest step says where it is going.
+        const double fitted = stt > 0 ? stx / stt : 0.0;
+        const auto& p = recent[recent.size() - 2];
+        const double dt = time_s - p.first;
+        velocity = dt >= 0.5 * frame_s ? 0.5 * (fitted + (found - p.second) / dt) : fitted;
     }
 };
 
@@ -533,7 +605,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
     std::vector<AxisTracker> trackers;
     std::vector<NeedleTrack> out(axes.size());
     for (std::size_t a = 0; a < axes.size(); ++a) {
-        trackers.emplace_back(axes[a], s);
+        trackers.emplace_back(axes[a], s, index.frameDuration());
         if (trackers.back().strip.length < 20)
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
         out[a].axis = axes[a];

@@ -233,10 +233,14 @@ QString encode(const SyncCase& c, const std::vector<cv::Mat>& frames, const Timi
     if (!vfr)
         return encodeConstantRate(frames, c.codec, fps, *path);
     // Timestamps as written: raw frames at a fine clock, each shown until the next.
-    // ffmpeg's concat demuxer takes a duration per picture.
+    // ffmpeg's concat demuxer takes a duration per picture. Each picture is opened at the
+    // case's timestamp clock ("option framerate"), a millisecond unless the case asks for a
+    // coarse one: at the image reader's default of 25 per second the timestamps land on a
+    // 40 ms grid, bumped by 1 ms where two meet.
     QFile list(QDir(dir).filePath(QStringLiteral("frames.txt")));
     if (!list.open(QIODevice::WriteOnly))
         return QStringLiteral("cannot write the frame list");
+    list.write("ffconcat version 1.0\n");
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const QString name = QDir(dir).filePath(QStringLiteral("f%1.pgm").arg(k, 6, 10, QLatin1Char('0')));
         cv::Mat m = frames[k];
@@ -247,7 +251,7 @@ QString encode(const SyncCase& c, const std::vector<cv::Mat>& frames, const Timi
         f.write(reinterpret_cast<const char*>(m.data), qint64(m.total()));
         f.close();
         const double next = k + 1 < frames.size() ? t.time_s[k + 1] : t.time_s[k] + 1.0 / fps;
-        list.write(QStringLiteral("file '%1'\nduration %2\n").arg(name).arg(next - t.time_s[k], 0, 'f', 6).toUtf8());
+        list.write(QStringLiteral("file '%1'\noption framerate %3\nduration %2\n").arg(name).arg(next - t.time_s[k], 0, 'f', 6).arg(c.timestampClock_hz).toUtf8());
     }
     list.close();
     QProcess p;
@@ -371,6 +375,8 @@ SyncOutcome runSyncCase(const SyncCase& c, const QString& executable, const QStr
         out.seconds = timer.elapsed() / 1000.0;
         out.confidence = vs.result.confidence;
         out.acceptable = vs.result.acceptable();
+        if (!vs.track.time_s.empty())
+            out.maskedFraction = double(vs.track.masked) / double(vs.track.time_s.size());
         double worst = 0.0;
         for (double tr = 0.0; tr <= runEnd; tr += 0.1)
             worst = std::max(worst, std::abs(vs.result.mapping().toVideo(tr) - ((1 + c.drift) * tr + c.offset_s)));

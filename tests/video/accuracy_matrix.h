@@ -43,6 +43,10 @@ struct SyncCase {
     Codec codec = Codec::Mjpeg;
     int width = 640, height = 480;
     unsigned seed = 1;
+    // VariableRate: the clock the file's timestamps are written on. A writer with a coarse
+    // clock rounds them (frames a frame apart may land 1 ms apart); the truth stays the
+    // time each picture was taken.
+    int timestampClock_hz = 1000;
 
     QString describe() const;
 };
@@ -55,6 +59,7 @@ struct SyncOutcome {
     double confidence = 0.0;
     bool acceptable = false;
     double seconds = 0.0;         // time the pipeline took (index, track, fit)
+    double maskedFraction = 0.0;  // frames of the chosen needle line without a tip
 };
 
 // Draws `count` cases. `small` shrinks videos and runs (for the ctest).

@@ -181,6 +181,41 @@ private slots:
         QVERIFY(wrong > 0);
     }
 
+    // A variable-rate MKV whose nominal rate is its millisecond time base (OpenCV says 1000
+    // frames/s for 30 pictures a second, as many recorders' files do): OpenCV's frame seek
+    // then decodes on some 30 times too far, and a reader that seeks decoded the file from
+    // the start for nearly every frame read in spread order (a 25 s video took 6 minutes to
+    // sync). Read forward, every frame is still the right one.
+    void millisecondNominalRateReadsForward()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(150);
+        spec.filterArgs = QStringList{"-vf", "settb=1/1000,setpts=floor(N*100/3)+floor(N/10)*17", "-fps_mode", "passthrough",
+                                      "-r", "1000", "-enc_time_base", "1/1000"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "20", "-bf", "2", "-pix_fmt", "yuv420p"};
+        const QString file = path("ms_rate.mkv");
+        const QString err = writeVideo(file, spec);
+        QVERIFY2(err.isEmpty(), qPrintable(err));
+        const FrameIndex index = buildFrameIndex(file);
+        QCOMPARE(index.size(), 150);
+        QVERIFY2(index.fpsNominal > 500, qPrintable(QStringLiteral("nominal %1 frames/s: the file does not show the case").arg(index.fpsNominal)));
+        // Nor is it called truncated for holding 1/33 of the frames its rate suggests.
+        QVERIFY2(index.warnings.isEmpty(), qPrintable(index.warnings.join(QLatin1Char('\n'))));
+        FrameReader reader(index, 8);
+        // Far enough apart (a keyframe in between) that a seek would be tried.
+        for (int n = 0; n < 150; n += 25) {
+            const DecodedFrame f = reader.read(n);
+            QCOMPARE(readCode(f.image), n);
+            QCOMPARE(f.time_s, index.frames[std::size_t(n)].time_s);
+        }
+        qInfo("seeks %d retries %d resets %d", reader.stats().seeks, reader.stats().retries, reader.stats().sequentialResets);
+        // The first read opens the file afresh; none after it starts from the beginning.
+        QVERIFY2(reader.stats().sequentialResets <= 1, qPrintable(QStringLiteral("%1 decodes from the start").arg(reader.stats().sequentialResets)));
+        // Going back still lands on the right frames.
+        QCOMPARE(readCode(reader.read(40).image), 40);
+        QCOMPARE(readCode(reader.read(3).image), 3);
+    }
+
     void duplicatesFlagged()
     {
         VideoSpec spec;
