@@ -6109,7 +6109,7 @@ Befehle:
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+11" />
         <source>the file ends early: %1 of %2 frames are readable (truncated?)</source>
         <translation>die Datei endet zu früh: %1 von %2 Bildern sind lesbar (abgeschnitten?)</translation>
     </message>
@@ -6124,12 +6124,12 @@ Befehle:
         <translation>das Video hat keine indizierten Bilder</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+19" />
         <source>cannot reopen the video (moved or deleted?)</source>
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+68" />
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
@@ -6498,7 +6498,7 @@ Befehle:
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+538" />
+        <location filename="../video/needle_tracker.cpp" line="+610" />
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
@@ -6523,12 +6523,12 @@ Befehle:
         <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+71" />
+        <location filename="../video/tissue_tracker.cpp" line="+75" />
         <source>the region for the tissue's motion is too small or outside the picture</source>
         <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location line="+91" />
         <source>too few frames or samples to follow the tissue</source>
         <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
     </message>

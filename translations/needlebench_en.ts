@@ -6027,7 +6027,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+11"/>
         <source>the file ends early: %1 of %2 frames are readable (truncated?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6042,12 +6042,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+19"/>
         <source>cannot reopen the video (moved or deleted?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+68"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6416,7 +6416,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+538"/>
+        <location filename="../video/needle_tracker.cpp" line="+610"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6441,12 +6441,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+71"/>
+        <location filename="../video/tissue_tracker.cpp" line="+75"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+91"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation type="unfinished"></translation>
     </message>
