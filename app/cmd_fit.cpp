@@ -311,7 +311,6 @@ int fitFrictionCommand(const QStringList& args, Io io)
         return usage(nb::TrCli::tr("--labels applies to a single run; give one run per call"));
 
     std::vector<FrictionFit> fits;
-    std::vector<RunPeaks> peaks;
     for (const QString& path : files) {
         const Run run = loadRun(path, io);
         QStringList phases;
@@ -325,11 +324,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
         fits.push_back(onFile(path, [&] { return fitFriction(run, options, phases); }));
         const KarnoppModel& k = fits.back().model;
         requireFinite(path, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, k.Dp_N, k.Dn_N, fits.back().rms_N});
-        peaks.push_back(peakPoints(run, options));
-        checkAgainstFit(peaks.back(), fits.back());
     }
     const auto groups = groupByFrequency(fits);
     const FrictionGroup all = overall(fits);
+    std::vector<RunPeaks> peaks;
+    for (const FrictionFit& f : fits)
+        peaks.push_back(f.peaks);
     const std::optional<PeakSpeedLine> peakLine = peakSpeedLine(peaks);
     const double L = options.thickness_mm / 1000.0;
     auto linePerLength = [&](const PeakSpeedLine& l) {
@@ -370,10 +370,10 @@ int fitFrictionCommand(const QStringList& args, Io io)
                 return QJsonObject{{QStringLiteral("speed_m_s"), p.speed_m_s}, {QStringLiteral("force_N"), p.force_N},
                                    {QStringLiteral("settled"), p.settled}};
             };
-            if (peaks[i].positive)
-                top.insert(QStringLiteral("positive"), peakJson(*peaks[i].positive));
-            if (peaks[i].negative)
-                top.insert(QStringLiteral("negative"), peakJson(*peaks[i].negative));
+            if (f.peaks.positive)
+                top.insert(QStringLiteral("positive"), peakJson(*f.peaks.positive));
+            if (f.peaks.negative)
+                top.insert(QStringLiteral("negative"), peakJson(*f.peaks.negative));
             o.insert(QStringLiteral("peak"), top);
             if (peakLine) {
                 const LineDeparture d = departureFromLine(f, *peakLine);

@@ -2,6 +2,7 @@
 #include "core/tr.h"
 
 #include "fit_error.h"
+#include "friction_peak_line.h"
 #include "signal.h"
 #include "statistics.h"
 
@@ -508,6 +509,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     bool ok = false;
     const double mf = metaF ? metaF->trimmed().toDouble(&ok) : 0.0;
     fit.frequency_hz = ok && mf > 0.0 ? mf : estimateFrequency(run);
+    fit.peaks = peakPoints(c, options);
+    checkAgainstFit(fit.peaks, fit);
     return fit;
 }
 

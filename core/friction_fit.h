@@ -24,6 +24,21 @@ struct FrictionOptions {
     int trimSamples = 100;                      // dropped at each end (filter edges)
 };
 
+// One direction's peak: the mean needle speed and force (the holder's mass removed, as
+// measured: negative for - motion) over the samples just past the top speed
+// (core/friction_peak_line.h: the line through several runs' peaks).
+struct PeakPoint {
+    double speed_m_s = 0.0;
+    double force_N = 0.0;
+    std::size_t samples = 0;
+    // False when the force went on rising well past the top speed: the tissue was still
+    // carried or arriving at the plate there (wide band, large gap, short stroke), so the
+    // point is not on the sliding line and the line leaves it out.
+    bool settled = true;
+};
+struct RunPeaks {
+    std::optional<PeakPoint> positive, negative;
+};
 struct FrictionFit {
     KarnoppModel model;              // C, b from sliding samples; D from sticking ones
     KarnoppPerLength perLength;      // divided by the thickness in m
@@ -46,6 +61,7 @@ struct FrictionFit {
     // point); D_p averages the largest force of the stretches followed by + motion, D_n the
     // smallest of those followed by - motion; "none" when a direction has no such stretch.
     QString staticSource;
+    RunPeaks peaks;                  // top-speed points, checked against this fit
 };
 
 // `phases`: one phase name per sample ("a", "b1", "b2", "c" or empty), e.g. from a labels

@@ -56,14 +56,13 @@ std::optional<LineFit> fitLine(const std::vector<double>& x, const std::vector<d
 
 }  // namespace
 
-RunPeaks peakPoints(const Run& run, const FrictionOptions& options)
+RunPeaks peakPoints(const ConditionedSignals& c, const FrictionOptions& options)
 {
     RunPeaks peaks;
-    const std::size_t n = run.size();
+    const std::size_t n = c.v_m_s.size();
     const std::size_t trim = std::size_t(std::max(0, options.trimSamples));
     if (n < 2 * trim + 20)
         return peaks;
-    const ConditionedSignals c = conditionSignals(run, options.smoothing_s);
     const int w = c.window;
     const std::vector<double>& v = c.v_m_s;
     const std::vector<double>& a = c.a_m_s2;

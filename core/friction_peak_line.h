@@ -20,22 +20,9 @@
 
 namespace nb {
 
-// One direction's peak: the mean needle speed and force (the holder's mass removed, as
-// measured: negative for - motion) over the samples just past the top speed.
-struct PeakPoint {
-    double speed_m_s = 0.0;
-    double force_N = 0.0;
-    std::size_t samples = 0;
-    // False when the force went on rising well past the top speed: the tissue was still
-    // carried or arriving at the plate there (wide band, large gap, short stroke), so the
-    // point is not on the sliding line and the line leaves it out.
-    bool settled = true;
-};
-struct RunPeaks {
-    std::optional<PeakPoint> positive, negative;
-};
-// Uses the fit's smoothing, trimming and mass. Empty sides when a direction never moves.
-RunPeaks peakPoints(const Run& run, const FrictionOptions& options);
+// The run's peaks from its conditioned signals, with the fit's trimming and mass (fitFriction
+// calls this and keeps them in FrictionFit::peaks). Empty sides when a direction never moves.
+RunPeaks peakPoints(const ConditionedSignals& conditioned, const FrictionOptions& options);
 
 // A peak point must also lie on its own run's sliding line (within 1.5 % of its force): one
 // below it was taken while the tissue still moved with the needle. A direction whose C or b

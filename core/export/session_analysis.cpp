@@ -155,8 +155,7 @@ void analyseFriction(const Dataset& d, SessionAnalysis& a, const AnalysisOptions
             f.fit = fitFriction(r.run, o, f.phases);
             fits.push_back(f.fit);
             // Per unit length, so slabs of different thickness share the line.
-            RunPeaks p = peakPoints(r.run, o);
-            checkAgainstFit(p, f.fit);
+            RunPeaks p = f.fit.peaks;
             for (std::optional<PeakPoint>* side : {&p.positive, &p.negative})
                 if (*side)
                     (*side)->force_N /= o.thickness_mm / 1000.0;
