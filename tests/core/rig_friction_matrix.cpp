@@ -1,5 +1,7 @@
 #include "rig_friction_matrix.h"
 
+#include "support/truth_columns.h"
+
 #include "core/fit_error.h"
 #include "core/friction_fit.h"
 #include "core/friction_peak_line.h"
@@ -85,14 +87,7 @@ RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& e
             truth = {f.value(QStringLiteral("Cp_N_per_m")).toDouble(), f.value(QStringLiteral("Cn_N_per_m")).toDouble(),
                      f.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), f.value(QStringLiteral("bn_Ns_per_m2")).toDouble(),
                      f.value(QStringLiteral("Dp_N_per_m")).toDouble(), f.value(QStringLiteral("Dn_N_per_m")).toDouble()};
-            // What a lab has: force and position, neither the true phases nor the tissue's position.
-            Run blind = readRunFile(runPath).run;
-            blind.text.erase(std::remove_if(blind.text.begin(), blind.text.end(),
-                                            [](const auto& c) { return c.first == QLatin1String("phase"); }),
-                             blind.text.end());
-            blind.numeric.erase(std::remove_if(blind.numeric.begin(), blind.numeric.end(),
-                                               [](const auto& c) { return c.first == QLatin1String("tissue_position_mm"); }),
-                                blind.numeric.end());
+            const Run blind = nbtest::withoutTruthColumns(readRunFile(runPath).run);
             FrictionOptions o;
             o.thickness_mm = model.value(QStringLiteral("thickness_mm")).toDouble(30.0);
             thickness_m = o.thickness_mm / 1000.0;

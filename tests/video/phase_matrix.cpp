@@ -1,5 +1,7 @@
 #include "phase_matrix.h"
 
+#include "support/truth_columns.h"
+
 #include "core/label_suggest.h"
 #include "core/labels.h"
 #include "core/run_file.h"
@@ -180,14 +182,7 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
             return out;
         }
         const std::vector<QString> truth = *truthColumn;
-        // What a lab has: force and position. Neither the true phases nor the tissue's position.
-        Run blind = run;
-        blind.text.erase(std::remove_if(blind.text.begin(), blind.text.end(),
-                                        [](const auto& column) { return column.first == QLatin1String("phase"); }),
-                         blind.text.end());
-        blind.numeric.erase(std::remove_if(blind.numeric.begin(), blind.numeric.end(),
-                                           [](const auto& column) { return column.first == QLatin1String("tissue_position_mm"); }),
-                            blind.numeric.end());
+        const Run blind = nbtest::withoutTruthColumns(run);
         const Labels withoutVideo = suggestLabels(blind);
         out.withoutVideo = agreement(truth, withoutVideo, blind.time_s);
         // Beside the run, to look at a case again (bench_accuracy --keep).
