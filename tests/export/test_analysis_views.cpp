@@ -150,6 +150,28 @@ private slots:
                  qPrintable(german.stiffnessRunsModel()->horizontalHeaderItem(3)->text()));
     }
 
+    // One compliant slab (liver3, the thesis's Table 4) at three frequencies and no insertion:
+    // the page opens on Friction, the summary carries the line through the peak speeds, and
+    // the fast run, whose own C the slab's spring-back tilts, is named in the status.
+    void compliantSlabOpensOnFrictionWithThePeakSpeedLine()
+    {
+        QTemporaryDir tmp;
+        const QDir d(tmp.path());
+        int k = 1;
+        for (const char* f : {"0.2", "0.5", "0.8"})
+            QVERIFY(simulate({"--protocol", "friction", "--tissue", "liver3", "--frequency-hz", QLatin1String(f), "--cycles", "4",
+                              "--seed", "11", "--out", d.filePath(QStringLiteral("run_00%1_sine.csv").arg(k++))}));
+        AnalysisWorkspace w;
+        QVERIFY(w.openSession(tmp.path()));
+        QCOMPARE(w.tabs()->currentIndex(), 1);
+        QCOMPARE(w.analysis().frictionPeakLines.size(), std::size_t(1));
+        bool lineRow = false;
+        for (int r = 0; r < w.frictionSummaryModel()->rowCount(); ++r)
+            lineRow |= w.frictionSummaryModel()->item(r, 0)->text() == QStringLiteral("peak speeds, liver3");
+        QVERIFY(lineRow);
+        QVERIFY2(w.statusText().contains(QStringLiteral("run_003_sine: C departs from the peak-speed line")), qPrintable(w.statusText()));
+    }
+
     void runChoiceAndLabelEditsUpdateResults()
     {
         AnalysisWorkspace w;
