@@ -365,6 +365,13 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           {QStringLiteral("not_physical_values"), QJsonArray::fromStringList(f.notPhysicalValues)}};
             if (f.massEstimate_kg)
                 o.insert(QStringLiteral("m_est_kg"), *f.massEstimate_kg);
+            // b/k of a slab that springs back off the plate (0: the run shows none), and k.
+            QJsonObject springBack{{QStringLiteral("positive_s"), f.springBackP_s}, {QStringLiteral("negative_s"), f.springBackN_s}};
+            if (f.springBackP_s > 0.0)
+                springBack.insert(QStringLiteral("slab_stiffness_positive_N_per_m"), f.model.bp_Ns_per_m / f.springBackP_s);
+            if (f.springBackN_s > 0.0)
+                springBack.insert(QStringLiteral("slab_stiffness_negative_N_per_m"), f.model.bn_Ns_per_m / f.springBackN_s);
+            o.insert(QStringLiteral("spring_back"), springBack);
             QJsonObject top;
             auto peakJson = [](const PeakPoint& p) {
                 return QJsonObject{{QStringLiteral("speed_m_s"), p.speed_m_s}, {QStringLiteral("force_N"), p.force_N},
@@ -464,6 +471,14 @@ int fitFrictionCommand(const QStringList& args, Io io)
             io.out << nb::TrCli::tr("%1: zero-velocity band ±%2 mm/s (given)\n").arg(name, num(f.band_m_s * 500.0, 3));
         io.out << nb::TrCli::tr("%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5\n")
                       .arg(name, num(f.seCp_N / L, 3), num(f.seBp_Ns_per_m / L, 3), num(f.seCn_N / L, 3), num(f.seBn_Ns_per_m / L, 3));
+        if (f.springBackP_s > 0.0 || f.springBackN_s > 0.0) {
+            auto stiffness = [&](double b, double lag) {
+                return lag > 0.0 ? nb::TrCli::tr("%1 N/m").arg(num(b / lag, 3)) : nb::TrCli::tr("no give seen");
+            };
+            io.out << nb::TrCli::tr("%1: the slab springs back off the plate as the needle slows (its stiffness against the plate: "
+                                    "%2 in + motion, %3 in - motion); C and b are taken against the tissue's motion\n")
+                          .arg(name, stiffness(f.model.bp_Ns_per_m, f.springBackP_s), stiffness(f.model.bn_Ns_per_m, f.springBackN_s));
+        }
         for (const QString& why : f.notPhysical)
             io.out << nb::TrCli::tr("%1: NOT PHYSICAL: %2\n").arg(name, why);
         if (peakLine) {

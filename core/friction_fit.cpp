@@ -108,16 +108,46 @@ std::optional<Line> lineThrough(const std::vector<double>& v, const std::vector<
     return l;
 }
 
-// Without phases the band alone decides what slides, and it cannot see a stroke where the
+// A compliant slab pressed against the plate gives as the friction on it changes: it moves
+// back by ΔF/k as the needle slows, so the relative velocity is v - Ḟ/k and the force
+// F = C + b·v - (b/k)·Ḟ. The fit takes the last term as a third column; its coefficient,
+// b/k in seconds, cannot be negative (a slab cannot lead the force), so then it is left out
+// and the plain line (c, b unchanged) stands. Returns b/k, 0 when left out.
+template <typename Force>
+double slabSpringBack(const std::vector<std::size_t>& idx, const std::vector<double>& v, const std::vector<double>& forceRate,
+                      Force force, double* c, double* b)
+{
+    if (idx.size() < 10)
+        return 0.0;
+    Eigen::MatrixXd M(Eigen::Index(idx.size()), 3);
+    Eigen::VectorXd y(Eigen::Index(idx.size()));
+    for (std::size_t r = 0; r < idx.size(); ++r) {
+        M.row(Eigen::Index(r)) << 1.0, v[idx[r]], forceRate[idx[r]];
+        y(Eigen::Index(r)) = force(idx[r]);
+    }
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(M);
+    if (qr.rank() < 3)
+        return 0.0;
+    const Eigen::VectorXd q = qr.solve(y);
+    if (!(q(2) < 0.0))
+        return 0.0;
+    *c = q(0);
+    *b = q(1);
+    return -q(2);
+}
+
+// Neither the band nor a labelled phase c alone can see a stroke where the
 // tissue is carried, still arriving at the plate, ringing against it or held by it as the
 // needle stops (short strokes, large gaps, wide bands): those samples lie off the sliding
 // line. So per direction the line is started from the one most slowing-down samples follow
 // (a consensus of lines through pairs of them, within the force's noise; carried samples
 // mostly speed up, and no other stretch is a line with C > 0 and b > 0), then grown to every
-// candidate that follows it, the others dropped.
+// candidate that follows it, the others dropped. The line grows with the slab's spring-back
+// term (slabSpringBack): near the turning points a compliant slab leaves the plain line just
+// where the samples that pin C lie.
 std::vector<std::size_t> consistentlySliding(const std::vector<std::size_t>& rows, const std::vector<double>& v,
                                              const std::vector<double>& a, const std::vector<double>& f, double mass,
-                                             double noise_N)
+                                             double noise_N, const std::vector<double>& forceRate)
 {
     auto force = [&](std::size_t i) { return f[i] - mass * a[i]; };
     std::mt19937 rng(20021);  // fixed: the same run always gives the same fit
@@ -170,18 +200,20 @@ std::vector<std::size_t> consistentlySliding(const std::vector<std::size_t>& row
         };
         std::vector<std::size_t> current = seeds.size() >= 20 ? seeds : all;
         for (int iteration = 0; iteration < 12; ++iteration) {
-            const auto l = fitOf(current);
+            auto l = fitOf(current);
             if (!l)
                 break;
+            const double lag = slabSpringBack(current, v, forceRate, force, &l->c, &l->b);
+            auto deviation = [&](std::size_t i) { return std::fabs(force(i) - l->c - l->b * v[i] + lag * forceRate[i]); };
             std::vector<double> dev;
             for (std::size_t i : current)
-                dev.push_back(std::fabs(force(i) - l->c - l->b * v[i]));
+                dev.push_back(deviation(i));
             const auto mid = dev.begin() + std::ptrdiff_t(dev.size() / 2);
             std::nth_element(dev.begin(), mid, dev.end());
             const double sigma = 1.4826 * *mid;
             std::vector<std::size_t> next;
             for (std::size_t i : all)
-                if (std::fabs(force(i) - l->c - l->b * v[i]) <= 3.0 * sigma)
+                if (deviation(i) <= 3.0 * sigma)
                     next.push_back(i);
             if (next.size() < 20 || next == current)
                 break;
@@ -349,8 +381,15 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         rows.push_back(i);
     }
     const double mass0 = options.estimateMass ? 0.0 : options.mass_kg;
-    if (!usePhases)
-        rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N);
+    // The slab's spring-back term (slabSpringBack) needs the rate of the friction force:
+    // the holder's inertia is taken out first (with the nominal mass when it is estimated).
+    std::vector<double> friction(n);
+    for (std::size_t i = 0; i < n; ++i)
+        friction[i] = f[i] - options.mass_kg * a[i];
+    const std::vector<double> forceRate = movingAverage(derivative(run.time_s, friction), w);
+    // Phase c as labelled still holds samples off the sliding line: the slab settling against
+    // the plate as c begins, stick-slip as the needle stops.
+    rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N, forceRate);
     std::size_t pos = 0, neg = 0;
     for (std::size_t i : rows)
         (v[i] > 0.0 ? pos : neg) += 1;
@@ -361,40 +400,65 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     if (pos < 3 || neg < 3)
         throw FitError(nb::TrCore::tr("motion in one direction only (%1 samples moving in, %2 moving out)").arg(pos).arg(neg));
 
-    const int cols = options.estimateMass ? 5 : 4;
     const int off = options.estimateMass ? 1 : 0;
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(rows.size()), cols);
-    Eigen::VectorXd y(Eigen::Index(rows.size()));
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        const std::size_t i = rows[r];
-        const auto ri = Eigen::Index(r);
-        if (options.estimateMass)
-            A(ri, 0) = a[i];
-        // Rows follow eq. 19/21: [s+, s+·v, s-, s-·v], s- = -1 for v < 0 (F = -Cn + bn·v).
-        if (v[i] > 0.0) {
-            A(ri, off + 0) = 1.0;
-            A(ri, off + 1) = v[i];
-        } else {
-            A(ri, off + 2) = -1.0;
-            A(ri, off + 3) = v[i];
+    // Columns follow eq. 19/21: [a], s+, s+·v, s-, s-·v, s- = -1 for v < 0 (F = -Cn + bn·v),
+    // then the spring-back columns s+·Ḟ, s-·Ḟ of the directions that take one.
+    struct Solution {
+        Eigen::VectorXd p, se, res;
+        int springP = -1, springN = -1;  // column of each direction's spring-back term
+    };
+    auto solve = [&](bool springP, bool springN) {
+        Solution sol;
+        int cols = off + 4;
+        if (springP)
+            sol.springP = cols++;
+        if (springN)
+            sol.springN = cols++;
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(rows.size()), cols);
+        Eigen::VectorXd y(Eigen::Index(rows.size()));
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            const std::size_t i = rows[r];
+            const auto ri = Eigen::Index(r);
+            if (options.estimateMass)
+                A(ri, 0) = a[i];
+            const bool plus = v[i] > 0.0;
+            A(ri, off + (plus ? 0 : 2)) = plus ? 1.0 : -1.0;
+            A(ri, off + (plus ? 1 : 3)) = v[i];
+            if (const int k = plus ? sol.springP : sol.springN; k >= 0)
+                A(ri, k) = -forceRate[i];
+            y(ri) = f[i] - (options.estimateMass ? 0.0 : options.mass_kg * a[i]);
         }
-        y(ri) = f[i] - (options.estimateMass ? 0.0 : options.mass_kg * a[i]);
+        const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+        if (qr.rank() < cols)
+            return std::optional<Solution>();
+        sol.p = qr.solve(y);
+        sol.res = y - A * sol.p;
+        sol.se = Eigen::VectorXd::Zero(cols);
+        if (sol.res.size() > cols) {
+            const double s2 = sol.res.squaredNorm() / double(sol.res.size() - cols);
+            const Eigen::MatrixXd cov = s2 * (A.transpose() * A).inverse();
+            // Neighbouring smoothed samples share their noise: about one independent sample
+            // per smoothing window.
+            const double widen = std::sqrt(double(std::max(1, w)));
+            for (int k = 0; k < cols; ++k)
+                sol.se(k) = std::sqrt(std::max(0.0, cov(k, k))) * widen;
+        }
+        return std::optional<Solution>(std::move(sol));
+    };
+    // A direction keeps its spring-back term only where the run shows one: positive (a slab
+    // lags the force) and well above its standard error; a stiff slab keeps the plain line,
+    // whose C and b the extra column would only make noisier.
+    auto shows = [](const Solution& sol, int k) { return k >= 0 && sol.p(k) > 0.0 && sol.p(k) > 3.0 * sol.se(k); };
+    std::optional<Solution> solved = solve(true, true);
+    if (!solved || !shows(*solved, solved->springP) || !shows(*solved, solved->springN)) {
+        const bool keepP = solved && shows(*solved, solved->springP), keepN = solved && shows(*solved, solved->springN);
+        solved = solve(keepP, keepN);
     }
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
-    if (qr.rank() < cols)
+    if (!solved)
         throw FitError(nb::TrCore::tr("the friction fit is singular (velocity does not vary within a direction)"));
-    const Eigen::VectorXd p = qr.solve(y);
-    const Eigen::VectorXd res = y - A * p;
-    Eigen::VectorXd se = Eigen::VectorXd::Zero(cols);
-    if (res.size() > cols) {
-        const double s2 = res.squaredNorm() / double(res.size() - cols);
-        const Eigen::MatrixXd cov = s2 * (A.transpose() * A).inverse();
-        // Neighbouring smoothed samples share their noise: about one independent sample
-        // per smoothing window.
-        const double widen = std::sqrt(double(std::max(1, w)));
-        for (int k = 0; k < cols; ++k)
-            se(k) = std::sqrt(std::max(0.0, cov(k, k))) * widen;
-    }
+    const Eigen::VectorXd& p = solved->p;
+    const Eigen::VectorXd& se = solved->se;
+    const Eigen::VectorXd& res = solved->res;
 
     FrictionFit fit;
     const double mass = options.estimateMass ? p(0) : options.mass_kg;
@@ -414,6 +478,10 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     fit.seCn_N = se(off + 2);
     fit.seBn_Ns_per_m = se(off + 3);
     fit.rms_N = std::sqrt(res.squaredNorm() / double(res.size()));
+    if (solved->springP >= 0)
+        fit.springBackP_s = p(solved->springP);
+    if (solved->springN >= 0)
+        fit.springBackN_s = p(solved->springN);
     fit.positiveSamples = pos;
     fit.negativeSamples = neg;
 

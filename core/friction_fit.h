@@ -62,6 +62,11 @@ struct FrictionFit {
     // smallest of those followed by - motion; "none" when a direction has no such stretch.
     QString staticSource;
     RunPeaks peaks;                  // top-speed points, checked against this fit
+    // A compliant slab springs back off the plate as the friction on it falls (the needle
+    // slowing), by Ḟ/k: the relative velocity exceeds the needle's there. The fit then takes
+    // F = C + b·(v - Ḟ/k) and reports b/k in s per direction (0: not shown by the run, the
+    // plain line). k = b / springBack is the slab's stiffness against the plate, N/m.
+    double springBackP_s = 0.0, springBackN_s = 0.0;
 };
 
 // `phases`: one phase name per sample ("a", "b1", "b2", "c" or empty), e.g. from a labels

@@ -3366,7 +3366,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+106" />
+        <location line="+113" />
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -3462,7 +3462,24 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
+        <source>%1 N/m</source>
+        <translation>%1 N/m</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>no give seen</source>
+        <translation>kein Nachgeben zu sehen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: the slab springs back off the plate as the needle slows (its stiffness against the plate: %2 in + motion, %3 in - motion); C and b are taken against the tissue's motion
+</source>
+        <translation>%1: Die Gewebeplatte federt von der Lochplatte zurück, während die Nadel langsamer wird (ihre Steifigkeit gegen die Lochplatte: %2 in +-Bewegung, %3 in −-Bewegung); C und b beziehen sich auf die Bewegung relativ zum Gewebe
+</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>%1: NOT PHYSICAL: %2
 </source>
         <translation>%1: NICHT PHYSIKALISCH: %2
@@ -4576,7 +4593,7 @@ Befehle:
     </message>
     <message>
         <location line="+39" />
-        <location line="+20" />
+        <location line="+19" />
         <source>%1: no friction fit (%2)</source>
         <translation>%1: kein Reibungsfit (%2)</translation>
     </message>
@@ -4615,13 +4632,13 @@ Befehle:
         <translation>Durchstichtiefe</translation>
     </message>
     <message>
-        <location line="-169" />
-        <location line="+170" />
+        <location line="-168" />
+        <location line="+169" />
         <source>puncture force</source>
         <translation>Durchstichkraft</translation>
     </message>
     <message>
-        <location line="-226" />
+        <location line="-225" />
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4636,7 +4653,7 @@ Befehle:
         <translation>kein Gewebekontakt</translation>
     </message>
     <message>
-        <location line="+146" />
+        <location line="+145" />
         <source>outlier</source>
         <translation>Ausreißer</translation>
     </message>
@@ -5157,7 +5174,7 @@ Befehle:
     </message>
     <message>
         <location line="+3" />
-        <location filename="../core/friction_fit.cpp" line="+304" />
+        <location filename="../core/friction_fit.cpp" line="+337" />
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -5608,7 +5625,7 @@ Befehle:
         <translation>%1 Phasennamen für %2 Messwerte</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+46" />
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation>keine Messwerte der Phase c schneller als das Nullgeschwindigkeitsband</translation>
     </message>
@@ -5623,12 +5640,12 @@ Befehle:
         <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+57" />
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+90" />
+        <location line="+85" />
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>

@@ -3349,7 +3349,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+113"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -3439,7 +3439,23 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>%1 N/m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no give seen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the slab springs back off the plate as the needle slows (its stiffness against the plate: %2 in + motion, %3 in - motion); C and b are taken against the tissue&apos;s motion
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1: NOT PHYSICAL: %2
 </source>
         <translation type="unfinished"></translation>
@@ -4494,7 +4510,7 @@ Commands:
     </message>
     <message>
         <location line="+39"/>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>%1: no friction fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4533,13 +4549,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-169"/>
-        <location line="+170"/>
+        <location line="-168"/>
+        <location line="+169"/>
         <source>puncture force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-226"/>
+        <location line="-225"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4554,7 +4570,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+145"/>
         <source>outlier</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5075,7 +5091,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+304"/>
+        <location filename="../core/friction_fit.cpp" line="+337"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5526,7 +5542,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+46"/>
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5541,12 +5557,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+57"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+85"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation type="unfinished"></translation>
     </message>

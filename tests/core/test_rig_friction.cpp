@@ -84,7 +84,8 @@ private slots:
     void initTestCase() { QVERIFY(dir_.isValid()); }
 
     // The thesis's Table 4 slab (C small against b) springs back off the plate as the needle
-    // slows, so a single run's line tilts; the line through the three runs' peak speeds does not.
+    // slows: a plain line through one run tilts, so the fit takes the slab's motion into the
+    // relative velocity; the line through the three runs' peak speeds agrees.
     void compliantSlabAtThreeFrequencies()
     {
         Truth truth;
@@ -107,22 +108,30 @@ private slots:
               qint64(line.value(QStringLiteral("runs")).toInteger()));
         QVERIFY2(eC < 0.05, qPrintable(QStringLiteral("line C error %1 %").arg(100 * eC)));
         QVERIFY2(eB < 0.15, qPrintable(QStringLiteral("line b error %1 %").arg(100 * eB)));
-        // A run whose own C is well off is said to depart from the line; at least one is (the
-        // fast run: the slab springs back most there).
-        int departing = 0;
+        // Each run alone: the fit takes the slab's spring-back (the tissue moving back off the
+        // plate as the friction falls) into the relative velocity, so the fast runs are no longer
+        // tilted (10 % and 25 % off in C before), and the give is reported where the run shows it.
         for (const QJsonValue& rv : doc.value(QStringLiteral("runs")).toArray()) {
             const QJsonObject r = rv.toObject();
             const QJsonObject p = r.value(QStringLiteral("per_length")).toObject();
             const double e = std::max(relErr(p.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp),
                                       relErr(p.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn));
-            const bool departs = r.value(QStringLiteral("departs_from_peak_line")).toBool();
-            qInfo("  %s: own C error %.1f %%, departs %d", qPrintable(r.value(QStringLiteral("file")).toString().section(QLatin1Char('/'), -1)),
-                  100 * e, int(departs));
-            if (e > 0.08)
-                QVERIFY2(departs, qPrintable(QStringLiteral("a run off by %1 % in C is not flagged").arg(100 * e)));
-            departing += departs;
+            const double eb = std::max(relErr(p.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), truth.bp),
+                                       relErr(p.value(QStringLiteral("bn_Ns_per_m2")).toDouble(), truth.bn));
+            const QJsonObject give = r.value(QStringLiteral("spring_back")).toObject();
+            const QString name = r.value(QStringLiteral("file")).toString().section(QLatin1Char('/'), -1);
+            qInfo("  %s: own C error %.1f %%, b error %.1f %%, spring-back + %.2f ms, - %.2f ms, departs %d", qPrintable(name), 100 * e,
+                  100 * eb, 1000 * give.value(QStringLiteral("positive_s")).toDouble(), 1000 * give.value(QStringLiteral("negative_s")).toDouble(),
+                  int(r.value(QStringLiteral("departs_from_peak_line")).toBool()));
+            QVERIFY2(e < 0.05, qPrintable(QStringLiteral("%1: C off by %2 %").arg(name).arg(100 * e)));
+            QVERIFY2(eb < 0.15, qPrintable(QStringLiteral("%1: b off by %2 %").arg(name).arg(100 * eb)));
+            QVERIFY2(!r.value(QStringLiteral("departs_from_peak_line")).toBool(), qPrintable(name));
+            if (name.contains(QLatin1String("0.8"))) {
+                // The simulated plate gives 5000 N/m once the slab is fully against it.
+                const double k = give.value(QStringLiteral("slab_stiffness_positive_N_per_m")).toDouble();
+                QVERIFY2(k > 2500.0 && k < 10000.0, qPrintable(QStringLiteral("slab stiffness %1 N/m").arg(k)));
+            }
         }
-        QVERIFY(departing >= 1);
     }
 
     // Short strokes with a large plate gap: the tissue is carried for much of each stroke and
