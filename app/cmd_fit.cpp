@@ -372,6 +372,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
             if (f.springBackN_s > 0.0)
                 springBack.insert(QStringLiteral("slab_stiffness_negative_N_per_m"), f.model.bn_Ns_per_m / f.springBackN_s);
             o.insert(QStringLiteral("spring_back"), springBack);
+            o.insert(QStringLiteral("residual_to_noise"),
+                     QJsonObject{{QStringLiteral("positive"), f.residualToNoiseP}, {QStringLiteral("negative"), f.residualToNoiseN}});
             QJsonObject top;
             auto peakJson = [](const PeakPoint& p) {
                 return QJsonObject{{QStringLiteral("speed_m_s"), p.speed_m_s}, {QStringLiteral("force_N"), p.force_N},
@@ -497,8 +499,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
                       .arg(num(peakLine->slowest_m_s * 1000.0, 3), num(peakLine->fastest_m_s * 1000.0, 3), num(peakLine->seCp_N / L, 3),
                            num(peakLine->seBp_Ns_per_m / L, 3), num(peakLine->seCn_N / L, 3), num(peakLine->seBn_Ns_per_m / L, 3));
     } else if (fits.size() > 1) {
-        io.out << nb::TrCli::tr("no peak-speed line: it needs two runs or more whose top speeds differ by a fifth or more "
-                                "(e.g. the same slab at 0.2, 0.5 and 0.8 Hz)\n");
+        io.out << nb::TrCli::tr("no peak-speed line: it needs three runs or more whose tissue settled at the top and whose top "
+                                "speeds differ by a fifth or more (e.g. the same slab at 0.2, 0.5 and 0.8 Hz)\n");
     }
     return Ok;
 }

@@ -20,6 +20,9 @@ namespace {
 
 // Samples after a sticking stretch still searched for its break-away force.
 constexpr std::size_t kBreakAwaySamples = 2;
+// A direction's sliding residual above this many times the force's noise is a shape the line
+// does not follow (fitFriction).
+constexpr double kShapeToNoise = 2.0;
 
 struct Extremes {
     double max = -INFINITY, min = INFINITY;
@@ -461,6 +464,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     const Eigen::VectorXd& res = solved->res;
 
     FrictionFit fit;
+    bool shapeLeft[2] = {false, false};
     const double mass = options.estimateMass ? p(0) : options.mass_kg;
     if (options.estimateMass)
         fit.massEstimate_kg = p(0);
@@ -478,6 +482,26 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     fit.seCn_N = se(off + 2);
     fit.seBn_Ns_per_m = se(off + 3);
     fit.rms_N = std::sqrt(res.squaredNorm() / double(res.size()));
+    // Per direction against the force's noise: a line (with the slab's give) that explains the
+    // sliding leaves only the noise; one that does not leaves a shape. (A slab resting at
+    // the knee of its contact with the plate gives softly at low force and stiffly above, and
+    // no single stiffness follows it: C was 20-27 % off there, at 2.5-3x the noise, against at
+    // most 1.0x for every run whose C was right.)
+    {
+        double top[2] = {0.0, 0.0}, sum[2] = {0.0, 0.0};
+        std::size_t count[2] = {0, 0};
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            const int d = v[rows[r]] > 0.0 ? 0 : 1;
+            sum[d] += res(Eigen::Index(r)) * res(Eigen::Index(r));
+            count[d] += 1;
+            top[d] = std::max(top[d], std::fabs(f[rows[r]]));
+        }
+        for (int d : {0, 1}) {
+            const double rms = std::sqrt(sum[d] / double(std::max<std::size_t>(1, count[d])));
+            (d == 0 ? fit.residualToNoiseP : fit.residualToNoiseN) = c.noise_N > 0.0 ? rms / c.noise_N : 0.0;
+            shapeLeft[d] = rms > kShapeToNoise * c.noise_N && rms > 0.002 * top[d];
+        }
+    }
     if (solved->springP >= 0)
         fit.springBackP_s = p(solved->springP);
     if (solved->springN >= 0)
@@ -535,7 +559,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     }
 
     auto flag = [&](const char* value, const QString& why) {
-        fit.notPhysical << why;
+        if (!why.isEmpty())
+            fit.notPhysical << why;
         if (!fit.notPhysicalValues.contains(QLatin1String(value)))
             fit.notPhysicalValues << QString::fromLatin1(value);
     };
@@ -556,6 +581,17 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
             flag(c, nb::TrCore::tr("%1 rests on an undetermined %2").arg(QString::fromLatin1(c), QString::fromLatin1(b)));
         }
     };
+    auto unexplained = [&](const char* c, const char* b, double ratio) {
+        flag(c, nb::TrCore::tr("%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times "
+                               "its noise (the tissue's give changes along the stroke)")
+                    .arg(QString::fromLatin1(c), QString::fromLatin1(b))
+                    .arg(ratio, 0, 'f', 1));
+        flag(b, QString());
+    };
+    if (shapeLeft[0])
+        unexplained("Cp", "bp", fit.residualToNoiseP);
+    if (shapeLeft[1])
+        unexplained("Cn", "bn", fit.residualToNoiseN);
     undetermined("Cp", "bp", fit.model.bp_Ns_per_m, fit.seBp_Ns_per_m);
     undetermined("Cn", "bn", fit.model.bn_Ns_per_m, fit.seBn_Ns_per_m);
     if (fit.staticSource != QLatin1String("none")) {

@@ -67,6 +67,9 @@ struct FrictionFit {
     // F = C + b·(v - Ḟ/k) and reports b/k in s per direction (0: not shown by the run, the
     // plain line). k = b / springBack is the slab's stiffness against the plate, N/m.
     double springBackP_s = 0.0, springBackN_s = 0.0;
+    // Each direction's sliding residual (rms) over the force's noise: about 1 when the line
+    // explains the force; above 2 its C and b are flagged as not determined.
+    double residualToNoiseP = 0.0, residualToNoiseN = 0.0;
 };
 
 // `phases`: one phase name per sample ("a", "b1", "b2", "c" or empty), e.g. from a labels

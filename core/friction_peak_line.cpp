@@ -146,7 +146,8 @@ std::optional<PeakSpeedLine> peakSpeedLine(std::span<const RunPeaks> runs)
             speed.push_back(positive ? p->speed_m_s : -p->speed_m_s);  // signed: F = -Cn + bn·v with v < 0
             force.push_back(p->force_N);
         }
-        if (speed.size() < 2)
+        // Two points fit any line exactly and leave it no error to judge departures by.
+        if (speed.size() < 3)
             return std::nullopt;
         const auto [lo, hi] = std::minmax_element(speed.begin(), speed.end(), [](double l, double r) { return std::fabs(l) < std::fabs(r); });
         const double slow = std::fabs(*lo), fast = std::fabs(*hi);

@@ -2,11 +2,12 @@
 // Dynamic friction C and damping b through the peak speeds of several sinusoidal runs of one
 // slab (models.md section 5, the thesis's 0.2 / 0.5 / 0.8 Hz protocol).
 //
-// Why: a single run's sliding line assumes the tissue rests in phase c, so that the relative
-// velocity is the needle's. A compliant slab does not: as the needle slows, friction falls
-// and the tissue springs back off the plate, the relative velocity exceeds the needle's and
-// the line tilts (C high, b low; a quarter too high for a slab with C small against b, like
-// the thesis's Table 4 liver). At the top of a stroke the needle does not accelerate and the
+// Why: a plain sliding line through one run assumes the tissue rests in phase c, so that the
+// relative velocity is the needle's. A compliant slab does not: as the needle slows, friction
+// falls and the tissue springs back off the plate, the relative velocity exceeds the needle's
+// and the line tilts (C high, b low; a quarter too high for a slab with C small against b,
+// like the thesis's Table 4 liver). fitFriction now follows that give itself; this line is
+// the check that needs no model of it. At the top of a stroke the needle does not accelerate and the
 // tissue, come to rest against the plate, has not yet begun to spring back: there the force
 // is C + b·v with v the needle's own speed, whatever the band and however soft the tissue.
 // Runs at different frequencies put that point at different speeds; the line through them
@@ -31,13 +32,14 @@ void checkAgainstFit(RunPeaks& peaks, const FrictionFit& fit);
 
 struct PeakSpeedLine {
     KarnoppModel model;          // C and b only; D and the band are not defined by this line
-    double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;  // 0 with two runs
+    double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;
     std::size_t runs = 0;        // runs with a settled peak in at least one direction
     double slowest_m_s = 0.0, fastest_m_s = 0.0;  // the peak speeds spanned
 };
 // Per direction, from the runs whose peak in that direction settled; nullopt when a direction
-// has fewer than two such runs or their peak speeds differ by less than a fifth (the line
-// would be an extrapolation from one point).
+// has fewer than three such runs (two fit any line exactly, leaving no error to judge a
+// departure by) or their peak speeds differ by less than a fifth (an extrapolation from one
+// point).
 std::optional<PeakSpeedLine> peakSpeedLine(std::span<const RunPeaks> runs);
 
 // How far (percent of the line's value) a run's own C departs from the line's, per direction.

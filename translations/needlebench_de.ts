@@ -3366,7 +3366,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+113" />
+        <location line="+115" />
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -3501,9 +3501,9 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+7" />
-        <source>no peak-speed line: it needs two runs or more whose top speeds differ by a fifth or more (e.g. the same slab at 0.2, 0.5 and 0.8 Hz)
+        <source>no peak-speed line: it needs three runs or more whose tissue settled at the top and whose top speeds differ by a fifth or more (e.g. the same slab at 0.2, 0.5 and 0.8 Hz)
 </source>
-        <translation>keine Gerade durch die Spitzengeschwindigkeiten: dazu braucht es zwei oder mehr Läufe, deren Höchstgeschwindigkeiten sich um mindestens ein Fünftel unterscheiden (z. B. dieselbe Gewebeprobe bei 0,2, 0,5 und 0,8 Hz)
+        <translation>keine Gerade durch die Spitzengeschwindigkeiten: Sie braucht drei Läufe oder mehr, deren Gewebe an der Spitze zur Ruhe kam und deren Spitzengeschwindigkeiten sich um ein Fünftel oder mehr unterscheiden (z. B. dieselbe Gewebeplatte bei 0,2, 0,5 und 0,8 Hz)
 </translation>
     </message>
     <message>
@@ -5174,7 +5174,7 @@ Befehle:
     </message>
     <message>
         <location line="+3" />
-        <location filename="../core/friction_fit.cpp" line="+337" />
+        <location filename="../core/friction_fit.cpp" line="+340" />
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -5645,7 +5645,7 @@ Befehle:
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+85" />
+        <location line="+107" />
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>
@@ -5675,7 +5675,12 @@ Befehle:
         <translation>%1 beruht auf einem unbestimmten %2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+4" />
+        <source>%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times its noise (the tissue's give changes along the stroke)</source>
+        <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Seine Gleitkraft weicht um das %3-Fache ihres Rauschens von der Geraden ab (das Nachgeben des Gewebes ändert sich entlang des Hubs)</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
     </message>

@@ -3349,7 +3349,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+115"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -3474,7 +3474,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+7"/>
-        <source>no peak-speed line: it needs two runs or more whose top speeds differ by a fifth or more (e.g. the same slab at 0.2, 0.5 and 0.8 Hz)
+        <source>no peak-speed line: it needs three runs or more whose tissue settled at the top and whose top speeds differ by a fifth or more (e.g. the same slab at 0.2, 0.5 and 0.8 Hz)
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -5091,7 +5091,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+337"/>
+        <location filename="../core/friction_fit.cpp" line="+340"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5562,7 +5562,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+107"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5592,7 +5592,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
+        <source>%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times its noise (the tissue&apos;s give changes along the stroke)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation type="unfinished"></translation>
     </message>
