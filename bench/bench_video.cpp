@@ -86,11 +86,8 @@ static int hourBench()
     return stored && checked == 30 ? 0 : 1;
 }
 
-int main(int argc, char** argv)
+int benchFile(int argc, char** argv)
 {
-    QCoreApplication app(argc, argv);
-    if (argc > 1 && QByteArray(argv[1]) == "--hour")
-        return hourBench();
     QTemporaryDir dir;
     QString file = argc > 1 ? QString::fromLocal8Bit(argv[1]) : dir.filePath(QStringLiteral("bench.mp4"));
     if (argc <= 1) {
@@ -206,4 +203,21 @@ int main(int argc, char** argv)
     std::printf("one frame back, not cached: p50 %.2f ms  p95 %.2f ms\n", percentile(backUncachedMs, 0.5),
                 percentile(backUncachedMs, 0.95));
     return 0;
+}
+
+int main(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    const QByteArray first = argc > 1 ? QByteArray(argv[1]) : QByteArray();
+    if (first == "--help" || first == "-h" || (first.startsWith('-') && first != "--hour")) {
+        std::fprintf(first.startsWith("--h") || first == "-h" ? stdout : stderr, "usage: bench_video [FILE | --hour]\n");
+        return first == "--help" || first == "-h" ? 0 : 2;
+    }
+    // A file that cannot be read is a message, not an abort.
+    try {
+        return first == "--hour" ? hourBench() : benchFile(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_video: %s\n", e.what());
+        return 1;
+    }
 }
