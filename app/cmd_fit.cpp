@@ -241,6 +241,11 @@ QJsonObject groupJson(const FrictionGroup& g, bool withFrequency)
     if (g.runs < 2)  // [issue 15] a standard deviation of one run is undefined: left empty
         for (const QString& k : sd.keys())
             sd.insert(k, QJsonValue());
+    // A value no run of the group determines (all flagged it) is null, not NaN.
+    for (QJsonObject* o : {&mean, &sd})
+        for (const QString& k : o->keys())
+            if (o->value(k).isDouble() && !std::isfinite(o->value(k).toDouble()))
+                o->insert(k, QJsonValue());
     QJsonObject o{{QStringLiteral("runs"), qint64(g.runs)}, {QStringLiteral("mean"), mean}, {QStringLiteral("std"), sd}};
     if (withFrequency)
         o.insert(QStringLiteral("frequency_hz"), g.frequency_hz);
@@ -439,7 +444,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
         for (double v : {p.Cp_N_per_m, p.bp_Ns_per_m2, p.Cn_N_per_m, p.bn_Ns_per_m2, p.Dp_N_per_m, p.Dn_N_per_m}) {
             const QString name = QString::fromLatin1(names[k++]);
             const bool bad = notPhysical.contains(name);
-            io.out << (!defined ? QString() : bad ? nb::TrCli::tr("not phys.") : num(v, 5)).rightJustified(9) << ' ';
+            io.out << (!defined || !std::isfinite(v) ? QString() : bad ? nb::TrCli::tr("not phys.") : num(v, 5)).rightJustified(9) << ' ';
         }
         io.out << '\n';
     };

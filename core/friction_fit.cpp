@@ -630,17 +630,25 @@ FrictionGroup summarize(std::span<const FrictionFit> fits, std::span<const std::
             vals.push_back(get(fits[k]));
         return std::pair{mean(vals), sampleStdDev(vals)};
     };
-    auto set = [&](double KarnoppPerLength::*m) {
-        const auto [mu, sd] = field([m](const FrictionFit& f) { return f.perLength.*m; });
-        g.mean.*m = mu;
-        g.stdDev.*m = sd;
+    // A value a run flags (not physical, not determined) is not a result, so it does not
+    // enter the group's mean: NaN where no run of the group gives it, and a standard
+    // deviation only from two values or more.
+    auto set = [&](double KarnoppPerLength::*m, const char* name) {
+        std::vector<double> vals;
+        for (std::size_t k : members)
+            if (!fits[k].notPhysicalValues.contains(QLatin1String(name)))
+                vals.push_back(fits[k].perLength.*m);
+        g.mean.*m = vals.empty() ? std::nan("") : mean(vals);
+        g.stdDev.*m = vals.size() < 2 ? std::nan("") : sampleStdDev(vals);
+        if (vals.size() < members.size())
+            g.leftOut << QString::fromLatin1(name);
     };
-    set(&KarnoppPerLength::Cp_N_per_m);
-    set(&KarnoppPerLength::Cn_N_per_m);
-    set(&KarnoppPerLength::bp_Ns_per_m2);
-    set(&KarnoppPerLength::bn_Ns_per_m2);
-    set(&KarnoppPerLength::Dp_N_per_m);
-    set(&KarnoppPerLength::Dn_N_per_m);
+    set(&KarnoppPerLength::Cp_N_per_m, "Cp");
+    set(&KarnoppPerLength::Cn_N_per_m, "Cn");
+    set(&KarnoppPerLength::bp_Ns_per_m2, "bp");
+    set(&KarnoppPerLength::bn_Ns_per_m2, "bn");
+    set(&KarnoppPerLength::Dp_N_per_m, "Dp");
+    set(&KarnoppPerLength::Dn_N_per_m, "Dn");
     g.frequency_hz = field([](const FrictionFit& f) { return f.frequency_hz; }).first;
     std::vector<double> masses;
     for (std::size_t k : members)

@@ -109,7 +109,8 @@ double estimateFrequency(const Run& run);
 struct FrictionGroup {
     double frequency_hz = 0.0;       // mean frequency of the group (0 for "overall")
     std::size_t runs = 0;
-    KarnoppPerLength mean, stdDev;
+    KarnoppPerLength mean, stdDev;   // NaN where too few runs give the value
+    QStringList leftOut;             // values some member runs flagged and did not count for
     std::optional<double> massEstimateMean_kg, massEstimateStdDev_kg;
 };
 // Runs whose frequencies lie within 5 % of each other form a group; sorted by frequency.

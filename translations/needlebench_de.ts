@@ -2861,7 +2861,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location filename="../app/cmd_events.cpp" line="+40" />
         <location filename="../app/cmd_fit.cpp" line="+85" />
         <location line="+49" />
-        <location line="+126" />
+        <location line="+131" />
         <location filename="../app/cmd_plan.cpp" line="+75" />
         <location line="+156" />
         <location line="+255" />
@@ -2904,7 +2904,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+9" />
-        <location filename="../app/cmd_fit.cpp" line="-224" />
+        <location filename="../app/cmd_fit.cpp" line="-229" />
         <source>warning: %1
 </source>
         <translation>Warnung: %1
@@ -3299,7 +3299,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+39" />
         <source>length of needle in tissue (slab thickness), required</source>
         <translation>Länge der Nadel im Gewebe (Dicke der Gewebescheibe), erforderlich</translation>
     </message>
@@ -4610,12 +4610,12 @@ Befehle:
     <message>
         <location line="+2" />
         <location line="+50" />
-        <location line="+63" />
+        <location line="+75" />
         <source>run</source>
         <translation>Lauf</translation>
     </message>
     <message>
-        <location line="-112" />
+        <location line="-124" />
         <location line="+26" />
         <source>tissue</source>
         <translation>Gewebe</translation>
@@ -4659,12 +4659,12 @@ Befehle:
     </message>
     <message>
         <location line="+4" />
-        <location line="+48" />
+        <location line="+50" />
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>
     <message>
-        <location line="-43" />
+        <location line="-45" />
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -4695,12 +4695,12 @@ Befehle:
     </message>
     <message>
         <location line="+1" />
-        <location line="+44" />
+        <location line="+56" />
         <source>runs</source>
         <translation>Läufe</translation>
     </message>
     <message>
-        <location line="-42" />
+        <location line="-54" />
         <source>pooled</source>
         <translation>gepoolt</translation>
     </message>
@@ -4716,17 +4716,22 @@ Befehle:
     </message>
     <message>
         <location line="+2" />
-        <location line="+27" />
+        <location line="+39" />
         <source>f</source>
         <translation>f</translation>
     </message>
     <message>
-        <location line="-23" />
+        <location line="-35" />
         <source>D from</source>
         <translation>D aus</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+2" />
+        <source>not determined</source>
+        <translation>nicht bestimmt</translation>
+    </message>
+    <message>
+        <location line="+31" />
         <source>Karnopp friction per unit length, mean and standard deviation per frequency and overall (Tables 4/5 layout)</source>
         <translation>Karnopp-Reibung pro Länge, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau der Tabellen 4/5)</translation>
     </message>

@@ -2859,7 +2859,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <location filename="../app/cmd_events.cpp" line="+40"/>
         <location filename="../app/cmd_fit.cpp" line="+85"/>
         <location line="+49"/>
-        <location line="+126"/>
+        <location line="+131"/>
         <location filename="../app/cmd_plan.cpp" line="+75"/>
         <location line="+156"/>
         <location line="+255"/>
@@ -2900,7 +2900,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-224"/>
+        <location filename="../app/cmd_fit.cpp" line="-229"/>
         <source>warning: %1
 </source>
         <translation type="unfinished"></translation>
@@ -3283,7 +3283,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+39"/>
         <source>length of needle in tissue (slab thickness), required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4527,12 +4527,12 @@ Commands:
     <message>
         <location line="+2"/>
         <location line="+50"/>
-        <location line="+63"/>
+        <location line="+75"/>
         <source>run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-112"/>
+        <location line="-124"/>
         <location line="+26"/>
         <source>tissue</source>
         <translation type="unfinished"></translation>
@@ -4576,12 +4576,12 @@ Commands:
     </message>
     <message>
         <location line="+4"/>
-        <location line="+48"/>
+        <location line="+50"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-45"/>
         <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4612,12 +4612,12 @@ Commands:
     </message>
     <message>
         <location line="+1"/>
-        <location line="+44"/>
+        <location line="+56"/>
         <source>runs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-54"/>
         <source>pooled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4633,17 +4633,22 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+27"/>
+        <location line="+39"/>
         <source>f</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-35"/>
         <source>D from</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+2"/>
+        <source>not determined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Karnopp friction per unit length, mean and standard deviation per frequency and overall (Tables 4/5 layout)</source>
         <translation type="unfinished"></translation>
     </message>

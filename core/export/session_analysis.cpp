@@ -334,17 +334,29 @@ FitTable frictionRunsTable(const SessionAnalysis& a)
         t.columns.push_back(c);
     t.columns.push_back(col("rms_N", nb::TrCore::tr("rms"), "N", 4));
     t.columns.push_back(col("static_from", nb::TrCore::tr("D from"), "", -1));
+    // Values the fit flags (not physical, not determined by the run) are left empty and named.
+    t.columns.push_back(col("not_determined", nb::TrCore::tr("not determined"), "", -1));
     for (const FrictionRunResult& f : a.friction) {
         std::vector<TableCell> row{f.run};
         if (!f.ok()) {
             for (int i = 0; i < 8; ++i)
                 row.emplace_back(std::nan(""));
             row.emplace_back(nb::TrCore::tr("not fitted"));
+            row.emplace_back(QString());
         } else {
             row.emplace_back(f.fit.frequency_hz);
-            appendKarnopp(row, f.fit.perLength);
+            KarnoppPerLength shown = f.fit.perLength;
+            const std::pair<const char*, double KarnoppPerLength::*> fields[] = {
+                {"Cp", &KarnoppPerLength::Cp_N_per_m},   {"Cn", &KarnoppPerLength::Cn_N_per_m},
+                {"bp", &KarnoppPerLength::bp_Ns_per_m2}, {"bn", &KarnoppPerLength::bn_Ns_per_m2},
+                {"Dp", &KarnoppPerLength::Dp_N_per_m},   {"Dn", &KarnoppPerLength::Dn_N_per_m}};
+            for (const auto& [name, member] : fields)
+                if (f.fit.notPhysicalValues.contains(QLatin1String(name)))
+                    shown.*member = std::nan("");
+            appendKarnopp(row, shown);
             row.emplace_back(f.fit.rms_N);
             row.emplace_back(f.fit.staticSource);
+            row.emplace_back(f.fit.notPhysicalValues.join(QLatin1Char(' ')));
         }
         t.rows.push_back(std::move(row));
     }

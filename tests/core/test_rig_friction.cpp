@@ -207,6 +207,32 @@ private slots:
         // The other direction rests on the stiff part of the plate: its line is right and stands.
         QVERIFY2(eCn < 0.05, qPrintable(QStringLiteral("Cn off by %1 %").arg(100 * eCn)));
         QVERIFY(!flagged.contains(QStringLiteral("Cn")));
+
+        // With a run that determines Cp, the group's mean is that run's Cp alone: a flagged
+        // value is not averaged in; and a group of the flagged run alone has no Cp (null).
+        Truth same;
+        const QString good = simulate(QStringLiteral("knee_partner"),
+                                      {QStringLiteral("--tissue"), QStringLiteral("liver3"), QStringLiteral("--frequency-hz"), QStringLiteral("0.5"),
+                                       QStringLiteral("--stick-band-mm-s"), QStringLiteral("3.5"), QStringLiteral("--seed"), QStringLiteral("11")},
+                                      &same);
+        QVERIFY(!good.isEmpty());
+        const QJsonObject both = fit({file, good});
+        const QJsonObject partner = both.value(QStringLiteral("runs")).toArray().at(1).toObject();
+        QVERIFY(!partner.value(QStringLiteral("not_physical_values")).toArray().contains(QStringLiteral("Cp")));
+        const double partnerCp = partner.value(QStringLiteral("per_length")).toObject().value(QStringLiteral("Cp_N_per_m")).toDouble();
+        const QJsonObject overall = both.value(QStringLiteral("overall")).toObject();
+        QCOMPARE(overall.value(QStringLiteral("mean")).toObject().value(QStringLiteral("Cp_N_per_m")).toDouble(), partnerCp);
+        QVERIFY(overall.value(QStringLiteral("std")).toObject().value(QStringLiteral("Cp_N_per_m")).isNull());
+        bool kneeGroupSeen = false;
+        for (const QJsonValue& g : both.value(QStringLiteral("by_frequency")).toArray()) {
+            const QJsonObject o = g.toObject();
+            if (std::fabs(o.value(QStringLiteral("frequency_hz")).toDouble() - 0.23) < 0.01) {
+                kneeGroupSeen = true;
+                QVERIFY(o.value(QStringLiteral("mean")).toObject().value(QStringLiteral("Cp_N_per_m")).isNull());
+                QVERIFY(!o.value(QStringLiteral("mean")).toObject().value(QStringLiteral("Cn_N_per_m")).isNull());
+            }
+        }
+        QVERIFY(kneeGroupSeen);
     }
 
     void oneFrequencyMakesNoLine()
