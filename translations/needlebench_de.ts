@@ -39,18 +39,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38" />
-        <location line="+345" />
+        <location line="+349" />
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-344" />
-        <location line="+345" />
+        <location line="-348" />
+        <location line="+349" />
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-309" />
+        <location line="-313" />
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -108,11 +108,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+4" />
+        <location line="+13" />
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="-11" />
         <source>Outliers:</source>
         <translation>Ausreißer:</translation>
     </message>
@@ -122,7 +123,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1: C weicht von der Geraden durch die Spitzengeschwindigkeiten ab (Cp %2 %, Cn %3 %); siehe Reibung ▸ Zusammenfassung</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+32" />
         <source>left out by default: %1</source>
         <translation>standardmäßig ausgelassen: %1</translation>
     </message>
@@ -6621,8 +6622,8 @@ Befehle:
     </message>
     <message>
         <location line="-109" />
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-553" />
-        <location line="+360" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-557" />
+        <location line="+364" />
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>
     </message>
@@ -6756,7 +6757,7 @@ F = %1 x + %2 x²
         <translation>%1 teilen</translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-356" />
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-360" />
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>

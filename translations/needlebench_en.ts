@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+345"/>
+        <location line="+349"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-344"/>
-        <location line="+345"/>
+        <location line="-348"/>
+        <location line="+349"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-309"/>
+        <location line="-313"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -108,11 +108,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+13"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-11"/>
         <source>Outliers:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -122,7 +123,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>left out by default: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6538,8 +6539,8 @@ Commands:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-553"/>
-        <location line="+360"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-557"/>
+        <location line="+364"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6671,7 +6672,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-356"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-360"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>

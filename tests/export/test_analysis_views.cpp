@@ -176,6 +176,38 @@ private slots:
             QVERIFY2(!r.peakLineDeparture || !r.peakLineDeparture->significant, qPrintable(r.run));
     }
 
+    // A run that does not determine Cp and bp (a slab at the knee of its plate contact): its
+    // row leaves them empty and names them, the group mean leaves them out, the status says why.
+    void undeterminedValuesAreEmptyAndNamed()
+    {
+        QTemporaryDir tmp;
+        const QDir d(tmp.path());
+        QVERIFY(simulate({"--protocol", "friction", "--tissue", "liver3", "--frequency-hz", "0.23", "--amplitude-mm", "5.6",
+                          "--stick-band-mm-s", "1.2", "--plate-gap-mm", "2.46", "--force-noise-n", "0.0006", "--cycles", "4", "--seed", "5",
+                          "--out", d.filePath(QStringLiteral("run_001_sine.csv"))}));
+        AnalysisWorkspace w;
+        QVERIFY(w.openSession(tmp.path()));
+        QCOMPARE(w.analysis().friction.size(), std::size_t(1));
+        QVERIFY(w.analysis().friction.front().fit.notPhysicalValues.contains(QStringLiteral("Cp")));
+        QVERIFY2(w.statusText().contains(QStringLiteral("run_001_sine: Cp and bp are not determined by this run")), qPrintable(w.statusText()));
+        QStandardItemModel* runs = w.frictionRunsModel();
+        int cpColumn = -1, namedColumn = -1;
+        for (int c = 0; c < runs->columnCount(); ++c) {
+            const QString h = runs->horizontalHeaderItem(c)->text();
+            if (h.startsWith(QStringLiteral("Cp")))
+                cpColumn = c;
+            if (h.startsWith(QStringLiteral("not determined")))
+                namedColumn = c;
+        }
+        QVERIFY(cpColumn >= 0 && namedColumn >= 0);
+        bool ok = false;
+        runs->item(0, cpColumn)->text().toDouble(&ok);
+        QVERIFY2(!ok, qPrintable(runs->item(0, cpColumn)->text()));
+        QVERIFY(runs->item(0, namedColumn)->text().contains(QStringLiteral("Cp")));
+        QVERIFY(!std::isfinite(w.analysis().frictionOverall->mean.Cp_N_per_m));
+        QVERIFY(std::isfinite(w.analysis().frictionOverall->mean.Cn_N_per_m));
+    }
+
     void runChoiceAndLabelEditsUpdateResults()
     {
         AnalysisWorkspace w;

@@ -360,6 +360,10 @@ void AnalysisWorkspace::recompute()
             lines << tr("%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %); see Friction ▸ Summary")
                          .arg(f.run, QLocale().toString(f.peakLineDeparture->Cp_percent, 'f', 1),
                               QLocale().toString(f.peakLineDeparture->Cn_percent, 'f', 1));
+    // Values a run does not determine are empty in its row; the reason is only here.
+    for (const FrictionRunResult& f : analysis_.friction)
+        if (f.ok() && !f.fit.notPhysical.isEmpty())
+            lines << tr("%1: %2").arg(f.run, f.fit.notPhysical.join(QStringLiteral("; ")));
     if (!analysis_.warnings.isEmpty())
         lines << analysis_.warnings;
     status_->setText(lines.join(QLatin1Char('\n')));

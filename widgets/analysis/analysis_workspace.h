@@ -59,6 +59,7 @@ public:
     QStandardItemModel* stiffnessRunsModel() const { return stiffnessRunsModel_; }
     QStandardItemModel* stiffnessPooledModel() const { return stiffnessPooledModel_; }
     QStandardItemModel* frictionSummaryModel() const { return frictionSummaryModel_; }
+    QStandardItemModel* frictionRunsModel() const { return frictionRunsModel_; }
     QStandardItemModel* validationModel() const { return validationModel_; }
     // By factor: the factors the runs carry, the quantity shown, and its table per level.
     QComboBox* factorChooser() const { return factorChoice_; }
