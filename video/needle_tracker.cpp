@@ -240,8 +240,12 @@ Peak findTip(const std::vector<double>& g, const std::vector<double>& shaft, con
         const std::size_t k = std::min<std::size_t>(peaks.size(), kTipCandidates);
         std::partial_sort(peaks.begin(), peaks.begin() + std::ptrdiff_t(k), peaks.end(), std::greater<>());
         peaks.resize(k);
-        for (auto& [strength, i] : peaks)
-            strength = std::min(strength, shaftEnding(shaft, i, polarity));
+        // The tip's edge is the shaft's ending, as strong as it: a digit's stroke that the
+        // shaft runs into is far stronger than the shaft that ends at it.
+        for (auto& [strength, i] : peaks) {
+            const double ending = shaftEnding(shaft, i, polarity);
+            strength = std::min(strength, ending) - 0.5 * std::abs(polarity * g[std::size_t(i)] - ending);
+        }
     }
     if (peaks.empty())
         return p;
@@ -258,41 +262,70 @@ Peak findTip(const std::vector<double>& g, const std::vector<double>& shaft, con
     return p;
 }
 
+// The sign of the needle's shaft along a strip (+1 brighter than its sides, −1 darker, 0 when
+// none stands out), from the frames' mean. A shaft is long and of one sign; text that the
+// line crosses gives both signs by turns (a gap between two bright strokes is darker than
+// the strokes beside it) over its own short stretch, so every sample counts at most 3 σ of
+// the mean's noise and the length decides, not the contrast.
+int shaftSign(const std::vector<StripProfile>& profiles)
+{
+    if (profiles.size() < 3 || profiles.front().shaft.empty())
+        return 0;
+    std::vector<std::vector<double>> shafts;
+    for (const StripProfile& p : profiles)
+        shafts.push_back(p.shaft);
+    const double frames = double(shafts.size());
+    const double noise = robustSigma(shafts) / std::sqrt(frames);
+    const std::size_t n = shafts.front().size();
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        double mean = 0.0;
+        for (const auto& sk : shafts)
+            mean += sk[i];
+        sum += std::clamp(mean / frames, -3.0 * noise, 3.0 * noise);
+    }
+    // Noise alone sums to about noise·√(2n) (neighbouring samples share the smoothing).
+    if (std::abs(sum) < 5.0 * noise * std::sqrt(2.0 * double(n)))
+        return 0;
+    return sum > 0 ? 1 : -1;
+}
+
 // The tip's edge sign along a strip and whether to look for it as the end of a shaft, from
-// the sampled frames: a sign at which a shaft ends in most frames is the tip's, before one
-// with stronger edges that end no shaft (a clock's digits the line crosses). Without a
-// shaft in view (a needle wider than the strip, a tip without a visible shaft) any edge
-// counts, as before.
+// the sampled frames. Where a shaft is seen, the tip is the edge of opposite sign at which it
+// ends, if such an edge stands out of the noise in most frames; edges of either sign that
+// end no shaft (a clock's digits the line crosses, however strong) do not count. Otherwise
+// (no shaft in view: a needle wider than the strip, a tip without a visible shaft) the tip is
+// the strongest edge of the sign that stands out more.
 struct TipModel {
     int polarity = 1;
     bool gated = false;
     std::vector<double> still;
-    double meanStrength = 0.0;
 };
 
 TipModel tipModel(const std::vector<StripProfile>& profiles, const std::vector<std::vector<double>>& g, double sigma)
 {
-    TipModel best;
-    bool have = false;
-    for (int polarity : {1, -1}) {
-        TipModel m;
-        m.polarity = polarity;
-        m.still = staticPart(g, polarity);
-        std::vector<double> gatedStrength;
+    TipModel m;
+    if (const int shaft = shaftSign(profiles)) {
+        m.polarity = -shaft;
+        m.still = staticPart(g, m.polarity);
+        std::vector<double> strength;
         for (std::size_t k = 0; k < g.size(); ++k)
-            gatedStrength.push_back(findTip(g[k], profiles[k].shaft, m.still, polarity, true).strength);
+            strength.push_back(findTip(g[k], profiles[k].shaft, m.still, m.polarity, true).strength);
         // Noise alone gives a strongest edge about 3 σ above the noise.
-        m.gated = !gatedStrength.empty() && median(gatedStrength) > 5.0 * sigma;
-        double sum = 0.0;
-        for (std::size_t k = 0; k < g.size(); ++k)
-            sum += m.gated ? gatedStrength[k] : findTip(g[k], profiles[k].shaft, m.still, polarity, false).strength;
-        m.meanStrength = g.empty() ? 0.0 : sum / double(g.size());
-        if (!have || (m.gated && !best.gated) || (m.gated == best.gated && m.meanStrength > best.meanStrength)) {
-            best = std::move(m);
-            have = true;
-        }
+        m.gated = median(strength) > 5.0 * sigma;
+        if (m.gated)
+            return m;
     }
-    return best;
+    const std::vector<double> up = staticPart(g, 1), down = staticPart(g, -1);
+    double sp = 0, sn = 0;
+    for (std::size_t k = 0; k < g.size(); ++k) {
+        sp += findTip(g[k], profiles[k].shaft, up, 1, false).strength;
+        sn += findTip(g[k], profiles[k].shaft, down, -1, false).strength;
+    }
+    m.polarity = sp >= sn ? 1 : -1;
+    m.gated = false;
+    m.still = m.polarity > 0 ? up : down;
+    return m;
 }
 
 struct Samples {
