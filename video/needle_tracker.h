@@ -5,10 +5,12 @@
 // The axis is a line the operator gives or one found in the picture: the straight ridge
 // (bright or dark) along which an edge moves from frame to frame. Along it a strip a few
 // pixels wide is sampled into a profile; what stays put in the profile (plates, overlays
-// crossing the strip, the shaft's own texture) is removed by subtracting the median gradient
-// over the video, and the moving edge that is left is the tip. Its position is found in every
-// frame on its own (no accumulated drift), to a fraction of a pixel. Frames where no edge
-// stands out of the noise are masked (NaN), never guessed.
+// crossing the strip, the shaft's own texture) is removed by subtracting the low percentile
+// of the gradient over the video, and the moving edge that is left is the tip. Where the
+// shaft shows against the picture either side of it, an edge is the tip only where the shaft
+// ends: the changing digits of a clock or counter that the line crosses are not. Its
+// position is found in every frame on its own (no accumulated drift), to a fraction of a
+// pixel. Frames where no edge stands out of the noise are masked (NaN), never guessed.
 
 #include "frame_reader.h"
 

@@ -54,7 +54,8 @@ QString SyncCase::describe() const
         .arg(motion)
         .arg(offset_s, 0, 'f', 3)
         .arg(100 * drift, 0, 'f', 3)
-        .arg(lookName(look), codecName(codec));
+        .arg(lookName(look), codecName(codec))
+        + (overlaysOnNeedleLine ? QStringLiteral(", clock and counter on the needle's line") : QString());
 }
 
 double quantile(std::vector<double> v, double p)
@@ -182,7 +183,7 @@ struct Painter {
             f += n;
         }
         f.convertTo(out, CV_8U);
-        if (c.look == Look::Overlays) {
+        if (c.look == Look::Overlays || c.overlaysOnNeedleLine) {
             const int ms = int(std::lround(videoTime_s * 1000));
             const QString clock = QStringLiteral("%1:%2:%3.%4")
                                       .arg(10 + ms / 3600000, 2, 10, QLatin1Char('0'))
@@ -190,11 +191,23 @@ struct Painter {
                                       .arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'))
                                       .arg(ms % 1000, 3, 10, QLatin1Char('0'));
             const double scale = c.height / 480.0;
-            cv::putText(out, clock.toStdString(), cv::Point(int(10 * scale), int(30 * scale)), cv::FONT_HERSHEY_SIMPLEX,
-                        0.9 * scale, cv::Scalar(250), 2);
-            cv::putText(out, QStringLiteral("FRM %1").arg(frameNumber, 6, 10, QLatin1Char('0')).toStdString(),
-                        cv::Point(int(c.width - 200 * scale), int(c.height - 15 * scale)), cv::FONT_HERSHEY_SIMPLEX,
-                        0.9 * scale, cv::Scalar(250), 2);
+            const QString counter = QStringLiteral("FRM %1").arg(frameNumber, 6, 10, QLatin1Char('0'));
+            cv::Point clockAt(int(10 * scale), int(30 * scale)), counterAt(int(c.width - 200 * scale), int(c.height - 15 * scale));
+            if (c.overlaysOnNeedleLine) {
+                // The tip travels ±20 % of the shorter side around the centre; the text starts
+                // 10 px beyond that, however it lies across the line.
+                auto centredOnLine = [&](double side, const QString& text) {
+                    int base = 0;
+                    const cv::Size size = cv::getTextSize(text.toStdString(), cv::FONT_HERSHEY_SIMPLEX, 0.9 * scale, 2, &base);
+                    const double along = std::abs(u.x) * size.width / 2.0 + std::abs(u.y) * size.height / 2.0;
+                    const cv::Point2d p = centre + u * side * (0.2 * std::min(c.width, c.height) + 10.0 + along);
+                    return cv::Point(int(p.x - size.width / 2.0), int(p.y + size.height / 2.0));
+                };
+                clockAt = centredOnLine(-1.0, clock);
+                counterAt = centredOnLine(1.0, counter);
+            }
+            cv::putText(out, clock.toStdString(), clockAt, cv::FONT_HERSHEY_SIMPLEX, 0.9 * scale, cv::Scalar(250), 2);
+            cv::putText(out, counter.toStdString(), counterAt, cv::FONT_HERSHEY_SIMPLEX, 0.9 * scale, cv::Scalar(250), 2);
         }
     }
 };

@@ -47,6 +47,10 @@ struct SyncCase {
     // clock rounds them (frames a frame apart may land 1 ms apart); the truth stays the
     // time each picture was taken.
     int timestampClock_hz = 1000;
+    // The clock and frame counter centred on the needle's line, the clock on the shaft behind
+    // the tip's travel and the counter beyond it, in any look (the matrix draws them at fixed
+    // places in the Overlays look only, crossed by the line at some angles).
+    bool overlaysOnNeedleLine = false;
 
     QString describe() const;
 };
