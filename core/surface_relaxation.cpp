@@ -1,0 +1,180 @@
+#include "surface_relaxation.h"
+
+#include "tr.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nb {
+
+namespace {
+
+constexpr double kCarried_s = 0.3;       // before the onset: the surface carried by the needle
+constexpr double kMinSettle_s = 1.5;     // after it: at least this long, and 8 τ
+constexpr double kMaxSettle_s = 6.0;
+constexpr double kMinTau_s = 0.003, kMaxTau_s = 2.0;
+constexpr double kRelaxedTaus = 4.0;     // 98.2 % of the spring-back done
+// A spring-back must stand this far out of the trace's noise (and move at least a pixel or
+// two) before it is believed, and the exponential must explain most of the motion after it.
+constexpr double kMinAmplitudeNoise = 8.0, kMinAmplitude_px = 1.5;
+constexpr double kMinExplained = 0.8;
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return 0.0;
+    const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+struct Fit {
+    double sse = std::numeric_limits<double>::infinity();
+    double t0 = 0, tau = 0, d0 = 0, v = 0, a = 0;
+};
+
+// Least squares of the carried line and the settling exponential for one onset and τ: the
+// model is linear in d0 (value at the onset), v (speed before it) and A (rest after it).
+Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0, double tau, double settle_s)
+{
+    double m[3][3] = {}, r[3] = {};
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i] < t0 - kCarried_s || t[i] > t0 + settle_s)
+            continue;
+        double x[3];
+        if (t[i] < t0) {
+            x[0] = 1.0, x[1] = t[i] - t0, x[2] = 0.0;
+        } else {
+            const double e = std::exp(-(t[i] - t0) / tau);
+            x[0] = e, x[1] = 0.0, x[2] = 1.0 - e;
+        }
+        for (int a = 0; a < 3; ++a) {
+            r[a] += x[a] * d[i];
+            for (int b = 0; b < 3; ++b)
+                m[a][b] += x[a] * x[b];
+        }
+    }
+    // Cramer's rule on the 3×3 normal equations.
+    auto det3 = [](const double q[3][3]) {
+        return q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
+               q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
+    };
+    const double det = det3(m);
+    Fit f;
+    if (!(std::abs(det) > 1e-12))
+        return f;
+    double p[3];
+    for (int c = 0; c < 3; ++c) {
+        double q[3][3];
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                q[a][b] = b == c ? r[a] : m[a][b];
+        p[c] = det3(q) / det;
+    }
+    f.t0 = t0, f.tau = tau, f.d0 = p[0], f.v = p[1], f.a = p[2];
+    f.sse = 0.0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i] < t0 - kCarried_s || t[i] > t0 + settle_s)
+            continue;
+        const double model = t[i] < t0 ? f.d0 + f.v * (t[i] - t0) : f.a + (f.d0 - f.a) * std::exp(-(t[i] - t0) / tau);
+        f.sse += (d[i] - model) * (d[i] - model);
+    }
+    return f;
+}
+
+Fit bestFit(const std::vector<double>& t, const std::vector<double>& d, double t0From, double t0To, double t0Step,
+            double tauFrom, double tauTo, double tauFactor, double settle_s)
+{
+    Fit best;
+    for (double t0 = t0From; t0 <= t0To + 1e-12; t0 += t0Step)
+        for (double tau = tauFrom; tau <= tauTo * (1 + 1e-9); tau *= tauFactor) {
+            const Fit f = fitAt(t, d, t0, tau, settle_s);
+            if (f.sse < best.sse)
+                best = f;
+        }
+    return best;
+}
+
+}  // namespace
+
+std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double puncture_s, QString* problem, double search_s)
+{
+    auto fail = [&](const QString& why) -> std::optional<SpringBack> {
+        if (problem)
+            *problem = why;
+        return std::nullopt;
+    };
+    const std::vector<double>& t = trace.time_s;
+    const std::vector<double>& d = trace.displacement_px;
+    const std::size_t n = std::min(t.size(), d.size());
+    if (n < 10 || !std::isfinite(puncture_s))
+        return fail(nb::TrCore::tr("too few frames to follow the surface"));
+    if (puncture_s < t.front() || puncture_s > t[n - 1])
+        return fail(nb::TrCore::tr("the video does not show the puncture"));
+    // The trace's noise, from its second differences (robust: the spring-back's few fast frames
+    // are outliers there).
+    std::vector<double> second;
+    for (std::size_t i = 1; i + 1 < n; ++i)
+        if (std::abs(t[i] - puncture_s) < 3.0)
+            second.push_back(std::abs(d[i + 1] - 2 * d[i] + d[i - 1]));
+    const double noise = 1.4826 * median(second) / std::sqrt(6.0);
+    // The spring-back's onset: the largest frame-to-frame step near the puncture.
+    std::size_t onset = 0;
+    double largest = -1.0;
+    for (std::size_t i = 1; i < n; ++i)
+        if (std::abs(t[i] - puncture_s) <= search_s && std::abs(d[i] - d[i - 1]) > largest) {
+            largest = std::abs(d[i] - d[i - 1]);
+            onset = i;
+        }
+    if (largest < 0.0)
+        return fail(nb::TrCore::tr("no frames near the puncture"));
+    const double frame_s = (t[n - 1] - t.front()) / double(n - 1);
+    // The onset lies before the frame that moved most (a late onset leaves the first frame
+    // after it a short step): coarse grid over the two frame intervals before it, then finer.
+    const double from = t[onset >= 2 ? onset - 2 : 0], to = t[onset];
+    double settle = kMinSettle_s;
+    Fit f;
+    for (int round = 0; round < 3; ++round) {
+        f = bestFit(t, d, from, to, std::max(1e-4, (to - from) / 40.0), kMinTau_s, kMaxTau_s, 1.04, settle);
+        const double step = std::max(1e-4, (to - from) / 40.0);
+        f = bestFit(t, d, std::max(from, f.t0 - step), std::min(to, f.t0 + step), step / 10.0, f.tau / 1.05, f.tau * 1.05, 1.004,
+                    settle);
+        if (!std::isfinite(f.sse) || 8.0 * f.tau <= settle || settle >= kMaxSettle_s)
+            break;
+        settle = std::min(kMaxSettle_s, 8.0 * f.tau);
+    }
+    if (!std::isfinite(f.sse))
+        return fail(nb::TrCore::tr("the surface's motion around the puncture could not be fitted"));
+    SpringBack s;
+    s.onset_s = f.t0;
+    s.tau_s = f.tau;
+    s.amplitude_px = std::abs(f.d0 - f.a);
+    s.noise_px = noise;
+    s.relaxed_s = puncture_s + kRelaxedTaus * f.tau;
+    if (s.amplitude_px < std::max(kMinAmplitude_px, kMinAmplitudeNoise * noise))
+        return fail(nb::TrCore::tr("the surface's spring-back (%1 px) does not stand out of the picture's noise (%2 px)")
+                        .arg(s.amplitude_px, 0, 'f', 1)
+                        .arg(noise, 0, 'f', 2));
+    // How much of the motion after the onset the settling explains.
+    double mean = 0.0, count = 0.0, sse = 0.0, sst = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (t[i] >= f.t0 && t[i] <= f.t0 + settle)
+            mean += d[i], ++count;
+    mean /= std::max(1.0, count);
+    for (std::size_t i = 0; i < n; ++i)
+        if (t[i] >= f.t0 && t[i] <= f.t0 + settle) {
+            const double model = f.a + (f.d0 - f.a) * std::exp(-(t[i] - f.t0) / f.tau);
+            sse += (d[i] - model) * (d[i] - model);
+            sst += (d[i] - mean) * (d[i] - mean);
+        }
+    if (count < 4 || !(sst > 0.0) || 1.0 - sse / sst < kMinExplained)
+        return fail(nb::TrCore::tr("the surface's motion after the puncture is not a spring-back that settles"));
+    if (f.tau >= kMaxTau_s / 1.05)
+        return fail(nb::TrCore::tr("the surface does not come to rest within %1 s").arg(kMaxTau_s * kRelaxedTaus, 0, 'f', 0));
+    if (s.relaxed_s > t[n - 1] + frame_s)
+        return fail(nb::TrCore::tr("the video ends before the surface has come to rest"));
+    return s;
+}
+
+}  // namespace nb
