@@ -86,7 +86,7 @@ int cmdLabels(const QStringList& args, Io io)
         const bool wantsPhases = protocol == QLatin1String("friction") || (protocol.isEmpty() && phases);
         QJsonObject videoReport;
         std::optional<TissueMotion> tissue;
-        std::optional<SurfaceTrace> surface;
+        std::vector<SurfaceTrace> surface;
         {
             QString videoPath = parser.value(video);
             QString linkProblem;
@@ -120,13 +120,9 @@ int cmdLabels(const QStringList& args, Io io)
                             tissue = std::move(m);
                         }
                     } else {
-                        SurfaceTrace trace = video::surfaceTraceFromShifts(shifts, *mapping);
-                        if (trace.time_s.size() >= 2) {
-                            trace.source = QFileInfo(videoPath).fileName();
-                            surface = std::move(trace);
-                        } else {
-                            problem = nb::TrCli::tr("too few frames to follow the surface");
-                        }
+                        surface = video::surfaceTraces(reader, shifts, *mapping, QFileInfo(videoPath).fileName());
+                        if (surface.empty())
+                            problem = nb::TrCli::tr("too few distinct frames to follow the surface");
                     }
                 } catch (const video::VideoError& e) {
                     problem = e.message();
@@ -138,8 +134,8 @@ int cmdLabels(const QStringList& args, Io io)
                     videoReport[QStringLiteral("drift")] = mapping->drift;
                     videoReport[QStringLiteral("sync")] = mappingSource;
                 }
-                videoReport[QStringLiteral("used")] = bool(tissue) || bool(surface);
-                if (!wantsPhases && !surface) {
+                videoReport[QStringLiteral("used")] = bool(tissue) || !surface.empty();
+                if (!wantsPhases && surface.empty()) {
                     videoReport[QStringLiteral("problem")] = problem;
                     io.err << nb::TrCli::tr("needlebench labels: %1: the surface's motion could not be read (%2); no relaxation suggested\n")
                                   .arg(videoPath, problem);
@@ -164,9 +160,9 @@ int cmdLabels(const QStringList& args, Io io)
         }
         if (tissue && wantsPhases)
             labels = suggestPhaseLabels(run, &*tissue);
-        if (surface && !wantsPhases) {
+        if (!surface.empty() && !wantsPhases) {
             QString problem;
-            labels = suggestEventLabels(run, &*surface, &problem);
+            labels = suggestEventLabels(run, surface, &problem);
             const bool relaxed = std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.label == QLatin1String("relaxation"); });
             videoReport[QStringLiteral("relaxation")] = relaxed ? QStringLiteral("suggested") : problem;
             if (!relaxed)

@@ -32,9 +32,11 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& options = {});
 Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const SuggestOptions& options = {});
 
 Labels suggestEventLabels(const Run& run);
-// With the organ surface's motion from the imaging video (null: without, and no relaxation):
-// relaxation where the surface has come to rest after the puncture. `relaxationProblem` (may
-// be null) says why there is none when a trace was given.
-Labels suggestEventLabels(const Run& run, const SurfaceTrace* surface, QString* relaxationProblem = nullptr);
+// With the organ surface's motion from the imaging video (measured one or more ways; none:
+// no relaxation): relaxation where the surface has come to rest after the puncture, from the
+// trace with the largest believable spring-back (one that loses the surface reads it short).
+// `relaxationProblem` (may be null) says why
+// there is none when traces were given.
+Labels suggestEventLabels(const Run& run, const std::vector<SurfaceTrace>& surfaces, QString* relaxationProblem = nullptr);
 
 }  // namespace nb

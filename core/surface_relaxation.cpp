@@ -19,6 +19,9 @@ constexpr double kRelaxedTaus = 4.0;     // 98.2 % of the spring-back done
 // two) before it is believed, and the exponential must explain most of the motion after it.
 constexpr double kMinAmplitudeNoise = 8.0, kMinAmplitude_px = 1.5;
 constexpr double kMinExplained = 0.8;
+// It springs back at most to where it was touched (x_s3 ≥ x_s1), with some slack for the
+// contact's time and an organ that overshoots a little.
+constexpr double kMaxSpringBackOfCarried = 1.25;
 
 double median(std::vector<double> v)
 {
@@ -98,7 +101,8 @@ Fit bestFit(const std::vector<double>& t, const std::vector<double>& d, double t
 
 }  // namespace
 
-std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double puncture_s, QString* problem, double search_s)
+std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double puncture_s, double contact_s, QString* problem,
+                                        double search_s)
 {
     auto fail = [&](const QString& why) -> std::optional<SpringBack> {
         if (problem)
@@ -172,6 +176,19 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
         return fail(nb::TrCore::tr("the surface's motion after the puncture is not a spring-back that settles"));
     if (f.tau >= kMaxTau_s / 1.05)
         return fail(nb::TrCore::tr("the surface does not come to rest within %1 s").arg(kMaxTau_s * kRelaxedTaus, 0, 'f', 0));
+    if (std::isfinite(contact_s) && contact_s < f.t0 && contact_s >= t.front()) {
+        // Where the surface was at the contact: the frames within a frame of it.
+        std::vector<double> atContact;
+        for (std::size_t i = 0; i < n; ++i)
+            if (std::abs(t[i] - contact_s) <= frame_s)
+                atContact.push_back(d[i]);
+        s.carried_px = (f.d0 - median(atContact)) * (f.d0 > f.a ? 1.0 : -1.0);
+        if (!atContact.empty() && s.amplitude_px > kMaxSpringBackOfCarried * s.carried_px + 2.0 * noise + kMinAmplitude_px)
+            return fail(nb::TrCore::tr("the surface springs back further (%1 px) than it was carried since the contact (%2 px): "
+                                       "the picture lost the surface")
+                            .arg(s.amplitude_px, 0, 'f', 1)
+                            .arg(s.carried_px, 0, 'f', 1));
+    }
     if (s.relaxed_s > t[n - 1] + frame_s)
         return fail(nb::TrCore::tr("the video ends before the surface has come to rest"));
     return s;

@@ -30,14 +30,18 @@ struct SpringBack {
     double tau_s = 0.0;         // its time constant
     double amplitude_px = 0.0;  // |d0 − A|: how far the surface sprang back
     double noise_px = 0.0;      // the trace's frame-to-frame noise
+    double carried_px = 0.0;    // how far the surface was carried from the contact to the onset
     double relaxed_s = 0.0;     // puncture + 4 τ
 };
 
 // The spring-back after the puncture at `puncture_s` (from the force). Its onset is looked for
-// within `search_s` of the puncture (the clocks' agreement). Nothing (and `problem` says why)
-// when the trace does not show it: too few frames, a motion within the noise, a fit that does
-// not explain the motion, or a video that ends before the surface has come to rest.
-std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double puncture_s, QString* problem = nullptr,
+// within `search_s` of the puncture (the clocks' agreement). With the contact's time (NaN:
+// unknown) the surface must have been carried down at least as far as it springs back (it
+// cannot spring back past where it was touched): a trace that lost the surface and reads
+// short before the puncture is not believed. Nothing (and `problem` says why) when the trace
+// does not show it: too few frames, a motion within the noise, a fit that does not explain
+// the motion, or a video that ends before the surface has come to rest.
+std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double puncture_s, double contact_s, QString* problem = nullptr,
                                         double search_s = 0.5);
 
 }  // namespace nb
