@@ -38,12 +38,14 @@ struct Fit {
 };
 
 // Least squares of the carried line and the settling exponential for one onset and τ: the
-// model is linear in d0 (value at the onset), v (speed before it) and A (rest after it).
-Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0, double tau, double settle_s)
+// model is linear in d0 (value at the onset), v (speed before it) and A (rest after it). The
+// frames fitted are those in [lo, hi], the same for every onset tried, so that their sums of
+// squares compare.
+Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0, double tau, double lo, double hi)
 {
     double m[3][3] = {}, r[3] = {};
     for (std::size_t i = 0; i < t.size(); ++i) {
-        if (t[i] < t0 - kCarried_s || t[i] > t0 + settle_s)
+        if (t[i] < lo || t[i] > hi)
             continue;
         double x[3];
         if (t[i] < t0) {
@@ -78,7 +80,7 @@ Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0,
     f.t0 = t0, f.tau = tau, f.d0 = p[0], f.v = p[1], f.a = p[2];
     f.sse = 0.0;
     for (std::size_t i = 0; i < t.size(); ++i) {
-        if (t[i] < t0 - kCarried_s || t[i] > t0 + settle_s)
+        if (t[i] < lo || t[i] > hi)
             continue;
         const double model = t[i] < t0 ? f.d0 + f.v * (t[i] - t0) : f.a + (f.d0 - f.a) * std::exp(-(t[i] - t0) / tau);
         f.sse += (d[i] - model) * (d[i] - model);
@@ -87,12 +89,12 @@ Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0,
 }
 
 Fit bestFit(const std::vector<double>& t, const std::vector<double>& d, double t0From, double t0To, double t0Step,
-            double tauFrom, double tauTo, double tauFactor, double settle_s)
+            double tauFrom, double tauTo, double tauFactor, double lo, double hi)
 {
     Fit best;
     for (double t0 = t0From; t0 <= t0To + 1e-12; t0 += t0Step)
         for (double tau = tauFrom; tau <= tauTo * (1 + 1e-9); tau *= tauFactor) {
-            const Fit f = fitAt(t, d, t0, tau, settle_s);
+            const Fit f = fitAt(t, d, t0, tau, lo, hi);
             if (f.sse < best.sse)
                 best = f;
         }
@@ -123,27 +125,37 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
         if (std::abs(t[i] - puncture_s) < 3.0)
             second.push_back(std::abs(d[i + 1] - 2 * d[i] + d[i - 1]));
     const double noise = 1.4826 * median(second) / std::sqrt(6.0);
-    // The spring-back's onset: the largest frame-to-frame step near the puncture.
+    // The spring-back's onset: where the motion over a few frames changes most from the
+    // motion over the few before (the surface carried one way, then springing back the other;
+    // over one frame a slow spring-back's first step is hardly larger than the noise, and a
+    // fast needle carries the surface further in a few frames than a slow spring-back moves).
+    constexpr std::size_t kSpan = 3;
     std::size_t onset = 0;
     double largest = -1.0;
-    for (std::size_t i = 1; i < n; ++i)
-        if (std::abs(t[i] - puncture_s) <= search_s && std::abs(d[i] - d[i - 1]) > largest) {
-            largest = std::abs(d[i] - d[i - 1]);
+    for (std::size_t i = kSpan + 1; i + kSpan - 1 < n; ++i) {
+        if (std::abs(t[i] - puncture_s) > search_s)
+            continue;
+        const double after = d[i + kSpan - 1] - d[i - 1], before = d[i - 1] - d[i - 1 - kSpan];
+        if (std::abs(after - before) > largest) {
+            largest = std::abs(after - before);
             onset = i;
         }
+    }
     if (largest < 0.0)
         return fail(nb::TrCore::tr("no frames near the puncture"));
     const double frame_s = (t[n - 1] - t.front()) / double(n - 1);
-    // The onset lies before the frame that moved most (a late onset leaves the first frame
-    // after it a short step): coarse grid over the two frame intervals before it, then finer.
-    const double from = t[onset >= 2 ? onset - 2 : 0], to = t[onset];
+    // The onset lies before the frames that moved most (a late onset leaves the first frame
+    // after it a short step, and noise may shift the largest motion by a frame or two): coarse
+    // grid from four frame intervals before to one after, then finer.
+    const double from = t[onset >= 4 ? onset - 4 : 0], to = t[std::min(n - 1, onset + 1)];
     double settle = kMinSettle_s;
     Fit f;
     for (int round = 0; round < 3; ++round) {
-        f = bestFit(t, d, from, to, std::max(1e-4, (to - from) / 40.0), kMinTau_s, kMaxTau_s, 1.04, settle);
-        const double step = std::max(1e-4, (to - from) / 40.0);
+        const double lo = from - kCarried_s, hi = to + settle;
+        f = bestFit(t, d, from, to, std::max(1e-4, (to - from) / 60.0), kMinTau_s, kMaxTau_s, 1.04, lo, hi);
+        const double step = std::max(1e-4, (to - from) / 60.0);
         f = bestFit(t, d, std::max(from, f.t0 - step), std::min(to, f.t0 + step), step / 10.0, f.tau / 1.05, f.tau * 1.05, 1.004,
-                    settle);
+                    lo, hi);
         if (!std::isfinite(f.sse) || 8.0 * f.tau <= settle || settle >= kMaxSettle_s)
             break;
         settle = std::min(kMaxSettle_s, 8.0 * f.tau);
