@@ -40,8 +40,9 @@ struct Fit {
 // Least squares of the carried line and the settling exponential for one onset and τ: the
 // model is linear in d0 (value at the onset), v (speed before it) and A (rest after it). The
 // frames fitted are those in [lo, hi], the same for every onset tried, so that their sums of
-// squares compare.
-Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0, double tau, double lo, double hi)
+// squares compare; each counts by its weight w.
+Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, const std::vector<double>& w, double t0, double tau, double lo,
+          double hi)
 {
     double m[3][3] = {}, r[3] = {};
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -55,9 +56,9 @@ Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0,
             x[0] = e, x[1] = 0.0, x[2] = 1.0 - e;
         }
         for (int a = 0; a < 3; ++a) {
-            r[a] += x[a] * d[i];
+            r[a] += w[i] * x[a] * d[i];
             for (int b = 0; b < 3; ++b)
-                m[a][b] += x[a] * x[b];
+                m[a][b] += w[i] * x[a] * x[b];
         }
     }
     // Cramer's rule on the 3×3 normal equations.
@@ -83,18 +84,18 @@ Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, double t0,
         if (t[i] < lo || t[i] > hi)
             continue;
         const double model = t[i] < t0 ? f.d0 + f.v * (t[i] - t0) : f.a + (f.d0 - f.a) * std::exp(-(t[i] - t0) / tau);
-        f.sse += (d[i] - model) * (d[i] - model);
+        f.sse += w[i] * (d[i] - model) * (d[i] - model);
     }
     return f;
 }
 
-Fit bestFit(const std::vector<double>& t, const std::vector<double>& d, double t0From, double t0To, double t0Step,
+Fit bestFit(const std::vector<double>& t, const std::vector<double>& d, const std::vector<double>& w, double t0From, double t0To, double t0Step,
             double tauFrom, double tauTo, double tauFactor, double lo, double hi)
 {
     Fit best;
     for (double t0 = t0From; t0 <= t0To + 1e-12; t0 += t0Step)
         for (double tau = tauFrom; tau <= tauTo * (1 + 1e-9); tau *= tauFactor) {
-            const Fit f = fitAt(t, d, t0, tau, lo, hi);
+            const Fit f = fitAt(t, d, w, t0, tau, lo, hi);
             if (f.sse < best.sse)
                 best = f;
         }
@@ -149,16 +150,42 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
     // grid from four frame intervals before to one after, then finer.
     const double from = t[onset >= 4 ? onset - 4 : 0], to = t[std::min(n - 1, onset + 1)];
     double settle = kMinSettle_s;
+    std::vector<double> w(n, 1.0);
+    const double step = std::max(1e-4, (to - from) / 60.0);
+    auto fitOnce = [&](double lo, double hi) {
+        const Fit coarse = bestFit(t, d, w, from, to, step, kMinTau_s, kMaxTau_s, 1.04, lo, hi);
+        return bestFit(t, d, w, std::max(from, coarse.t0 - step), std::min(to, coarse.t0 + step), step / 10.0, coarse.tau / 1.05,
+                       coarse.tau * 1.05, 1.004, lo, hi);
+    };
     Fit f;
     for (int round = 0; round < 3; ++round) {
-        const double lo = from - kCarried_s, hi = to + settle;
-        f = bestFit(t, d, from, to, std::max(1e-4, (to - from) / 60.0), kMinTau_s, kMaxTau_s, 1.04, lo, hi);
-        const double step = std::max(1e-4, (to - from) / 60.0);
-        f = bestFit(t, d, std::max(from, f.t0 - step), std::min(to, f.t0 + step), step / 10.0, f.tau / 1.05, f.tau * 1.05, 1.004,
-                    lo, hi);
+        f = fitOnce(from - kCarried_s, to + settle);
         if (!std::isfinite(f.sse) || 8.0 * f.tau <= settle || settle >= kMaxSettle_s)
             break;
         settle = std::min(kMaxSettle_s, 8.0 * f.tau);
+    }
+    // Frames far off the fit count less (Tukey's biweight), twice over: a repeated frame the
+    // capture put out again (the previous picture at a later time) or a frame the tracker
+    // misread lies far off while the surface moves fast, and would bend τ.
+    for (int round = 0; round < 2 && std::isfinite(f.sse); ++round) {
+        const double lo = from - kCarried_s, hi = to + settle;
+        std::vector<double> residual(n, 0.0), absolute;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (t[i] < lo || t[i] > hi)
+                continue;
+            const double model = t[i] < f.t0 ? f.d0 + f.v * (t[i] - f.t0) : f.a + (f.d0 - f.a) * std::exp(-(t[i] - f.t0) / f.tau);
+            residual[i] = d[i] - model;
+            absolute.push_back(std::abs(residual[i]));
+        }
+        const double scale = 4.685 * std::max({1.4826 * median(absolute), noise, 0.05});
+        for (std::size_t i = 0; i < n; ++i) {
+            const double u = residual[i] / scale;
+            w[i] = std::abs(u) < 1.0 ? (1 - u * u) * (1 - u * u) : 0.0;
+        }
+        const Fit robust = fitOnce(lo, hi);
+        if (!std::isfinite(robust.sse))
+            break;
+        f = robust;
     }
     if (!std::isfinite(f.sse))
         return fail(nb::TrCore::tr("the surface's motion around the puncture could not be fitted"));
@@ -172,17 +199,19 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
         return fail(nb::TrCore::tr("the surface's spring-back (%1 px) does not stand out of the picture's noise (%2 px)")
                         .arg(s.amplitude_px, 0, 'f', 1)
                         .arg(noise, 0, 'f', 2));
+    if (s.relaxed_s > t[n - 1] + frame_s)
+        return fail(nb::TrCore::tr("the video ends before the surface has come to rest"));
     // How much of the motion after the onset the settling explains.
     double mean = 0.0, count = 0.0, sse = 0.0, sst = 0.0;
     for (std::size_t i = 0; i < n; ++i)
         if (t[i] >= f.t0 && t[i] <= f.t0 + settle)
-            mean += d[i], ++count;
-    mean /= std::max(1.0, count);
+            mean += w[i] * d[i], count += w[i];
+    mean /= std::max(1e-9, count);
     for (std::size_t i = 0; i < n; ++i)
         if (t[i] >= f.t0 && t[i] <= f.t0 + settle) {
             const double model = f.a + (f.d0 - f.a) * std::exp(-(t[i] - f.t0) / f.tau);
-            sse += (d[i] - model) * (d[i] - model);
-            sst += (d[i] - mean) * (d[i] - mean);
+            sse += w[i] * (d[i] - model) * (d[i] - model);
+            sst += w[i] * (d[i] - mean) * (d[i] - mean);
         }
     if (count < 4 || !(sst > 0.0) || 1.0 - sse / sst < kMinExplained)
         return fail(nb::TrCore::tr("the surface's motion after the puncture is not a spring-back that settles"));
@@ -201,8 +230,6 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
                             .arg(s.amplitude_px, 0, 'f', 1)
                             .arg(s.carried_px, 0, 'f', 1));
     }
-    if (s.relaxed_s > t[n - 1] + frame_s)
-        return fail(nb::TrCore::tr("the video ends before the surface has come to rest"));
     return s;
 }
 
