@@ -106,6 +106,16 @@ private slots:
                 lost.displacement_px[i] -= lost.time_s[i] > t.contact_s ? t.speed_px_s * (lost.time_s[i] - t.contact_s) - pushed : -pushed;
         QVERIFY(!nb::fitSpringBack(lost, t.puncture_s, t.contact_s, &problem));
         QVERIFY2(problem.contains(QLatin1String("carried")), qPrintable(problem));
+        // Only the needle to follow (no surface in the picture): it goes on at its speed
+        // through the puncture, nothing springs back.
+        nb::SurfaceTrace needle;
+        std::normal_distribution<double> jitter(0.0, 0.2);
+        for (double time = 0.01; time < 6.0; time += 0.04) {
+            needle.time_s.push_back(time);
+            needle.displacement_px.push_back(30.0 * time + jitter(rng));
+        }
+        QVERIFY(!nb::fitSpringBack(needle, t.puncture_s, t.contact_s, &problem));
+        qInfo("needle only: %s", qPrintable(problem));
         // No frames around the puncture at all.
         QVERIFY(!nb::fitSpringBack(draw(t, rng, 0.01), t.end_s + 3.0, t.contact_s, &problem));
     }
