@@ -1,7 +1,8 @@
 // `needlebench labels suggest RUN.csv --out LABELS.csv [--video VIDEO]`: labels suggested from
 // the data, in the labels file format `track,label,start_s,end_s,comment`. With a video (the
 // given one, else the one linked to the run) the friction phases also use the tissue's motion
-// in the picture; the video's clock comes from --video-offset-s, else the run's stored link,
+// in the picture, and on insertion runs the relaxation comes from the organ surface's
+// spring-back in it (without a video none is suggested); the video's clock comes from --video-offset-s, else the run's stored link,
 // else the automatic sync.
 #include "cli_support.h"
 #include "core/tr.h"
@@ -11,6 +12,7 @@
 #include "core/run_video_link.h"
 #include "video/frame_index_store.h"
 #include "video/frame_reader.h"
+#include "video/surface_trace.h"
 #include "video/tissue_tracker.h"
 #include "video/video_error.h"
 #include "video/video_sync.h"
@@ -37,7 +39,8 @@ int cmdLabels(const QStringList& args, Io io)
                                  QStringLiteral("LABELS.csv"));
     const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print the labels as JSON"));
     const QCommandLineOption video(QStringLiteral("video"),
-                                   nb::TrCli::tr("the run's imaging video: friction phases also from the tissue's motion in it "
+                                   nb::TrCli::tr("the run's imaging video: friction phases also from the tissue's motion in it, "
+                                                 "the relaxation of insertion runs from the surface's spring-back "
                                                  "(default: the video linked to the run, if any)"),
                                    QStringLiteral("VIDEO"));
     const QCommandLineOption videoOffset(QStringLiteral("video-offset-s"),
@@ -77,8 +80,13 @@ int cmdLabels(const QStringList& args, Io io)
     }
     try {
         const Run run = readRunFile(runPath).run;
+        const QString protocol = run.metadata.value(QStringLiteral("protocol"), QString());
+        Labels labels = suggestLabels(run);
+        const bool phases = std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.track != QLatin1String("events"); });
+        const bool wantsPhases = protocol == QLatin1String("friction") || (protocol.isEmpty() && phases);
         QJsonObject videoReport;
         std::optional<TissueMotion> tissue;
+        std::vector<SurfaceTrace> surface;
         {
             QString videoPath = parser.value(video);
             QString linkProblem;
@@ -104,10 +112,17 @@ int cmdLabels(const QStringList& args, Io io)
                         videoReport[QStringLiteral("sync_confidence")] = vs.result.confidence;
                     }
                     video::FrameReader reader(index);
-                    TissueMotion m = video::tissueMotionFromShifts(video::trackTissueShifts(reader), run, *mapping, &problem);
-                    if (!m.time_s.empty()) {
-                        m.source = QFileInfo(videoPath).fileName();
-                        tissue = std::move(m);
+                    const video::TissueShifts shifts = video::trackTissueShifts(reader);
+                    if (wantsPhases) {
+                        TissueMotion m = video::tissueMotionFromShifts(shifts, run, *mapping, &problem);
+                        if (!m.time_s.empty()) {
+                            m.source = QFileInfo(videoPath).fileName();
+                            tissue = std::move(m);
+                        }
+                    } else {
+                        surface = video::surfaceTraces(reader, shifts, *mapping, QFileInfo(videoPath).fileName());
+                        if (surface.empty())
+                            problem = nb::TrCli::tr("too few distinct frames to follow the surface");
                     }
                 } catch (const video::VideoError& e) {
                     problem = e.message();
@@ -119,8 +134,12 @@ int cmdLabels(const QStringList& args, Io io)
                     videoReport[QStringLiteral("drift")] = mapping->drift;
                     videoReport[QStringLiteral("sync")] = mappingSource;
                 }
-                videoReport[QStringLiteral("used")] = bool(tissue);
-                if (!tissue) {
+                videoReport[QStringLiteral("used")] = bool(tissue) || !surface.empty();
+                if (!wantsPhases && surface.empty()) {
+                    videoReport[QStringLiteral("problem")] = problem;
+                    io.err << nb::TrCli::tr("needlebench labels: %1: the surface's motion could not be read (%2); no relaxation suggested\n")
+                                  .arg(videoPath, problem);
+                } else if (wantsPhases && !tissue) {
                     videoReport[QStringLiteral("problem")] = problem;
                     io.err << nb::TrCli::tr("needlebench labels: %1: the tissue's motion could not be read (%2); phases from force and position only\n")
                                   .arg(videoPath, problem);
@@ -139,11 +158,16 @@ int cmdLabels(const QStringList& args, Io io)
                 ts << QString::number(tissue->time_s[i], 'f', 6) << ','
                    << (std::isfinite(tissue->velocity_mm_s[i]) ? QString::number(tissue->velocity_mm_s[i], 'f', 4) : QString()) << '\n';
         }
-        const QString protocol = run.metadata.value(QStringLiteral("protocol"), QString());
-        Labels labels = suggestLabels(run);
-        const bool phases = std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.track != QLatin1String("events"); });
-        if (tissue && (protocol == QLatin1String("friction") || (protocol.isEmpty() && phases)))
+        if (tissue && wantsPhases)
             labels = suggestPhaseLabels(run, &*tissue);
+        if (!surface.empty() && !wantsPhases) {
+            QString problem;
+            labels = suggestEventLabels(run, surface, &problem);
+            const bool relaxed = std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.label == QLatin1String("relaxation"); });
+            videoReport[QStringLiteral("relaxation")] = relaxed ? QStringLiteral("suggested") : problem;
+            if (!relaxed)
+                io.err << nb::TrCli::tr("needlebench labels: %1: no relaxation suggested: %2\n").arg(videoReport.value(QStringLiteral("file")).toString(), problem);
+        }
         writeLabelsFile(outPath, labels);
         if (parser.isSet(json)) {
             QJsonArray a;

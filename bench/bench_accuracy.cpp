@@ -1,9 +1,10 @@
 // Accuracy of video sync (and, as they land, phases and friction fits) over a matrix drawn
 // at random from a printed seed: `bench_accuracy [--seed N] [--sync-cases N] [--small]
-// [--case N] [--phase-case N] [--keep DIR]` (--case, --phase-case: only sync or phase case N of the
+// [--relax-cases N] [--case N] [--phase-case N] [--keep DIR]` (--case, --phase-case: only sync or phase case N of the
 // draw, to look at one again; --keep leaves each case's run, video and suggested labels there). Prints one line per case and the summary against issue 13's targets.
 #include "video/accuracy_matrix.h"
 #include "video/phase_matrix.h"
+#include "video/relax_matrix.h"
 #include "core/rig_friction_matrix.h"
 
 #include "core/sync.h"
@@ -14,6 +15,7 @@
 #include <QTextStream>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 using namespace nb::accuracy;
@@ -55,6 +57,46 @@ void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString&
                .arg(quantile(without, 0.5), 0, 'f', 1).arg(quantile(without, 0.0), 0, 'f', 1)
                .arg(quantile(with, 0.5), 0, 'f', 1).arg(quantile(with, 0.0), 0, 'f', 1);
     out << "targets: >= 80 % without video and >= 90 % with video, in every case\n";
+}
+
+// Relaxation read off the imaging video of insertion runs (tests/video/relax_matrix.h), its own
+// generator so that the other draws stay as they were.
+void printRelaxMatrix(QTextStream& out, unsigned seed, int count, bool small, const QString& root)
+{
+    if (count <= 0)
+        return;
+    out << "\n== relaxation: simulated insertions, suggested from the surface in the video (truth hidden), error in frames\n";
+    std::mt19937 rng(seed ^ 0x5bd1e995u);
+    std::vector<double> errors;
+    int failed = 0, none = 0, withoutVideo = 0;
+    const std::vector<RelaxMatrixCase> cases = drawRelaxMatrix(rng, count, small);
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const RelaxMatrixOutcome o = runRelaxMatrixCase(cases[i], QStringLiteral(NB_EXECUTABLE), QDir(root).filePath(QStringLiteral("relax%1").arg(i)));
+        if (!o.ok) {
+            ++failed;
+            out << QStringLiteral("%1  FAILED %2: %3\n").arg(i, 3).arg(cases[i].describe(), o.problem);
+            out.flush();
+            continue;
+        }
+        withoutVideo += o.suggestedWithoutVideo;
+        if (o.suggested)
+            errors.push_back(std::abs(o.errorFrames));
+        else
+            ++none;
+        out << QStringLiteral("%1  %2  true %3 s  %4  %5\n")
+                   .arg(i, 3)
+                   .arg(o.suggested ? QStringLiteral("err %1 fr").arg(o.errorFrames, 6, 'f', 2) : QStringLiteral("none       "))
+                   .arg(o.truth_s, 0, 'f', 3)
+                   .arg(cases[i].describe(), o.why);
+        out.flush();
+    }
+    const int made = int(cases.size()) - failed;
+    out << QStringLiteral("relaxation: %1 runs (%2 failed to run): suggested in %3 % (%4 none); |error| p50 %5, p95 %6, max %7 frames; "
+                          "suggested without video: %8\n")
+               .arg(cases.size()).arg(failed)
+               .arg(made ? 100.0 * errors.size() / made : 0.0, 0, 'f', 1).arg(none)
+               .arg(quantile(errors, 0.5), 0, 'f', 2).arg(quantile(errors, 0.95), 0, 'f', 2).arg(quantile(errors, 1.0), 0, 'f', 2)
+               .arg(withoutVideo);
 }
 
 // The simulated rig's own friction runs (its own generator, so the draws above stay as they were).
@@ -115,7 +157,7 @@ int main(int argc, char** argv)
     QCoreApplication app(argc, argv);
     const QStringList a = app.arguments();
     unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
-    int syncCases = 20, frictionCases = 24, phaseCases = 24, rigFrictionSets = 8;
+    int syncCases = 20, frictionCases = 24, phaseCases = 24, rigFrictionSets = 8, relaxCases = 12;
     bool small = false;
     int onlyCase = -1, onlyPhaseCase = -1;
     QString keep;
@@ -130,6 +172,8 @@ int main(int argc, char** argv)
             rigFrictionSets = a[++i].toInt();
         else if (a[i] == QLatin1String("--phase-cases") && i + 1 < a.size())
             phaseCases = a[++i].toInt();
+        else if (a[i] == QLatin1String("--relax-cases") && i + 1 < a.size())
+            relaxCases = a[++i].toInt();
         else if (a[i] == QLatin1String("--case") && i + 1 < a.size())
             onlyCase = a[++i].toInt();
         else if (a[i] == QLatin1String("--phase-case") && i + 1 < a.size())
@@ -139,7 +183,7 @@ int main(int argc, char** argv)
         else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
             keep = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--small] [--case N] [--phase-case N] [--keep DIR]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--relax-cases N] [--small] [--case N] [--phase-case N] [--keep DIR]\n");
             return 2;
         }
     }
@@ -218,5 +262,6 @@ int main(int argc, char** argv)
     out << "targets: C within 5 %, b within 15 %\n";
 
     printRigFriction(out, seed, rigFrictionSets, root);
+    printRelaxMatrix(out, seed, relaxCases, small, root);
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "events.h"
 #include "friction_fit.h"
 #include "models.h"
+#include "tr.h"
 
 #include <algorithm>
 #include <cmath>
@@ -619,24 +620,51 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     return out;
 }
 
-Labels suggestEventLabels(const Run& run)
+Labels suggestEventLabels(const Run& run) { return suggestEventLabels(run, {}); }
+
+Labels suggestEventLabels(const Run& run, const std::vector<SurfaceTrace>& surfaces, QString* relaxationProblem)
 {
     Labels out;
     try {
         const InsertionEvents e = detectEvents(run);
-        auto point = [&](const QString& name, double t) {
-            out.push_back({QStringLiteral("events"), name, t, t, QStringLiteral("suggested from force (event detection)")});
+        auto point = [&](const QString& name, double t, const QString& comment) {
+            out.push_back({QStringLiteral("events"), name, t, t, comment});
         };
-        point(QStringLiteral("contact"), e.contact.time_s);
-        point(QStringLiteral("puncture"), e.puncture.time_s);
-        // No relaxation: the tissue's surface springing back after the puncture (to x_s3,
-        // models.md 4) takes a few tenths of a second, and the force does not show when it is
-        // done; the end of the force's drop, a few milliseconds after the puncture, is not it.
-        // The operator marks it from the imaging video.
+        const QString fromForce = QStringLiteral("suggested from force (event detection)");
+        point(QStringLiteral("contact"), e.contact.time_s, fromForce);
+        point(QStringLiteral("puncture"), e.puncture.time_s, fromForce);
+        // Relaxation only from the picture: the tissue's surface springing back after the
+        // puncture (to x_s3, models.md 4) takes a few tenths of a second, and the force does
+        // not show when it is done (the end of its drop, a few milliseconds after the
+        // puncture, is not it). Its duration comes from the video; it is counted from the
+        // force's puncture, so that the clocks' residual offset does not enter.
+        const SurfaceTrace* best = nullptr;
+        std::optional<SpringBack> fit;
+        QStringList problems;
+        for (const SurfaceTrace& surface : surfaces) {
+            QString problem;
+            const std::optional<SpringBack> s = fitSpringBack(surface, e.puncture.time_s, e.contact.time_s, &problem);
+            if (!s)
+                problems << (surface.source.isEmpty() ? problem : surface.source + QStringLiteral(": ") + problem);
+            // A trace that loses the surface reads its motion short: the larger spring-back wins.
+            else if (!fit || s->amplitude_px > fit->amplitude_px)
+                fit = s, best = &surface;
+        }
+        if (fit)
+            point(QStringLiteral("relaxation"), fit->relaxed_s,
+                  QStringLiteral("suggested from the surface's spring-back in %1 (4 tau after the puncture, tau %2 s, %3 px)")
+                      .arg(best->source)
+                      .arg(fit->tau_s, 0, 'f', 3)
+                      .arg(fit->amplitude_px, 0, 'f', 1));
+        else if (relaxationProblem && !surfaces.empty())
+            *relaxationProblem = problems.join(QStringLiteral("; "));
         for (const RunEvent& p : e.internalPunctures)
-            point(QStringLiteral("internal puncture"), p.time_s);
+            point(QStringLiteral("internal puncture"), p.time_s, fromForce);
+        std::stable_sort(out.begin(), out.end(), [](const Label& a, const Label& b) { return a.start_s < b.start_s; });
     } catch (const std::exception&) {
         // No puncture found (or too few samples): nothing to suggest.
+        if (!surfaces.empty() && relaxationProblem)
+            *relaxationProblem = nb::TrCore::tr("no puncture found in the force");
     }
     return out;
 }

@@ -6,11 +6,12 @@
 //   below the sliding line), b1/b2 while it bears on the plate (the force rising to the
 //   line), c from where the force follows the sliding line (tissue at rest) to the end;
 // - linear (stiffness) runs: contact, puncture and internal punctures from core/events.h
-//   on the "events" point track (not relaxation: the force does not show when the surface
-//   has sprung back; the operator marks it from the video).
+//   on the "events" point track; relaxation only from the imaging video (the force does not
+//   show when the surface has sprung back: core/surface_relaxation.h).
 
 #include "labels.h"
 #include "run.h"
+#include "surface_relaxation.h"
 #include "tissue_motion.h"
 
 namespace nb {
@@ -31,5 +32,11 @@ Labels suggestPhaseLabels(const Run& run, const SuggestOptions& options = {});
 Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const SuggestOptions& options = {});
 
 Labels suggestEventLabels(const Run& run);
+// With the organ surface's motion from the imaging video (measured one or more ways; none:
+// no relaxation): relaxation where the surface has come to rest after the puncture, from the
+// trace with the largest believable spring-back (one that loses the surface reads it short).
+// `relaxationProblem` (may be null) says why
+// there is none when traces were given.
+Labels suggestEventLabels(const Run& run, const std::vector<SurfaceTrace>& surfaces, QString* relaxationProblem = nullptr);
 
 }  // namespace nb

@@ -247,3 +247,14 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
 }
 
 }  // namespace nb::accuracy
+
+namespace nb::accuracy {
+void applyMatrixLook(Look look, unsigned seed, int frameNumber, double videoTime_s, cv::Mat& m)
+{
+    PhaseMatrixCase c;
+    c.look = look;
+    c.seed = seed;
+    applyLook(c, frameNumber, videoTime_s, m);
+}
+QString matrixLookName(Look look) { return phaseLookName(look); }
+}  // namespace nb::accuracy

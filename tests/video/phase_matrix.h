@@ -49,3 +49,10 @@ std::vector<PhaseMatrixCase> drawPhaseMatrix(std::mt19937& rng, int count, bool 
 PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& executable, const QString& workDir);
 
 }  // namespace nb::accuracy
+
+namespace nb::accuracy {
+// One of the looks above applied to a rendered picture (8-bit grey), noise seeded by `seed`
+// and the frame (for the other matrices that draw the same looks).
+void applyMatrixLook(Look look, unsigned seed, int frameNumber, double videoTime_s, cv::Mat& m);
+QString matrixLookName(Look look);
+}  // namespace nb::accuracy
