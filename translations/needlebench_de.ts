@@ -3537,7 +3537,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+33" />
+        <location filename="../app/cmd_labels.cpp" line="+35" />
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation>Labels eines Laufs. Aktionen: suggest (Phasen oder Ereignisse aus den Daten).</translation>
     </message>
@@ -3564,11 +3564,11 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+2" />
-        <source>the run's imaging video: friction phases also from the tissue's motion in it (default: the video linked to the run, if any)</source>
-        <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Bewegung des Gewebes darin (Standard: das mit der Messung verknüpfte Video, falls vorhanden)</translation>
+        <source>the run's imaging video: friction phases also from the tissue's motion in it, the relaxation of insertion runs from the surface's spring-back (default: the video linked to the run, if any)</source>
+        <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, falls vorhanden)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>video time at the recording's start (default: the run's stored sync, else found automatically)</source>
         <translation>Videozeit beim Start der Aufnahme (Standard: die gespeicherte Synchronisation der Messung, sonst automatisch ermittelt)</translation>
     </message>
@@ -3599,14 +3599,33 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+49" />
+        <source>too few distinct frames to follow the surface</source>
+        <translation>zu wenige unterschiedliche Bilder, um der Oberfläche zu folgen</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>needlebench labels: %1: the surface's motion could not be read (%2); no relaxation suggested
+</source>
+        <translation>needlebench labels: %1: die Bewegung der Oberfläche ließ sich nicht lesen (%2); keine Relaxation vorgeschlagen
+</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>needlebench labels: %1: the tissue's motion could not be read (%2); phases from force and position only
 </source>
         <translation>needlebench labels: %1: Die Bewegung des Gewebes ließ sich nicht lesen (%2); Phasen nur aus Kraft und Position
 </translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+25" />
+        <source>needlebench labels: %1: no relaxation suggested: %2
+</source>
+        <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
+</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>%1 labels suggested, written to %2
 </source>
         <translation>%1 Labels vorgeschlagen, nach %2 geschrieben
@@ -4142,7 +4161,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="-28" />
+        <location filename="../app/cmd_labels.cpp" line="-33" />
         <location filename="../app/cmd_sync.cpp" line="+11" />
         <source>%1: cannot write the trace here</source>
         <translation>%1: die Spur kann hier nicht geschrieben werden</translation>
@@ -5755,6 +5774,61 @@ Befehle:
         <source>nominal (device)</source>
         <translation>nominal (Gerät)</translation>
     </message>
+    <message>
+        <location filename="../core/label_suggest.cpp" line="+667" />
+        <source>no puncture found in the force</source>
+        <translation>keine Punktion in der Kraft gefunden</translation>
+    </message>
+    <message>
+        <location filename="../core/surface_relaxation.cpp" line="+119" />
+        <source>too few frames to follow the surface</source>
+        <translation>zu wenige Bilder, um der Oberfläche zu folgen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the video does not show the puncture</source>
+        <translation>das Video zeigt die Punktion nicht</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>no frames near the puncture</source>
+        <translation>keine Bilder nahe der Punktion</translation>
+    </message>
+    <message>
+        <location line="+45" />
+        <source>the surface's motion around the puncture could not be fitted</source>
+        <translation>die Bewegung der Oberfläche um die Punktion ließ sich nicht anpassen</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the surface's spring-back (%1 px) does not stand out of the picture's noise (%2 px)</source>
+        <translation>das Zurückfedern der Oberfläche (%1 px) hebt sich nicht vom Bildrauschen (%2 px) ab</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the video ends before the surface has come to rest</source>
+        <translation>das Video endet, bevor die Oberfläche zur Ruhe gekommen ist</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the surface's motion after the puncture is not a spring-back that settles</source>
+        <translation>die Bewegung der Oberfläche nach der Punktion ist kein Zurückfedern, das zur Ruhe kommt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the surface does not come to rest within %1 s</source>
+        <translation>die Oberfläche kommt nicht innerhalb von %1 s zur Ruhe</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>nothing springs back after the puncture: the picture goes on moving the way the needle carried it</source>
+        <translation>nach der Punktion federt nichts zurück: das Bild bewegt sich weiter in die Richtung, in die die Nadel es mitgenommen hat</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>the surface springs back further (%1 px) than it was carried since the contact (%2 px): the picture lost the surface</source>
+        <translation>die Oberfläche federt weiter zurück (%1 px), als sie seit dem Kontakt mitgenommen wurde (%2 px): das Bild hat die Oberfläche verloren</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrDevices</name>
@@ -6526,7 +6600,7 @@ Befehle:
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+610" />
+        <location filename="../video/needle_tracker.cpp" line="+760" />
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>

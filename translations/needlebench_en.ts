@@ -3502,7 +3502,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+33"/>
+        <location filename="../app/cmd_labels.cpp" line="+35"/>
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3529,11 +3529,11 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+2"/>
-        <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it (default: the video linked to the run, if any)</source>
+        <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, if any)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>video time at the recording&apos;s start (default: the run&apos;s stored sync, else found automatically)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3561,13 +3561,30 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+49"/>
+        <source>too few distinct frames to follow the surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>needlebench labels: %1: the surface&apos;s motion could not be read (%2); no relaxation suggested
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>needlebench labels: %1: the tissue&apos;s motion could not be read (%2); phases from force and position only
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+25"/>
+        <source>needlebench labels: %1: no relaxation suggested: %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation type="unfinished"></translation>
@@ -4088,7 +4105,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="-28"/>
+        <location filename="../app/cmd_labels.cpp" line="-33"/>
         <location filename="../app/cmd_sync.cpp" line="+11"/>
         <source>%1: cannot write the trace here</source>
         <translation type="unfinished"></translation>
@@ -5672,6 +5689,61 @@ Commands:
         <source>nominal (device)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../core/label_suggest.cpp" line="+667"/>
+        <source>no puncture found in the force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/surface_relaxation.cpp" line="+119"/>
+        <source>too few frames to follow the surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the video does not show the puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>no frames near the puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>the surface&apos;s motion around the puncture could not be fitted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the surface&apos;s spring-back (%1 px) does not stand out of the picture&apos;s noise (%2 px)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the video ends before the surface has come to rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the surface&apos;s motion after the puncture is not a spring-back that settles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the surface does not come to rest within %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>nothing springs back after the puncture: the picture goes on moving the way the needle carried it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the surface springs back further (%1 px) than it was carried since the contact (%2 px): the picture lost the surface</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrDevices</name>
@@ -6443,7 +6515,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+610"/>
+        <location filename="../video/needle_tracker.cpp" line="+760"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
