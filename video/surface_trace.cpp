@@ -17,14 +17,7 @@ SurfaceTrace surfaceTraceFromShifts(const TissueShifts& s, const TimelineMapping
         return out;
     // The principal axis of the shifts: the spring-back's few large steps and the carried
     // motion before it both lie along the needle.
-    double sxx = 0, sxy = 0, syy = 0;
-    for (std::size_t i = 0; i < k; ++i) {
-        sxx += s.dx_px[i] * s.dx_px[i];
-        sxy += s.dx_px[i] * s.dy_px[i];
-        syy += s.dy_px[i] * s.dy_px[i];
-    }
-    const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
-    const double ux = std::cos(angle), uy = std::sin(angle);
+    const auto [ux, uy] = principalShiftAxis(s, k);
     // Positions at the frames' own times: the first frame's, then each later frame's.
     double position = 0.0;
     out.time_s.push_back(mapping.toRecording(s.time_s[0] - 0.5 * s.dt_s[0]));

@@ -154,6 +154,18 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     return out;
 }
 
+std::pair<double, double> principalShiftAxis(const TissueShifts& s, std::size_t count)
+{
+    double sxx = 0, sxy = 0, syy = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        sxx += s.dx_px[i] * s.dx_px[i];
+        sxy += s.dx_px[i] * s.dy_px[i];
+        syy += s.dy_px[i] * s.dy_px[i];
+    }
+    const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+    return {std::cos(angle), std::sin(angle)};
+}
+
 TissueMotion tissueMotionFromShifts(const TissueShifts& s, const Run& run, const TimelineMapping& mapping, QString* problem)
 {
     TissueMotion m;
@@ -174,15 +186,8 @@ TissueMotion tissueMotionFromShifts(const TissueShifts& s, const Run& run, const
         dp[i] = inside ? interpolate(run.time_s, run.position_mm, tb[i]) - interpolate(run.time_s, run.position_mm, ta[i])
                        : std::numeric_limits<double>::quiet_NaN();
     }
-    // The direction the picture moves in: the principal axis of the shifts.
-    double sxx = 0, sxy = 0, syy = 0;
-    for (std::size_t i = 0; i < k; ++i) {
-        sxx += s.dx_px[i] * s.dx_px[i];
-        sxy += s.dx_px[i] * s.dy_px[i];
-        syy += s.dy_px[i] * s.dy_px[i];
-    }
-    const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
-    const double ux = std::cos(angle), uy = std::sin(angle);
+    // The direction the picture moves in.
+    const auto [ux, uy] = principalShiftAxis(s, k);
     std::vector<double> along(k);
     for (std::size_t i = 0; i < k; ++i)
         along[i] = s.dx_px[i] * ux + s.dy_px[i] * uy;

@@ -1,4 +1,5 @@
 #pragma once
+#include <utility>
 // The tissue's motion in the imaging video, for the friction phases (models.md 5: the
 // operator reads a, b1, b2, c off how the tissue moves against the needle).
 //
@@ -40,6 +41,9 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi = {}, const std::f
 // The shifts as the tissue's velocity along the needle, on the recording's clock, in mm/s.
 // `problem` (may be null) says why the result is empty: too little motion in the picture or
 // no motion of the needle to scale it by.
+// The direction the picture moves in: the principal axis of the first `count` shifts (unit vector).
+std::pair<double, double> principalShiftAxis(const TissueShifts& shifts, std::size_t count);
+
 TissueMotion tissueMotionFromShifts(const TissueShifts& shifts, const Run& run, const TimelineMapping& mapping,
                                     QString* problem = nullptr);
 
