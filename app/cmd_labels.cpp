@@ -12,8 +12,7 @@
 #include "core/run_video_link.h"
 #include "video/frame_index_store.h"
 #include "video/frame_reader.h"
-#include "video/surface_trace.h"
-#include "video/tissue_tracker.h"
+#include "video/labels_from_video.h"
 #include "video/video_error.h"
 #include "video/video_sync.h"
 
@@ -80,13 +79,9 @@ int cmdLabels(const QStringList& args, Io io)
     }
     try {
         const Run run = readRunFile(runPath).run;
-        const QString protocol = run.metadata.value(QStringLiteral("protocol"), QString());
         Labels labels = suggestLabels(run);
-        const bool phases = std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.track != QLatin1String("events"); });
-        const bool wantsPhases = protocol == QLatin1String("friction") || (protocol.isEmpty() && phases);
         QJsonObject videoReport;
         std::optional<TissueMotion> tissue;
-        std::vector<SurfaceTrace> surface;
         {
             QString videoPath = parser.value(video);
             QString linkProblem;
@@ -102,7 +97,8 @@ int cmdLabels(const QStringList& args, Io io)
             }
             if (!videoPath.isEmpty()) {
                 videoReport[QStringLiteral("file")] = videoPath;
-                QString problem;
+                video::VideoLabels found;
+                found.phases = video::suggestsPhases(run);
                 try {
                     const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
                     if (!mapping) {
@@ -111,38 +107,30 @@ int cmdLabels(const QStringList& args, Io io)
                         mappingSource = QStringLiteral("automatic");
                         videoReport[QStringLiteral("sync_confidence")] = vs.result.confidence;
                     }
-                    video::FrameReader reader(index);
-                    const video::TissueShifts shifts = video::trackTissueShifts(reader);
-                    if (wantsPhases) {
-                        TissueMotion m = video::tissueMotionFromShifts(shifts, run, *mapping, &problem);
-                        if (!m.time_s.empty()) {
-                            m.source = QFileInfo(videoPath).fileName();
-                            tissue = std::move(m);
-                        }
-                    } else {
-                        surface = video::surfaceTraces(reader, shifts, *mapping, QFileInfo(videoPath).fileName());
-                        if (surface.empty())
-                            problem = nb::TrCli::tr("too few distinct frames to follow the surface");
-                    }
+                    found = video::suggestLabelsWithVideo(run, index, *mapping, QFileInfo(videoPath).fileName());
+                    labels = found.labels;
+                    tissue = found.tissue;
                 } catch (const video::VideoError& e) {
-                    problem = e.message();
+                    found.problem = e.message();
                 } catch (const std::exception& e) {
-                    problem = QString::fromUtf8(e.what());
+                    found.problem = QString::fromUtf8(e.what());
                 }
                 if (mapping) {
                     videoReport[QStringLiteral("offset_s")] = mapping->offset_s;
                     videoReport[QStringLiteral("drift")] = mapping->drift;
                     videoReport[QStringLiteral("sync")] = mappingSource;
                 }
-                videoReport[QStringLiteral("used")] = bool(tissue) || !surface.empty();
-                if (!wantsPhases && surface.empty()) {
-                    videoReport[QStringLiteral("problem")] = problem;
-                    io.err << nb::TrCli::tr("needlebench labels: %1: the surface's motion could not be read (%2); no relaxation suggested\n")
-                                  .arg(videoPath, problem);
-                } else if (wantsPhases && !tissue) {
-                    videoReport[QStringLiteral("problem")] = problem;
-                    io.err << nb::TrCli::tr("needlebench labels: %1: the tissue's motion could not be read (%2); phases from force and position only\n")
-                                  .arg(videoPath, problem);
+                videoReport[QStringLiteral("used")] = found.videoUsed;
+                if (!found.videoUsed) {
+                    videoReport[QStringLiteral("problem")] = found.problem;
+                    io.err << (found.phases ? nb::TrCli::tr("needlebench labels: %1: the tissue's motion could not be read (%2); phases from force and position only\n")
+                                            : nb::TrCli::tr("needlebench labels: %1: the surface's motion could not be read (%2); no relaxation suggested\n"))
+                                  .arg(videoPath, found.problem);
+                }
+                if (found.relaxationProblem) {
+                    videoReport[QStringLiteral("relaxation")] = found.relaxationProblem->isEmpty() ? QStringLiteral("suggested") : *found.relaxationProblem;
+                    if (!found.relaxationProblem->isEmpty())
+                        io.err << nb::TrCli::tr("needlebench labels: %1: no relaxation suggested: %2\n").arg(videoPath, *found.relaxationProblem);
                 }
             }
         }
@@ -157,16 +145,6 @@ int cmdLabels(const QStringList& args, Io io)
             for (std::size_t i = 0; i < tissue->time_s.size(); ++i)
                 ts << QString::number(tissue->time_s[i], 'f', 6) << ','
                    << (std::isfinite(tissue->velocity_mm_s[i]) ? QString::number(tissue->velocity_mm_s[i], 'f', 4) : QString()) << '\n';
-        }
-        if (tissue && wantsPhases)
-            labels = suggestPhaseLabels(run, &*tissue);
-        if (!surface.empty() && !wantsPhases) {
-            QString problem;
-            labels = suggestEventLabels(run, surface, &problem);
-            const bool relaxed = std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.label == QLatin1String("relaxation"); });
-            videoReport[QStringLiteral("relaxation")] = relaxed ? QStringLiteral("suggested") : problem;
-            if (!relaxed)
-                io.err << nb::TrCli::tr("needlebench labels: %1: no relaxation suggested: %2\n").arg(videoReport.value(QStringLiteral("file")).toString(), problem);
         }
         writeLabelsFile(outPath, labels);
         if (parser.isSet(json)) {

@@ -199,6 +199,11 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
         return fail(nb::TrCore::tr("the surface's spring-back (%1 px) does not stand out of the picture's noise (%2 px)")
                         .arg(s.amplitude_px, 0, 'f', 1)
                         .arg(noise, 0, 'f', 2));
+    // Springing back goes against the way the needle carried the surface; motion that goes on
+    // the same way (the needle's own, or a surface still carried) is not a spring-back. Said
+    // first: such a fit's slow settling would otherwise read as a video that ends too soon.
+    if (f.v * (f.d0 - f.a) < 0.0 && std::abs(f.v) * kCarried_s > 2.0 * noise + kMinAmplitude_px)
+        return fail(nb::TrCore::tr("nothing springs back after the puncture: the picture goes on moving the way the needle carried it"));
     if (s.relaxed_s > t[n - 1] + frame_s)
         return fail(nb::TrCore::tr("the video ends before the surface has come to rest"));
     // How much of the motion after the onset the settling explains.
@@ -217,10 +222,6 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
         return fail(nb::TrCore::tr("the surface's motion after the puncture is not a spring-back that settles"));
     if (f.tau >= kMaxTau_s / 1.05)
         return fail(nb::TrCore::tr("the surface does not come to rest within %1 s").arg(kMaxTau_s * kRelaxedTaus, 0, 'f', 0));
-    // Springing back goes against the way the needle carried the surface; motion that goes on
-    // the same way (the needle's own, or a surface still carried) is not a spring-back.
-    if (f.v * (f.d0 - f.a) < 0.0 && std::abs(f.v) * kCarried_s > 2.0 * noise + kMinAmplitude_px)
-        return fail(nb::TrCore::tr("nothing springs back after the puncture: the picture goes on moving the way the needle carried it"));
     if (std::isfinite(contact_s) && contact_s < f.t0 && contact_s >= t.front()) {
         // Where the surface was at the contact: the frames within a frame of it.
         std::vector<double> atContact;

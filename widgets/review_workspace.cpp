@@ -23,6 +23,7 @@
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QPointer>
 #include <QSignalBlocker>
 #include <QPushButton>
 #include <QSplitter>
@@ -98,10 +99,38 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         updateTrace();
         emit trackingFinished();
     });
+    connect(&suggestWatcher_, &QFutureWatcher<video::VideoLabels>::finished, this, [this] {
+        suggestButton_->setEnabled(true);
+        const video::VideoLabels found = suggestWatcher_.result();
+        if (found.cancelled || suggestGeneration_ != jobGeneration_) {
+            showStatus(tr("Suggestion stopped: the run or its video changed"));
+            emit labelsSuggested();
+            return;
+        }
+        if (!(suggestMapping_ == mapping_)) {
+            showStatus(tr("Suggestion dropped: the video's offset changed while it was read; suggest again"));
+            emit labelsSuggested();
+            return;
+        }
+        const QString name = QFileInfo(videoPath_).fileName();
+        QString from;
+        if (!found.videoUsed)
+            from = tr("force and position only (%1: %2)").arg(name, found.problem);
+        else if (found.phases)
+            from = tr("force, position and the tissue's motion in %1").arg(name);
+        else if (found.relaxationProblem && !found.relaxationProblem->isEmpty())
+            from = tr("force and position; no relaxation from %1: %2").arg(name, *found.relaxationProblem);
+        else
+            from = tr("force and position, the relaxation from the surface in %1").arg(name);
+        applySuggestion(found.labels, from);
+    });
 }
 
 ReviewWorkspace::~ReviewWorkspace()
 {
+    if (suggestCancel_)
+        suggestCancel_->store(true);
+    suggestWatcher_.waitForFinished();
     if (jobCancel_)
         jobCancel_->store(true);
     try {
@@ -293,10 +322,11 @@ void ReviewWorkspace::buildUi()
 
     // Labels.
     auto* labels = new QHBoxLayout;
-    auto* suggest = new QPushButton(tr("Suggest labels"), this);
-    suggest->setFocusPolicy(Qt::NoFocus);
-    connect(suggest, &QPushButton::clicked, this, &ReviewWorkspace::suggestLabels);
-    labels->addWidget(suggest);
+    suggestButton_ = new QPushButton(tr("Suggest labels"), this);
+    suggestButton_->setFocusPolicy(Qt::NoFocus);
+    suggestButton_->setToolTip(tr("phases or events from force and position, and from the synchronised video when there is one"));
+    connect(suggestButton_, &QPushButton::clicked, this, &ReviewWorkspace::suggestLabels);
+    labels->addWidget(suggestButton_);
     auto* editSet = new QPushButton(tr("Edit label set…"), this);
     editSet->setFocusPolicy(Qt::NoFocus);
     editSet->setToolTip(tr("add, rename or remove the labels of this protocol and their hotkeys"));
@@ -792,15 +822,46 @@ void ReviewWorkspace::saveLabels()
 
 void ReviewWorkspace::suggestLabels()
 {
-    if (run_.size() == 0)
+    if (run_.size() == 0 || suggestWatcher_.isRunning())
         return;
-    const Labels suggested = nb::suggestLabels(run_);
+    if (!index_ || syncMethod_ == SyncMethod::None) {
+        // The picture on an unknown clock would put the phases in the wrong place.
+        const QString from = index_ ? tr("force and position (synchronise the video to have its motion used)")
+                                    : tr("force and position");
+        applySuggestion(nb::suggestLabels(run_), from);
+        return;
+    }
+    suggestCancel_ = std::make_shared<std::atomic_bool>(false);
+    suggestGeneration_ = jobGeneration_;
+    suggestMapping_ = mapping_;
+    suggestButton_->setEnabled(false);
+    const QString name = QFileInfo(videoPath_).fileName();
+    showStatus(tr("Reading the motion in %1 for the suggestion…").arg(name));
+    const video::FrameIndex index = *index_;
+    const Run run = run_;
+    const TimelineMapping mapping = mapping_;
+    const std::shared_ptr<std::atomic_bool> cancel = suggestCancel_;
+    QPointer<ReviewWorkspace> self(this);
+    auto progress = [self, name](int done, int total) {
+        QMetaObject::invokeMethod(self, [self, name, done, total] {
+            if (self && self->suggestWatcher_.isRunning())
+                self->showStatus(tr("Reading the motion in %1 for the suggestion: frame %2 of %3").arg(name).arg(done).arg(total));
+        }, Qt::QueuedConnection);
+    };
+    suggestWatcher_.setFuture(QtConcurrent::run([index, run, mapping, name, progress, cancel] {
+        return video::suggestLabelsWithVideo(run, index, mapping, name, progress, cancel.get());
+    }));
+}
+
+void ReviewWorkspace::applySuggestion(const Labels& suggested, const QString& from)
+{
     undo_->beginMacro(tr("suggest labels"));
     for (const Label& l : suggested)
         if (model_->canPlace(l))
             undo_->push(new AddLabelCommand(model_, l));
     undo_->endMacro();
-    showStatus(tr("%1 labels suggested from the data: check and correct them").arg(suggested.size()));
+    showStatus(tr("%n label(s) suggested from %1: check and correct them", nullptr, int(suggested.size())).arg(from));
+    emit labelsSuggested();
 }
 
 void ReviewWorkspace::startAutoSync()
@@ -854,6 +915,8 @@ void ReviewWorkspace::trackInBackground()
 void ReviewWorkspace::resetTrack()
 {
     ++jobGeneration_;
+    if (suggestCancel_)
+        suggestCancel_->store(true);
     if (jobCancel_)
         jobCancel_->store(true);
     if (wantPending_) {

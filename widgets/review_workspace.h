@@ -13,6 +13,7 @@
 #include "core/run.h"
 #include "core/run_video_link.h"
 #include "core/sync.h"
+#include "video/labels_from_video.h"
 #include "video/video_decoder.h"
 #include "video/video_sync.h"
 
@@ -85,8 +86,13 @@ public:
     VideoView* videoView() const { return video_; }
     video::VideoDecoder* decoder() const { return decoder_; }
 
-    // Applies the labels suggested from the data (one undoable step).
+    // Applies the labels suggested from the data (one undoable step). With a synchronised
+    // video the tissue's motion in it (friction phases) or the surface's spring-back
+    // (relaxation) is read first, in the background: the labels come with labelsSuggested().
+    // Without a video, or before it is synchronised, from force and position at once.
     void suggestLabels();
+    bool isSuggesting() const { return suggestWatcher_.isRunning(); }
+    QPushButton* suggestButton() const { return suggestButton_; }
     // Opens the label-set editor for the run's protocol (not blocking); accepting it changes
     // the hotkeys at once and keeps the set in QSettings for the protocol.
     LabelSetDialog* editLabelSet();
@@ -118,6 +124,7 @@ signals:
     void syncFinished();
     void videoLinkChanged();  // the video or the sync kept with the run changed
     void trackingFinished();  // the background tracking ended (the trace may have changed)
+    void labelsSuggested();   // suggestLabels() has applied its labels (or found none to add)
 
 protected:
     void keyPressEvent(QKeyEvent* e) override;
@@ -147,6 +154,7 @@ private:
     void trackInBackground();
     void resetTrack();  // the run or the video changed: what was tracked no longer applies
     void updateTrace();
+    void applySuggestion(const Labels& suggested, const QString& from);
 
     Run run_;
     QString runPath_;
@@ -194,6 +202,12 @@ private:
     bool wantPending_ = false;
     std::optional<video::VideoSync> tracked_;  // the last job's answer for this run and video
     QRect trackedRoi_;
+    // Suggest labels with the video: one job at a time, for the run, video and offset it began with.
+    QFutureWatcher<video::VideoLabels> suggestWatcher_;
+    std::shared_ptr<std::atomic_bool> suggestCancel_;
+    int suggestGeneration_ = -1;
+    TimelineMapping suggestMapping_;
+    QPushButton* suggestButton_ = nullptr;
     QCPGraph* positionGraph_ = nullptr;
     QCPGraph* trackedGraph_ = nullptr;
 };

@@ -10,6 +10,7 @@
 #include "widgets/video_view.h"
 
 #include <QCheckBox>
+#include <algorithm>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -196,6 +197,8 @@ private slots:
 
     void videoFollowsTheCursorAndSyncs()
     {
+        // The labels the earlier cases placed would leave no room for the suggestion below.
+        QFile::remove(nb::labelsPathFor(run_));
         nb::ReviewWorkspace ws;
         ws.resize(1280, 820);
         ws.show();
@@ -252,8 +255,42 @@ private slots:
         const int expected = int(std::floor((1.0 + ws.mapping().offset_s) * 29.97 + 1e-9));
         QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), expected, 20000);
 
+        // Suggest reads the tissue's motion in the synchronised video, in the background, and
+        // places what `labels suggest --video` gives for the same run, video and offset.
+        QSignalSpy suggested(&ws, &nb::ReviewWorkspace::labelsSuggested);
         ws.suggestLabels();
-        QVERIFY(ws.labelModel()->labels().size() > 8);
+        QVERIFY(ws.isSuggesting());
+        QVERIFY(!ws.suggestButton()->isEnabled());
+        QVERIFY(suggested.wait(240000));
+        QVERIFY(ws.suggestButton()->isEnabled());
+        QVERIFY2(ws.status().contains(QLatin1String("the tissue's motion in run.avi")), qPrintable(ws.status()));
+        const nb::Labels placed = ws.labelModel()->labels();
+        QVERIFY(placed.size() > 8);
+        const QString cliLabels = dir_.filePath("cli.labels.csv");
+        QProcess cli;
+        cli.start(QStringLiteral(NB_EXECUTABLE),
+                  {"labels", "suggest", run_, "--video", video_, "--video-offset-s", QString::number(ws.mapping().offset_s, 'g', 17),
+                   "--video-drift", QString::number(ws.mapping().drift, 'g', 17), "--out", cliLabels});
+        QVERIFY(cli.waitForFinished(240000));
+        QCOMPARE(cli.exitCode(), 0);
+        const nb::Labels fromCli = nb::readLabelsFile(cliLabels);
+        QCOMPARE(placed.size(), fromCli.size());
+        std::size_t fromVideo = 0;
+        for (const Label& l : fromCli) {
+            QVERIFY2(std::any_of(placed.begin(), placed.end(),
+                                 [&](const Label& p) {
+                                     return p.track == l.track && p.label == l.label && std::abs(p.start_s - l.start_s) < 1e-3 &&
+                                            std::abs(p.end_s - l.end_s) < 1e-3 && p.comment == l.comment;
+                                 }),
+                     qPrintable(QString("%1 %2 %3-%4 %5").arg(l.track, l.label).arg(l.start_s).arg(l.end_s).arg(l.comment)));
+            fromVideo += l.comment.contains(QLatin1String("run.avi")) ? 1 : 0;
+        }
+        QVERIFY2(fromVideo > 0, "no suggested label says it came from the video");
+        // One undoable step.
+        ws.undoStack()->undo();
+        QCOMPARE(ws.labelModel()->labels().size(), std::size_t(0));
+        ws.undoStack()->redo();
+        QCOMPARE(ws.labelModel()->labels().size(), placed.size());
         ws.setCursorTime(2.3);
         QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == int(std::floor((2.3 + ws.mapping().offset_s) * 29.97 + 1e-9)), 20000);
         QTest::qWait(200);
