@@ -2110,7 +2110,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+46"/>
+        <location filename="../widgets/review_workspace.cpp" line="+47"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2130,7 +2130,37 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+14"/>
+        <source>Suggestion stopped: the run or its video changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Suggestion dropped: the video&apos;s offset changed while it was read; suggest again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>force and position only (%1: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>force, position and the tissue&apos;s motion in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>force and position; no relaxation from %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>force and position, the relaxation from the surface in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>recording time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2151,12 +2181,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+739"/>
+        <location line="+773"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-736"/>
+        <location line="-770"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2182,12 +2212,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+426"/>
+        <location line="+427"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-426"/>
+        <location line="-427"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2308,8 +2338,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="+27"/>
+        <source>phases or events from force and position, and from the synchronised video when there is one</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
-        <location line="+174"/>
+        <location line="+148"/>
         <source>labels: %n</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -2363,7 +2398,35 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+174"/>
+        <location line="+96"/>
+        <source>force and position (synchronise the video to have its motion used)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force and position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Reading the motion in %1 for the suggestion…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Reading the motion in %1 for the suggestion: frame %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15"/>
+        <source>%n label(s) suggested from %1: check and correct them</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+77"/>
         <source>needle tracked in the video (at the offset found)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2378,7 +2441,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-631"/>
+        <location line="-665"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2423,7 +2486,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Edit label set…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2493,17 +2556,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+39"/>
         <source>suggest labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1 labels suggested from the data: check and correct them</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>Open a run and a video first</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2513,7 +2571,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3502,7 +3560,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+35"/>
+        <location filename="../app/cmd_labels.cpp" line="+34"/>
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3561,30 +3619,25 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
-        <source>too few distinct frames to follow the surface</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location line="+52"/>
         <source>needlebench labels: %1: the surface&apos;s motion could not be read (%2); no relaxation suggested
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-1"/>
         <source>needlebench labels: %1: the tissue&apos;s motion could not be read (%2); phases from force and position only
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+7"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+30"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation type="unfinished"></translation>
@@ -4105,7 +4158,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="-33"/>
+        <location filename="../app/cmd_labels.cpp" line="-23"/>
         <location filename="../app/cmd_sync.cpp" line="+11"/>
         <source>%1: cannot write the trace here</source>
         <translation type="unfinished"></translation>
@@ -5720,7 +5773,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>the video ends before the surface has come to rest</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5735,12 +5788,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-18"/>
         <source>nothing springs back after the puncture: the picture goes on moving the way the needle carried it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+27"/>
         <source>the surface springs back further (%1 px) than it was carried since the contact (%2 px): the picture lost the surface</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6545,12 +6598,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+103"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+22"/>
         <source>the needle does not move while the video runs</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6562,6 +6615,21 @@ Commands:
     <message>
         <location line="+14"/>
         <source>the tissue&apos;s motion does not stand out of the picture&apos;s noise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../video/labels_from_video.cpp" line="+35"/>
+        <source>stopped before the video was read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>too few distinct frames to follow the surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>the video gave no motion to read</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
