@@ -1084,9 +1084,9 @@ or without contact</source>
     <message numerus="yes">
         <location line="+2"/>
         <source>Exported %n file(s) into %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Exported %n file into %1</numerusform>
+            <numerusform>Exported %n files into %1</numerusform>
         </translation>
     </message>
     <message>
@@ -1800,9 +1800,9 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message numerus="yes">
         <location line="+5"/>
         <source>Plan &quot;%1&quot;: %n run(s), kept in %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Plan &quot;%1&quot;: %n run, kept in %2</numerusform>
+            <numerusform>Plan &quot;%1&quot;: %n runs, kept in %2</numerusform>
         </translation>
     </message>
     <message>
@@ -2420,9 +2420,9 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message numerus="yes">
         <location line="+15"/>
         <source>%n label(s) suggested from %1: check and correct them</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n label suggested from %1: check and correct them</numerusform>
+            <numerusform>%n labels suggested from %1: check and correct them</numerusform>
         </translation>
     </message>
     <message>

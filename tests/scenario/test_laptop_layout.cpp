@@ -8,6 +8,7 @@
 #include "main_window.h"
 #include "translation.h"
 
+#include "core/labels.h"
 #include "core/run_file.h"
 #include "core/session.h"
 #include "widgets/analysis/analysis_workspace.h"
@@ -23,7 +24,10 @@
 #include "widgets/calibration_wizard.h"
 #include "widgets/timeline.h"
 
+#include <algorithm>
 #include <QDir>
+#include <QFile>
+#include <QSignalSpy>
 #include <QDockWidget>
 #include <QStatusBar>
 #include <QGuiApplication>
@@ -103,10 +107,21 @@ private slots:
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             QSignalSpy opened(w.reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
-            w.reviewRun(QDir(session_).filePath(QStringLiteral("run_002_sine.csv")));
+            const QString sine = QDir(session_).filePath(QStringLiteral("run_002_sine.csv"));
+            QFile::remove(nb::labelsPathFor(sine));  // each language suggests afresh
+            w.reviewRun(sine);
             QVERIFY(opened.count() > 0 || opened.wait(60000));
-            if (w.reviewWorkspace()->labelModel()->labels().empty())
-                w.reviewWorkspace()->suggestLabels();
+            // The operator sets the video's offset (the one it was made with), then asks for
+            // labels: they come from the tissue's motion in the video, read in the background.
+            w.reviewWorkspace()->setMapping({0.8, 0.0}, nb::SyncMethod::Manual);
+            QSignalSpy suggested(w.reviewWorkspace(), &nb::ReviewWorkspace::labelsSuggested);
+            w.reviewWorkspace()->suggestLabels();
+            QVERIFY(suggested.count() > 0 || suggested.wait(240000));
+            const nb::Labels placed = w.reviewWorkspace()->labelModel()->labels();
+            QVERIFY2(std::any_of(placed.begin(), placed.end(),
+                                 [](const nb::Label& l) { return l.comment.contains(QLatin1String("the tissue's motion in run_002_sine.avi")); }),
+                     qPrintable(w.reviewWorkspace()->status()));
+            QVERIFY2(w.reviewWorkspace()->status().contains(QLatin1String("run_002_sine.avi")), qPrintable(w.reviewWorkspace()->status()));
             w.reviewWorkspace()->setCursorTime(4.0);
             QTest::qWait(300);
             // The default label tracks are said in the operator's language (stored as insertion).
