@@ -8,7 +8,7 @@
 #include "devices/sim/imaging_render.h"
 #include "video/frame_index.h"
 #include "video/frame_reader.h"
-#include "video/tissue_tracker.h"
+#include "video/labels_from_video.h"
 #include "video/video_error.h"
 
 #include <QDir>
@@ -222,13 +222,11 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         }
         frames.clear();
         const video::FrameIndex index = video::buildFrameIndex(videoPath);
-        video::FrameReader reader(index);
-        QString problem;
-        TissueMotion motion = video::tissueMotionFromShifts(video::trackTissueShifts(reader), blind, {c.offset_s, c.drift}, &problem);
-        motion.source = QStringLiteral("video") + ext;
-        out.videoUsed = !motion.time_s.empty();
-        const Labels withVideo = out.videoUsed ? suggestPhaseLabels(blind, &motion) : suggestLabels(blind);
-        out.videoSource = out.videoUsed ? (withVideo.empty() ? QString() : withVideo.front().comment) : problem;
+        // The path `labels suggest --video` and Review's Suggest labels take.
+        const video::VideoLabels found = video::suggestLabelsWithVideo(blind, index, {c.offset_s, c.drift}, QStringLiteral("video") + ext);
+        out.videoUsed = found.videoUsed;
+        const Labels& withVideo = found.labels;
+        out.videoSource = out.videoUsed ? (withVideo.empty() ? QString() : withVideo.front().comment) : found.problem;
         out.withVideo = agreement(truth, withVideo, blind.time_s);
         writeLabelsFile(QDir(workDir).filePath(QStringLiteral("labels_with_video.csv")), withVideo);
         // The clock the video was made on, for `labels suggest --video-offset-s --video-drift`.
