@@ -2184,12 +2184,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+773"/>
+        <location line="+774"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-770"/>
+        <location line="-771"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2411,6 +2411,11 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Kraft und Position</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>force and position (the video is still being indexed)</source>
+        <translation>Kraft und Position (das Video wird noch indiziert)</translation>
+    </message>
+    <message>
         <location line="+9"/>
         <source>Reading the motion in %1 for the suggestion…</source>
         <translation>Lese die Bewegung in %1 für den Vorschlag…</translation>
@@ -2444,7 +2449,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-665"/>
+        <location line="-666"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2559,7 +2564,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Labels nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>suggest labels</source>
         <translation>Labels vorschlagen</translation>
     </message>

@@ -2181,12 +2181,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+773"/>
+        <location line="+774"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-770"/>
+        <location line="-771"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2408,6 +2408,11 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>force and position (the video is still being indexed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+9"/>
         <source>Reading the motion in %1 for the suggestion…</source>
         <translation type="unfinished"></translation>
@@ -2441,7 +2446,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-665"/>
+        <location line="-666"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2556,7 +2561,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>suggest labels</source>
         <translation type="unfinished"></translation>
     </message>

@@ -826,8 +826,9 @@ void ReviewWorkspace::suggestLabels()
         return;
     if (!index_ || syncMethod_ == SyncMethod::None) {
         // The picture on an unknown clock would put the phases in the wrong place.
-        const QString from = index_ ? tr("force and position (synchronise the video to have its motion used)")
-                                    : tr("force and position");
+        const QString from = index_                 ? tr("force and position (synchronise the video to have its motion used)")
+                             : videoPath_.isEmpty() ? tr("force and position")
+                                                    : tr("force and position (the video is still being indexed)");
         applySuggestion(nb::suggestLabels(run_), from);
         return;
     }

@@ -291,6 +291,18 @@ private slots:
         QCOMPARE(ws.labelModel()->labels().size(), std::size_t(0));
         ws.undoStack()->redo();
         QCOMPARE(ws.labelModel()->labels().size(), placed.size());
+        // Opening the run again while a suggestion reads the video stops it: nothing lands on
+        // the run opened after it.
+        ws.undoStack()->undo();
+        ws.suggestLabels();
+        QVERIFY(ws.isSuggesting());
+        QVERIFY(ws.openRun(run_));
+        QVERIFY(suggested.wait(240000));
+        QVERIFY2(ws.status().contains(QLatin1String("stopped")), qPrintable(ws.status()));
+        QCOMPARE(ws.labelModel()->labels().size(), std::size_t(0));
+        ws.suggestLabels();
+        QVERIFY(suggested.wait(240000));
+        QCOMPARE(ws.labelModel()->labels().size(), placed.size());
         ws.setCursorTime(2.3);
         QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == int(std::floor((2.3 + ws.mapping().offset_s) * 29.97 + 1e-9)), 20000);
         QTest::qWait(200);
