@@ -1,6 +1,6 @@
 // `needlebench labels suggest RUN.csv --out LABELS.csv [--video VIDEO]`: labels suggested from
 // the data, in the labels file format `track,label,start_s,end_s,comment`. With a video (the
-// given one, else the one linked to the run) the friction phases also use the tissue's motion
+// given one, else the one linked to the run, else the one named like the run beside it) the friction phases also use the tissue's motion
 // in the picture, and on insertion runs the relaxation comes from the organ surface's
 // spring-back in it (without a video none is suggested); the video's clock comes from --video-offset-s, else the run's stored link,
 // else the automatic sync.
@@ -40,7 +40,7 @@ int cmdLabels(const QStringList& args, Io io)
     const QCommandLineOption video(QStringLiteral("video"),
                                    nb::TrCli::tr("the run's imaging video: friction phases also from the tissue's motion in it, "
                                                  "the relaxation of insertion runs from the surface's spring-back "
-                                                 "(default: the video linked to the run, if any)"),
+                                                 "(default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)"),
                                    QStringLiteral("VIDEO"));
     const QCommandLineOption videoOffset(QStringLiteral("video-offset-s"),
                                          nb::TrCli::tr("video time at the recording's start (default: the run's stored sync, else found automatically)"),
@@ -90,6 +90,8 @@ int cmdLabels(const QStringList& args, Io io)
             QString mappingSource = given ? QStringLiteral("given") : QString();
             if (videoPath.isEmpty() && link && !link->video.isEmpty())
                 videoPath = link->video;
+            if (videoPath.isEmpty())
+                videoPath = videoBesideRun(runPath);
             if (!mapping && link && !videoPath.isEmpty() && link->method != SyncMethod::None &&
                 QFileInfo(link->video).canonicalFilePath() == QFileInfo(videoPath).canonicalFilePath()) {
                 mapping = link->mapping;

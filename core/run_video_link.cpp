@@ -72,6 +72,27 @@ QString syncMethodName(SyncMethod m)
 
 QString videoLinksPath(const QString& sessionDir) { return QDir(sessionDir).filePath(kFileName); }
 
+const QStringList& videoSuffixes()
+{
+    // What imaging consoles and frame grabbers write, and what FFmpeg (through OpenCV) reads.
+    static const QStringList suffixes{QStringLiteral("mp4"), QStringLiteral("avi"),  QStringLiteral("mkv"),
+                                      QStringLiteral("mov"), QStringLiteral("m4v"),  QStringLiteral("webm"),
+                                      QStringLiteral("mpg"), QStringLiteral("mpeg"), QStringLiteral("dv"),
+                                      QStringLiteral("wmv"), QStringLiteral("ogv"),  QStringLiteral("ts")};
+    return suffixes;
+}
+
+QString videoBesideRun(const QString& runPath)
+{
+    if (runPath.isEmpty())
+        return {};
+    const QFileInfo run(runPath);
+    for (const QString& suffix : videoSuffixes())
+        if (const QFileInfo v(run.dir().filePath(run.completeBaseName() + QLatin1Char('.') + suffix)); v.isFile())
+            return v.absoluteFilePath();
+    return {};
+}
+
 std::optional<RunVideoLink> readRunVideoLink(const QString& runPath, QString* problem)
 {
     const QFileInfo run(runPath);

@@ -13,6 +13,7 @@
 #include "core/sync.h"
 
 #include <QString>
+#include <QStringList>
 #include <optional>
 
 namespace nb {
@@ -35,6 +36,11 @@ QString videoLinksPath(const QString& sessionDir);
 std::optional<RunVideoLink> readRunVideoLink(const QString& runPath, QString* problem = nullptr);
 // Stores (or, with nullopt, forgets) the link of `runPath`; written atomically. Throws SessionError.
 void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>& link);
+// The file suffixes taken as video: the Open video dialog's filter and the run's own video.
+const QStringList& videoSuffixes();
+// The run's own video: RUN.<suffix> beside the run file (mp4 first); empty when there is none.
+QString videoBesideRun(const QString& runPath);
+
 // Puts the link into the run's metadata as the exporters read it (video_file relative to the
 // run file when beside or below it, sync_offset_s, sync_drift, sync_method, sync_confidence).
 void applyRunVideoLink(Run& run, const QString& runPath, const RunVideoLink& link);

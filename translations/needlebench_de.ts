@@ -993,7 +993,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+54"/>
+        <location filename="../widgets/export_dialog.cpp" line="+48"/>
         <source>Export session</source>
         <translation>Sitzung exportieren</translation>
     </message>
@@ -2184,12 +2184,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+774"/>
+        <location line="+766"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-771"/>
+        <location line="-763"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2215,12 +2215,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+427"/>
+        <location line="+419"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-427"/>
+        <location line="-419"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2376,12 +2376,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video zu %1 öffnen</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;All files (*)</source>
-        <translation>Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <location line="+31"/>
+        <location line="+25"/>
         <source>The video of this run, %1, is missing. Open it again where it now lies.</source>
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
@@ -2449,7 +2444,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-666"/>
+        <location line="-658"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2524,7 +2519,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+165"/>
+        <location line="+57"/>
+        <source>Videos (%1);;All files (*)</source>
+        <translation>Videos (%1);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+100"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -3627,12 +3627,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Labels als JSON ausgeben</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, if any)</source>
-        <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, falls vorhanden)</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>video time at the recording&apos;s start (default: the run&apos;s stored sync, else found automatically)</source>
         <translation>Videozeit beim Start der Aufnahme (Standard: die gespeicherte Synchronisation der Messung, sonst automatisch ermittelt)</translation>
     </message>
@@ -3663,7 +3658,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+54"/>
         <source>needlebench labels: %1: the surface&apos;s motion could not be read (%2); no relaxation suggested
 </source>
         <translation>needlebench labels: %1: die Bewegung der Oberfläche ließ sich nicht lesen (%2); keine Relaxation vorgeschlagen
@@ -3677,7 +3672,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-87"/>
+        <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
+        <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
+    </message>
+    <message>
+        <location line="+94"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
@@ -4568,7 +4568,7 @@ Befehle:
 <context>
     <name>nb::TrCore</name>
     <message>
-        <location filename="../core/export/dataset.cpp" line="+18"/>
+        <location filename="../core/export/dataset.cpp" line="+19"/>
         <source>time since the start of the recording</source>
         <translation>Zeit seit Beginn der Aufzeichnung</translation>
     </message>
@@ -5668,7 +5668,7 @@ Befehle:
         <translation>nicht synchronisiert</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+75"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation>nicht schreibbar (%1)</translation>

@@ -992,7 +992,7 @@ or without contact</source>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+54"/>
+        <location filename="../widgets/export_dialog.cpp" line="+48"/>
         <source>Export session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2181,12 +2181,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+774"/>
+        <location line="+766"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-771"/>
+        <location line="-763"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2212,12 +2212,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+427"/>
+        <location line="+419"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-427"/>
+        <location line="-419"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2373,12 +2373,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+31"/>
+        <location line="+25"/>
         <source>The video of this run, %1, is missing. Open it again where it now lies.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2446,7 +2441,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-666"/>
+        <location line="-658"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2521,7 +2516,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+165"/>
+        <location line="+57"/>
+        <source>Videos (%1);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+100"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3591,12 +3591,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, if any)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>video time at the recording&apos;s start (default: the run&apos;s stored sync, else found automatically)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3624,7 +3619,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+54"/>
         <source>needlebench labels: %1: the surface&apos;s motion could not be read (%2); no relaxation suggested
 </source>
         <translation type="unfinished"></translation>
@@ -3636,7 +3631,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-87"/>
+        <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+94"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
@@ -4482,7 +4482,7 @@ Commands:
 <context>
     <name>nb::TrCore</name>
     <message>
-        <location filename="../core/export/dataset.cpp" line="+18"/>
+        <location filename="../core/export/dataset.cpp" line="+19"/>
         <source>time since the start of the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5582,7 +5582,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+75"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation type="unfinished"></translation>

@@ -36,13 +36,7 @@ QString videoOf(const DatasetRun& r)
         return {};
     if (const auto link = readRunVideoLink(r.sourcePath); link && QFileInfo::exists(link->video))
         return link->video;
-    const QFileInfo fi(r.sourcePath);
-    for (const char* ext : {"mp4", "avi", "mkv", "mov"}) {
-        const QString p = fi.dir().filePath(fi.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
-        if (QFileInfo::exists(p))
-            return p;
-    }
-    return {};
+    return videoBesideRun(r.sourcePath);
 }
 
 }  // namespace

@@ -523,7 +523,7 @@ void ReviewWorkspace::chooseVideo()
     }
     const QString path = QFileDialog::getOpenFileName(this, tr("Open the video of %1").arg(QFileInfo(runPath_).fileName()),
                                                       QFileInfo(runPath_).absolutePath(),
-                                                      tr("Videos (*.mp4 *.avi *.mkv *.mov *.m4v);;All files (*)"));
+                                                      tr("Videos (%1);;All files (*)").arg(QStringLiteral("*.") + videoSuffixes().join(QStringLiteral(" *."))));
     if (!path.isEmpty())
         attachVideo(path);
 }
@@ -534,16 +534,8 @@ void ReviewWorkspace::restoreVideoLink()
     const std::optional<RunVideoLink> link = readRunVideoLink(runPath_, &problem);
     // The run's own video beside it (RUN.mp4) when the session names none.
     QString video = link ? link->video : QString();
-    if (!link) {
-        const QFileInfo run(runPath_);
-        for (const char* ext : {"mp4", "mkv", "avi"}) {
-            const QString p = run.dir().filePath(run.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
-            if (QFileInfo::exists(p)) {
-                video = p;
-                break;
-            }
-        }
-    }
+    if (!link)
+        video = videoBesideRun(runPath_);
     const QString keepPath = runPath_;
     runPath_.clear();  // restoring is no change to store
     pendingSync_.reset();

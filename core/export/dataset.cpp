@@ -1,5 +1,6 @@
 #include "dataset.h"
 
+#include "core/run_video_link.h"
 #include "core/signal.h"
 #include "core/tr.h"
 
@@ -119,12 +120,7 @@ QString findRunVideo(const QString& runPath, const Run& run)
                 return QFileInfo(p).absoluteFilePath();
         }
     }
-    for (const char* ext : {"mp4", "avi", "mkv", "mov"}) {
-        const QString p = fi.dir().filePath(fi.completeBaseName() + QLatin1Char('.') + QLatin1String(ext));
-        if (QFileInfo(p).isFile())
-            return QFileInfo(p).absoluteFilePath();
-    }
-    return {};
+    return videoBesideRun(runPath);
 }
 
 QString relativeLink(const QString& fromFile, const QString& target)

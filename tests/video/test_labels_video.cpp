@@ -96,6 +96,28 @@ private slots:
         QVERIFY(agreement(out) >= 0.8);
     }
 
+    // The run's own video, named like it beside it (as a frame grabber leaves it), is found
+    // without --video and synchronised automatically, as the window finds it.
+    void theRunsOwnVideoBesideIt()
+    {
+        QTemporaryDir own;
+        const QString run = own.filePath(QStringLiteral("sine_07.csv"));
+        QVERIFY(QFile::copy(blind_, run));
+        QVERIFY(QFile::copy(video_, own.filePath(QStringLiteral("sine_07.webm.part"))));  // not a video suffix: not taken
+        nbtest::CliResult r = nbtest::runCli({"labels", "suggest", run, "--json"});
+        QCOMPARE(r.code, 0);
+        QVERIFY(!r.json().contains(QStringLiteral("video")));
+        QVERIFY(QFile::rename(own.filePath(QStringLiteral("sine_07.webm.part")), own.filePath(QStringLiteral("sine_07.avi"))));
+        r = nbtest::runCli({"labels", "suggest", run, "--json"}, 240000);
+        QCOMPARE(r.code, 0);
+        const QJsonObject v = r.json()[QStringLiteral("video")].toObject();
+        QVERIFY2(v[QStringLiteral("file")].toString().endsWith(QLatin1String("sine_07.avi")), qPrintable(r.out));
+        QCOMPARE(v[QStringLiteral("sync")].toString(), QStringLiteral("automatic"));
+        QVERIFY2(std::abs(v[QStringLiteral("offset_s")].toDouble() - 0.8) < 1.0 / 29.97, qPrintable(r.out));
+        QVERIFY2(v[QStringLiteral("used")].toBool(), qPrintable(r.out));
+        QVERIFY(agreement(nb::labelsPathFor(run)) >= 0.9);
+    }
+
     void badInput()
     {
         // A video that is not there: named, and the phases still come from the force.
