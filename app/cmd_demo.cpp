@@ -18,6 +18,7 @@
 #include "core/session.h"
 #include "core/sync.h"
 #include "video/frame_index.h"
+#include "video/labels_from_video.h"
 #include "video/video_error.h"
 #include "video/video_sync.h"
 #include "widgets/analysis/analysis_plots.h"
@@ -117,6 +118,7 @@ int cmdDemo(const QStringList& args, Io io)
         double trueOffset_s = 0.0;
         std::optional<SyncResult> sync;
         QString syncProblem;
+        std::optional<video::FrameIndex> index;
     };
     std::vector<VideoReport> videos;
     for (std::size_t i = 0; i < plan.size(); ++i) {
@@ -178,7 +180,8 @@ int cmdDemo(const QStringList& args, Io io)
             try {
                 video::VideoSyncOptions so;
                 so.sync.maxOffset_s = 5.0;
-                v.sync = video::syncVideoToRun(video::buildFrameIndex(videoPath), run, so).result;
+                v.index = video::buildFrameIndex(videoPath);
+                v.sync = video::syncVideoToRun(*v.index, run, so).result;
             } catch (const video::VideoError& e) {
                 v.syncProblem = e.message();
             } catch (const std::invalid_argument& e) {
@@ -211,7 +214,21 @@ int cmdDemo(const QStringList& args, Io io)
             videos.push_back(v);
         }
 
-        const Labels labels = suggestLabels(run);
+        // As labels suggest --video and Review do: the friction phases checked against the
+        // tissue's motion in the run's video, on the clock the sync found.
+        Labels labels;
+        QString from;
+        if (friction && !videos.empty() && videos.back().sync && videos.back().index) {
+            const VideoReport& v = videos.back();
+            const video::VideoLabels found = video::suggestLabelsWithVideo(run, *v.index, v.sync->mapping(), v.video);
+            labels = found.labels;
+            from = found.videoUsed ? nb::TrCli::tr("phases a, b1, b2, c per half-cycle, checked against the tissue's motion in %1").arg(v.video)
+                                   : nb::TrCli::tr("phases a, b1, b2, c per half-cycle from force and position (%1: %2)").arg(v.video, found.problem);
+        } else {
+            labels = suggestLabels(run);
+            from = friction ? nb::TrCli::tr("phases a, b1, b2, c per half-cycle")
+                            : nb::TrCli::tr("contact and puncture events; no imaging video to read the relaxation off");
+        }
         const QString labelsPath = labelsPathFor(runPath);
         try {
             writeLabelsFile(labelsPath, labels);
@@ -219,10 +236,7 @@ int cmdDemo(const QStringList& args, Io io)
             io.err << "needlebench demo: " << e.message() << '\n';
             return Failure;
         }
-        step(nb::TrCli::tr("labelled %1: %2 suggested labels (%3)")
-                 .arg(fi.fileName())
-                 .arg(labels.size())
-                 .arg(friction ? nb::TrCli::tr("phases a, b1, b2, c per half-cycle") : nb::TrCli::tr("contact, puncture, relaxation events")));
+        step(nb::TrCli::tr("labelled %1: %2 suggested labels (%3)").arg(fi.fileName()).arg(labels.size()).arg(from));
     }
 
     LoadedDataset loaded = loadDataset(sessionDir);

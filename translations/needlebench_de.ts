@@ -3069,7 +3069,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--out PFAD ist erforderlich</translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="+58"/>
+        <location filename="../app/cmd_demo.cpp" line="+59"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
         <translation>Eine kurze Sitzung in einem Zug simulieren, markieren, auswerten und exportieren.</translation>
     </message>
@@ -3104,7 +3104,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Sitzungsordner %1</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>simulating %1 failed: %2</source>
         <translation>Simulation von %1 fehlgeschlagen: %2</translation>
     </message>
@@ -3129,7 +3129,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Bildgebungsvideo %1 gerendert (%2 Bilder bei 29,97/s, Beginn %3 s vor der Aufnahme)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5</source>
         <translation>%1 synchronisiert: Versatz %2 s gefunden, %3 s wahr (%4 Bilder daneben), Konfidenz %5</translation>
     </message>
@@ -3140,21 +3140,31 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+20"/>
+        <source>phases a, b1, b2, c per half-cycle, checked against the tissue&apos;s motion in %1</source>
+        <translation>Phasen a, b1, b2, c je Halbzyklus, geprüft an der Gewebebewegung in %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phases a, b1, b2, c per half-cycle from force and position (%1: %2)</source>
+        <translation>Phasen a, b1, b2, c je Halbzyklus aus Kraft und Position (%1: %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>contact and puncture events; no imaging video to read the relaxation off</source>
+        <translation>Ereignisse Kontakt und Durchstich; kein Bildgebungsvideo, um die Relaxation abzulesen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>labelled %1: %2 suggested labels (%3)</source>
         <translation>%1 beschriftet: %2 vorgeschlagene Labels (%3)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-10"/>
         <source>phases a, b1, b2, c per half-cycle</source>
         <translation>Phasen a, b1, b2, c je Halbzyklus</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>contact, puncture, relaxation events</source>
-        <translation>Ereignisse Kontakt, Durchstich, Relaxation</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <location line="+4"/>
         <location filename="../app/cmd_export.cpp" line="+15"/>
         <source>warning: %1</source>
@@ -3261,7 +3271,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>abgebrochen; %1 wurde nicht geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="-245"/>
+        <location filename="../app/cmd_demo.cpp" line="-258"/>
         <location filename="../app/cmd_export.cpp" line="-16"/>
         <location line="+22"/>
         <source>%1: cannot create the folder</source>

@@ -3060,7 +3060,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="+58"/>
+        <location filename="../app/cmd_demo.cpp" line="+59"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3095,7 +3095,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>simulating %1 failed: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3120,7 +3120,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>synchronised %1: offset %2 s found, %3 s true (%4 frames off), confidence %5</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3131,21 +3131,31 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+20"/>
+        <source>phases a, b1, b2, c per half-cycle, checked against the tissue&apos;s motion in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phases a, b1, b2, c per half-cycle from force and position (%1: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>contact and puncture events; no imaging video to read the relaxation off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>labelled %1: %2 suggested labels (%3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-10"/>
         <source>phases a, b1, b2, c per half-cycle</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>contact, puncture, relaxation events</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <location line="+4"/>
         <location filename="../app/cmd_export.cpp" line="+15"/>
         <source>warning: %1</source>
@@ -3252,7 +3262,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="-245"/>
+        <location filename="../app/cmd_demo.cpp" line="-258"/>
         <location filename="../app/cmd_export.cpp" line="-16"/>
         <location line="+22"/>
         <source>%1: cannot create the folder</source>

@@ -48,9 +48,14 @@ private slots:
 
         // Labels are the ones suggested from the data, not the simulator's record.
         QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("labelled run_001_linear.csv: \\d+ suggested labels"))), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("labelled run_003_sine.csv: \\d+ suggested labels"))), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("labelled run_003_sine.csv: \\d+ suggested labels \\(phases a, b1, b2, c per "
+                                                                  "half-cycle, checked against the tissue's motion in run_003_sine.avi\\)"))),
+                 qPrintable(r.out));
         const nb::Labels sineLabels = nb::readLabelsFile(d.filePath(QStringLiteral("session/run_003_sine.labels.csv")));
         QVERIFY(sineLabels.size() >= 8);  // a, b1, b2, c over several half-cycles
+        // The run has its imaging video: the phases went through the tissue's motion in it.
+        QVERIFY(std::any_of(sineLabels.begin(), sineLabels.end(),
+                            [](const nb::Label& l) { return l.comment.contains(QLatin1String("tissue's motion in run_003_sine.avi")); }));
         QStringList phases;
         for (const nb::Label& l : sineLabels) {
             QVERIFY2(l.comment.startsWith(QLatin1String("suggested")), qPrintable(l.comment));  // and what from
