@@ -209,6 +209,15 @@ private slots:
         QVERIFY(opened.wait(60000));
         QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == 0, 20000);
 
+        // Not synchronised yet: the picture has no place on the force's clock, so Suggest
+        // answers at once from force and position and says how to have the video used.
+        ws.suggestLabels();
+        QVERIFY(!ws.isSuggesting());
+        QVERIFY2(ws.status().contains(QLatin1String("synchronise the video")), qPrintable(ws.status()));
+        QVERIFY(ws.labelModel()->labels().size() > 8);
+        ws.undoStack()->undo();
+        QCOMPARE(ws.labelModel()->labels().size(), std::size_t(0));
+
         // Offset 0: recording time t shows video frame floor(t·29.97).
         ws.setCursorTime(1.0);
         QTRY_COMPARE_WITH_TIMEOUT(ws.currentFrame(), 29, 20000);
