@@ -235,6 +235,42 @@ private slots:
         QVERIFY(kneeGroupSeen);
     }
 
+    // Known failure, kept as a reproducer (issue 13): a slow, short liver3 stroke (0.24 Hz,
+    // ±5.5 mm, wide band, large gap) slides only while slowing down, with the slab resting on
+    // the soft part of its contact (about 200 N/m, measured while it is carried) and springing
+    // back after each slip with a time constant (about (c + b)/k = 0.15 s) as long as the
+    // sliding stretch itself. The one-stiffness spring-back term does not follow that transient
+    // (its standard errors stay small: the fit is confidently wrong), and neither did a static
+    // compliance measured from the carried loading (tried with the true phase a: worse); the
+    // residual is only 1.4x the noise, so Cp comes out ~38 % high and bp ~26 % low and nothing
+    // flags them, the worst outcome. When a fit or a check handles it, this XPASSes and the
+    // expectation must go.
+    void slowSoftSlabStrokeIsNotFlagged()
+    {
+        Truth truth;
+        const QString file = simulate(QStringLiteral("slow_soft"),
+                                      {QStringLiteral("--tissue"), QStringLiteral("liver3"), QStringLiteral("--frequency-hz"), QStringLiteral("0.2438"),
+                                       QStringLiteral("--amplitude-mm"), QStringLiteral("5.548"), QStringLiteral("--stick-band-mm-s"), QStringLiteral("4.3"),
+                                       QStringLiteral("--plate-gap-mm"), QStringLiteral("3.0"), QStringLiteral("--force-noise-n"), QStringLiteral("0.0015"),
+                                       QStringLiteral("--seed"), QStringLiteral("87646")},
+                                      &truth);
+        QVERIFY(!file.isEmpty());
+        const QJsonObject r = fit({file}).value(QStringLiteral("runs")).toArray().at(0).toObject();
+        const QJsonObject p = r.value(QStringLiteral("per_length")).toObject();
+        const double eCp = relErr(p.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp);
+        const double eBp = relErr(p.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), truth.bp);
+        const double eCn = relErr(p.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn);
+        const QJsonArray flagged = r.value(QStringLiteral("not_physical_values")).toArray();
+        qInfo("slow soft slab: Cp error %.1f %%, bp error %.1f %%, Cn error %.1f %%, Cp flagged %d", 100 * eCp, 100 * eBp, 100 * eCn,
+              int(flagged.contains(QStringLiteral("Cp"))));
+        // The other direction rests on the stiff part of the plate: right, and not flagged.
+        QVERIFY2(eCn < 0.05, qPrintable(QStringLiteral("Cn off by %1 %").arg(100 * eCn)));
+        QVERIFY(!flagged.contains(QStringLiteral("Cn")));
+        const bool rightOrFlagged = (eCp < 0.05 && eBp < 0.15) || (flagged.contains(QStringLiteral("Cp")) && flagged.contains(QStringLiteral("bp")));
+        QEXPECT_FAIL("", "issue 13: the slab's spring-back transient on the soft part of the plate is not modelled or detected", Continue);
+        QVERIFY2(rightOrFlagged, qPrintable(QStringLiteral("Cp %1 % / bp %2 % off and not flagged").arg(100 * eCp).arg(100 * eBp)));
+    }
+
     void oneFrequencyMakesNoLine()
     {
         Truth truth;
