@@ -100,7 +100,7 @@ int cmdLabels(const QStringList& args, Io io)
             if (!videoPath.isEmpty()) {
                 videoReport[QStringLiteral("file")] = videoPath;
                 video::VideoLabels found;
-                found.phases = video::suggestsPhases(run);
+                found.phases = video::suggestsPhases(run, labels);
                 try {
                     const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
                     if (!mapping) {

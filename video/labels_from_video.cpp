@@ -11,13 +11,12 @@
 
 namespace nb::video {
 
-bool suggestsPhases(const Run& run)
+bool suggestsPhases(const Run& run, const Labels& suggested)
 {
     const QString protocol = run.metadata.value(QStringLiteral("protocol"), QString());
     if (!protocol.isEmpty())
         return protocol == QLatin1String("friction");
-    const Labels labels = suggestLabels(run);
-    return std::any_of(labels.begin(), labels.end(), [](const Label& l) { return l.track != QLatin1String("events"); });
+    return std::any_of(suggested.begin(), suggested.end(), [](const Label& l) { return l.track != QLatin1String("events"); });
 }
 
 VideoLabels suggestLabelsWithVideo(const Run& run, const FrameIndex& index, const TimelineMapping& mapping, const QString& name,
@@ -25,7 +24,7 @@ VideoLabels suggestLabelsWithVideo(const Run& run, const FrameIndex& index, cons
 {
     VideoLabels out;
     out.labels = suggestLabels(run);
-    out.phases = suggestsPhases(run);
+    out.phases = suggestsPhases(run, out.labels);
     std::vector<SurfaceTrace> surface;
     try {
         FrameReader reader(index);

@@ -29,9 +29,9 @@ struct VideoLabels {
     bool cancelled = false;
 };
 
-// Whether the run's suggestion is friction phases (its protocol, or its motion when it names
-// none) rather than events.
-bool suggestsPhases(const Run& run);
+// Whether the run's suggestion is friction phases (its protocol, or, when it names none, what
+// `suggested` = suggestLabels(run) holds) rather than events.
+bool suggestsPhases(const Run& run, const Labels& suggested);
 
 // `mapping`: the video's clock against the recording's (its offset and drift, found before).
 // `name` names the video in each label's comment. Never throws: a video that cannot be read
