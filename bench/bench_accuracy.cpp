@@ -1,6 +1,6 @@
 // Accuracy of video sync (and, as they land, phases and friction fits) over a matrix drawn
 // at random from a printed seed: `bench_accuracy [--seed N] [--sync-cases N] [--small]
-// [--relax-cases N] [--case N] [--phase-case N] [--keep DIR]` (--case, --phase-case: only sync or phase case N of the
+// [--relax-cases N] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE]` (--case, --phase-case: only sync or phase case N of the
 // draw, to look at one again; --keep leaves each case's run, video and suggested labels there). Prints one line per case and the summary against issue 13's targets.
 #include "video/accuracy_matrix.h"
 #include "video/phase_matrix.h"
@@ -11,12 +11,14 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <QTemporaryDir>
 #include <QTextStream>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 using namespace nb::accuracy;
 
@@ -100,7 +102,35 @@ void printRelaxMatrix(QTextStream& out, unsigned seed, int count, bool small, co
 }
 
 // The simulated rig's own friction runs (its own generator, so the draws above stay as they were).
-void printRigFriction(QTextStream& out, unsigned seed, int count, const QString& root)
+// One row per run and direction: the fit's own figures beside its errors against the slab's truth,
+// to see which of them tell a wrong C or b (--rig-friction-details FILE).
+void writeRigFrictionDetails(QTextStream& t, unsigned seed, std::size_t set, const nb::accuracy::RigFrictionSet& s,
+                             const nb::accuracy::RigFrictionOutcome& o)
+{
+    auto rel = [](double got, double want) { return std::fabs(got - want) / std::fabs(want); };
+    for (std::size_t k = 0; k < o.fits.size(); ++k) {
+        const nb::FrictionFit& f = o.fits[k];
+        for (int d : {0, 1}) {
+            const bool p = d == 0;
+            const char* c = p ? "Cp" : "Cn";
+            const char* b = p ? "bp" : "bn";
+            t << seed << '\t' << set << '\t' << k << '\t' << (p ? "+" : "-") << '\t' << s.tissue << '\t'
+              << s.frequencies_hz[k] << '\t' << s.amplitude_mm << '\t' << s.stickBand_mm_s << '\t' << s.plateGap_mm << '\t'
+              << s.forceNoise_N << '\t'
+              << rel(p ? f.perLength.Cp_N_per_m : f.perLength.Cn_N_per_m, p ? o.truth.Cp_N_per_m : o.truth.Cn_N_per_m) << '\t'
+              << rel(p ? f.perLength.bp_Ns_per_m2 : f.perLength.bn_Ns_per_m2, p ? o.truth.bp_Ns_per_m2 : o.truth.bn_Ns_per_m2) << '\t'
+              << (f.notPhysicalValues.contains(QLatin1String(c)) || f.notPhysicalValues.contains(QLatin1String(b))) << '\t'
+              << (p ? f.slidingFromP_m_s : f.slidingFromN_m_s) << '\t' << (p ? f.slidingToP_m_s : f.slidingToN_m_s) << '\t'
+              << (p ? f.springBackP_s : f.springBackN_s) << '\t' << (p ? f.residualToNoiseP : f.residualToNoiseN) << '\t'
+              << (p ? f.seBp_Ns_per_m / f.model.bp_Ns_per_m : f.seBn_Ns_per_m / f.model.bn_Ns_per_m) << '\t'
+              << (p ? f.seCp_N / f.model.Cp_N : f.seCn_N / f.model.Cn_N) << '\t'
+              << f.band_m_s << '\t' << f.bandSlowingDown_m_s << '\t' << (p ? f.positiveSamples : f.negativeSamples) << '\t'
+              << (p ? f.model.Cp_N : f.model.Cn_N) << '\t' << (p ? f.model.bp_Ns_per_m : f.model.bn_Ns_per_m) << '\n';
+        }
+    }
+}
+
+void printRigFriction(QTextStream& out, unsigned seed, int count, const QString& root, QTextStream* details)
 {
     out << "\n== friction on the simulated rig: one slab at three frequencies, force and position only\n";
     std::mt19937 rng(seed + 1u);
@@ -114,6 +144,8 @@ void printRigFriction(QTextStream& out, unsigned seed, int count, const QString&
             out << QStringLiteral("  %1  FAILED %2: %3\n").arg(i, 2).arg(sets[i].describe(), o.problem);
             continue;
         }
+        if (details)
+            writeRigFrictionDetails(*details, seed, i, sets[i], o);
         QString runs;
         for (std::size_t k = 0; k < 3; ++k) {
             runC.push_back(100 * o.runErrC[k]);
@@ -160,7 +192,7 @@ int main(int argc, char** argv)
     int syncCases = 20, frictionCases = 24, phaseCases = 24, rigFrictionSets = 8, relaxCases = 12;
     bool small = false;
     int onlyCase = -1, onlyPhaseCase = -1;
-    QString keep;
+    QString keep, details;
     for (int i = 1; i < a.size(); ++i) {
         if (a[i] == QLatin1String("--seed") && i + 1 < a.size())
             seed = a[++i].toUInt();
@@ -182,8 +214,10 @@ int main(int argc, char** argv)
             small = true;
         else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
             keep = a[++i];
+        else if (a[i] == QLatin1String("--rig-friction-details") && i + 1 < a.size())
+            details = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--relax-cases N] [--small] [--case N] [--phase-case N] [--keep DIR]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--relax-cases N] [--small] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE]\n");
             return 2;
         }
     }
@@ -261,7 +295,16 @@ int main(int argc, char** argv)
                .arg(quantile(errB, 0.5), 0, 'f', 2).arg(quantile(errB, 1.0), 0, 'f', 2);
     out << "targets: C within 5 %, b within 15 %\n";
 
-    printRigFriction(out, seed, rigFrictionSets, root);
+    QFile detailsFile(details);
+    std::optional<QTextStream> detailsOut;
+    if (!details.isEmpty()) {
+        if (!detailsFile.open(QIODevice::WriteOnly | QIODevice::Append | QIODevice::Text)) {
+            std::fprintf(stderr, "bench_accuracy: cannot write %s: %s\n", qPrintable(details), qPrintable(detailsFile.errorString()));
+            return 1;
+        }
+        detailsOut.emplace(&detailsFile);
+    }
+    printRigFriction(out, seed, rigFrictionSets, root, detailsOut ? &*detailsOut : nullptr);
     printRelaxMatrix(out, seed, relaxCases, small, root);
     return 0;
 }

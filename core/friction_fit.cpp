@@ -508,6 +508,18 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         fit.springBackN_s = p(solved->springN);
     fit.positiveSamples = pos;
     fit.negativeSamples = neg;
+    {
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {0.0, 0.0};
+        for (std::size_t i : rows) {
+            const int d = v[i] > 0.0 ? 0 : 1;
+            lo[d] = std::min(lo[d], std::fabs(v[i]));
+            hi[d] = std::max(hi[d], std::fabs(v[i]));
+        }
+        fit.slidingFromP_m_s = lo[0];
+        fit.slidingToP_m_s = hi[0];
+        fit.slidingFromN_m_s = lo[1];
+        fit.slidingToN_m_s = hi[1];
+    }
 
     // Static friction (models.md sec. 5): D_p is the force at which the tissue lets go when
     // motion starts in the + direction, D_n when it starts in the - direction. So each

@@ -70,6 +70,9 @@ struct FrictionFit {
     // Each direction's sliding residual (rms) over the force's noise: about 1 when the line
     // explains the force; above 2 its C and b are flagged as not determined.
     double residualToNoiseP = 0.0, residualToNoiseN = 0.0;
+    // The needle speeds (m/s, magnitudes) of each direction's sliding samples: C is the line
+    // carried from there down to zero speed.
+    double slidingFromP_m_s = 0.0, slidingToP_m_s = 0.0, slidingFromN_m_s = 0.0, slidingToN_m_s = 0.0;
 };
 
 // `phases`: one phase name per sample ("a", "b1", "b2", "c" or empty), e.g. from a labels

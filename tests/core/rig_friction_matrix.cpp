@@ -121,6 +121,8 @@ RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& e
         out.lineErrC = std::max(rel(line->model.Cp_N / L, truth.Cp_N_per_m), rel(line->model.Cn_N / L, truth.Cn_N_per_m));
         out.lineErrB = std::max(rel(line->model.bp_Ns_per_m / L, truth.bp_Ns_per_m2), rel(line->model.bn_Ns_per_m / L, truth.bn_Ns_per_m2));
     }
+    out.fits = fits;
+    out.truth = truth;
     out.ok = true;
     return out;
 }

@@ -6,6 +6,8 @@
 // 0.2 / 0.5 / 0.8 Hz, over tissue, stick band, plate gap, force noise and amplitude. The fit
 // sees force and position only (the simulator's phase and tissue columns are removed).
 
+#include "core/friction_fit.h"
+
 #include <QString>
 
 #include <array>
@@ -36,6 +38,8 @@ struct RigFrictionOutcome {
     std::array<bool, 3> runFlagged{};   // the fit flagged its C or b (not physical, not determined)
     bool line = false;
     double lineErrC = 0.0, lineErrB = 0.0;
+    std::vector<FrictionFit> fits;      // the three runs' fits, for a closer look
+    KarnoppPerLength truth;             // the slab's own values, per metre
 };
 
 std::vector<RigFrictionSet> drawRigFrictionSets(std::mt19937& rng, int count);
