@@ -123,11 +123,19 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
                 speeds.push_back(dir * v_mm_s[i]);
             std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
             const double middle = speeds[speeds.size() / 2];
-            std::vector<std::size_t> faster;
-            for (std::size_t i : use)
-                if (dir * v_mm_s[i] >= middle)
-                    faster.push_back(i);
-            use.swap(faster);
+            std::vector<std::size_t> faster, slower;
+            double fasterSum = 0.0, slowerSum = 0.0;
+            for (std::size_t i : use) {
+                const bool fast = dir * v_mm_s[i] >= middle;
+                (fast ? faster : slower).push_back(i);
+                (fast ? fasterSum : slowerSum) += dir * f[i];
+            }
+            // Unless the faster samples pull far less than the slower ones: then they are the
+            // tissue carried across a wide gap at speed (its force near zero, only inertia),
+            // and the slower ones the sliding after it met the plate, near the turning point.
+            const double fasterLevel = faster.empty() ? 0.0 : fasterSum / double(faster.size());
+            const double slowerLevel = slower.empty() ? 0.0 : slowerSum / double(slower.size());
+            use.swap(fasterLevel < 0.5 * slowerLevel && slower.size() >= 20 ? slower : faster);
             ++halvings;
             continue;
         }
