@@ -101,6 +101,14 @@ private slots:
         QTest::newRow("liver1 0.8 Hz band 5.6, large gap") << QStringList{"--tissue", "liver1", "--frequency-hz", "0.78", "--cycles", "3",
                                                                           "--amplitude-mm", "4.4", "--stick-band-mm-s", "5.6", "--plate-gap-mm", "2.56"}
                                                            << false;
+        // A plate gap nearly as wide as the stroke: the tissue is carried across it at speed
+        // (its force near zero) and slides only near the turning points; the sliding line was
+        // drawn through the carried samples and the carrying read as c (46 % in
+        // bench_accuracy --seed 77819, phase case 11).
+        QTest::newRow("liver3 0.42 Hz gap 2.95 of 4.2 mm") << QStringList{"--tissue", "liver3", "--frequency-hz", "0.4162", "--cycles", "4",
+                                                                          "--amplitude-mm", "4.206", "--stick-band-mm-s", "4.0", "--plate-gap-mm",
+                                                                          "2.95", "--force-noise-n", "0.001", "--seed", "751"}
+                                                           << false;
     }
     void fromForceAndPosition()
     {
