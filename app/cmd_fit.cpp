@@ -379,6 +379,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
             o.insert(QStringLiteral("spring_back"), springBack);
             o.insert(QStringLiteral("residual_to_noise"),
                      QJsonObject{{QStringLiteral("positive"), f.residualToNoiseP}, {QStringLiteral("negative"), f.residualToNoiseN}});
+            // How far C moves (a fraction of it) when the sliding line may bend.
+            o.insert(QStringLiteral("c_shift_if_bent"),
+                     QJsonObject{{QStringLiteral("positive"), f.bendShiftCp}, {QStringLiteral("negative"), f.bendShiftCn}});
+            o.insert(QStringLiteral("sliding_speed_m_s"),
+                     QJsonObject{{QStringLiteral("positive"), QJsonArray{f.slidingFromP_m_s, f.slidingToP_m_s}},
+                                 {QStringLiteral("negative"), QJsonArray{f.slidingFromN_m_s, f.slidingToN_m_s}}});
             QJsonObject top;
             auto peakJson = [](const PeakPoint& p) {
                 return QJsonObject{{QStringLiteral("speed_m_s"), p.speed_m_s}, {QStringLiteral("force_N"), p.force_N},

@@ -125,7 +125,8 @@ void writeRigFrictionDetails(QTextStream& t, unsigned seed, std::size_t set, con
               << (p ? f.seBp_Ns_per_m / f.model.bp_Ns_per_m : f.seBn_Ns_per_m / f.model.bn_Ns_per_m) << '\t'
               << (p ? f.seCp_N / f.model.Cp_N : f.seCn_N / f.model.Cn_N) << '\t'
               << f.band_m_s << '\t' << f.bandSlowingDown_m_s << '\t' << (p ? f.positiveSamples : f.negativeSamples) << '\t'
-              << (p ? f.model.Cp_N : f.model.Cn_N) << '\t' << (p ? f.model.bp_Ns_per_m : f.model.bn_Ns_per_m) << '\n';
+              << (p ? f.model.Cp_N : f.model.Cn_N) << '\t' << (p ? f.model.bp_Ns_per_m : f.model.bn_Ns_per_m) << '\t'
+              << (p ? f.bendShiftCp : f.bendShiftCn) << '\n';
         }
     }
 }

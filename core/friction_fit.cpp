@@ -23,6 +23,9 @@ constexpr std::size_t kBreakAwaySamples = 2;
 // A direction's sliding residual above this many times the force's noise is a shape the line
 // does not follow (fitFriction).
 constexpr double kShapeToNoise = 2.0;
+// C moving by more than this fraction when the sliding line may bend (fitFriction) is not a
+// result: the accuracy a friction coefficient must hold (issue 13: C within 5 %).
+constexpr double kBendShift = 0.05;
 
 struct Extremes {
     double max = -INFINITY, min = INFINITY;
@@ -410,17 +413,18 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         Eigen::VectorXd p, se, res;
         int springP = -1, springN = -1;  // column of each direction's spring-back term
     };
-    auto solve = [&](bool springP, bool springN) {
+    auto solve = [&](const std::vector<std::size_t>& use, bool springP, bool springN, int quadDir = -1) {
         Solution sol;
         int cols = off + 4;
         if (springP)
             sol.springP = cols++;
         if (springN)
             sol.springN = cols++;
-        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(rows.size()), cols);
-        Eigen::VectorXd y(Eigen::Index(rows.size()));
-        for (std::size_t r = 0; r < rows.size(); ++r) {
-            const std::size_t i = rows[r];
+        const int quad = quadDir >= 0 ? cols++ : -1;
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(use.size()), cols);
+        Eigen::VectorXd y(Eigen::Index(use.size()));
+        for (std::size_t r = 0; r < use.size(); ++r) {
+            const std::size_t i = use[r];
             const auto ri = Eigen::Index(r);
             if (options.estimateMass)
                 A(ri, 0) = a[i];
@@ -429,6 +433,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
             A(ri, off + (plus ? 1 : 3)) = v[i];
             if (const int k = plus ? sol.springP : sol.springN; k >= 0)
                 A(ri, k) = -forceRate[i];
+            if (quad >= 0 && plus == (quadDir == 0))
+                A(ri, quad) = v[i] * v[i];
             y(ri) = f[i] - (options.estimateMass ? 0.0 : options.mass_kg * a[i]);
         }
         const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
@@ -452,10 +458,10 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // lags the force) and well above its standard error; a stiff slab keeps the plain line,
     // whose C and b the extra column would only make noisier.
     auto shows = [](const Solution& sol, int k) { return k >= 0 && sol.p(k) > 0.0 && sol.p(k) > 3.0 * sol.se(k); };
-    std::optional<Solution> solved = solve(true, true);
+    std::optional<Solution> solved = solve(rows, true, true);
     if (!solved || !shows(*solved, solved->springP) || !shows(*solved, solved->springN)) {
         const bool keepP = solved && shows(*solved, solved->springP), keepN = solved && shows(*solved, solved->springN);
-        solved = solve(keepP, keepN);
+        solved = solve(rows, keepP, keepN);
     }
     if (!solved)
         throw FitError(nb::TrCore::tr("the friction fit is singular (velocity does not vary within a direction)"));
@@ -501,6 +507,22 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
             (d == 0 ? fit.residualToNoiseP : fit.residualToNoiseN) = c.noise_N > 0.0 ? rms / c.noise_N : 0.0;
             shapeLeft[d] = rms > kShapeToNoise * c.noise_N && rms > 0.002 * top[d];
         }
+    }
+    // A straight line is what the model assumes; C is where it meets zero speed, often well
+    // below the slowest sliding sample. Where the tissue's give changes along the stroke (a
+    // slab that springs back across the soft part of its plate only as the needle slows) the
+    // sliding force bends, the straight line leans, and C moves with it while the residual
+    // stays near the noise. So each direction is fitted again with a v² term: how far C moves
+    // when the line may bend tells how much of C the run determines.
+    bool bends[2] = {false, false};
+    for (int d : {0, 1}) {
+        const auto bent = solve(rows, solved->springP >= 0, solved->springN >= 0, d);
+        if (!bent)
+            continue;
+        const double straight = p(off + 2 * d), curved = bent->p(off + 2 * d);
+        const double shift = std::fabs(straight) > 0.0 ? (curved - straight) / std::fabs(straight) : 0.0;
+        (d == 0 ? fit.bendShiftCp : fit.bendShiftCn) = shift;
+        bends[d] = std::fabs(shift) > kBendShift && std::fabs(curved - straight) > 2.0 * bent->se(off + 2 * d);
     }
     if (solved->springP >= 0)
         fit.springBackP_s = p(solved->springP);
@@ -600,10 +622,21 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
                     .arg(ratio, 0, 'f', 1));
         flag(b, QString());
     };
+    auto bent = [&](const char* c, const char* b, double shift) {
+        flag(c, nb::TrCore::tr("%1 and %2 are not determined by this run: letting its sliding line bend moves %1 by %3 % "
+                               "(the tissue's give changes with speed; label phase c where the tissue rests)")
+                    .arg(QString::fromLatin1(c), QString::fromLatin1(b))
+                    .arg(100.0 * shift, 0, 'f', 1));
+        flag(b, QString());
+    };
     if (shapeLeft[0])
         unexplained("Cp", "bp", fit.residualToNoiseP);
+    else if (bends[0])
+        bent("Cp", "bp", fit.bendShiftCp);
     if (shapeLeft[1])
         unexplained("Cn", "bn", fit.residualToNoiseN);
+    else if (bends[1])
+        bent("Cn", "bn", fit.bendShiftCn);
     undetermined("Cp", "bp", fit.model.bp_Ns_per_m, fit.seBp_Ns_per_m);
     undetermined("Cn", "bn", fit.model.bn_Ns_per_m, fit.seBn_Ns_per_m);
     if (fit.staticSource != QLatin1String("none")) {

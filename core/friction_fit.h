@@ -72,6 +72,9 @@ struct FrictionFit {
     double residualToNoiseP = 0.0, residualToNoiseN = 0.0;
     // The needle speeds (m/s, magnitudes) of each direction's sliding samples: C is the line
     // carried from there down to zero speed.
+    // How far C moves (a fraction of C, signed) when each direction's sliding line may bend
+    // (a v² term): beyond 5 % (and two standard errors) C and b are flagged as not determined.
+    double bendShiftCp = 0.0, bendShiftCn = 0.0;
     double slidingFromP_m_s = 0.0, slidingToP_m_s = 0.0, slidingFromN_m_s = 0.0, slidingToN_m_s = 0.0;
 };
 

@@ -3441,7 +3441,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+121"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -5268,7 +5268,7 @@ Befehle:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+340"/>
+        <location filename="../core/friction_fit.cpp" line="+343"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -5734,12 +5734,12 @@ Befehle:
         <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+60"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+135"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>
@@ -5774,7 +5774,12 @@ Befehle:
         <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Seine Gleitkraft weicht um das %3-Fache ihres Rauschens von der Geraden ab (das Nachgeben des Gewebes ändert sich entlang des Hubs)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
+        <source>%1 and %2 are not determined by this run: letting its sliding line bend moves %1 by %3 % (the tissue&apos;s give changes with speed; label phase c where the tissue rests)</source>
+        <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Darf sich seine Gleitgerade krümmen, verschiebt sich %1 um %3 % (das Nachgeben des Gewebes ändert sich mit der Geschwindigkeit; Phase c dort markieren, wo das Gewebe ruht)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
     </message>
@@ -5844,7 +5849,7 @@ Befehle:
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+667"/>
+        <location filename="../core/label_suggest.cpp" line="+675"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
@@ -6719,7 +6724,7 @@ Befehle:
         <translation>die Bewegung des Gewebes hebt sich nicht vom Bildrauschen ab</translation>
     </message>
     <message>
-        <location filename="../video/labels_from_video.cpp" line="+35"/>
+        <location filename="../video/labels_from_video.cpp" line="+34"/>
         <source>stopped before the video was read</source>
         <translation>angehalten, bevor das Video gelesen war</translation>
     </message>

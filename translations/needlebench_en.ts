@@ -3423,7 +3423,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+121"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -5182,7 +5182,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+340"/>
+        <location filename="../core/friction_fit.cpp" line="+343"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5648,12 +5648,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+60"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+135"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5688,7 +5688,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
+        <source>%1 and %2 are not determined by this run: letting its sliding line bend moves %1 by %3 % (the tissue&apos;s give changes with speed; label phase c where the tissue rests)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5758,7 +5763,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+667"/>
+        <location filename="../core/label_suggest.cpp" line="+675"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6633,7 +6638,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/labels_from_video.cpp" line="+35"/>
+        <location filename="../video/labels_from_video.cpp" line="+34"/>
         <source>stopped before the video was read</source>
         <translation type="unfinished"></translation>
     </message>
