@@ -200,27 +200,41 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         return out;
     const std::vector<double> v = velocity(run);
     // The picture's velocity noise: most of the time the tissue rests (c), so a low
-    // quantile of its measured speed is the noise the picture adds.
+    // quantile of its measured speed is the noise the picture adds. Where it is carried most
+    // of the time (a plate gap nearly as wide as the stroke) that quantile is a speed, so the
+    // reading-to-reading jitter bounds it too: the second differences of a smooth motion are
+    // small, those of noise σ·√6.
     double videoNoise_mm_s = 0.0;
     if (tissue) {
-        std::vector<double> speeds;
-        for (double x : tissue->velocity_mm_s)
-            if (std::isfinite(x))
-                speeds.push_back(std::abs(x));
+        std::vector<double> speeds, jitter;
+        const std::vector<double>& tv = tissue->velocity_mm_s;
+        for (std::size_t k = 0; k < tv.size(); ++k) {
+            if (std::isfinite(tv[k]))
+                speeds.push_back(std::abs(tv[k]));
+            if (k >= 1 && k + 1 < tv.size() && std::isfinite(tv[k - 1]) && std::isfinite(tv[k]) && std::isfinite(tv[k + 1]))
+                jitter.push_back(std::abs(tv[k - 1] - 2.0 * tv[k] + tv[k + 1]));
+        }
         if (!speeds.empty()) {
             std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 4), speeds.end());
             videoNoise_mm_s = speeds[speeds.size() / 4];
+        }
+        if (jitter.size() >= 10) {
+            std::nth_element(jitter.begin(), jitter.begin() + std::ptrdiff_t(jitter.size() / 2), jitter.end());
+            videoNoise_mm_s = std::min(videoNoise_mm_s, 1.4826 * jitter[jitter.size() / 2] / std::sqrt(6.0));
         }
     }
     // A picture to be trusted where it disagrees with the force must first agree with it
     // where the force is plain: moving with the needle in the force's a, resting in its c,
     // wherever the picture moves clearly. Below nine in ten it is too unclear to judge
-    // (noise, blur, a wrong clock) and leaves the force's phases as they are.
+    // (noise, blur, a wrong clock) and leaves the force's phases as they are, unless nearly
+    // every clear reading is one the tissue can give (carried with the needle or at rest): a
+    // garbled picture or a wrong clock reads other speeds, of either sign, while a clear one
+    // that disagrees with the force is the force placing a boundary wrong.
     bool videoTrusted = tissue != nullptr;
     if (tissue && tissue->px_per_mm > 0.0 && tissue->time_s.size() > 1) {
         const double frame_s = (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1);
         const QStringList plain = phasePerSample(suggestPhaseLabels(run, nullptr, o), tissue->time_s);
-        int judged = 0, agreed = 0;
+        int judged = 0, agreed = 0, physical = 0;
         for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
             const QString& p = plain[qsizetype(k)];
             if (!std::isfinite(tissue->velocity_mm_s[k]) || (p != QLatin1String("a") && p != QLatin1String("c")))
@@ -234,8 +248,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // Carried: with the needle, not faster; resting: still, not moving backwards (a
             // garbled match reads any speed, of either sign).
             agreed += p == QLatin1String("a") ? (ratio >= 0.5 && ratio <= 1.5) : std::abs(ratio) < 0.25;
+            physical += (ratio >= 0.5 && ratio <= 1.5) || std::abs(ratio) < 0.25;
         }
-        videoTrusted = judged < 10 || agreed >= 0.9 * judged;
+        videoTrusted = judged < 10 || agreed >= 0.9 * judged || physical >= 0.95 * judged;
     }
     const double frameHalf_s = tissue && tissue->time_s.size() > 1
                                    ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
