@@ -408,12 +408,13 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
 
     const int off = options.estimateMass ? 1 : 0;
     // Columns follow eq. 19/21: [a], s+, s+·v, s-, s-·v, s- = -1 for v < 0 (F = -Cn + bn·v),
-    // then the spring-back columns s+·Ḟ, s-·Ḟ of the directions that take one.
+    // then the spring-back columns s+·Ḟ, s-·Ḟ of the directions that take one, and (quadDir,
+    // only to see how far C moves when the line may bend) one direction's v².
     struct Solution {
         Eigen::VectorXd p, se, res;
         int springP = -1, springN = -1;  // column of each direction's spring-back term
     };
-    auto solve = [&](const std::vector<std::size_t>& use, bool springP, bool springN, int quadDir = -1) {
+    auto solve = [&](bool springP, bool springN, int quadDir = -1) {
         Solution sol;
         int cols = off + 4;
         if (springP)
@@ -421,10 +422,10 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         if (springN)
             sol.springN = cols++;
         const int quad = quadDir >= 0 ? cols++ : -1;
-        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(use.size()), cols);
-        Eigen::VectorXd y(Eigen::Index(use.size()));
-        for (std::size_t r = 0; r < use.size(); ++r) {
-            const std::size_t i = use[r];
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(rows.size()), cols);
+        Eigen::VectorXd y(Eigen::Index(rows.size()));
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            const std::size_t i = rows[r];
             const auto ri = Eigen::Index(r);
             if (options.estimateMass)
                 A(ri, 0) = a[i];
@@ -458,10 +459,10 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // lags the force) and well above its standard error; a stiff slab keeps the plain line,
     // whose C and b the extra column would only make noisier.
     auto shows = [](const Solution& sol, int k) { return k >= 0 && sol.p(k) > 0.0 && sol.p(k) > 3.0 * sol.se(k); };
-    std::optional<Solution> solved = solve(rows, true, true);
+    std::optional<Solution> solved = solve(true, true);
     if (!solved || !shows(*solved, solved->springP) || !shows(*solved, solved->springN)) {
         const bool keepP = solved && shows(*solved, solved->springP), keepN = solved && shows(*solved, solved->springN);
-        solved = solve(rows, keepP, keepN);
+        solved = solve(keepP, keepN);
     }
     if (!solved)
         throw FitError(nb::TrCore::tr("the friction fit is singular (velocity does not vary within a direction)"));
@@ -516,7 +517,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // when the line may bend tells how much of C the run determines.
     bool bends[2] = {false, false};
     for (int d : {0, 1}) {
-        const auto bent = solve(rows, solved->springP >= 0, solved->springN >= 0, d);
+        const auto bent = solve(solved->springP >= 0, solved->springN >= 0, d);
         if (!bent)
             continue;
         const double straight = p(off + 2 * d), curved = bent->p(off + 2 * d);
