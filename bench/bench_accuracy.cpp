@@ -304,6 +304,10 @@ int main(int argc, char** argv)
             return 1;
         }
         detailsOut.emplace(&detailsFile);
+        if (detailsFile.size() == 0)
+            *detailsOut << "seed\tset\trun\tdirection\ttissue\tfrequency_hz\tamplitude_mm\tstick_band_mm_s\tplate_gap_mm\tforce_noise_N\t"
+                           "C_error\tb_error\tflagged\tsliding_from_m_s\tsliding_to_m_s\tspring_back_s\tresidual_to_noise\tse_b_over_b\t"
+                           "se_C_over_C\tband_m_s\tband_slowing_down_m_s\tsamples\tC_N\tb_Ns_per_m\tC_shift_if_bent\n";
     }
     printRigFriction(out, seed, rigFrictionSets, root, detailsOut ? &*detailsOut : nullptr);
     printRelaxMatrix(out, seed, relaxCases, small, root);
