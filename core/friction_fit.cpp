@@ -396,9 +396,15 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // Phase c as labelled still holds samples off the sliding line: the slab settling against
     // the plate as c begins, stick-slip as the needle stops.
     rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N, forceRate);
+    // Per direction (0: +, 1: -): how many sliding samples, and the needle speeds they span.
     std::size_t pos = 0, neg = 0;
-    for (std::size_t i : rows)
-        (v[i] > 0.0 ? pos : neg) += 1;
+    double slowest[2] = {INFINITY, INFINITY}, fastest[2] = {0.0, 0.0};
+    for (std::size_t i : rows) {
+        const int d = v[i] > 0.0 ? 0 : 1;
+        (d == 0 ? pos : neg) += 1;
+        slowest[d] = std::min(slowest[d], std::fabs(v[i]));
+        fastest[d] = std::max(fastest[d], std::fabs(v[i]));
+    }
     if (pos == 0 && neg == 0)
         throw FitError(usePhases ? nb::TrCore::tr("no phase-c samples moving faster than the zero-velocity band")
                                  : nb::TrCore::tr("no motion: no sample moves faster than the zero-velocity band (%1 m/s)")
@@ -531,18 +537,10 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         fit.springBackN_s = p(solved->springN);
     fit.positiveSamples = pos;
     fit.negativeSamples = neg;
-    {
-        double lo[2] = {INFINITY, INFINITY}, hi[2] = {0.0, 0.0};
-        for (std::size_t i : rows) {
-            const int d = v[i] > 0.0 ? 0 : 1;
-            lo[d] = std::min(lo[d], std::fabs(v[i]));
-            hi[d] = std::max(hi[d], std::fabs(v[i]));
-        }
-        fit.slidingFromP_m_s = lo[0];
-        fit.slidingToP_m_s = hi[0];
-        fit.slidingFromN_m_s = lo[1];
-        fit.slidingToN_m_s = hi[1];
-    }
+    fit.slidingFromP_m_s = slowest[0];
+    fit.slidingToP_m_s = fastest[0];
+    fit.slidingFromN_m_s = slowest[1];
+    fit.slidingToN_m_s = fastest[1];
 
     // Static friction (models.md sec. 5): D_p is the force at which the tissue lets go when
     // motion starts in the + direction, D_n when it starts in the - direction. So each

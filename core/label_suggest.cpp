@@ -247,8 +247,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             ++judged;
             // Carried: with the needle, not faster; resting: still, not moving backwards (a
             // garbled match reads any speed, of either sign).
-            agreed += p == QLatin1String("a") ? (ratio >= 0.5 && ratio <= 1.5) : std::abs(ratio) < 0.25;
-            physical += (ratio >= 0.5 && ratio <= 1.5) || std::abs(ratio) < 0.25;
+            const bool carried = ratio >= 0.5 && ratio <= 1.5, resting = std::abs(ratio) < 0.25;
+            agreed += p == QLatin1String("a") ? carried : resting;
+            physical += carried || resting;
         }
         videoTrusted = judged < 10 || agreed >= 0.9 * judged || physical >= 0.95 * judged;
     }

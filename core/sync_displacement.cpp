@@ -256,12 +256,14 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         // search would keep whichever drift the noise favours. So the drift found stands only
         // where it explains the picture better than none by more than its noise allows (a
         // likelihood ratio above 3 standard deviations, one independent reading per frame).
-        const auto [offZero, r2Zero] = bestOffset(v, pos, 0.0, o0, 2 * coarse, frame_s / 50, 0, n);
-        const double gain = double(n) * (r2 - r2Zero) / std::max(1e-12, 1.0 - r2);
-        if (best.drift != 0.0 && gain < 9.0)
-            refined.push_back({offZero, 0.0, r2Zero});
-        else
-            refined.push_back({off, best.drift, r2});
+        if (best.drift != 0.0) {
+            const auto [offZero, r2Zero] = bestOffset(v, pos, 0.0, o0, 2 * coarse, frame_s / 50, 0, n);
+            if (double(n) * (r2 - r2Zero) / std::max(1e-12, 1.0 - r2) < 9.0) {
+                refined.push_back({offZero, 0.0, r2Zero});
+                continue;
+            }
+        }
+        refined.push_back({off, best.drift, r2});
     }
     std::sort(refined.begin(), refined.end(), [](const Refined& a, const Refined& b) { return a.r2 > b.r2; });
     // Near-equal peaks (a repeating motion): the one the onsets point to.
