@@ -97,10 +97,13 @@ oder ohne Kontakt einbeziehen</translation>
         <source>By factor</source>
         <translation>Nach Faktor</translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+129"/>
-        <source>%1 runs analysed</source>
-        <translation>%1 Läufe ausgewertet</translation>
+        <source>%n run(s) analysed</source>
+        <translation>
+            <numerusform>%n Lauf ausgewertet</numerusform>
+            <numerusform>%n Läufe ausgewertet</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -5719,7 +5722,7 @@ Befehle:
         <translation>%1 Phasennamen für %2 Messwerte</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+52"/>
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation>keine Messwerte der Phase c schneller als das Nullgeschwindigkeitsband</translation>
     </message>
@@ -5734,12 +5737,12 @@ Befehle:
         <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+127"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>
@@ -5849,7 +5852,7 @@ Befehle:
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+675"/>
+        <location filename="../core/label_suggest.cpp" line="+691"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>

@@ -96,10 +96,13 @@ or without contact</source>
         <source>By factor</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+129"/>
-        <source>%1 runs analysed</source>
-        <translation type="unfinished"></translation>
+        <source>%n run(s) analysed</source>
+        <translation>
+            <numerusform>%n run analysed</numerusform>
+            <numerusform>%n runs analysed</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -5633,7 +5636,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+52"/>
         <source>no phase-c samples moving faster than the zero-velocity band</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5648,12 +5651,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+127"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5763,7 +5766,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+675"/>
+        <location filename="../core/label_suggest.cpp" line="+691"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>

@@ -344,7 +344,7 @@ void AnalysisWorkspace::recompute()
     AnalysisOptions options;
     options.includeJudgedOut = includeJudgedOut_->isChecked();
     analysis_ = analyseDataset(chosen, options);
-    QStringList lines{tr("%1 runs analysed").arg(chosen.runs.size() - std::size_t(analysis_.leftOut.size()))};
+    QStringList lines{tr("%n run(s) analysed", nullptr, int(chosen.runs.size() - std::size_t(analysis_.leftOut.size())))};
     if (!analysis_.leftOut.isEmpty())
         lines << tr("Left out (switch above to include them):") << analysis_.leftOut;
     QStringList outliers;
