@@ -45,6 +45,17 @@ QString trackDisplayName(const QString& track)
     return track;
 }
 
+QString staticSourceDisplayName(const QString& source)
+{
+    if (source == QLatin1String("phase a"))
+        return nb::TrCore::tr("phase a");
+    if (source == QLatin1String("velocity band"))
+        return nb::TrCore::tr("velocity band");
+    if (source == QLatin1String("none"))
+        return nb::TrCore::tr("none");
+    return source;
+}
+
 QString calibrationDisplayName(const QString& calibration)
 {
     return calibration == QLatin1String(kNominalCalibration) ? nb::TrCore::tr("nominal (device)") : calibration;

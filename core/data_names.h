@@ -21,6 +21,9 @@ QString calibrationDisplayName(const QString& calibration);
 // A label track of the default label sets ("insertion" → "Einstich"); tracks the operator
 // named are shown as named.
 QString trackDisplayName(const QString& track);
+// Where a friction fit took its static friction D from ("phase a", "velocity band", "none",
+// as the fit's JSON and the exported tables store it).
+QString staticSourceDisplayName(const QString& source);
 // What the acquisition engine stores as the calibration before one is chosen.
 inline constexpr char kNominalCalibration[] = "nominal (device)";
 

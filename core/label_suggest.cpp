@@ -45,6 +45,8 @@ std::vector<double> velocity(const Run& run)
     return s;
 }
 
+constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
+
 // Half-cycles [start, end) between turning points, with their direction.
 struct HalfCycle {
     std::size_t start, end;
@@ -172,6 +174,53 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
     return line;
 }
 
+// One reading of the picture against the needle, over one or a few pairs of frames.
+struct PictureReading {
+    double from_s = 0.0, to_s = 0.0;       // recording time it spans
+    double needle_mm = 0.0, tissue_mm = 0.0;  // displacements over it
+    int pairs = 0;
+    bool clear = false;  // the needle moved the picture clearly: its speed reads true
+    double mid_s() const { return 0.5 * (from_s + to_s); }
+    double needle_mm_s() const { return needle_mm / std::max(1e-9, to_s - from_s); }
+    double tissue_mm_s() const { return tissue_mm / std::max(1e-9, to_s - from_s); }
+};
+
+// The reading that ends with pair of frames k: that pair alone where the needle moved the
+// picture clearly in it (1.5 px, and four times the picture's noise), else added up with the
+// pairs before it (none before `since_s` or the needle's last turning point, at most eight)
+// until it has moved it `sum_px`. The tracker's shifts are differences of positions measured
+// against a reference, so their sum over a few frames has about the noise of one: a slow
+// needle is judged over a few frames, not left unjudged.
+PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::size_t k, double since_s, double noise_mm_s,
+                              double frameHalf_s, double sum_px = 1.5)
+{
+    constexpr int kMaxPairs = 8;
+    constexpr double kClearPair_px = 1.5;
+    auto positionAt = [&](double t) {
+        const std::size_t j = std::min(run.size() - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), t) - run.time_s.begin()));
+        return run.position_mm[j];
+    };
+    PictureReading r;
+    r.to_s = tissue.time_s[k] + frameHalf_s;
+    for (std::size_t j = k + 1; j-- > 0 && r.pairs < kMaxPairs;) {
+        const double from = tissue.time_s[j] - frameHalf_s;
+        if (from < since_s - 1e-9 || !std::isfinite(tissue.velocity_mm_s[j]))
+            break;
+        if (r.pairs > 0 && (positionAt(r.from_s) - positionAt(from)) * r.needle_mm < 0.0)
+            break;  // not across a turning point
+        r.from_s = from;
+        r.tissue_mm += tissue.velocity_mm_s[j] * 2.0 * frameHalf_s;
+        ++r.pairs;
+        r.needle_mm = positionAt(r.to_s) - positionAt(r.from_s);
+        const double moved = std::abs(r.needle_mm);
+        r.clear = tissue.px_per_mm > 0.0 && moved * tissue.px_per_mm >= (r.pairs == 1 ? kClearPair_px : sum_px) &&
+                  moved / (r.to_s - r.from_s) >= 4.0 * noise_mm_s / std::sqrt(double(r.pairs));
+        if (r.clear)
+            break;
+    }
+    return r;
+}
+
 // The sliding lines F = C + b·v of the run (friction_fit.h, its band found in the data, no
 // phases used); nullopt when the fit fails.
 std::optional<FrictionFit> slidingLines(const Run& run)
@@ -225,33 +274,34 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     }
     // A picture to be trusted where it disagrees with the force must first agree with it
     // where the force is plain: moving with the needle in the force's a, resting in its c,
-    // wherever the picture moves clearly. Below nine in ten it is too unclear to judge
-    // (noise, blur, a wrong clock) and leaves the force's phases as they are, unless nearly
-    // every clear reading is one the tissue can give (carried with the needle or at rest): a
-    // garbled picture or a wrong clock reads other speeds, of either sign, while a clear one
-    // that disagrees with the force is the force placing a boundary wrong.
+    // wherever the picture moves clearly (over several frames, 3 px: a picture that drops and
+    // repeats frames is off by a frame's motion at times, a third of a 1.5 px reading; the
+    // boundaries below want the finer time). Below nine in ten it is too unclear to judge
+    // (noise, blur, a wrong clock) and leaves the force's phases as they are, unless nine in
+    // ten of its clear readings are ones the tissue can give, carried with the needle or at
+    // rest (in between only while it slows on the plate, a reading or two a stroke): a
+    // garbled picture or a clock three frames wrong reads other speeds, of either sign, while
+    // a clear one that disagrees with the force is the force placing a boundary wrong.
     bool videoTrusted = tissue != nullptr;
     if (tissue && tissue->px_per_mm > 0.0 && tissue->time_s.size() > 1) {
         const double frame_s = (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1);
         const QStringList plain = phasePerSample(suggestPhaseLabels(run, nullptr, o), tissue->time_s);
         int judged = 0, agreed = 0, physical = 0;
         for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
-            const QString& p = plain[qsizetype(k)];
-            if (!std::isfinite(tissue->velocity_mm_s[k]) || (p != QLatin1String("a") && p != QLatin1String("c")))
+            const PictureReading r = pictureReading(run, *tissue, k, run.time_s.front(), videoNoise_mm_s, 0.5 * frame_s, kTrustSum_px);
+            if (!r.clear)
                 continue;
-            const std::size_t i = std::min(run.size() - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), tissue->time_s[k]) -
-                                                                          run.time_s.begin()));
-            if (std::abs(v[i]) * frame_s * tissue->px_per_mm < 1.5 || std::abs(v[i]) < 4.0 * videoNoise_mm_s)
+            const QString& p = plain[qsizetype(k) - r.pairs / 2];
+            if (p != QLatin1String("a") && p != QLatin1String("c"))
                 continue;
-            const double ratio = tissue->velocity_mm_s[k] / v[i];
+            const double ratio = r.tissue_mm / r.needle_mm;
             ++judged;
-            // Carried: with the needle, not faster; resting: still, not moving backwards (a
-            // garbled match reads any speed, of either sign).
+            // Carried: with the needle, not faster; resting: still, not moving backwards.
             const bool carried = ratio >= 0.5 && ratio <= 1.5, resting = std::abs(ratio) < 0.25;
             agreed += p == QLatin1String("a") ? carried : resting;
             physical += carried || resting;
         }
-        videoTrusted = judged < 10 || agreed >= 0.9 * judged || physical >= 0.95 * judged;
+        videoTrusted = judged < 10 || agreed >= 0.9 * judged || physical >= 0.9 * judged;
     }
     const double frameHalf_s = tissue && tissue->time_s.size() > 1
                                    ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
@@ -511,22 +561,22 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 const double tk = tissue->time_s[k];
                 if (tk - frameHalf_s < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
                     continue;
-                const std::size_t i = std::min(h.end - 1, std::size_t(std::lower_bound(run.time_s.begin() + std::ptrdiff_t(h.start),
-                                                                                         run.time_s.begin() + std::ptrdiff_t(h.end), tk) -
-                                                                        run.time_s.begin()));
-                const double vn = h.direction * v[i], vtk = h.direction * tissue->velocity_mm_s[k];
+                const PictureReading r = pictureReading(run, *tissue, k, t0, videoNoise_mm_s, frameHalf_s);
+                const double vn = h.direction * r.needle_mm_s(), vtk = h.direction * r.tissue_mm_s();
+                const double noiseHere_mm_s = videoNoise_mm_s / std::sqrt(double(r.pairs));
+                const double at_s = r.mid_s();  // the reading stands for the pair of frames around here
                 if (!reference_mm)
                     reference_mm = positionAt(tk - frameHalf_s);
-                carried_mm += vtk * frame_s;
+                carried_mm += h.direction * tissue->velocity_mm_s[k] * frame_s;
                 ++steps;
                 const double needle_mm = h.direction * (positionAt(tk + frameHalf_s) - *reference_mm);
                 // Kept up: within the noise and a sixth of the travel; fallen behind: by more than
                 // the noise and 40 % (slow motion reads short in the picture: sub-pixel shifts
                 // are pulled towards whole pixels).
                 const double noise_mm = 3.0 * videoNoise_mm_s * frame_s * std::sqrt(double(steps));
-                // Frame by frame where the picture moves clearly (speeds read true), else by the
-                // displacement since the turning point.
-                const bool clear = tissue->px_per_mm > 0.0 && vn * frame_s * tissue->px_per_mm >= 1.5 && vn >= 4.0 * videoNoise_mm_s;
+                // Reading by reading where the picture moves clearly (speeds read true), else by
+                // the displacement since the turning point.
+                const bool clear = r.clear && vn > 0.0;
                 anyClear |= clear;
                 // Two readings in a row decide: one may be a repeated or garbled frame.
                 if (!firstBehind) {
@@ -534,29 +584,29 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                         if (pendingBehind)
                             firstBehind = pendingBehind;
                         else
-                            pendingBehind = tk + frameHalf_s;
+                            pendingBehind = at_s + frameHalf_s;
                     } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && needle_mm - carried_mm <= noise_mm + 0.15 * needle_mm)) {
                         followed = true;
-                        lastFollow = tk + frameHalf_s;
+                        lastFollow = at_s + frameHalf_s;
                         pendingBehind.reset();
                     }
                 }
-                if (vn < std::max(o.zeroBand_mm_s / 2, 4.0 * videoNoise_mm_s))
+                if (vn < std::max(o.zeroBand_mm_s / 2, 4.0 * noiseHere_mm_s))
                     continue;  // too slow to tell moving from resting
                 measured = true;
-                const bool resting = vtk < std::max(0.25 * vn, 2.0 * videoNoise_mm_s);
+                const bool resting = vtk < std::max(0.25 * vn, 2.0 * noiseHere_mm_s);
                 // From the first reading behind the needle on (a tissue that stops within a
                 // frame is behind and resting in the same reading). One reading between resting
                 // and clearly moving is noise, two in a row are motion.
                 if ((firstBehind || pendingBehind) && !cWindow) {
                     const bool moving = !resting && (vtk >= 0.5 * vn || wasNotResting);
                     if (moving) {
-                        lastMoving = std::max(tk, lastFollow);
+                        lastMoving = std::max(at_s, lastFollow);
                         pendingRest.reset();
                     } else if (resting && pendingRest) {
                         cWindow = std::make_pair(std::max(lastMoving, lastFollow), *pendingRest);
                     } else if (resting) {
-                        pendingRest = tk;
+                        pendingRest = at_s;
                     }
                 } else if (!cWindow) {
                     pendingRest.reset();

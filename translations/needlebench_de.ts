@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+127"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+130"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -5847,12 +5847,27 @@ Befehle:
         <translation>Rückzug</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>phase a</source>
+        <translation>Phase a</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>velocity band</source>
+        <translation>Geschwindigkeitsband</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>nominal (device)</source>
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+691"/>
+        <location filename="../core/label_suggest.cpp" line="+741"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
@@ -6702,7 +6717,7 @@ Befehle:
         <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+75"/>
+        <location filename="../video/tissue_tracker.cpp" line="+76"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
     </message>
@@ -6712,17 +6727,17 @@ Befehle:
         <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+45"/>
         <source>the needle does not move while the video runs</source>
         <translation>die Nadel bewegt sich nicht, während das Video läuft</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>nothing in the picture moves with the needle</source>
         <translation>nichts im Bild bewegt sich mit der Nadel</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
         <source>the tissue&apos;s motion does not stand out of the picture&apos;s noise</source>
         <translation>die Bewegung des Gewebes hebt sich nicht vom Bildrauschen ab</translation>
     </message>

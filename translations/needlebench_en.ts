@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+127"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+130"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5761,12 +5761,27 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>phase a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>velocity band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>nominal (device)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+691"/>
+        <location filename="../core/label_suggest.cpp" line="+741"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6616,7 +6631,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+75"/>
+        <location filename="../video/tissue_tracker.cpp" line="+76"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6626,17 +6641,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+45"/>
         <source>the needle does not move while the video runs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>nothing in the picture moves with the needle</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
         <source>the tissue&apos;s motion does not stand out of the picture&apos;s noise</source>
         <translation type="unfinished"></translation>
     </message>

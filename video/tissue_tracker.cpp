@@ -20,6 +20,7 @@ constexpr int kBackgroundFrames = 41; // frames whose median is the static backg
 // this scale (in the working picture) before matching, heavy noise no longer decides the
 // match, while the texture still does.
 constexpr double kTextureBlur_px = 3.0;
+constexpr double kScaleSpan_s = 0.2;  // stretch of video over which the scale is read
 
 cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
 {
@@ -191,38 +192,71 @@ TissueMotion tissueMotionFromShifts(const TissueShifts& s, const Run& run, const
     std::vector<double> along(k);
     for (std::size_t i = 0; i < k; ++i)
         along[i] = s.dx_px[i] * ux + s.dy_px[i] * uy;
-    // Scale and sign against the needle, where the needle moves clearly.
+    // Scale and sign against the needle, where the needle moves clearly. Over a few frames,
+    // not frame by frame: the shifts are differences of positions measured against a
+    // reference, so their sum over a stretch has the noise of two positions, not of as many
+    // shifts; frame by frame the noise spreads the ratios, and the upper cluster taken for
+    // the carried tissue reads the scale high (the tissue's motion short).
+    std::vector<double> dtPairs;
+    for (std::size_t i = 0; i < k; ++i)
+        dtPairs.push_back(s.dt_s[i]);
+    const double frame_s = quantileOf(dtPairs, 0.5);
+    const std::size_t span = std::clamp<std::size_t>(std::size_t(std::lround(kScaleSpan_s / std::max(1e-3, frame_s))), 1, k / 4);
+    std::vector<double> cumAlong(k + 1, 0.0), cumNeedle(k + 1, 0.0);
+    for (std::size_t i = 0; i < k; ++i) {
+        cumAlong[i + 1] = cumAlong[i] + along[i];
+        cumNeedle[i + 1] = cumNeedle[i] + (std::isfinite(dp[i]) ? dp[i] : 0.0);
+    }
+    std::vector<double> spanAlong, spanNeedle;
+    for (std::size_t i = 0; i + span <= k; ++i) {
+        bool inside = true;
+        for (std::size_t j = i; j < i + span && inside; ++j)
+            inside = std::isfinite(dp[j]);
+        if (!inside)
+            continue;
+        spanAlong.push_back(cumAlong[i + span] - cumAlong[i]);
+        spanNeedle.push_back(cumNeedle[i + span] - cumNeedle[i]);
+    }
     double fastest = 0.0;
-    for (double d : dp)
-        if (std::isfinite(d))
-            fastest = std::max(fastest, std::abs(d));
+    for (double d : spanNeedle)
+        fastest = std::max(fastest, std::abs(d));
     if (fastest <= 0.0)
         return fail(nb::TrDevices::tr("the needle does not move while the video runs"));
     double agreement = 0.0;
-    for (std::size_t i = 0; i < k; ++i)
-        if (std::isfinite(dp[i]))
-            agreement += along[i] * dp[i];
+    for (std::size_t i = 0; i < spanNeedle.size(); ++i)
+        agreement += spanAlong[i] * spanNeedle[i];
     const double sign = agreement < 0 ? -1.0 : 1.0;
     std::vector<double> ratios;
-    for (std::size_t i = 0; i < k; ++i)
-        if (std::isfinite(dp[i]) && std::abs(dp[i]) > 0.15 * fastest)
-            ratios.push_back(sign * along[i] / dp[i]);
+    for (std::size_t i = 0; i < spanNeedle.size(); ++i)
+        if (std::abs(spanNeedle[i]) > 0.15 * fastest)
+            ratios.push_back(sign * spanAlong[i] / spanNeedle[i]);
     const double high = quantileOf(ratios, 0.9);
     if (!(high > 0.0))
         return fail(nb::TrDevices::tr("nothing in the picture moves with the needle"));
-    std::vector<double> carried;
-    for (double r : ratios)
-        if (std::abs(r - high) < 0.25 * high)
-            carried.push_back(r);
-    const double pxPerMm = quantileOf(carried, 0.5);
-    // A picture whose motion is mostly noise: the tissue never visibly follows the needle.
+    // The cluster's middle, found from its upper side: a window of ±25 % moved onto the
+    // median of what it holds until it settles (started at the upper side it would hold
+    // the cluster's upper half and read the scale high).
+    double pxPerMm = high;
+    for (int pass = 0; pass < 8; ++pass) {
+        std::vector<double> carried;
+        for (double r : ratios)
+            if (std::abs(r - pxPerMm) < 0.25 * pxPerMm)
+                carried.push_back(r);
+        const double middle = quantileOf(carried, 0.5);
+        if (!(middle > 0.0) || std::abs(middle - pxPerMm) < 1e-3 * pxPerMm)
+            break;
+        pxPerMm = middle;
+    }
+    // A picture whose motion is mostly noise: the tissue never visibly follows the needle
+    // (over the stretch the scale is read on, whose noise adds up at most as the root of its
+    // frames).
     const double noise = quantileOf([&] {
         std::vector<double> a;
         for (double v : along)
             a.push_back(std::abs(v));
         return a;
     }(), 0.1);
-    if (!(pxPerMm > 0.0) || pxPerMm * 0.15 * fastest < 2.0 * noise)
+    if (!(pxPerMm > 0.0) || pxPerMm * 0.15 * fastest < 2.0 * noise * std::sqrt(double(span)))
         return fail(nb::TrDevices::tr("the tissue's motion does not stand out of the picture's noise"));
     m.px_per_mm = pxPerMm;
     m.time_s.resize(k);

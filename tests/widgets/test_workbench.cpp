@@ -6,6 +6,7 @@
 #include "support/simulated_window.h"
 #include "translation.h"
 
+#include "core/data_names.h"
 #include "core/run_file.h"
 #include "devices/acquisition_engine.h"
 #include "devices/sim/rig_config.h"
@@ -390,6 +391,9 @@ private slots:
             QCOMPARE(rig.findChild<QComboBox*>(QStringLiteral("tip"))->currentText(), QStringLiteral("Diamantschliff"));
             QCOMPARE(rig.spec().tissue, QStringLiteral("liver2"));
             QCOMPARE(rig.spec().tip, QStringLiteral("diamond"));
+            // Where a friction fit took D from, as the Analysis table shows it.
+            QCOMPARE(nb::staticSourceDisplayName(QStringLiteral("velocity band")), QStringLiteral("Geschwindigkeitsband"));
+            QCOMPARE(nb::staticSourceDisplayName(QStringLiteral("phase a")), QStringLiteral("Phase a"));
             tissue->setCurrentIndex(tissue->findText(QStringLiteral("Prostata")));
             QCOMPARE(rig.spec().tissue, QStringLiteral("prostate"));
             // No stored English name is shown anywhere in either dialog.

@@ -94,10 +94,13 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
             auto* item = new QStandardItem;
             if (c < row.size()) {
                 if (const auto* s = std::get_if<QString>(&row[c])) {
-                    // A tip is data ("beveled" in the exported table), said in the operator's language here.
-                    item->setText(t.columns[c].key == QLatin1String("tip")                     ? tipDisplayName(*s)
-                                  : t.columns[c].key == QLatin1String("tissue") && s->isEmpty() ? nb::TrViews::tr("no tissue given")
-                                                                                                  : *s);
+                    // A tip or where D came from is data ("beveled", "phase a" in the exported table),
+                    // said in the operator's language here.
+                    const QString& key = t.columns[c].key;
+                    item->setText(key == QLatin1String("tip")                       ? tipDisplayName(*s)
+                                  : key == QLatin1String("static_from")             ? staticSourceDisplayName(*s)
+                                  : key == QLatin1String("tissue") && s->isEmpty() ? nb::TrViews::tr("no tissue given")
+                                                                                    : *s);
                     // Outliers and failed fits stand out; other text columns are just text.
                     if ((t.columns[c].key == QLatin1String("outlier") && !s->isEmpty()) ||
                         *s == nb::TrViews::tr("not fitted"))
