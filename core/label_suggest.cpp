@@ -572,20 +572,22 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 const double needle_mm = h.direction * (positionAt(tk + frameHalf_s) - *reference_mm);
                 // Kept up: within the noise and a sixth of the travel; fallen behind: by more than
                 // the noise and 40 % (slow motion reads short in the picture: sub-pixel shifts
-                // are pulled towards whole pixels).
+                // are pulled towards whole pixels). The tissue never falls behind by more than
+                // the needle has moved: a picture that reads it moving backwards reads noise.
                 const double noise_mm = 3.0 * videoNoise_mm_s * frame_s * std::sqrt(double(steps));
+                const double shortfall_mm = needle_mm - std::max(0.0, carried_mm);
                 // Reading by reading where the picture moves clearly (speeds read true), else by
                 // the displacement since the turning point.
                 const bool clear = r.clear && vn > 0.0;
                 anyClear |= clear;
                 // Two readings in a row decide: one may be a repeated or garbled frame.
                 if (!firstBehind) {
-                    if ((clear && vtk < 0.5 * vn) || needle_mm - carried_mm > noise_mm + 0.4 * needle_mm) {
+                    if ((clear && vtk < 0.5 * vn) || shortfall_mm > noise_mm + 0.4 * needle_mm) {
                         if (pendingBehind)
                             firstBehind = pendingBehind;
                         else
                             pendingBehind = at_s + frameHalf_s;
-                    } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && needle_mm - carried_mm <= noise_mm + 0.15 * needle_mm)) {
+                    } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && shortfall_mm <= noise_mm + 0.15 * needle_mm)) {
                         followed = true;
                         lastFollow = at_s + frameHalf_s;
                         pendingBehind.reset();
