@@ -481,15 +481,35 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // The valley: backwards from c to the lowest level, stopping where the force
             // climbs again towards the turning point (the tissue leaving the plate behind
             // pushes while it relaxes) or turns to the previous direction's sign.
-            std::size_t valley = cStart;
+            std::size_t valley = cStart, climb = h.start;
             double lowest = std::numeric_limits<double>::infinity();
             for (std::size_t i = cStart; i > h.start; --i) {
                 const double l = level(i - 1);
+                if (l > lowest + 0.3)
+                    climb = i - 1;
                 if (l < 0.0 || l > lowest + 0.3)
                     break;
                 if (l < lowest) {
                     lowest = l;
                     valley = i - 1;
+                }
+            }
+            // Unless what the force climbs to there is the tissue held at static friction
+            // after a at its low level: the force jumps above the line as the tissue meets
+            // the plate, holds while it slips over the plate's soft part (b1), drops back and
+            // closes on the line (c). The valley above is then that drop; a ended before the
+            // hold, where the peak below finds it.
+            if (climb > h.start) {
+                std::size_t start = climb;
+                double top = 0.0;
+                while (start > h.start && level(start - 1) >= 0.5 * lowest)
+                    top = std::max(top, level(--start));
+                std::size_t low = 0;
+                for (std::size_t i = start; i > h.start && level(i - 1) < 0.5 * lowest; --i)
+                    ++low;
+                if (top > 1.05 && low >= std::max<std::size_t>(10, (climb - start) / 2)) {
+                    valley = start - 1;
+                    lowest = std::max(0.0, level(valley));
                 }
             }
             aEnd = valley;
