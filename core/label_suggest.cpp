@@ -45,8 +45,6 @@ std::vector<double> velocity(const Run& run)
     return s;
 }
 
-constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
-
 // Half-cycles [start, end) between turning points, with their direction.
 struct HalfCycle {
     std::size_t start, end;
@@ -220,6 +218,8 @@ PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::s
     }
     return r;
 }
+
+constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
 
 // The sliding lines F = C + b·v of the run (friction_fit.h, its band found in the data, no
 // phases used); nullopt when the fit fails.

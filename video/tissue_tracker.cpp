@@ -197,22 +197,18 @@ TissueMotion tissueMotionFromShifts(const TissueShifts& s, const Run& run, const
     // reference, so their sum over a stretch has the noise of two positions, not of as many
     // shifts; frame by frame the noise spreads the ratios, and the upper cluster taken for
     // the carried tissue reads the scale high (the tissue's motion short).
-    std::vector<double> dtPairs;
-    for (std::size_t i = 0; i < k; ++i)
-        dtPairs.push_back(s.dt_s[i]);
-    const double frame_s = quantileOf(dtPairs, 0.5);
+    const double frame_s = quantileOf(s.dt_s, 0.5);
     const std::size_t span = std::clamp<std::size_t>(std::size_t(std::lround(kScaleSpan_s / std::max(1e-3, frame_s))), 1, k / 4);
     std::vector<double> cumAlong(k + 1, 0.0), cumNeedle(k + 1, 0.0);
+    std::vector<std::size_t> outside(k + 1, 0);  // pairs before i without the needle's motion (outside the run)
     for (std::size_t i = 0; i < k; ++i) {
         cumAlong[i + 1] = cumAlong[i] + along[i];
         cumNeedle[i + 1] = cumNeedle[i] + (std::isfinite(dp[i]) ? dp[i] : 0.0);
+        outside[i + 1] = outside[i] + (std::isfinite(dp[i]) ? 0 : 1);
     }
     std::vector<double> spanAlong, spanNeedle;
     for (std::size_t i = 0; i + span <= k; ++i) {
-        bool inside = true;
-        for (std::size_t j = i; j < i + span && inside; ++j)
-            inside = std::isfinite(dp[j]);
-        if (!inside)
+        if (outside[i + span] != outside[i])
             continue;
         spanAlong.push_back(cumAlong[i + span] - cumAlong[i]);
         spanNeedle.push_back(cumNeedle[i + span] - cumNeedle[i]);
