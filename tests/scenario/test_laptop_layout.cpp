@@ -8,6 +8,8 @@
 #include "main_window.h"
 #include "translation.h"
 
+#include "core/data_names.h"
+#include "core/export/session_analysis.h"
 #include "core/labels.h"
 #include "core/run_file.h"
 #include "core/session.h"
@@ -128,6 +130,28 @@ private slots:
             const QString keys = w.reviewWorkspace()->findChild<QLabel*>(QStringLiteral("keysHelp"))->text();
             QVERIFY2(keys.contains(language == QLatin1String("de") ? QStringLiteral("1 Einstich/a") : QStringLiteral("1 insertion/a")), qPrintable(keys));
             QVERIFY(w.reviewWorkspace()->labelModel()->tracks().contains(QStringLiteral("insertion")));
+            // Where each friction fit took D from is stored in English ("phase a") and shown in
+            // the operator's language in the Analysis table.
+            {
+                w.workspaces()->setCurrentIndex(2);
+                const auto& friction = w.analysisWorkspace()->analysis().friction;
+                const auto fitted = std::find_if(friction.begin(), friction.end(), [](const nb::FrictionRunResult& f) { return f.ok(); });
+                QVERIFY(fitted != friction.end());
+                const QString stored = fitted->fit.staticSource, shown = nb::staticSourceDisplayName(stored);
+                QVERIFY(stored == QLatin1String("phase a") || stored == QLatin1String("velocity band"));
+                if (language == QLatin1String("de"))
+                    QVERIFY2(shown != stored, qPrintable(shown));
+                bool found = false;
+                for (const QTableView* table : w.analysisWorkspace()->findChildren<QTableView*>()) {
+                    const QAbstractItemModel* m = table->model();
+                    for (int c = 0; m && c < m->columnCount(); ++c)
+                        if (m->headerData(c, Qt::Horizontal).toString() == (language == QLatin1String("de") ? QStringLiteral("D aus") : QStringLiteral("D from")))
+                            for (int r = 0; r < m->rowCount(); ++r)
+                                found |= m->index(r, c).data().toString() == shown;
+                }
+                QVERIFY2(found, qPrintable(shown));
+                w.workspaces()->setCurrentIndex(0);
+            }
 
             if (const QString shots = qEnvironmentVariable("NB_SCREENSHOT_DIR");
                 !shots.isEmpty() && QGuiApplication::platformName() == QLatin1String("xcb")) {
