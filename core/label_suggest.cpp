@@ -172,6 +172,13 @@ EnvelopeLine envelopeLine(const std::vector<double>& f, const std::vector<double
     return line;
 }
 
+// The needle's position at the first sample at or after `t` (the last sample after the run).
+double positionAtTime(const Run& run, double t)
+{
+    const auto at = std::lower_bound(run.time_s.begin(), run.time_s.end(), t);
+    return run.position_mm[std::min(run.size() - 1, std::size_t(at - run.time_s.begin()))];
+}
+
 // One reading of the picture against the needle, over one or a few pairs of frames.
 struct PictureReading {
     double from_s = 0.0, to_s = 0.0;       // recording time it spans
@@ -194,22 +201,18 @@ PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::s
 {
     constexpr int kMaxPairs = 8;
     constexpr double kClearPair_px = 1.5;
-    auto positionAt = [&](double t) {
-        const std::size_t j = std::min(run.size() - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), t) - run.time_s.begin()));
-        return run.position_mm[j];
-    };
     PictureReading r;
     r.to_s = tissue.time_s[k] + frameHalf_s;
     for (std::size_t j = k + 1; j-- > 0 && r.pairs < kMaxPairs;) {
         const double from = tissue.time_s[j] - frameHalf_s;
         if (from < since_s - 1e-9 || !std::isfinite(tissue.velocity_mm_s[j]))
             break;
-        if (r.pairs > 0 && (positionAt(r.from_s) - positionAt(from)) * r.needle_mm < 0.0)
+        if (r.pairs > 0 && (positionAtTime(run, r.from_s) - positionAtTime(run, from)) * r.needle_mm < 0.0)
             break;  // not across a turning point
         r.from_s = from;
         r.tissue_mm += tissue.velocity_mm_s[j] * 2.0 * frameHalf_s;
         ++r.pairs;
-        r.needle_mm = positionAt(r.to_s) - positionAt(r.from_s);
+        r.needle_mm = positionAtTime(run, r.to_s) - positionAtTime(run, r.from_s);
         const double moved = std::abs(r.needle_mm);
         r.clear = tissue.px_per_mm > 0.0 && moved * tissue.px_per_mm >= (r.pairs == 1 ? kClearPair_px : sum_px) &&
                   moved / (r.to_s - r.from_s) >= 4.0 * noise_mm_s / std::sqrt(double(r.pairs));
@@ -573,10 +576,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             std::optional<double> reference_mm;
             double carried_mm = 0.0;
             int steps = 0;
-            auto positionAt = [&](double t) {
-                const std::size_t j = std::min(n - 1, std::size_t(std::lower_bound(run.time_s.begin(), run.time_s.end(), t) - run.time_s.begin()));
-                return run.position_mm[j];
-            };
             for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
                 const double tk = tissue->time_s[k];
                 if (tk - frameHalf_s < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
@@ -586,10 +585,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 const double noiseHere_mm_s = videoNoise_mm_s / std::sqrt(double(r.pairs));
                 const double at_s = r.mid_s();  // the reading stands for the pair of frames around here
                 if (!reference_mm)
-                    reference_mm = positionAt(tk - frameHalf_s);
+                    reference_mm = positionAtTime(run, tk - frameHalf_s);
                 carried_mm += h.direction * tissue->velocity_mm_s[k] * frame_s;
                 ++steps;
-                const double needle_mm = h.direction * (positionAt(tk + frameHalf_s) - *reference_mm);
+                const double needle_mm = h.direction * (positionAtTime(run, tk + frameHalf_s) - *reference_mm);
                 // Kept up: within the noise and a sixth of the travel; fallen behind: by more than
                 // the noise and 40 % (slow motion reads short in the picture: sub-pixel shifts
                 // are pulled towards whole pixels). The tissue never falls behind by more than
