@@ -606,7 +606,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             std::optional<std::pair<double, double>> aWindow, cWindow;
             std::optional<double> firstBehind, pendingBehind, pendingRest;
             bool followed = false, measured = false, anyClear = false, wasNotResting = false;
-            double lastFollow = t0, lastMoving = t0;
+            double lastFollow = t0, lastMoving = t0, lastClearFollow = t0;
             const double frame_s = 2.0 * frameHalf_s;
             std::optional<double> reference_mm;
             double carried_mm = 0.0;
@@ -644,6 +644,8 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && shortfall_mm <= noise_mm + 0.15 * needle_mm)) {
                         followed = true;
                         lastFollow = at_s + frameHalf_s;
+                        if (clear && vtk >= 0.8 * vn)
+                            lastClearFollow = lastFollow;
                         pendingBehind.reset();
                     }
                 }
@@ -694,7 +696,16 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // measures reads short and cannot overrule the force.
                 source = forceSource + QStringLiteral(" (the tissue moved too little per frame in %1 to judge)").arg(tissue->source);
             } else if (measured && !aWindow && followed) {
-                aEnd = h.end;  // the tissue kept up with the needle throughout
+                // The tissue kept up with the needle as far as the picture tells. Near the
+                // turning point the needle moves the picture too little to tell a tissue at rest
+                // from one carried: where the force has the tissue sliding, c stands, though not
+                // before the last reading that saw the tissue keep up clearly.
+                if (forceC < h.end) {
+                    aEnd = std::max(forceA, sampleAt(lastClearFollow));
+                    cStart = std::max(forceC, aEnd);
+                } else {
+                    aEnd = h.end;
+                }
                 source = videoSource;
             } else if (aWindow) {
                 aEnd = place(forceA, *aWindow);
