@@ -533,10 +533,14 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 }
             }
             // Unless what the force climbs to there is the tissue held at static friction
-            // after a at its low level: the force jumps above the line as the tissue meets
-            // the plate, holds while it slips over the plate's soft part (b1), drops back and
-            // closes on the line (c). The valley above is then that drop; a ended before the
-            // hold, where the peak below finds it.
+            // after a at its low level: the force jumps to D as the tissue meets the plate,
+            // holds while it slips over the plate's soft part (b1), drops back and closes on
+            // the line (c). The valley above is then that drop; a ended before the hold, where
+            // the peak below finds it. D lies above the sliding line at low speeds; at high
+            // ones (C + b·v grows with speed) it may lie just below it, and then only a jump
+            // tells the hold (the tissue meets the plate in an instant, which the smoothing
+            // spreads over about 20 ms) from the tissue left behind at the turning point
+            // pushing back, which rises gradually.
             if (climb > h.start) {
                 std::size_t start = climb;
                 double top = 0.0;
@@ -545,7 +549,11 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 std::size_t low = 0;
                 for (std::size_t i = start; i > h.start && level(i - 1) < 0.5 * lowest; --i)
                     ++low;
-                if (top > 1.05 && low >= std::max<std::size_t>(10, (climb - start) / 2)) {
+                std::size_t reached = start;
+                while (reached < climb && level(reached) < 0.9 * top)
+                    ++reached;
+                const bool jumped = run.time_s[reached] - run.time_s[start] <= 0.03;
+                if ((top > 1.05 || (top > 0.9 && jumped)) && low >= std::max<std::size_t>(10, (climb - start) / 2)) {
                     valley = start - 1;
                     lowest = std::max(0.0, level(valley));
                 }

@@ -130,17 +130,36 @@ private slots:
         QCOMPARE(labels.back().end_s, s.blind.time_s.back());
     }
 
-    // Fast strokes over a small plate gap: the tissue meets the plate at speed, and the force
-    // jumps from its low level in a to static friction, holds there while the tissue slips
-    // over the plate's soft part (b1), drops back and closes on the sliding line (c). The
-    // drop was taken for the end of a, so every b1 read as a (89.7 % in bench_accuracy
-    // --seed 660251, phase case 21; 89.9 % and 90.0 % in two more cases of that kind).
+    // Fast strokes: the tissue meets the plate at speed, and the force jumps from its low
+    // level in a to static friction, holds there while the tissue slips over the plate's soft
+    // part (b1), drops back and closes on the sliding line (c). The drop was taken for the end
+    // of a, so every b1 read as a.
+    void holdAtStaticFrictionIsB1_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<double>("wanted");
+        // A small plate gap (89.7 % in bench_accuracy --seed 660251, phase case 21; 89.9 % and
+        // 90.0 % in two more cases of that kind; this run 89.8 % before the hold was read).
+        QTest::newRow("liver1 0.75 Hz gap 1.08") << QStringList{"--tissue", "liver1", "--frequency-hz", "0.749", "--cycles", "4", "--amplitude-mm", "5.017",
+                                                                "--stick-band-mm-s", "2.8", "--plate-gap-mm", "1.08", "--force-noise-n", "0.0007",
+                                                                "--seed", "150"}
+                                                 << 0.93;
+        // Faster still (25 mm/s): static friction lies below the sliding line at that speed,
+        // and a hold at it was only read above the line (89.6 % in bench_accuracy --seed
+        // 191679, phase case 4, where the blurred picture is too unclear to judge; this run
+        // 89.6 % before).
+        QTest::newRow("liver3 0.93 Hz gap 2.81") << QStringList{"--tissue", "liver3", "--frequency-hz", "0.9331", "--cycles", "4", "--amplitude-mm", "4.392",
+                                                                "--stick-band-mm-s", "2.65", "--plate-gap-mm", "2.81", "--force-noise-n", "0.0009",
+                                                                "--seed", "572"}
+                                                 << 0.92;
+    }
     void holdAtStaticFrictionIsB1()
     {
-        const Simulated s = simulate(dir_.path(), {"--tissue", "liver1", "--frequency-hz", "0.749", "--cycles", "4", "--amplitude-mm", "5.017",
-                                                   "--stick-band-mm-s", "2.8", "--plate-gap-mm", "1.08", "--force-noise-n", "0.0007", "--seed", "150"});
+        QFETCH(QStringList, args);
+        QFETCH(double, wanted);
+        const Simulated s = simulate(dir_.path(), args);
         const double a = agreement(s, nb::suggestLabels(s.blind));
-        QVERIFY2(a >= 0.93, qPrintable(QStringLiteral("agreement %1").arg(a)));
+        QVERIFY2(a >= wanted, qPrintable(QStringLiteral("agreement %1").arg(a)));
     }
 
     // A wide stick band (5.5 mm/s) and a needle at most twice as fast: the force breaks away
