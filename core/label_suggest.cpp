@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -144,11 +145,11 @@ SlidingLine slidingLine(const std::vector<double>& f, const std::vector<double>&
         l.ok = true;
         return l;
     };
+    auto residual = [&](const SlidingLine& l, std::size_t i) { return std::abs(f[i] - l.c0_N - l.b_Ns_per_m * v_mm_s[i] / 1000.0); };
+    auto onLine = [&](const SlidingLine& l) { return [&, l](std::size_t i) { return residual(l, i) <= tolerance_N; }; };
     auto inliers = [&](const SlidingLine& l) {
         std::vector<std::size_t> in;
-        for (std::size_t i : use)
-            if (std::abs(f[i] - l.c0_N - l.b_Ns_per_m * v_mm_s[i] / 1000.0) <= tolerance_N)
-                in.push_back(i);
+        std::copy_if(use.begin(), use.end(), std::back_inserter(in), onLine(l));
         return in;
     };
     SlidingLine mostFollowed, mostFollowedBelowStatic;
@@ -157,7 +158,7 @@ SlidingLine slidingLine(const std::vector<double>& f, const std::vector<double>&
         if (use[s + window - 1] - use[s] != window - 1)
             continue;  // not one stretch of time
         const SlidingLine l = fit(use, s, s + window);
-        const std::size_t count = inliers(l).size();
+        const std::size_t count = std::size_t(std::count_if(use.begin(), use.end(), onLine(l)));
         if (count > most) {
             most = count;
             mostFollowed = l;
@@ -179,7 +180,7 @@ SlidingLine slidingLine(const std::vector<double>& f, const std::vector<double>&
     if (line.ok) {
         std::vector<double> r;
         for (std::size_t i : inliers(line))
-            r.push_back(std::abs(f[i] - line.c0_N - line.b_Ns_per_m * v_mm_s[i] / 1000.0));
+            r.push_back(residual(line, i));
         if (!r.empty()) {
             std::nth_element(r.begin(), r.begin() + std::ptrdiff_t(r.size() / 2), r.end());
             line.rms_N = 1.4826 * r[r.size() / 2];
@@ -188,20 +189,17 @@ SlidingLine slidingLine(const std::vector<double>& f, const std::vector<double>&
     return line;
 }
 
-// The force's noise after the light smoothing of suggestPhaseLabels (about 20 ms): from the
-// second differences of the raw force (a smooth force has almost none, noise σ·√6).
-double smoothedForceNoise(const Run& run)
+// The force's noise after a moving average over `smoothedSamples`: from the second
+// differences of the raw force (a smooth force has almost none, noise σ·√6).
+double smoothedForceNoise(const Run& run, int smoothedSamples)
 {
-    const std::size_t n = run.size();
     std::vector<double> d2;
-    for (std::size_t i = 1; i + 1 < n; ++i)
+    for (std::size_t i = 1; i + 1 < run.size(); ++i)
         d2.push_back(std::abs(run.force_N[i - 1] - 2.0 * run.force_N[i] + run.force_N[i + 1]));
     if (d2.empty())
         return 0.0;
     std::nth_element(d2.begin(), d2.begin() + std::ptrdiff_t(d2.size() / 2), d2.end());
-    const double rate = (n - 1) / std::max(1e-9, run.time_s.back() - run.time_s.front());
-    const double perSample_N = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
-    return perSample_N / std::sqrt(2.0 * std::max(1, int(0.01 * rate)) + 1.0);
+    return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0) / std::sqrt(double(smoothedSamples));
 }
 
 // The needle's position at the first sample at or after `t` (the last sample after the run).
@@ -345,18 +343,16 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                                        : QString();
     // Force less the needle holder's inertia, lightly smoothed.
     const std::size_t n = run.size();
+    const double rate = (n - 1) / std::max(1e-9, run.time_s.back() - run.time_s.front());
+    const int half = std::max(1, int(0.01 * rate));
     std::vector<double> force(n);
-    {
-        const double rate = n > 1 ? (n - 1) / std::max(1e-9, run.time_s.back() - run.time_s.front()) : 1.0;
-        const int half = std::max(1, int(0.01 * rate));
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t a = i >= std::size_t(half) ? i - half : 0, b = std::min(n - 1, i + half);
-            double sum = 0;
-            for (std::size_t k = a; k <= b; ++k)
-                sum += run.force_N[k];
-            const double acc = (v[b] - v[a]) / 1000.0 / std::max(1e-9, run.time_s[b] - run.time_s[a]);
-            force[i] = sum / double(b - a + 1) - kNeedleHolderMass_kg * acc;
-        }
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t a = i >= std::size_t(half) ? i - half : 0, b = std::min(n - 1, i + half);
+        double sum = 0;
+        for (std::size_t k = a; k <= b; ++k)
+            sum += run.force_N[k];
+        const double acc = (v[b] - v[a]) / 1000.0 / std::max(1e-9, run.time_s[b] - run.time_s[a]);
+        force[i] = sum / double(b - a + 1) - kNeedleHolderMass_kg * acc;
     }
     std::optional<FrictionFit> lines = slidingLines(run);
     if (lines) {
@@ -364,9 +360,8 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         for (double x : v)
             fastest = std::max(fastest, std::abs(x));
         const double minSpeed = std::max(1000.0 * lines->bandSlowingDown_m_s / 2.0, 0.2 * fastest);
-        const double rate = (n - 1) / std::max(1e-9, run.time_s.back() - run.time_s.front());
         const std::size_t window = std::max<std::size_t>(10, std::size_t(0.05 * rate));  // 50 ms
-        const double noise_N = smoothedForceNoise(run);
+        const double noise_N = smoothedForceNoise(run, 2 * half + 1);
         const SlidingLine up = slidingLine(force, v, 1, minSpeed, noise_N, window), down = slidingLine(force, v, -1, minSpeed, noise_N, window);
         if (up.ok && down.ok) {
             lines->model.Cp_N = up.c0_N;
