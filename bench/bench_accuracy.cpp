@@ -1,7 +1,9 @@
 // Accuracy of video sync (and, as they land, phases and friction fits) over a matrix drawn
 // at random from a printed seed: `bench_accuracy [--seed N] [--sync-cases N] [--small]
-// [--relax-cases N] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE]` (--case, --phase-case: only sync or phase case N of the
-// draw, to look at one again; --keep leaves each case's run, video and suggested labels there). Prints one line per case and the summary against issue 13's targets.
+// [--relax-cases N] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE] [--rig-friction-true-phases]`
+// (--case, --phase-case: only sync or phase case N of the draw, to look at one again; --keep leaves each case's run,
+// video and suggested labels there; --rig-friction-true-phases gives the rig's friction fits the simulator's own phases,
+// to see what perfect labels would change). Prints one line per case and the summary against issue 13's targets.
 #include "video/accuracy_matrix.h"
 #include "video/phase_matrix.h"
 #include "video/relax_matrix.h"
@@ -11,6 +13,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QMap>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTextStream>
@@ -131,15 +134,20 @@ void writeRigFrictionDetails(QTextStream& t, unsigned seed, std::size_t set, con
     }
 }
 
-void printRigFriction(QTextStream& out, unsigned seed, int count, const QString& root, QTextStream* details)
+void printRigFriction(QTextStream& out, unsigned seed, int count, const QString& root, QTextStream* details, bool truePhases)
 {
-    out << "\n== friction on the simulated rig: one slab at three frequencies, force and position only\n";
+    out << (truePhases ? "\n== friction on the simulated rig: one slab at three frequencies, with the simulator's own phases (perfect labels)\n"
+                       : "\n== friction on the simulated rig: one slab at three frequencies, force and position only\n");
     std::mt19937 rng(seed + 1u);
     std::vector<double> runC, runB, lineC, lineB;
     int failed = 0, offRuns = 0, offFlagged = 0, noLine = 0;
+    // Which slab and direction the misses nobody flagged come from (a pattern there is a limit
+    // of the method, scattered misses a defect).
+    QMap<QString, int> unflaggedBy;
     const auto sets = nb::accuracy::drawRigFrictionSets(rng, count);
     for (std::size_t i = 0; i < sets.size(); ++i) {
-        const auto o = nb::accuracy::runRigFrictionSet(sets[i], QStringLiteral(NB_EXECUTABLE), QDir(root).filePath(QStringLiteral("rigfriction%1").arg(i)));
+        const auto o = nb::accuracy::runRigFrictionSet(sets[i], QStringLiteral(NB_EXECUTABLE), QDir(root).filePath(QStringLiteral("rigfriction%1").arg(i)),
+                                                       truePhases);
         if (!o.ok) {
             ++failed;
             out << QStringLiteral("  %1  FAILED %2: %3\n").arg(i, 2).arg(sets[i].describe(), o.problem);
@@ -154,6 +162,13 @@ void printRigFriction(QTextStream& out, unsigned seed, int count, const QString&
             if (o.runErrC[k] > 0.05 || o.runErrB[k] > 0.15) {
                 ++offRuns;
                 offFlagged += o.runDeparts[k] || o.runFlagged[k];
+                if (!o.runDeparts[k] && !o.runFlagged[k]) {
+                    const nb::KarnoppPerLength& f = o.fits[k].perLength;
+                    auto rel = [](double got, double want) { return std::fabs(got - want) / std::fabs(want); };
+                    const bool plus = rel(f.Cp_N_per_m, o.truth.Cp_N_per_m) > 0.05 || rel(f.bp_Ns_per_m2, o.truth.bp_Ns_per_m2) > 0.15;
+                    const bool minus = rel(f.Cn_N_per_m, o.truth.Cn_N_per_m) > 0.05 || rel(f.bn_Ns_per_m2, o.truth.bn_Ns_per_m2) > 0.15;
+                    ++unflaggedBy[sets[i].tissue + (plus && minus ? QStringLiteral(" +/-") : plus ? QStringLiteral(" +") : QStringLiteral(" -"))];
+                }
             }
             runs += QStringLiteral(" %1/%2%3%4").arg(100 * o.runErrC[k], 0, 'f', 1).arg(100 * o.runErrB[k], 0, 'f', 1)
                         .arg(o.runDeparts[k] ? QStringLiteral("*") : QString(), o.runFlagged[k] ? QStringLiteral("!") : QString());
@@ -180,6 +195,12 @@ void printRigFriction(QTextStream& out, unsigned seed, int count, const QString&
                .arg(quantile(runC, 0.5), 0, 'f', 2).arg(quantile(runC, 1.0), 0, 'f', 2)
                .arg(quantile(runB, 0.5), 0, 'f', 2).arg(quantile(runB, 1.0), 0, 'f', 2)
                .arg(offRuns).arg(offFlagged);
+    if (!unflaggedBy.isEmpty()) {
+        QStringList by;
+        for (auto it = unflaggedBy.cbegin(); it != unflaggedBy.cend(); ++it)
+            by << QStringLiteral("%1 in %2").arg(it.value()).arg(it.key());
+        out << QStringLiteral("  not flagged, by slab and direction of motion: %1\n").arg(by.join(QStringLiteral(", ")));
+    }
     out << "targets: C within 5 %, b within 15 %\n";
 }
 
@@ -191,7 +212,7 @@ int main(int argc, char** argv)
     const QStringList a = app.arguments();
     unsigned seed = unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000);
     int syncCases = 20, frictionCases = 24, phaseCases = 24, rigFrictionSets = 8, relaxCases = 12;
-    bool small = false;
+    bool small = false, rigTruePhases = false;
     int onlyCase = -1, onlyPhaseCase = -1;
     QString keep, details;
     for (int i = 1; i < a.size(); ++i) {
@@ -211,6 +232,8 @@ int main(int argc, char** argv)
             onlyCase = a[++i].toInt();
         else if (a[i] == QLatin1String("--phase-case") && i + 1 < a.size())
             onlyPhaseCase = a[++i].toInt();
+        else if (a[i] == QLatin1String("--rig-friction-true-phases"))
+            rigTruePhases = true;
         else if (a[i] == QLatin1String("--small"))
             small = true;
         else if (a[i] == QLatin1String("--keep") && i + 1 < a.size())
@@ -218,7 +241,7 @@ int main(int argc, char** argv)
         else if (a[i] == QLatin1String("--rig-friction-details") && i + 1 < a.size())
             details = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--relax-cases N] [--small] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--relax-cases N] [--small] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE] [--rig-friction-true-phases]\n");
             return 2;
         }
     }
@@ -309,7 +332,7 @@ int main(int argc, char** argv)
                            "C_error\tb_error\tflagged\tsliding_from_m_s\tsliding_to_m_s\tspring_back_s\tresidual_to_noise\tse_b_over_b\t"
                            "se_C_over_C\tband_m_s\tband_slowing_down_m_s\tsamples\tC_N\tb_Ns_per_m\tC_shift_if_bent\n";
     }
-    printRigFriction(out, seed, rigFrictionSets, root, detailsOut ? &*detailsOut : nullptr);
+    printRigFriction(out, seed, rigFrictionSets, root, detailsOut ? &*detailsOut : nullptr, rigTruePhases);
     printRelaxMatrix(out, seed, relaxCases, small, root);
     return 0;
 }

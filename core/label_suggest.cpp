@@ -253,6 +253,9 @@ PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::s
 }
 
 constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
+// Clear readings a picture needs where the force is plain before it may overrule the force: one
+// that gives fewer (its noise above a slow needle's motion) is unchecked, not trusted.
+constexpr int kMinJudged = 10;
 
 // The sliding lines F = C + b·v of the run (friction_fit.h, its band found in the data, no
 // phases used); nullopt when the fit fails.
@@ -334,7 +337,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             agreed += p == QLatin1String("a") ? carried : resting;
             physical += carried || resting;
         }
-        videoTrusted = judged < 10 || agreed >= 0.9 * judged || physical >= 0.9 * judged;
+        videoTrusted = judged >= kMinJudged && (agreed >= 0.9 * judged || physical >= 0.9 * judged);
     }
     const double frameHalf_s = tissue && tissue->time_s.size() > 1
                                    ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)

@@ -52,7 +52,7 @@ std::vector<RigFrictionSet> drawRigFrictionSets(std::mt19937& rng, int count)
     return sets;
 }
 
-RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& executable, const QString& workDir)
+RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& executable, const QString& workDir, bool withTruePhases)
 {
     RigFrictionOutcome out;
     QDir().mkpath(workDir);
@@ -87,12 +87,17 @@ RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& e
             truth = {f.value(QStringLiteral("Cp_N_per_m")).toDouble(), f.value(QStringLiteral("Cn_N_per_m")).toDouble(),
                      f.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), f.value(QStringLiteral("bn_Ns_per_m2")).toDouble(),
                      f.value(QStringLiteral("Dp_N_per_m")).toDouble(), f.value(QStringLiteral("Dn_N_per_m")).toDouble()};
-            const Run blind = nbtest::withoutTruthColumns(readRunFile(runPath).run);
+            const Run recorded = readRunFile(runPath).run;
+            const QStringList truePhases = withTruePhases && recorded.textColumn(QStringLiteral("phase"))
+                                               ? QStringList(recorded.textColumn(QStringLiteral("phase"))->begin(),
+                                                             recorded.textColumn(QStringLiteral("phase"))->end())
+                                               : QStringList();
+            const Run blind = nbtest::withoutTruthColumns(recorded);
             FrictionOptions o;
             o.thickness_mm = model.value(QStringLiteral("thickness_mm")).toDouble(30.0);
             thickness_m = o.thickness_mm / 1000.0;
             o.estimateBand = true;
-            fits.push_back(fitFriction(blind, o));
+            fits.push_back(fitFriction(blind, o, truePhases));
         }
     } catch (const FitError& e) {
         out.problem = e.message();

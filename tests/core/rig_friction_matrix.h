@@ -43,6 +43,9 @@ struct RigFrictionOutcome {
 };
 
 std::vector<RigFrictionSet> drawRigFrictionSets(std::mt19937& rng, int count);
-RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& executable, const QString& workDir);
+// withTruePhases: the fit is given the simulator's own phases (C and b from phase c as the thesis
+// labelled it from the video), to see what perfect labels change; otherwise force and position only.
+RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& executable, const QString& workDir,
+                                     bool withTruePhases = false);
 
 }  // namespace nb::accuracy
