@@ -611,6 +611,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // of a pixel per frame, too little to judge frame by frame.
             std::optional<std::pair<double, double>> aWindow, cWindow;
             std::optional<double> firstBehind, pendingBehind, pendingRest;
+            double pendingBehindEnd_s = t0;  // where the frames of the pending reading end
             bool followed = false, measured = false, anyClear = false, wasNotResting = false;
             double lastFollow = t0, lastMoving = t0, lastClearFollow = t0;
             const double frame_s = 2.0 * frameHalf_s;
@@ -640,13 +641,17 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // the displacement since the turning point.
                 const bool clear = r.clear && vn > 0.0;
                 anyClear |= clear;
-                // Two readings in a row decide: one may be a repeated or garbled frame.
+                // Two readings in a row decide: one may be a repeated or garbled frame. Readings
+                // summed over a few pairs share frames, and one repeated frame pulls down each
+                // reading that holds it, so the second must be over frames of its own.
                 if (!firstBehind) {
                     if ((clear && vtk < 0.5 * vn) || shortfall_mm > noise_mm + 0.4 * needle_mm) {
-                        if (pendingBehind)
+                        if (pendingBehind && r.from_s >= pendingBehindEnd_s - 1e-9) {
                             firstBehind = pendingBehind;
-                        else
+                        } else if (!pendingBehind) {
                             pendingBehind = at_s + frameHalf_s;
+                            pendingBehindEnd_s = r.to_s;
+                        }
                     } else if ((clear && vtk >= 0.8 * vn) || (needle_mm > 0.0 && shortfall_mm <= noise_mm + 0.15 * needle_mm)) {
                         followed = true;
                         lastFollow = at_s + frameHalf_s;

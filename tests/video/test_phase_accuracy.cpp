@@ -90,6 +90,10 @@ private slots:
         // that for the tissue falling behind, and called the whole stroke b1 (84.3 %, the
         // force alone 90.7 %).
         QTest::newRow("seed 660251 case 10: burnt-in counter, slow strokes") << 660251u << 10;
+        // 0.10 Hz, a picture that drops and repeats frames: in the last stroke the tissue floats
+        // in the plate gap, carried. Two readings in a row read it falling behind, but they
+        // were summed over the same repeated frame, and the stroke became b1 for 1.5 s (89.8 %).
+        QTest::newRow("seed 608326 case 17: repeated frames, tissue carried to the end") << 608326u << 17;
     }
 
     void slowNeedleInAPoorPicture()
