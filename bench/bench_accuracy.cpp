@@ -104,13 +104,15 @@ void printRelaxMatrix(QTextStream& out, unsigned seed, int count, bool small, co
                .arg(withoutVideo);
 }
 
+double relativeError(double got, double want) { return std::fabs(got - want) / std::fabs(want); }
+
 // The simulated rig's own friction runs (its own generator, so the draws above stay as they were).
 // One row per run and direction: the fit's own figures beside its errors against the slab's truth,
 // to see which of them tell a wrong C or b (--rig-friction-details FILE).
 void writeRigFrictionDetails(QTextStream& t, unsigned seed, std::size_t set, const nb::accuracy::RigFrictionSet& s,
                              const nb::accuracy::RigFrictionOutcome& o)
 {
-    auto rel = [](double got, double want) { return std::fabs(got - want) / std::fabs(want); };
+    const auto rel = relativeError;
     for (std::size_t k = 0; k < o.fits.size(); ++k) {
         const nb::FrictionFit& f = o.fits[k];
         for (int d : {0, 1}) {
@@ -164,7 +166,7 @@ void printRigFriction(QTextStream& out, unsigned seed, int count, const QString&
                 offFlagged += o.runDeparts[k] || o.runFlagged[k];
                 if (!o.runDeparts[k] && !o.runFlagged[k]) {
                     const nb::KarnoppPerLength& f = o.fits[k].perLength;
-                    auto rel = [](double got, double want) { return std::fabs(got - want) / std::fabs(want); };
+                    const auto rel = relativeError;
                     const bool plus = rel(f.Cp_N_per_m, o.truth.Cp_N_per_m) > 0.05 || rel(f.bp_Ns_per_m2, o.truth.bp_Ns_per_m2) > 0.15;
                     const bool minus = rel(f.Cn_N_per_m, o.truth.Cn_N_per_m) > 0.05 || rel(f.bn_Ns_per_m2, o.truth.bn_Ns_per_m2) > 0.15;
                     ++unflaggedBy[sets[i].tissue + (plus && minus ? QStringLiteral(" +/-") : plus ? QStringLiteral(" +") : QStringLiteral(" -"))];

@@ -87,17 +87,14 @@ RigFrictionOutcome runRigFrictionSet(const RigFrictionSet& set, const QString& e
             truth = {f.value(QStringLiteral("Cp_N_per_m")).toDouble(), f.value(QStringLiteral("Cn_N_per_m")).toDouble(),
                      f.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), f.value(QStringLiteral("bn_Ns_per_m2")).toDouble(),
                      f.value(QStringLiteral("Dp_N_per_m")).toDouble(), f.value(QStringLiteral("Dn_N_per_m")).toDouble()};
+            // fitFriction takes C and b from phase c of a run's own `phase` column.
             const Run recorded = readRunFile(runPath).run;
-            const QStringList truePhases = withTruePhases && recorded.textColumn(QStringLiteral("phase"))
-                                               ? QStringList(recorded.textColumn(QStringLiteral("phase"))->begin(),
-                                                             recorded.textColumn(QStringLiteral("phase"))->end())
-                                               : QStringList();
-            const Run blind = nbtest::withoutTruthColumns(recorded);
+            const Run seen = withTruePhases ? recorded : nbtest::withoutTruthColumns(recorded);
             FrictionOptions o;
             o.thickness_mm = model.value(QStringLiteral("thickness_mm")).toDouble(30.0);
             thickness_m = o.thickness_mm / 1000.0;
             o.estimateBand = true;
-            fits.push_back(fitFriction(blind, o, truePhases));
+            fits.push_back(fitFriction(seen, o));
         }
     } catch (const FitError& e) {
         out.problem = e.message();
