@@ -358,6 +358,20 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         force[i] = sum / double(b - a + 1) - kNeedleHolderMass_kg * acc;
     }
     std::optional<FrictionFit> lines = slidingLines(run);
+    // A direction whose needle never leaves the zero band holds the force at static friction
+    // once the tissue meets the plate: the fitted line is flat, at D (it changes by less than
+    // 5 % over the speeds), and the tissue, stuck again against the plate for a moment, lets
+    // the force dip below it.
+    bool held[2] = {false, false};
+    double heldLevel_N[2] = {0.0, 0.0};
+    if (lines) {
+        const double c[2] = {lines->model.Cp_N, lines->model.Cn_N}, b[2] = {lines->model.bp_Ns_per_m, lines->model.bn_Ns_per_m};
+        const double top[2] = {lines->slidingToP_m_s, lines->slidingToN_m_s};
+        for (int d : {0, 1}) {
+            heldLevel_N[d] = c[d] + b[d] * top[d];
+            held[d] = heldLevel_N[d] > 0.0 && std::abs(b[d]) * top[d] <= 0.05 * heldLevel_N[d];
+        }
+    }
     if (lines) {
         double fastest = 0.0;
         for (double x : v)
@@ -372,6 +386,16 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             lines->model.Cn_N = -down.c0_N;
             lines->model.bn_Ns_per_m = down.b_Ns_per_m;
             lines->rms_N = std::max(up.rms_N, down.rms_N);
+        }
+        // A held direction's line is the force held at D, flat. Where the search for lines
+        // finds none with C > 0 there, what it found is the rise to the plate.
+        if (held[0] && !(lines->model.Cp_N > 0.0)) {
+            lines->model.Cp_N = heldLevel_N[0];
+            lines->model.bp_Ns_per_m = 0.0;
+        }
+        if (held[1] && !(lines->model.Cn_N > 0.0)) {
+            lines->model.Cn_N = heldLevel_N[1];
+            lines->model.bn_Ns_per_m = 0.0;
         }
     }
     const QString forceSource = lines ? QStringLiteral("suggested from force and position")
@@ -461,6 +485,8 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     off = 0;
                     onLine = true;
                     cStart = i - 1;
+                } else if (held[h.direction > 0 ? 0 : 1] && off_N >= -0.5 * std::abs(line(i - 1))) {
+                    continue;  // stuck again against the plate for a moment: still at rest there
                 } else if (onLine && ++off >= 5) {
                     break;
                 }
