@@ -570,8 +570,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 double top = 0.0;
                 while (start > h.start && level(start - 1) >= 0.5 * lowest)
                     top = std::max(top, level(--start));
+                // Low: the tissue carried, near zero force; not the push of the plate left behind
+                // at the turning point (the other direction's sign).
                 std::size_t low = 0;
-                for (std::size_t i = start; i > h.start && level(i - 1) < 0.5 * lowest; --i)
+                for (std::size_t i = start; i > h.start && level(i - 1) < 0.5 * lowest && level(i - 1) > -0.2; --i)
                     ++low;
                 std::size_t reached = start;
                 while (reached < climb && level(reached) < 0.9 * top)
