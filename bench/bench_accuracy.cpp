@@ -1,9 +1,10 @@
 // Accuracy of video sync (and, as they land, phases and friction fits) over a matrix drawn
 // at random from a printed seed: `bench_accuracy [--seed N] [--sync-cases N] [--small]
-// [--relax-cases N] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE] [--rig-friction-true-phases]`
+// [--relax-cases N] [--case N] [--phase-case N] [--phase-thickness-mm LO:HI] [--keep DIR] [--rig-friction-details FILE] [--rig-friction-true-phases]`
 // (--case, --phase-case: only sync or phase case N of the draw, to look at one again; --keep leaves each case's run,
 // video and suggested labels there; --rig-friction-true-phases gives the rig's friction fits the simulator's own phases,
-// to see what perfect labels would change). Prints one line per case and the summary against issue 13's targets.
+// to see what perfect labels would change; --phase-thickness-mm draws each phase case's slab thickness, 30 mm
+// without it). Prints one line per case and the summary against issue 13's targets.
 #include "video/accuracy_matrix.h"
 #include "video/phase_matrix.h"
 #include "video/relax_matrix.h"
@@ -29,13 +30,22 @@ namespace {
 
 // Phase agreement per case, without and with the video (tests/video/phase_matrix.h). Its own
 // generator (from the same seed), so that its draw does not depend on the other sections'.
-void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString& root, int onlyCase)
+// `thickness_mm`: when set, each slab's thickness is drawn from [first, second] with a
+// generator of its own, so the rest of every case is the draw without it.
+void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString& root, int onlyCase,
+                      std::optional<std::pair<double, double>> thickness_mm)
 {
     out << "\n== phases: simulated friction runs, truth hidden from the suggestion (agreement per sample, without / with video)\n";
     std::mt19937 rng(seed ^ 0x9e3779b9u);
     std::vector<double> without, with;
     int failed = 0, unread = 0;
-    const std::vector<PhaseMatrixCase> cases = drawPhaseMatrix(rng, count, false);
+    std::vector<PhaseMatrixCase> cases = drawPhaseMatrix(rng, count, false);
+    if (thickness_mm) {
+        std::mt19937 slabs(seed ^ 0x5bd1e995u);
+        std::uniform_real_distribution<double> t(thickness_mm->first, thickness_mm->second);
+        for (PhaseMatrixCase& c : cases)
+            c.thickness_mm = t(slabs);
+    }
     for (std::size_t i = 0; i < cases.size(); ++i) {
         if (onlyCase >= 0 && int(i) != onlyCase)
             continue;  // the same draw: one case of it again
@@ -216,6 +226,7 @@ int main(int argc, char** argv)
     int syncCases = 20, frictionCases = 24, phaseCases = 24, rigFrictionSets = 8, relaxCases = 12;
     bool small = false, rigTruePhases = false;
     int onlyCase = -1, onlyPhaseCase = -1;
+    std::optional<std::pair<double, double>> phaseThickness;
     QString keep, details;
     for (int i = 1; i < a.size(); ++i) {
         if (a[i] == QLatin1String("--seed") && i + 1 < a.size())
@@ -234,7 +245,16 @@ int main(int argc, char** argv)
             onlyCase = a[++i].toInt();
         else if (a[i] == QLatin1String("--phase-case") && i + 1 < a.size())
             onlyPhaseCase = a[++i].toInt();
-        else if (a[i] == QLatin1String("--rig-friction-true-phases"))
+        else if (a[i] == QLatin1String("--phase-thickness-mm") && i + 1 < a.size()) {
+            const QStringList range = a[++i].split(QLatin1Char(':'));
+            bool okLo = false, okHi = false;
+            const double lo = range.value(0).toDouble(&okLo), hi = range.value(1).toDouble(&okHi);
+            if (range.size() != 2 || !okLo || !okHi || !(lo > 0.0) || !(hi >= lo)) {
+                std::fprintf(stderr, "bench_accuracy: --phase-thickness-mm wants LO:HI in mm, e.g. 10:30\n");
+                return 2;
+            }
+            phaseThickness = std::pair{lo, hi};
+        } else if (a[i] == QLatin1String("--rig-friction-true-phases"))
             rigTruePhases = true;
         else if (a[i] == QLatin1String("--small"))
             small = true;
@@ -243,7 +263,7 @@ int main(int argc, char** argv)
         else if (a[i] == QLatin1String("--rig-friction-details") && i + 1 < a.size())
             details = a[++i];
         else {
-            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--relax-cases N] [--small] [--case N] [--phase-case N] [--keep DIR] [--rig-friction-details FILE] [--rig-friction-true-phases]\n");
+            std::fprintf(stderr, "usage: bench_accuracy [--seed N] [--sync-cases N] [--friction-cases N] [--rig-friction-sets N] [--phase-cases N] [--relax-cases N] [--small] [--case N] [--phase-case N] [--phase-thickness-mm LO:HI] [--keep DIR] [--rig-friction-details FILE] [--rig-friction-true-phases]\n");
             return 2;
         }
     }
@@ -296,7 +316,7 @@ int main(int argc, char** argv)
                .arg(misses).arg(honestMisses);
     out << "targets: within 1 frame >= 95 %, within 2 frames 100 %, every miss below the threshold\n";
 
-    printPhaseMatrix(out, seed, phaseCases, root, onlyPhaseCase);
+    printPhaseMatrix(out, seed, phaseCases, root, onlyPhaseCase, phaseThickness);
 
     out << "\n== friction: synthetic Karnopp runs, band found by the fit (no phases given)\n";
     std::vector<double> errC, errB;

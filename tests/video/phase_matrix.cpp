@@ -122,7 +122,8 @@ QString PhaseMatrixCase::describe() const
         .arg(stickBand_mm_s, 0, 'f', 1)
         .arg(plateGap_mm, 0, 'f', 2)
         .arg(forceNoise_N, 0, 'f', 4)
-        .arg(phaseLookName(look), codecName(codec));
+        .arg(phaseLookName(look), codecName(codec))
+        + (thickness_mm != 30.0 ? QStringLiteral(", slab %1 mm").arg(thickness_mm, 0, 'f', 1) : QString());
 }
 
 std::vector<PhaseMatrixCase> drawPhaseMatrix(std::mt19937& rng, int count, bool small)
@@ -169,6 +170,7 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
                            QStringLiteral("--stick-band-mm-s"), QString::number(c.stickBand_mm_s, 'f', 3),
                            QStringLiteral("--plate-gap-mm"), QString::number(c.plateGap_mm, 'f', 3),
                            QStringLiteral("--force-noise-n"), QString::number(c.forceNoise_N, 'f', 5),
+                           QStringLiteral("--thickness-mm"), QString::number(c.thickness_mm, 'f', 2),
                            QStringLiteral("--cycles"), QString::number(c.cycles), QStringLiteral("--seed"), QString::number(c.seed % 1000 + 1)};
     if (const QString e = runSimulate(args, executable, runPath); !e.isEmpty()) {
         out.problem = e;

@@ -23,6 +23,7 @@ struct PhaseMatrixCase {
     double stickBand_mm_s = 2.5;   // ± of the zero band
     double plateGap_mm = 1.5;
     double forceNoise_N = 0.0012;
+    double thickness_mm = 30.0;    // the slab (not drawn by drawPhaseMatrix: the simulator's default)
     QString tissue = QStringLiteral("liver7");
     int cycles = 3;
     Look look = Look::Rendered;
