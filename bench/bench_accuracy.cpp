@@ -122,7 +122,6 @@ double relativeError(double got, double want) { return std::fabs(got - want) / s
 void writeRigFrictionDetails(QTextStream& t, unsigned seed, std::size_t set, const nb::accuracy::RigFrictionSet& s,
                              const nb::accuracy::RigFrictionOutcome& o)
 {
-    const auto rel = relativeError;
     for (std::size_t k = 0; k < o.fits.size(); ++k) {
         const nb::FrictionFit& f = o.fits[k];
         for (int d : {0, 1}) {
@@ -132,8 +131,8 @@ void writeRigFrictionDetails(QTextStream& t, unsigned seed, std::size_t set, con
             t << seed << '\t' << set << '\t' << k << '\t' << (p ? "+" : "-") << '\t' << s.tissue << '\t'
               << s.frequencies_hz[k] << '\t' << s.amplitude_mm << '\t' << s.stickBand_mm_s << '\t' << s.plateGap_mm << '\t'
               << s.forceNoise_N << '\t'
-              << rel(p ? f.perLength.Cp_N_per_m : f.perLength.Cn_N_per_m, p ? o.truth.Cp_N_per_m : o.truth.Cn_N_per_m) << '\t'
-              << rel(p ? f.perLength.bp_Ns_per_m2 : f.perLength.bn_Ns_per_m2, p ? o.truth.bp_Ns_per_m2 : o.truth.bn_Ns_per_m2) << '\t'
+              << relativeError(p ? f.perLength.Cp_N_per_m : f.perLength.Cn_N_per_m, p ? o.truth.Cp_N_per_m : o.truth.Cn_N_per_m) << '\t'
+              << relativeError(p ? f.perLength.bp_Ns_per_m2 : f.perLength.bn_Ns_per_m2, p ? o.truth.bp_Ns_per_m2 : o.truth.bn_Ns_per_m2) << '\t'
               << (f.notPhysicalValues.contains(QLatin1String(c)) || f.notPhysicalValues.contains(QLatin1String(b))) << '\t'
               << (p ? f.slidingFromP_m_s : f.slidingFromN_m_s) << '\t' << (p ? f.slidingToP_m_s : f.slidingToN_m_s) << '\t'
               << (p ? f.springBackP_s : f.springBackN_s) << '\t' << (p ? f.residualToNoiseP : f.residualToNoiseN) << '\t'
@@ -176,9 +175,8 @@ void printRigFriction(QTextStream& out, unsigned seed, int count, const QString&
                 offFlagged += o.runDeparts[k] || o.runFlagged[k];
                 if (!o.runDeparts[k] && !o.runFlagged[k]) {
                     const nb::KarnoppPerLength& f = o.fits[k].perLength;
-                    const auto rel = relativeError;
-                    const bool plus = rel(f.Cp_N_per_m, o.truth.Cp_N_per_m) > 0.05 || rel(f.bp_Ns_per_m2, o.truth.bp_Ns_per_m2) > 0.15;
-                    const bool minus = rel(f.Cn_N_per_m, o.truth.Cn_N_per_m) > 0.05 || rel(f.bn_Ns_per_m2, o.truth.bn_Ns_per_m2) > 0.15;
+                    const bool plus = relativeError(f.Cp_N_per_m, o.truth.Cp_N_per_m) > 0.05 || relativeError(f.bp_Ns_per_m2, o.truth.bp_Ns_per_m2) > 0.15;
+                    const bool minus = relativeError(f.Cn_N_per_m, o.truth.Cn_N_per_m) > 0.05 || relativeError(f.bn_Ns_per_m2, o.truth.bn_Ns_per_m2) > 0.15;
                     ++unflaggedBy[sets[i].tissue + (plus && minus ? QStringLiteral(" +/-") : plus ? QStringLiteral(" +") : QStringLiteral(" -"))];
                 }
             }

@@ -371,8 +371,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             heldLevel_N[d] = c[d] + b[d] * top[d];
             held[d] = heldLevel_N[d] > 0.0 && std::abs(b[d]) * top[d] <= 0.05 * heldLevel_N[d];
         }
-    }
-    if (lines) {
         double fastest = 0.0;
         for (double x : v)
             fastest = std::max(fastest, std::abs(x));
