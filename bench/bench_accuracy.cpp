@@ -30,8 +30,8 @@ namespace {
 
 // Phase agreement per case, without and with the video (tests/video/phase_matrix.h). Its own
 // generator (from the same seed), so that its draw does not depend on the other sections'.
-// `thickness_mm`: when set, each slab's thickness is drawn from [first, second] with a
-// generator of its own, so the rest of every case is the draw without it.
+// `thickness_mm`: when set, each slab's thickness is drawn from [first, second]
+// (drawSlabThicknesses).
 void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString& root, int onlyCase,
                       std::optional<std::pair<double, double>> thickness_mm)
 {
@@ -40,12 +40,8 @@ void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString&
     std::vector<double> without, with;
     int failed = 0, unread = 0;
     std::vector<PhaseMatrixCase> cases = drawPhaseMatrix(rng, count, false);
-    if (thickness_mm) {
-        std::mt19937 slabs(seed ^ 0x5bd1e995u);
-        std::uniform_real_distribution<double> t(thickness_mm->first, thickness_mm->second);
-        for (PhaseMatrixCase& c : cases)
-            c.thickness_mm = t(slabs);
-    }
+    if (thickness_mm)
+        drawSlabThicknesses(cases, seed, thickness_mm->first, thickness_mm->second);
     for (std::size_t i = 0; i < cases.size(); ++i) {
         if (onlyCase >= 0 && int(i) != onlyCase)
             continue;  // the same draw: one case of it again

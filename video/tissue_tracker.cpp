@@ -20,6 +20,13 @@ constexpr int kBackgroundFrames = 41; // frames whose median is the static backg
 // this scale (in the working picture) before matching, heavy noise no longer decides the
 // match, while the texture still does.
 constexpr double kTextureBlur_px = 3.0;
+// ...and finer than this: coarser brightness (the tissue's bright body, the smeared copies of
+// its outline that the mean background leaves where it rests longest) is taken away too.
+// Under the match's window, which tapers the picture towards its edges and does not move,
+// such brightness becomes a pattern that stays put and pulls the match towards zero shift;
+// a thin slab has too little texture to outvote it (a 13 mm slab read at rest while it was
+// carried at 10 mm/s).
+constexpr double kCoarse_px = 8.0;
 constexpr double kScaleSpan_s = 0.2;  // stretch of video over which the scale is read
 
 cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
@@ -122,6 +129,9 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         cv::max(image, -clip, image);
         // The picture's own noise changes every frame; the tissue's texture does not.
         cv::GaussianBlur(image, image, cv::Size(0, 0), kTextureBlur_px);
+        cv::Mat coarse;
+        cv::GaussianBlur(image, coarse, cv::Size(0, 0), kCoarse_px);
+        image -= coarse;
         const double t = index.frames[std::size_t(i)].time_s;
         if (window.empty())
             cv::createHanningWindow(window, image.size(), CV_32F);

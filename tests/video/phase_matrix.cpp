@@ -126,6 +126,14 @@ QString PhaseMatrixCase::describe() const
         + (thickness_mm != 30.0 ? QStringLiteral(", slab %1 mm").arg(thickness_mm, 0, 'f', 1) : QString());
 }
 
+void drawSlabThicknesses(std::vector<PhaseMatrixCase>& cases, unsigned seed, double lo_mm, double hi_mm)
+{
+    std::mt19937 slabs(seed ^ 0x5bd1e995u);
+    std::uniform_real_distribution<double> t(lo_mm, hi_mm);
+    for (PhaseMatrixCase& c : cases)
+        c.thickness_mm = t(slabs);
+}
+
 std::vector<PhaseMatrixCase> drawPhaseMatrix(std::mt19937& rng, int count, bool small)
 {
     std::uniform_real_distribution<double> u(0.0, 1.0);

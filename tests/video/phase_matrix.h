@@ -47,6 +47,10 @@ struct PhaseMatrixOutcome {
 
 // `small`: smaller pictures (for the ctest).
 std::vector<PhaseMatrixCase> drawPhaseMatrix(std::mt19937& rng, int count, bool small);
+// Each case's slab thickness drawn from [lo_mm, hi_mm] with a generator of its own (from the
+// matrix's seed), so that the rest of every case is the draw without it
+// (bench_accuracy --phase-thickness-mm).
+void drawSlabThicknesses(std::vector<PhaseMatrixCase>& cases, unsigned seed, double lo_mm, double hi_mm);
 PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& executable, const QString& workDir);
 
 }  // namespace nb::accuracy
