@@ -46,6 +46,20 @@ void checkWithVideo(const PhaseMatrixCase& c, const QString& source = QStringLit
     QVERIFY2(o.withVideo >= 0.9, qPrintable(QStringLiteral("with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
 }
 
+// The current row's drawn case (columns `seed` and `index`), checked with its video.
+void checkDrawnRow(const std::function<bool(const PhaseMatrixCase&)>& stillTheCase,
+                   const QString& source = QStringLiteral("suggested from the tissue's motion"),
+                   std::optional<std::pair<double, double>> slabs_mm = {})
+{
+    QFETCH(unsigned, seed);
+    QFETCH(int, index);
+    if (!nb::test::haveFfmpeg())
+        QSKIP("the ffmpeg tool is needed to encode the videos");
+    PhaseMatrixCase c;
+    QVERIFY2(drawnCase(seed, index, stillTheCase, c, slabs_mm), qPrintable(c.describe()));
+    checkWithVideo(c, source);
+}
+
 }  // namespace
 
 class TestPhaseAccuracy : public QObject {
@@ -103,13 +117,7 @@ private slots:
 
     void slowNeedleInAPoorPicture()
     {
-        QFETCH(unsigned, seed);
-        QFETCH(int, index);
-        if (!nb::test::haveFfmpeg())
-            QSKIP("the ffmpeg tool is needed to encode the videos");
-        PhaseMatrixCase c;
-        QVERIFY2(drawnCase(seed, index, [](const PhaseMatrixCase& d) { return d.frequency_hz < 0.21; }, c), qPrintable(c.describe()));
-        checkWithVideo(c);
+        checkDrawnRow([](const PhaseMatrixCase& d) { return d.frequency_hz < 0.21; });
     }
 
     // Drawn by bench_accuracy --seed 608326 (case 21): liver5 at 0.13 Hz, a blurred picture with
@@ -142,14 +150,7 @@ private slots:
 
     void shortSlideAtTheTurn()
     {
-        QFETCH(unsigned, seed);
-        QFETCH(int, index);
-        if (!nb::test::haveFfmpeg())
-            QSKIP("the ffmpeg tool is needed to encode the videos");
-        PhaseMatrixCase c;
-        QVERIFY2(drawnCase(seed, index, [](const PhaseMatrixCase& d) { return d.plateGap_mm > 0.65 * d.amplitude_mm; }, c),
-                 qPrintable(c.describe()));
-        checkWithVideo(c);
+        checkDrawnRow([](const PhaseMatrixCase& d) { return d.plateGap_mm > 0.65 * d.amplitude_mm; });
     }
 
     // Thin slabs, drawn by bench_accuracy --phase-thickness-mm 10:30. The slab fills a seventh
@@ -170,14 +171,8 @@ private slots:
 
     void thinSlabPicture()
     {
-        QFETCH(unsigned, seed);
-        QFETCH(int, index);
-        if (!nb::test::haveFfmpeg())
-            QSKIP("the ffmpeg tool is needed to encode the videos");
-        PhaseMatrixCase c;
-        QVERIFY2(drawnCase(seed, index, [](const PhaseMatrixCase& d) { return d.thickness_mm < 16.0; }, c, std::pair{10.0, 30.0}),
-                 qPrintable(c.describe()));
-        checkWithVideo(c, QStringLiteral("suggested from"));
+        checkDrawnRow([](const PhaseMatrixCase& d) { return d.thickness_mm < 16.0; }, QStringLiteral("suggested from"),
+                      std::pair{10.0, 30.0});
     }
 };
 
