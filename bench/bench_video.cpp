@@ -1,5 +1,6 @@
 // Frame-exact seeking against OpenCV's plain seek (CAP_PROP_POS_FRAMES) on the same file in
-// the same run, and one-frame-back steps from the cache.
+// the same run, one-frame-back steps from the cache, and the tissue tracker's pass over every
+// frame against decoding alone.
 //   bench_video [FILE]   (without FILE: makes a 640x480 H.264 file, keyframes 90 apart,
 //                         B-frames, with the ffmpeg tool)
 //   bench_video --hour   indexes a real one-hour 640x480 H.264 video at 30 frames/s (made
@@ -8,6 +9,7 @@
 #include "video/frame_index_store.h"
 #include "video/frame_reader.h"
 #include "video/packet_index.h"
+#include "video/tissue_tracker.h"
 #include "video/video_error.h"
 
 #include <QCoreApplication>
@@ -202,6 +204,25 @@ int benchFile(int argc, char** argv)
                 percentile(backMs, 0.95));
     std::printf("one frame back, not cached: p50 %.2f ms  p95 %.2f ms\n", percentile(backUncachedMs, 0.5),
                 percentile(backUncachedMs, 0.95));
+
+    // Following the tissue: the pass over every frame that Review's phases and `labels suggest
+    // --video` make, beside decoding every frame alone in the same run.
+    {
+        nb::video::FrameReader decodeOnly(index, 1);
+        clock.restart();
+        for (int i = 0; i < index.size(); ++i)
+            decodeOnly.read(i);
+        const double decodeMs = clock.nsecsElapsed() / 1e6;
+        nb::video::FrameReader tracking(index, 1);
+        clock.restart();
+        const nb::video::TissueShifts shifts = nb::video::trackTissueShifts(tracking);
+        const double trackMs = clock.nsecsElapsed() / 1e6;
+        const double perFrame = trackMs / index.size();
+        std::printf("tissue tracking: %.2f ms/frame, %.1fx decoding alone (%.2f ms/frame), %zu shifts; "
+                    "one hour at 30 frames/s: %.0f min\n",
+                    perFrame, trackMs / std::max(decodeMs, 1e-3), decodeMs / index.size(), shifts.time_s.size(),
+                    perFrame * 30.0 * 3600.0 / 60000.0);
+    }
     return 0;
 }
 

@@ -20,13 +20,6 @@ constexpr int kBackgroundFrames = 41; // frames whose median is the static backg
 // this scale (in the working picture) before matching, heavy noise no longer decides the
 // match, while the texture still does.
 constexpr double kTextureBlur_px = 3.0;
-// ...and finer than this: coarser brightness (the tissue's bright body, the smeared copies of
-// its outline that the mean background leaves where it rests longest) is taken away too.
-// Under the match's window, which tapers the picture towards its edges and does not move,
-// such brightness becomes a pattern that stays put and pulls the match towards zero shift;
-// a thin slab has too little texture to outvote it (a 13 mm slab read at rest while it was
-// carried at 10 mm/s).
-constexpr double kCoarse_px = 8.0;
 constexpr double kScaleSpan_s = 0.2;  // stretch of video over which the scale is read
 
 cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
@@ -44,6 +37,24 @@ cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
     cv::Mat f;
     small.convertTo(f, CV_32F);
     return f;
+}
+
+// The texture is also finer than about 8 px: coarser brightness (the tissue's bright body,
+// the smeared copies of its outline that the mean background leaves where it rests longest)
+// is taken away before the match. Under the match's window, which tapers the picture towards
+// its edges and does not move, such brightness becomes a pattern that stays put and pulls the
+// match towards zero shift; a thin slab has too little texture to outvote it (a 13 mm slab
+// read at rest while it was carried at 10 mm/s). This is that brightness: three box filters
+// (17, 15, 17 px wide, a spread of 8.2 px) at a fixed cost per pixel, where a Gaussian kernel
+// that wide took 12 ms a frame (bench_video). Not from a smaller copy: its grid would be a
+// pattern that stays put.
+cv::Mat coarseOf(const cv::Mat& image)
+{
+    cv::Mat coarse;
+    cv::blur(image, coarse, cv::Size(17, 17), cv::Point(-1, -1), cv::BORDER_REFLECT);
+    cv::blur(coarse, coarse, cv::Size(15, 15), cv::Point(-1, -1), cv::BORDER_REFLECT);
+    cv::blur(coarse, coarse, cv::Size(17, 17), cv::Point(-1, -1), cv::BORDER_REFLECT);
+    return coarse;
 }
 
 double interpolate(const std::vector<double>& t, const std::vector<double>& v, double x)
@@ -129,9 +140,7 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         cv::max(image, -clip, image);
         // The picture's own noise changes every frame; the tissue's texture does not.
         cv::GaussianBlur(image, image, cv::Size(0, 0), kTextureBlur_px);
-        cv::Mat coarse;
-        cv::GaussianBlur(image, coarse, cv::Size(0, 0), kCoarse_px);
-        image -= coarse;
+        image -= coarseOf(image);
         const double t = index.frames[std::size_t(i)].time_s;
         if (window.empty())
             cv::createHanningWindow(window, image.size(), CV_32F);
