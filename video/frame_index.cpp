@@ -54,6 +54,12 @@ bool FrameIndex::variableFrameRate() const
     return false;
 }
 
+bool samePicture(const cv::Mat& a, const cv::Mat& b)
+{
+    return !a.empty() && a.size == b.size && a.type() == b.type() &&
+           cv::norm(a, b, cv::NORM_L1) / double(b.total() * b.channels()) < 0.25;
+}
+
 int FrameIndex::duplicateCount() const
 {
     return int(std::count_if(frames.begin(), frames.end(), [](const FrameInfo& f) { return f.duplicate; }));
@@ -137,11 +143,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
         FrameInfo f;
         f.time_s = cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
         if (cap.retrieve(current) && !current.empty()) {
-            // Lossy codecs re-encode a repeated picture with a little coding noise (mean
-            // change ~0.1 grey level); a real picture change, even sensor noise alone, is far
-            // above this.
-            f.duplicate = !previous.empty() && previous.size == current.size &&
-                          cv::norm(previous, current, cv::NORM_L1) / double(current.total() * current.channels()) < 0.25;
+            f.duplicate = samePicture(previous, current);
             std::swap(previous, current);
         }
         if (!index.frames.empty() && f.time_s == 0.0 && index.frames.back().time_s > 0.0) {

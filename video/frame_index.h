@@ -6,6 +6,8 @@
 
 #include <QString>
 #include <QStringList>
+#include <opencv2/core.hpp>
+
 #include <atomic>
 #include <functional>
 #include <optional>
@@ -51,6 +53,11 @@ struct FrameIndex {
     // The last keyframe at or before frame n.
     int keyframeAtOrBefore(int n) const;
 };
+
+// Whether two decoded pictures are the same picture shown again. Lossy codecs re-encode a
+// repeated picture with a little coding noise (mean change ~0.1 grey level); a real picture
+// change, even sensor noise alone, is far above this. Any size and type, both alike.
+bool samePicture(const cv::Mat& a, const cv::Mat& b);
 
 // Progress: frames indexed so far and the expected total (0 when unknown).
 using IndexProgress = std::function<void(int done, int expected)>;

@@ -116,7 +116,7 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     // displacement.
     constexpr double kRekey_px = 6.0;      // in the working picture
     constexpr double kWeakResponse = 0.05;
-    cv::Mat previous, window, reference;
+    cv::Mat previous, window, reference, lastShown;
     double previousTime = 0.0, clip = 0.0;
     cv::Point2d referencePosition(0, 0), previousPosition(0, 0);
     for (int i = 0; i < n; ++i) {
@@ -124,9 +124,14 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             break;
         if (progress && i % 25 == 0)
             progress(i, n);
-        if (i > 0 && index.frames[std::size_t(i)].duplicate)
-            continue;  // the same picture again: no motion to measure, and a false zero
-        cv::Mat image = workingImage(reader.read(i).image, r, scale) - background;
+        // The same picture again: no motion to measure, and a false zero. Also where the index
+        // does not say so (indexed from the file's packets, a long video).
+        const cv::Mat shown = workingImage(reader.read(i).image, r, scale);
+        const bool repeated = i > 0 && (index.frames[std::size_t(i)].duplicate || samePicture(lastShown, shown));
+        lastShown = shown;
+        if (repeated)
+            continue;
+        cv::Mat image = shown - background;
         // A few strong edges moving their own way (the needle's tip, bright against the
         // tissue) would outvote the tissue's faint texture: values are clipped to the
         // picture's typical contrast, so that every part counts by its area.

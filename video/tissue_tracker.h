@@ -32,8 +32,9 @@ struct TissueShifts {
 };
 
 // Frame-to-frame shifts of the picture inside `roi` (empty: everywhere), as differences of
-// the displacement measured against a reference picture, so that they add up to it. Frames
-// the index calls duplicates are skipped (compared with the last distinct picture). Throws
+// the displacement measured against a reference picture, so that they add up to it. A picture
+// shown again (the index calls it a duplicate, or it decodes the same as the one before) is
+// skipped: the next is compared with the last distinct picture. Throws
 // VideoError.
 TissueShifts trackTissueShifts(FrameReader& reader, QRect roi = {}, const std::function<void(int, int)>& progress = {},
                                const std::atomic_bool* cancel = nullptr);
