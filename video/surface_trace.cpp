@@ -124,10 +124,15 @@ SurfaceTrace trackSurfaceEdges(FrameReader& reader, const QLineF& axis, const Ti
         return out;
     std::vector<std::vector<double>> profiles;
     std::vector<double> times;
+    cv::Mat lastShown;
     for (int k = 0; k < n; ++k) {
-        if (k > 0 && index.frames[std::size_t(k)].duplicate)
-            continue;  // the same picture again: no motion to measure
+        // The same picture again: no motion to measure (also where the index does not say so:
+        // indexed from the file's packets, a long video).
         const cv::Mat g = workingGray(reader.read(k).image, scale);
+        const bool repeated = k > 0 && (index.frames[std::size_t(k)].duplicate || samePicture(lastShown, g));
+        lastShown = g;
+        if (repeated)
+            continue;
         if (g.cols != w || g.rows != h)
             continue;
         std::vector<double> sum(std::size_t(bins), 0.0);

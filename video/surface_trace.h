@@ -21,8 +21,9 @@ namespace nb::video {
 
 SurfaceTrace surfaceTraceFromShifts(const TissueShifts& shifts, const TimelineMapping& mapping);
 
-// The edges' displacement along `axis` (video pixels, positive towards its p2). Frames the
-// index calls duplicates are skipped. Throws VideoError.
+// The edges' displacement along `axis` (video pixels, positive towards its p2). A picture
+// shown again (a duplicate in the index, or decoded the same as the one before) is skipped.
+// Throws VideoError.
 SurfaceTrace trackSurfaceEdges(FrameReader& reader, const QLineF& axis, const TimelineMapping& mapping);
 
 // Both traces for `reader`'s video, their sources named after `name` (the edges only when the

@@ -1,11 +1,13 @@
-// The tissue tracker on a real encoded video (issue 13): a thin textured slab slides to and
-// fro between plates that stay put, and every frame's shift must be the slab's. The
+// The picture trackers on a real encoded video (issue 13): a thin textured slab slides to and
+// fro between plates that stay put, and every frame's shift must be the slab's. The tissue
 // tracker matches each picture against a reference and moves the reference on to the
 // previous picture when the slab has gone well away from it; the shift right after that
 // move once read near zero where the slab had moved 4 px (cv::phaseCorrelate tapered the
-// reference in place at every match).
+// reference in place at every match). Pictures the recorder repeated are skipped by the
+// tissue tracker and the surface-edge tracker even where the index does not flag them.
 #include "video/frame_index.h"
 #include "video/frame_reader.h"
+#include "video/surface_trace.h"
 #include "video/tissue_tracker.h"
 
 #include <QTemporaryDir>
@@ -117,7 +119,6 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("repeats.avi"));
-        constexpr int kRepeatEvery = 6;
         const QString problem = writeSlabVideo(path, 3, kRepeatEvery);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
         nb::video::FrameIndex index = nb::video::buildFrameIndex(path);
@@ -127,13 +128,23 @@ private slots:
         nb::video::FrameReader reader(index);
         const nb::video::TissueShifts s = nb::video::trackTissueShifts(reader);
         QCOMPARE(int(s.dx_px.size()), kFrames - kFrames / kRepeatEvery - 1);
-        auto sceneOf = [](int frame) { return frame % kRepeatEvery == kRepeatEvery - 1 ? frame - 1 : frame; };
         for (std::size_t i = 0; i < s.dx_px.size(); ++i) {
-            const int a = int(std::lround((s.time_s[i] - 0.5 * s.dt_s[i]) * 30.0)), b = int(std::lround((s.time_s[i] + 0.5 * s.dt_s[i]) * 30.0));
+            const int a = frameAt(s.time_s[i] - 0.5 * s.dt_s[i]), b = frameAt(s.time_s[i] + 0.5 * s.dt_s[i]);
             const double moved = slabAt(sceneOf(b)) - slabAt(sceneOf(a));
             QVERIFY2(std::abs(s.dx_px[i] - moved) < 0.5, qPrintable(QStringLiteral("frames %1 to %2: %3 px, the slab moved %4 px").arg(a).arg(b).arg(s.dx_px[i]).arg(moved)));
         }
+        // The surface's edges along the motion (the relaxation's other trace) skip them too.
+        const nb::SurfaceTrace edges = nb::video::trackSurfaceEdges(reader, QLineF(0, 240, kWidth, 240), nb::TimelineMapping{});
+        QCOMPARE(int(edges.time_s.size()), kFrames - kFrames / kRepeatEvery);
+        for (std::size_t i = 0; i < edges.time_s.size(); ++i)
+            QVERIFY2(sceneOf(frameAt(edges.time_s[i])) == frameAt(edges.time_s[i]),
+                     qPrintable(QStringLiteral("the edges kept frame %1, a repeat").arg(frameAt(edges.time_s[i]))));
     }
+
+private:
+    static constexpr int kRepeatEvery = 6;
+    static int sceneOf(int frame) { return frame % kRepeatEvery == kRepeatEvery - 1 ? frame - 1 : frame; }
+    static int frameAt(double t_s) { return int(std::lround(t_s * 30.0)); }
 };
 
 QTEST_GUILESS_MAIN(TestTissueTracker)
