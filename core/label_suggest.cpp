@@ -252,6 +252,71 @@ PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::s
     return r;
 }
 
+// Where the tissue, slowing on the plate after it fell behind the needle at `from_s`, comes to
+// rest, when that is later than `c_s`, where the readings one by one put it. On a thin slab
+// the tissue creeps into the plate's soft part for several frames at a tenth to a third of
+// the needle's speed: single readings, a pixel or so off, cannot tell that creep from rest,
+// and the force, already near the sliding line, cannot either. The whole settling can: the
+// tissue's displacement in the picture from `from_s` to the turning point `to_s` is fitted as
+// y(t) = y_end - A·exp(-(t - from_s)/tau), and the tissue is at rest from where its fitted
+// speed is a twentieth of the needle's (`needle_mm_s`, by time), the relative velocity then
+// the needle's within 5 %, as phase c's fit of C and b takes it. `direction` is the stroke's.
+// nullopt, and `c_s` stands, unless the picture shows the settling: at `c_s` the tissue still
+// has 1.5 px to go and moves a pixel a frame, and it takes half a frame or more (a faster stop
+// is over within the pair of frames that placed `c_s`).
+template <class NeedleSpeed>
+std::optional<double> laterRest(const TissueMotion& tissue, double from_s, double to_s, double c_s, int direction,
+                                double frame_s, const NeedleSpeed& needle_mm_s)
+{
+    constexpr double kLeft_px = 1.5, kMoving_px = 1.0, kAtRest = 0.05;
+    std::vector<double> t, y;
+    double moved_mm = 0.0;
+    for (std::size_t k = 0; k < tissue.time_s.size() && k < tissue.velocity_mm_s.size(); ++k) {
+        const double end_s = tissue.time_s[k] + 0.5 * frame_s;
+        if (end_s <= from_s || end_s > to_s || !std::isfinite(tissue.velocity_mm_s[k]))
+            continue;
+        if (t.empty()) {
+            t.push_back(tissue.time_s[k] - 0.5 * frame_s);
+            y.push_back(0.0);
+        }
+        moved_mm += direction * tissue.velocity_mm_s[k] * frame_s;
+        t.push_back(end_s);
+        y.push_back(moved_mm);
+    }
+    if (t.size() < 6 || !(tissue.px_per_mm > 0.0))
+        return std::nullopt;
+    // tau over a grid from a third of a frame to ten frames, y_end and A by least squares.
+    constexpr int kSteps = 60;
+    const double tauLo_s = frame_s / 3.0, tauHi_s = 10.0 * frame_s;
+    double bestSse = std::numeric_limits<double>::infinity(), tau_s = 0.0, travel_mm = 0.0;
+    for (int n = 0; n < kSteps; ++n) {
+        const double tau = tauLo_s * std::pow(tauHi_s / tauLo_s, double(n) / (kSteps - 1));
+        auto decay = [&](double at_s) { return std::exp(-std::max(0.0, at_s - from_s) / tau); };
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        for (std::size_t i = 0; i < t.size(); ++i)
+            sx += decay(t[i]), sy += y[i], sxx += decay(t[i]) * decay(t[i]), sxy += decay(t[i]) * y[i];
+        const double m = double(t.size()), den = m * sxx - sx * sx;
+        if (std::abs(den) < 1e-12)
+            continue;
+        const double slope = (m * sxy - sx * sy) / den, offset = (sy - slope * sx) / m;
+        double sse = 0;
+        for (std::size_t i = 0; i < t.size(); ++i)
+            sse += std::pow(offset + slope * decay(t[i]) - y[i], 2);
+        if (sse < bestSse)
+            bestSse = sse, tau_s = tau, travel_mm = -slope;
+    }
+    // No settling: the tissue moving backwards, or still under way at ten frames.
+    if (!(travel_mm > 0.0) || tau_s >= tauHi_s || tau_s < 0.5 * frame_s)
+        return std::nullopt;
+    const double left_px = travel_mm * std::exp(-std::max(0.0, c_s - from_s) / tau_s) * tissue.px_per_mm;
+    if (left_px < kLeft_px || left_px / tau_s * frame_s < kMoving_px)
+        return std::nullopt;
+    for (double at_s = c_s; at_s < to_s; at_s += 0.001)
+        if (travel_mm / tau_s * std::exp(-(at_s - from_s) / tau_s) <= kAtRest * std::abs(needle_mm_s(at_s)))
+            return at_s;
+    return std::nullopt;
+}
+
 constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
 // Clear readings a picture needs where the force is plain before it may overrule the force: one
 // that gives fewer (its noise above a slow needle's motion) is unchecked, not trusted.
@@ -753,6 +818,15 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // before the force's c began: then the force's c stands.
                 const double forceC_s = forceC < h.end ? run.time_s[forceC] : t1;
                 cStart = cWindow ? place(forceC, *cWindow) : (lastMoving > forceC_s + slack ? h.end : forceC);
+                // A tissue that settles slowly does so on the plate's soft part (b1): against
+                // its stiff part it stops within a frame. So c starts later, and b2, if any, was
+                // too brief to see.
+                if (cWindow) {
+                    const auto needle = [&](double t) { return v[std::min(sampleAt(t), h.end - 1)]; };
+                    if (const std::optional<double> rest = laterRest(*tissue, run.time_s[std::min(aEnd, h.end - 1)], t1,
+                                                                     run.time_s[std::min(cStart, h.end - 1)], h.direction, frame_s, needle))
+                        b2Start = cStart = sampleAt(*rest);
+                }
                 cStart = std::max(cStart, aEnd);
                 if (b2Start < aEnd || b2Start > cStart)
                     b2Start = cStart - (cStart - aEnd) / 4;
