@@ -289,19 +289,21 @@ std::optional<double> laterRest(const TissueMotion& tissue, double from_s, doubl
     constexpr int kSteps = 60;
     const double tauLo_s = frame_s / 3.0, tauHi_s = 10.0 * frame_s;
     double bestSse = std::numeric_limits<double>::infinity(), tau_s = 0.0, travel_mm = 0.0;
+    std::vector<double> decay(t.size());
     for (int n = 0; n < kSteps; ++n) {
         const double tau = tauLo_s * std::pow(tauHi_s / tauLo_s, double(n) / (kSteps - 1));
-        auto decay = [&](double at_s) { return std::exp(-std::max(0.0, at_s - from_s) / tau); };
         double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        for (std::size_t i = 0; i < t.size(); ++i)
-            sx += decay(t[i]), sy += y[i], sxx += decay(t[i]) * decay(t[i]), sxy += decay(t[i]) * y[i];
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            decay[i] = std::exp(-std::max(0.0, t[i] - from_s) / tau);
+            sx += decay[i], sy += y[i], sxx += decay[i] * decay[i], sxy += decay[i] * y[i];
+        }
         const double m = double(t.size()), den = m * sxx - sx * sx;
         if (std::abs(den) < 1e-12)
             continue;
         const double slope = (m * sxy - sx * sy) / den, offset = (sy - slope * sx) / m;
         double sse = 0;
         for (std::size_t i = 0; i < t.size(); ++i)
-            sse += std::pow(offset + slope * decay(t[i]) - y[i], 2);
+            sse += std::pow(offset + slope * decay[i] - y[i], 2);
         if (sse < bestSse)
             bestSse = sse, tau_s = tau, travel_mm = -slope;
     }

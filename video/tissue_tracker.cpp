@@ -45,9 +45,10 @@ cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
 // its edges and does not move, such brightness becomes a pattern that stays put and pulls the
 // match towards zero shift; a thin slab has too little texture to outvote it (a 13 mm slab
 // read at rest while it was carried at 10 mm/s). Found while the taper was applied again at
-// every match (below); with each picture tapered once it still decides one case of the
-// thickness matrix (bench_accuracy --seed 191679 --phase-thickness-mm 10:30, case 14: 88.2 %
-// with it, 85.4 % without; the other 71 runs tried are the same). This is that brightness:
+// every match (below); with each picture tapered once it still decided one case of the
+// thickness matrix when last measured without it, at 16c725f (bench_accuracy --seed 191679
+// --phase-thickness-mm 10:30, case 14: 88.2 % with it, 85.4 % without; the other 71 runs
+// tried the same). This is that brightness:
 // three box filters (17, 15, 17 px wide, a spread of 8.2 px) at a fixed cost per pixel, where
 // a Gaussian kernel that wide took 12 ms a frame (bench_video). Not from a smaller copy: its
 // grid would be a pattern that stays put.
