@@ -3,6 +3,7 @@
 #include "events.h"
 #include "friction_fit.h"
 #include "models.h"
+#include "settling_fit.h"
 #include "tr.h"
 
 #include <algorithm>
@@ -285,37 +286,18 @@ std::optional<double> laterRest(const TissueMotion& tissue, double from_s, doubl
     }
     if (t.size() < 6 || !(tissue.px_per_mm > 0.0))
         return std::nullopt;
-    // tau over a grid from a third of a frame to ten frames, y_end and A by least squares.
-    constexpr int kSteps = 60;
+    // tau over a grid from a third of a frame to ten frames.
     const double tauLo_s = frame_s / 3.0, tauHi_s = 10.0 * frame_s;
-    double bestSse = std::numeric_limits<double>::infinity(), tau_s = 0.0, travel_mm = 0.0;
-    std::vector<double> decay(t.size());
-    for (int n = 0; n < kSteps; ++n) {
-        const double tau = tauLo_s * std::pow(tauHi_s / tauLo_s, double(n) / (kSteps - 1));
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        for (std::size_t i = 0; i < t.size(); ++i) {
-            decay[i] = std::exp(-std::max(0.0, t[i] - from_s) / tau);
-            sx += decay[i], sy += y[i], sxx += decay[i] * decay[i], sxy += decay[i] * y[i];
-        }
-        const double m = double(t.size()), den = m * sxx - sx * sx;
-        if (std::abs(den) < 1e-12)
-            continue;
-        const double slope = (m * sxy - sx * sy) / den, offset = (sy - slope * sx) / m;
-        double sse = 0;
-        for (std::size_t i = 0; i < t.size(); ++i)
-            sse += std::pow(offset + slope * decay[i] - y[i], 2);
-        if (sse < bestSse)
-            bestSse = sse, tau_s = tau, travel_mm = -slope;
-    }
+    const SettlingFit f = fitSettlingFrom(t, y, from_s, tauLo_s, tauHi_s, 60);
     // No settling: the tissue moving backwards, or still under way at ten frames.
-    if (!(travel_mm > 0.0) || tau_s >= tauHi_s || tau_s < 0.5 * frame_s)
+    if (!(f.rest - f.d0 > 0.0) || f.tau_s >= tauHi_s || f.tau_s < 0.5 * frame_s)
         return std::nullopt;
-    const double left_px = travel_mm * std::exp(-std::max(0.0, c_s - from_s) / tau_s) * tissue.px_per_mm;
-    if (left_px < kLeft_px || left_px / tau_s * frame_s < kMoving_px)
+    const double at_s = std::max(c_s, from_s);
+    if ((f.rest - f.at(at_s)) * tissue.px_per_mm < kLeft_px || f.speedAt(at_s) * tissue.px_per_mm * frame_s < kMoving_px)
         return std::nullopt;
-    for (double at_s = c_s; at_s < to_s; at_s += 0.001)
-        if (travel_mm / tau_s * std::exp(-(at_s - from_s) / tau_s) <= kAtRest * std::abs(needle_mm_s(at_s)))
-            return at_s;
+    for (double rest_s = at_s; rest_s < to_s; rest_s += 0.001)
+        if (f.speedAt(rest_s) <= kAtRest * std::abs(needle_mm_s(rest_s)))
+            return rest_s;
     return std::nullopt;
 }
 
@@ -825,8 +807,8 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // too brief to see.
                 if (cWindow) {
                     const auto needle = [&](double t) { return v[std::min(sampleAt(t), h.end - 1)]; };
-                    if (const std::optional<double> rest = laterRest(*tissue, run.time_s[std::min(aEnd, h.end - 1)], t1,
-                                                                     run.time_s[std::min(cStart, h.end - 1)], h.direction, frame_s, needle))
+                    const double fromA = run.time_s[std::min(aEnd, h.end - 1)], atC = run.time_s[std::min(cStart, h.end - 1)];
+                    if (const std::optional<double> rest = laterRest(*tissue, fromA, t1, atC, h.direction, frame_s, needle))
                         b2Start = cStart = sampleAt(*rest);
                 }
                 cStart = std::max(cStart, aEnd);

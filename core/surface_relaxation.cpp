@@ -1,10 +1,10 @@
 #include "surface_relaxation.h"
 
+#include "settling_fit.h"
 #include "tr.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace nb {
 
@@ -30,76 +30,6 @@ double median(std::vector<double> v)
     const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
     std::nth_element(v.begin(), mid, v.end());
     return *mid;
-}
-
-struct Fit {
-    double sse = std::numeric_limits<double>::infinity();
-    double t0 = 0, tau = 0, d0 = 0, v = 0, a = 0;
-};
-
-// Least squares of the carried line and the settling exponential for one onset and τ: the
-// model is linear in d0 (value at the onset), v (speed before it) and A (rest after it). The
-// frames fitted are those in [lo, hi], the same for every onset tried, so that their sums of
-// squares compare; each counts by its weight w.
-Fit fitAt(const std::vector<double>& t, const std::vector<double>& d, const std::vector<double>& w, double t0, double tau, double lo,
-          double hi)
-{
-    double m[3][3] = {}, r[3] = {};
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if (t[i] < lo || t[i] > hi)
-            continue;
-        double x[3];
-        if (t[i] < t0) {
-            x[0] = 1.0, x[1] = t[i] - t0, x[2] = 0.0;
-        } else {
-            const double e = std::exp(-(t[i] - t0) / tau);
-            x[0] = e, x[1] = 0.0, x[2] = 1.0 - e;
-        }
-        for (int a = 0; a < 3; ++a) {
-            r[a] += w[i] * x[a] * d[i];
-            for (int b = 0; b < 3; ++b)
-                m[a][b] += w[i] * x[a] * x[b];
-        }
-    }
-    // Cramer's rule on the 3×3 normal equations.
-    auto det3 = [](const double q[3][3]) {
-        return q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
-               q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
-    };
-    const double det = det3(m);
-    Fit f;
-    if (!(std::abs(det) > 1e-12))
-        return f;
-    double p[3];
-    for (int c = 0; c < 3; ++c) {
-        double q[3][3];
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                q[a][b] = b == c ? r[a] : m[a][b];
-        p[c] = det3(q) / det;
-    }
-    f.t0 = t0, f.tau = tau, f.d0 = p[0], f.v = p[1], f.a = p[2];
-    f.sse = 0.0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if (t[i] < lo || t[i] > hi)
-            continue;
-        const double model = t[i] < t0 ? f.d0 + f.v * (t[i] - t0) : f.a + (f.d0 - f.a) * std::exp(-(t[i] - t0) / tau);
-        f.sse += w[i] * (d[i] - model) * (d[i] - model);
-    }
-    return f;
-}
-
-Fit bestFit(const std::vector<double>& t, const std::vector<double>& d, const std::vector<double>& w, double t0From, double t0To, double t0Step,
-            double tauFrom, double tauTo, double tauFactor, double lo, double hi)
-{
-    Fit best;
-    for (double t0 = t0From; t0 <= t0To + 1e-12; t0 += t0Step)
-        for (double tau = tauFrom; tau <= tauTo * (1 + 1e-9); tau *= tauFactor) {
-            const Fit f = fitAt(t, d, w, t0, tau, lo, hi);
-            if (f.sse < best.sse)
-                best = f;
-        }
-    return best;
 }
 
 }  // namespace
@@ -153,16 +83,16 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
     std::vector<double> w(n, 1.0);
     const double step = std::max(1e-4, (to - from) / 60.0);
     auto fitOnce = [&](double lo, double hi) {
-        const Fit coarse = bestFit(t, d, w, from, to, step, kMinTau_s, kMaxTau_s, 1.04, lo, hi);
-        return bestFit(t, d, w, std::max(from, coarse.t0 - step), std::min(to, coarse.t0 + step), step / 10.0, coarse.tau / 1.05,
-                       coarse.tau * 1.05, 1.004, lo, hi);
+        const SettlingFit coarse = fitSettling(t, d, w, from, to, step, kMinTau_s, kMaxTau_s, 1.04, lo, hi);
+        return fitSettling(t, d, w, std::max(from, coarse.t0_s - step), std::min(to, coarse.t0_s + step), step / 10.0, coarse.tau_s / 1.05,
+                           coarse.tau_s * 1.05, 1.004, lo, hi);
     };
-    Fit f;
+    SettlingFit f;
     for (int round = 0; round < 3; ++round) {
         f = fitOnce(from - kCarried_s, to + settle);
-        if (!std::isfinite(f.sse) || 8.0 * f.tau <= settle || settle >= kMaxSettle_s)
+        if (!std::isfinite(f.sse) || 8.0 * f.tau_s <= settle || settle >= kMaxSettle_s)
             break;
-        settle = std::min(kMaxSettle_s, 8.0 * f.tau);
+        settle = std::min(kMaxSettle_s, 8.0 * f.tau_s);
     }
     // Frames far off the fit count less (Tukey's biweight), twice over: a repeated frame the
     // capture put out again (the previous picture at a later time) or a frame the tracker
@@ -173,7 +103,7 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
         for (std::size_t i = 0; i < n; ++i) {
             if (t[i] < lo || t[i] > hi)
                 continue;
-            const double model = t[i] < f.t0 ? f.d0 + f.v * (t[i] - f.t0) : f.a + (f.d0 - f.a) * std::exp(-(t[i] - f.t0) / f.tau);
+            const double model = f.at(t[i]);
             residual[i] = d[i] - model;
             absolute.push_back(std::abs(residual[i]));
         }
@@ -182,7 +112,7 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
             const double u = residual[i] / scale;
             w[i] = std::abs(u) < 1.0 ? (1 - u * u) * (1 - u * u) : 0.0;
         }
-        const Fit robust = fitOnce(lo, hi);
+        const SettlingFit robust = fitOnce(lo, hi);
         if (!std::isfinite(robust.sse))
             break;
         f = robust;
@@ -190,11 +120,11 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
     if (!std::isfinite(f.sse))
         return fail(nb::TrCore::tr("the surface's motion around the puncture could not be fitted"));
     SpringBack s;
-    s.onset_s = f.t0;
-    s.tau_s = f.tau;
-    s.amplitude_px = std::abs(f.d0 - f.a);
+    s.onset_s = f.t0_s;
+    s.tau_s = f.tau_s;
+    s.amplitude_px = std::abs(f.d0 - f.rest);
     s.noise_px = noise;
-    s.relaxed_s = puncture_s + kRelaxedTaus * f.tau;
+    s.relaxed_s = puncture_s + kRelaxedTaus * f.tau_s;
     if (s.amplitude_px < std::max(kMinAmplitude_px, kMinAmplitudeNoise * noise))
         return fail(nb::TrCore::tr("the surface's spring-back (%1 px) does not stand out of the picture's noise (%2 px)")
                         .arg(s.amplitude_px, 0, 'f', 1)
@@ -202,33 +132,33 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
     // Springing back goes against the way the needle carried the surface; motion that goes on
     // the same way (the needle's own, or a surface still carried) is not a spring-back. Said
     // first: such a fit's slow settling would otherwise read as a video that ends too soon.
-    if (f.v * (f.d0 - f.a) < 0.0 && std::abs(f.v) * kCarried_s > 2.0 * noise + kMinAmplitude_px)
+    if (f.v * (f.d0 - f.rest) < 0.0 && std::abs(f.v) * kCarried_s > 2.0 * noise + kMinAmplitude_px)
         return fail(nb::TrCore::tr("nothing springs back after the puncture: the picture goes on moving the way the needle carried it"));
     if (s.relaxed_s > t[n - 1] + frame_s)
         return fail(nb::TrCore::tr("the video ends before the surface has come to rest"));
     // How much of the motion after the onset the settling explains.
     double mean = 0.0, count = 0.0, sse = 0.0, sst = 0.0;
     for (std::size_t i = 0; i < n; ++i)
-        if (t[i] >= f.t0 && t[i] <= f.t0 + settle)
+        if (t[i] >= f.t0_s && t[i] <= f.t0_s + settle)
             mean += w[i] * d[i], count += w[i];
     mean /= std::max(1e-9, count);
     for (std::size_t i = 0; i < n; ++i)
-        if (t[i] >= f.t0 && t[i] <= f.t0 + settle) {
-            const double model = f.a + (f.d0 - f.a) * std::exp(-(t[i] - f.t0) / f.tau);
+        if (t[i] >= f.t0_s && t[i] <= f.t0_s + settle) {
+            const double model = f.at(t[i]);
             sse += w[i] * (d[i] - model) * (d[i] - model);
             sst += w[i] * (d[i] - mean) * (d[i] - mean);
         }
     if (count < 4 || !(sst > 0.0) || 1.0 - sse / sst < kMinExplained)
         return fail(nb::TrCore::tr("the surface's motion after the puncture is not a spring-back that settles"));
-    if (f.tau >= kMaxTau_s / 1.05)
+    if (f.tau_s >= kMaxTau_s / 1.05)
         return fail(nb::TrCore::tr("the surface does not come to rest within %1 s").arg(kMaxTau_s * kRelaxedTaus, 0, 'f', 0));
-    if (std::isfinite(contact_s) && contact_s < f.t0 && contact_s >= t.front()) {
+    if (std::isfinite(contact_s) && contact_s < f.t0_s && contact_s >= t.front()) {
         // Where the surface was at the contact: the frames within a frame of it.
         std::vector<double> atContact;
         for (std::size_t i = 0; i < n; ++i)
             if (std::abs(t[i] - contact_s) <= frame_s)
                 atContact.push_back(d[i]);
-        s.carried_px = (f.d0 - median(atContact)) * (f.d0 > f.a ? 1.0 : -1.0);
+        s.carried_px = (f.d0 - median(atContact)) * (f.d0 > f.rest ? 1.0 : -1.0);
         if (!atContact.empty() && s.amplitude_px > kMaxSpringBackOfCarried * s.carried_px + 2.0 * noise + kMinAmplitude_px)
             return fail(nb::TrCore::tr("the surface springs back further (%1 px) than it was carried since the contact (%2 px): "
                                        "the picture lost the surface")

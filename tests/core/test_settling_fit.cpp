@@ -1,0 +1,106 @@
+// The settling fit (core/settling_fit.h) shared by the surface's spring-back and the tissue
+// slowing on the plate: on samples drawn at random (printed seed) at a video's frame rate
+// with pixel noise, it finds the onset, τ and the rest it was drawn with; it says when there
+// is nothing to fit.
+#include "core/settling_fit.h"
+
+#include <QtTest>
+
+#include <chrono>
+#include <cmath>
+#include <random>
+
+namespace {
+
+unsigned drawSeed(unsigned fixed)
+{
+    bool ok = false;
+    const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
+    unsigned seed = wanted.toUInt(&ok);
+    if (!ok)
+        seed = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000) : fixed;
+    qInfo("seed %u (repeat with NB_ACCURACY_SEED=%u)", seed, seed);
+    return seed;
+}
+
+}  // namespace
+
+class TestSettlingFit : public QObject {
+    Q_OBJECT
+
+private slots:
+    void findsOnsetTauAndRest()
+    {
+        std::mt19937 rng(drawSeed(771203u));
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        double worstOnset_frames = 0.0, worstTau = 0.0, sumTau = 0.0;
+        const int cases = 30;
+        for (int i = 0; i < cases; ++i) {
+            const double fps = u(rng) < 0.5 ? 25.0 : 29.97, frame_s = 1.0 / fps;
+            const double t0 = 1.0 + u(rng) * frame_s, tau = 0.05 + 0.25 * u(rng), v = (u(rng) < 0.5 ? -1 : 1) * (20.0 + 40.0 * u(rng));
+            const double d0 = 10.0 * u(rng), rest = d0 - std::copysign(8.0 + 20.0 * u(rng), v), noise_px = 0.1 + 0.3 * u(rng);
+            std::normal_distribution<double> noise(0.0, noise_px);
+            std::vector<double> t, d;
+            for (double time = 0.5 + u(rng) * frame_s; time < t0 + 8.0 * tau; time += frame_s) {
+                t.push_back(time);
+                d.push_back((time < t0 ? d0 + v * (time - t0) : rest + (d0 - rest) * std::exp(-(time - t0) / tau)) + noise(rng));
+            }
+            const std::vector<double> w(t.size(), 1.0);
+            const nb::SettlingFit f = nb::fitSettling(t, d, w, 0.8, 1.2, 0.001, 0.01, 1.0, 1.01, t.front(), t.back());
+            QVERIFY(std::isfinite(f.sse));
+            worstOnset_frames = std::max(worstOnset_frames, std::abs(f.t0_s - t0) / frame_s);
+            worstTau = std::max(worstTau, std::abs(f.tau_s / tau - 1.0));
+            sumTau += std::abs(f.tau_s / tau - 1.0);
+            QVERIFY2(std::abs(f.rest - rest) < 4.0 * noise_px, qPrintable(QStringLiteral("case %1: rest %2, drawn %3").arg(i).arg(f.rest).arg(rest)));
+            QVERIFY2(std::abs(f.v / v - 1.0) < 0.2, qPrintable(QStringLiteral("case %1: v %2, drawn %3").arg(i).arg(f.v).arg(v)));
+            // The fitted curve is what the fit's parameters say, and its speed is its slope.
+            const double probe = t0 + 0.5 * tau, h = 1e-6;
+            QCOMPARE(f.at(t.back()), f.rest + (f.d0 - f.rest) * std::exp(-(t.back() - f.t0_s) / f.tau_s));
+            QVERIFY(std::abs(f.speedAt(probe) - (f.at(probe + h) - f.at(probe - h)) / (2 * h)) < 1e-3 * std::abs(f.speedAt(probe)));
+            QCOMPARE(f.speedAt(f.t0_s - 0.1), f.v);
+        }
+        qInfo("worst onset error %.2f frames; tau error mean %.1f %%, worst %.1f %%", worstOnset_frames, 100.0 * sumTau / cases,
+              100.0 * worstTau);
+        // A settling over a frame or two, 0.4 px noise: τ rests on two or three samples.
+        QVERIFY(worstOnset_frames < 0.5);
+        QVERIFY(sumTau / cases < 0.08);
+        QVERIFY(worstTau < 0.4);
+    }
+
+    void knownOnsetFitsTauAndRest()
+    {
+        std::mt19937 rng(drawSeed(409117u));
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        for (int i = 0; i < 30; ++i) {
+            const double frame_s = 1.0 / 29.97, t0 = 2.0, tau = frame_s * (0.7 + 6.0 * u(rng)), travel = 1.0 + 4.0 * u(rng);
+            std::normal_distribution<double> noise(0.0, 0.02);
+            std::vector<double> t{t0 - 0.5 * frame_s}, d{0.0};
+            for (double time = t0 + 0.5 * frame_s; time < t0 + 12.0 * tau + 3 * frame_s; time += frame_s) {
+                t.push_back(time);
+                d.push_back(travel * (1.0 - std::exp(-(time - t0) / tau)) + noise(rng));
+            }
+            const nb::SettlingFit f = nb::fitSettlingFrom(t, d, t0, frame_s / 3.0, 10.0 * frame_s, 60);
+            QVERIFY(std::isfinite(f.sse));
+            QCOMPARE(f.t0_s, t0);
+            QCOMPARE(f.v, 0.0);
+            // The τ grid's steps are 6 % apart.
+            QVERIFY2(std::abs(f.tau_s / tau - 1.0) < 0.12, qPrintable(QStringLiteral("case %1: tau %2, drawn %3").arg(i).arg(f.tau_s).arg(tau)));
+            QVERIFY2(std::abs(f.rest - f.d0 - travel) < 0.05 * travel + 0.05,
+                     qPrintable(QStringLiteral("case %1: travel %2, drawn %3").arg(i).arg(f.rest - f.d0).arg(travel)));
+        }
+    }
+
+    void nothingToFit()
+    {
+        const std::vector<double> none;
+        QVERIFY(!std::isfinite(nb::fitSettling(none, none, none, 0.0, 1.0, 0.1, 0.01, 1.0, 1.1, 0.0, 1.0).sse));
+        QVERIFY(!std::isfinite(nb::fitSettlingFrom(none, none, 0.0, 0.01, 1.0, 10).sse));
+        // Every sample at one time: no line and no settling can be told apart.
+        const std::vector<double> t(5, 1.0), d{1, 2, 3, 4, 5}, w(5, 1.0);
+        QVERIFY(!std::isfinite(nb::fitSettlingFrom(t, d, 0.5, 0.01, 1.0, 10).sse));
+        QVERIFY(!std::isfinite(nb::fitSettling(t, d, w, 0.0, 0.5, 0.1, 0.01, 1.0, 1.1, 0.0, 2.0).sse));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSettlingFit)
+#include "test_settling_fit.moc"
