@@ -31,6 +31,7 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <csignal>
@@ -149,8 +150,16 @@ int walkChild(const QString& sessionDir)
     if (!w.session() || !w.session()->activeCalibration())
         return childFail("no calibration");
     const nb::devices::AcquisitionEngine* engine = w.engine();
+    // As the operator waits for the device line to say the rig is ready: the window refuses a
+    // plan while the stage moves, and the simulated stage may still be settling from its start
+    // (seen in ctest: "plan refused" a second after start, once in some thirty runs).
+    if (!waitFor([&] {
+            const nb::devices::EngineStatus s = w.engine()->status();
+            return s.running && !s.moving && !s.approaching && !s.recording;
+        }))
+        return childFail("the rig did not come to rest after start");
     if (!w.startPlan(testPlan()))
-        return childFail("plan refused");
+        return childFail(qPrintable(QStringLiteral("plan refused: ") + w.statusBar()->currentMessage()));
     for (int run = 1; run <= 4; ++run) {
         if (const int code = childStartRun(w, engine))
             return code;
