@@ -151,8 +151,8 @@ int walkChild(const QString& sessionDir)
         return childFail("no calibration");
     const nb::devices::AcquisitionEngine* engine = w.engine();
     // As the operator waits for the device line to say the rig is ready: the window refuses a
-    // plan while the stage moves, and the simulated stage may still be settling from its start
-    // (seen in ctest: "plan refused" a second after start, once in some thirty runs).
+    // plan until the devices report running, and while the stage moves or records (seen in
+    // ctest: "plan refused" a second after start, twice in some thirty runs).
     if (!waitFor([&] {
             const nb::devices::EngineStatus s = w.engine()->status();
             return s.running && !s.moving && !s.approaching && !s.recording;
