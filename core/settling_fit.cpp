@@ -1,5 +1,7 @@
 #include "settling_fit.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,41 +20,28 @@ double SettlingFit::speedAt(double t_s) const
 SettlingFit fitSettlingAt(const std::vector<double>& t, const std::vector<double>& d, const std::vector<double>& w, double t0, double tau,
                           double lo, double hi)
 {
-    double m[3][3] = {}, r[3] = {};
+    // The normal equations of the model, linear in (d0, v, rest) for this onset and τ.
+    Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < t.size(); ++i) {
         if (t[i] < lo || t[i] > hi)
             continue;
-        double x[3];
+        Eigen::Vector3d x;
         if (t[i] < t0) {
-            x[0] = 1.0, x[1] = t[i] - t0, x[2] = 0.0;
+            x << 1.0, t[i] - t0, 0.0;
         } else {
             const double e = std::exp(-(t[i] - t0) / tau);
-            x[0] = e, x[1] = 0.0, x[2] = 1.0 - e;
+            x << e, 0.0, 1.0 - e;
         }
-        for (int a = 0; a < 3; ++a) {
-            r[a] += w[i] * x[a] * d[i];
-            for (int b = 0; b < 3; ++b)
-                m[a][b] += w[i] * x[a] * x[b];
-        }
+        r += w[i] * d[i] * x;
+        m += w[i] * x * x.transpose();
     }
-    // Cramer's rule on the 3×3 normal equations.
-    auto det3 = [](const double q[3][3]) {
-        return q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
-               q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
-    };
-    const double det = det3(m);
     SettlingFit f;
-    if (!(std::abs(det) > 1e-12))
+    // No samples on one side of the onset (or none at all): d0, v and rest are not determined.
+    if (!(std::abs(m.determinant()) > 1e-12))
         return f;
-    double p[3];
-    for (int c = 0; c < 3; ++c) {
-        double q[3][3];
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                q[a][b] = b == c ? r[a] : m[a][b];
-        p[c] = det3(q) / det;
-    }
-    f.t0_s = t0, f.tau_s = tau, f.d0 = p[0], f.v = p[1], f.rest = p[2];
+    const Eigen::Vector3d p = m.inverse() * r;
+    f.t0_s = t0, f.tau_s = tau, f.d0 = p(0), f.v = p(1), f.rest = p(2);
     f.sse = 0.0;
     for (std::size_t i = 0; i < t.size(); ++i) {
         if (t[i] < lo || t[i] > hi)
