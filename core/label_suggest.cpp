@@ -569,11 +569,16 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     // Where the needle is not much faster than the band, the sliding force is
                     // seen only briefly and the line found may lie below it: the force falling
                     // back from the peak and staying down is the break-away all the same.
+                    // Measured from the line, not in force: as the needle slows to its turning
+                    // point the line falls with it, and so does a force that merely stays a little
+                    // above a line drawn too steep (a thin slab at 0.95 Hz, most of whose c was
+                    // read as b2 that way).
+                    auto over = [&](std::size_t j) { return h.direction * (force[j] - line(j)); };
                     std::size_t top = i, fall = i, down = 0;
-                    for (; fall < last && h.direction * (force[top] - force[fall]) <= 2.0 * tolerance; ++fall)
-                        if (h.direction * force[fall] > h.direction * force[top])
+                    for (; fall < last && over(top) - over(fall) <= 2.0 * tolerance; ++fall)
+                        if (over(fall) > over(top))
                             top = fall;
-                    for (std::size_t j = fall; j < last && h.direction * (force[top] - force[j]) > tolerance; ++j)
+                    for (std::size_t j = fall; j < last && over(top) - over(j) > tolerance; ++j)
                         ++down;
                     if (fall < last && down >= std::max<std::size_t>(10, fall - (i + 1 - above)))
                         cStart = fall;
