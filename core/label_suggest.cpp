@@ -413,6 +413,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     // the force dip below it.
     bool held[2] = {false, false};
     double heldLevel_N[2] = {0.0, 0.0};
+    double noise_N = 0.0;  // the smoothed force's
     if (lines) {
         const double c[2] = {lines->model.Cp_N, lines->model.Cn_N}, b[2] = {lines->model.bp_Ns_per_m, lines->model.bn_Ns_per_m};
         const double top[2] = {lines->slidingToP_m_s, lines->slidingToN_m_s};
@@ -425,7 +426,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             fastest = std::max(fastest, std::abs(x));
         const double minSpeed = std::max(1000.0 * lines->bandSlowingDown_m_s / 2.0, 0.2 * fastest);
         const std::size_t window = std::max<std::size_t>(10, std::size_t(0.05 * rate));  // 50 ms
-        const double noise_N = smoothedForceNoise(run, 2 * half + 1);
+        noise_N = smoothedForceNoise(run, 2 * half + 1);
         const SlidingLine up = slidingLine(force, v, 1, minSpeed, noise_N, window), down = slidingLine(force, v, -1, minSpeed, noise_N, window);
         if (up.ok && down.ok) {
             lines->model.Cp_N = up.c0_N;
@@ -475,6 +476,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             continue;
         }
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
+        bool creptOnPlate = false;  // the force read the tissue creeping to rest on the plate's soft part
         QString source = forceSource;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)
@@ -585,6 +587,47 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     break;
                 }
             }
+            // The force back within the tolerance of the line is not yet the tissue at rest: on
+            // a thin slab it creeps on into the plate's soft part for a while, and the force
+            // stays below the line by b times the creep's speed (eq. 15: the relative velocity
+            // is the needle's less the tissue's). That shortfall is too small to read sample by
+            // sample, but it settles as the creep does: fitted as an exponential over a level
+            // (what the line misses of the force) from here to where the needle slows into the
+            // band (the tissue may stick again there), it says where the creep has slowed to a
+            // twentieth of the needle's speed, the rest the picture's laterRest reads too. A
+            // creep that slow is on the soft part, b1: against the stiff part the tissue stops at
+            // once, so b2, if any, was too brief to tell.
+            std::size_t fitEnd = last;
+            while (fitEnd > cStart && std::abs(v[fitEnd - 1]) < 2.0 * slowest)
+                --fitEnd;
+            if (cStart + 10 < fitEnd && !held[h.direction > 0 ? 0 : 1]) {
+                const double b_Ns_per_m = h.direction > 0 ? m.bp_Ns_per_m : m.bn_Ns_per_m;
+                std::vector<double> ts, shortfall_N;
+                for (std::size_t i = cStart; i < fitEnd; ++i) {
+                    ts.push_back(run.time_s[i]);
+                    shortfall_N.push_back(-h.direction * (force[i] - line(i)));
+                }
+                // tau from a few milliseconds to a quarter of the stretch: a settling longer than
+                // that is the line missing the force's curve, not a creep. One no slower than
+                // the smoothing's spread of the force is a stop, which the smoothing turned into
+                // a ramp (tau about a quarter of the spread).
+                const double longest_s = 0.25 * (ts.back() - ts.front()), smoothing_s = double(2 * half + 1) / rate;
+                const SettlingFit f = fitSettlingFrom(ts, shortfall_N, ts.front(), 0.002, longest_s, 60);
+                const double creep0_N = f.d0 - f.rest;
+                // The way left to creep, the integral of the shortfall over b: a tenth of a
+                // millimetre or less is the slab stopping against the stiff part (its give
+                // there), and a pixel or less at the imaging view's scale, at rest to the eye.
+                const double creepLeft_mm = b_Ns_per_m > 0.0 ? 1000.0 * creep0_N * f.tau_s / b_Ns_per_m : 0.0;
+                if (creepLeft_mm > 0.1 && creep0_N > 3.0 * noise_N && f.tau_s < longest_s && f.tau_s >= 0.5 * smoothing_s) {
+                    std::size_t rest = cStart;
+                    while (rest < fitEnd && f.at(run.time_s[rest]) - f.rest > 0.05 * b_Ns_per_m * std::abs(v[rest]) / 1000.0)
+                        ++rest;
+                    if (rest < fitEnd && rest > cStart) {
+                        cStart = rest;
+                        creptOnPlate = true;
+                    }
+                }
+            }
             // a: the tissue is carried with the needle (static friction) and pulls on it only
             // through its inertia, well below the sliding line, until it meets the plate
             // ahead: from there the plate's reaction drives the force up to the line. a ends
@@ -661,7 +704,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // to the line has closed to a quarter of what it was when the tissue met the plate.
             const double gap0 = aEnd < cStart ? std::abs(force[aEnd] - line(aEnd)) : 0.0;
             b2Start = cStart;
-            while (b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
+            while (!creptOnPlate && b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
                 --b2Start;
         } else {
             while (aEnd < h.end && std::abs(v[aEnd]) < o.zeroBand_mm_s / 2)
@@ -806,7 +849,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // the picture stopped telling (the video ends, or the needle too slow to judge)
                 // before the force's c began: then the force's c stands.
                 const double forceC_s = forceC < h.end ? run.time_s[forceC] : t1;
-                cStart = cWindow ? place(forceC, *cWindow) : (lastMoving > forceC_s + slack ? h.end : forceC);
+                // A picture read reading by reading takes a slow creep for rest: a window before
+                // where the force read the creep's end does not overrule it.
+                const bool creepSeen = creptOnPlate && cWindow && cWindow->second <= forceC_s;
+                cStart = cWindow && !creepSeen ? place(forceC, *cWindow) : (lastMoving > forceC_s + slack ? h.end : forceC);
                 // A tissue that settles slowly does so on the plate's soft part (b1): against
                 // its stiff part it stops within a frame. So c starts later, and b2, if any, was
                 // too brief to see.

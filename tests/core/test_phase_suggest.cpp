@@ -198,6 +198,17 @@ private slots:
         QTest::newRow("liver3 10.4 mm 0.95 Hz") << QStringList{"--tissue", "liver3", "--frequency-hz", "0.9532", "--amplitude-mm", "7.408", "--thickness-mm", "10.41",
                                                                "--stick-band-mm-s", "2.1", "--plate-gap-mm", "0.57", "--force-noise-n", "0.0013", "--cycles", "4",
                                                                "--seed", "248"} << 0.85;
+        // Thin slabs that creep into the plate's soft part for a tenth of a second and more
+        // after the force is back near the sliding line (b1 there, then c): c was read from the
+        // force's return and the creep as b2. 79.4 % and 82.7 %; bench_accuracy --seed 225405
+        // and 543574 --phase-thickness-mm 10:30, phase cases 19 and 8, pictures too unclear to
+        // judge. 90.3 % and 93.3 % with the creep read as one settling.
+        QTest::newRow("liver5 13.9 mm 0.55 Hz") << QStringList{"--tissue", "liver5", "--frequency-hz", "0.5451", "--amplitude-mm", "4.951", "--thickness-mm", "13.88",
+                                                               "--stick-band-mm-s", "3.0", "--plate-gap-mm", "0.78", "--force-noise-n", "0.0024", "--cycles", "4",
+                                                               "--seed", "978"} << 0.87;
+        QTest::newRow("liver7 12.1 mm 0.49 Hz") << QStringList{"--tissue", "liver7", "--frequency-hz", "0.4893", "--amplitude-mm", "4.109", "--thickness-mm", "12.11",
+                                                               "--stick-band-mm-s", "1.0", "--plate-gap-mm", "1.33", "--force-noise-n", "0.0076", "--cycles", "4",
+                                                               "--seed", "692"} << 0.88;
     }
     void hardRunsFromForceAlone()
     {
@@ -246,13 +257,13 @@ private slots:
     }
 
     // A thin slab creeps into the plate's soft part after it meets it, at a tenth to a third of
-    // the needle's speed for several frames, while the force already follows the sliding line
-    // (its friction hardly depends on the small relative velocity it loses): the force alone,
-    // and a picture read reading by reading, start c more than a frame early. Read as one
-    // settling, the picture places c where the slab is at rest (slower than a twentieth of the
-    // needle) within a frame and a half on average (the force alone: 1.2 to 3.2 frames early
-    // in these rows), and calls the creep b1, the slab pressing the plate's soft part. Rows: thin slabs whose creep the force alone misses by more than a
-    // frame, the regime this is for.
+    // the needle's speed for several frames, while the force is already back near the sliding
+    // line: short of it only by b times the creep's speed. Read sample by sample, the force
+    // and the picture both started c more than a frame early (the force 1.2 to 3.2 frames in
+    // these rows until it read the creep as one settling too). Read as one settling, each places
+    // c where the slab is at rest (slower than a twentieth of the needle): the picture within a
+    // frame and a half on average, the force alone within a frame; and the creep is b1, the slab
+    // pressing the plate's soft part. Rows: thin slabs in that regime.
     void thinSlabSettlingOnThePlate_data()
     {
         QTest::addColumn<QStringList>("args");
@@ -290,22 +301,22 @@ private slots:
         auto arg = [&](const char* name) { return args.value(args.indexOf(QLatin1String(name)) + 1).toDouble(); };
         const double period_s = 1.0 / arg("--frequency-hz"), firstTurn_s = period_s / 4, lastTurn_s = arg("--cycles") * period_s - period_s / 4;
         int strokes = 0;
-        double pictureOff_s = 0.0, forceEarly_s = 0.0;
+        double pictureOff_s = 0.0, forceOff_s = 0.0;
         for (std::size_t i = 1; i < s.truth.size(); ++i) {
             if (s.truth[i] != QLatin1String("c") || s.truth[i - 1] == QLatin1String("c") || s.truth[i - 1].isEmpty() ||
                 s.blind.time_s[i] < firstTurn_s || s.blind.time_s[i] > lastTurn_s)
                 continue;
             const double t = s.blind.time_s[i];
             ++strokes;
-            forceEarly_s += t - nearest(forceC, t);
+            forceOff_s += std::abs(nearest(forceC, t) - t);
             pictureOff_s += std::abs(nearest(suggestedC, t) - t);
         }
         QVERIFY(strokes >= 4);
-        const QString figures = QStringLiteral("c off by %1 s on average, from the force alone %2 s early; agreement %3, without the picture %4")
-                                    .arg(pictureOff_s / strokes).arg(forceEarly_s / strokes).arg(agreement(s, labels)).arg(agreement(s, fromForce));
-        QVERIFY2(forceEarly_s / strokes > 1.0 / 30.0, qPrintable(figures));
+        const QString figures = QStringLiteral("c off by %1 s on average, from the force alone %2 s; agreement %3, without the picture %4")
+                                    .arg(pictureOff_s / strokes).arg(forceOff_s / strokes).arg(agreement(s, labels)).arg(agreement(s, fromForce));
+        QVERIFY2(forceOff_s / strokes <= 1.0 / 30.0, qPrintable(figures));
         QVERIFY2(pictureOff_s / strokes <= 1.5 / 30.0, qPrintable(figures));
-        QVERIFY2(agreement(s, labels) >= 0.9 && agreement(s, labels) > agreement(s, fromForce), qPrintable(figures));
+        QVERIFY2(agreement(s, labels) >= 0.9 && agreement(s, fromForce) >= 0.9, qPrintable(figures));
         qInfo("%s", qPrintable(figures));
     }
 
