@@ -301,6 +301,33 @@ std::optional<double> laterRest(const TissueMotion& tissue, double from_s, doubl
     return std::nullopt;
 }
 
+// Where a tissue creeping into the plate's soft part comes to rest, read from the force's
+// shortfall below the sliding line (`shortfall_N` at `t_s`, the needle at `speed_mm_s`): b times
+// the creep's speed (eq. 15: the relative velocity is the needle's less the tissue's), too small
+// to read sample by sample, but settling as the creep does. Fitted as an exponential over a
+// level (what the line misses of the force), the tissue rests from the first sample where the
+// fitted creep is a twentieth of the needle's speed, the rest laterRest reads in the picture.
+// Its index into the samples; nullopt unless the fit shows a creep: τ from half the force
+// smoothing's spread (a smoothed stop reads τ of about a quarter of it) to under a quarter of
+// the stretch (longer is the line missing the force's curve), a shortfall three times the
+// smoothed noise, and more than a tenth of a millimetre left to creep (∫shortfall/b: less is
+// the slab stopping against the stiff part, and a pixel or less at the imaging view's scale).
+std::optional<std::size_t> creepRest(const std::vector<double>& t_s, const std::vector<double>& speed_mm_s, const std::vector<double>& shortfall_N,
+                                     double b_Ns_per_m, double noise_N, double smoothing_s)
+{
+    if (t_s.size() < 2 || !(b_Ns_per_m > 0.0))
+        return std::nullopt;
+    const double longest_s = 0.25 * (t_s.back() - t_s.front());
+    const SettlingFit f = fitSettlingFrom(t_s, shortfall_N, t_s.front(), 0.002, longest_s, 60);
+    const double creep0_N = f.d0 - f.rest, creepLeft_mm = 1000.0 * creep0_N * f.tau_s / b_Ns_per_m;
+    if (!(creepLeft_mm > 0.1 && creep0_N > 3.0 * noise_N && f.tau_s < longest_s && f.tau_s >= 0.5 * smoothing_s))
+        return std::nullopt;
+    for (std::size_t i = 0; i < t_s.size(); ++i)
+        if (f.at(t_s[i]) - f.rest <= 0.05 * b_Ns_per_m * speed_mm_s[i] / 1000.0)
+            return i;
+    return std::nullopt;
+}
+
 constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
 // Clear readings a picture needs where the force is plain before it may overrule the force: one
 // that gives fewer (its noise above a slow needle's motion) is unchecked, not trusted.
@@ -486,6 +513,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 const double vi = v[i] / 1000.0;
                 return h.direction > 0 ? m.Cp_N + m.bp_Ns_per_m * vi : -m.Cn_N + m.bn_Ns_per_m * vi;
             };
+            auto over = [&](std::size_t i) { return h.direction * (force[i] - line(i)); };  // above the line, along the stroke
             // Noise decides, within bounds: a tenth to a quarter of the sliding force.
             const double sliding = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
             const double tolerance = std::clamp(3.0 * lines->rms_N, 0.1 * sliding, 0.25 * sliding);
@@ -575,7 +603,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     // point the line falls with it, and so does a force that merely stays a little
                     // above a line drawn too steep (a thin slab at 0.95 Hz, most of whose c was
                     // read as b2 that way).
-                    auto over = [&](std::size_t j) { return h.direction * (force[j] - line(j)); };
                     std::size_t top = i, fall = i, down = 0;
                     for (; fall < last && over(top) - over(fall) <= 2.0 * tolerance; ++fall)
                         if (over(fall) > over(top))
@@ -588,44 +615,25 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 }
             }
             // The force back within the tolerance of the line is not yet the tissue at rest: on
-            // a thin slab it creeps on into the plate's soft part for a while, and the force
-            // stays below the line by b times the creep's speed (eq. 15: the relative velocity
-            // is the needle's less the tissue's). That shortfall is too small to read sample by
-            // sample, but it settles as the creep does: fitted as an exponential over a level
-            // (what the line misses of the force) from here to where the needle slows into the
-            // band (the tissue may stick again there), it says where the creep has slowed to a
-            // twentieth of the needle's speed, the rest the picture's laterRest reads too. A
-            // creep that slow is on the soft part, b1: against the stiff part the tissue stops at
-            // once, so b2, if any, was too brief to tell.
+            // a thin slab it creeps on into the plate's soft part for a while (creepRest), up to
+            // where the needle slows into the band (the tissue may stick again there). A creep
+            // that slow is on the soft part, b1: against the stiff part the tissue stops at once,
+            // so b2, if any, was too brief to tell.
             std::size_t fitEnd = last;
             while (fitEnd > cStart && std::abs(v[fitEnd - 1]) < 2.0 * slowest)
                 --fitEnd;
             if (cStart + 10 < fitEnd && !held[h.direction > 0 ? 0 : 1]) {
-                const double b_Ns_per_m = h.direction > 0 ? m.bp_Ns_per_m : m.bn_Ns_per_m;
-                std::vector<double> ts, shortfall_N;
+                std::vector<double> ts, speed, shortfall;
                 for (std::size_t i = cStart; i < fitEnd; ++i) {
                     ts.push_back(run.time_s[i]);
-                    shortfall_N.push_back(-h.direction * (force[i] - line(i)));
+                    speed.push_back(std::abs(v[i]));
+                    shortfall.push_back(-over(i));
                 }
-                // tau from a few milliseconds to a quarter of the stretch: a settling longer than
-                // that is the line missing the force's curve, not a creep. One no slower than
-                // the smoothing's spread of the force is a stop, which the smoothing turned into
-                // a ramp (tau about a quarter of the spread).
-                const double longest_s = 0.25 * (ts.back() - ts.front()), smoothing_s = double(2 * half + 1) / rate;
-                const SettlingFit f = fitSettlingFrom(ts, shortfall_N, ts.front(), 0.002, longest_s, 60);
-                const double creep0_N = f.d0 - f.rest;
-                // The way left to creep, the integral of the shortfall over b: a tenth of a
-                // millimetre or less is the slab stopping against the stiff part (its give
-                // there), and a pixel or less at the imaging view's scale, at rest to the eye.
-                const double creepLeft_mm = b_Ns_per_m > 0.0 ? 1000.0 * creep0_N * f.tau_s / b_Ns_per_m : 0.0;
-                if (creepLeft_mm > 0.1 && creep0_N > 3.0 * noise_N && f.tau_s < longest_s && f.tau_s >= 0.5 * smoothing_s) {
-                    std::size_t rest = cStart;
-                    while (rest < fitEnd && f.at(run.time_s[rest]) - f.rest > 0.05 * b_Ns_per_m * std::abs(v[rest]) / 1000.0)
-                        ++rest;
-                    if (rest < fitEnd && rest > cStart) {
-                        cStart = rest;
-                        creptOnPlate = true;
-                    }
+                const std::optional<std::size_t> rest = creepRest(ts, speed, shortfall, h.direction > 0 ? m.bp_Ns_per_m : m.bn_Ns_per_m, noise_N,
+                                                                  double(2 * half + 1) / rate);
+                if (rest && *rest > 0) {
+                    cStart += *rest;
+                    creptOnPlate = true;
                 }
             }
             // a: the tissue is carried with the needle (static friction) and pulls on it only
