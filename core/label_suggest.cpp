@@ -749,6 +749,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             std::optional<double> reference_mm;
             double carried_mm = 0.0;
             int steps = 0;
+            double pendingCatchUpEnd_s = std::numeric_limits<double>::infinity();  // where the frames of a first reading carried again end
             for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
                 const double tk = tissue->time_s[k];
                 if (tk - frameHalf_s < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
@@ -772,6 +773,31 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // the displacement since the turning point.
                 const bool clear = r.clear && vn > 0.0;
                 anyClear |= clear;
+                // Fallen behind, then carried at the needle's speed again before coming to rest:
+                // the tissue did not meet the plate, which stops it for the stroke. It slipped
+                // (the needle's jump at the run's start, or a reversal faster than static
+                // friction can follow) or the picture garbled a frame or two. Counted afresh from
+                // there, over two readings of their own frames, each within the needle's speed.
+                const bool carriedClearly = clear && vtk >= 0.8 * vn && vtk <= 1.5 * vn;
+                if ((firstBehind || pendingBehind) && carriedClearly) {
+                    if (r.from_s >= pendingCatchUpEnd_s - 1e-9) {
+                        firstBehind.reset();
+                        pendingBehind.reset();
+                        cWindow.reset();
+                        pendingRest.reset();
+                        pendingCatchUpEnd_s = std::numeric_limits<double>::infinity();
+                        followed = true;
+                        lastFollow = lastClearFollow = at_s + frameHalf_s;
+                        reference_mm = positionAtTime(run, tk + frameHalf_s);
+                        carried_mm = 0.0;
+                        steps = 0;
+                        wasNotResting = true;
+                        continue;
+                    }
+                    pendingCatchUpEnd_s = std::min(pendingCatchUpEnd_s, r.to_s);
+                } else {
+                    pendingCatchUpEnd_s = std::numeric_limits<double>::infinity();
+                }
                 // Two readings in a row decide: one may be a repeated or garbled frame. Readings
                 // summed over a few pairs share frames, and one repeated frame pulls down each
                 // reading that holds it, so the second must be over frames of its own.

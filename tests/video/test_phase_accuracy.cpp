@@ -3,6 +3,7 @@
 // runs through `needlebench simulate`, their imaging video rendered, given a look and encoded
 // with the ffmpeg tool, read back with the real decoder. bench/bench_accuracy prints the full
 // table.
+#include "video/phase_case_check.h"
 #include "video/phase_matrix.h"
 #include "video/video_fixtures.h"
 
@@ -10,57 +11,8 @@
 #include <QtTest>
 
 #include <chrono>
-#include <functional>
-#include <optional>
 
 using namespace nb::accuracy;
-
-namespace {
-
-// Case `index` of bench_accuracy's phase matrix for `seed`, drawn as the bench draws it
-// (with `slabs_mm`, as --phase-thickness-mm LO:HI draws it), into `c`; false when it is no
-// longer the case a test describes (the draw has changed).
-bool drawnCase(unsigned seed, int index, const std::function<bool(const PhaseMatrixCase&)>& stillTheCase, PhaseMatrixCase& c,
-               std::optional<std::pair<double, double>> slabs_mm = {})
-{
-    std::mt19937 rng(seed ^ 0x9e3779b9u);
-    std::vector<PhaseMatrixCase> cases = drawPhaseMatrix(rng, 24, false);
-    if (cases.size() != 24)
-        return false;
-    if (slabs_mm)
-        drawSlabThicknesses(cases, seed, slabs_mm->first, slabs_mm->second);
-    c = cases[std::size_t(index)];
-    return stillTheCase(c);
-}
-
-// Runs a drawn case with its video: the labels' source must say `source` (the video decided,
-// or was left aside), and agreement reach issue 13's 90 %.
-void checkWithVideo(const PhaseMatrixCase& c, const QString& source = QStringLiteral("suggested from the tissue's motion"))
-{
-    QTemporaryDir dir;
-    const PhaseMatrixOutcome o = runPhaseMatrixCase(c, QStringLiteral(NB_EXECUTABLE), dir.path());
-    QVERIFY2(o.ok, qPrintable(o.problem));
-    qInfo("%s: without video %.1f %%, with video %.1f %% (%s)", qPrintable(c.describe()), 100 * o.withoutVideo, 100 * o.withVideo,
-          qPrintable(o.videoSource));
-    QVERIFY2(o.videoSource.contains(source), qPrintable(o.videoSource));
-    QVERIFY2(o.withVideo >= 0.9, qPrintable(QStringLiteral("with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
-}
-
-// The current row's drawn case (columns `seed` and `index`), checked with its video.
-void checkDrawnRow(const std::function<bool(const PhaseMatrixCase&)>& stillTheCase,
-                   const QString& source = QStringLiteral("suggested from the tissue's motion"),
-                   std::optional<std::pair<double, double>> slabs_mm = {})
-{
-    QFETCH(unsigned, seed);
-    QFETCH(int, index);
-    if (!nb::test::haveFfmpeg())
-        QSKIP("the ffmpeg tool is needed to encode the videos");
-    PhaseMatrixCase c;
-    QVERIFY2(drawnCase(seed, index, stillTheCase, c, slabs_mm), qPrintable(c.describe()));
-    checkWithVideo(c, source);
-}
-
-}  // namespace
 
 class TestPhaseAccuracy : public QObject {
     Q_OBJECT
@@ -151,28 +103,6 @@ private slots:
     void shortSlideAtTheTurn()
     {
         checkDrawnRow([](const PhaseMatrixCase& d) { return d.plateGap_mm > 0.65 * d.amplitude_mm; });
-    }
-
-    // Thin slabs, drawn by bench_accuracy --phase-thickness-mm 10:30. The slab fills a seventh
-    // of the picture's height, and the match of whole pictures stuck at zero shift: the
-    // tissue's bright body and the smeared copies of its outline the mean background leaves,
-    // both fixed under the match's window, outweighed its little texture. The picture read the
-    // carried tissue at rest, was trusted, and cut a short. Either the picture reads the tissue
-    // or it is judged too unclear; it must not mislead.
-    void thinSlabPicture_data()
-    {
-        QTest::addColumn<unsigned>("seed");
-        QTest::addColumn<int>("index");
-        // liver2, 13.3 mm, 0.58 Hz, dropped and repeated frames: 81.3 % with the video, 93.7 % without.
-        QTest::newRow("seed 608326 case 4: 13.3 mm, repeated frames, H.264") << 608326u << 4;
-        // liver7, 14.8 mm, 0.84 Hz, burnt-in clock and counter: 86.5 % with the video, 96.4 % without.
-        QTest::newRow("seed 191679 case 6: 14.8 mm, burnt-in counter, MJPEG") << 191679u << 6;
-    }
-
-    void thinSlabPicture()
-    {
-        checkDrawnRow([](const PhaseMatrixCase& d) { return d.thickness_mm < 16.0; }, QStringLiteral("suggested from"),
-                      std::pair{10.0, 30.0});
     }
 };
 
