@@ -389,16 +389,17 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     // wherever the picture moves clearly (over several frames, 3 px: a picture that drops and
     // repeats frames is off by a frame's motion at times, a third of a 1.5 px reading; the
     // boundaries below want the finer time). Below nine in ten it is too unclear to judge
-    // (noise, blur, a wrong clock) and leaves the force's phases as they are, unless nine in
-    // ten of its clear readings are ones the tissue can give, carried with the needle or at
-    // rest (in between only while it slows on the plate, a reading or two a stroke): a
-    // garbled picture or a clock three frames wrong reads other speeds, of either sign, while
-    // a clear one that disagrees with the force is the force placing a boundary wrong.
+    // (noise, blur, a wrong clock) and leaves the force's phases as they are, unless hardly
+    // any of its clear readings (one in 25) are ones the tissue cannot give: moving backwards
+    // against the needle, or faster than it. A garbled picture or a clock three frames wrong
+    // reads those often, of either sign, while a clear one that disagrees with the force is
+    // the force placing a boundary wrong (the tissue slowing on the plate, or slipping at a
+    // fast reversal, reads in between carried and resting: possible, and no objection).
     bool videoTrusted = tissue != nullptr;
     if (tissue && tissue->px_per_mm > 0.0 && tissue->time_s.size() > 1) {
         const double frame_s = (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1);
         const QStringList plain = phasePerSample(suggestPhaseLabels(run, nullptr, o), tissue->time_s);
-        int judged = 0, agreed = 0, physical = 0;
+        int judged = 0, agreed = 0, impossible = 0;
         for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
             const PictureReading r = pictureReading(run, *tissue, k, run.time_s.front(), videoNoise_mm_s, 0.5 * frame_s, kTrustSum_px);
             if (!r.clear)
@@ -411,9 +412,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // Carried: with the needle, not faster; resting: still, not moving backwards.
             const bool carried = ratio >= 0.5 && ratio <= 1.5, resting = std::abs(ratio) < 0.25;
             agreed += p == QLatin1String("a") ? carried : resting;
-            physical += carried || resting;
+            impossible += ratio < -0.25 || ratio > 1.5;
         }
-        videoTrusted = judged >= kMinJudged && (agreed >= 0.9 * judged || physical >= 0.9 * judged);
+        videoTrusted = judged >= kMinJudged && (agreed >= 0.9 * judged || impossible <= 0.04 * judged);
     }
     const double frameHalf_s = tissue && tissue->time_s.size() > 1
                                    ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
