@@ -751,6 +751,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             double carried_mm = 0.0;
             int steps = 0;
             double pendingCatchUpEnd_s = std::numeric_limits<double>::infinity();  // where the frames of a first reading carried again end
+            const double bandEdge_mm_s = lines ? 1000.0 * lines->bandSlowingDown_m_s / 2.0 : o.zeroBand_mm_s / 2.0;
             for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
                 const double tk = tissue->time_s[k];
                 if (tk - frameHalf_s < t0 || tk >= t1 || !std::isfinite(tissue->velocity_mm_s[k]))
@@ -778,8 +779,11 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // the tissue did not meet the plate, which stops it for the stroke. It slipped
                 // (the needle's jump at the run's start, or a reversal faster than static
                 // friction can follow) or the picture garbled a frame or two. Counted afresh from
-                // there, over two readings of their own frames, each within the needle's speed.
-                const bool carriedClearly = clear && vtk >= 0.8 * vn && vtk <= 1.5 * vn;
+                // there, over two readings of their own frames, each within the needle's speed
+                // and the needle clear of the stick band (twice its edge): slower, the tissue at
+                // rest on the plate sticks to the needle again and is carried into the turning
+                // point, still c.
+                const bool carriedClearly = clear && vtk >= 0.8 * vn && vtk <= 1.5 * vn && vn >= 2.0 * bandEdge_mm_s;
                 if ((firstBehind || pendingBehind) && carriedClearly) {
                     if (r.from_s >= pendingCatchUpEnd_s - 1e-9) {
                         firstBehind.reset();
