@@ -109,17 +109,18 @@ SlidingLine slidingLine(const std::vector<double>& f, const std::vector<double>&
     // reversal), the force short of the line by b times the tissue's speed: in one thin slab
     // at 0.97 Hz, a third of the run, enough to draw the line flat through it. Every sample
     // when too few slow down (a constant speed).
-    std::vector<std::size_t> use;
     const std::size_t step = std::max<std::size_t>(1, window / 5), last = f.size() - 1;
-    for (std::size_t i = 0; i < f.size(); ++i)
-        if (dir * v_mm_s[i] >= minSpeed_mm_s && std::abs(v_mm_s[std::min(last, i + step)]) < std::abs(v_mm_s[i >= step ? i - step : 0]))
-            use.push_back(i);
-    if (use.size() < 2 * window) {
-        use.clear();
+    auto samples = [&](bool slowingOnly) {
+        std::vector<std::size_t> out;
         for (std::size_t i = 0; i < f.size(); ++i)
-            if (dir * v_mm_s[i] >= minSpeed_mm_s)
-                use.push_back(i);
-    }
+            if (dir * v_mm_s[i] >= minSpeed_mm_s &&
+                (!slowingOnly || std::abs(v_mm_s[std::min(last, i + step)]) < std::abs(v_mm_s[i >= step ? i - step : 0])))
+                out.push_back(i);
+        return out;
+    };
+    std::vector<std::size_t> use = samples(true);
+    if (use.size() < 2 * window)
+        use = samples(false);
     SlidingLine line;
     if (use.size() < 2 * window)
         return line;

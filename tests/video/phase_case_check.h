@@ -42,6 +42,19 @@ inline void checkWithVideo(const PhaseMatrixCase& c, const QString& source = QSt
     QVERIFY2(o.withVideo >= 0.9, qPrintable(QStringLiteral("with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
 }
 
+// Case `index` of the draw for `seed`, checked with its video. The videos are encoded with the
+// ffmpeg tool, which the README's test command installs; without it there is nothing to check.
+inline void checkDrawnCase(unsigned seed, int index, const std::function<bool(const PhaseMatrixCase&)>& stillTheCase,
+                           const QString& source = QStringLiteral("suggested from the tissue's motion"),
+                           std::optional<std::pair<double, double>> slabs_mm = {})
+{
+    if (!nb::test::haveFfmpeg())
+        QSKIP("the ffmpeg tool is needed to encode the videos");
+    PhaseMatrixCase c;
+    QVERIFY2(drawnCase(seed, index, stillTheCase, c, slabs_mm), qPrintable(c.describe()));
+    checkWithVideo(c, source);
+}
+
 // The current row's drawn case (columns `seed` and `index`), checked with its video.
 inline void checkDrawnRow(const std::function<bool(const PhaseMatrixCase&)>& stillTheCase,
                           const QString& source = QStringLiteral("suggested from the tissue's motion"),
@@ -49,11 +62,7 @@ inline void checkDrawnRow(const std::function<bool(const PhaseMatrixCase&)>& sti
 {
     QFETCH(unsigned, seed);
     QFETCH(int, index);
-    if (!nb::test::haveFfmpeg())
-        QSKIP("the ffmpeg tool is needed to encode the videos");
-    PhaseMatrixCase c;
-    QVERIFY2(drawnCase(seed, index, stillTheCase, c, slabs_mm), qPrintable(c.describe()));
-    checkWithVideo(c, source);
+    checkDrawnCase(seed, index, stillTheCase, source, slabs_mm);
 }
 
 }  // namespace nb::accuracy

@@ -41,13 +41,8 @@ private slots:
     // tissue cannot do (backwards, or faster than the needle); trusted, it reads 92.8 %.
     void pictureThatDisagreesWithTheForce()
     {
-        if (!nb::test::haveFfmpeg())
-            QSKIP("the ffmpeg tool is needed to encode the videos");
-        PhaseMatrixCase c;
-        QVERIFY2(drawnCase(44993u, 3, [](const PhaseMatrixCase& d) { return d.tissue == QLatin1String("liver1") && d.thickness_mm < 20.0; }, c,
-                           std::pair{10.0, 30.0}),
-                 qPrintable(c.describe()));
-        checkWithVideo(c);
+        checkDrawnCase(44993u, 3, [](const PhaseMatrixCase& d) { return d.tissue == QLatin1String("liver1") && d.thickness_mm < 20.0; }, QStringLiteral("suggested from the tissue's motion"),
+                       std::pair{10.0, 30.0});
     }
 
     // The tissue falls behind the needle and is then carried at the needle's speed again: it
@@ -81,13 +76,8 @@ private slots:
     // above and since it asks the needle to be clear of the band).
     void restingTissueCarriedIntoTheTurn()
     {
-        if (!nb::test::haveFfmpeg())
-            QSKIP("the ffmpeg tool is needed to encode the videos");
-        PhaseMatrixCase c;
-        QVERIFY2(drawnCase(94069u, 0, [](const PhaseMatrixCase& d) { return d.stickBand_mm_s > 3.0 && d.frequency_hz < 0.5; }, c,
-                           std::pair{10.0, 30.0}),
-                 qPrintable(c.describe()));
-        checkWithVideo(c);
+        checkDrawnCase(94069u, 0, [](const PhaseMatrixCase& d) { return d.stickBand_mm_s > 3.0 && d.frequency_hz < 0.5; }, QStringLiteral("suggested from the tissue's motion"),
+                       std::pair{10.0, 30.0});
     }
 
     // A light slab at a fast reversal slips and slides through the plate's gap at about half
@@ -98,13 +88,8 @@ private slots:
     // liver7, 10.3 mm, 0.97 Hz, a picture too noisy to read: 73.9 % with and without the video.
     void slabSlidingThroughTheGap()
     {
-        if (!nb::test::haveFfmpeg())
-            QSKIP("the ffmpeg tool is needed to encode the videos");
-        PhaseMatrixCase c;
-        QVERIFY2(drawnCase(94069u, 5, [](const PhaseMatrixCase& d) { return d.thickness_mm < 12.0 && d.frequency_hz > 0.9; }, c,
-                           std::pair{10.0, 30.0}),
-                 qPrintable(c.describe()));
-        checkWithVideo(c, QStringLiteral("suggested from"));
+        checkDrawnCase(94069u, 5, [](const PhaseMatrixCase& d) { return d.thickness_mm < 12.0 && d.frequency_hz > 0.9; }, QStringLiteral("suggested from"),
+                       std::pair{10.0, 30.0});
     }
 };
 
