@@ -338,6 +338,51 @@ struct Samples {
     int width = 0, height = 0;
 };
 
+// The pixels of a quarter-size copy that change from `a` to `b` far beyond the noise (the
+// typical change of a pixel between the two). A count, not a mean: a thin needle that moves
+// is a few hundred pixels of the picture, and its change averaged over the picture stayed
+// under the noise's (a stroke of 8 mm at 10 mm/s after 14 s of rest: no needle found).
+double changedPixels(const cv::Mat& a, const cv::Mat& b)
+{
+    cv::Mat small[2], diff;
+    for (int k : {0, 1}) {
+        cv::resize(k == 0 ? a : b, small[k], cv::Size(std::max(1, a.cols / 4), std::max(1, a.rows / 4)), 0, 0, cv::INTER_AREA);
+        small[k].convertTo(small[k], CV_32F);
+    }
+    cv::absdiff(small[1], small[0], diff);
+    std::vector<float> values(diff.begin<float>(), diff.end<float>());
+    const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
+    std::nth_element(values.begin(), mid, values.end());
+    const double far = 6.0 * 1.4826 * double(*mid) + 1.0;
+    return double(std::count_if(values.begin(), values.end(), [&](float v) { return v > far; }));
+}
+
+// Of frames spread evenly over a video, the first and last (indices into `gray`) of the
+// stretch in which the picture changes well beyond its usual change, when that stretch is a
+// small part of the video; nothing when the video changes alike all along. One change alone
+// may be a glitch, and spreading frames over its one interval would make a needle that moves
+// all along look still.
+std::optional<std::pair<std::size_t, std::size_t>> movingStretch(const std::vector<cv::Mat>& gray)
+{
+    if (gray.size() < 8)
+        return std::nullopt;
+    std::vector<double> change;
+    for (std::size_t k = 0; k + 1 < gray.size(); ++k)
+        change.push_back(changedPixels(gray[k], gray[k + 1]));
+    const double usual = median(change);
+    std::vector<double> deviation;
+    for (double c : change)
+        deviation.push_back(std::abs(c - usual));
+    const double threshold = usual + std::max(3.0, 6.0 * 1.4826 * median(deviation));
+    std::vector<std::size_t> moving;
+    for (std::size_t k = 0; k < change.size(); ++k)
+        if (change[k] > threshold)
+            moving.push_back(k);
+    if (moving.size() < 2 || 2 * moving.size() >= change.size())
+        return std::nullopt;
+    return std::pair{moving.front(), moving.back() + 1};
+}
+
 // `count` frames spread evenly over the video, and as many again over the stretch in which
 // the picture changes when that is a small part of it. A video begun long before the run
 // shows the needle at rest in most evenly spread frames: its tip at rest then counts as
@@ -364,49 +409,10 @@ Samples sampleFrames(FrameReader& reader, int count)
     count = std::clamp(count, 1, n);
     for (int k = 0; k < count; ++k)
         take(count == 1 ? 0 : int(std::lround(double(k) * (n - 1) / (count - 1))));
-    if (s.gray.size() < 8)
+    const auto stretch = movingStretch(s.gray);
+    if (!stretch)
         return s;
-    // How much the picture changes from one spread frame to the next: the pixels of a
-    // quarter-size copy that change far beyond the noise (the typical change of a pixel
-    // between the two). A count, not a mean: a thin needle that moves is a few hundred pixels
-    // of the picture, and its change averaged over the picture stayed under the noise's
-    // (a stroke of 8 mm at 10 mm/s after 14 s of rest: no needle found).
-    std::vector<cv::Mat> small;
-    for (const cv::Mat& g : s.gray) {
-        cv::Mat m;
-        cv::resize(g, m, cv::Size(std::max(1, s.width / 4), std::max(1, s.height / 4)), 0, 0, cv::INTER_AREA);
-        m.convertTo(m, CV_32F);
-        small.push_back(m);
-    }
-    std::vector<double> change;
-    for (std::size_t k = 0; k + 1 < small.size(); ++k) {
-        cv::Mat diff;
-        cv::absdiff(small[k + 1], small[k], diff);
-        std::vector<float> values(diff.begin<float>(), diff.end<float>());
-        const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
-        std::nth_element(values.begin(), mid, values.end());
-        const double far = 6.0 * 1.4826 * double(*mid) + 1.0;
-        change.push_back(double(std::count_if(values.begin(), values.end(), [&](float v) { return v > far; })));
-    }
-    const double usual = median(change);
-    std::vector<double> deviation;
-    for (double c : change)
-        deviation.push_back(std::abs(c - usual));
-    const double threshold = usual + std::max(3.0, 6.0 * 1.4826 * median(deviation));
-    std::optional<std::size_t> first, last;
-    std::size_t moving = 0;
-    for (std::size_t k = 0; k < change.size(); ++k)
-        if (change[k] > threshold) {
-            ++moving;
-            if (!first)
-                first = k;
-            last = k;
-        }
-    // One change alone may be a glitch, and spreading the frames over its one interval would
-    // make a needle that moves all along look still.
-    if (moving < 2 || 2 * moving >= change.size())
-        return s;
-    const int from = taken[*first], to = taken[*last + 1];
+    const int from = taken[stretch->first], to = taken[stretch->second];
     for (int k = 1; k < count - 1; ++k)
         take(from + int(std::lround(double(k) * (to - from) / (count - 1))));
     return s;
