@@ -405,12 +405,26 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         slowest[d] = std::min(slowest[d], std::fabs(v[i]));
         fastest[d] = std::max(fastest[d], std::fabs(v[i]));
     }
+    // With phases, no sliding samples usually means the tissue never rested: a stroke within
+    // the slab's free travel carries it all along (phase a throughout), and there is no
+    // sliding friction to measure. Say so, rather than blame the band.
+    const auto labelledC = usePhases ? std::count(phases.begin(), phases.end(), QLatin1String("c")) : 0;
+    if (usePhases && labelledC == 0)
+        throw FitError(nb::TrCore::tr("no phase c in the phases: the tissue never rested while the needle slid through it "
+                                      "(a stroke longer than the slab's free travel gives phase c), so C and b cannot be measured"));
     if (pos == 0 && neg == 0)
-        throw FitError(usePhases ? nb::TrCore::tr("no phase-c samples moving faster than the zero-velocity band")
+        throw FitError(usePhases ? nb::TrCore::tr("none of the %1 phase-c samples moves faster than the zero-velocity band (%2 m/s)")
+                                       .arg(labelledC)
+                                       .arg(options.band_m_s)
                                  : nb::TrCore::tr("no motion: no sample moves faster than the zero-velocity band (%1 m/s)")
                                        .arg(options.band_m_s));
     if (pos < 3 || neg < 3)
-        throw FitError(nb::TrCore::tr("motion in one direction only (%1 samples moving in, %2 moving out)").arg(pos).arg(neg));
+        throw FitError(usePhases ? nb::TrCore::tr("phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 "
+                                                  "phase-c samples): the tissue hardly rested in the other")
+                                       .arg(pos)
+                                       .arg(neg)
+                                       .arg(labelledC)
+                                 : nb::TrCore::tr("motion in one direction only (%1 samples moving in, %2 moving out)").arg(pos).arg(neg));
 
     const int off = options.estimateMass ? 1 : 0;
     // Columns follow eq. 19/21: [a], s+, s+·v, s-, s-·v, s- = -1 for v < 0 (F = -Cn + bn·v),

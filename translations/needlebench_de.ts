@@ -5722,17 +5722,27 @@ Befehle:
         <translation>%1 Phasennamen für %2 Messwerte</translation>
     </message>
     <message>
-        <location line="+52"/>
-        <source>no phase-c samples moving faster than the zero-velocity band</source>
-        <translation>keine Messwerte der Phase c schneller als das Nullgeschwindigkeitsband</translation>
+        <location line="+56"/>
+        <source>no phase c in the phases: the tissue never rested while the needle slid through it (a stroke longer than the slab&apos;s free travel gives phase c), so C and b cannot be measured</source>
+        <translation>keine Phase c in den Phasen: das Gewebe kam nie zur Ruhe, während die Nadel hindurchglitt (ein Hub länger als der freie Weg der Scheibe ergibt Phase c), daher lassen sich C und b nicht messen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (%2 m/s)</source>
+        <translation>keiner der %1 Messwerte der Phase c ist schneller als das Nullgeschwindigkeitsband (%2 m/s)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
         <translation>keine Bewegung: kein Messwert ist schneller als das Nullgeschwindigkeitsband (%1 m/s)</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 phase-c samples): the tissue hardly rested in the other</source>
+        <translation>Phase c nur in einer Richtung (%1 gleitende Messwerte einwärts, %2 auswärts, von %3 Messwerten der Phase c): in der anderen kam das Gewebe kaum zur Ruhe</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>motion in one direction only (%1 samples moving in, %2 moving out)</source>
         <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
     </message>
@@ -5867,12 +5877,12 @@ Befehle:
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+741"/>
+        <location filename="../core/label_suggest.cpp" line="+1007"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
     <message>
-        <location filename="../core/surface_relaxation.cpp" line="+119"/>
+        <location filename="../core/surface_relaxation.cpp" line="+49"/>
         <source>too few frames to follow the surface</source>
         <translation>zu wenige Bilder, um der Oberfläche zu folgen</translation>
     </message>
@@ -6271,7 +6281,7 @@ Befehle:
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+105"/>
+        <location filename="../video/frame_index.cpp" line="+111"/>
         <location filename="../video/packet_index.cpp" line="+35"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -6297,7 +6307,7 @@ Befehle:
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+41"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
@@ -6692,7 +6702,7 @@ Befehle:
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+760"/>
+        <location filename="../video/needle_tracker.cpp" line="+830"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
@@ -6717,17 +6727,17 @@ Befehle:
         <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+76"/>
+        <location filename="../video/tissue_tracker.cpp" line="+98"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+119"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+41"/>
         <source>the needle does not move while the video runs</source>
         <translation>die Nadel bewegt sich nicht, während das Video läuft</translation>
     </message>

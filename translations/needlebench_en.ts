@@ -5636,17 +5636,27 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+52"/>
-        <source>no phase-c samples moving faster than the zero-velocity band</source>
+        <location line="+56"/>
+        <source>no phase c in the phases: the tissue never rested while the needle slid through it (a stroke longer than the slab&apos;s free travel gives phase c), so C and b cannot be measured</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (%2 m/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 phase-c samples): the tissue hardly rested in the other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>motion in one direction only (%1 samples moving in, %2 moving out)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5781,12 +5791,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+741"/>
+        <location filename="../core/label_suggest.cpp" line="+1007"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/surface_relaxation.cpp" line="+119"/>
+        <location filename="../core/surface_relaxation.cpp" line="+49"/>
         <source>too few frames to follow the surface</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6185,7 +6195,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+105"/>
+        <location filename="../video/frame_index.cpp" line="+111"/>
         <location filename="../video/packet_index.cpp" line="+35"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -6211,7 +6221,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+41"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
@@ -6606,7 +6616,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+760"/>
+        <location filename="../video/needle_tracker.cpp" line="+830"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6631,17 +6641,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+76"/>
+        <location filename="../video/tissue_tracker.cpp" line="+98"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+119"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+41"/>
         <source>the needle does not move while the video runs</source>
         <translation type="unfinished"></translation>
     </message>

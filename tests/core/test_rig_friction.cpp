@@ -180,6 +180,26 @@ private slots:
         QVERIFY2(eB < 0.15, qPrintable(QStringLiteral("b error %1 %").arg(100 * eB)));
     }
 
+    // A stroke hardly longer than the slab's free travel carries the tissue all along: the
+    // simulator's own phases are a throughout, with no phase c to slide in. Fitting the run
+    // as written (its phase column kept) must say that, naming the file, not blame the band.
+    void strokeWithinTheFreeTravelSaysWhy()
+    {
+        Truth truth;
+        const QString blind = simulate(QStringLiteral("carried"),
+                                       {QStringLiteral("--tissue"), QStringLiteral("liver7"), QStringLiteral("--amplitude-mm"),
+                                        QStringLiteral("3.2"), QStringLiteral("--frequency-hz"), QStringLiteral("0.59"),
+                                        QStringLiteral("--stick-band-mm-s"), QStringLiteral("1.93"), QStringLiteral("--plate-gap-mm"),
+                                        QStringLiteral("2.88"), QStringLiteral("--seed"), QStringLiteral("49509")},
+                                       &truth);
+        QVERIFY(!blind.isEmpty());
+        const QString full = dir_.filePath(QStringLiteral("carried.full.csv"));
+        const auto r = nbtest::runCli(QStringList{QStringLiteral("fit"), QStringLiteral("friction"), QStringLiteral("--thickness-mm"),
+                                                  QStringLiteral("30"), full});
+        QVERIFY2(r.code != 0, qPrintable(r.out));
+        QVERIFY2(r.err.contains(QStringLiteral("carried.full.csv")) && r.err.contains(QStringLiteral("no phase c")), qPrintable(r.err));
+    }
+
     // A slow, short stroke leaves the slab resting at the knee of its contact with the plate:
     // soft below about 0.2 N, stiff above, so its give changes along the stroke and no single
     // stiffness follows it (Cp 23 % high). The fit must not print that C as a result: the
