@@ -328,6 +328,7 @@ private slots:
         }());
         QVERIFY(!redoDialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->isEnabled());  // no reason yet
         QTest::keyClicks(redoDialog->edit(), QStringLiteral("air bubble in the trace"));
+        const auto* runFourRig = w.engine();
         redoDialog->accept();
         QTRY_COMPARE(walker->nextRun()->number, 3);
         QVERIFY(w.planPanel()->progressText().startsWith(QStringLiteral("Run 3 of 5 · ")));
@@ -340,10 +341,13 @@ private slots:
 
         // The emergency stop works on a plan run as on any: Esc ends it, the attempt is recorded
         // as such and the run stays next.
-        QTest::qWait(200);  // run three's rig (its seed), switched once the redo is handled
-        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().running && p->button(Control::Enable)->isEnabled(), 20000);
-        if (!w.engine()->status().stageEnabled)
-            p->button(Control::Enable)->click();
+        // Run three's rig (its seed) replaces run four's once the redo is handled and the stage
+        // rests, and starts disabled. Enable is pressed when the panel shows that: a fixed
+        // 200 ms wait let it go to the rig about to be replaced under ASan on a loaded machine,
+        // and pressed while the panel still showed the old rig's enabled stage it disables.
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine() != runFourRig, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().running && !p->interlockState().stageEnabled && p->button(Control::Enable)->isEnabled(), 20000);
+        p->button(Control::Enable)->click();
         QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().stageEnabled && p->interlockState().stageEnabled, 20000);
         p->button(Control::Bias)->click();
         QTRY_VERIFY_WITH_TIMEOUT(w.planPanel()->checkBox(nb::PlanPanel::Item::Bias)->isChecked(), 20000);
