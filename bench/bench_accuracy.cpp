@@ -38,7 +38,7 @@ void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString&
     out << "\n== phases: simulated friction runs, truth hidden from the suggestion (agreement per sample, without / with video)\n";
     std::mt19937 rng(seed ^ 0x9e3779b9u);
     std::vector<double> without, with;
-    int failed = 0, unread = 0;
+    int failed = 0, unread = 0, placedByPicture = 0;
     std::vector<PhaseMatrixCase> cases = drawPhaseMatrix(rng, count, false);
     if (thickness_mm)
         drawSlabThicknesses(cases, seed, thickness_mm->first, thickness_mm->second);
@@ -55,18 +55,25 @@ void printPhaseMatrix(QTextStream& out, unsigned seed, int count, const QString&
         without.push_back(100 * o.withoutVideo);
         with.push_back(100 * o.withVideo);
         unread += !o.videoUsed;
-        out << QStringLiteral("%1  without %2 %  with %3 %%4  %5\n")
+        placedByPicture += o.fromPicture > 0.0;
+        out << QStringLiteral("%1  without %2 %  with %3 %  picture placed %4 %%5  %6\n")
                    .arg(i, 3)
                    .arg(100 * o.withoutVideo, 5, 'f', 1)
                    .arg(100 * o.withVideo, 5, 'f', 1)
+                   .arg(100 * o.fromPicture, 3, 'f', 0)
                    .arg(o.videoUsed ? QString() : QStringLiteral(" (video unread: ") + o.videoSource + QStringLiteral(")"))
                    .arg(cases[i].describe());
         out.flush();
     }
     out << QStringLiteral("phases: %1 runs (%2 failed, %3 videos unread): without video p50 %4 %, min %5 %; with video p50 %6 %, min %7 %\n")
-               .arg(cases.size()).arg(failed).arg(unread)
+               .arg(without.size() + std::size_t(failed)).arg(failed).arg(unread)
                .arg(quantile(without, 0.5), 0, 'f', 1).arg(quantile(without, 0.0), 0, 'f', 1)
                .arg(quantile(with, 0.5), 0, 'f', 1).arg(quantile(with, 0.0), 0, 'f', 1);
+    // How much of "with video" the picture decided: where it is judged too unclear (or agrees
+    // with the force everywhere) the figure is the force's own.
+    out << QStringLiteral("phases: the picture placed phase labels in %1 of %2 runs; elsewhere it was judged too unclear "
+                          "and force and position decided\n")
+               .arg(placedByPicture).arg(without.size());
     out << "targets: >= 80 % without video and >= 90 % with video, in every case\n";
 }
 

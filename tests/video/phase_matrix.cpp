@@ -238,6 +238,14 @@ PhaseMatrixOutcome runPhaseMatrixCase(const PhaseMatrixCase& c, const QString& e
         const Labels& withVideo = found.labels;
         out.videoSource = out.videoUsed ? (withVideo.empty() ? QString() : withVideo.front().comment) : found.problem;
         out.withVideo = agreement(truth, withVideo, blind.time_s);
+        int phaseLabels = 0, placed = 0;
+        for (const Label& l : withVideo) {
+            if (l.label != QLatin1String("a") && l.label != QLatin1String("b1") && l.label != QLatin1String("b2") && l.label != QLatin1String("c"))
+                continue;
+            ++phaseLabels;
+            placed += l.comment.startsWith(QLatin1String("suggested from the tissue's motion"));
+        }
+        out.fromPicture = phaseLabels > 0 ? double(placed) / phaseLabels : 0.0;
         writeLabelsFile(QDir(workDir).filePath(QStringLiteral("labels_with_video.csv")), withVideo);
         // The clock the video was made on, for `labels suggest --video-offset-s --video-drift`.
         QFile clock(QDir(workDir).filePath(QStringLiteral("video_clock.txt")));

@@ -43,6 +43,9 @@ struct PhaseMatrixOutcome {
     double withVideo = 0.0;
     bool videoUsed = false;        // false: the picture could not be read (withVideo is force only)
     QString videoSource;           // what the suggestion says it came from
+    // Of the suggested phase labels, the fraction the picture placed (their comment says they
+    // came from the tissue's motion); 0 where it was judged too unclear and the force decided.
+    double fromPicture = 0.0;
 };
 
 // `small`: smaller pictures (for the ctest).
