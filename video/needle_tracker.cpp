@@ -338,23 +338,16 @@ struct Samples {
     int width = 0, height = 0;
 };
 
-// The pixels of a quarter-size copy that change from `a` to `b` far beyond the noise (the
-// typical change of a pixel between the two). A count, not a mean: a thin needle that moves
-// is a few hundred pixels of the picture, and its change averaged over the picture stayed
-// under the noise's (a stroke of 8 mm at 10 mm/s after 14 s of rest: no needle found).
+// The pixels that change from `a` to `b` (quarter-size float copies) far beyond the noise
+// (the typical change of a pixel between the two). A count, not a mean: a thin needle that
+// moves is a few hundred pixels of the picture, and its change averaged over the picture
+// stayed under the noise's (a stroke of 8 mm at 10 mm/s after 14 s of rest: no needle found).
 double changedPixels(const cv::Mat& a, const cv::Mat& b)
 {
-    cv::Mat small[2], diff;
-    for (int k : {0, 1}) {
-        cv::resize(k == 0 ? a : b, small[k], cv::Size(std::max(1, a.cols / 4), std::max(1, a.rows / 4)), 0, 0, cv::INTER_AREA);
-        small[k].convertTo(small[k], CV_32F);
-    }
-    cv::absdiff(small[1], small[0], diff);
-    std::vector<float> values(diff.begin<float>(), diff.end<float>());
-    const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), mid, values.end());
-    const double far = 6.0 * 1.4826 * double(*mid) + 1.0;
-    return double(std::count_if(values.begin(), values.end(), [&](float v) { return v > far; }));
+    cv::Mat diff;
+    cv::absdiff(b, a, diff);
+    const double far = 6.0 * 1.4826 * median(std::vector<double>(diff.begin<float>(), diff.end<float>())) + 1.0;
+    return double(std::count_if(diff.begin<float>(), diff.end<float>(), [&](float v) { return v > far; }));
 }
 
 // Of frames spread evenly over a video, the first and last (indices into `gray`) of the
@@ -366,9 +359,15 @@ std::optional<std::pair<std::size_t, std::size_t>> movingStretch(const std::vect
 {
     if (gray.size() < 8)
         return std::nullopt;
+    // Each frame reduced once, then compared with its neighbours.
+    std::vector<cv::Mat> small(gray.size());
+    for (std::size_t k = 0; k < gray.size(); ++k) {
+        cv::resize(gray[k], small[k], cv::Size(std::max(1, gray[k].cols / 4), std::max(1, gray[k].rows / 4)), 0, 0, cv::INTER_AREA);
+        small[k].convertTo(small[k], CV_32F);
+    }
     std::vector<double> change;
-    for (std::size_t k = 0; k + 1 < gray.size(); ++k)
-        change.push_back(changedPixels(gray[k], gray[k + 1]));
+    for (std::size_t k = 0; k + 1 < small.size(); ++k)
+        change.push_back(changedPixels(small[k], small[k + 1]));
     const double usual = median(change);
     std::vector<double> deviation;
     for (double c : change)
