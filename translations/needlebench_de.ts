@@ -5271,7 +5271,7 @@ Befehle:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+343"/>
+        <location filename="../core/friction_fit.cpp" line="+349"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -5778,11 +5778,12 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
+        <location line="+35"/>
         <source>%1 rests on an undetermined %2</source>
         <translation>%1 beruht auf einem unbestimmten %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-31"/>
         <source>%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times its noise (the tissue&apos;s give changes along the stroke)</source>
         <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Seine Gleitkraft weicht um das %3-Fache ihres Rauschens von der Geraden ab (das Nachgeben des Gewebes ändert sich entlang des Hubs)</translation>
     </message>
@@ -5792,7 +5793,12 @@ Befehle:
         <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Darf sich seine Gleitgerade krümmen, verschiebt sich %1 um %3 % (das Nachgeben des Gewebes ändert sich mit der Geschwindigkeit; Phase c dort markieren, wo das Gewebe ruht)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
+        <source>%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range of speeds to carry its line down to zero speed</source>
+        <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
     </message>
@@ -6702,7 +6708,7 @@ Befehle:
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+830"/>
+        <location filename="../video/needle_tracker.cpp" line="+829"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>

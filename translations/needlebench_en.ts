@@ -5185,7 +5185,7 @@ Commands:
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+343"/>
+        <location filename="../core/friction_fit.cpp" line="+349"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5692,11 +5692,12 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
+        <location line="+35"/>
         <source>%1 rests on an undetermined %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-31"/>
         <source>%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times its noise (the tissue&apos;s give changes along the stroke)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5706,7 +5707,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
+        <source>%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range of speeds to carry its line down to zero speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6616,7 +6622,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+830"/>
+        <location filename="../video/needle_tracker.cpp" line="+829"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>

@@ -298,6 +298,41 @@ private slots:
         QVERIFY(speeds.at(0).toDouble() > 0.0 && speeds.at(0).toDouble() < speeds.at(1).toDouble());
     }
 
+    // A wide stick band (±3.9 mm/s) on a short, quick stroke (±3.7 mm at 0.57 Hz): phase c holds
+    // sliding samples only between 7.1 and 7.9 mm/s, the top tenth of the stroke's speed. Their
+    // line's slope was 23 % high in both directions with standard errors of 1.5 %, nothing
+    // flagged it, and C rested on it. A line seen over less than a quarter of its top speed is
+    // not a result: b and C are flagged, and the reason names the speeds.
+    void narrowSlidingRangeIsFlagged()
+    {
+        Truth truth;
+        const QString blind = simulate(QStringLiteral("narrow"),
+                                       {QStringLiteral("--tissue"), QStringLiteral("liver2"), QStringLiteral("--amplitude-mm"), QStringLiteral("3.7"),
+                                        QStringLiteral("--frequency-hz"), QStringLiteral("0.57"), QStringLiteral("--stick-band-mm-s"),
+                                        QStringLiteral("3.87"), QStringLiteral("--plate-gap-mm"), QStringLiteral("2.2"), QStringLiteral("--cycles"),
+                                        QStringLiteral("7"), QStringLiteral("--seed"), QStringLiteral("61397")},
+                                       &truth);
+        QVERIFY(!blind.isEmpty());
+        // With the run's own phase column: C and b from phase c as labelled.
+        const QJsonObject r = fit({dir_.filePath(QStringLiteral("narrow.full.csv"))}).value(QStringLiteral("runs")).toArray().at(0).toObject();
+        const QJsonObject p = r.value(QStringLiteral("per_length")).toObject();
+        const QJsonArray flagged = r.value(QStringLiteral("not_physical_values")).toArray();
+        const QJsonArray why = r.value(QStringLiteral("not_physical")).toArray();
+        for (const char* d : {"p", "n"}) {
+            const QString b = QStringLiteral("b") + QLatin1String(d), c = QStringLiteral("C") + QLatin1String(d);
+            const double eB = relErr(p.value(b + QStringLiteral("_Ns_per_m2")).toDouble(), d[0] == 'p' ? truth.bp : truth.bn);
+            const double eC = relErr(p.value(c + QStringLiteral("_N_per_m")).toDouble(), d[0] == 'p' ? truth.Cp : truth.Cn);
+            const QJsonArray speeds = r.value(QStringLiteral("sliding_speed_m_s")).toObject()
+                                          .value(QLatin1String(d[0] == 'p' ? "positive" : "negative")).toArray();
+            const double from = speeds.at(0).toDouble(), to = speeds.at(1).toDouble();
+            qInfo("narrow %s: sliding %.2f-%.2f mm/s, b error %.1f %%, C error %.1f %%", d, 1000 * from, 1000 * to, 100 * eB, 100 * eC);
+            QVERIFY2(to - from < 0.25 * to, qPrintable(QStringLiteral("the run now slides over %1-%2 mm/s").arg(1000 * from).arg(1000 * to)));
+            QVERIFY2(flagged.contains(b) && flagged.contains(c), qPrintable(QJsonDocument(flagged).toJson()));
+        }
+        QVERIFY2(std::any_of(why.begin(), why.end(), [](const QJsonValue& w) { return w.toString().contains(QStringLiteral("too narrow a range")); }),
+                 qPrintable(QJsonDocument(why).toJson()));
+    }
+
     void oneFrequencyMakesNoLine()
     {
         Truth truth;
