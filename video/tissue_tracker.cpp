@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 
 namespace nb::video {
@@ -176,23 +177,30 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             reference = image;
             referenceIsPrevious = true;
         } else if (t > previousTime) {
+            // The match with the picture before runs beside the one with the reference: they
+            // only read the same pictures, and on two cores the second costs no time.
+            double previousResponse = 0.0;
+            cv::Point2d fromPrevious;
+            std::future<void> matchingPrevious;
+            if (!referenceIsPrevious)
+                matchingPrevious = std::async(std::launch::async, [&] {
+                    fromPrevious = previousPosition + cv::phaseCorrelate(previous, image, cv::noArray(), &previousResponse);
+                });
             double response = 0.0;
             cv::Point2d position = referencePosition + cv::phaseCorrelate(reference, image, cv::noArray(), &response);
-            if (std::hypot(position.x - referencePosition.x, position.y - referencePosition.y) > kRekey_px || response < kWeakResponse) {
-                // Too far from the reference (or no longer like it): the previous picture,
-                // whose position is known, becomes the reference.
+            if (matchingPrevious.valid())
+                matchingPrevious.get();
+            const bool farOrWeak =
+                std::hypot(position.x - referencePosition.x, position.y - referencePosition.y) > kRekey_px || response < kWeakResponse;
+            // Too far from the reference (or no longer like it), or in disagreement with the
+            // picture before: that picture, whose position is known, becomes the reference.
+            // (Where it is the reference already, the match stands.)
+            if (!referenceIsPrevious &&
+                (farOrWeak || std::hypot(fromPrevious.x - position.x, fromPrevious.y - position.y) > kDisagree_px)) {
                 reference = previous;
                 referencePosition = previousPosition;
-                position = referencePosition + cv::phaseCorrelate(reference, image, cv::noArray(), &response);
-            } else if (!referenceIsPrevious) {
-                double previousResponse = 0.0;
-                const cv::Point2d fromPrevious = previousPosition + cv::phaseCorrelate(previous, image, cv::noArray(), &previousResponse);
-                if (std::hypot(fromPrevious.x - position.x, fromPrevious.y - position.y) > kDisagree_px) {
-                    reference = previous;
-                    referencePosition = previousPosition;
-                    position = fromPrevious;
-                    response = previousResponse;
-                }
+                position = fromPrevious;
+                response = previousResponse;
             }
             referenceIsPrevious = false;  // this picture becomes `previous`, the reference stays older
             const cv::Point2d shift = position - previousPosition;
