@@ -95,6 +95,9 @@ def main():
     ap.add_argument('--keep', default=None, help='leave the runs and truths in this folder')
     ap.add_argument('--jobs', type=int, default=2)
     a = ap.parse_args()
+    if not os.access(a.exe, os.X_OK):
+        print(f'friction_cli_matrix: {a.exe} is not an executable needlebench (build it, or give --exe)', file=sys.stderr)
+        return 2
     seed = a.seed if a.seed is not None else random.SystemRandom().randint(1, 999999)
     print(f'friction_cli_matrix: seed {seed} (rerun with --seed {seed}), {a.runs} runs')
     work = a.keep or tempfile.mkdtemp(prefix='nb_friction_matrix_')
