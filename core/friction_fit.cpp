@@ -612,7 +612,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     }
 
     auto flag = [&](const char* value, const QString& why) {
-        if (!why.isEmpty())
+        if (!why.isEmpty() && !fit.notPhysical.contains(why))
             fit.notPhysical << why;
         if (!fit.notPhysicalValues.contains(QLatin1String(value)))
             fit.notPhysicalValues << QString::fromLatin1(value);
@@ -627,12 +627,22 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         flag("bn", nb::TrCore::tr("bn < 0: damping cannot feed energy in"));
     // A line through too narrow a range of sliding speeds leaves its slope, and with it C, to
     // the noise: not a result either (b = 1.8 ± 2.5 from a run that slides between 4.6 and 6.8 mm/s).
-    auto undetermined = [&](const char* c, const char* b, double slope, double se) {
-        if (se > 0.25 * std::fabs(slope)) {
-            flag(b, nb::TrCore::tr("%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds")
-                        .arg(QString::fromLatin1(b)).arg(slope, 0, 'g', 3).arg(se, 0, 'g', 2));
-            flag(c, nb::TrCore::tr("%1 rests on an undetermined %2").arg(QString::fromLatin1(c), QString::fromLatin1(b)));
-        }
+    auto slopeUndetermined = [&](const char* c, const char* b, const QString& why) {
+        flag(b, why);
+        flag(c, nb::TrCore::tr("%1 rests on an undetermined %2").arg(QString::fromLatin1(c), QString::fromLatin1(b)));
+    };
+    // Its standard error above a quarter of it (noise), or sliding speeds spanning less than
+    // kMinSlidingSpan of the fastest (the slab's give, which the standard error does not show).
+    auto undetermined = [&](const char* c, const char* b, double slope, double se, double from_m_s, double to_m_s) {
+        if (se > 0.25 * std::fabs(slope))
+            slopeUndetermined(c, b, nb::TrCore::tr("%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds")
+                                        .arg(QString::fromLatin1(b)).arg(slope, 0, 'g', 3).arg(se, 0, 'g', 2));
+        if (to_m_s - from_m_s < kMinSlidingSpan * to_m_s)
+            slopeUndetermined(c, b, nb::TrCore::tr("%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range "
+                                                   "of speeds to carry its line down to zero speed")
+                                        .arg(QString::fromLatin1(b))
+                                        .arg(1000.0 * from_m_s, 0, 'f', 1)
+                                        .arg(1000.0 * to_m_s, 0, 'f', 1));
     };
     auto unexplained = [&](const char* c, const char* b, double ratio) {
         flag(c, nb::TrCore::tr("%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times "
@@ -656,20 +666,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         unexplained("Cn", "bn", fit.residualToNoiseN);
     else if (bends[1])
         bent("Cn", "bn", fit.bendShiftCn);
-    undetermined("Cp", "bp", fit.model.bp_Ns_per_m, fit.seBp_Ns_per_m);
-    undetermined("Cn", "bn", fit.model.bn_Ns_per_m, fit.seBn_Ns_per_m);
-    auto narrow = [&](const char* c, const char* b, double from_m_s, double to_m_s) {
-        if (to_m_s - from_m_s >= kMinSlidingSpan * to_m_s)
-            return;
-        flag(b, nb::TrCore::tr("%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range "
-                               "of speeds to carry its line down to zero speed")
-                    .arg(QString::fromLatin1(b))
-                    .arg(1000.0 * from_m_s, 0, 'f', 1)
-                    .arg(1000.0 * to_m_s, 0, 'f', 1));
-        flag(c, nb::TrCore::tr("%1 rests on an undetermined %2").arg(QString::fromLatin1(c), QString::fromLatin1(b)));
-    };
-    narrow("Cp", "bp", slowest[0], fastest[0]);
-    narrow("Cn", "bn", slowest[1], fastest[1]);
+    undetermined("Cp", "bp", fit.model.bp_Ns_per_m, fit.seBp_Ns_per_m, slowest[0], fastest[0]);
+    undetermined("Cn", "bn", fit.model.bn_Ns_per_m, fit.seBn_Ns_per_m, slowest[1], fastest[1]);
     if (fit.staticSource != QLatin1String("none")) {
         if (fit.model.Dp_N <= 0.0)
             flag("Dp", nb::TrCore::tr("Dp is not positive: the static limit in + motion has the wrong sign"));

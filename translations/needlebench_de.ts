@@ -5772,18 +5772,17 @@ Befehle:
         <translation>bn &lt; 0: Dämpfung kann keine Energie zuführen</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
         <source>%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds</source>
         <translation>%1 = %2 ± %3 N·s/m ist durch diesen Lauf nicht bestimmt: er gleitet über einen zu engen Geschwindigkeitsbereich</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+35"/>
+        <location line="-6"/>
         <source>%1 rests on an undetermined %2</source>
         <translation>%1 beruht auf einem unbestimmten %2</translation>
     </message>
     <message>
-        <location line="-31"/>
+        <location line="+16"/>
         <source>%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times its noise (the tissue&apos;s give changes along the stroke)</source>
         <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Seine Gleitkraft weicht um das %3-Fache ihres Rauschens von der Geraden ab (das Nachgeben des Gewebes ändert sich entlang des Hubs)</translation>
     </message>
@@ -5793,12 +5792,12 @@ Befehle:
         <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Darf sich seine Gleitgerade krümmen, verschiebt sich %1 um %3 % (das Nachgeben des Gewebes ändert sich mit der Geschwindigkeit; Phase c dort markieren, wo das Gewebe ruht)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-14"/>
         <source>%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range of speeds to carry its line down to zero speed</source>
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+32"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation>Dp ist nicht positiv: die Haftgrenze bei Bewegung in + hat das falsche Vorzeichen</translation>
     </message>
@@ -6733,12 +6732,12 @@ Befehle:
         <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+98"/>
+        <location filename="../video/tissue_tracker.cpp" line="+99"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+145"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
     </message>

@@ -5686,18 +5686,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
         <source>%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+35"/>
+        <location line="-6"/>
         <source>%1 rests on an undetermined %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-31"/>
+        <location line="+16"/>
         <source>%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times its noise (the tissue&apos;s give changes along the stroke)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5707,12 +5706,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-14"/>
         <source>%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range of speeds to carry its line down to zero speed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+32"/>
         <source>Dp is not positive: the static limit in + motion has the wrong sign</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6647,12 +6646,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+98"/>
+        <location filename="../video/tissue_tracker.cpp" line="+99"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+145"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation type="unfinished"></translation>
     </message>

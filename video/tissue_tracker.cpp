@@ -129,7 +129,6 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     // within a few tenths of a pixel (the median disagreement: 0.1-0.2 px on clear pictures,
     // 0.4 px under heavy noise), and the reference keeps the slow tissue's motion whole.
     constexpr double kDisagree_px = 1.5;
-    bool referenceIsPrevious = false;  // the reference is `previous` (the first picture's only)
     cv::Mat previous, window, reference, lastShown;
     double previousTime = 0.0, clip = 0.0;
     cv::Point2d referencePosition(0, 0), previousPosition(0, 0);
@@ -175,8 +174,9 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         cv::multiply(image, window, image);
         if (reference.empty()) {
             reference = image;
-            referenceIsPrevious = true;
         } else if (t > previousTime) {
+            // Only for the first pair is the reference the picture before.
+            const bool referenceIsPrevious = out.time_s.empty();
             // The match with the picture before runs beside the one with the reference: they
             // only read the same pictures, and on two cores the second costs no time.
             double previousResponse = 0.0;
@@ -202,7 +202,6 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
                 position = fromPrevious;
                 response = previousResponse;
             }
-            referenceIsPrevious = false;  // this picture becomes `previous`, the reference stays older
             const cv::Point2d shift = position - previousPosition;
             out.time_s.push_back(0.5 * (t + previousTime));
             out.dt_s.push_back(t - previousTime);
