@@ -32,6 +32,7 @@ QString lookName(Look l)
     case Look::Angle30: return QStringLiteral("needle at 30 deg");
     case Look::Angle90: return QStringLiteral("needle at 90 deg");
     case Look::VariableRate: return QStringLiteral("variable rate, dropped/duplicated frames");
+    case Look::Speckle: return QStringLiteral("faint thin needle on grainy tissue");
     }
     return {};
 }
@@ -134,6 +135,7 @@ struct Painter {
     double angle_deg = 0.0;
     double background = 120, needle = 40, noise = 4, width = 4;
     cv::Mat texture;
+    cv::Mat along, shaft;  // Speckle: position along the axis, and the shaft's brightness
 
     explicit Painter(const SyncCase& sc) : c(sc)
     {
@@ -152,10 +154,30 @@ struct Painter {
         case Look::Angle30: angle_deg = 30.0; needle = 220; background = 70; noise = 8; break;
         case Look::Angle90: angle_deg = 90.0; noise = 8; break;
         case Look::VariableRate: angle_deg = 180.0 * u(rng); noise = 6; break;
+        case Look::Speckle: angle_deg = 180.0 * u(rng); background = 110; needle = 140; noise = 6; break;
         case Look::Rendered: break;
         }
         // A soft, fixed texture (anatomy) so that the background is not perfectly flat.
-        if (c.look != Look::Plain) {
+        if (c.look == Look::Speckle) {
+            // Grains of 4 pixels, as strong as the needle is bright: the shaft is lost in
+            // them in any one picture; only its tip moves.
+            cv::Mat grains(c.height / 4 + 1, c.width / 4 + 1, CV_32F);
+            cv::randn(grains, 0.0, 25.0);
+            cv::resize(grains, texture, cv::Size(grains.cols * 4, grains.rows * 4), 0, 0, cv::INTER_NEAREST);
+            texture = texture(cv::Rect(0, 0, c.width, c.height)).clone();
+            // The needle as a smooth profile across its axis (not a rasterised line, whose
+            // edge pixels shift as its end moves): distance along and across the axis.
+            const double th = angle_deg * M_PI / 180.0;
+            along.create(c.height, c.width, CV_32F);
+            shaft.create(c.height, c.width, CV_32F);
+            for (int y = 0; y < c.height; ++y)
+                for (int x = 0; x < c.width; ++x) {
+                    const double dx = x - c.width / 2.0, dy = y - c.height / 2.0;
+                    const double across = -dx * std::sin(th) + dy * std::cos(th);
+                    along.at<float>(y, x) = float(dx * std::cos(th) + dy * std::sin(th));
+                    shaft.at<float>(y, x) = float((needle - background) * std::exp(-0.5 * across * across / (1.5 * 1.5)));
+                }
+        } else if (c.look != Look::Plain) {
             texture.create(c.height, c.width, CV_32F);
             cv::randn(texture, 0.0, 20.0);
             cv::GaussianBlur(texture, texture, cv::Size(0, 0), 6.0);
@@ -175,7 +197,14 @@ struct Painter {
         // Drawn at 8x sub-pixel precision so that the tip moves smoothly.
         constexpr int shift = 3;
         auto fixed = [](const cv::Point2d& p) { return cv::Point(int(std::lround(p.x * 8)), int(std::lround(p.y * 8))); };
-        cv::line(f, fixed(tail), fixed(tip), cv::Scalar(needle), int(width), cv::LINE_AA, shift);
+        if (c.look == Look::Speckle) {
+            // shaft / (1 + exp((along - tip) / 1 px)): the shaft, ending softly at the tip.
+            cv::Mat ending;
+            cv::exp(along - tip_px, ending);
+            f += shaft / (1.0 + ending);
+        } else {
+            cv::line(f, fixed(tail), fixed(tip), cv::Scalar(needle), int(width), cv::LINE_AA, shift);
+        }
         if (noise > 0) {
             cv::Mat n(f.size(), CV_32F);
             cv::RNG rng(std::uint64_t(c.seed) * 7919u + std::uint64_t(frameNumber));

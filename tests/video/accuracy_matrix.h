@@ -19,7 +19,9 @@ class Mat;
 
 namespace nb::accuracy {
 
-enum class Look { Rendered, Plain, NoisyLowContrast, Overlays, Angle30, Angle90, VariableRate };
+// The matrix draws the first seven; Speckle (a faint thin needle on grainy tissue, the grain
+// as strong as the needle) is asked for by name, so that adding it left every drawn case alone.
+enum class Look { Rendered, Plain, NoisyLowContrast, Overlays, Angle30, Angle90, VariableRate, Speckle };
 enum class Codec { Mjpeg, H264, Dv };
 
 QString lookName(Look l);
