@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""Sync on videos the project's renderer did not make.
+
+Each case is drawn at random from the printed seed: a run from `needlebench simulate`
+(sine 0.1-1 Hz or linear 1-10 mm/s), and a video of it drawn here with numpy and encoded
+with the ffmpeg tool: a needle as a smooth profile sliding along its axis at any angle, on
+static grain (4 px, 25 grey levels) with noise 3-35 and contrast 25-100, 15/25/29.97/30
+frames/s, 320x240 to 1024x768, H.264 (B-frames), MJPEG or MPEG-4, with or without a burnt-in
+frame counter and clock, offset -5..15 s, drift 0-0.2 %. `needlebench sync --json` is asked
+for the offset and drift; the error is the largest over the recording, in frames.
+
+  bench/sync_probe_matrix.py [--seed N] [--cases 16] [--exe build/app/needlebench] [--keep DIR]
+
+Needs python3-numpy (with python3-pandas) and ffmpeg; 16 cases take about 3 minutes on 2 cores.
+"""
+import argparse
+import json
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+
+try:
+    import numpy as np
+except ImportError:
+    sys.exit("sync_probe_matrix: needs numpy (Debian: python3-numpy)")
+
+
+def read_run(path):
+    t, x = [], []
+    with open(path) as f:
+        header = None
+        for line in f:
+            if line.startswith('#'):
+                continue
+            cells = line.rstrip('\n').split(',')
+            if header is None:
+                header = cells
+                it, ix = header.index('time_s'), header.index('position_mm')
+                continue
+            t.append(float(cells[it]))
+            x.append(float(cells[ix]))
+    return np.array(t), np.array(x)
+
+
+def draw_video(c, t, x, path):
+    rng = np.random.default_rng(c['seed'])
+    W, H = c['size']
+    fps = c['fps']
+    n = int((c['offset'] + t[-1] + 1.0) * fps)
+    u = np.array([np.cos(np.radians(c['angle'])), np.sin(np.radians(c['angle']))])
+    grain = rng.normal(0, 1, (H // 4 + 2, W // 4 + 2))
+    background = 110 + 25 * np.kron(grain, np.ones((4, 4)))[:H, :W]
+    yy, xx = np.mgrid[0:H, 0:W].astype(np.float32)
+    along = (xx - W / 2) * u[0] + (yy - H / 2) * u[1]
+    across = -(xx - W / 2) * u[1] + (yy - H / 2) * u[0]
+    shaft = c['contrast'] * np.exp(-0.5 * (across / 1.5) ** 2)
+    cmd = ['ffmpeg', '-y', '-loglevel', 'error', '-f', 'rawvideo', '-pix_fmt', 'gray', '-s', f'{W}x{H}', '-r', str(fps), '-i', '-']
+    if c['counter']:
+        cmd += ['-vf', "drawtext=text='%{n}':x=10:y=10:fontsize=24:fontcolor=white:box=1:boxcolor=black,"
+                       "drawtext=text='%{pts\\:hms}':x=W-200:y=H-40:fontsize=20:fontcolor=white"]
+    cmd += {'libx264': ['-c:v', 'libx264', '-bf', '2', '-pix_fmt', 'yuv420p', '-crf', '23'],
+            'mjpeg': ['-c:v', 'mjpeg', '-q:v', '5', '-pix_fmt', 'yuvj420p'],
+            'mpeg4': ['-c:v', 'mpeg4', '-q:v', '5']}[c['codec']] + [path]
+    p = subprocess.Popen(cmd, stdin=subprocess.PIPE)
+    for k in range(n):
+        # video time k/fps shows recording time (k/fps)(1 + drift) - offset
+        pos = np.interp(k / fps * (1 + c['drift']) - c['offset'], t, x)
+        tip = -40 + pos * c['px_per_mm']
+        ending = 1.0 / (1.0 + np.exp(np.clip(along - tip, -50, 50)))
+        img = background + shaft * ending + rng.normal(0, c['noise'], (H, W))
+        p.stdin.write(np.clip(img, 0, 255).astype(np.uint8).tobytes())
+    p.stdin.close()
+    if p.wait() != 0:
+        raise RuntimeError('ffmpeg failed')
+
+
+def draw_cases(seed, count):
+    rnd = random.Random(seed)
+    cases = []
+    for i in range(count):
+        linear = rnd.random() < 0.3
+        c = dict(i=i, linear=linear, frequency=round(rnd.uniform(0.1, 1.0), 2), amplitude=round(rnd.uniform(3, 10), 1),
+                 velocity=round(rnd.uniform(1, 10), 1), offset=round(rnd.uniform(-5, 15), 3), drift=round(rnd.uniform(0, 0.002), 5),
+                 fps=rnd.choice([25, 29.97, 30, 15]), size=rnd.choice([(640, 480), (320, 240), (1024, 768), (720, 576)]),
+                 angle=round(rnd.uniform(-180, 180), 1), px_per_mm=round(rnd.uniform(3, 10), 1), noise=round(rnd.uniform(3, 35), 1),
+                 contrast=round(rnd.uniform(25, 100)), codec=rnd.choice(['libx264', 'mjpeg', 'mpeg4']), counter=rnd.choice([0, 1]),
+                 tissue=rnd.choice(['liver1', 'liver2', 'liver3', 'liver5', 'liver7']), seed=rnd.randrange(1, 99999))
+        if linear:
+            c['px_per_mm'] = min(c['px_per_mm'], 4.0)  # the whole stroke inside the picture
+        cases.append(c)
+    return cases
+
+
+def describe(c):
+    motion = f"linear {c['velocity']} mm/s" if c['linear'] else f"sine {c['frequency']} Hz ±{c['amplitude']} mm"
+    return (f"{motion}, offset {c['offset']} s, drift {100 * c['drift']:.3f} %, {c['fps']} fps {c['size'][0]}x{c['size'][1]}, "
+            f"angle {c['angle']}, {c['px_per_mm']} px/mm, noise {c['noise']}, contrast {c['contrast']}, {c['codec']}"
+            + (", counter and clock" if c['counter'] else ""))
+
+
+def run_case(c, exe, root):
+    d = os.path.join(root, f"case{c['i']}")
+    os.makedirs(d, exist_ok=True)
+    if c['linear']:
+        motion = ['--protocol', 'stiffness', '--velocity-mm-s', str(c['velocity']), '--depth-mm', str(min(40, c['velocity'] * 6))]
+    else:
+        motion = ['--protocol', 'friction', '--frequency-hz', str(c['frequency']), '--amplitude-mm', str(c['amplitude']),
+                  '--cycles', str(max(2, min(6, int(12 * c['frequency']))))]
+    run = os.path.join(d, 'run.csv')
+    subprocess.run([exe, 'simulate', '--tissue', c['tissue'], '--seed', str(c['seed']), '--out', run] + motion,
+                   check=True, capture_output=True)
+    t, x = read_run(run)
+    video = os.path.join(d, 'video.mp4' if c['codec'] == 'libx264' else 'video.avi')
+    draw_video(c, t, x, video)
+    r = subprocess.run([exe, 'sync', run, video, '--json'], capture_output=True, text=True)
+    try:
+        j = json.loads(r.stdout)
+    except ValueError:
+        return c, None, r.stderr.strip()[:300]
+    # video time = (1 + drift)·t + offset (the tool's mapping) against the truth
+    tr = np.linspace(0.0, t[-1], 100)
+    truth = (tr + c['offset']) / (1 + c['drift'])
+    found = (1 + j['drift']) * tr + j['offset_s']
+    err = (found - truth) * c['fps']
+    return c, dict(error=float(err[np.argmax(np.abs(err))]), confidence=j['confidence'], acceptable=j['acceptable'],
+                   threshold=j['accept_threshold']), ''
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[1])
+    ap.add_argument('--seed', type=int, default=None)
+    ap.add_argument('--cases', type=int, default=16)
+    ap.add_argument('--exe', default=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'app', 'needlebench'))
+    ap.add_argument('--keep', default=None, help='keep each case (run, video) under this folder')
+    a = ap.parse_args()
+    if not (os.path.isfile(a.exe) and os.access(a.exe, os.X_OK)):
+        print(f"sync_probe_matrix: {a.exe} is not an executable needlebench (give --exe)", file=sys.stderr)
+        return 2
+    if not shutil.which('ffmpeg'):
+        print("sync_probe_matrix: the ffmpeg tool is needed", file=sys.stderr)
+        return 2
+    seed = a.seed if a.seed is not None else random.randrange(100000, 1000000)
+    print(f"sync_probe_matrix: seed {seed} (rerun with --seed {seed}), {a.cases} cases", flush=True)
+    root = a.keep or tempfile.mkdtemp(prefix='sync_probe_')
+    within = accepted_within = misses = honest_misses = 0
+    try:
+        with ThreadPoolExecutor(2) as pool:
+            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root), draw_cases(seed, a.cases)):
+                if o is None:
+                    misses += 1
+                    honest_misses += 1
+                    print(f"{c['i']:3d}  sync refused: {problem}  {describe(c)}", flush=True)
+                    continue
+                ok = abs(o['error']) <= 1.0
+                within += ok
+                accepted_within += ok and o['acceptable']
+                if not ok:
+                    misses += 1
+                    honest_misses += not o['acceptable']
+                print(f"{c['i']:3d}  err {o['error']:+8.2f} fr  conf {o['confidence']:.2f}{'  ACCEPTED MISS' if not ok and o['acceptable'] else ''}  {describe(c)}",
+                      flush=True)
+    finally:
+        if not a.keep:
+            shutil.rmtree(root, ignore_errors=True)
+    print(f"sync probe: {a.cases} cases: within 1 frame {within}, of them accepted {accepted_within}; "
+          f"misses {misses}, of which below the accept threshold {honest_misses}")
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
