@@ -19,7 +19,9 @@ class TestAccuracy : public QObject {
 
     unsigned seed_ = 0;
 
-    void expectSynchronised(const SyncCase& c)
+    // `tipInPlainSight`: the tip shows in every frame, so the tracker must follow it through
+    // (nearly) all of them, not only through enough of them for the fit to get by.
+    void expectSynchronised(const SyncCase& c, bool tipInPlainSight = true)
     {
         QTemporaryDir dir;
         const SyncOutcome o = runSyncCase(c, QStringLiteral(NB_EXECUTABLE), dir.path());
@@ -28,9 +30,8 @@ class TestAccuracy : public QObject {
         QVERIFY2(o.ok, qPrintable(c.describe() + QStringLiteral(": ") + o.problem));
         QVERIFY2(o.errorFrames <= 1.0, qPrintable(c.describe()));
         QVERIFY2(o.acceptable, qPrintable(c.describe()));
-        // A tip in plain sight all along: the tracker follows it through every frame, not
-        // only through enough of them for the fit to get by.
-        QVERIFY2(o.maskedFraction < 0.03, qPrintable(c.describe()));
+        if (tipInPlainSight)
+            QVERIFY2(o.maskedFraction < 0.03, qPrintable(c.describe()));
     }
 
 private slots:
@@ -171,13 +172,7 @@ private slots:
         c.width = 1024;
         c.height = 768;
         c.seed = 5531;
-        QTemporaryDir dir;
-        const SyncOutcome o = runSyncCase(c, QStringLiteral(NB_EXECUTABLE), dir.path());
-        qInfo("%s: error %.2f frames, confidence %.2f, %.1f %% of frames without a tip", qPrintable(c.describe()), o.errorFrames,
-              o.confidence, 100 * o.maskedFraction);
-        QVERIFY2(o.ok, qPrintable(c.describe() + QStringLiteral(": ") + o.problem));
-        QVERIFY2(o.errorFrames <= 1.0, qPrintable(c.describe()));
-        QVERIFY2(o.acceptable, qPrintable(c.describe()));
+        expectSynchronised(c, false);  // the grain hides the tip in some frames (9 %)
     }
 
     // A single needle advancing along its own axis, its line crossing the burnt-in clock at
