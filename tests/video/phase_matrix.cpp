@@ -33,6 +33,7 @@ QString phaseLookName(Look l)
     case Look::Angle30: return QStringLiteral("needle at 30 deg");
     case Look::Angle90: return QStringLiteral("picture turned 90 deg");
     case Look::VariableRate: return QStringLiteral("dropped/repeated frames");
+    case Look::Speckle: return {};  // a sync look; the phase matrix does not draw it
     }
     return {};
 }
@@ -94,6 +95,7 @@ void applyLook(const PhaseMatrixCase& c, int frameNumber, double videoTime_s, cv
     case Look::Angle30: turn(60.0); addNoise(6.0); break;  // the rendered needle is vertical
     case Look::Angle90: turn(90.0); addNoise(6.0); break;
     case Look::VariableRate: break;  // frames, not pixels: see renderVideo
+    case Look::Speckle: break;       // a sync look; the phase matrix does not draw it
     }
 }
 
