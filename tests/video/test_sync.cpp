@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 
 static QJsonObject runJson(const QStringList& args, int* code = nullptr)
@@ -28,6 +29,17 @@ class TestSync : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     QString run_, video_, truth_;
+
+    // The rig's recorded position: `samples` samples of `positionAt` (mm) at 500 Hz.
+    static nb::TimeSignal recordedAt500Hz(const std::function<double(double)>& positionAt, int samples)
+    {
+        nb::TimeSignal p;
+        for (int i = 0; i < samples; ++i) {
+            p.time_s.push_back(i * 0.002);
+            p.value.push_back(positionAt(i * 0.002));
+        }
+        return p;
+    }
 
 private slots:
     // One simulated friction run with its rendered video (offset 1.7 s), shared by the tests below.
@@ -116,11 +128,8 @@ private slots:
                 return t < 0.5 ? 0.0 : 5.0 * std::sin(2.0 * M_PI * 0.4 * (t - 0.5));
             return 1.174 * std::clamp(t - 0.5, 0.0, 8.0 / 1.174);  // 8 mm at 1.174 mm/s from 0.5 s
         };
-        nb::TimeSignal position, picture;
-        for (int i = 0; i < 5000; ++i) {
-            position.time_s.push_back(i * 0.002);
-            position.value.push_back(positionAt(i * 0.002));
-        }
+        const nb::TimeSignal position = recordedAt500Hz(positionAt, 5000);
+        nb::TimeSignal picture;
         std::mt19937 rng(64);
         std::normal_distribution<double> noise(0.0, 0.3);  // px
         const nb::TimelineMapping truth{offset_s, drift};
@@ -147,11 +156,8 @@ private slots:
     {
         const double offset_s = 13.486, drift = -1.34e-3, frame_s = 1.0 / 25.0, speed_mm_s = 8.6;
         auto positionAt = [&](double t) { return speed_mm_s * std::clamp(t - 0.5, 0.0, 40.0 / speed_mm_s); };
-        nb::TimeSignal position, picture;
-        for (int i = 0; i < 3000; ++i) {
-            position.time_s.push_back(i * 0.002);
-            position.value.push_back(positionAt(i * 0.002));
-        }
+        const nb::TimeSignal position = recordedAt500Hz(positionAt, 3000);
+        nb::TimeSignal picture;
         std::mt19937 rng(81);
         std::normal_distribution<double> noise(0.0, 0.3);  // px
         const nb::TimelineMapping truth{offset_s, drift};
