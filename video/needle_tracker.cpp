@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace nb::video {
 
@@ -293,6 +294,62 @@ int shaftSign(const std::vector<StripProfile>& profiles)
     if (std::abs(sum) < 5.0 * noise * std::sqrt(2.0 * double(n)))
         return 0;
     return sum > 0 ? 1 : -1;
+}
+
+// Whether the shaft comes in from the strip's far end (towards p2) rather than its start.
+// Against the frames' mean, a frame shows more shaft than usual from the tip's nearest reach
+// to where its tip is now, and less from there to its furthest reach: the stretch of more
+// lies before the stretch of less when the shaft comes from the start, after it when from
+// the far end. What stays put (a textured background, the shaft's own marks) is no change.
+// Each frame votes with how much better one split (more, then less) explains it than the
+// other (less, then more): on the running sum of the change, the best split's gain is the
+// sum's highest point against its lowest. The changing digits of a clock or counter that the
+// line crosses change by more than the shaft, but in both signs by turns: each sample counts
+// at most 3 σ of the noise, and along the running sum they cancel.
+bool shaftFromFarEnd(const std::vector<StripProfile>& profiles)
+{
+    const int sign = shaftSign(profiles);
+    if (sign == 0)
+        return false;
+    std::vector<std::vector<double>> shafts;
+    for (const StripProfile& p : profiles)
+        shafts.push_back(p.shaft);
+    const std::size_t n = shafts.front().size();
+    std::vector<double> mean(n, 0.0);
+    for (const auto& sk : shafts)
+        for (std::size_t i = 0; i < n; ++i)
+            mean[i] += sk[i] / double(shafts.size());
+    const double noise = robustSigma(shafts);
+    double forward = 0.0, backward = 0.0;
+    for (const auto& sk : shafts) {
+        // More-then-less gains 2·highest − total, less-then-more total − 2·lowest.
+        double sum = 0.0, highest = 0.0, lowest = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double z = std::clamp(sign * (sk[i] - mean[i]) / noise, -3.0, 3.0);
+            sum += z > 0 ? std::max(0.0, z - 1.0) : std::min(0.0, z + 1.0);
+            highest = std::max(highest, sum);
+            lowest = std::min(lowest, sum);
+        }
+        const double vote = highest + lowest - sum;
+        (vote > 0 ? forward : backward) += std::abs(vote);
+    }
+    return backward > 2.0 * forward;
+}
+
+// `axis` pointing from the shaft to the tip, where the tip model looks for them (the shaft
+// behind, towards p1): a line found in the picture points left to right or downwards
+// whichever way the needle enters, and one drawn may point either way. The other way round,
+// a shaft is seen ahead of its tip and the tip is lost in most frames (a needle entering from
+// the picture's right: 273 of 475 frames without a tip and the sync 116 frames off).
+NeedleAxis shaftBehindTip(const std::vector<cv::Mat>& gray, int width, int height, const NeedleAxis& axis)
+{
+    const NeedleStrip strip(axis, width, height);
+    if (strip.length < 20)
+        return axis;
+    std::vector<StripProfile> profiles;
+    for (const cv::Mat& f : gray)
+        profiles.push_back(strip.sample(f));
+    return shaftFromFarEnd(profiles) ? NeedleAxis(axis.p2(), axis.p1()) : axis;
 }
 
 // The tip's edge sign along a strip and whether to look for it as the end of a shaft, from
@@ -802,7 +859,7 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         const std::optional<NeedleAxis> rough = clipped(c);
         if (!rough)
             continue;
-        const NeedleAxis axis = refineAxis(ridge, *rough);
+        const NeedleAxis axis = shaftBehindTip(s.gray, s.width, s.height, refineAxis(ridge, *rough));
         // Noise alone gives a strongest edge about 3 σ above the noise.
         const double snr = movingEdgeSnr(s, axis);
         if (snr >= 3.0)
@@ -831,7 +888,8 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         // A path of change is evidence of a tip of its own, where single frames are too noisy
         // to show its edge (15 frames/s MJPEG, needle 32 grey levels under noise of 21: 0.9 σ
         // on its path, which the sync then followed to within a frame).
-        scored.emplace_back(std::max(movingEdgeSnr(s, p.axis), 3.0) * std::sqrt(p.ridge), p.axis);
+        const NeedleAxis axis = shaftBehindTip(s.gray, s.width, s.height, p.axis);
+        scored.emplace_back(std::max(movingEdgeSnr(s, axis), 3.0) * std::sqrt(p.ridge), axis);
     }
     std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     // The region the operator drew (if any) says where the needle is: lines found in the
@@ -856,6 +914,12 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     return out;
 }
 
+NeedleAxis orientNeedleAxis(FrameReader& reader, const NeedleAxis& axis, int sampleFrames_)
+{
+    const Samples s = sampleFrames(reader, sampleFrames_);
+    return shaftBehindTip(s.gray, s.width, s.height, axis);
+}
+
 std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int sampleFrames)
 {
     const std::vector<NeedleAxis> c = needleAxisCandidates(reader, roi, 1, sampleFrames);
@@ -865,6 +929,128 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int s
 }
 
 namespace {
+
+// What each sample of a needle strip shows behind the tip and ahead of it (the shaft or what
+// it covers, and the picture it has not reached), learnt from sampled frames in which the tip
+// was clearly on either side of it; NaN where no side is known.
+struct TipSides {
+    std::vector<double> behind, ahead;
+    double noise = 1.0;  // of the strip's middle, per sample and frame
+};
+
+constexpr int kSideClear = 4, kSideFrames = 3;
+constexpr std::size_t kSideReach = 32;
+
+// `middles`: the strip's middle in sampled frames; `tips`: the tip found in each.
+TipSides learnTipSides(const std::vector<std::vector<double>>& middles, const std::vector<double>& tips)
+{
+    TipSides s;
+    if (middles.empty())
+        return s;
+    s.noise = robustSigma(middles);
+    const std::size_t n = middles.front().size();
+    s.behind.assign(n, kNaN);
+    s.ahead.assign(n, kNaN);
+    std::vector<double> b, a;
+    for (std::size_t i = 0; i < n; ++i) {
+        b.clear();
+        a.clear();
+        for (std::size_t k = 0; k < middles.size(); ++k) {
+            if (tips[k] > double(i) + kSideClear)
+                b.push_back(middles[k][i]);
+            else if (tips[k] < double(i) - kSideClear)
+                a.push_back(middles[k][i]);
+        }
+        if (int(b.size()) >= kSideFrames)
+            s.behind[i] = median(b);
+        if (int(a.size()) >= kSideFrames)
+            s.ahead[i] = median(a);
+    }
+    // Beyond the tip's furthest reach in the sampled frames the shaft was never seen, and
+    // short of its nearest the picture without it: there the needle is taken to stand out
+    // of what it covers as it does at the nearest sample where both were seen.
+    std::vector<double> contrast(n, kNaN);
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::isfinite(s.behind[i]) && std::isfinite(s.ahead[i]))
+            contrast[i] = s.behind[i] - s.ahead[i];
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::isfinite(s.behind[i]) == std::isfinite(s.ahead[i]))
+            continue;
+        double nearest = kNaN;
+        for (std::size_t d = 1; d <= kSideReach && !std::isfinite(nearest); ++d) {
+            if (i >= d && std::isfinite(contrast[i - d]))
+                nearest = contrast[i - d];
+            else if (i + d < n && std::isfinite(contrast[i + d]))
+                nearest = contrast[i + d];
+        }
+        if (!std::isfinite(nearest))
+            continue;
+        if (std::isfinite(s.ahead[i]))
+            s.behind[i] = s.ahead[i] + nearest;
+        else
+            s.ahead[i] = s.behind[i] - nearest;
+    }
+    return s;
+}
+
+// The tip in a window of samples around `centre`, where the shares of the way from ahead to
+// behind that its samples have come put it; nullopt where a sample barely changes with the
+// tip or is not known on either side. `framed`: the window begins behind the tip and ends
+// ahead of it.
+constexpr int kRefineWindow = 8;
+struct Shares {
+    double at = kNaN;
+    bool framed = false;
+};
+
+std::optional<Shares> sharesAround(const TipSides& sides, const std::vector<double>& middle, double centre)
+{
+    const int n = int(middle.size());
+    const int lo = int(std::lround(centre)) - kRefineWindow, hi = int(std::lround(centre)) + kRefineWindow;
+    if (lo < 0 || hi >= n)
+        return std::nullopt;
+    constexpr int quarter = kRefineWindow / 2;
+    double sum = 0.0, first = 0.0, last = 0.0;
+    for (int i = lo; i <= hi; ++i) {
+        const double b = sides.behind[std::size_t(i)], a = sides.ahead[std::size_t(i)];
+        if (!std::isfinite(b) || !std::isfinite(a) || std::abs(b - a) < 4.0 * sides.noise)
+            return std::nullopt;
+        const double share = std::clamp((middle[std::size_t(i)] - a) / (b - a), -0.5, 1.5);
+        sum += share;
+        if (i < lo + quarter)
+            first += share / quarter;
+        else if (i > hi - quarter)
+            last += share / quarter;
+    }
+    return Shares{double(lo) - 0.5 + sum, first > 0.7 && last < 0.3};
+}
+
+// The tip found at `rough` in `middle`, measured again against what the strip shows on either
+// side of a tip: the share of the way from ahead to behind that each sample has come, summed
+// over a window, is how far into the window the tip stands. The edge detector's own peak is
+// pulled by a textured background to the nearest of its edges (grain of 4 px, 12 grey levels,
+// under a needle 35 bright: up to 6 px off, by position, the same at every pass); the shares
+// are not, since the background is in both references. The window is moved onto what it
+// measured until it reads as behind, then ahead; `rough` where it cannot be.
+double tipAgainstSides(const TipSides& sides, const std::vector<double>& middle, double rough)
+{
+    if (sides.behind.size() != middle.size())
+        return rough;
+    double at = rough;
+    for (int pass = 0; pass < 4; ++pass) {
+        const std::optional<Shares> next = sharesAround(sides, middle, at);
+        if (!next)
+            return rough;
+        const double moved = std::abs(next->at - at);
+        at = next->at;
+        if (std::abs(at - rough) > kRefineWindow)
+            return rough;
+        // Two windows a sample apart may read a tenth of a pixel apart, by turns.
+        if (next->framed && moved < 0.5)
+            return at;
+    }
+    return rough;
+}
 
 // One axis being tracked: its strip, what is always there, the noise and the tip's sign.
 struct AxisTracker {
@@ -880,6 +1066,7 @@ struct AxisTracker {
     int lost = 0;        // frames since it was last seen
     std::vector<double> strengths;
     std::vector<std::pair<double, double>> recent;  // (time, position) of the last sightings in a row
+    TipSides sides;
 
     AxisTracker(const NeedleAxis& axis, const Samples& s, double frameDuration_s)
         : strip(axis, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0)
@@ -897,6 +1084,16 @@ struct AxisTracker {
         polarity = model.polarity;
         gated = model.gated;
         still = std::move(model.still);
+        std::vector<std::vector<double>> middles;
+        std::vector<double> tips;
+        for (std::size_t k = 0; k < profiles.size(); ++k) {
+            const Peak p = findTip(g[k], profiles[k].shaft, still, polarity, gated, sigma);
+            if (std::isfinite(p.position) && p.strength > 5.0 * sigma) {
+                tips.push_back(p.position);
+                middles.push_back(profiles[k].middle);
+            }
+        }
+        sides = learnTipSides(middles, tips);
     }
 
     // How strong the tip's edge has been lately. In a clean picture the noise is a fraction
@@ -947,7 +1144,7 @@ struct AxisTracker {
             return kNaN;
         }
         strengths.push_back(bestV / sigma);
-        const double found = tip.position;
+        const double found = tipAgainstSides(sides, profile.middle, tip.position);
         const bool repeat = repeated && std::isfinite(last) && std::abs(found - last) < 0.5;
         if (!repeat)
             updateVelocity(time_s, found);

@@ -9,8 +9,10 @@
 // of the gradient over the video, and the moving edge that is left is the tip. Where the
 // shaft shows against the picture either side of it, an edge is the tip only where the shaft
 // ends: the changing digits of a clock or counter that the line crosses are not. Its
-// position is found in every frame on its own (no accumulated drift), to a fraction of a
-// pixel. Frames where no edge stands out of the noise are masked (NaN), never guessed.
+// position is found in every frame on its own (no accumulated drift), then measured again
+// against what each sample of the strip shows behind a tip and ahead of one (learnt from the
+// sampled frames), so that a textured background does not pull it to the texture's edges.
+// Frames where no edge stands out of the noise are masked (NaN), never guessed.
 
 #include "frame_reader.h"
 
@@ -43,6 +45,10 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, 
 // clearly each looks like a needle (a moving edge on a straight ridge).
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
                                              std::vector<double>* scores = nullptr);
+
+// `axis` turned, if need be, to point from the needle's shaft to its tip (the way displacements
+// are measured), judged on `sampleFrames` frames; as given when no shaft is seen. Throws VideoError.
+NeedleAxis orientNeedleAxis(FrameReader& reader, const NeedleAxis& axis, int sampleFrames = 40);
 
 // Tracks the tip along each axis in every frame, in one pass over the video. Throws VideoError.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
