@@ -206,6 +206,37 @@ private slots:
         QCOMPARE(code, 1);
     }
 
+    // The operator may draw the needle's line from the tip to the shaft as well as the other
+    // way: it is turned to point from the shaft to the tip (what the tracker assumes), shown so
+    // in the answer, and the offset is the same either way.
+    void needleDrawnEitherWay()
+    {
+        QFile tf(truth_);
+        QVERIFY(tf.open(QIODevice::ReadOnly));
+        const double offset = QJsonDocument::fromJson(tf.readAll()).object()["video_offset_s"].toDouble();
+        int code = -1;
+        const QJsonObject found = runJson({"sync", run_, video_, "--json"}, &code);
+        QCOMPARE(code, 0);
+        QVERIFY(found["needle_found"].toBool());
+        const QJsonArray a = found["needle"].toArray();
+        QCOMPARE(a.size(), 4);
+        auto coordinates = [](const QJsonArray& p) { return QStringLiteral("%1,%2,%3,%4").arg(p[0].toDouble()).arg(p[1].toDouble()).arg(p[2].toDouble()).arg(p[3].toDouble()); };
+        const QJsonArray backwards{a[2], a[3], a[0], a[1]};
+        for (const QJsonArray& drawn : {a, backwards}) {
+            const QJsonObject r = runJson({"sync", run_, video_, "--needle", coordinates(drawn), "--json"}, &code);
+            QCOMPARE(code, 0);
+            QVERIFY(!r["needle_found"].toBool());
+            const QJsonArray used = r["needle"].toArray();
+            QCOMPARE(used.size(), 4);
+            // The same direction as the line found: from the shaft to the tip.
+            const double along = (used[2].toDouble() - used[0].toDouble()) * (a[2].toDouble() - a[0].toDouble()) +
+                                 (used[3].toDouble() - used[1].toDouble()) * (a[3].toDouble() - a[1].toDouble());
+            QVERIFY2(along > 0, qPrintable(QStringLiteral("drawn %1, used %2, found %3").arg(coordinates(drawn), coordinates(used), coordinates(a))));
+            QVERIFY2(std::abs(r["offset_s"].toDouble() - offset) < 1.0 / 29.97,
+                     qPrintable(QStringLiteral("drawn %1: found %2 s, truth %3 s").arg(coordinates(drawn)).arg(r["offset_s"].toDouble()).arg(offset)));
+        }
+    }
+
     // A short fast stroke (8 mm at 10 mm/s) in an H.264 video begun 14 s before it: the needle
     // moved in 2 of the 40 frames spread over the video to find it, and the stretch that moves
     // went unseen in the picture's mean change (a thin needle is a few hundred of its pixels).
