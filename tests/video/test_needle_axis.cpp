@@ -30,6 +30,7 @@ double tipAt(int frame)
 struct NeedleVideo {
     double towardsTip_deg = 0.0;  // the needle's direction, from the shaft to the tip (image y down)
     bool clockOnShaft = false;    // changing digits burnt in across the line, behind the tip's travel
+    bool tissueCarried = false;   // the grain moves along with the needle by a third of its travel
 };
 
 QPointF direction(const NeedleVideo& v)
@@ -60,7 +61,13 @@ QString writeNeedleVideo(const QString& path, const NeedleVideo& v)
     if (!writer.isOpened())
         return QStringLiteral("OpenCV cannot write MJPEG to %1").arg(path);
     for (int k = 0; k < kFrames; ++k) {
-        cv::Mat frame = 100.0 + grain, ending, noise(kHeight, kWidth, CV_32F), bytes, bgr;
+        cv::Mat tissue = grain;
+        if (v.tissueCarried) {
+            const double shift = tipAt(k) / 3.0;
+            const cv::Mat move = (cv::Mat_<double>(2, 3) << 1, 0, shift * u.x(), 0, 1, shift * u.y());
+            cv::warpAffine(grain, tissue, move, grain.size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
+        }
+        cv::Mat frame = 100.0 + tissue, ending, noise(kHeight, kWidth, CV_32F), bytes, bgr;
         cv::exp(along - tipAt(k), ending);
         frame += shaft / (1.0 + ending);
         cv::randn(noise, 0.0, 5.0);
@@ -101,19 +108,27 @@ private slots:
     {
         QTest::addColumn<double>("towardsTip_deg");
         QTest::addColumn<bool>("clockOnShaft");
+        QTest::addColumn<bool>("tissueCarried");
         for (double angle : {0.0, 70.0, 135.0, 180.0, 200.0, 270.0, 320.0})
-            QTest::newRow(qPrintable(QStringLiteral("tip towards %1 deg").arg(angle))) << angle << false;
+            QTest::newRow(qPrintable(QStringLiteral("tip towards %1 deg").arg(angle))) << angle << false << false;
         // A clock laid along the line (the needle at 20 deg) hides the shaft so that its line is
         // found 4.5 px off; across it, as here, it does not.
         for (double angle : {160.0, 250.0})
-            QTest::newRow(qPrintable(QStringLiteral("tip towards %1 deg, clock on the shaft").arg(angle))) << angle << true;
+            QTest::newRow(qPrintable(QStringLiteral("tip towards %1 deg, clock on the shaft").arg(angle))) << angle << true << false;
+        // Tissue that moves with the needle is not what the strip showed ahead of the tip in
+        // other frames: there the tip is left as the edge detector found it. That detector is
+        // itself pulled by grain that moves (within 2 px in 77 and 66 of 90 frames); measured
+        // against sides that do not hold, it was worse (58 of 90).
+        for (double angle : {30.0, 225.0})
+            QTest::newRow(qPrintable(QStringLiteral("tip towards %1 deg, tissue carried along").arg(angle))) << angle << false << true;
     }
 
     void pointsFromShaftToTip()
     {
         QFETCH(double, towardsTip_deg);
         QFETCH(bool, clockOnShaft);
-        const NeedleVideo v{towardsTip_deg, clockOnShaft};
+        QFETCH(bool, tissueCarried);
+        const NeedleVideo v{towardsTip_deg, clockOnShaft, tissueCarried};
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("needle.avi"));
@@ -160,7 +175,8 @@ private slots:
         }
         qInfo("%d frames without a tip; of the rest %d within 2 px, the worst %.2f px off", track.masked, close, worst);
         QVERIFY2(track.masked <= kFrames / 10, qPrintable(QStringLiteral("%1 frames without a tip").arg(track.masked)));
-        QVERIFY2(close >= 0.95 * seen, qPrintable(QStringLiteral("the tip is within 2 px in %1 of %2 frames").arg(close).arg(seen)));
+        QVERIFY2(close >= (tissueCarried ? 2.0 / 3.0 : 0.95) * seen,
+                 qPrintable(QStringLiteral("the tip is within 2 px in %1 of %2 frames").arg(close).arg(seen)));
     }
 };
 
