@@ -9,9 +9,10 @@
 // of the gradient over the video, and the moving edge that is left is the tip. Where the
 // shaft shows against the picture either side of it, an edge is the tip only where the shaft
 // ends: the changing digits of a clock or counter that the line crosses are not. Its
-// position is found in every frame on its own (no accumulated drift), then measured again
+// position is found in every frame on its own (no accumulated drift), and measured again
 // against what each sample of the strip shows behind a tip and ahead of one (learnt from the
-// sampled frames), so that a textured background does not pull it to the texture's edges.
+// sampled frames), so that a still textured background does not pull it to the texture's
+// edges; a track keeps that measure where it scatters clearly less while the tip moves.
 // Frames where no edge stands out of the noise are masked (NaN), never guessed.
 
 #include "frame_reader.h"
