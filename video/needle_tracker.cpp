@@ -342,16 +342,6 @@ bool shaftFromFarEnd(const std::vector<StripProfile>& profiles)
 // whichever way the needle enters, and one drawn may point either way. The other way round,
 // a shaft is seen ahead of its tip and the tip is lost in most frames (a needle entering from
 // the picture's right: 273 of 475 frames without a tip and the sync 116 frames off).
-NeedleAxis shaftBehindTip(const std::vector<cv::Mat>& gray, int width, int height, const NeedleAxis& axis)
-{
-    const NeedleStrip strip(axis, width, height);
-    if (strip.length < 20)
-        return axis;
-    std::vector<StripProfile> profiles;
-    for (const cv::Mat& f : gray)
-        profiles.push_back(strip.sample(f));
-    return shaftFromFarEnd(profiles) ? NeedleAxis(axis.p2(), axis.p1()) : axis;
-}
 
 // The tip's edge sign along a strip and whether to look for it as the end of a shaft, from
 // the sampled frames. Where a shaft is seen, the tip is the edge of opposite sign at which it
@@ -395,6 +385,28 @@ struct Samples {
     std::vector<cv::Mat> gray;
     int width = 0, height = 0;
 };
+
+// What `strip` sees in each sampled frame.
+std::vector<StripProfile> sampleStrip(const NeedleStrip& strip, const Samples& s)
+{
+    std::vector<StripProfile> profiles;
+    for (const cv::Mat& f : s.gray)
+        profiles.push_back(strip.sample(f));
+    return profiles;
+}
+
+// `axis` pointing from the shaft to the tip, where the tip model looks for them (the shaft
+// behind, towards p1): a line found in the picture points left to right or downwards
+// whichever way the needle enters. The other way round, a shaft is seen ahead of its tip and
+// the tip is lost in most frames (a needle entering from the picture's right: 273 of 475
+// frames without a tip and the sync 116 frames off).
+NeedleAxis shaftBehindTip(const Samples& s, const NeedleAxis& axis)
+{
+    const NeedleStrip strip(axis, s.width, s.height);
+    if (strip.length < 20)
+        return axis;
+    return shaftFromFarEnd(sampleStrip(strip, s)) ? NeedleAxis(axis.p2(), axis.p1()) : axis;
+}
 
 // The pixels that change from `a` to `b` (quarter-size float copies) far beyond the noise
 // (the typical change of a pixel between the two). A count, not a mean: a thin needle that
@@ -860,7 +872,7 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         const std::optional<NeedleAxis> rough = clipped(c);
         if (!rough)
             continue;
-        const NeedleAxis axis = shaftBehindTip(s.gray, s.width, s.height, refineAxis(ridge, *rough));
+        const NeedleAxis axis = shaftBehindTip(s, refineAxis(ridge, *rough));
         // Noise alone gives a strongest edge about 3 σ above the noise.
         const double snr = movingEdgeSnr(s, axis);
         if (snr >= 3.0)
@@ -889,7 +901,7 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         // A path of change is evidence of a tip of its own, where single frames are too noisy
         // to show its edge (15 frames/s MJPEG, needle 32 grey levels under noise of 21: 0.9 σ
         // on its path, which the sync then followed to within a frame).
-        const NeedleAxis axis = shaftBehindTip(s.gray, s.width, s.height, p.axis);
+        const NeedleAxis axis = shaftBehindTip(s, p.axis);
         scored.emplace_back(std::max(movingEdgeSnr(s, axis), 3.0) * std::sqrt(p.ridge), axis);
     }
     std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
@@ -913,12 +925,6 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         }
     }
     return out;
-}
-
-NeedleAxis orientNeedleAxis(FrameReader& reader, const NeedleAxis& axis, int sampleFrames_)
-{
-    const Samples s = sampleFrames(reader, sampleFrames_);
-    return shaftBehindTip(s.gray, s.width, s.height, axis);
 }
 
 std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi, int sampleFrames)
@@ -1069,17 +1075,23 @@ struct AxisTracker {
     std::vector<std::pair<double, double>> recent;  // (time, position) of the last sightings in a row
     TipSides sides;
 
-    AxisTracker(const NeedleAxis& axis, const Samples& s, double frameDuration_s)
-        : strip(axis, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0)
+    NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
+
+    AxisTracker(const NeedleAxis& given, const Samples& s, double frameDuration_s)
+        : strip(given, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
     {
         if (strip.length < 20)
             return;
-        std::vector<StripProfile> profiles;
-        std::vector<std::vector<double>> g;
-        for (const cv::Mat& f : s.gray) {
-            profiles.push_back(strip.sample(f));
-            g.push_back(gradient(profiles.back().middle));
+        std::vector<StripProfile> profiles = sampleStrip(strip, s);
+        // A line drawn by the operator may point either way (found ones are turned already).
+        if (shaftFromFarEnd(profiles)) {
+            axis = NeedleAxis(given.p2(), given.p1());
+            strip = NeedleStrip(axis, s.width, s.height);
+            profiles = sampleStrip(strip, s);
         }
+        std::vector<std::vector<double>> g;
+        for (const StripProfile& p : profiles)
+            g.push_back(gradient(p.middle));
         sigma = robustSigma(g);
         TipModel model = tipModel(profiles, g, sigma);
         polarity = model.polarity;
@@ -1119,7 +1131,12 @@ struct AxisTracker {
     // the tip has not moved either (the index judges the whole picture, in which a thin
     // needle is a few hundred pixels: a clean, smoothly coded video of a fast needle gets
     // most frames flagged).
-    double locate(const cv::Mat& gray, double time_s, bool repeated)
+    // The tip as the edge detector found it, and measured against the strip's sides.
+    struct Sighting {
+        double found = kNaN, measured = kNaN;
+    };
+
+    Sighting locate(const cv::Mat& gray, double time_s, bool repeated)
     {
         const StripProfile profile = strip.sample(gray);
         const std::vector<double> g = gradient(profile.middle);
@@ -1142,7 +1159,7 @@ struct AxisTracker {
                 velocity = 0.0;
                 recent.clear();
             }
-            return kNaN;
+            return {};
         }
         strengths.push_back(bestV / sigma);
         const double found = tip.position;
@@ -1152,10 +1169,8 @@ struct AxisTracker {
         last = found;
         lastTime_s = time_s;
         lost = 0;
-        measured = tipAgainstSides(sides, profile.middle, found);
-        return last;
+        return {found, tipAgainstSides(sides, profile.middle, found)};
     }
-    double measured = kNaN;  // the last tip found, measured against the strip's sides
 
     // The velocity as the straight line through the last few sightings, not from the last
     // two alone: a variable-rate file's timestamps may sit a millisecond apart for frames a
@@ -1256,7 +1271,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
         trackers.emplace_back(axes[a], s, index.frameDuration());
         if (trackers.back().strip.length < 20)
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
-        out[a].axis = axes[a];
+        out[a].axis = trackers.back().axis;
     }
     const int n = index.size();
     for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
@@ -1268,9 +1283,9 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
         const cv::Mat gray = toGray(reader.read(i).image);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);
-            const double p = trackers[a].locate(gray, info.time_s, info.duplicate);
-            out[a].displacement_px.push_back(std::isfinite(p) ? p + trackers[a].strip.origin : kNaN);
-            measured[a].push_back(std::isfinite(p) ? trackers[a].measured + trackers[a].strip.origin : kNaN);
+            const AxisTracker::Sighting tip = trackers[a].locate(gray, info.time_s, info.duplicate);
+            out[a].displacement_px.push_back(tip.found + trackers[a].strip.origin);
+            measured[a].push_back(tip.measured + trackers[a].strip.origin);
         }
         if (progress && i % 50 == 0)
             progress(i, n);

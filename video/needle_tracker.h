@@ -47,11 +47,9 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, 
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
                                              std::vector<double>* scores = nullptr);
 
-// `axis` turned, if need be, to point from the needle's shaft to its tip (the way displacements
-// are measured), judged on `sampleFrames` frames; as given when no shaft is seen. Throws VideoError.
-NeedleAxis orientNeedleAxis(FrameReader& reader, const NeedleAxis& axis, int sampleFrames = 40);
-
-// Tracks the tip along each axis in every frame, in one pass over the video. Throws VideoError.
+// Tracks the tip along each axis in every frame, in one pass over the video. An axis whose
+// needle's shaft lies towards p2 is turned round first (the track's `axis` says which way it
+// was measured): an operator may draw the line either way. Throws VideoError.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
                                       const std::atomic_bool* cancel = nullptr);

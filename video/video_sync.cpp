@@ -24,7 +24,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     // more like a moving tip than the needle itself (seed 461476: the needle's line ranked
     // seventh behind six of them). Which one is the needle, the fit to the recording decides.
     const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(reader, options.roi, 16, 40, &scores)
-                                                  : std::vector<NeedleAxis>{orientNeedleAxis(reader, *options.axis)};
+                                                  : std::vector<NeedleAxis>{*options.axis};
     if (!axes.empty()) {
         // Several lines may look like a needle (a plate's edge, a line of text): the one
         // whose motion explains the recording is the needle.
