@@ -41,6 +41,23 @@ class TestSync : public QObject {
         return p;
     }
 
+    // What the tracker reads in the video: `frames` frames `frame_s` apart, each the tip's
+    // pixel position `px` of where the needle was (mm) at the recording time `truth` maps the
+    // frame to, with 0.3 px of noise drawn from `seed`.
+    static nb::TimeSignal seenInVideo(const std::function<double(double)>& positionAt, const std::function<double(double)>& px,
+                                      const nb::TimelineMapping& truth, double frame_s, int frames, unsigned seed)
+    {
+        nb::TimeSignal picture;
+        std::mt19937 rng(seed);
+        std::normal_distribution<double> noise(0.0, 0.3);
+        for (int k = 0; k < frames; ++k) {
+            const double tv = k * frame_s;
+            picture.time_s.push_back(tv);
+            picture.value.push_back(px(positionAt(truth.toRecording(tv))) + noise(rng));
+        }
+        return picture;
+    }
+
 private slots:
     // One simulated friction run with its rendered video (offset 1.7 s), shared by the tests below.
     void initTestCase()
@@ -129,15 +146,8 @@ private slots:
             return 1.174 * std::clamp(t - 0.5, 0.0, 8.0 / 1.174);  // 8 mm at 1.174 mm/s from 0.5 s
         };
         const nb::TimeSignal position = recordedAt500Hz(positionAt, 5000);
-        nb::TimeSignal picture;
-        std::mt19937 rng(64);
-        std::normal_distribution<double> noise(0.0, 0.3);  // px
         const nb::TimelineMapping truth{offset_s, drift};
-        for (int k = 0; k < 200; ++k) {
-            const double tv = k * frame_s;
-            picture.time_s.push_back(tv);
-            picture.value.push_back(12.0 + 23.9 * positionAt(truth.toRecording(tv)) + noise(rng));
-        }
+        const nb::TimeSignal picture = seenInVideo(positionAt, [](double x_mm) { return 12.0 + 23.9 * x_mm; }, truth, frame_s, 200, 64);
         const nb::SyncResult r = nb::synchroniseDisplacement(picture, position, frame_s);
         double worst = 0.0;
         for (double tv : picture.time_s)
@@ -157,16 +167,12 @@ private slots:
         const double offset_s = 13.486, drift = -1.34e-3, frame_s = 1.0 / 25.0, speed_mm_s = 8.6;
         auto positionAt = [&](double t) { return speed_mm_s * std::clamp(t - 0.5, 0.0, 40.0 / speed_mm_s); };
         const nb::TimeSignal position = recordedAt500Hz(positionAt, 3000);
-        nb::TimeSignal picture;
-        std::mt19937 rng(81);
-        std::normal_distribution<double> noise(0.0, 0.3);  // px
         const nb::TimelineMapping truth{offset_s, drift};
-        for (int k = 0; k < 520; ++k) {
-            const double tv = k * frame_s, x_mm = positionAt(truth.toRecording(tv));
-            // The bias measured along that video's stroke (its residuals against the truth).
-            static const std::vector<std::pair<double, double>> bias{{0.0, 0.0},   {2.3, -0.37},  {6.6, -0.28},  {10.9, 0.41},
-                                                                     {15.2, 0.57}, {19.5, 0.91},  {23.8, 0.21},  {28.1, 1.06},
-                                                                     {32.4, 0.22}, {36.7, 0.76},  {39.8, -0.47}, {40.0, -1.0}};
+        // The bias measured along that video's stroke (its residuals against the truth).
+        static const std::vector<std::pair<double, double>> bias{{0.0, 0.0},   {2.3, -0.37},  {6.6, -0.28},  {10.9, 0.41},
+                                                                 {15.2, 0.57}, {19.5, 0.91},  {23.8, 0.21},  {28.1, 1.06},
+                                                                 {32.4, 0.22}, {36.7, 0.76},  {39.8, -0.47}, {40.0, -1.0}};
+        auto px = [](double x_mm) {
             double bias_px = bias.back().second;
             for (std::size_t j = 1; j < bias.size(); ++j)
                 if (x_mm <= bias[j].first) {
@@ -174,9 +180,9 @@ private slots:
                     bias_px = bias[j - 1].second + w * (bias[j].second - bias[j - 1].second);
                     break;
                 }
-            picture.time_s.push_back(tv);
-            picture.value.push_back(557.0 - 4.0 * x_mm + bias_px + noise(rng));
-        }
+            return 557.0 - 4.0 * x_mm + bias_px;
+        };
+        const nb::TimeSignal picture = seenInVideo(positionAt, px, truth, frame_s, 520, 81);
         const nb::SyncResult r = nb::synchroniseDisplacement(picture, position, frame_s);
         double worst = 0.0;
         for (double t = 0.0; t <= 6.0; t += 0.01)
