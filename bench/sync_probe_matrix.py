@@ -9,7 +9,7 @@ frames/s, 320x240 to 1024x768, H.264 (B-frames), MJPEG or MPEG-4, with or withou
 frame counter and clock, offset -5..15 s, drift 0-0.2 %. `needlebench sync --json` is asked
 for the offset and drift; the error is the largest over the recording, in frames.
 
-  bench/sync_probe_matrix.py [--seed N] [--cases 16] [--exe build/app/needlebench] [--keep DIR]
+  bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--exe build/app/needlebench] [--keep DIR]
 
 Needs python3-numpy (with python3-pandas) and ffmpeg; 16 cases take about 3 minutes on 2 cores.
 """
@@ -136,6 +136,7 @@ def main():
     ap.add_argument('--cases', type=int, default=16)
     ap.add_argument('--exe', default=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'app', 'needlebench'))
     ap.add_argument('--keep', default=None, help='keep each case (run, video) under this folder')
+    ap.add_argument('--only', default=None, help="run only these cases of the seed's matrix (comma-separated numbers)")
     a = ap.parse_args()
     if not (os.path.isfile(a.exe) and os.access(a.exe, os.X_OK)):
         print(f"sync_probe_matrix: {a.exe} is not an executable needlebench (give --exe)", file=sys.stderr)
@@ -145,11 +146,15 @@ def main():
         return 2
     seed = a.seed if a.seed is not None else random.randrange(100000, 1000000)
     print(f"sync_probe_matrix: seed {seed} (rerun with --seed {seed}), {a.cases} cases", flush=True)
+    cases = draw_cases(seed, a.cases)
+    if a.only:
+        wanted = {int(i) for i in a.only.split(',')}
+        cases = [c for c in cases if c['i'] in wanted]
     root = a.keep or tempfile.mkdtemp(prefix='sync_probe_')
     within = accepted_within = misses = honest_misses = 0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root), draw_cases(seed, a.cases)):
+            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root), cases):
                 if o is None:
                     misses += 1
                     honest_misses += 1
@@ -166,7 +171,7 @@ def main():
     finally:
         if not a.keep:
             shutil.rmtree(root, ignore_errors=True)
-    print(f"sync probe: {a.cases} cases: within 1 frame {within}, of them accepted {accepted_within}; "
+    print(f"sync probe: {len(cases)} cases: within 1 frame {within}, of them accepted {accepted_within}; "
           f"misses {misses}, of which below the accept threshold {honest_misses}")
     return 0
 

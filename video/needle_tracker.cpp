@@ -408,6 +408,93 @@ NeedleAxis shaftBehindTip(const Samples& s, const NeedleAxis& axis)
     return shaftFromFarEnd(sampleStrip(strip, s)) ? NeedleAxis(axis.p2(), axis.p1()) : axis;
 }
 
+// The sampled frames' mean, in float.
+cv::Mat framesMean(const Samples& s)
+{
+    cv::Mat mean = cv::Mat::zeros(s.height, s.width, CV_32F);
+    for (const cv::Mat& f : s.gray)
+        cv::accumulate(f, mean);
+    return mean / double(std::max<std::size_t>(1, s.gray.size()));
+}
+
+// Where a shaft of sign `sign` stands along a strip 2·kSettleHalfWidth_px + 1 rows wide
+// (`sampled`): per segment of kSettleSegment_px, the peak of the mean across the strip
+// (fractional row from the middle) where it stands more than 4 σ out of the picture beside it.
+constexpr int kSettleSegment_px = 24, kSettleHalfWidth_px = 10;
+std::vector<std::pair<double, double>> shaftCentres(const cv::Mat& sampled, double origin, double sign)
+{
+    const int segments = sampled.cols / kSettleSegment_px;
+    std::vector<std::vector<double>> across;
+    std::vector<double> spread;
+    for (int k = 0; k < segments; ++k) {
+        cv::Mat column;
+        cv::reduce(sampled.colRange(k * kSettleSegment_px, (k + 1) * kSettleSegment_px), column, 1, cv::REDUCE_AVG);
+        std::vector<double> p(column.begin<float>(), column.end<float>());
+        const double base = median(p);
+        for (double& v : p) {
+            v = sign * (v - base);
+            spread.push_back(std::abs(v));
+        }
+        across.push_back(std::move(p));
+    }
+    std::vector<std::pair<double, double>> centres;  // (along the axis, across it)
+    if (across.empty())
+        return centres;
+    const double noise = std::max(1e-3, 1.4826 * median(spread));
+    for (int k = 0; k < segments; ++k) {
+        const auto& p = across[std::size_t(k)];
+        const auto peak = std::max_element(p.begin() + 1, p.end() - 1);
+        if (!(*peak > 4.0 * noise))
+            continue;
+        const double a = *(peak - 1), b = *peak, c = *(peak + 1), den = a - 2 * b + c;
+        const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
+        centres.emplace_back(origin + (k + 0.5) * kSettleSegment_px, double(peak - p.begin()) + frac - kSettleHalfWidth_px);
+    }
+    return centres;
+}
+
+// `axis` moved onto the shaft the frames' mean shows, when it shows one clearly over a good
+// stretch; as it is otherwise. A line found from the tip's path is a few degrees off where the
+// path is short (±34 px of travel: 1.7° off, 9 px from the shaft at the picture's edge, and the
+// track lost in most frames), and so is one drawn by hand. The shaft's centres across the line
+// (shaftCentres, of the sign that shows more of them) are fitted with a line (Theil-Sen: the
+// digits of a clock on the line, grain that happens to stand out, are outliers); that line is
+// the shaft if most centres lie on it, and it lies within 3° and 4 px of `axis`.
+NeedleAxis settleOnShaft(const cv::Mat& mean, const NeedleAxis& axis)
+{
+    const Strip wide(axis, mean.cols, mean.rows, kSettleHalfWidth_px);
+    if (wide.length < 5 * kSettleSegment_px)
+        return axis;
+    cv::Mat sampled;
+    cv::remap(mean, sampled, wide.mapX, wide.mapY, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    std::vector<std::pair<double, double>> centres = shaftCentres(sampled, wide.origin, 1.0);
+    if (auto dark = shaftCentres(sampled, wide.origin, -1.0); dark.size() > centres.size())
+        centres = std::move(dark);
+    if (centres.size() < 5)
+        return axis;
+    std::vector<double> slopes;
+    for (std::size_t i = 0; i < centres.size(); ++i)
+        for (std::size_t j = i + 1; j < centres.size(); ++j)
+            slopes.push_back((centres[j].second - centres[i].second) / (centres[j].first - centres[i].first));
+    const double slope = median(slopes);
+    std::vector<double> offsets;
+    for (const auto& [t, o] : centres)
+        offsets.push_back(o - slope * t);
+    const double offset = median(offsets);  // across the axis at its first point
+    // Most centres must lie on that line: a shaft, not grain that stands out here and there.
+    const auto onLine = std::count_if(centres.begin(), centres.end(), [&](const auto& c) { return std::abs(c.second - offset - slope * c.first) < 1.5; });
+    const double len = axis.length();
+    if (onLine < 5 || 3 * onLine < 2 * std::ptrdiff_t(centres.size()) || std::abs(slope) > std::tan(3.0 * M_PI / 180.0)
+        || std::abs(offset + slope * 0.5 * len) > 4.0)
+        return axis;
+    // The centres are read to a few tenths of a pixel: a line that close is left as it is.
+    const double from = offset + slope * wide.origin, to = offset + slope * (wide.origin + wide.length);
+    if (std::max(std::abs(from), std::abs(to)) < 0.5)
+        return axis;
+    const QPointF u = (axis.p2() - axis.p1()) / len, n(-u.y(), u.x());
+    return NeedleAxis(axis.p1() + n * offset, axis.p2() + n * (offset + slope * len));
+}
+
 // The pixels that change from `a` to `b` (quarter-size float copies) far beyond the noise
 // (the typical change of a pixel between the two). A count, not a mean: a thin needle that
 // moves is a few hundred pixels of the picture, and its change averaged over the picture
@@ -840,10 +927,7 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     const Samples s = sampleFrames(reader, sampleFrames_);
     if (s.gray.size() < 3)
         return {};
-    cv::Mat mean = cv::Mat::zeros(s.height, s.width, CV_32F);
-    for (const cv::Mat& f : s.gray)
-        cv::accumulate(f, mean);
-    mean /= double(s.gray.size());
+    const cv::Mat mean = framesMean(s);
     // Thin structures of either polarity: the picture minus its local mean.
     cv::Mat local, ridge;
     cv::blur(mean, local, cv::Size(15, 15));
@@ -1264,11 +1348,12 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
 {
     const FrameIndex& index = reader.index();
     const Samples s = sampleFrames(reader, 40);
+    const cv::Mat mean = framesMean(s);
     std::vector<AxisTracker> trackers;
     std::vector<NeedleTrack> out(axes.size());
     std::vector<std::vector<double>> measured(axes.size());
     for (std::size_t a = 0; a < axes.size(); ++a) {
-        trackers.emplace_back(axes[a], s, index.frameDuration());
+        trackers.emplace_back(settleOnShaft(mean, axes[a]), s, index.frameDuration());
         if (trackers.back().strip.length < 20)
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
         out[a].axis = trackers.back().axis;

@@ -3,7 +3,9 @@
 // measures, in pixels, for synchronisation and for the friction phases.
 //
 // The axis is a line the operator gives or one found in the picture: the straight ridge
-// (bright or dark) along which an edge moves from frame to frame. Along it a strip a few
+// (bright or dark) along which an edge moves from frame to frame. Either is first moved onto
+// the shaft the video shows, when it shows one over a good stretch (a line drawn by hand, or
+// found from a short path of the tip, is a degree or two off it). Along it a strip a few
 // pixels wide is sampled into a profile; what stays put in the profile (plates, overlays
 // crossing the strip, the shaft's own texture) is removed by subtracting the low percentile
 // of the gradient over the video, and the moving edge that is left is the tip. Where the
@@ -47,9 +49,10 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, 
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
                                              std::vector<double>* scores = nullptr);
 
-// Tracks the tip along each axis in every frame, in one pass over the video. An axis whose
-// needle's shaft lies towards p2 is turned round first (the track's `axis` says which way it
-// was measured): an operator may draw the line either way. Throws VideoError.
+// Tracks the tip along each axis in every frame, in one pass over the video. Each axis is
+// first moved (within 3° and 4 px) onto the shaft the video shows, and turned round when its
+// needle's shaft lies towards p2: an operator may draw the line roughly and either way. The
+// track's `axis` is the line measured along. Throws VideoError.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
                                       const std::atomic_bool* cancel = nullptr);
