@@ -9,7 +9,7 @@ frames/s, 320x240 to 1024x768, H.264 (B-frames), MJPEG or MPEG-4, with or withou
 frame counter and clock, offset -5..15 s, drift 0-0.2 %. `needlebench sync --json` is asked
 for the offset and drift; the error is the largest over the recording, in frames.
 
-  bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--exe build/app/needlebench] [--keep DIR]
+  bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--expect-hits] [--exe build/app/needlebench] [--keep DIR]
 
 Needs python3-numpy (with python3-pandas) and ffmpeg; 16 cases take about 3 minutes on 2 cores.
 """
@@ -137,6 +137,8 @@ def main():
     ap.add_argument('--exe', default=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'app', 'needlebench'))
     ap.add_argument('--keep', default=None, help='keep each case (run, video) under this folder')
     ap.add_argument('--only', default=None, help="run only these cases of the seed's matrix (comma-separated numbers)")
+    ap.add_argument('--expect-hits', action='store_true',
+                    help='exit with status 1 unless every case is within a frame and accepted (a regression check)')
     a = ap.parse_args()
     if not (os.path.isfile(a.exe) and os.access(a.exe, os.X_OK)):
         print(f"sync_probe_matrix: {a.exe} is not an executable needlebench (give --exe)", file=sys.stderr)
@@ -173,6 +175,9 @@ def main():
             shutil.rmtree(root, ignore_errors=True)
     print(f"sync probe: {len(cases)} cases: within 1 frame {within}, of them accepted {accepted_within}; "
           f"misses {misses}, of which below the accept threshold {honest_misses}")
+    if a.expect_hits and accepted_within < len(cases):
+        print(f"sync probe: {len(cases) - accepted_within} of {len(cases)} cases not within a frame and accepted", file=sys.stderr)
+        return 1
     return 0
 
 
