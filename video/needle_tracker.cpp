@@ -471,7 +471,7 @@ std::vector<std::pair<double, double>> shaftCentres(const cv::Mat& sampled, doub
 // `axis` moved onto the shaft the frames' mean shows, when it shows one clearly over a good
 // stretch; as it is otherwise. A line found from the tip's path is a few degrees off where the
 // path is short (±34 px of travel: 1.7° off, 9 px from the shaft at the picture's edge, and the
-// track lost in most frames), and so is one drawn by hand. The shaft's centres across the line
+// sync 17 s off at confidence 0), and so is one drawn by hand. The shaft's centres across the line
 // (shaftCentres, of the sign that shows more of them) are fitted with a line (Theil-Sen: the
 // digits of a clock on the line, grain that happens to stand out, are outliers); that line is
 // the shaft if most centres lie on it, and it lies within 3° and 4 px of `axis`.

@@ -248,8 +248,8 @@ private slots:
 
     // A line drawn by hand is a degree or two and a few pixels off the shaft; so is one found
     // from a short path of the tip. Far from where it was drawn it misses the shaft, and the
-    // tip was lost (probe seed 531911, case 6: a line 1.7° off, 255 of 584 frames without a
-    // tip and the sync 17 s off). The tracker moves it onto the shaft its frames show.
+    // tip's course no longer fits the recording (probe seed 531911, case 6: a line 1.7° off,
+    // the sync 17 s off at confidence 0). The tracker moves it onto the shaft its frames show.
     void settlesALineDrawnOffTheShaft_data()
     {
         QTest::addColumn<double>("towardsTip_deg");
