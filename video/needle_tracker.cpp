@@ -185,6 +185,14 @@ double robustSigma(const std::vector<std::vector<double>>& gradients)
     return std::max(1e-6, 1.4826 * median(dev));
 }
 
+// Where the parabola through three neighbouring samples `a`, `b`, `c` (b the highest) peaks,
+// from b's sample: within half a sample either way.
+double peakOffset(double a, double b, double c)
+{
+    const double den = a - 2 * b + c;
+    return std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
+}
+
 struct Peak {
     double position = kNaN;
     double strength = 0.0;
@@ -258,10 +266,7 @@ Peak findTip(const std::vector<double>& g, const std::vector<double>& shaft, con
         return p;
     const auto best = *std::max_element(peaks.begin(), peaks.end());
     const int b = best.second;
-    const double a = v(b - 1), c0 = v(b), c = v(b + 1);
-    const double den = a - 2 * c0 + c;
-    const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
-    p.position = double(b) + frac;
+    p.position = double(b) + peakOffset(v(b - 1), v(b), v(b + 1));
     p.strength = best.first;
     for (const auto& [strength, i] : peaks)
         if (std::abs(i - b) > 2 * kStep)
@@ -351,12 +356,6 @@ bool shaftFromFarEnd(const std::vector<StripProfile>& profiles)
     }
     return quarter > 0 && end - start > 1.0 * double(quarter);
 }
-
-// `axis` pointing from the shaft to the tip, where the tip model looks for them (the shaft
-// behind, towards p1): a line found in the picture points left to right or downwards
-// whichever way the needle enters, and one drawn may point either way. The other way round,
-// a shaft is seen ahead of its tip and the tip is lost in most frames (a needle entering from
-// the picture's right: 273 of 475 frames without a tip and the sync 116 frames off).
 
 // The tip's edge sign along a strip and whether to look for it as the end of a shaft, from
 // the sampled frames. Where a shaft is seen, the tip is the edge of opposite sign at which it
@@ -461,9 +460,8 @@ std::vector<std::pair<double, double>> shaftCentres(const cv::Mat& sampled, doub
         const auto peak = std::max_element(p.begin() + 1, p.end() - 1);
         if (!(*peak > 4.0 * noise))
             continue;
-        const double a = *(peak - 1), b = *peak, c = *(peak + 1), den = a - 2 * b + c;
-        const double frac = std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
-        centres.emplace_back(origin + (k + 0.5) * kSettleSegment_px, double(peak - p.begin()) + frac - kSettleHalfWidth_px);
+        const double across = double(peak - p.begin()) + peakOffset(*(peak - 1), *peak, *(peak + 1)) - kSettleHalfWidth_px;
+        centres.emplace_back(origin + (k + 0.5) * kSettleSegment_px, across);
     }
     return centres;
 }
