@@ -1,6 +1,6 @@
 // Frame-exact seeking against OpenCV's plain seek (CAP_PROP_POS_FRAMES) on the same file in
 // the same run, one-frame-back steps from the cache, and the tissue tracker's pass over every
-// frame against decoding alone.
+// frame against decoding alone, and the needle tracker's (one line and eight).
 //   bench_video [FILE]   (without FILE: makes a 640x480 H.264 file, keyframes 90 apart,
 //                         B-frames, with the ffmpeg tool)
 //   bench_video --hour   indexes a real one-hour 640x480 H.264 video at 30 frames/s (made
@@ -8,6 +8,7 @@
 #include "video/frame_index.h"
 #include "video/frame_index_store.h"
 #include "video/frame_reader.h"
+#include "video/needle_tracker.h"
 #include "video/packet_index.h"
 #include "video/tissue_tracker.h"
 #include "video/video_error.h"
@@ -222,6 +223,24 @@ int benchFile(int argc, char** argv)
                     "one hour at 30 frames/s: %.0f min\n",
                     perFrame, trackMs / std::max(decodeMs, 1e-3), decodeMs / index.size(), shifts.time_s.size(),
                     perFrame * 30.0 * 3600.0 / 60000.0);
+        // Following the needle's tip along one line and along eight (sync tracks the likeliest
+        // few lines in one pass): the edge detector frame by frame and the tip's course
+        // through the frames (TipPath).
+        for (int lines : {1, 8}) {
+            std::vector<nb::video::NeedleAxis> axes;
+            for (int k = 0; k < lines; ++k) {
+                const double angle = 3.14159265358979323846 * k / lines;
+                const QPointF centre(index.width / 2.0, index.height / 2.0), u(std::cos(angle), std::sin(angle));
+                axes.emplace_back(centre - u * index.width, centre + u * index.width);
+            }
+            nb::video::FrameReader needle(index, 1);
+            clock.restart();
+            const std::vector<nb::video::NeedleTrack> tracks = nb::video::trackNeedles(needle, axes);
+            const double needleMs = clock.nsecsElapsed() / 1e6;
+            std::printf("needle tracking, %d line%s: %.2f ms/frame, %.1fx decoding alone; one hour at 30 frames/s: %.0f min\n",
+                        lines, lines == 1 ? "" : "s", needleMs / index.size(), needleMs / std::max(decodeMs, 1e-3),
+                        needleMs / index.size() * 30.0 * 3600.0 / 60000.0);
+        }
     }
     return 0;
 }

@@ -15,7 +15,9 @@
 // against what each sample of the strip shows behind a tip and ahead of one (learnt from the
 // sampled frames), so that a still textured background does not pull it to the texture's
 // edges; a track keeps that measure where it scatters clearly less while the tip moves.
-// Frames where no edge stands out of the noise are masked (NaN), never guessed.
+// Where a frame alone does not show the tip clearly (a faint needle in heavy noise), the tip's
+// likeliest course through the frames (TipPath) says where to look for it in that frame.
+// Frames where no edge stands out of the noise there are masked (NaN), never guessed.
 
 #include "frame_reader.h"
 

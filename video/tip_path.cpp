@@ -1,0 +1,101 @@
+#include "tip_path.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace nb::video {
+
+namespace {
+constexpr float kNone = -std::numeric_limits<float>::infinity();
+constexpr int kVelocities = 2 * TipPath::kMaxVelocity + 1;
+}  // namespace
+
+TipPath::TipPath(int length, int lag)
+    : length_(std::max(1, length)), lag_(std::max(0, lag)), from_(std::size_t(lag_ + 1))
+{
+}
+
+std::optional<int> TipPath::push(const std::vector<double>& score)
+{
+    const std::size_t states = std::size_t(kVelocities) * std::size_t(length_);
+    auto scoreAt = [&](int i) {
+        const double s = std::size_t(i) < score.size() ? score[std::size_t(i)] : 0.0;
+        return std::isfinite(s) ? float(std::clamp(s, -kScoreCap, kScoreCap)) : 0.0f;
+    };
+    std::vector<signed char>& from = from_[std::size_t(pushed_ % (lag_ + 1))];
+    from.assign(states, 0);
+    if (pushed_ == 0) {
+        // The first frame: any velocity.
+        best_.resize(states);
+        for (int v = -kMaxVelocity; v <= kMaxVelocity; ++v)
+            for (int i = 0; i < length_; ++i)
+                best_[std::size_t(stateIndex(v, i))] = scoreAt(i);
+    } else {
+        // The velocity changes by at most kMaxAcceleration, at a cost; the tip then moves by
+        // its new velocity: state (v, i) comes from (v − dv, i − v).
+        std::vector<float> next(states, kNone);
+        for (int v = -kMaxVelocity; v <= kMaxVelocity; ++v) {
+            for (int i = std::max(0, v); i < std::min(length_, length_ + v); ++i) {
+                const int p = i - v;
+                float top = kNone;
+                signed char change = 0;
+                for (int dv = -kMaxAcceleration; dv <= kMaxAcceleration; ++dv) {
+                    const int u = v - dv;
+                    if (u < -kMaxVelocity || u > kMaxVelocity)
+                        continue;
+                    const float c = best_[std::size_t(stateIndex(u, p))] - float(kAccelerationCost * std::abs(dv));
+                    if (c > top) {
+                        top = c;
+                        change = static_cast<signed char>(dv);
+                    }
+                }
+                const std::size_t s = std::size_t(stateIndex(v, i));
+                next[s] = top + scoreAt(i);
+                from[s] = change;
+            }
+        }
+        best_ = std::move(next);
+    }
+    // Kept near zero so that an hour of frames does not run out of float precision.
+    const float top = *std::max_element(best_.begin(), best_.end());
+    if (std::isfinite(top))
+        for (float& b : best_)
+            b -= top;
+    ++pushed_;
+    if (pushed_ - decided_ <= lag_)
+        return std::nullopt;
+    const std::vector<int> course = backtrack(lag_ + 1);
+    ++decided_;
+    return course.front();
+}
+
+std::vector<int> TipPath::finish()
+{
+    std::vector<int> rest = backtrack(pushed_ - decided_);
+    decided_ = pushed_;
+    return rest;
+}
+
+// The positions over the last `frames` frames pushed, on the best course to the newest.
+std::vector<int> TipPath::backtrack(int frames) const
+{
+    if (frames <= 0 || best_.empty())
+        return {};
+    const std::size_t at = std::size_t(std::max_element(best_.begin(), best_.end()) - best_.begin());
+    int v = int(at) / length_ - kMaxVelocity, i = int(at) % length_;
+    std::vector<int> course(static_cast<std::size_t>(frames));
+    for (int k = frames - 1; k >= 0; --k) {
+        course[std::size_t(k)] = i;
+        if (k == 0)
+            break;
+        const int frame = pushed_ - frames + k;
+        const int change = from_[std::size_t(frame % (lag_ + 1))][std::size_t(stateIndex(v, i))];
+        i -= v;
+        v -= change;
+    }
+    return course;
+}
+
+}  // namespace nb::video

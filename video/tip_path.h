@@ -1,0 +1,45 @@
+#pragma once
+// The tip's likeliest course along a needle strip through a noisy video: where single frames
+// are too noisy to show a faint tip (its edge 2-3 σ, as high as the strongest noise along the
+// strip), the edge adds up along the course it takes from frame to frame, and noise does not.
+// A Viterbi search over (position, velocity) in samples and samples per frame: the course
+// gains each frame's score where it passes and pays for every change of velocity. Decided
+// with a fixed lag, so that an hour's video needs no more memory than a minute's.
+
+#include <optional>
+#include <vector>
+
+namespace nb::video {
+
+class TipPath {
+public:
+    // `length`: samples along the strip; `lag`: frames seen after a frame before it is decided.
+    explicit TipPath(int length, int lag = 48);
+
+    // Adds the next frame's scores (the tip's edge response at each sample, in units of its
+    // noise). Returns the position of frame `decided()` when it is decided by this frame.
+    std::optional<int> push(const std::vector<double>& score);
+    // The positions of the frames not yet decided, in order (call once, at the end).
+    std::vector<int> finish();
+    // How many frames have been decided.
+    int decided() const { return decided_; }
+
+    static constexpr int kMaxVelocity = 16;  // samples per frame either way
+    static constexpr int kMaxAcceleration = 2;  // samples per frame, per frame
+    static constexpr double kAccelerationCost = 0.5;  // per sample per frame of velocity change
+    static constexpr double kScoreCap = 5.0;  // one frame's say, either way
+
+private:
+    int stateIndex(int velocity, int position) const { return (velocity + kMaxVelocity) * length_ + position; }
+    std::vector<int> backtrack(int frames) const;
+
+    int length_;
+    int lag_;
+    int pushed_ = 0;
+    int decided_ = 0;
+    std::vector<float> best_;  // per state, the best course's score (the highest is 0)
+    // Per frame (a ring of lag + 1), per state: the velocity change that led there.
+    std::vector<std::vector<signed char>> from_;
+};
+
+}  // namespace nb::video
