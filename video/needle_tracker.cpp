@@ -1488,6 +1488,11 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
         out[a].axis = trackers.back().axis;
     }
+    // A frame's tip, once decided, along the axis from its p1.
+    auto record = [&](std::size_t a, const AxisTracker::Sighting& tip) {
+        out[a].displacement_px.push_back(tip.found + trackers[a].strip.origin);
+        measured[a].push_back(tip.measured + trackers[a].strip.origin);
+    };
     const int n = index.size();
     for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
         // Frames the index calls duplicates are tracked too, at their own time: a slow
@@ -1498,19 +1503,15 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
         const cv::Mat gray = toGray(reader.read(i).image);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);
-            if (const std::optional<AxisTracker::Sighting> tip = trackers[a].next(gray, info.time_s, info.duplicate)) {
-                out[a].displacement_px.push_back(tip->found + trackers[a].strip.origin);
-                measured[a].push_back(tip->measured + trackers[a].strip.origin);
-            }
+            if (const std::optional<AxisTracker::Sighting> tip = trackers[a].next(gray, info.time_s, info.duplicate))
+                record(a, *tip);
         }
         if (progress && i % 50 == 0)
             progress(i, n);
     }
     for (std::size_t a = 0; a < axes.size(); ++a) {
-        for (const AxisTracker::Sighting& tip : trackers[a].rest()) {
-            out[a].displacement_px.push_back(tip.found + trackers[a].strip.origin);
-            measured[a].push_back(tip.measured + trackers[a].strip.origin);
-        }
+        for (const AxisTracker::Sighting& tip : trackers[a].rest())
+            record(a, tip);
         maskJumps(out[a].time_s, out[a].displacement_px);
         maskJumps(out[a].time_s, measured[a]);
         // Measured against the strip's sides, the tip is freed of a still texture's pull (probe
