@@ -1299,8 +1299,9 @@ struct AxisTracker {
     // textured background pulls the edge detector, 8 samples): the course counts no frame for
     // more than TipPath::kScoreCap, and the changing digits of a frame counter on the line
     // score as high in every frame (probe seed 531911 case 6: the course sat on them in 337 of
-    // 584 frames, the tip 6 σ and more in 534). Not a hard bound: on a line with no needle,
-    // what stands out in single frames jumps about faster than any course.
+    // 584 frames, the tip 6 σ and more in 534). Away from it a sample scores the least a frame
+    // can, however strong its edge; not a hard bound: on a line with no needle, what stands
+    // out in single frames jumps about faster than any course.
     std::vector<double> edgeScores(const Seen& seen) const
     {
         std::vector<double> out(seen.g.size(), 0.0);
@@ -1312,7 +1313,7 @@ struct AxisTracker {
         if (clearlySeen(seen.sighting))
             for (std::size_t i = 0; i < out.size(); ++i)
                 if (std::abs(double(i) - seen.sighting.found) > 8.0)
-                    out[i] -= 2.0 * TipPath::kScoreCap;
+                    out[i] = -TipPath::kScoreCap;
         return out;
     }
 
