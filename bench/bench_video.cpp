@@ -241,6 +241,14 @@ int benchFile(int argc, char** argv)
                         lines, lines == 1 ? "" : "s", needleMs / index.size(), needleMs / std::max(decodeMs, 1e-3),
                         needleMs / index.size() * 30.0 * 3600.0 / 60000.0);
         }
+        // Finding the lines to follow (ridge, change and shaft line sums over 40 frames spread
+        // over the file), once per video whatever its length.
+        nb::video::FrameReader finding(index, 1);
+        clock.restart();
+        const std::vector<nb::video::NeedleAxis> found = nb::video::needleAxisCandidates(finding, {}, 16);
+        const double findMs = clock.nsecsElapsed() / 1e6;
+        std::printf("needle line finding (%dx%d): %.0f ms, %zu lines; as long as decoding %.0f frames\n", index.width, index.height,
+                    findMs, found.size(), findMs / std::max(decodeMs / index.size(), 1e-3));
     }
     return 0;
 }

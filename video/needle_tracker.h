@@ -46,8 +46,9 @@ struct NeedleTrack {
 // inside `roi` when it is not empty. nullopt when nothing moves along a line. Throws VideoError.
 std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, int sampleFrames = 40);
 
-// The likeliest needle axes, best first (at most `maxCount`); `scores` (may be null) gets how
-// clearly each looks like a needle (a moving edge on a straight ridge).
+// The likeliest needle axes, best first (at most `maxCount`, and after them the few lines along
+// which a shaft stands out most of the frames' mean, when they ranked lower); `scores` (may be
+// null) gets how clearly each looks like a needle (a moving edge on a straight ridge).
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
                                              std::vector<double>* scores = nullptr);
 
