@@ -772,6 +772,31 @@ LineSums lineSums(const cv::Mat& image)
     return out;
 }
 
+// How long the line of sumAlongLines at `angle_deg` and `rho` (from the picture's centre,
+// along the line's normal) runs inside a `width` × `height` picture: what the sums of a
+// picture of ones would be (within 0.7 % on a 640x480 picture, lines of 40 px and more),
+// without turning one 180 times.
+double lengthInside(int width, int height, int angle_deg, double rho)
+{
+    const double th = angle_deg * M_PI / 180.0, dx = std::cos(th), dy = std::sin(th);
+    const double px = width / 2.0 - rho * dy, py = height / 2.0 + rho * dx;
+    double from = -1e9, to = 1e9;
+    // Pixel k covers k ± 0.5.
+    auto clip = [&](double p, double d, double size) {
+        if (std::abs(d) < 1e-9) {
+            if (p < -0.5 || p > size - 0.5)
+                to = from;
+            return;
+        }
+        const double a = (-0.5 - p) / d, b = (size - 0.5 - p) / d;
+        from = std::max(from, std::min(a, b));
+        to = std::min(to, std::max(a, b));
+    };
+    clip(px, dx, width);
+    clip(py, dy, height);
+    return std::max(0.0, to - from);
+}
+
 // Where a shaft of one sign stands along a straight line of the sampled frames' mean: per
 // line, the signed sum of the picture's departure from its surroundings, in units of what a
 // picture without lines sums to along as long a line (its spread grows with the root of the
@@ -801,13 +826,12 @@ LineSums shaftLineSums(const cv::Mat& mean, cv::Mat& departure)
     cv::min(departure, 3.0f * noise, departure);
     cv::max(departure, -3.0f * noise, departure);
     const std::vector<cv::Mat> sums = sumAlongLines(departure, out);
-    const std::vector<cv::Mat> lengths = sumAlongLines(cv::Mat::ones(departure.size(), CV_32F), out);
     for (std::size_t a = 0; a < sums.size(); ++a) {
         cv::Mat row(sums[a].size(), CV_32F, cv::Scalar(0));
         for (int y = 0; y < row.rows; ++y) {
-            const float length = lengths[a].at<float>(y);
+            const double length = lengthInside(departure.cols, departure.rows, int(a), y - out.diag / 2.0);
             if (length >= kShaftLineMin_px)
-                row.at<float>(y) = std::abs(sums[a].at<float>(y)) / std::sqrt(length);
+                row.at<float>(y) = float(std::abs(sums[a].at<float>(y)) / std::sqrt(length));
         }
         out.rows.push_back(row);
     }
