@@ -732,11 +732,20 @@ std::vector<cv::Mat> sumAlongLines(const cv::Mat& image, LineSums& geometry)
     return out;
 }
 
-float medianOf(std::vector<float> v)
+// The median of a float picture's values, and their spread around it (1.4826 times their
+// median distance from it: σ for Gaussian noise).
+std::pair<float, float> middleAndSpread(const cv::Mat& image)
 {
-    const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    return *mid;
+    std::vector<float> values(image.begin<float>(), image.end<float>());
+    auto medianOf = [](std::vector<float>& v) {
+        const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+        std::nth_element(v.begin(), mid, v.end());
+        return *mid;
+    };
+    const float middle = medianOf(values);
+    for (float& v : values)
+        v = std::abs(v - middle);
+    return {middle, 1.4826f * medianOf(values)};
 }
 
 LineSums lineSums(const cv::Mat& image)
@@ -748,23 +757,13 @@ LineSums lineSums(const cv::Mat& image)
     // What noise leaves in the picture everywhere is taken off first: in a noisy picture it
     // adds up along a line with its length, and the picture's long diagonals outweighed a
     // needle reaching half across it (seed 586261: 16 candidates, all diagonals).
-    std::vector<float> values(small.begin<float>(), small.end<float>());
-    const auto mid = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), mid, values.end());
-    const float floor = *mid;
-    std::vector<float> spread;
-    spread.reserve(values.size());
-    for (float v : values)
-        spread.push_back(std::abs(v - floor));
-    std::nth_element(spread.begin(), spread.begin() + std::ptrdiff_t(spread.size() / 2), spread.end());
-    const float noise = 1.4826f * spread[spread.size() / 2];
+    const auto [floor, noise] = middleAndSpread(small);
     small -= floor;
     cv::max(small, 0.0f, small);
     // Capped so that a wide bright bar does not outweigh a long thin needle, but well above
     // the noise: a thin needle is less than a hundredth of the picture, and a cap at the
     // noise's own tail made it no more than noise.
-    for (float& v : values)
-        v = std::max(0.0f, v - floor);
+    std::vector<float> values(small.begin<float>(), small.end<float>());
     std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() * 99 / 100), values.end());
     const float cap = std::max({1e-3f, values[values.size() * 99 / 100], 6.0f * noise});
     cv::min(small, cap, small);
@@ -817,11 +816,8 @@ LineSums shaftLineSums(const cv::Mat& mean, cv::Mat& departure)
     cv::blur(small, local, cv::Size(15, 15));
     departure = small - local;
     // Text and bright bars count no more than a strong shaft.
-    std::vector<float> values(departure.begin<float>(), departure.end<float>());
-    const float middle = medianOf(values);
-    for (float& v : values)
-        v = std::abs(v - middle);
-    const float noise = std::max(1e-3f, 1.4826f * medianOf(values));
+    const auto [middle, spread] = middleAndSpread(departure);
+    const float noise = std::max(1e-3f, spread);
     departure -= middle;
     cv::min(departure, 3.0f * noise, departure);
     cv::max(departure, -3.0f * noise, departure);
@@ -1068,8 +1064,9 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     const LineSums ridgeSums = lineSums(ridge);
     const cv::Mat change = changeOverFrames(s, mean);
     const LineSums changeSums = lineSums(change);
-    auto clipped = [&](const LineCandidate& c) -> std::optional<NeedleAxis> {
-        const NeedleAxis rough = lineAcross(ridgeSums, c);
+    // Line `c` of `sums`, as far as it runs inside the picture.
+    auto clipped = [&](const LineSums& sums, const LineCandidate& c) -> std::optional<NeedleAxis> {
+        const NeedleAxis rough = lineAcross(sums, c);
         const Strip clipper(rough, s.width, s.height, 0);
         if (clipper.length < 20)
             return std::nullopt;
@@ -1079,7 +1076,7 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     };
     std::vector<std::pair<double, NeedleAxis>> scored;
     for (const LineCandidate& c : strongestLines(ridgeSums, 16)) {
-        const std::optional<NeedleAxis> rough = clipped(c);
+        const std::optional<NeedleAxis> rough = clipped(ridgeSums, c);
         if (!rough)
             continue;
         const NeedleAxis axis = shaftBehindTip(s, refineAxis(ridge, *rough));
@@ -1097,7 +1094,7 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     // found, a line 0.6° and 5 px off it lost the tip in 261 frames of 512).
     std::vector<PathLine> paths;
     for (LineCandidate c : strongestLines(changeSums, 32)) {
-        const std::optional<NeedleAxis> rough = clipped(c);
+        const std::optional<NeedleAxis> rough = clipped(ridgeSums, c);
         std::optional<PathLine> path = rough ? refinePath(change, *rough, s.width, s.height) : std::nullopt;
         if (!path)
             continue;
@@ -1118,17 +1115,14 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     const LineSums shaftSums = shaftLineSums(mean, departure);
     cv::resize(departure, departure, mean.size(), 0, 0, cv::INTER_LINEAR);
     for (const LineCandidate& c : strongestLines(shaftSums, kShaftLines)) {
-        const NeedleAxis across = lineAcross(shaftSums, c);
-        const Strip clipper(across, s.width, s.height, 0);
-        if (clipper.length < 20)
+        const std::optional<NeedleAxis> rough = clipped(shaftSums, c);
+        if (!rough)
             continue;
-        const double len = across.length();
-        const QPointF u((across.x2() - across.x1()) / len, (across.y2() - across.y1()) / len);
-        const NeedleAxis rough(across.p1() + u * clipper.origin, across.p1() + u * (clipper.origin + clipper.length));
+        const Strip line(*rough, s.width, s.height, 0);
         cv::Mat along;
-        cv::remap(departure, along, clipper.mapX, clipper.mapY, cv::INTER_LINEAR);
+        cv::remap(departure, along, line.mapX, line.mapY, cv::INTER_LINEAR);
         const cv::Mat shaft = cv::sum(along)[0] < 0 ? cv::Mat(-departure) : departure;
-        const NeedleAxis axis = shaftBehindTip(s, refineAxis(shaft, rough));
+        const NeedleAxis axis = shaftBehindTip(s, refineAxis(shaft, *rough));
         // Ranked as a line of change is (what it shows moving, and the ridge under it), and
         // tracked even when that ranks it below the lines kept: a faint needle's ridge is low
         // and its tip's edge barely moves in single frames (246810 case 10: 17th of 17).
