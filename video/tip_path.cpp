@@ -33,27 +33,37 @@ std::optional<int> TipPath::push(const std::vector<double>& score)
             for (int i = 0; i < length_; ++i)
                 best_[std::size_t(stateIndex(v, i))] = scoreAt(i);
     } else {
-        // The velocity changes by at most kMaxAcceleration, at a cost; the tip then moves by
-        // its new velocity: state (v, i) comes from (v − dv, i − v).
+        // The velocity changes at a cost per sample per frame of change; the tip then moves by
+        // its new velocity: state (v, i) comes from (u, i − v) for the u that scores best after
+        // paying for the change from u to v. That best u is found for every v at once by a
+        // pass up the velocities and one down (an L1 distance transform), so any change of
+        // velocity costs no more time than a small one.
+        std::vector<float> reach(best_);
+        std::vector<signed char> origin(states);
+        for (int v = -kMaxVelocity; v <= kMaxVelocity; ++v)
+            std::fill_n(origin.begin() + std::ptrdiff_t(stateIndex(v, 0)), length_, static_cast<signed char>(v));
+        const float cost = float(kAccelerationCost);
+        auto relax = [&](int v, int neighbour) {
+            float* to = &reach[std::size_t(stateIndex(v, 0))];
+            const float* by = &reach[std::size_t(stateIndex(neighbour, 0))];
+            signed char* o = &origin[std::size_t(stateIndex(v, 0))];
+            const signed char* ob = &origin[std::size_t(stateIndex(neighbour, 0))];
+            for (int p = 0; p < length_; ++p)
+                if (by[p] - cost > to[p]) {
+                    to[p] = by[p] - cost;
+                    o[p] = ob[p];
+                }
+        };
+        for (int v = -kMaxVelocity + 1; v <= kMaxVelocity; ++v)
+            relax(v, v - 1);
+        for (int v = kMaxVelocity - 1; v >= -kMaxVelocity; --v)
+            relax(v, v + 1);
         std::vector<float> next(states, kNone);
         for (int v = -kMaxVelocity; v <= kMaxVelocity; ++v) {
             for (int i = std::max(0, v); i < std::min(length_, length_ + v); ++i) {
-                const int p = i - v;
-                float top = kNone;
-                signed char change = 0;
-                for (int dv = -kMaxAcceleration; dv <= kMaxAcceleration; ++dv) {
-                    const int u = v - dv;
-                    if (u < -kMaxVelocity || u > kMaxVelocity)
-                        continue;
-                    const float c = best_[std::size_t(stateIndex(u, p))] - float(kAccelerationCost * std::abs(dv));
-                    if (c > top) {
-                        top = c;
-                        change = static_cast<signed char>(dv);
-                    }
-                }
-                const std::size_t s = std::size_t(stateIndex(v, i));
-                next[s] = top + scoreAt(i);
-                from[s] = change;
+                const std::size_t s = std::size_t(stateIndex(v, i)), p = std::size_t(stateIndex(v, i - v));
+                next[s] = reach[p] + scoreAt(i);
+                from[s] = static_cast<signed char>(v - origin[p]);
             }
         }
         best_ = std::move(next);

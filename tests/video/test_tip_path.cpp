@@ -68,6 +68,7 @@ private slots:
         QTest::newRow("sine 3 sigma") << "sine" << 3.0 << 12u;
         QTest::newRow("stroke 2.5 sigma") << "stroke" << 2.5 << 13u;
         QTest::newRow("fast sine 3 sigma") << "fast" << 3.0 << 14u;
+        QTest::newRow("quick turns 3 sigma") << "quick" << 3.0 << 15u;
     }
     void followsAFaintTip()
     {
@@ -80,6 +81,8 @@ private slots:
             course = [](int k) { return 200.0 + 60.0 * std::sin(2.0 * kPi * k / 200.0); };
         else if (motion == "fast")  // 120 samples either way, 9.4 samples a frame at the most
             course = [](int k) { return 200.0 + 120.0 * std::sin(2.0 * kPi * k / 80.0); };
+        else if (motion == "quick")  // 30 samples either way, turning by 3 samples a frame each frame
+            course = [](int k) { return 200.0 + 30.0 * std::sin(2.0 * kPi * k / 20.0); };
         else  // at rest, a steady stroke of 0.6 samples a frame, at rest again
             course = [](int k) { return 80.0 + 0.6 * std::clamp(k - 150, 0, 400); };
         const Outcome o = follow(kLength, kFrames, height, course, seed);
