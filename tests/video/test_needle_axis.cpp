@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 namespace {
@@ -28,6 +29,12 @@ double tipAt(int frame)
     return 50.0 * std::sin(2.0 * kPi * frame / 60.0);
 }
 
+// A slow stroke (0.6 px a frame for 60 frames), then at rest for the last 30.
+double strokeThenRest(int frame)
+{
+    return -18.0 + 0.6 * std::min(frame, 60);
+}
+
 struct NeedleVideo {
     double towardsTip_deg = 0.0;  // the needle's direction, from the shaft to the tip (image y down)
     bool clockOnShaft = false;    // changing digits burnt in across the line, behind the tip's travel
@@ -38,6 +45,8 @@ struct NeedleVideo {
     double grain = 12.0;          // of the fixed background, grey levels (σ of 4 px squares)
     int width = kWidth, height = kHeight;
     double travelCentre = 0.0;    // of the tip's travel, along the needle from the picture's centre (px)
+    double (*tip)(int frame) = tipAt;  // where the tip is in each frame (before travelCentre)
+    std::uint64_t grainSeed = 12345;   // of the background's grain
 };
 
 QPointF direction(const NeedleVideo& v)
@@ -50,7 +59,7 @@ QPointF direction(const NeedleVideo& v)
 // of its own in each frame; MJPEG through OpenCV.
 QString writeNeedleVideo(const QString& path, const NeedleVideo& v)
 {
-    cv::theRNG().state = 12345;
+    cv::theRNG().state = v.grainSeed;
     cv::Mat grains(v.height / 4 + 1, v.width / 4 + 1, CV_32F), grain;
     cv::randn(grains, 0.0, v.grain);
     cv::resize(grains, grain, cv::Size(grains.cols * 4, grains.rows * 4), 0, 0, cv::INTER_NEAREST);
@@ -70,12 +79,12 @@ QString writeNeedleVideo(const QString& path, const NeedleVideo& v)
     for (int k = 0; k < kFrames; ++k) {
         cv::Mat tissue = grain;
         if (v.tissueCarried) {
-            const double shift = tipAt(k) / 3.0;
+            const double shift = v.tip(k) / 3.0;
             const cv::Mat move = (cv::Mat_<double>(2, 3) << 1, 0, shift * u.x(), 0, 1, shift * u.y());
             cv::warpAffine(grain, tissue, move, grain.size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
         }
         cv::Mat frame = 100.0 + tissue, ending, noise(v.height, v.width, CV_32F), bytes, bgr;
-        cv::exp(along - tipAt(k) - v.travelCentre, ending);
+        cv::exp(along - v.tip(k) - v.travelCentre, ending);
         frame += shaft / (1.0 + ending);
         cv::randn(noise, 0.0, v.noise);
         frame += noise;
@@ -288,6 +297,59 @@ private slots:
         QCOMPARE(wrongNearEdge, 0);
         QVERIFY2(read >= kFrames - nearEdge - 5, qPrintable(QStringLiteral("%1 frames without a tip").arg(kFrames - read)));
         QVERIFY2(close >= 0.9 * read, qPrintable(QStringLiteral("the tip within 2 px in %1 of %2 frames").arg(close).arg(read)));
+    }
+
+    // On a textured background the edge response has the texture's edges in it, of both signs,
+    // in every frame, and the strip's middle differs from its sides by the texture as much as
+    // by the shaft. The texture's edges of the tip's sign were taken out as what is always
+    // there; those of the other sign were left in (what is always there was held at zero), and
+    // beside a tip at rest they pulled its edge onto the texture's next edge (probe seed 314159
+    // case 12: at the final rest of a slow stroke the tip read 4.5 px ahead; 246810 case 15:
+    // 3.7 px short, and the sync 1.5 frames off). Where the picture ahead of the tip was
+    // brighter in the middle than at the sides, no shaft seemed to end at the tip and it went
+    // unread (314159 case 1: through the whole final rest). Both are now learnt from the frames
+    // whose tip is elsewhere. Before, on three of these nine grains the tip at rest read 2.2 and
+    // 3.5 px off or went unread in most frames.
+    void readsATipAtRestOnTexture_data()
+    {
+        QTest::addColumn<unsigned>("grainSeed");
+        for (unsigned seed : {12345u, 777u, 4242u, 31337u, 2024u, 99u, 5u, 6u, 7u})
+            QTest::newRow(qPrintable(QStringLiteral("grain %1").arg(seed))) << seed;
+    }
+    void readsATipAtRestOnTexture()
+    {
+        QFETCH(unsigned, grainSeed);
+        NeedleVideo v{0.0};
+        v.grainSeed = grainSeed;
+        v.tip = strokeThenRest;
+        v.contrast = 40.0;
+        v.grain = 25.0;
+        v.noise = 15.0;
+        QTemporaryDir dir;
+        QString problem;
+        const std::optional<nb::video::FrameIndex> index = writtenAndIndexed(dir, v, &problem);
+        QVERIFY2(index, qPrintable(problem));
+        nb::video::FrameReader reader(*index);
+        const nb::video::NeedleAxis drawn(QPointF(10.0, kHeight / 2.0), QPointF(kWidth - 10.0, kHeight / 2.0));
+        const nb::video::NeedleTrack track = nb::video::trackNeedle(reader, drawn);
+        QCOMPARE(int(track.displacement_px.size()), kFrames);
+        const double centreAt = kWidth / 2.0 - track.axis.x1();
+        std::vector<double> atRest, moving;
+        for (int k = 0; k < kFrames; ++k) {
+            const double error = track.displacement_px[std::size_t(k)] - centreAt - strokeThenRest(k);
+            if (std::isfinite(error))
+                (k > 62 ? atRest : moving).push_back(error);
+        }
+        auto median = [](std::vector<double> x) {
+            std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(x.size() / 2), x.end());
+            return x[x.size() / 2];
+        };
+        QVERIFY2(atRest.size() >= 20 && moving.size() >= 50, "the tip is lost in too many frames");
+        const double restError = median(atRest), movingError = median(moving);
+        qInfo("median error at rest %.2f px (%zu frames), moving %.2f px (%zu frames)", restError, atRest.size(), movingError,
+              moving.size());
+        QVERIFY2(std::abs(restError) < 1.0, qPrintable(QStringLiteral("at rest the tip reads %1 px off").arg(restError)));
+        QVERIFY2(std::abs(movingError) < 1.0, qPrintable(QStringLiteral("moving, the tip reads %1 px off").arg(movingError)));
     }
 
     // Digits that change on the needle's line every frame (a clock with milliseconds across the
