@@ -119,6 +119,19 @@ std::optional<nb::video::FrameIndex> writtenAndIndexed(const QTemporaryDir& dir,
     return nb::video::buildFrameIndex(path);
 }
 
+// `v` written, indexed and its tip tracked along a line drawn across the picture's middle, left
+// to right; nothing, and `problem` says why, when the video cannot be made.
+std::optional<nb::video::NeedleTrack> trackedAcrossTheMiddle(const NeedleVideo& v, QString* problem)
+{
+    QTemporaryDir dir;
+    const std::optional<nb::video::FrameIndex> index = writtenAndIndexed(dir, v, problem);
+    if (!index)
+        return std::nullopt;
+    nb::video::FrameReader reader(*index);
+    const nb::video::NeedleAxis drawn(QPointF(10.0, kHeight / 2.0), QPointF(kWidth - 10.0, kHeight / 2.0));
+    return nb::video::trackNeedle(reader, drawn);
+}
+
 QPointF unit(const nb::video::NeedleAxis& axis)
 {
     return (axis.p2() - axis.p1()) / axis.length();
@@ -269,13 +282,10 @@ private slots:
         v.travelCentre = kWidth / 2.0 - 50.0 - 4.0;  // the tip comes to 4 px from the right edge
         v.contrast = 86.0;
         v.noise = 18.0;
-        QTemporaryDir dir;
         QString problem;
-        const std::optional<nb::video::FrameIndex> index = writtenAndIndexed(dir, v, &problem);
-        QVERIFY2(index, qPrintable(problem));
-        nb::video::FrameReader reader(*index);
-        const nb::video::NeedleAxis drawn(QPointF(10.0, kHeight / 2.0), QPointF(kWidth - 10.0, kHeight / 2.0));
-        const nb::video::NeedleTrack track = nb::video::trackNeedle(reader, drawn);
+        const std::optional<nb::video::NeedleTrack> found = trackedAcrossTheMiddle(v, &problem);
+        QVERIFY2(found, qPrintable(problem));
+        const nb::video::NeedleTrack& track = *found;
         QCOMPARE(int(track.displacement_px.size()), kFrames);
         QVERIFY(unit(track.axis).x() > 0.999);
         const double centreAt = kWidth / 2.0 - track.axis.x1();
@@ -325,13 +335,10 @@ private slots:
         v.contrast = 40.0;
         v.grain = 25.0;
         v.noise = 15.0;
-        QTemporaryDir dir;
         QString problem;
-        const std::optional<nb::video::FrameIndex> index = writtenAndIndexed(dir, v, &problem);
-        QVERIFY2(index, qPrintable(problem));
-        nb::video::FrameReader reader(*index);
-        const nb::video::NeedleAxis drawn(QPointF(10.0, kHeight / 2.0), QPointF(kWidth - 10.0, kHeight / 2.0));
-        const nb::video::NeedleTrack track = nb::video::trackNeedle(reader, drawn);
+        const std::optional<nb::video::NeedleTrack> found = trackedAcrossTheMiddle(v, &problem);
+        QVERIFY2(found, qPrintable(problem));
+        const nb::video::NeedleTrack& track = *found;
         QCOMPARE(int(track.displacement_px.size()), kFrames);
         const double centreAt = kWidth / 2.0 - track.axis.x1();
         std::vector<double> atRest, moving;
