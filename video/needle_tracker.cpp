@@ -149,6 +149,14 @@ std::vector<double> gradient(const std::vector<double>& p)
     return g;
 }
 
+// The low (15 %) percentile of `column` (reordered).
+double lowPercentile(std::vector<double>& column)
+{
+    const std::size_t k15 = column.size() * 15 / 100;
+    std::nth_element(column.begin(), column.begin() + std::ptrdiff_t(k15), column.end());
+    return column[k15];
+}
+
 // Per position, what is there even in the frames where the tip is not: the low (15 %)
 // percentile over frames of the edge response of one sign. A median would also remove a
 // tip that rests at one place for most of the video.
@@ -158,17 +166,18 @@ std::vector<double> staticPart(const std::vector<std::vector<double>>& gradients
         return {};
     const std::size_t n = gradients.front().size();
     std::vector<double> out(n), column(gradients.size());
-    const std::size_t k15 = gradients.size() * 15 / 100;
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t k = 0; k < gradients.size(); ++k)
             column[k] = polarity * gradients[k][i];
-        std::nth_element(column.begin(), column.begin() + std::ptrdiff_t(k15), column.end());
         // Below zero is the opposite edge (e.g. where the tip rests, seen from the other
         // side), not something of this sign that is always there.
-        out[i] = std::max(0.0, column[k15]);
+        out[i] = std::max(0.0, lowPercentile(column));
     }
     return out;
 }
+
+// Fewer frames than this with their tip away from a sample say nothing of it.
+constexpr std::size_t kFramesAway = 3;
 
 // What is always there, learnt again once the tip's places are known: the same low percentile,
 // over the frames whose tip was found beyond the edge response's reach of the sample, and no
@@ -182,17 +191,13 @@ std::vector<double> staticPartAwayFromTips(const std::vector<std::vector<double>
                                            const std::vector<double>& tipAt, std::vector<double> still)
 {
     std::vector<double> column;
-    constexpr std::size_t needed = 3;
     for (std::size_t i = 0; i < still.size(); ++i) {
         column.clear();
         for (std::size_t k = 0; k < gradients.size(); ++k)
             if (std::isfinite(tipAt[k]) && std::abs(tipAt[k] - double(i)) > kStep + 2)
                 column.push_back(polarity * gradients[k][i]);
-        if (column.size() < needed)
-            continue;
-        const std::size_t k15 = column.size() * 15 / 100;
-        std::nth_element(column.begin(), column.begin() + std::ptrdiff_t(k15), column.end());
-        still[i] = std::min(still[i], column[k15]);
+        if (column.size() >= kFramesAway)
+            still[i] = std::min(still[i], lowPercentile(column));
     }
     return still;
 }
@@ -213,7 +218,7 @@ std::vector<double> shaftBackground(const std::vector<StripProfile>& profiles, c
         for (std::size_t k = 0; k < profiles.size(); ++k)
             if (std::isfinite(tipAt[k]) && tipAt[k] < double(i) - kShaftClear)
                 column.push_back(profiles[k].shaft[i]);
-        if (column.size() >= 3)
+        if (column.size() >= kFramesAway)
             out[i] = median(column);
     }
     return out;
