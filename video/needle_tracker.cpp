@@ -1,5 +1,6 @@
 #include "needle_tracker.h"
 
+#include "static_edges.h"
 #include "tip_path.h"
 #include "video_error.h"
 
@@ -13,6 +14,7 @@
 #include <deque>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace nb::video {
 
@@ -1434,6 +1436,7 @@ struct AxisTracker {
             tips[k] = tipAgainstSides(sides, middles[k], tips[k]);
         sides = learnTipSides(middles, tips);
         course = TipPath(strip.length);
+        everyFrame.emplace(still, sigma);
     }
 
     void withoutBackground(StripProfile& p) const
@@ -1480,6 +1483,60 @@ struct AxisTracker {
     TipPath course{1};
     std::deque<Seen> undecided;
 
+    // What is always there, learnt again over every frame as it is decided (static_edges.h says
+    // why), and each decided frame's edge response about its tip, to read the tip there again
+    // against it at the end.
+    struct AboutTip {
+        int peak = -1;  // the sample the tip was read at; -1 when none was
+        std::array<float, 5> edge{};  // in the tip's sign, samples peak-2 ... peak+2
+    };
+    std::optional<StaticEdges> everyFrame;
+    std::vector<AboutTip> aboutTips;
+
+    Sighting decideAndLearn(const Seen& seen, int at)
+    {
+        const Sighting tip = decide(seen, at);
+        std::vector<double> signedEdge(seen.g.size());
+        for (std::size_t i = 0; i < signedEdge.size(); ++i)
+            signedEdge[i] = polarity * seen.g[i];
+        AboutTip about;
+        if (everyFrame && std::isfinite(tip.found)) {
+            everyFrame->add(signedEdge, tip.found, kStep + 2);
+            const int peak = int(std::lround(tip.found));
+            if (peak >= 2 && peak + 2 < int(signedEdge.size())) {
+                about.peak = peak;
+                std::copy_n(signedEdge.begin() + (peak - 2), about.edge.size(), about.edge.begin());
+            }
+        }
+        aboutTips.push_back(about);
+        return tip;
+    }
+
+    // The tips decided, `found` (one per decided frame, in order, less the strip's origin), read
+    // again at the end against what is always there as every frame shows it: the peak within a
+    // sample of where it was read, to a fraction of a sample as before.
+    void readAgain(std::vector<double>& found, double origin) const
+    {
+        if (!everyFrame || found.size() != aboutTips.size())
+            return;
+        const std::vector<double> floor = everyFrame->estimate(int(kFramesAway));
+        const int n = int(floor.size());
+        for (std::size_t k = 0; k < found.size(); ++k) {
+            const AboutTip& about = aboutTips[k];
+            if (about.peak < 0 || !std::isfinite(found[k]))
+                continue;
+            auto v = [&](int j) { return double(about.edge[std::size_t(j + 2)]) - floor[std::size_t(about.peak + j)]; };
+            int best = 0;
+            for (int j : {-1, 1})
+                if (v(j) > v(best))
+                    best = j;
+            const int b = about.peak + best;
+            if (b <= kStep + 2 || b >= n - 1 - kStep - 2)
+                continue;
+            found[k] = origin + double(b) + peakOffset(v(best - 1), v(best), v(best + 1));
+        }
+    }
+
     // Each frame is looked at on its own (locate), and the tip's course through the frames
     // (TipPath) says where it was a few dozen frames later (decide). Returns the frame decided
     // by this one, the frames in order.
@@ -1494,7 +1551,7 @@ struct AxisTracker {
         undecided.push_back(std::move(seen));
         if (!at)
             return std::nullopt;
-        const Sighting decided = decide(undecided.front(), *at);
+        const Sighting decided = decideAndLearn(undecided.front(), *at);
         undecided.pop_front();
         return decided;
     }
@@ -1504,7 +1561,7 @@ struct AxisTracker {
     {
         std::vector<Sighting> out;
         for (int at : course.finish()) {
-            out.push_back(decide(undecided.front(), at));
+            out.push_back(decideAndLearn(undecided.front(), at));
             undecided.pop_front();
         }
         return out;
@@ -1729,6 +1786,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
     for (std::size_t a = 0; a < axes.size(); ++a) {
         for (const AxisTracker::Sighting& tip : trackers[a].rest())
             record(a, tip);
+        trackers[a].readAgain(out[a].displacement_px, trackers[a].strip.origin);
         maskJumps(out[a].time_s, out[a].displacement_px);
         maskJumps(out[a].time_s, measured[a]);
         // Measured against the strip's sides, the tip is freed of a still texture's pull (probe
