@@ -1512,9 +1512,9 @@ struct AxisTracker {
         return tip;
     }
 
-    // The tips decided, `found` (one per decided frame, in order, less the strip's origin), read
-    // again at the end against what is always there as every frame shows it: the peak within a
-    // sample of where it was read, to a fraction of a sample as before.
+    // The tips decided, `found` (one per decided frame, in order, along the axis: the strip's
+    // samples plus `origin`), read again at the end against what is always there as every frame
+    // shows it: the peak within a sample of where it was read, to a fraction of a sample as before.
     void readAgain(std::vector<double>& found, double origin) const
     {
         if (!everyFrame || found.size() != aboutTips.size())
