@@ -149,7 +149,7 @@ private slots:
     // case 8: 0.46 px short at rest, the sync 1.6 frames off). Every frame now teaches it, and
     // the tips are read again against it at the end. Before, the rest read 0.46-0.92 px from
     // where the stroke put it on 4 of these 6 grains; now 0.32 px at most. (Not all of that is
-    // the percentile's: on a fainter needle, 45 over noise 25, 0.4-0.8 px is left on 3 grains
+    // the percentile's: on a fainter needle, 45 over noise 25, 0.5-0.75 px is left on 3 grains
     // in 6, where there was 0.4-2.0 px on all 6.)
     void readsALongRestAsTheStrokeDoes_data() { addGrainRows(21, 26); }
     void readsALongRestAsTheStrokeDoes()
