@@ -180,6 +180,8 @@ std::vector<double> staticPart(const std::vector<std::vector<double>>& gradients
 
 // Fewer frames than this with their tip away from a sample say nothing of it.
 constexpr std::size_t kFramesAway = 3;
+// A tip further than this from a sample is away from it: beyond its edge response's reach.
+constexpr double kAwayFromTip = kStep + 2;
 
 // What is always there, learnt again once the tip's places are known: the same low percentile,
 // over the frames whose tip was found beyond the edge response's reach of the sample, and no
@@ -196,7 +198,7 @@ std::vector<double> staticPartAwayFromTips(const std::vector<std::vector<double>
     for (std::size_t i = 0; i < still.size(); ++i) {
         column.clear();
         for (std::size_t k = 0; k < gradients.size(); ++k)
-            if (std::isfinite(tipAt[k]) && std::abs(tipAt[k] - double(i)) > kStep + 2)
+            if (std::isfinite(tipAt[k]) && std::abs(tipAt[k] - double(i)) > kAwayFromTip)
                 column.push_back(polarity * gradients[k][i]);
         if (column.size() >= kFramesAway)
             still[i] = std::min(still[i], lowPercentile(column));
@@ -299,6 +301,17 @@ double gatedStrength(const std::vector<double>& shaft, int polarity, double sigm
     return std::min(v, ending + 2.0 * sigma) - 0.5 * mismatch;
 }
 
+// The edge response reaches kStep samples short of the strip's ends (the picture's edges). A
+// tip closer to an end than that is cut off, and its edge peaks on the last samples reached,
+// short of it: no place is read there (probe seed 187716 case 13: a stroke ending 6 px from the
+// picture's edge read 3.5 px short through its final rest, and the sync was 2.1 frames off).
+// Two samples more: a tip 7.3 px from the edge, its edge whole, still peaked on the ramp two
+// samples short. `b`: the edge's peak sample of `n`.
+bool cutOffAtEnd(int b, int n)
+{
+    return b <= kStep + 2 || b >= n - 1 - kStep - 2;
+}
+
 // The tip in samples [lo, hi] of one frame's profile: the strongest edge of sign `polarity`
 // above what is always there, to a fraction of a sample. `gated`: an edge counts only as
 // far as a shaft ends at it, judged at the strongest few edges; `sigma` is the edge
@@ -336,13 +349,7 @@ Peak findTip(const std::vector<double>& g, const std::vector<double>& shaft, con
     for (const auto& [strength, i] : peaks)
         if (std::abs(i - b) > 2 * kStep)
             p.second = std::max(p.second, strength);
-    // The edge response reaches kStep samples short of the strip's ends (the picture's
-    // edges). A tip closer to an end than that is cut off, and its edge peaks on the last
-    // samples reached, short of it: no place is read there (probe seed 187716 case 13: a
-    // stroke ending 6 px from the picture's edge read 3.5 px short through its final rest,
-    // and the sync was 2.1 frames off). Two samples more: a tip 7.3 px from the edge, its
-    // edge whole, still peaked on the ramp two samples short.
-    if (b <= kStep + 2 || b >= n - 1 - kStep - 2)
+    if (cutOffAtEnd(b, n))
         return p;
     p.position = double(b) + peakOffset(v(b - 1), v(b), v(b + 1));
     return p;
@@ -1496,16 +1503,14 @@ struct AxisTracker {
     Sighting decideAndLearn(const Seen& seen, int at)
     {
         const Sighting tip = decide(seen, at);
-        std::vector<double> signedEdge(seen.g.size());
-        for (std::size_t i = 0; i < signedEdge.size(); ++i)
-            signedEdge[i] = polarity * seen.g[i];
         AboutTip about;
         if (everyFrame && std::isfinite(tip.found)) {
-            everyFrame->add(signedEdge, tip.found, kStep + 2);
+            everyFrame->add(seen.g, polarity, tip.found, kAwayFromTip);
             const int peak = int(std::lround(tip.found));
-            if (peak >= 2 && peak + 2 < int(signedEdge.size())) {
+            if (peak >= 2 && peak + 2 < int(seen.g.size())) {
                 about.peak = peak;
-                std::copy_n(signedEdge.begin() + (peak - 2), about.edge.size(), about.edge.begin());
+                for (int j = -2; j <= 2; ++j)
+                    about.edge[std::size_t(j + 2)] = float(polarity * seen.g[std::size_t(peak + j)]);
             }
         }
         aboutTips.push_back(about);
@@ -1531,7 +1536,7 @@ struct AxisTracker {
                 if (v(j) > v(best))
                     best = j;
             const int b = about.peak + best;
-            if (b <= kStep + 2 || b >= n - 1 - kStep - 2)
+            if (cutOffAtEnd(b, n))
                 continue;
             found[k] = origin + double(b) + peakOffset(v(best - 1), v(best), v(best + 1));
         }

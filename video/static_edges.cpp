@@ -13,14 +13,14 @@ StaticEdges::StaticEdges(std::vector<double> first, double sigma)
 {
 }
 
-void StaticEdges::add(const std::vector<double>& signedEdge, double tip, double reach)
+void StaticEdges::add(const std::vector<double>& edge, int polarity, double tip, double reach)
 {
-    if (!std::isfinite(tip) || signedEdge.size() != first_.size())
+    if (!std::isfinite(tip) || edge.size() != first_.size())
         return;
     for (std::size_t i = 0; i < first_.size(); ++i) {
         if (std::abs(double(i) - tip) <= reach)
             continue;
-        const double at = (signedEdge[i] - first_[i]) / binWidth_ + kBelowFirst_sigma * kBinsPerSigma;
+        const double at = (polarity * edge[i] - first_[i]) / binWidth_ + kBelowFirst_sigma * kBinsPerSigma;
         const int bin = std::clamp(int(std::floor(at)), 0, kBins - 1);
         ++counts_[i * kBins + std::size_t(bin)];
         ++frames_[i];

@@ -20,9 +20,10 @@ public:
     // `first`: the start-up's estimate per sample; `sigma`: the edge response's noise.
     StaticEdges(std::vector<double> first, double sigma);
 
-    // One frame's edge response in the tip's sign, whose tip is at `tip` (samples; NaN when
-    // not found, and the frame then says nothing). Samples within `reach` of the tip are left out.
-    void add(const std::vector<double>& signedEdge, double tip, double reach);
+    // One frame's edge response, taken in the tip's sign (`polarity`, ±1), whose tip is at `tip`
+    // (samples; NaN when not found, and the frame then says nothing). Samples within `reach` of
+    // the tip are left out.
+    void add(const std::vector<double>& edge, int polarity, double tip, double reach);
 
     // Per sample, the low percentile over the frames added; the first estimate where fewer
     // than `minFrames` frames had their tip away.
