@@ -191,6 +191,15 @@ constexpr double kAwayFromTip = kStep + 2;
 // levels, the tip read 4.5 px ahead; 246810 case 15: 3.7 px short, the sync 1.5 frames off).
 // Never above the first estimate: a frame whose tip was found in the wrong place shows its
 // real tip here. Where fewer than 3 frames have their tip away, the first estimate stands.
+// Of fewer than 7 frames the 15 % point is their lowest, and a frame's noise alone can put that
+// 3 σ under the rest (probe seed 577215 case 14: a faint tip found in 4 of 40 frames; at still
+// edges 250 px from any tip the lowest of the 4 stood 2-3 σ under the edge's usual response,
+// which then stood out as much as the tip in every frame, and the tip's course kept to it).
+// Where no frame's tip was found within reach of a sample, the frames whose tip was not found
+// count there too. Near a tip found they do not: their tip may be there, and the lowest of the
+// few frames with the tip away is the one its edge's tail reaches least (taken as 1.04 σ under
+// their median there, a resting tip read up to 0.46 px from where its stroke put it).
+constexpr std::size_t kFewFrames = 7;
 std::vector<double> staticPartAwayFromTips(const std::vector<std::vector<double>>& gradients, int polarity,
                                            const std::vector<double>& tipAt, std::vector<double> still)
 {
@@ -200,6 +209,11 @@ std::vector<double> staticPartAwayFromTips(const std::vector<std::vector<double>
         for (std::size_t k = 0; k < gradients.size(); ++k)
             if (std::isfinite(tipAt[k]) && std::abs(tipAt[k] - double(i)) > kAwayFromTip)
                 column.push_back(polarity * gradients[k][i]);
+        const bool nearATip = std::any_of(tipAt.begin(), tipAt.end(), [&](double t) { return std::abs(t - double(i)) <= kAwayFromTip; });
+        if (column.size() < kFewFrames && !nearATip)
+            for (std::size_t k = 0; k < gradients.size(); ++k)
+                if (!std::isfinite(tipAt[k]))
+                    column.push_back(polarity * gradients[k][i]);
         if (column.size() >= kFramesAway)
             still[i] = std::min(still[i], lowPercentile(column));
     }
@@ -226,6 +240,103 @@ std::vector<double> shaftBackground(const std::vector<StripProfile>& profiles, c
             out[i] = median(column);
     }
     return out;
+}
+
+// Where the picture changes across the strip's whole width, not along the needle's middle
+// alone: a burnt-in frame counter or clock that the line crosses. A tip changes the middle and
+// leaves the sides be; changing digits change both. There the strip says nothing of the needle
+// (probe seed 577215 case 14: a counter's digits at the strip's end stood 10-25 σ out of the
+// noise, a faint tip 2-6 σ, and the tip was read on the digits in every frame). Judged in each
+// frame against what the strip usually shows: a counter's box widens at frame 10 and 100, and
+// its digits change every frame.
+struct UsualAcross {
+    std::vector<double> middle, sides;  // per sample, the median over the sampled frames
+    double noise = 0.0;                 // of one frame's sides about theirs
+};
+
+UsualAcross usualAcross(const std::vector<StripProfile>& profiles)
+{
+    UsualAcross out;
+    const std::size_t n = profiles.empty() ? 0 : profiles.front().middle.size();
+    std::vector<double> column(profiles.size()), deviations;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = 0; k < profiles.size(); ++k)
+            column[k] = profiles[k].middle[i];
+        out.middle.push_back(median(column));
+        for (std::size_t k = 0; k < profiles.size(); ++k)
+            column[k] = profiles[k].middle[i] - profiles[k].shaft[i];
+        out.sides.push_back(median(column));
+        for (double v : column)
+            deviations.push_back(std::abs(v - out.sides.back()));
+    }
+    out.noise = deviations.empty() ? 0.0 : 1.4826 * median(std::move(deviations));
+    return out;
+}
+
+// The samples of one frame (`profile` as sampled) where its sides stand 5 σ from their usual
+// and have changed at least half as much as its middle, and as far around them as a tip's edge
+// response reaches.
+std::vector<char> changingAcross(const StripProfile& profile, const UsualAcross& usual)
+{
+    const int n = int(std::min(profile.middle.size(), usual.sides.size()));
+    std::vector<char> out(profile.middle.size(), 0);
+    if (!(usual.noise > 0.0))
+        return out;
+    const int reach = int(kAwayFromTip);
+    for (int i = 0; i < n; ++i) {
+        const std::size_t s = std::size_t(i);
+        const double sides = std::abs(profile.middle[s] - profile.shaft[s] - usual.sides[s]);
+        const double middle = std::abs(profile.middle[s] - usual.middle[s]);
+        if (sides > 5.0 * usual.noise && sides >= 0.5 * middle)
+            std::fill(out.begin() + std::max(0, i - reach), out.begin() + std::min(n, i + reach + 1), char(1));
+    }
+    return out;
+}
+
+// What is always there as one frame is read against it: nothing is read (+inf) where the frame
+// changes across the strip. Its edges there still count in what is always there: left out in
+// some frames only, a counter's box edges would no longer be taken out in the rest.
+std::vector<double> unreadableWhere(std::vector<double> still, const std::vector<char>& changing)
+{
+    for (std::size_t i = 0; i < still.size() && i < changing.size(); ++i)
+        if (changing[i])
+            still[i] = std::numeric_limits<double>::infinity();
+    return still;
+}
+
+// The sampled frames (their profiles and edge responses) less those whose edge response
+// scatters more than twice as much about the frames' median as the usual frame's: a frame
+// coded worse than the rest. Of the few frames whose tip is away from a sample, its lowest
+// edge is the 15 % point, and it would put what is always there far too low along the strip.
+void withoutNoisierFrames(std::vector<StripProfile>& profiles, std::vector<std::vector<double>>& g)
+{
+    if (g.size() < 8)
+        return;
+    const std::size_t n = g.front().size();
+    std::vector<double> middle(n), column(g.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = 0; k < g.size(); ++k)
+            column[k] = g[k][i];
+        middle[i] = median(column);
+    }
+    std::vector<double> scatter(g.size()), deviation(n);
+    for (std::size_t k = 0; k < g.size(); ++k) {
+        for (std::size_t i = 0; i < n; ++i)
+            deviation[i] = std::abs(g[k][i] - middle[i]);
+        scatter[k] = median(deviation);
+    }
+    const double usual = median(scatter);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < g.size(); ++k)
+        if (!(scatter[k] > 2.0 * usual)) {
+            if (kept != k) {
+                profiles[kept] = std::move(profiles[k]);
+                g[kept] = std::move(g[k]);
+            }
+            ++kept;
+        }
+    profiles.resize(kept);
+    g.resize(kept);
 }
 
 // The noise of the edge response: its spread over frames around the median, per position.
@@ -1387,8 +1498,10 @@ struct AxisTracker {
     std::vector<double> strengths;
     std::vector<std::pair<double, double>> recent;  // (time, position) of the last sightings in a row
     TipSides sides;
+    UsualAcross usual;  // what the strip usually shows, to see where a frame changes across it
 
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
+
 
     AxisTracker(const NeedleAxis& given, const Samples& s, double frameDuration_s)
         : strip(given, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
@@ -1405,7 +1518,12 @@ struct AxisTracker {
         std::vector<std::vector<double>> g;
         for (const StripProfile& p : profiles)
             g.push_back(gradient(p.middle));
+        withoutNoisierFrames(profiles, g);
         sigma = robustSigma(g);
+        usual = usualAcross(profiles);
+        std::vector<std::vector<char>> changing;
+        for (const StripProfile& p : profiles)
+            changing.push_back(changingAcross(p, usual));
         TipModel model = tipModel(profiles, g, sigma);
         polarity = model.polarity;
         gated = model.gated;
@@ -1413,7 +1531,7 @@ struct AxisTracker {
         auto tipsSeen = [&] {
             std::vector<double> at(profiles.size(), kNaN);
             for (std::size_t k = 0; k < profiles.size(); ++k) {
-                const Peak p = findTip(g[k], profiles[k].shaft, still, polarity, gated, sigma);
+                const Peak p = findTip(g[k], profiles[k].shaft, unreadableWhere(still, changing[k]), polarity, gated, sigma);
                 if (std::isfinite(p.position) && p.strength > 5.0 * sigma)
                     at[k] = p.position;
             }
@@ -1442,7 +1560,7 @@ struct AxisTracker {
         for (std::size_t k = 0; k < tips.size(); ++k)
             tips[k] = tipAgainstSides(sides, middles[k], tips[k]);
         sides = learnTipSides(middles, tips);
-        course = TipPath(strip.length);
+        course = TipPath(strip.length, 48, frame_s);
         everyFrame.emplace(still, sigma);
     }
 
@@ -1485,6 +1603,7 @@ struct AxisTracker {
     struct Seen {
         StripProfile profile;
         std::vector<double> g;
+        std::vector<double> still;  // what is always there, as this frame is read against it
         Sighting sighting;
     };
     TipPath course{1};
@@ -1549,9 +1668,10 @@ struct AxisTracker {
     {
         Seen seen;
         seen.profile = strip.sample(gray);
+        seen.still = unreadableWhere(still, changingAcross(seen.profile, usual));
         withoutBackground(seen.profile);
         seen.g = gradient(seen.profile.middle);
-        seen.sighting = locate(seen.profile, seen.g, time_s, repeated);
+        seen.sighting = locate(seen.profile, seen.g, seen.still, time_s, repeated);
         const std::optional<int> at = course.push(edgeScores(seen));
         undecided.push_back(std::move(seen));
         if (!at)
@@ -1585,7 +1705,7 @@ struct AxisTracker {
     {
         std::vector<double> out(seen.g.size(), 0.0);
         for (std::size_t i = 2; i + 3 < seen.g.size(); ++i) {
-            const double v = polarity * seen.g[i] - still[i];
+            const double v = polarity * seen.g[i] - seen.still[i];
             // The gate only lowers a score, and below 1 σ it changes little.
             out[i] = (gated && v > sigma ? gatedStrength(seen.profile.shaft, polarity, sigma, int(i), v) : v) / sigma;
         }
@@ -1610,11 +1730,11 @@ struct AxisTracker {
     // found alone is kept where it is clear or where the course agrees; else the edge on the
     // course, where it stands 2 σ out of the noise, as long as the course has kept to the
     // tip where it was clear. A tip may move faster than the course's velocities (16 samples
-    // a frame), and there the course is noise.
+    // a frame at 30 frames/s), and there the course is noise.
     Sighting decide(const Seen& seen, int at)
     {
         const Sighting& alone = seen.sighting;
-        const Peak onCourse = findTip(seen.g, seen.profile.shaft, still, polarity, gated, sigma, at - 2, at + 2);
+        const Peak onCourse = findTip(seen.g, seen.profile.shaft, seen.still, polarity, gated, sigma, at - 2, at + 2);
         const bool agree = std::isfinite(alone.found) && std::abs(alone.found - onCourse.position) <= 3.0;
         if (clearlySeen(alone)) {
             courseAgreed.push_back(agree);
@@ -1631,7 +1751,8 @@ struct AxisTracker {
         return {onCourse.position, tipAgainstSides(sides, seen.profile.middle, onCourse.position), onCourse.strength};
     }
 
-    Sighting locate(const StripProfile& profile, const std::vector<double>& g, double time_s, bool repeated)
+    Sighting locate(const StripProfile& profile, const std::vector<double>& g, const std::vector<double>& stillHere, double time_s,
+                    bool repeated)
     {
         const int n = int(g.size());
         int lo = 2, hi = n - 3;
@@ -1643,7 +1764,7 @@ struct AxisTracker {
             lo = std::clamp(int(expected - w), 2, n - 3);
             hi = std::clamp(int(expected + w), 2, n - 3);
         }
-        const Peak tip = findTip(g, profile.shaft, still, polarity, gated, sigma, lo, hi);
+        const Peak tip = findTip(g, profile.shaft, stillHere, polarity, gated, sigma, lo, hi);
         const double bestV = tip.strength;
         const double needed = std::max((near ? 3.5 : 5.0) * sigma, 0.25 * typicalStrength() * sigma);
         if (!std::isfinite(tip.position) || !(bestV > needed)) {

@@ -9,17 +9,29 @@ namespace nb::video {
 
 namespace {
 constexpr float kNone = -std::numeric_limits<float>::infinity();
-constexpr int kVelocities = 2 * TipPath::kMaxVelocity + 1;
+// A change of velocity is kept in a signed char: at most twice this.
+constexpr int kMostVelocity = 60;
+
+// Frames of 30 frames/s per frame of the video, within what a signed char's velocities allow.
+double perFrame(double frame_s)
+{
+    return std::clamp(std::isfinite(frame_s) && frame_s > 0 ? 30.0 * frame_s : 1.0, 0.25,
+                      double(kMostVelocity) / TipPath::kMaxVelocity);
+}
 }  // namespace
 
-TipPath::TipPath(int length, int lag)
-    : length_(std::max(1, length)), lag_(std::max(0, lag)), from_(std::size_t(lag_ + 1))
+TipPath::TipPath(int length, int lag, double frame_s)
+    : length_(std::max(1, length)),
+      lag_(std::max(0, lag)),
+      maxVelocity_(std::clamp(int(std::lround(kMaxVelocity * perFrame(frame_s))), 1, kMostVelocity)),
+      accelerationCost_(float(kAccelerationCost / (perFrame(frame_s) * perFrame(frame_s)))),
+      from_(std::size_t(lag_ + 1))
 {
 }
 
 std::optional<int> TipPath::push(const std::vector<double>& score)
 {
-    const std::size_t states = std::size_t(kVelocities) * std::size_t(length_);
+    const std::size_t states = std::size_t(2 * maxVelocity_ + 1) * std::size_t(length_);
     auto scoreAt = [&](int i) {
         const double s = std::size_t(i) < score.size() ? score[std::size_t(i)] : 0.0;
         return std::isfinite(s) ? float(std::clamp(s, -kScoreCap, kScoreCap)) : 0.0f;
@@ -29,7 +41,7 @@ std::optional<int> TipPath::push(const std::vector<double>& score)
     if (pushed_ == 0) {
         // The first frame: any velocity.
         best_.resize(states);
-        for (int v = -kMaxVelocity; v <= kMaxVelocity; ++v)
+        for (int v = -maxVelocity_; v <= maxVelocity_; ++v)
             for (int i = 0; i < length_; ++i)
                 best_[std::size_t(stateIndex(v, i))] = scoreAt(i);
     } else {
@@ -40,9 +52,9 @@ std::optional<int> TipPath::push(const std::vector<double>& score)
         // velocity costs no more time than a small one.
         std::vector<float> reach(best_);
         std::vector<signed char> origin(states);
-        for (int v = -kMaxVelocity; v <= kMaxVelocity; ++v)
+        for (int v = -maxVelocity_; v <= maxVelocity_; ++v)
             std::fill_n(origin.begin() + std::ptrdiff_t(stateIndex(v, 0)), length_, static_cast<signed char>(v));
-        const float cost = float(kAccelerationCost);
+        const float cost = accelerationCost_;
         auto relax = [&](int v, int neighbour) {
             float* to = &reach[std::size_t(stateIndex(v, 0))];
             const float* by = &reach[std::size_t(stateIndex(neighbour, 0))];
@@ -54,12 +66,12 @@ std::optional<int> TipPath::push(const std::vector<double>& score)
                     o[p] = ob[p];
                 }
         };
-        for (int v = -kMaxVelocity + 1; v <= kMaxVelocity; ++v)
+        for (int v = -maxVelocity_ + 1; v <= maxVelocity_; ++v)
             relax(v, v - 1);
-        for (int v = kMaxVelocity - 1; v >= -kMaxVelocity; --v)
+        for (int v = maxVelocity_ - 1; v >= -maxVelocity_; --v)
             relax(v, v + 1);
         std::vector<float> next(states, kNone);
-        for (int v = -kMaxVelocity; v <= kMaxVelocity; ++v) {
+        for (int v = -maxVelocity_; v <= maxVelocity_; ++v) {
             for (int i = std::max(0, v); i < std::min(length_, length_ + v); ++i) {
                 const std::size_t s = std::size_t(stateIndex(v, i)), p = std::size_t(stateIndex(v, i - v));
                 next[s] = reach[p] + scoreAt(i);
@@ -94,7 +106,7 @@ std::vector<int> TipPath::backtrack(int frames) const
     if (frames <= 0 || best_.empty())
         return {};
     const std::size_t at = std::size_t(std::max_element(best_.begin(), best_.end()) - best_.begin());
-    int v = int(at) / length_ - kMaxVelocity, i = int(at) % length_;
+    int v = int(at) / length_ - maxVelocity_, i = int(at) % length_;
     std::vector<int> course(static_cast<std::size_t>(frames));
     for (int k = frames - 1; k >= 0; --k) {
         course[std::size_t(k)] = i;

@@ -13,8 +13,9 @@ namespace nb::video {
 
 class TipPath {
 public:
-    // `length`: samples along the strip; `lag`: frames seen after a frame before it is decided.
-    explicit TipPath(int length, int lag = 48);
+    // `length`: samples along the strip; `lag`: frames seen after a frame before it is decided;
+    // `frame_s`: the video's frame interval, which scales the bounds below (set for 30 frames/s).
+    explicit TipPath(int length, int lag = 48, double frame_s = 1.0 / 30.0);
 
     // Adds the next frame's scores (the tip's edge response at each sample, in units of its
     // noise). Returns the position of frame `decided()` when it is decided by this frame.
@@ -24,6 +25,11 @@ public:
     // How many frames have been decided.
     int decided() const { return decided_; }
 
+    // At 30 frames/s. A needle moves as far in a second at any frame rate: seen at 15 frames/s
+    // it moves twice as far a frame and turns four times as much. With these bounds as they
+    // stand, a sine of 0.91 Hz and 63 px seen at 15 frames/s (24 px a frame at its fastest,
+    // turning by up to 9 a frame) cost more to follow than its faint tip scored, and the
+    // course kept to a still edge (probe seed 161803 case 14, the sync 161 frames off).
     static constexpr int kMaxVelocity = 16;  // samples per frame either way
     // Per sample per frame of velocity change, and no bound on the change: a sine of 0.73 Hz
     // and 30 px seen at 15 frames/s turns by 2.8 samples a frame, each frame (probe seed
@@ -31,12 +37,16 @@ public:
     static constexpr double kAccelerationCost = 0.5;
     static constexpr double kScoreCap = 5.0;  // one frame's say, either way
 
+    int maxVelocity() const { return maxVelocity_; }  // at this video's frame rate
+
 private:
-    int stateIndex(int velocity, int position) const { return (velocity + kMaxVelocity) * length_ + position; }
+    int stateIndex(int velocity, int position) const { return (velocity + maxVelocity_) * length_ + position; }
     std::vector<int> backtrack(int frames) const;
 
     int length_;
     int lag_;
+    int maxVelocity_;
+    float accelerationCost_;
     int pushed_ = 0;
     int decided_ = 0;
     std::vector<float> best_;  // per state, the best course's score (the highest is 0)
