@@ -242,68 +242,6 @@ std::vector<double> shaftBackground(const std::vector<StripProfile>& profiles, c
     return out;
 }
 
-// Where the picture changes across the strip's whole width, not along the needle's middle
-// alone: a burnt-in frame counter or clock that the line crosses. A tip changes the middle and
-// leaves the sides be; changing digits change both. There the strip says nothing of the needle
-// (probe seed 577215 case 14: a counter's digits at the strip's end stood 10-25 σ out of the
-// noise, a faint tip 2-6 σ, and the tip was read on the digits in every frame). Judged in each
-// frame against what the strip usually shows: a counter's box widens at frame 10 and 100, and
-// its digits change every frame.
-struct UsualAcross {
-    std::vector<double> middle, sides;  // per sample, the median over the sampled frames
-    double noise = 0.0;                 // of one frame's sides about theirs
-};
-
-UsualAcross usualAcross(const std::vector<StripProfile>& profiles)
-{
-    UsualAcross out;
-    const std::size_t n = profiles.empty() ? 0 : profiles.front().middle.size();
-    std::vector<double> column(profiles.size()), deviations;
-    for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t k = 0; k < profiles.size(); ++k)
-            column[k] = profiles[k].middle[i];
-        out.middle.push_back(median(column));
-        for (std::size_t k = 0; k < profiles.size(); ++k)
-            column[k] = profiles[k].middle[i] - profiles[k].shaft[i];
-        out.sides.push_back(median(column));
-        for (double v : column)
-            deviations.push_back(std::abs(v - out.sides.back()));
-    }
-    out.noise = deviations.empty() ? 0.0 : 1.4826 * median(std::move(deviations));
-    return out;
-}
-
-// The samples of one frame (`profile` as sampled) where its sides stand 5 σ from their usual
-// and have changed at least half as much as its middle, and as far around them as a tip's edge
-// response reaches.
-std::vector<char> changingAcross(const StripProfile& profile, const UsualAcross& usual)
-{
-    const int n = int(std::min(profile.middle.size(), usual.sides.size()));
-    std::vector<char> out(profile.middle.size(), 0);
-    if (!(usual.noise > 0.0))
-        return out;
-    const int reach = int(kAwayFromTip);
-    for (int i = 0; i < n; ++i) {
-        const std::size_t s = std::size_t(i);
-        const double sides = std::abs(profile.middle[s] - profile.shaft[s] - usual.sides[s]);
-        const double middle = std::abs(profile.middle[s] - usual.middle[s]);
-        if (sides > 5.0 * usual.noise && sides >= 0.5 * middle)
-            std::fill(out.begin() + std::max(0, i - reach), out.begin() + std::min(n, i + reach + 1), char(1));
-    }
-    return out;
-}
-
-// What is always there as one frame is read against it: nothing is read (+inf) where the frame
-// changes across the strip. Its edges there still count in what is always there: left out in
-// some frames only, a counter's box edges would no longer be taken out in the rest.
-std::vector<double> unreadableWhere(std::vector<double> still, const std::vector<char>& changing)
-{
-    for (std::size_t i = 0; i < still.size() && i < changing.size(); ++i)
-        if (changing[i])
-            still[i] = std::numeric_limits<double>::infinity();
-    return still;
-}
-
 // The sampled frames (their profiles and edge responses) less those whose edge response
 // scatters more than twice as much about the frames' median as the usual frame's: a frame
 // coded worse than the rest. Of the few frames whose tip is away from a sample, its lowest
@@ -1498,7 +1436,6 @@ struct AxisTracker {
     std::vector<double> strengths;
     std::vector<std::pair<double, double>> recent;  // (time, position) of the last sightings in a row
     TipSides sides;
-    UsualAcross usual;  // what the strip usually shows, to see where a frame changes across it
 
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
 
@@ -1520,10 +1457,6 @@ struct AxisTracker {
             g.push_back(gradient(p.middle));
         withoutNoisierFrames(profiles, g);
         sigma = robustSigma(g);
-        usual = usualAcross(profiles);
-        std::vector<std::vector<char>> changing;
-        for (const StripProfile& p : profiles)
-            changing.push_back(changingAcross(p, usual));
         TipModel model = tipModel(profiles, g, sigma);
         polarity = model.polarity;
         gated = model.gated;
@@ -1531,7 +1464,7 @@ struct AxisTracker {
         auto tipsSeen = [&] {
             std::vector<double> at(profiles.size(), kNaN);
             for (std::size_t k = 0; k < profiles.size(); ++k) {
-                const Peak p = findTip(g[k], profiles[k].shaft, unreadableWhere(still, changing[k]), polarity, gated, sigma);
+                const Peak p = findTip(g[k], profiles[k].shaft, still, polarity, gated, sigma);
                 if (std::isfinite(p.position) && p.strength > 5.0 * sigma)
                     at[k] = p.position;
             }
@@ -1603,7 +1536,6 @@ struct AxisTracker {
     struct Seen {
         StripProfile profile;
         std::vector<double> g;
-        std::vector<double> still;  // what is always there, as this frame is read against it
         Sighting sighting;
     };
     TipPath course{1};
@@ -1668,10 +1600,9 @@ struct AxisTracker {
     {
         Seen seen;
         seen.profile = strip.sample(gray);
-        seen.still = unreadableWhere(still, changingAcross(seen.profile, usual));
         withoutBackground(seen.profile);
         seen.g = gradient(seen.profile.middle);
-        seen.sighting = locate(seen.profile, seen.g, seen.still, time_s, repeated);
+        seen.sighting = locate(seen.profile, seen.g, time_s, repeated);
         const std::optional<int> at = course.push(edgeScores(seen));
         undecided.push_back(std::move(seen));
         if (!at)
@@ -1705,7 +1636,7 @@ struct AxisTracker {
     {
         std::vector<double> out(seen.g.size(), 0.0);
         for (std::size_t i = 2; i + 3 < seen.g.size(); ++i) {
-            const double v = polarity * seen.g[i] - seen.still[i];
+            const double v = polarity * seen.g[i] - still[i];
             // The gate only lowers a score, and below 1 σ it changes little.
             out[i] = (gated && v > sigma ? gatedStrength(seen.profile.shaft, polarity, sigma, int(i), v) : v) / sigma;
         }
@@ -1734,7 +1665,7 @@ struct AxisTracker {
     Sighting decide(const Seen& seen, int at)
     {
         const Sighting& alone = seen.sighting;
-        const Peak onCourse = findTip(seen.g, seen.profile.shaft, seen.still, polarity, gated, sigma, at - 2, at + 2);
+        const Peak onCourse = findTip(seen.g, seen.profile.shaft, still, polarity, gated, sigma, at - 2, at + 2);
         const bool agree = std::isfinite(alone.found) && std::abs(alone.found - onCourse.position) <= 3.0;
         if (clearlySeen(alone)) {
             courseAgreed.push_back(agree);
@@ -1751,8 +1682,7 @@ struct AxisTracker {
         return {onCourse.position, tipAgainstSides(sides, seen.profile.middle, onCourse.position), onCourse.strength};
     }
 
-    Sighting locate(const StripProfile& profile, const std::vector<double>& g, const std::vector<double>& stillHere, double time_s,
-                    bool repeated)
+    Sighting locate(const StripProfile& profile, const std::vector<double>& g, double time_s, bool repeated)
     {
         const int n = int(g.size());
         int lo = 2, hi = n - 3;
@@ -1764,7 +1694,7 @@ struct AxisTracker {
             lo = std::clamp(int(expected - w), 2, n - 3);
             hi = std::clamp(int(expected + w), 2, n - 3);
         }
-        const Peak tip = findTip(g, profile.shaft, stillHere, polarity, gated, sigma, lo, hi);
+        const Peak tip = findTip(g, profile.shaft, still, polarity, gated, sigma, lo, hi);
         const double bestV = tip.strength;
         const double needed = std::max((near ? 3.5 : 5.0) * sigma, 0.25 * typicalStrength() * sigma);
         if (!std::isfinite(tip.position) || !(bestV > needed)) {

@@ -169,32 +169,6 @@ private slots:
                  qPrintable(QStringLiteral("at rest the tip reads %1 px from where the stroke puts it").arg(restError - movingError)));
     }
 
-    // A frame counter burnt in on the needle's line ahead of the tip: white digits on a black
-    // box, as ffmpeg draws one, changing every frame. Its edges stand 10-25 σ out of the noise,
-    // and change too much to be taken out as what is always there; a faint tip (2-6 σ, too
-    // faint for the shaft gate) was read on the digits in every frame (probe seed 577215 case
-    // 14, the sync 599 frames off). The digits change the picture at the strip's sides as much
-    // as along its middle, and a tip does not: there the strip is blind.
-    void passesOverAFrameCounterAhead_data() { addGrainRows(31, 36); }
-    void passesOverAFrameCounterAhead()
-    {
-        QFETCH(unsigned, grainSeed);
-        NeedleVideo v = onGrain(grainSeed, restThenSine, 30.0, 22.0);
-        v.counterAhead = true;
-        QString problem;
-        const std::optional<std::vector<double>> errors = tipErrors(v, &problem);
-        QVERIFY2(errors, qPrintable(problem));
-        int read = 0, close = 0, onCounter = 0;
-        for (double error : *errors) {
-            read += std::isfinite(error);
-            close += std::abs(error) <= 2.0;
-            onCounter += error > 30.0;
-        }
-        qInfo("%d of %d frames read, %d within 2 px, %d on the counter", read, kFrames, close, onCounter);
-        QVERIFY2(onCounter == 0, qPrintable(QStringLiteral("the tip read on the counter in %1 frames").arg(onCounter)));
-        QVERIFY2(close >= 0.5 * kFrames, qPrintable(QStringLiteral("the tip within 2 px in %1 of %2 frames").arg(close).arg(kFrames)));
-    }
-
     // A faint needle (27 over noise 23) whose first frame is coded worse than the rest: four
     // times the noise. What is always there is learnt from the start-up's sampled frames whose
     // tip is elsewhere, and of the few such frames near a faint tip the lowest edge counts: the
