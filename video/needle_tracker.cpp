@@ -209,8 +209,8 @@ std::vector<double> staticPartAwayFromTips(const std::vector<std::vector<double>
         for (std::size_t k = 0; k < gradients.size(); ++k)
             if (std::isfinite(tipAt[k]) && std::abs(tipAt[k] - double(i)) > kAwayFromTip)
                 column.push_back(polarity * gradients[k][i]);
-        const bool nearATip = std::any_of(tipAt.begin(), tipAt.end(), [&](double t) { return std::abs(t - double(i)) <= kAwayFromTip; });
-        if (column.size() < kFewFrames && !nearATip)
+        auto nearATip = [&] { return std::any_of(tipAt.begin(), tipAt.end(), [&](double t) { return std::abs(t - double(i)) <= kAwayFromTip; }); };
+        if (column.size() < kFewFrames && !nearATip())
             for (std::size_t k = 0; k < gradients.size(); ++k)
                 if (!std::isfinite(tipAt[k]))
                     column.push_back(polarity * gradients[k][i]);
@@ -1438,7 +1438,6 @@ struct AxisTracker {
     TipSides sides;
 
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
-
 
     AxisTracker(const NeedleAxis& given, const Samples& s, double frameDuration_s)
         : strip(given, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)

@@ -37,8 +37,6 @@ public:
     static constexpr double kAccelerationCost = 0.5;
     static constexpr double kScoreCap = 5.0;  // one frame's say, either way
 
-    int maxVelocity() const { return maxVelocity_; }  // at this video's frame rate
-
 private:
     int stateIndex(int velocity, int position) const { return (velocity + maxVelocity_) * length_ + position; }
     std::vector<int> backtrack(int frames) const;
