@@ -298,6 +298,9 @@ double robustSigma(const std::vector<std::vector<double>>& gradients)
 // from b's sample: within half a sample either way.
 double peakOffset(double a, double b, double c)
 {
+    // Beside a stretch not read (+inf under what is always there), the peak is the sample.
+    if (!std::isfinite(a) || !std::isfinite(c))
+        return 0.0;
     const double den = a - 2 * b + c;
     return std::abs(den) > 1e-12 ? std::clamp(0.5 * (a - c) / den, -0.5, 0.5) : 0.0;
 }
@@ -1068,6 +1071,7 @@ std::optional<NeedleAxis> acrossPicture(const NeedleAxis& segment, int width, in
 }
 
 constexpr int kMaxPathWidth_px = 20;
+constexpr std::size_t kMostChangePaths = 2;  // tracked whatever their rank
 constexpr double kPathLengthPerWidth = 4.0;
 
 // A line along which a tip's path was seen, and the change summed along that path (a line a
@@ -1285,6 +1289,16 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     // 3.0° and 0.1° off the needle); both are tracked.
     for (const auto& [score, axis] : shafts)
         keep(score, axis, 1.0, 3.0);
+    // The paths with the most change under them are tracked too, when they ranked lower: a
+    // faint needle's ridge is low, and the lines across a clock's row of digits rank above it
+    // (probe seed 161803 case 0: the needle's path held twice the change of any other line,
+    // and ranked below 16 lines through the clock and the counter).
+    std::sort(paths.begin(), paths.end(), [](const PathLine& a, const PathLine& b) { return a.changeOnPath > b.changeOnPath; });
+    for (std::size_t k = 0; k < paths.size() && k < kMostChangePaths; ++k) {
+        const NeedleAxis axis = shaftBehindTip(s, paths[k].axis);
+        if (roi.isEmpty() || crosses(axis))
+            keep(std::max(movingEdgeSnr(s, axis), 3.0) * std::sqrt(paths[k].ridge), axis, 5.0, 6.0);
+    }
     return out;
 }
 
@@ -1420,6 +1434,37 @@ double tipAgainstSides(const TipSides& sides, const std::vector<double>& middle,
     return rough;
 }
 
+// The samples of a strip not to read, asked for as the stretch `stretch` (in samples): that
+// stretch, widened over the samples either side whose edge response changes from one sampled
+// frame to the next (`g`) more than twice as much as the strip's usually does, and then by a
+// tip's reach. What held a track there may reach further: a counter's other digits, whose
+// edges held it again just past a stretch of one digit (probe seed 577215 case 14).
+std::vector<char> unreadAbout(const AxisStretch& stretch, const std::vector<std::vector<double>>& g)
+{
+    const int n = g.empty() ? 0 : int(g.front().size());
+    std::vector<double> spread(std::size_t(n), 0.0), column;
+    for (int i = kStep; i < n - kStep; ++i) {
+        column.clear();
+        for (const std::vector<double>& frame : g)
+            column.push_back(frame[std::size_t(i)]);
+        const double middle = median(column);
+        for (double& v : column)
+            v = std::abs(v - middle);
+        spread[std::size_t(i)] = median(column);
+    }
+    const double usual = median(std::vector<double>(spread.begin() + std::min(n, kStep), spread.end() - std::min(n, kStep)));
+    auto changing = [&](int i) { return i >= 0 && i < n && spread[std::size_t(i)] > 2.0 * usual; };
+    int from = std::clamp(int(std::floor(stretch.from_px)), 0, n), to = std::clamp(int(std::ceil(stretch.to_px)), -1, n - 1);
+    while (changing(from - 1))
+        --from;
+    while (changing(to + 1))
+        ++to;
+    std::vector<char> out(std::size_t(n), 0);
+    for (int i = std::max(0, from - int(kAwayFromTip)); i <= std::min(n - 1, to + int(kAwayFromTip)); ++i)
+        out[std::size_t(i)] = 1;
+    return out;
+}
+
 // One axis being tracked: its strip, what is always there, the noise and the tip's sign.
 struct AxisTracker {
     NeedleStrip strip;
@@ -1439,27 +1484,32 @@ struct AxisTracker {
 
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
 
-    AxisTracker(const NeedleAxis& given, const Samples& s, double frameDuration_s)
+    AxisTracker(const NeedleAxis& given, const Samples& s, double frameDuration_s, const std::optional<AxisStretch>& notRead)
         : strip(given, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
     {
         if (strip.length < 20)
             return;
         std::vector<StripProfile> profiles = sampleStrip(strip, s);
+        std::optional<AxisStretch> blind = notRead;
         // A line drawn by the operator may point either way (found ones are turned already).
         if (shaftFromFarEnd(profiles)) {
             axis = NeedleAxis(given.p2(), given.p1());
             strip = NeedleStrip(axis, s.width, s.height);
             profiles = sampleStrip(strip, s);
+            if (blind)
+                blind = AxisStretch{given.length() - blind->to_px, given.length() - blind->from_px};
         }
         std::vector<std::vector<double>> g;
         for (const StripProfile& p : profiles)
             g.push_back(gradient(p.middle));
         withoutNoisierFrames(profiles, g);
+        if (blind)
+            unread = unreadAbout({blind->from_px - strip.origin, blind->to_px - strip.origin}, g);
         sigma = robustSigma(g);
         TipModel model = tipModel(profiles, g, sigma);
         polarity = model.polarity;
         gated = model.gated;
-        still = std::move(model.still);
+        still = unreadWhereAsked(std::move(model.still));
         auto tipsSeen = [&] {
             std::vector<double> at(profiles.size(), kNaN);
             for (std::size_t k = 0; k < profiles.size(); ++k) {
@@ -1470,7 +1520,7 @@ struct AxisTracker {
             return at;
         };
         const std::vector<double> firstSeenAt = tipsSeen();
-        still = staticPartAwayFromTips(g, polarity, firstSeenAt, std::move(still));
+        still = unreadWhereAsked(staticPartAwayFromTips(g, polarity, firstSeenAt, std::move(still)));
         background = shaftBackground(profiles, firstSeenAt);
         for (StripProfile& p : profiles)
             withoutBackground(p);
@@ -1494,6 +1544,17 @@ struct AxisTracker {
         sides = learnTipSides(middles, tips);
         course = TipPath(strip.length, 48, frame_s);
         everyFrame.emplace(still, sigma);
+    }
+
+    // Samples where the caller asked for no tip to be read: nothing there stands above what is
+    // always there (+inf), so no tip is found and the course gains nothing there.
+    std::vector<char> unread;
+    std::vector<double> unreadWhereAsked(std::vector<double> stillEdges) const
+    {
+        for (std::size_t i = 0; i < unread.size() && i < stillEdges.size(); ++i)
+            if (unread[i])
+                stillEdges[i] = std::numeric_limits<double>::infinity();
+        return stillEdges;
     }
 
     void withoutBackground(StripProfile& p) const
@@ -1803,7 +1864,8 @@ void maskJumps(const std::vector<double>& t, std::vector<double>& d)
 }  // namespace
 
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
-                                      const std::function<void(int, int)>& progress, const std::atomic_bool* cancel)
+                                      const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,
+                                      const std::vector<std::optional<AxisStretch>>& notRead)
 {
     const FrameIndex& index = reader.index();
     const Samples s = sampleFrames(reader, 40);
@@ -1812,7 +1874,8 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
     std::vector<NeedleTrack> out(axes.size());
     std::vector<std::vector<double>> measured(axes.size());
     for (std::size_t a = 0; a < axes.size(); ++a) {
-        trackers.emplace_back(settleOnShaft(mean, axes[a]), s, index.frameDuration());
+        trackers.emplace_back(settleOnShaft(mean, axes[a]), s, index.frameDuration(),
+                              a < notRead.size() ? notRead[a] : std::nullopt);
         if (trackers.back().strip.length < 20)
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
         out[a].axis = trackers.back().axis;

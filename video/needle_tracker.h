@@ -47,18 +47,27 @@ struct NeedleTrack {
 std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, int sampleFrames = 40);
 
 // The likeliest needle axes, best first (at most `maxCount`, and after them the few lines along
-// which a shaft stands out most of the frames' mean, when they ranked lower); `scores` (may be
-// null) gets how clearly each looks like a needle (a moving edge on a straight ridge).
+// which a shaft stands out most of the frames' mean, and the two paths of a tip with the most
+// change under them, when they ranked lower); `scores` (may be null) gets how clearly each
+// looks like a needle (a moving edge on a straight ridge).
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
                                              std::vector<double>* scores = nullptr);
+
+// A stretch along an axis, in pixels from its p1 (as a track's displacements are).
+struct AxisStretch {
+    double from_px = 0.0, to_px = 0.0;
+};
 
 // Tracks the tip along each axis in every frame, in one pass over the video. Each axis is
 // first moved (within 3° and 4 px) onto the shaft the video shows, and turned round when its
 // needle's shaft lies towards p2: an operator may draw the line roughly and either way. The
-// track's `axis` is the line measured along. Throws VideoError.
+// track's `axis` is the line measured along. `notRead` (empty, or one per axis): a stretch of
+// the axis where no tip is read, as far around it as a tip's edge reaches; give the axis as a
+// track measured along it, so that the stretch stays where it was. Throws VideoError.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
-                                      const std::atomic_bool* cancel = nullptr);
+                                      const std::atomic_bool* cancel = nullptr,
+                                      const std::vector<std::optional<AxisStretch>>& notRead = {});
 
 // Tracks the tip along `axis` in every frame. Throws VideoError.
 NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis,

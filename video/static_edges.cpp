@@ -18,7 +18,8 @@ void StaticEdges::add(const std::vector<double>& edge, int polarity, double tip,
     if (!std::isfinite(tip) || edge.size() != first_.size())
         return;
     for (std::size_t i = 0; i < first_.size(); ++i) {
-        if (std::abs(double(i) - tip) <= reach)
+        // Nor samples that are not read at all (+inf in the first estimate).
+        if (std::abs(double(i) - tip) <= reach || !std::isfinite(first_[i]))
             continue;
         const double at = (polarity * edge[i] - first_[i]) / binWidth_ + kBelowFirst_sigma * kBinsPerSigma;
         const int bin = std::clamp(int(std::floor(at)), 0, kBins - 1);

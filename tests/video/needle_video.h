@@ -32,6 +32,7 @@ inline double tipAt(int frame)
 struct NeedleVideo {
     double towardsTip_deg = 0.0;  // the needle's direction, from the shaft to the tip (image y down)
     bool clockOnShaft = false;    // changing digits burnt in across the line, behind the tip's travel
+    bool counterAhead = false;    // a frame counter in a black box burnt in on the line, 110 px ahead of the travel's centre
     int noisierFrame = -1;        // one frame with four times the noise (coded worse than the rest)
     bool tissueCarried = false;   // the grain moves along with the needle by a third of its travel
     double clockScale = 0.7;      // of the clock's font (OpenCV's Hershey simplex)
@@ -94,6 +95,17 @@ inline QString writeNeedleVideo(const QString& path, const NeedleVideo& v)
             const QPointF centre = QPointF(v.width / 2.0, v.height / 2.0) - u * (60.0 + halfAlong);
             cv::putText(bytes, clock, cv::Point(int(centre.x() - size.width / 2.0), int(centre.y() + size.height / 2.0)),
                         cv::FONT_HERSHEY_SIMPLEX, v.clockScale, cv::Scalar(250), thickness);
+        }
+        if (v.counterAhead) {
+            // As ffmpeg's drawtext draws one: white digits on a black box.
+            const std::string counter = std::to_string(k);
+            int base = 0;
+            const cv::Size size = cv::getTextSize(counter, cv::FONT_HERSHEY_SIMPLEX, 0.8, 2, &base);
+            const QPointF centre = QPointF(v.width / 2.0, v.height / 2.0) + u * (v.travelCentre + 110.0);
+            const cv::Point corner(int(centre.x() - size.width / 2.0), int(centre.y() + size.height / 2.0));
+            cv::rectangle(bytes, cv::Rect(corner.x - 4, corner.y - size.height - 4, size.width + 8, size.height + base + 8),
+                          cv::Scalar(0), cv::FILLED);
+            cv::putText(bytes, counter, corner, cv::FONT_HERSHEY_SIMPLEX, 0.8, cv::Scalar(250), 2);
         }
         cv::cvtColor(bytes, bgr, cv::COLOR_GRAY2BGR);
         writer.write(bgr);
