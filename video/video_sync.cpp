@@ -17,8 +17,8 @@ namespace {
 constexpr std::size_t kRetracked = 4;  // lines tracked again without the place they kept to
 
 // The stretch of its axis that a track kept to, when it kept to one: the shortest stretch
-// holding three quarters of the frames in which a tip was read, no longer than a tip's
-// edge response is wide (24 px), with a tip read in half the frames at least.
+// holding three quarters of the frames in which a tip was read, when that is no longer than
+// three steps of the tip's edge detector (24 px) and a tip was read in half the frames at least.
 std::optional<AxisStretch> heldStretch(const NeedleTrack& track)
 {
     std::vector<double> at;
