@@ -1251,12 +1251,14 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
         shafts.emplace_back(std::max(movingEdgeSnr(s, axis), 2.0) * std::sqrt(sumAlong(ridgeSums, axis)), axis);
         scored.push_back(shafts.back());
     }
+    std::vector<std::pair<double, std::pair<double, NeedleAxis>>> pathsByChange;  // (change on the path, (score, axis))
     for (const PathLine& p : paths) {
         // A path of change is evidence of a tip of its own, where single frames are too noisy
         // to show its edge (15 frames/s MJPEG, needle 32 grey levels under noise of 21: 0.9 σ
         // on its path, which the sync then followed to within a frame).
         const NeedleAxis axis = shaftBehindTip(s, p.axis);
         scored.emplace_back(std::max(movingEdgeSnr(s, axis), 3.0) * std::sqrt(p.ridge), axis);
+        pathsByChange.emplace_back(p.changeOnPath, scored.back());
     }
     std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     // The region the operator drew (if any) says where the needle is: lines found in the
@@ -1293,11 +1295,11 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     // faint needle's ridge is low, and the lines across a clock's row of digits rank above it
     // (probe seed 161803 case 0: the needle's path, 192 units of change against about 100 along
     // the clock's row, ranked below 16 lines through the clock and the counter).
-    std::sort(paths.begin(), paths.end(), [](const PathLine& a, const PathLine& b) { return a.changeOnPath > b.changeOnPath; });
-    for (std::size_t k = 0; k < paths.size() && k < kMostChangePaths; ++k) {
-        const NeedleAxis axis = shaftBehindTip(s, paths[k].axis);
+    std::sort(pathsByChange.begin(), pathsByChange.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t k = 0; k < pathsByChange.size() && k < kMostChangePaths; ++k) {
+        const auto& [score, axis] = pathsByChange[k].second;
         if (roi.isEmpty() || crosses(axis))
-            keep(std::max(movingEdgeSnr(s, axis), 3.0) * std::sqrt(paths[k].ridge), axis, 5.0, 6.0);
+            keep(score, axis, 5.0, 6.0);
     }
     return out;
 }

@@ -65,10 +65,12 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
         std::vector<double> looks;
         for (std::size_t a = 0; a < axes.size(); ++a)
             looks.push_back(scores.empty() ? 1.0 : std::sqrt(scores[a] / scores.front()));
-        std::optional<NeedleTrack> best;
+        // Tracks are compared where they lie (`tracks`, `retracked`), and the best one moved out.
+        std::vector<NeedleTrack> retracked;
+        NeedleTrack* best = nullptr;
         double bestRank = -1.0;
         std::string problem;
-        auto consider = [&](const NeedleTrack& track, double looksLikeNeedle) {
+        auto consider = [&](NeedleTrack& track, double looksLikeNeedle) {
             // Even a perfect fit (confidence 1, |r| 1) could not outrank the best so far.
             if (best && looksLikeNeedle + 1e-3 <= bestRank)
                 return;
@@ -77,7 +79,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
                                                              index.frameDuration(), options.sync);
                 const double rank = r.confidence * looksLikeNeedle + 1e-3 * std::abs(r.correlation);
                 if (!best || rank > bestRank) {
-                    best = track;
+                    best = &track;
                     bestRank = rank;
                     out.result = r;
                 }
@@ -104,7 +106,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
                     againLooks.push_back(looks[a]);
                 }
             if (!again.empty()) {
-                std::vector<NeedleTrack> retracked = trackNeedles(reader, again, progress, cancel, without);
+                retracked = trackNeedles(reader, again, progress, cancel, without);
                 for (std::size_t a = 0; a < retracked.size(); ++a)
                     consider(retracked[a], againLooks[a]);
             }
