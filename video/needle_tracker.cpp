@@ -531,13 +531,8 @@ TipModel tipModel(const std::vector<StripProfile>& profiles, const std::vector<s
     return m;
 }
 
-struct Samples {
-    std::vector<cv::Mat> gray;
-    int width = 0, height = 0;
-};
-
 // What `strip` sees in each sampled frame.
-std::vector<StripProfile> sampleStrip(const NeedleStrip& strip, const Samples& s)
+std::vector<StripProfile> sampleStrip(const NeedleStrip& strip, const FrameSamples& s)
 {
     std::vector<StripProfile> profiles;
     for (const cv::Mat& f : s.gray)
@@ -550,7 +545,7 @@ std::vector<StripProfile> sampleStrip(const NeedleStrip& strip, const Samples& s
 // whichever way the needle enters. The other way round, a shaft is seen ahead of its tip and
 // the tip is lost in most frames (a needle entering from the picture's right: 273 of 475
 // frames without a tip and the sync 116 frames off).
-NeedleAxis shaftBehindTip(const Samples& s, const NeedleAxis& axis)
+NeedleAxis shaftBehindTip(const FrameSamples& s, const NeedleAxis& axis)
 {
     const NeedleStrip strip(axis, s.width, s.height);
     if (strip.length < 20)
@@ -559,7 +554,7 @@ NeedleAxis shaftBehindTip(const Samples& s, const NeedleAxis& axis)
 }
 
 // The sampled frames' mean, in float.
-cv::Mat framesMean(const Samples& s)
+cv::Mat framesMean(const FrameSamples& s)
 {
     cv::Mat mean = cv::Mat::zeros(s.height, s.width, CV_32F);
     for (const cv::Mat& f : s.gray)
@@ -688,14 +683,16 @@ std::optional<std::pair<std::size_t, std::size_t>> movingStretch(const std::vect
     return std::pair{moving.front(), moving.back() + 1};
 }
 
+}  // namespace
+
 // `count` frames spread evenly over the video, and as many again over the stretch in which
 // the picture changes when that is a small part of it. A video begun long before the run
 // shows the needle at rest in most evenly spread frames: its tip at rest then counts as
 // what is always there (staticPart) and its motion as a few stray frames (14 s of rest
 // before a 3 s sine: the needle's line was passed over and the sync missed by 12 frames).
-Samples sampleFrames(FrameReader& reader, int count)
+FrameSamples sampleFrames(FrameReader& reader, int count)
 {
-    Samples s;
+    FrameSamples s;
     const FrameIndex& index = reader.index();
     s.width = index.width;
     s.height = index.height;
@@ -723,6 +720,8 @@ Samples sampleFrames(FrameReader& reader, int count)
     return s;
 }
 
+namespace {
+
 struct AxisScore {
     NeedleAxis axis;
     double ridge = 0.0;
@@ -743,7 +742,7 @@ int movedFrames(const std::vector<double>& positions)
 }
 
 // How clearly an edge moves along `axis` in the sampled frames.
-double movingEdgeSnr(const Samples& s, const NeedleAxis& axis)
+double movingEdgeSnr(const FrameSamples& s, const NeedleAxis& axis)
 {
     const NeedleStrip strip(axis, s.width, s.height);
     if (strip.length < 20)
@@ -1139,7 +1138,7 @@ std::optional<PathLine> refinePath(const cv::Mat& change, const NeedleAxis& roug
 // How much each pixel changes over the sampled frames (its standard deviation): the path
 // of a moving tip stands out here even where the still picture around it (tissue texture,
 // speckle) hides the shaft in the mean.
-cv::Mat changeOverFrames(const Samples& s, const cv::Mat& mean)
+cv::Mat changeOverFrames(const FrameSamples& s, const cv::Mat& mean)
 {
     cv::Mat squares = cv::Mat::zeros(s.height, s.width, CV_32F);
     for (const cv::Mat& f : s.gray)
@@ -1168,7 +1167,11 @@ cv::Mat changeOverFrames(const Samples& s, const cv::Mat& mean)
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int maxCount, int sampleFrames_,
                                              std::vector<double>* scores)
 {
-    const Samples s = sampleFrames(reader, sampleFrames_);
+    return needleAxisCandidates(sampleFrames(reader, sampleFrames_), roi, maxCount, scores);
+}
+
+std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, int maxCount, std::vector<double>* scores)
+{
     if (s.gray.size() < 3)
         return {};
     const cv::Mat mean = framesMean(s);
@@ -1486,7 +1489,7 @@ struct AxisTracker {
 
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
 
-    AxisTracker(const NeedleAxis& given, const Samples& s, double frameDuration_s, const std::optional<AxisStretch>& notRead)
+    AxisTracker(const NeedleAxis& given, const FrameSamples& s, double frameDuration_s, const std::optional<AxisStretch>& notRead)
         : strip(given, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
     {
         if (strip.length < 20)
@@ -1548,7 +1551,7 @@ struct AxisTracker {
         everyFrame.emplace(still, sigma);
     }
 
-    // Samples where the caller asked for no tip to be read: nothing there stands above what is
+    // FrameSamples where the caller asked for no tip to be read: nothing there stands above what is
     // always there (+inf), so no tip is found and the course gains nothing there.
     std::vector<char> unread;
     std::vector<double> unreadWhereAsked(std::vector<double> stillEdges) const
@@ -1869,8 +1872,14 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
                                       const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,
                                       const std::vector<std::optional<AxisStretch>>& notRead)
 {
+    return trackNeedles(reader, sampleFrames(reader, 40), axes, progress, cancel, notRead);
+}
+
+std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s, const std::vector<NeedleAxis>& axes,
+                                      const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,
+                                      const std::vector<std::optional<AxisStretch>>& notRead)
+{
     const FrameIndex& index = reader.index();
-    const Samples s = sampleFrames(reader, 40);
     const cv::Mat mean = framesMean(s);
     std::vector<AxisTracker> trackers;
     std::vector<NeedleTrack> out(axes.size());

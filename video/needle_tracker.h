@@ -42,6 +42,19 @@ struct NeedleTrack {
     int masked = 0;                       // frames without a usable tip (duplicates included)
 };
 
+// Frames spread over a video, in grey, from which the line finder and the tracker learn what
+// is always there and what changes. Sampling seeks through the file (on H.264 with a keyframe
+// every 250 frames it decodes about as much as two passes over the video): a caller that both
+// finds lines and tracks them samples once and gives both the same frames.
+struct FrameSamples {
+    std::vector<cv::Mat> gray;
+    int width = 0, height = 0;
+};
+
+// `count` frames spread evenly over the video, and as many again over the stretch in which
+// the picture changes, when that is a small part of it. Throws VideoError.
+FrameSamples sampleFrames(FrameReader& reader, int count = 40);
+
 // Finds the needle's axis in `reader`'s video from `sampleFrames` frames spread over it,
 // inside `roi` when it is not empty. nullopt when nothing moves along a line. Throws VideoError.
 std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, int sampleFrames = 40);
@@ -51,6 +64,8 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, 
 // change under them, when they ranked lower); `scores` (may be null) gets how clearly each
 // looks like a needle (a moving edge on a straight ridge).
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
+                                             std::vector<double>* scores = nullptr);
+std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& samples, QRect roi = {}, int maxCount = 4,
                                              std::vector<double>* scores = nullptr);
 
 // A stretch along an axis, in pixels from its p1 (as a track's displacements are).
@@ -65,6 +80,11 @@ struct AxisStretch {
 // the axis where no tip is read, as far around it as a tip's edge reaches; give the axis as a
 // track measured along it, so that the stretch stays where it was. Throws VideoError.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
+                                      const std::function<void(int, int)>& progress = {},
+                                      const std::atomic_bool* cancel = nullptr,
+                                      const std::vector<std::optional<AxisStretch>>& notRead = {});
+// The same, learning from `samples` (sampleFrames of this reader) instead of sampling again.
+std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& samples, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
                                       const std::atomic_bool* cancel = nullptr,
                                       const std::vector<std::optional<AxisStretch>>& notRead = {});

@@ -53,12 +53,14 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     // fan of lines crossing it at a shallow angle, along which its edge races, and those look
     // more like a moving tip than the needle itself (seed 461476: the needle's line ranked
     // seventh behind six of them). Which one is the needle, the fit to the recording decides.
-    const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(reader, options.roi, 16, 40, &scores)
+    // One sampling serves the line finder and both passes of the tracker.
+    const FrameSamples samples = sampleFrames(reader, 40);
+    const std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(samples, options.roi, 16, &scores)
                                                   : std::vector<NeedleAxis>{*options.axis};
     if (!axes.empty()) {
         // Several lines may look like a needle (a plate's edge, a line of text): the one
         // whose motion explains the recording is the needle.
-        std::vector<NeedleTrack> tracks = trackNeedles(reader, axes, progress, cancel);
+        std::vector<NeedleTrack> tracks = trackNeedles(reader, samples, axes, progress, cancel);
         // A line that only looks a little like a needle (a fraction of the best line's
         // score) must explain the recording much better to be taken: a tip that leaves a
         // slanted strip can still fit a different offset.
@@ -106,7 +108,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
                     againLooks.push_back(looks[a]);
                 }
             if (!again.empty()) {
-                retracked = trackNeedles(reader, again, progress, cancel, without);
+                retracked = trackNeedles(reader, samples, again, progress, cancel, without);
                 for (std::size_t a = 0; a < retracked.size(); ++a)
                     consider(retracked[a], againLooks[a]);
             }
