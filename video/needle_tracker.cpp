@@ -1162,6 +1162,19 @@ cv::Mat changeOverFrames(const FrameSamples& s, const cv::Mat& mean)
     return deviation;
 }
 
+// Where burnt-in text changes (a clock's or a counter's digits): patches of change wider every
+// way than a tip's path (a square of 11 px fits inside them, where a tip's path is a few pixels
+// wide), and a few pixels round them.
+cv::Mat changingPatches(const cv::Mat& change)
+{
+    double top = 0.0;
+    cv::minMaxLoc(change, nullptr, &top);
+    cv::Mat patches = change >= 0.5 * top;
+    cv::morphologyEx(patches, patches, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(11, 11)));
+    cv::dilate(patches, patches, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(9, 9)));
+    return patches;
+}
+
 }  // namespace
 
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int maxCount, int sampleFrames_,
@@ -1199,6 +1212,14 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
         const QPointF u((rough.x2() - rough.x1()) / len, (rough.y2() - rough.y1()) / len);
         return NeedleAxis(rough.p1() + u * clipper.origin, rough.p1() + u * (clipper.origin + clipper.length));
     };
+    // The ridge's line sum under line `c` of a picture's sums (all share the ridge's geometry), as a line of the ridge is ranked.
+    auto ridgeUnder = [&](const LineCandidate& c) {
+        double most = 0.0;
+        const cv::Mat& rows = ridgeSums.rows[std::size_t(c.angle_deg)];
+        for (int y = std::max(0, c.row - 1); y <= std::min(rows.rows - 1, c.row + 1); ++y)
+            most = std::max(most, double(rows.at<float>(y)));
+        return most;
+    };
     std::vector<std::pair<double, NeedleAxis>> scored;
     for (const LineCandidate& c : strongestLines(ridgeSums, 16)) {
         const std::optional<NeedleAxis> rough = clipped(ridgeSums, c);
@@ -1224,9 +1245,7 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
         if (!path)
             continue;
         // Ranked by the ridge under the line it was found from, as the ridge's own lines are.
-        const cv::Mat& rows = ridgeSums.rows[std::size_t(c.angle_deg)];
-        for (int y = std::max(0, c.row - 1); y <= std::min(rows.rows - 1, c.row + 1); ++y)
-            path->ridge = std::max(path->ridge, double(rows.at<float>(y)));
+        path->ridge = ridgeUnder(c);
         const auto same = std::find_if(paths.begin(), paths.end(), [&](const PathLine& p) { return alike(p.axis, path->axis); });
         if (same == paths.end())
             paths.push_back(*path);
@@ -1303,6 +1322,34 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
         const auto& [score, axis] = pathsByChange[k].second;
         if (roi.isEmpty() || crosses(axis))
             keep(score, axis, 5.0, 6.0);
+    }
+    // Burnt-in digits that change outweigh a short path in the sums of change (probe seed 820417
+    // case 5: a tip moving ±11 px, the 32 strongest lines of change all through a clock and a
+    // counter or along the rows of an MJPEG's blocks, none on the needle). With the patches of
+    // change set aside, the two lines of change with a moving edge and the most change on their
+    // path that no line kept is alike are tracked too.
+    cv::Mat apart = change.clone();
+    apart.setTo(0.0f, changingPatches(change));
+    std::vector<std::pair<double, std::pair<double, NeedleAxis>>> apartByChange;
+    for (const LineCandidate& c : strongestLines(lineSums(apart), 32)) {
+        const std::optional<NeedleAxis> rough = clipped(ridgeSums, c);
+        const std::optional<PathLine> path = rough ? refinePath(apart, *rough, s.width, s.height) : std::nullopt;
+        if (!path)
+            continue;
+        const NeedleAxis axis = shaftBehindTip(s, path->axis);
+        const double snr = movingEdgeSnr(s, axis);
+        if (snr >= 2.0)
+            apartByChange.emplace_back(path->changeOnPath, std::pair{snr * std::sqrt(ridgeUnder(c)), axis});
+    }
+    std::sort(apartByChange.begin(), apartByChange.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::size_t added = 0;
+    for (const auto& [onPath, scoredAxis] : apartByChange) {
+        if (added == kMostChangePaths)
+            break;
+        const std::size_t before = out.size();
+        if (roi.isEmpty() || crosses(scoredAxis.second))
+            keep(scoredAxis.first, scoredAxis.second, 5.0, 6.0);
+        added += out.size() - before;
     }
     return out;
 }
