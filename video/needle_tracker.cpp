@@ -1212,7 +1212,8 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
         const QPointF u((rough.x2() - rough.x1()) / len, (rough.y2() - rough.y1()) / len);
         return NeedleAxis(rough.p1() + u * clipper.origin, rough.p1() + u * (clipper.origin + clipper.length));
     };
-    // The ridge's line sum under line `c` of a picture's sums (all share the ridge's geometry), as a line of the ridge is ranked.
+    // The ridge's line sum under line `c` of a picture's sums (all share the ridge's geometry),
+    // by which a line of the ridge is ranked.
     auto ridgeUnder = [&](const LineCandidate& c) {
         double most = 0.0;
         const cv::Mat& rows = ridgeSums.rows[std::size_t(c.angle_deg)];
