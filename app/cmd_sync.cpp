@@ -111,6 +111,8 @@ int cmdSync(const QStringList& args, Io io)
             o[QStringLiteral("uncertainty_s")] = r.uncertainty_s;
             o[QStringLiteral("uncertainty_frames")] = r.uncertainty_s / index.frameDuration();
             o[QStringLiteral("scale_px_per_mm")] = r.scale_px_per_mm;
+            o[QStringLiteral("picture_lag_s")] = r.pictureLag_s;
+            o[QStringLiteral("picture_lag_frames")] = r.pictureLag_s / index.frameDuration();
             o[QStringLiteral("method")] = r.method;
             o[QStringLiteral("accept_threshold")] = kSyncAcceptConfidence;
             o[QStringLiteral("acceptable")] = r.acceptable();
@@ -119,6 +121,9 @@ int cmdSync(const QStringList& args, Io io)
                 o[QStringLiteral("needle")] = QJsonArray{a.x1(), a.y1(), a.x2(), a.y2()};
                 o[QStringLiteral("needle_found")] = vs.track.axisDetected;
                 o[QStringLiteral("frames_masked")] = vs.track.masked;
+                o[QStringLiteral("picture_memory")] = vs.track.coding.memory;
+                o[QStringLiteral("picture_noise_grey")] = vs.track.coding.noise_grey;
+                o[QStringLiteral("edge_slope_grey_per_px")] = vs.track.coding.edgeSlope_grey_per_px;
             }
             printJson(io, o);
         } else {
@@ -129,6 +134,8 @@ int cmdSync(const QStringList& args, Io io)
                 io.out << nb::TrCli::tr("onsets say:  %1 s\n").arg(*r.onsetOffset_s, 0, 'f', 4);
             io.out << nb::TrCli::tr("drift:       %1 %\n").arg(100.0 * r.drift, 0, 'f', 4)
                    << nb::TrCli::tr("uncertainty: %1 frames\n").arg(r.uncertainty_s / index.frameDuration(), 0, 'f', 2);
+            if (r.pictureLag_s > 0.0)
+                io.out << nb::TrCli::tr("coded late:  %1 frames (taken off the offset)\n").arg(r.pictureLag_s / index.frameDuration(), 0, 'f', 2);
             if (!vs.track.time_s.empty()) {
                 const QLineF& a = vs.track.axis;
                 io.out << nb::TrCli::tr("needle:      %1,%2 to %3,%4 (%5)\n")

@@ -6,6 +6,7 @@
 // from the video with the needle's speed, coarse to fine, anchored on the motion onset
 // (a sinusoid repeats, so correlation alone has many equal peaks).
 
+#include "picture_lag.h"
 #include "run.h"
 
 #include <QString>
@@ -61,6 +62,7 @@ struct SyncOptions {
     bool anchorOnOnset = true;
     double anchorWindow_s = 0.3;  // the accepted peak lies this close to the onset estimate
     double maxDrift = 0.005;      // displacement sync: drifts searched in [-max, +max]
+    PictureCoding coding;         // displacement sync: how the video shows a slow motion late
 };
 
 struct SyncResult {
@@ -75,6 +77,7 @@ struct SyncResult {
     double scale_px_per_mm = 0.0;  // tracked displacement per recorded millimetre (signed)
     double intercept_px = 0.0;     // tracked displacement where the recorded position is 0 mm
     double uncertainty_s = 0.0;    // how far the offset could be off (split halves, fit noise)
+    double pictureLag_s = 0.0;     // how late the coded pictures show the motion (taken off offset_s)
     QString method;                // what was compared, for the run's metadata
 
     TimelineMapping mapping() const { return {offset_s, drift}; }

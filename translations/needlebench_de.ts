@@ -2443,11 +2443,16 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+2"/>
+        <source>, coded pictures %1 ms late (allowed for)</source>
+        <translation>, kodierte Bilder %1 ms verspätet (berücksichtigt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>LOW CONFIDENCE: %1; check it on an event before accepting</source>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-658"/>
+        <location line="-660"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -4239,7 +4244,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: die Spur kann hier nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="+32"/>
+        <location filename="../app/cmd_sync.cpp" line="+37"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4278,6 +4283,13 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <source>uncertainty: %1 frames
 </source>
         <translation>Unsicherheit: %1 Bilder
+</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>coded late:  %1 frames (taken off the offset)
+</source>
+        <translation>kodiert spät: %1 Bilder (vom Versatz abgezogen)
 </translation>
     </message>
     <message>
@@ -6707,7 +6719,7 @@ Befehle:
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+829"/>
+        <location filename="../video/needle_tracker.cpp" line="+1947"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>

@@ -2440,11 +2440,16 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>, coded pictures %1 ms late (allowed for)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>LOW CONFIDENCE: %1; check it on an event before accepting</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-658"/>
+        <location line="-660"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4182,7 +4187,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="+32"/>
+        <location filename="../app/cmd_sync.cpp" line="+37"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4214,6 +4219,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+1"/>
         <source>uncertainty: %1 frames
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>coded late:  %1 frames (taken off the offset)
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -6621,7 +6632,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+829"/>
+        <location filename="../video/needle_tracker.cpp" line="+1947"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1,5 +1,6 @@
 #include "needle_tracker.h"
 
+#include "picture_memory.h"
 #include "static_edges.h"
 #include "tip_path.h"
 #include "video_error.h"
@@ -1532,6 +1533,7 @@ struct AxisTracker {
     double velocity = 0.0;  // profile samples per second, over the last few sightings
     int lost = 0;        // frames since it was last seen
     std::vector<double> strengths;
+    std::vector<double> slopes;  // grey levels per sample along the middle at each decided tip
     std::vector<std::pair<double, double>> recent;  // (time, position) of the last sightings in a row
     TipSides sides;
 
@@ -1667,6 +1669,12 @@ struct AxisTracker {
     Sighting decideAndLearn(const Seen& seen, int at)
     {
         const Sighting tip = decide(seen, at);
+        if (std::isfinite(tip.found)) {
+            const std::size_t p = std::size_t(std::lround(std::max(0.0, tip.found)));
+            const std::vector<double>& m = seen.profile.middle;
+            if (p >= 1 && p + 1 < m.size())
+                slopes.push_back(0.5 * std::abs(m[p + 1] - m[p - 1]));
+        }
         AboutTip about;
         if (everyFrame && std::isfinite(tip.found)) {
             everyFrame->add(seen.g, polarity, tip.found, kAwayFromTip);
@@ -1945,6 +1953,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         measured[a].push_back(tip.measured + trackers[a].strip.origin);
     };
     const int n = index.size();
+    PictureMemoryMeter memory;
     for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
         // Frames the index calls duplicates are tracked too, at their own time: a slow
         // needle in a clean, smoothly coded picture changes too little between frames to
@@ -1952,6 +1961,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         // its tip one frame late, which the fit over all frames absorbs.
         const FrameInfo& info = index.frames[std::size_t(i)];
         const cv::Mat gray = toGray(reader.read(i).image);
+        memory.add(gray);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);
             if (const std::optional<AxisTracker::Sighting> tip = trackers[a].next(gray, info.time_s, info.duplicate))
@@ -1977,6 +1987,9 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         const auto& d = out[a].displacement_px;
         out[a].masked = int(std::count_if(d.begin(), d.end(), [](double v) { return !std::isfinite(v); }));
         out[a].edgeSnr = median(trackers[a].strengths);
+        out[a].coding = memory.coding();
+        if (!trackers[a].slopes.empty())
+            out[a].coding.edgeSlope_grey_per_px = median(trackers[a].slopes);
     }
     return out;
 }

@@ -19,6 +19,7 @@
 // likeliest course through the frames (TipPath) says where to look for it in that frame.
 // Frames where no edge stands out of the noise there are masked (NaN), never guessed.
 
+#include "core/picture_lag.h"
 #include "frame_reader.h"
 
 #include <QLineF>
@@ -40,6 +41,8 @@ struct NeedleTrack {
     bool axisDetected = false;            // false: the caller gave the axis
     double edgeSnr = 0.0;                 // median tip edge strength over the gradient noise
     int masked = 0;                       // frames without a usable tip (duplicates included)
+    // How the video's coder carried pictures over, and the tip's edge (core/picture_lag.h).
+    PictureCoding coding;
 };
 
 // Frames spread over a video, in grey, from which the line finder and the tracker learn what

@@ -77,8 +77,10 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
             if (best && looksLikeNeedle + 1e-3 <= bestRank)
                 return;
             try {
+                SyncOptions so = options.sync;
+                so.coding = track.coding;
                 const SyncResult r = synchroniseDisplacement({track.time_s, track.displacement_px}, needlePosition(run),
-                                                             index.frameDuration(), options.sync);
+                                                             index.frameDuration(), so);
                 const double rank = r.confidence * looksLikeNeedle + 1e-3 * std::abs(r.correlation);
                 if (!best || rank > bestRank) {
                     best = &track;

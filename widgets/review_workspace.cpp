@@ -959,6 +959,8 @@ void ReviewWorkspace::updateSyncUi()
                        .arg(std::abs(pendingSync_->correlation), 0, 'f', 2);
     if (pendingSync_->drift != 0.0)
         text += tr(", drift %1 %").arg(100.0 * pendingSync_->drift, 0, 'f', 3);
+    if (pendingSync_->pictureLag_s >= 0.0005)
+        text += tr(", coded pictures %1 ms late (allowed for)").arg(1000.0 * pendingSync_->pictureLag_s, 0, 'f', 0);
     if (low)
         text = tr("LOW CONFIDENCE: %1; check it on an event before accepting").arg(text);
     syncLabel_->setText(text);

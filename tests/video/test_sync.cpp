@@ -243,6 +243,43 @@ private slots:
                  qPrintable(QStringLiteral("off by %1 frames at confidence %2").arg(worst / frame_s).arg(r.confidence)));
     }
 
+    // Pictures that carry 0.4 of the one before (a coder dropping a faint edge's change as it
+    // drops the noise) show a slow sine 0.67 frames late. Told how the video was coded, the sync
+    // takes that lag off the offset; not told, it is that much off.
+    void picturesCarriedOverShowTheMotionLate()
+    {
+        const double offset_s = 1.317, frame_s = 1.0 / 29.97, memory = 0.4;
+        auto positionAt = [](double t) { return t < 0.5 ? 0.0 : 3.0 * std::sin(2.0 * M_PI * 0.2 * (t - 0.5)); };
+        const nb::TimeSignal position = recordedAt500Hz(positionAt, 11000);
+        const nb::TimelineMapping truth{offset_s, 0.0};
+        nb::TimeSignal picture;
+        std::mt19937 rng(31);
+        std::normal_distribution<double> noise(0.0, 0.1);
+        double shown = 0.0;
+        for (int k = 0; k < 700; ++k) {
+            const double tv = k * frame_s, seen = 200.0 + 3.4 * positionAt(truth.toRecording(tv));
+            shown = k == 0 ? seen : memory * shown + (1.0 - memory) * seen;
+            picture.time_s.push_back(tv);
+            picture.value.push_back(shown + noise(rng));
+        }
+        auto worstFrames = [&](const nb::SyncResult& r) {
+            double worst = 0.0;
+            for (double t = 0.0; t <= 21.0; t += 0.01)
+                worst = std::max(worst, std::abs(r.mapping().toVideo(t) - truth.toVideo(t)));
+            return worst / frame_s;
+        };
+        nb::SyncOptions told;
+        told.coding = {memory, 6.0, 0.01};  // an edge whose change is nothing beside the noise
+        const nb::SyncResult knowing = nb::synchroniseDisplacement(picture, position, frame_s, told);
+        const nb::SyncResult unaware = nb::synchroniseDisplacement(picture, position, frame_s);
+        qInfo("told: %.2f frames off, lag %.2f frames; not told: %.2f frames off", worstFrames(knowing),
+              knowing.pictureLag_s / frame_s, worstFrames(unaware));
+        QVERIFY(std::abs(knowing.pictureLag_s / frame_s - memory / (1.0 - memory)) < 0.01);
+        QVERIFY2(worstFrames(knowing) < 0.15, qPrintable(QString::number(worstFrames(knowing))));
+        QVERIFY2(worstFrames(unaware) > 0.5, qPrintable(QString::number(worstFrames(unaware))));
+        QCOMPARE(unaware.pictureLag_s, 0.0);
+    }
+
     void renderedSimulatedRun()
     {
         int code = -1;

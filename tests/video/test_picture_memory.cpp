@@ -1,0 +1,167 @@
+// How much of each decoded picture a coder carried over from the one before, measured on the
+// picture's noise (PictureMemoryMeter), and how late that shows a faint, slow motion
+// (pictureLag_frames; core/picture_lag.h). Pictures made here: a fixed grain with fresh noise
+// in each frame, as they are, through a first-order carry-over of known memory, and encoded
+// by the ffmpeg tool as MJPEG (every picture afresh) and MPEG-4 part 2 (each from the one before).
+#include "core/picture_lag.h"
+#include "video/frame_index.h"
+#include "video/frame_reader.h"
+#include "video/picture_memory.h"
+#include "video_fixtures.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+constexpr double kNoise = 6.0;
+
+// The fixed picture: grain of 4 px squares around grey 110.
+cv::Mat grain()
+{
+    cv::RNG rng(2024);
+    cv::Mat squares(kHeight / 4, kWidth / 4, CV_32F), out;
+    rng.fill(squares, cv::RNG::NORMAL, 110.0, 20.0);
+    cv::resize(squares, out, cv::Size(kWidth, kHeight), 0, 0, cv::INTER_NEAREST);
+    return out;
+}
+
+// `frames` pictures of the grain with fresh noise, each carried over from the one before
+// with `memory` (0: as the camera saw it), in 8 bits.
+std::vector<cv::Mat> pictures(int frames, double memory, std::uint64_t seed)
+{
+    const cv::Mat still = grain();
+    cv::RNG rng(seed);
+    std::vector<cv::Mat> out;
+    cv::Mat shown;
+    for (int k = 0; k < frames; ++k) {
+        cv::Mat noise(kHeight, kWidth, CV_32F);
+        rng.fill(noise, cv::RNG::NORMAL, 0.0, kNoise);
+        const cv::Mat seen = still + noise;
+        shown = shown.empty() ? seen : memory * shown + (1.0 - memory) * seen;
+        cv::Mat bytes;
+        shown.convertTo(bytes, CV_8U);
+        out.push_back(bytes);
+    }
+    return out;
+}
+
+nb::PictureCoding measured(const std::vector<cv::Mat>& frames)
+{
+    nb::video::PictureMemoryMeter meter;
+    for (const cv::Mat& f : frames)
+        meter.add(f);
+    return meter.coding();
+}
+
+// The pictures encoded by the ffmpeg tool with `codec` (its arguments), decoded back through
+// NeedleBench's reader and measured; nullopt when the tool failed.
+std::optional<nb::PictureCoding> throughCoder(const QStringList& codec, const QString& name)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(name);
+    QProcess ffmpeg;
+    ffmpeg.start(QStringLiteral("ffmpeg"), QStringList{"-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "gray", "-s",
+                                                       QStringLiteral("%1x%2").arg(kWidth).arg(kHeight), "-r", "25", "-i", "-"}
+                                               << codec << path);
+    if (!ffmpeg.waitForStarted())
+        return std::nullopt;
+    for (const cv::Mat& f : pictures(120, 0.0, 77))
+        ffmpeg.write(reinterpret_cast<const char*>(f.data), qint64(f.total()));
+    ffmpeg.closeWriteChannel();
+    if (!ffmpeg.waitForFinished(60000) || ffmpeg.exitCode() != 0)
+        return std::nullopt;
+    const nb::video::FrameIndex index = nb::video::buildFrameIndex(path);
+    nb::video::FrameReader reader(index);
+    nb::video::PictureMemoryMeter meter;
+    for (int i = 0; i < index.size(); ++i) {
+        cv::Mat gray;
+        cv::cvtColor(reader.read(i).image, gray, cv::COLOR_BGR2GRAY);
+        meter.add(gray);
+    }
+    return meter.coding();
+}
+
+}  // namespace
+
+class TestPictureMemory : public QObject {
+    Q_OBJECT
+
+private slots:
+    // Fresh noise in every picture: nothing carried over, and the noise is the camera's.
+    void freshNoiseCarriesNothing()
+    {
+        const nb::PictureCoding c = measured(pictures(60, 0.0, 1));
+        qInfo("memory %.3f, noise %.2f grey levels (drawn %.1f)", c.memory, c.noise_grey, kNoise);
+        QVERIFY2(c.memory < 0.03, qPrintable(QString::number(c.memory)));
+        QVERIFY2(std::abs(c.noise_grey - kNoise) < 0.1 * kNoise, qPrintable(QString::number(c.noise_grey)));
+    }
+
+    // Each picture 0.4 of the one before and 0.6 of what the camera saw: memory 0.4, and the
+    // camera's noise found again under the smoothing (the pictures' own is half as large).
+    void aCarryOverOfKnownMemory()
+    {
+        const nb::PictureCoding c = measured(pictures(60, 0.4, 2));
+        qInfo("memory %.3f (made 0.4), noise %.2f grey levels (drawn %.1f)", c.memory, c.noise_grey, kNoise);
+        QVERIFY2(std::abs(c.memory - 0.4) < 0.04, qPrintable(QString::number(c.memory)));
+        QVERIFY2(std::abs(c.noise_grey - kNoise) < 0.15 * kNoise, qPrintable(QString::number(c.noise_grey)));
+    }
+
+    // A picture repeated whole is no sample of the coder: left out, it changes nothing (taken,
+    // its differences of zero would read as memory).
+    void repeatsAreLeftOut()
+    {
+        std::vector<cv::Mat> frames = pictures(60, 0.0, 3);
+        nb::video::PictureMemoryMeter meter;
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            meter.add(frames[k]);
+            if (k % 5 == 0)
+                meter.add(frames[k].clone());
+        }
+        QVERIFY2(meter.coding().memory < 0.03, qPrintable(QString::number(meter.coding().memory)));
+    }
+
+    // Real coders at their usual settings: MJPEG codes every picture afresh; MPEG-4 part 2
+    // (ffmpeg's mpeg4 at -q:v 5) codes each from the one before and drops much of the noise.
+    void realCoders()
+    {
+        if (!nb::test::haveFfmpeg())
+            QSKIP("the ffmpeg tool is not installed");
+        const auto mjpeg = throughCoder({"-c:v", "mjpeg", "-q:v", "5", "-pix_fmt", "yuvj420p"}, QStringLiteral("noise.avi"));
+        const auto mpeg4 = throughCoder({"-c:v", "mpeg4", "-q:v", "5"}, QStringLiteral("noise4.avi"));
+        QVERIFY(mjpeg && mpeg4);
+        qInfo("MJPEG memory %.3f noise %.2f; MPEG-4 memory %.3f noise %.2f (drawn %.1f)", mjpeg->memory, mjpeg->noise_grey,
+              mpeg4->memory, mpeg4->noise_grey, kNoise);
+        QVERIFY2(mjpeg->memory < 0.05, qPrintable(QString::number(mjpeg->memory)));
+        QVERIFY2(mpeg4->memory > 0.2, qPrintable(QString::number(mpeg4->memory)));
+        QVERIFY2(std::abs(mpeg4->noise_grey - kNoise) < 0.3 * kNoise, qPrintable(QString::number(mpeg4->noise_grey)));
+    }
+
+    // The lag: none where nothing is carried over; for a change far below the noise, the
+    // noise's own (memory/(1 − memory) frames, a first-order filter's delay); less the larger
+    // the change, and none for a change far beyond it.
+    void lagFallsWithTheChange()
+    {
+        QCOMPARE(nb::pictureLag_frames({0.0, 6.0, 3.0}, 1.0), 0.0);
+        const nb::PictureCoding c{0.4, 6.0, 3.0};
+        QVERIFY(std::abs(nb::pictureLag_frames(c, 0.0) - 0.4 / 0.6) < 1e-6);
+        double before = nb::pictureLag_frames(c, 0.0);
+        for (double change : {1.0, 2.0, 4.0, 8.0, 16.0}) {
+            const double lag = nb::pictureLag_frames(c, change);
+            QVERIFY2(lag < before, qPrintable(QStringLiteral("%1 at %2").arg(lag).arg(change)));
+            before = lag;
+        }
+        QVERIFY(nb::pictureLag_frames(c, 60.0) < 1e-3);
+        QVERIFY(nb::pictureLag_frames({0.95, 6.0, 3.0}, 0.0) <= 10.0);
+        QCOMPARE(nb::pictureLag_frames(c, std::nan("")), 0.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPictureMemory)
+#include "test_picture_memory.moc"
