@@ -32,32 +32,42 @@ struct Fit {
     int n = 0;
 };
 
-// d ≈ intercept + slope · position(recording time of each video point).
-Fit fitAt(const Points& v, const TimeSignal& pos, double offset, double drift, std::size_t from, std::size_t to,
-          std::size_t stride = 1)
-{
-    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
-    int n = 0;
-    for (std::size_t i = from; i < to; i += stride) {
-        const double x = positionAt(pos, (v.t[i] - offset) / (1.0 + drift)), y = v.d[i];
+// The sums a straight line y ≈ intercept + slope · x is fitted from.
+struct LineSums {
+    double n = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+    void add(double x, double y)
+    {
+        n += 1;
         sx += x;
         sy += y;
         sxx += x * x;
         syy += y * y;
         sxy += x * y;
-        ++n;
     }
+    // About the means: Σ(x − x̄)(y − ȳ), Σ(x − x̄)², Σ(y − ȳ)².
+    double cov() const { return n > 0 ? sxy - sx * sy / n : 0.0; }
+    double vx() const { return n > 0 ? sxx - sx * sx / n : 0.0; }
+    double vy() const { return n > 0 ? syy - sy * sy / n : 0.0; }
+};
+
+// d ≈ intercept + slope · position(recording time of each video point).
+Fit fitAt(const Points& v, const TimeSignal& pos, double offset, double drift, std::size_t from, std::size_t to,
+          std::size_t stride = 1)
+{
+    LineSums s;
+    for (std::size_t i = from; i < to; i += stride)
+        s.add(positionAt(pos, (v.t[i] - offset) / (1.0 + drift)), v.d[i]);
     Fit f;
-    f.n = n;
-    if (n < 3)
+    f.n = int(s.n);
+    if (f.n < 3)
         return f;
-    const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
+    const double cov = s.cov(), vx = s.vx(), vy = s.vy();
     if (vx <= 0 || vy <= 0)
         return f;
     f.r2 = cov * cov / (vx * vy);
     f.slope = cov / vx;
-    f.intercept = (sy - f.slope * sx) / n;
-    f.residual = std::sqrt(std::max(0.0, (vy - f.slope * cov) / std::max(1, n - 2)));
+    f.intercept = (s.sy - f.slope * s.sx) / s.n;
+    f.residual = std::sqrt(std::max(0.0, (vy - f.slope * cov) / std::max(1, f.n - 2)));
     return f;
 }
 
@@ -158,28 +168,41 @@ std::vector<int> directions(const Points& v, const TimeSignal& pos, double offse
 }
 
 // The sum of squares left by d ≈ intercept(way) + slope · position, with an intercept of its
-// own for each way the rig moves and for rest (`ways` from directions()).
-double residualByDirection(const Points& v, const TimeSignal& pos, double offset, double drift, const std::vector<int>& ways)
+// own for each way the rig moves and for rest (directions() at this offset), over every
+// `stride`th video point.
+double residualByDirection(const Points& v, const TimeSignal& pos, double offset, double drift, std::size_t stride = 1)
 {
-    double n[3] = {}, sx[3] = {}, sy[3] = {}, sxx[3] = {}, syy[3] = {}, sxy[3] = {};
-    for (std::size_t i = 0; i < v.t.size(); ++i) {
-        const int g = ways[i] + 1;
-        const double x = positionAt(pos, (v.t[i] - offset) / (1.0 + drift)), y = v.d[i];
-        n[g] += 1;
-        sx[g] += x;
-        sy[g] += y;
-        sxx[g] += x * x;
-        syy[g] += y * y;
-        sxy[g] += x * y;
-    }
+    const std::vector<int> ways = directions(v, pos, offset, drift);
+    LineSums by[3];
+    for (std::size_t i = 0; i < v.t.size(); i += stride)
+        by[ways[i] + 1].add(positionAt(pos, (v.t[i] - offset) / (1.0 + drift)), v.d[i]);
     double cov = 0.0, vx = 0.0, vy = 0.0;
-    for (int g = 0; g < 3; ++g)
-        if (n[g] > 0) {
-            cov += sxy[g] - sx[g] * sy[g] / n[g];
-            vx += sxx[g] - sx[g] * sx[g] / n[g];
-            vy += syy[g] - sy[g] * sy[g] / n[g];
-        }
+    for (const LineSums& s : by) {
+        cov += s.cov();
+        vx += s.vx();
+        vy += s.vy();
+    }
     return vx > 0 ? vy - cov * cov / vx : vy;
+}
+
+// The offset within ±`half` of `centre` at which the fit by way leaves least, and what it
+// leaves there over every point: in steps of 5·`step` over a stride of the points (about 800)
+// first, then in steps of `step` over all of them, within 5·`step` of the best (as the offset's
+// own search goes from coarse to fine: every point at every step is an hour's video times 300).
+std::pair<double, double> bestOffsetByDirection(const Points& v, const TimeSignal& pos, double drift, double centre,
+                                                double half, double step)
+{
+    const std::size_t stride = std::max<std::size_t>(1, v.t.size() / 800);
+    auto search = [&](double from, double to, double by, std::size_t every) {
+        std::pair<double, double> best{centre, residualByDirection(v, pos, centre, drift, every)};
+        for (double off = from; off <= to + 1e-12; off += by)
+            if (const double left = residualByDirection(v, pos, off, drift, every); left < best.second)
+                best = {off, left};
+        return best;
+    };
+    const double coarse = 5 * step;
+    const double near = search(centre - half, centre + half, coarse, stride).first;
+    return search(near - coarse, near + coarse, step, 1);
 }
 
 // When the signal first leaves its resting value `base` by a tenth of its range; nullopt
@@ -433,14 +456,7 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         const std::vector<int> ways = directions(v, pos, chosen.offset, chosen.drift);
         const auto forward = std::count(ways.begin(), ways.end(), 1), backward = std::count(ways.begin(), ways.end(), -1);
         if (5 * std::min(forward, backward) >= long(n)) {
-            double byWay = chosen.offset, least = residualByDirection(v, pos, chosen.offset, chosen.drift, ways);
-            for (double off = chosen.offset - 3 * frame_s; off <= chosen.offset + 3 * frame_s + 1e-12; off += frame_s / 50) {
-                const double left = residualByDirection(v, pos, off, chosen.drift, directions(v, pos, off, chosen.drift));
-                if (left < least) {
-                    least = left;
-                    byWay = off;
-                }
-            }
+            const auto [byWay, least] = bestOffsetByDirection(v, pos, chosen.drift, chosen.offset, 3 * frame_s, frame_s / 50);
             const double oneIntercept = fit.residual * fit.residual * double(std::max(1, fit.n - 2));
             if (least > 0 && double(n) * (oneIntercept - least) / least >= 9.0)
                 r.uncertainty_s = std::max(r.uncertainty_s, 0.5 * std::abs(byWay - chosen.offset));
