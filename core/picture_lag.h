@@ -9,9 +9,10 @@
 // 417293, slow faint sines: the tip read in the decoded pictures of MPEG-4 was 0.77 frames late
 // against the pictures drawn, of MJPEG 0.1; the sync 1.04 frames late and 0.15.)
 //
-// The model: the coder passes a pixel's change when, with the camera's noise on it, it is beyond
-// a threshold, and keeps the pixel otherwise (a first-order filter with that pass rate, whose
-// delay is (1 − pass)/pass frames). The noise's pass rate is 1 − memory, which sets the threshold.
+// The model: the coder passes a pixel's difference from what it last showed when, with the
+// camera's noise on it, it is beyond a threshold, and keeps the pixel otherwise. Fresh noise
+// passes at a rate of 1 − memory, which sets the threshold; a motion not yet shown differs by
+// more each frame, and is shown within a few frames however faint.
 
 namespace nb {
 
