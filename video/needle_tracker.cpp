@@ -1669,12 +1669,14 @@ struct AxisTracker {
     Sighting decideAndLearn(const Seen& seen, int at)
     {
         const Sighting tip = decide(seen, at);
+        double slope = kNaN;
         if (std::isfinite(tip.found)) {
             const std::size_t p = std::size_t(std::lround(std::max(0.0, tip.found)));
             const std::vector<double>& m = seen.profile.middle;
             if (p >= 1 && p + 1 < m.size())
-                slopes.push_back(0.5 * std::abs(m[p + 1] - m[p - 1]));
+                slope = 0.5 * std::abs(m[p + 1] - m[p - 1]);
         }
+        slopes.push_back(slope);
         AboutTip about;
         if (everyFrame && std::isfinite(tip.found)) {
             everyFrame->add(seen.g, polarity, tip.found, kAwayFromTip);
@@ -1988,8 +1990,13 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         out[a].masked = int(std::count_if(d.begin(), d.end(), [](double v) { return !std::isfinite(v); }));
         out[a].edgeSnr = median(trackers[a].strengths);
         out[a].coding = memory.coding();
-        if (!trackers[a].slopes.empty())
-            out[a].coding.edgeSlope_grey_per_px = median(trackers[a].slopes);
+        std::vector<double> moving;
+        const auto& sl = trackers[a].slopes;
+        for (std::size_t k = 2; k + 2 < d.size() && k < sl.size(); ++k)
+            if (std::isfinite(sl[k]) && std::isfinite(d[k - 2]) && std::isfinite(d[k + 2]) && std::abs(d[k + 2] - d[k - 2]) >= 1.0)
+                moving.push_back(sl[k]);
+        if (moving.size() >= 10)
+            out[a].coding.edgeSlope_grey_per_px = median(moving);
     }
     return out;
 }
