@@ -132,7 +132,7 @@ private slots:
     void realCoders()
     {
         if (!nb::test::haveFfmpeg())
-            QSKIP("the ffmpeg tool is not installed");
+            QFAIL("the ffmpeg tool is missing (scripts/install-deps.sh installs it): the coders cannot be measured");
         const auto mjpeg = throughCoder({"-c:v", "mjpeg", "-q:v", "5", "-pix_fmt", "yuvj420p"}, QStringLiteral("noise.avi"));
         const auto mpeg4 = throughCoder({"-c:v", "mpeg4", "-q:v", "5"}, QStringLiteral("noise4.avi"));
         QVERIFY(mjpeg && mpeg4);
