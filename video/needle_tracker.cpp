@@ -1070,7 +1070,19 @@ std::optional<NeedleAxis> acrossPicture(const NeedleAxis& segment, int width, in
     return NeedleAxis(whole.p1() + v * clipper.origin, whole.p1() + v * (clipper.origin + clipper.length));
 }
 
+// How much each pixel changes over the sampled frames (its standard deviation): the path
+// of a moving tip stands out here even where the still picture around it (tissue texture,
+// speckle) hides the shaft in the mean. `counted` says whether a pixel changes, not how much
+// (clipped at three noise widths): a burnt-in clock's digits change far more than a faint
+// needle's path, and its lines would outweigh the needle's. `measured` is how much (above the
+// usual change), for where across a path it changes most.
+struct PictureChange {
+    cv::Mat counted, measured;
+};
+
 constexpr int kMaxPathWidth_px = 20;
+constexpr std::size_t kStreaks = 8;
+constexpr double kStreakLengthPerWidth = 2.0;
 constexpr std::size_t kMostChangePaths = 2;  // tracked whatever their rank
 constexpr double kPathLengthPerWidth = 4.0;
 
@@ -1089,15 +1101,22 @@ struct PathLine {
 // crosses only part of the path (refined once, one path came out as lines 3.5° apart). Summed
 // along the stretch, not the whole line: along the whole line a compressed picture's block
 // pattern (rows of slightly more noise every 8 pixels) outweighed the path. Nothing when the
-// change is a patch, not a line (the digits of a clock or counter).
-std::optional<PathLine> refinePath(const cv::Mat& change, const NeedleAxis& rough, int width, int height)
+// change is a patch, not a line (the digits of a clock or counter), or shorter than
+// `lengthPerWidth` times its width.
+// The stretch and the width are read on `change` (PictureChange::counted), the turn and shift on
+// `centredOn`: counted where digits change in the picture (they would pull the line), the
+// change measured where they are set aside. Counted, a faint tip's path is a flat-topped band as
+// wide as the blur, and the first line tried that sums the most lay 2-6 px and up to 2.3° off
+// the needle (slow-small probe seed 5 case 9, seed 6 case 13: the needle's line not found).
+std::optional<PathLine> refinePath(const cv::Mat& change, const cv::Mat& centredOn, const NeedleAxis& rough, int width, int height,
+                                   double lengthPerWidth = kPathLengthPerWidth)
 {
     NeedleAxis line = rough, path = rough;
     for (int pass = 0; pass < 4; ++pass) {
         const std::optional<NeedleAxis> stretch = stretchOfChange(change, line);
         if (!stretch)
             return std::nullopt;
-        path = refineAxis(change, *stretch, 4.0);
+        path = refineAxis(centredOn, *stretch, 4.0);
         const std::optional<NeedleAxis> whole = acrossPicture(path, width, height);
         if (!whole)
             return std::nullopt;
@@ -1131,15 +1150,12 @@ std::optional<PathLine> refinePath(const cv::Mat& change, const NeedleAxis& roug
         ++wide;
     for (int side = 1; side <= kMaxPathWidth_px && meanAlong(-side) >= 0.5 * onLine; ++side)
         ++wide;
-    if (wide > kMaxPathWidth_px || pathLen < kPathLengthPerWidth * wide)
+    if (wide > kMaxPathWidth_px || pathLen < lengthPerWidth * wide)
         return std::nullopt;
     return PathLine{line, onLine * pathLen, 0.0};
 }
 
-// How much each pixel changes over the sampled frames (its standard deviation): the path
-// of a moving tip stands out here even where the still picture around it (tissue texture,
-// speckle) hides the shaft in the mean.
-cv::Mat changeOverFrames(const FrameSamples& s, const cv::Mat& mean)
+PictureChange changeOverFrames(const FrameSamples& s, const cv::Mat& mean)
 {
     cv::Mat squares = cv::Mat::zeros(s.height, s.width, CV_32F);
     for (const cv::Mat& f : s.gray)
@@ -1148,8 +1164,6 @@ cv::Mat changeOverFrames(const FrameSamples& s, const cv::Mat& mean)
     cv::max(variance, 0.0, variance);
     cv::sqrt(variance, deviation);
     cv::GaussianBlur(deviation, deviation, cv::Size(0, 0), 1.0);
-    // Whether a pixel changes counts, not how much: a burnt-in clock's digits change far more
-    // than a faint needle's path, and its lines would outweigh the needle's.
     std::vector<float> values(deviation.begin<float>(), deviation.end<float>());
     std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
     const float usual = values[values.size() / 2];
@@ -1157,10 +1171,11 @@ cv::Mat changeOverFrames(const FrameSamples& s, const cv::Mat& mean)
         v = std::abs(v - usual);
     std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
     const float noise = std::max(1e-3f, 1.4826f * values[values.size() / 2]);
+    PictureChange out;
     deviation -= usual;
-    cv::max(deviation, 0.0f, deviation);
-    cv::min(deviation, 3.0f * noise, deviation);
-    return deviation;
+    cv::max(deviation, 0.0f, out.measured);
+    cv::min(out.measured, 3.0f * noise, out.counted);
+    return out;
 }
 
 // Where burnt-in text changes (a clock's or a counter's digits): patches of change wider every
@@ -1174,6 +1189,47 @@ cv::Mat changingPatches(const cv::Mat& change)
     cv::morphologyEx(patches, patches, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(11, 11)));
     cv::dilate(patches, patches, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(9, 9)));
     return patches;
+}
+
+// The short streaks of change (blobs of half the strongest change or more, 20 px long or more
+// and twice as long as wide), each as a rough line along it across the picture, the largest
+// first: a tip that moves a few millimetres draws a path too short to stand out of the line
+// sums, where the rows of a coder's blocks, summed over the whole picture, do (slow-small probe
+// seed 5 case 9: a path of 19 px by 10 at -94.6°, the 32 strongest lines of change all within
+// 11° of the rows).
+std::vector<NeedleAxis> streaksOfChange(const cv::Mat& counted, int width, int height)
+{
+    double top = 0.0;
+    cv::minMaxLoc(counted, nullptr, &top);
+    if (!(top > 0.0))
+        return {};
+    const cv::Mat mask = counted >= 0.5 * top;
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+    std::vector<std::pair<int, NeedleAxis>> streaks;  // (area, line)
+    for (int i = 1; i < n; ++i) {
+        const int area = stats.at<int>(i, cv::CC_STAT_AREA);
+        if (area < 20)
+            continue;
+        const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP), stats.at<int>(i, cv::CC_STAT_WIDTH),
+                           stats.at<int>(i, cv::CC_STAT_HEIGHT));
+        const cv::Moments m = cv::moments(labels(box) == i, true);
+        const double mu20 = m.mu20 / m.m00, mu02 = m.mu02 / m.m00, mu11 = m.mu11 / m.m00;
+        const double common = std::sqrt(4.0 * mu11 * mu11 + (mu20 - mu02) * (mu20 - mu02));
+        const double major = std::sqrt(std::max(0.0, 2.0 * (mu20 + mu02 + common)));
+        const double minor = std::sqrt(std::max(0.0, 2.0 * (mu20 + mu02 - common)));
+        if (2.0 * major < 20.0 || major < 2.0 * std::max(minor, 1.0))
+            continue;
+        const double angle = 0.5 * std::atan2(2.0 * mu11, mu20 - mu02);
+        const QPointF c(box.x + m.m10 / m.m00, box.y + m.m01 / m.m00), u(std::cos(angle), std::sin(angle));
+        if (const std::optional<NeedleAxis> line = acrossPicture(NeedleAxis(c - u * major, c + u * major), width, height))
+            streaks.emplace_back(area, *line);
+    }
+    std::sort(streaks.begin(), streaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<NeedleAxis> out;
+    for (std::size_t k = 0; k < streaks.size() && k < kStreaks; ++k)
+        out.push_back(streaks[k].second);
+    return out;
 }
 
 }  // namespace
@@ -1201,7 +1257,8 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     // line that changes (a look not made by our renderer, 1024x768 MJPEG, a needle 26 grey
     // levels bright on texture of 25: no needle found and the sync was off by 7 s).
     const LineSums ridgeSums = lineSums(ridge);
-    const cv::Mat change = changeOverFrames(s, mean);
+    const PictureChange picture = changeOverFrames(s, mean);
+    const cv::Mat& change = picture.counted;
     const LineSums changeSums = lineSums(change);
     // Line `c` of `sums`, as far as it runs inside the picture.
     auto clipped = [&](const LineSums& sums, const LineCandidate& c) -> std::optional<NeedleAxis> {
@@ -1243,7 +1300,7 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     std::vector<PathLine> paths;
     for (LineCandidate c : strongestLines(changeSums, 32)) {
         const std::optional<NeedleAxis> rough = clipped(ridgeSums, c);
-        std::optional<PathLine> path = rough ? refinePath(change, *rough, s.width, s.height) : std::nullopt;
+        std::optional<PathLine> path = rough ? refinePath(change, change, *rough, s.width, s.height) : std::nullopt;
         if (!path)
             continue;
         // Ranked by the ridge under the line it was found from, as the ridge's own lines are.
@@ -1329,20 +1386,31 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     // case 5: a tip moving ±11 px, the 32 strongest lines of change all through a clock and a
     // counter or along the rows of an MJPEG's blocks, none on the needle). With the patches of
     // change set aside, the two lines of change with a moving edge and the most change on their
-    // path that no line kept is alike are tracked too.
-    cv::Mat apart = change.clone();
-    apart.setTo(0.0f, changingPatches(change));
+    // path that no line kept is alike are tracked too, and so are the short streaks of change
+    // (streaksOfChange). With the digits set aside, how much a pixel changes says where the
+    // path's middle is (refinePath): such a path lies on the needle, and is alike another line
+    // only within 1° and 3 px, as the shafts' lines are (slow-small probe seed 5 case 9: a line
+    // from the ridge 2.3° off the needle, its track lost; the path's line, 0.2° off, had been
+    // dropped as alike it).
+    const cv::Mat patches = changingPatches(change);
+    PictureChange apart{change.clone(), picture.measured.clone()};
+    apart.counted.setTo(0.0f, patches);
+    apart.measured.setTo(0.0f, patches);
     std::vector<std::pair<double, std::pair<double, NeedleAxis>>> apartByChange;
-    for (const LineCandidate& c : strongestLines(lineSums(apart), 32)) {
-        const std::optional<NeedleAxis> rough = clipped(ridgeSums, c);
-        const std::optional<PathLine> path = rough ? refinePath(apart, *rough, s.width, s.height) : std::nullopt;
+    auto addApart = [&](const NeedleAxis& rough, double ridgeThere, double lengthPerWidth) {
+        const std::optional<PathLine> path = refinePath(apart.counted, apart.measured, rough, s.width, s.height, lengthPerWidth);
         if (!path)
-            continue;
+            return;
         const NeedleAxis axis = shaftBehindTip(s, path->axis);
         const double snr = movingEdgeSnr(s, axis);
         if (snr >= 2.0)
-            apartByChange.emplace_back(path->changeOnPath, std::pair{snr * std::sqrt(ridgeUnder(c)), axis});
-    }
+            apartByChange.emplace_back(path->changeOnPath, std::pair{snr * std::sqrt(ridgeThere), axis});
+    };
+    for (const LineCandidate& c : strongestLines(lineSums(apart.counted), 32))
+        if (const std::optional<NeedleAxis> rough = clipped(ridgeSums, c))
+            addApart(*rough, ridgeUnder(c), kPathLengthPerWidth);
+    for (const NeedleAxis& rough : streaksOfChange(apart.counted, s.width, s.height))
+        addApart(rough, sumAlong(ridgeSums, rough), kStreakLengthPerWidth);
     std::sort(apartByChange.begin(), apartByChange.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     std::size_t added = 0;
     for (const auto& [onPath, scoredAxis] : apartByChange) {
@@ -1350,7 +1418,7 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
             break;
         const std::size_t before = out.size();
         if (roi.isEmpty() || crosses(scoredAxis.second))
-            keep(scoredAxis.first, scoredAxis.second, 5.0, 6.0);
+            keep(scoredAxis.first, scoredAxis.second, 1.0, 3.0);
         added += out.size() - before;
     }
     return out;
