@@ -208,7 +208,11 @@ void MainWindow::attachEngine()
     });
     connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) {
         statusBar()->setStyleSheet(QString());  // a plain note is not shown in the last alarm's red
-        statusBar()->showMessage(text, 8000);
+        // Elided in the middle where it would run under the rig's summary on the right (which
+        // grows by a few digits as a run goes on): a run's path is long, and its file name, at
+        // the end, is what the operator looks for.
+        const int room = statusBar()->width() - statusLabel_->width() - 12 * statusBar()->fontMetrics().averageCharWidth();
+        statusBar()->showMessage(statusBar()->fontMetrics().elidedText(text, Qt::ElideMiddle, std::max(room, 120)), 8000);
     });
 }
 

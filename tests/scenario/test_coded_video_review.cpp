@@ -23,6 +23,7 @@
 #include <QLabel>
 #include <QProcess>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -167,6 +168,18 @@ private slots:
             prepare(w);
             p->button(Control::StartInsertion)->click();
             QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving && p->interlockState().recording, 20000);
+            // Where it records, said beside the rig's summary without running under it: the
+            // path elided in its middle, the run's file name whole.
+            QTRY_VERIFY_WITH_TIMEOUT(w.statusBar()->currentMessage().endsWith(QLatin1String("_linear.csv")), 5000);
+            QLabel* summary = nullptr;
+            for (QLabel* l : w.statusBar()->findChildren<QLabel*>())
+                if (l->isVisible() && (!summary || l->width() > summary->width()))
+                    summary = l;
+            QVERIFY(summary);
+            const QFontMetrics metrics = w.statusBar()->fontMetrics();
+            QVERIFY2(metrics.horizontalAdvance(w.statusBar()->currentMessage()) + 8 * metrics.averageCharWidth() < summary->x(),
+                     qPrintable(w.statusBar()->currentMessage()));
+            screenshot(QStringLiteral("recording_message_%1.png").arg(language));
 
             // Meanwhile, in Review: the sine run, its coded video, Auto sync.
             w.reviewRun(sine);
