@@ -782,8 +782,10 @@ double movingEdgeSnr(const FrameSamples& s, const NeedleAxis& axis)
 }
 
 // Refines a candidate line: the small turn and shift (±`turn_deg`, ±3 px) that puts the most
-// ridge under it, at full resolution.
-NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough, double turn_deg = 1.5)
+// ridge under it, at full resolution. With `plateau` > 0, the middle of the turns and shifts
+// within that fraction of the most: on a picture clipped flat (PictureChange::counted) many
+// lines sum alike, and the first of them tried lies at an edge of the band, not along it.
+NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough, double turn_deg = 1.5, double plateau = 0.0)
 {
     const double len = rough.length();
     if (len < 2)
@@ -805,15 +807,29 @@ NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough, double turn
         return sum;
     };
     double bestA = base, bestS = 0.0, bestV = -1.0;
+    std::vector<std::array<double, 3>> tried;  // (sum, angle, shift)
     for (double da = -turn_deg; da <= turn_deg + 1e-9; da += 0.1)
         for (double sh = -3.0; sh <= 3.0 + 1e-9; sh += 0.25) {
             const double v = sumAlong(base + da * M_PI / 180.0, sh);
+            tried.push_back({v, base + da * M_PI / 180.0, sh});
             if (v > bestV) {
                 bestV = v;
                 bestA = base + da * M_PI / 180.0;
                 bestS = sh;
             }
         }
+    if (plateau > 0.0) {
+        double angles = 0.0, shifts = 0.0;
+        int alike = 0;
+        for (const auto& [v, angle, shift] : tried)
+            if (v >= (1.0 - plateau) * bestV) {
+                angles += angle;
+                shifts += shift;
+                ++alike;
+            }
+        bestA = angles / alike;
+        bestS = shifts / alike;
+    }
     const double ux = std::cos(bestA), uy = std::sin(bestA);
     const QPointF c = mid + QPointF(-uy, ux) * bestS;
     return NeedleAxis(c - QPointF(ux, uy) * (len / 2), c + QPointF(ux, uy) * (len / 2));
@@ -1083,6 +1099,7 @@ struct PictureChange {
 constexpr int kMaxPathWidth_px = 20;
 constexpr std::size_t kStreaks = 8;
 constexpr double kStreakLengthPerWidth = 2.0;
+constexpr double kFlatPlateau = 0.005;  // lines within half a percent of the most sum alike
 constexpr std::size_t kMostChangePaths = 2;  // tracked whatever their rank
 constexpr double kPathLengthPerWidth = 4.0;
 
@@ -1104,19 +1121,20 @@ struct PathLine {
 // change is a patch, not a line (the digits of a clock or counter), or shorter than
 // `lengthPerWidth` times its width.
 // The stretch and the width are read on `change` (PictureChange::counted), the turn and shift on
-// `centredOn`: counted where digits change in the picture (they would pull the line), the
-// change measured where they are set aside. Counted, a faint tip's path is a flat-topped band as
-// wide as the blur, and the first line tried that sums the most lay 2-6 px and up to 2.3° off
-// the needle (slow-small probe seed 5 case 9, seed 6 case 13: the needle's line not found).
-std::optional<PathLine> refinePath(const cv::Mat& change, const cv::Mat& centredOn, const NeedleAxis& rough, int width, int height,
-                                   double lengthPerWidth = kPathLengthPerWidth)
+// `centredOn`: counted where digits change in the picture (they would pull the line), taking the
+// middle of the lines that sum alike (`plateau`, as refineAxis takes it), and the change measured
+// where the digits are set aside. Counted, a faint tip's path is a flat-topped band as wide as
+// the blur, and the first line tried that sums the most lay 2-6 px and up to 2.3° off the needle
+// (slow-small probe seed 5 case 9, seed 6 case 13: the needle's line not found).
+std::optional<PathLine> refinePath(const cv::Mat& change, const cv::Mat& centredOn, double plateau, const NeedleAxis& rough,
+                                   int width, int height, double lengthPerWidth = kPathLengthPerWidth)
 {
     NeedleAxis line = rough, path = rough;
     for (int pass = 0; pass < 4; ++pass) {
         const std::optional<NeedleAxis> stretch = stretchOfChange(change, line);
         if (!stretch)
             return std::nullopt;
-        path = refineAxis(centredOn, *stretch, 4.0);
+        path = refineAxis(centredOn, *stretch, 4.0, plateau);
         const std::optional<NeedleAxis> whole = acrossPicture(path, width, height);
         if (!whole)
             return std::nullopt;
@@ -1300,7 +1318,7 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     std::vector<PathLine> paths;
     for (LineCandidate c : strongestLines(changeSums, 32)) {
         const std::optional<NeedleAxis> rough = clipped(ridgeSums, c);
-        std::optional<PathLine> path = rough ? refinePath(change, change, *rough, s.width, s.height) : std::nullopt;
+        std::optional<PathLine> path = rough ? refinePath(change, change, kFlatPlateau, *rough, s.width, s.height) : std::nullopt;
         if (!path)
             continue;
         // Ranked by the ridge under the line it was found from, as the ridge's own lines are.
@@ -1398,7 +1416,7 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     apart.measured.setTo(0.0f, patches);
     std::vector<std::pair<double, std::pair<double, NeedleAxis>>> apartByChange;
     auto addApart = [&](const NeedleAxis& rough, double ridgeThere, double lengthPerWidth) {
-        const std::optional<PathLine> path = refinePath(apart.counted, apart.measured, rough, s.width, s.height, lengthPerWidth);
+        const std::optional<PathLine> path = refinePath(apart.counted, apart.measured, 0.0, rough, s.width, s.height, lengthPerWidth);
         if (!path)
             return;
         const NeedleAxis axis = shaftBehindTip(s, path->axis);
