@@ -811,7 +811,8 @@ NeedleAxis refineAxis(const cv::Mat& ridge, const NeedleAxis& rough, double turn
     for (double da = -turn_deg; da <= turn_deg + 1e-9; da += 0.1)
         for (double sh = -3.0; sh <= 3.0 + 1e-9; sh += 0.25) {
             const double v = sumAlong(base + da * M_PI / 180.0, sh);
-            tried.push_back({v, base + da * M_PI / 180.0, sh});
+            if (plateau > 0.0)
+                tried.push_back({v, base + da * M_PI / 180.0, sh});
             if (v > bestV) {
                 bestV = v;
                 bestA = base + da * M_PI / 180.0;

@@ -86,20 +86,6 @@ QString writeCodedVideo(const nb::Run& run, const QString& path)
     return {};
 }
 
-void prepare(nb::MainWindow& w)
-{
-    nb::ControlPanel* p = w.controlPanel();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().devicesRunning, 20000);
-    p->button(Control::Enable)->click();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().stageEnabled, 20000);
-    p->button(Control::Bias)->click();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().biased, 20000);
-    QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::Zero)->isEnabled(), 20000);
-    p->button(Control::Zero)->click();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
-    QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), qPrintable(p->button(Control::StartInsertion)->toolTip()), 20000);
-}
-
 void screenshot(const QString& name)
 {
     const QString shots = qEnvironmentVariable("NB_SCREENSHOT_DIR");
@@ -165,7 +151,7 @@ private slots:
             nb::ControlPanel* p = w.controlPanel();
             p->findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->setValue(1.5);
             p->findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->setValue(40.0);
-            prepare(w);
+            nbtest::prepareToRecord(w);
             p->button(Control::StartInsertion)->click();
             QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving && p->interlockState().recording, 20000);
             // Where it records, said beside the rig's summary without running under it: the

@@ -57,20 +57,6 @@ bool waitFor(const std::function<bool()>& ready, int ms = 20000)
     return true;
 }
 
-void prepare(nb::MainWindow& w)
-{
-    nb::ControlPanel* p = w.controlPanel();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().devicesRunning, 20000);
-    p->button(Control::Enable)->click();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().stageEnabled, 20000);
-    p->button(Control::Bias)->click();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().biased, 20000);
-    QTRY_VERIFY_WITH_TIMEOUT(p->button(Control::Zero)->isEnabled(), 20000);
-    p->button(Control::Zero)->click();
-    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
-    QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), qPrintable(p->button(Control::StartInsertion)->toolTip()), 20000);
-}
-
 void setLinear(nb::MainWindow& w, double velocity, double depth)
 {
     w.controlPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->setValue(velocity);
@@ -194,7 +180,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         setLinear(w, 5.0, 60.0);
-        prepare(w);
+        nbtest::prepareToRecord(w);
         const QString sessionDir = w.session()->dir();
 
         std::function<void()> open;
@@ -278,7 +264,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         setLinear(w, 5.0, 60.0);
-        prepare(w);
+        nbtest::prepareToRecord(w);
         const QString sessionDir = w.session()->dir();
         w.controlPanel()->button(Control::StartInsertion)->click();
         QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().recording, 20000);
@@ -326,7 +312,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         setLinear(w, 5.0, 60.0);
-        prepare(w);
+        nbtest::prepareToRecord(w);
         nb::ControlPanel* p = w.controlPanel();
         p->button(Control::StartInsertion)->click();
         QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving, 20000);
@@ -366,7 +352,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         setLinear(w, 15.0, 30.0);
-        prepare(w);
+        nbtest::prepareToRecord(w);
         nb::ControlPanel* p = w.controlPanel();
         p->button(Control::StartInsertion)->click();
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
@@ -441,7 +427,7 @@ private slots:
         QVERIFY2(w.engine()->deviceDescription().contains(chosen), qPrintable(w.engine()->deviceDescription()));
         QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("seed 7")), qPrintable(w.engine()->deviceDescription()));
         setLinear(w, 20.0, 3.0);
-        prepare(w);
+        nbtest::prepareToRecord(w);
         w.controlPanel()->button(Control::StartInsertion)->click();
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
         const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
@@ -464,7 +450,7 @@ private slots:
         nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        prepare(w);
+        nbtest::prepareToRecord(w);
         nb::ControlPanel* p = w.controlPanel();
         p->findChild<QRadioButton*>(QStringLiteral("sine"))->setChecked(true);
         QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), qPrintable(p->button(Control::StartInsertion)->toolTip()), 5000);

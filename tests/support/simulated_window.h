@@ -6,6 +6,10 @@
 #include "main_window.h"
 
 #include "devices/sim/simulated_rig.h"
+#include "widgets/control_panel.h"
+
+#include <QAbstractButton>
+#include <QtTest>
 
 #include <memory>
 
@@ -30,6 +34,24 @@ inline nb::WorkbenchOptions simulatedWindow(const QString& sessionDir, bool real
     o.persistSettings = false;
     o.calibrationDwell_s = 0.2;
     return o;
+}
+
+// The operator's preparation through the control panel's buttons, once the devices run: enable
+// the stage, bias the sensor, zero the position, until Start insertion is offered (the test
+// fails at the step that is refused).
+inline void prepareToRecord(nb::MainWindow& w)
+{
+    nb::ControlPanel* p = w.controlPanel();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().devicesRunning, 20000);
+    p->button(nb::Control::Enable)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().stageEnabled, 20000);
+    p->button(nb::Control::Bias)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().biased, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(p->button(nb::Control::Zero)->isEnabled(), 20000);
+    p->button(nb::Control::Zero)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
+    QTRY_VERIFY2_WITH_TIMEOUT(p->button(nb::Control::StartInsertion)->isEnabled(),
+                              qPrintable(p->button(nb::Control::StartInsertion)->toolTip()), 20000);
 }
 
 }  // namespace nbtest
