@@ -161,6 +161,8 @@ def main():
                     help='exit with status 1 if a case more than a frame off was offered for acceptance')
     ap.add_argument('--expect-hits', action='store_true',
                     help='exit with status 1 unless every case is within a frame and accepted (a regression check)')
+    ap.add_argument('--expect-within', type=float, default=None, metavar='FRAMES',
+                    help='exit with status 1 unless every case is within FRAMES frames, accepted or not')
     a = ap.parse_args()
     if not (os.path.isfile(a.exe) and os.access(a.exe, os.X_OK)):
         print(f"sync_probe_matrix: {a.exe} is not an executable needlebench (give --exe)", file=sys.stderr)
@@ -176,15 +178,18 @@ def main():
         cases = [c for c in cases if c['i'] in wanted]
     root = a.keep or tempfile.mkdtemp(prefix='sync_probe_')
     within = accepted_within = misses = honest_misses = 0
+    worst = 0.0
     try:
         with ThreadPoolExecutor(2) as pool:
             for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root), cases):
                 if o is None:
                     misses += 1
                     honest_misses += 1
+                    worst = float('inf')
                     print(f"{c['i']:3d}  sync refused: {problem}  {describe(c)}", flush=True)
                     continue
                 ok = abs(o['error']) <= 1.0
+                worst = max(worst, abs(o['error']))
                 within += ok
                 accepted_within += ok and o['acceptable']
                 if not ok:
@@ -199,6 +204,9 @@ def main():
           f"misses {misses}, of which below the accept threshold {honest_misses}")
     if a.expect_honest and honest_misses < misses:
         print(f"sync probe: {misses - honest_misses} misses offered for acceptance", file=sys.stderr)
+        return 1
+    if a.expect_within is not None and worst > a.expect_within:
+        print(f"sync probe: a case {worst:.2f} frames off, more than {a.expect_within:g}", file=sys.stderr)
         return 1
     if a.expect_hits and accepted_within < len(cases):
         print(f"sync probe: {len(cases) - accepted_within} of {len(cases)} cases not within a frame and accepted", file=sys.stderr)

@@ -565,9 +565,10 @@ cv::Mat framesMean(const FrameSamples& s)
 
 // Where a shaft of sign `sign` stands along a strip 2·kSettleHalfWidth_px + 1 rows wide
 // (`sampled`): per segment of kSettleSegment_px, the peak of the mean across the strip
-// (fractional row from the middle) where it stands more than 4 σ out of the picture beside it.
+// (fractional row from the middle) where it stands more than `threshold_sigma` σ out of the
+// picture beside it.
 constexpr int kSettleSegment_px = 24, kSettleHalfWidth_px = 10;
-std::vector<std::pair<double, double>> shaftCentres(const cv::Mat& sampled, double origin, double sign)
+std::vector<std::pair<double, double>> shaftCentres(const cv::Mat& sampled, double origin, double sign, double threshold_sigma)
 {
     const int segments = sampled.cols / kSettleSegment_px;
     std::vector<std::vector<double>> across;
@@ -590,7 +591,7 @@ std::vector<std::pair<double, double>> shaftCentres(const cv::Mat& sampled, doub
     for (int k = 0; k < segments; ++k) {
         const auto& p = across[std::size_t(k)];
         const auto peak = std::max_element(p.begin() + 1, p.end() - 1);
-        if (!(*peak > 4.0 * noise))
+        if (!(*peak > threshold_sigma * noise))
             continue;
         const double across = double(peak - p.begin()) + peakOffset(*(peak - 1), *peak, *(peak + 1)) - kSettleHalfWidth_px;
         centres.emplace_back(origin + (k + 0.5) * kSettleSegment_px, across);
@@ -602,18 +603,19 @@ std::vector<std::pair<double, double>> shaftCentres(const cv::Mat& sampled, doub
 // stretch; as it is otherwise. A line found from the tip's path is a few degrees off where the
 // path is short (±34 px of travel: 1.7° off, 9 px from the shaft at the picture's edge, and the
 // sync 17 s off at confidence 0), and so is one drawn by hand. The shaft's centres across the line
-// (shaftCentres, of the sign that shows more of them) are fitted with a line (Theil-Sen: the
-// digits of a clock on the line, grain that happens to stand out, are outliers); that line is
-// the shaft if most centres lie on it, and it lies within 3° and 4 px of `axis`.
-NeedleAxis settleOnShaft(const cv::Mat& mean, const NeedleAxis& axis)
+// (shaftCentres beyond `threshold_sigma`, of the sign that shows more of them) are fitted with a
+// line (Theil-Sen: the digits of a clock on the line, grain that happens to stand out, are
+// outliers); that line is the shaft if most centres lie on it, and it lies within 3° and 4 px of
+// `axis`.
+NeedleAxis settleOnShaft(const cv::Mat& mean, const NeedleAxis& axis, double threshold_sigma = 4.0)
 {
     const Strip wide(axis, mean.cols, mean.rows, kSettleHalfWidth_px);
     if (wide.length < 5 * kSettleSegment_px)
         return axis;
     cv::Mat sampled;
     cv::remap(mean, sampled, wide.mapX, wide.mapY, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-    std::vector<std::pair<double, double>> centres = shaftCentres(sampled, wide.origin, 1.0);
-    if (auto dark = shaftCentres(sampled, wide.origin, -1.0); dark.size() > centres.size())
+    std::vector<std::pair<double, double>> centres = shaftCentres(sampled, wide.origin, 1.0, threshold_sigma);
+    if (auto dark = shaftCentres(sampled, wide.origin, -1.0, threshold_sigma); dark.size() > centres.size())
         centres = std::move(dark);
     if (centres.size() < 5)
         return axis;
@@ -2020,6 +2022,20 @@ void maskJumps(const std::vector<double>& t, std::vector<double>& d)
 }
 
 }  // namespace
+
+std::vector<std::optional<NeedleAxis>> settledOnFaintShafts(const FrameSamples& s, const std::vector<NeedleAxis>& axes)
+{
+    const cv::Mat mean = framesMean(s);
+    std::vector<std::optional<NeedleAxis>> out;
+    for (const NeedleAxis& axis : axes) {
+        const NeedleAxis loose = settleOnShaft(mean, axis, 3.0);
+        if (settleOnShaft(mean, axis) == axis && loose != axis)
+            out.emplace_back(loose);
+        else
+            out.emplace_back();
+    }
+    return out;
+}
 
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,

@@ -71,6 +71,14 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}
 std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& samples, QRect roi = {}, int maxCount = 4,
                                              std::vector<double>* scores = nullptr);
 
+// For each of `axes`, the line of a shaft too faint to settle it on (trackNeedles moves a line
+// only onto a shaft that stands 4 σ out of the grain in enough of its segments): the shaft read
+// where it stands 3 σ out; nothing where that leaves the line as it is, or the shaft is clear
+// enough to settle it anyway. Read at 3 σ, the grain beside a faint shaft pulls the line too (on
+// a needle drawn exactly along its line, 0.44° off it), so it is a line to track beside `axes`,
+// not instead of them.
+std::vector<std::optional<NeedleAxis>> settledOnFaintShafts(const FrameSamples& samples, const std::vector<NeedleAxis>& axes);
+
 // A stretch along an axis, in pixels from its p1 (as a track's displacements are).
 struct AxisStretch {
     double from_px = 0.0, to_px = 0.0;
