@@ -26,7 +26,10 @@ import shutil
 import subprocess
 import sys
 import tempfile
+
 from concurrent.futures import ThreadPoolExecutor
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from probe_support import add_common_arguments, cannot_run  # noqa: E402
 
 try:
     import numpy as np
@@ -151,11 +154,7 @@ def run_case(c, exe, root):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[1])
-    ap.add_argument('--seed', type=int, default=None)
-    ap.add_argument('--cases', type=int, default=16)
-    ap.add_argument('--exe', default=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'app', 'needlebench'))
-    ap.add_argument('--keep', default=None, help='keep each case (run, video) under this folder')
-    ap.add_argument('--only', default=None, help="run only these cases of the seed's matrix (comma-separated numbers)")
+    add_common_arguments(ap)
     ap.add_argument('--slow-small', action='store_true', help='draw slow, short sines of a faint needle with overlays')
     ap.add_argument('--expect-honest', action='store_true',
                     help='exit with status 1 if a case more than a frame off was offered for acceptance')
@@ -164,11 +163,9 @@ def main():
     ap.add_argument('--expect-within', type=float, default=None, metavar='FRAMES',
                     help='exit with status 1 unless every case is within FRAMES frames, accepted or not')
     a = ap.parse_args()
-    if not (os.path.isfile(a.exe) and os.access(a.exe, os.X_OK)):
-        print(f"sync_probe_matrix: {a.exe} is not an executable needlebench (give --exe)", file=sys.stderr)
-        return 2
-    if not shutil.which('ffmpeg'):
-        print("sync_probe_matrix: the ffmpeg tool is needed", file=sys.stderr)
+    problem = cannot_run(a.exe)
+    if problem:
+        print(f"sync_probe_matrix: {problem}", file=sys.stderr)
         return 2
     seed = a.seed if a.seed is not None else random.randrange(100000, 1000000)
     print(f"sync_probe_matrix: seed {seed} (rerun with --seed {seed}{' --slow-small' if a.slow_small else ''}), {a.cases} cases", flush=True)

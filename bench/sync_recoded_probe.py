@@ -16,6 +16,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from probe_support import add_common_arguments, cannot_run  # noqa: E402
+
 LOOKS = [
     ('rendered', None),
     ('h264', '-c:v libx264 -bf 3 -crf {crf} -pix_fmt yuv420p'),
@@ -62,17 +65,11 @@ def run_case(i, c, exe, root):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    ap.add_argument('--seed', type=int, default=None)
-    ap.add_argument('--cases', type=int, default=16)
-    ap.add_argument('--exe', default=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'app', 'needlebench'))
-    ap.add_argument('--keep', default=None, help='keep each case (run, videos) under this folder')
-    ap.add_argument('--only', default=None, help="run only these cases of the seed's draw (comma-separated numbers)")
+    add_common_arguments(ap)
     a = ap.parse_args()
-    if not (os.path.isfile(a.exe) and os.access(a.exe, os.X_OK)):
-        print(f"sync_recoded_probe: {a.exe} is not an executable needlebench (give --exe)", file=sys.stderr)
-        return 2
-    if not shutil.which('ffmpeg'):
-        print("sync_recoded_probe: the ffmpeg tool is needed", file=sys.stderr)
+    problem = cannot_run(a.exe)
+    if problem:
+        print(f"sync_recoded_probe: {problem}", file=sys.stderr)
         return 2
     seed = a.seed if a.seed is not None else random.randrange(100000, 1000000)
     print(f"sync_recoded_probe: seed {seed} (rerun with --seed {seed}), {a.cases} cases", flush=True)
