@@ -1,6 +1,8 @@
 """What the sync probes share: their common options and the check that they can run."""
 import os
+import random
 import shutil
+import sys
 
 
 def add_common_arguments(ap):
@@ -18,3 +20,12 @@ def cannot_run(exe):
     if not shutil.which('ffmpeg'):
         return "the ffmpeg tool is needed"
     return ''
+
+
+def chosen_seed(a, name):
+    """The seed asked for, or one drawn now; exits with status 2 when the probe cannot run."""
+    problem = cannot_run(a.exe)
+    if problem:
+        print(f"{name}: {problem}", file=sys.stderr)
+        sys.exit(2)
+    return a.seed if a.seed is not None else random.randrange(100000, 1000000)

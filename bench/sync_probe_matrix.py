@@ -29,7 +29,7 @@ import tempfile
 
 from concurrent.futures import ThreadPoolExecutor
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from probe_support import add_common_arguments, cannot_run  # noqa: E402
+from probe_support import add_common_arguments, chosen_seed  # noqa: E402
 
 try:
     import numpy as np
@@ -163,11 +163,7 @@ def main():
     ap.add_argument('--expect-within', type=float, default=None, metavar='FRAMES',
                     help='exit with status 1 unless every case is within FRAMES frames, accepted or not')
     a = ap.parse_args()
-    problem = cannot_run(a.exe)
-    if problem:
-        print(f"sync_probe_matrix: {problem}", file=sys.stderr)
-        return 2
-    seed = a.seed if a.seed is not None else random.randrange(100000, 1000000)
+    seed = chosen_seed(a, 'sync_probe_matrix')
     print(f"sync_probe_matrix: seed {seed} (rerun with --seed {seed}{' --slow-small' if a.slow_small else ''}), {a.cases} cases", flush=True)
     cases = (draw_slow_small_cases if a.slow_small else draw_cases)(seed, a.cases)
     if a.only:

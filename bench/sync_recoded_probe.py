@@ -17,7 +17,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from probe_support import add_common_arguments, cannot_run  # noqa: E402
+from probe_support import add_common_arguments, chosen_seed  # noqa: E402
 
 LOOKS = [
     ('rendered', None),
@@ -67,11 +67,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     add_common_arguments(ap)
     a = ap.parse_args()
-    problem = cannot_run(a.exe)
-    if problem:
-        print(f"sync_recoded_probe: {problem}", file=sys.stderr)
-        return 2
-    seed = a.seed if a.seed is not None else random.randrange(100000, 1000000)
+    seed = chosen_seed(a, 'sync_recoded_probe')
     print(f"sync_recoded_probe: seed {seed} (rerun with --seed {seed}), {a.cases} cases", flush=True)
     rng = random.Random(seed)
     cases = [draw(rng) for _ in range(a.cases)]
