@@ -1112,7 +1112,7 @@ constexpr std::size_t kStreaks = 8;
 constexpr double kStreakLengthPerWidth = 2.0;
 constexpr double kFlatPlateau = 0.005;  // lines within half a percent of the most sum alike
 constexpr std::size_t kMostChangePaths = 2;  // tracked whatever their rank
-constexpr std::size_t kMostApartPaths = 3;   // and as many, with the changing digits set aside
+constexpr std::size_t kMostApartPaths = 3;   // the same, with the changing digits set aside
 constexpr double kPathLengthPerWidth = 4.0;
 
 // A line along which a tip's path was seen, and the change summed along that path (a line a
