@@ -4,6 +4,7 @@
 #include "video_error.h"
 
 #include <QCoreApplication>
+#include <opencv2/imgproc.hpp>
 
 #include <cmath>
 
@@ -41,6 +42,7 @@ int FrameReader::grabNext()
 {
     if (!cap_.grab())
         return -1;
+    ++stats_.grabbed;
     // Counting is exact while decoding on from a known frame; after a seek only the
     // timestamp tells where we are.
     const int counted = (current_ >= 0 || fresh_) ? current_ + 1 : -2;
@@ -61,6 +63,9 @@ int FrameReader::grabNext()
 
 bool FrameReader::forwardIsCheaper(int from, int to) const
 {
+    // Every frame decoded on the way is kept: each is decoded once whichever way.
+    if (!gray_.empty())
+        return true;
     // Without a usable seek the alternative is decoding from the start.
     if (!seekable_ || to - from <= 12)
         return true;
@@ -112,6 +117,8 @@ DecodedFrame FrameReader::read(int n)
             const int j = grabNext();
             if (j < 0 || j > n)
                 return false;
+            if (j < n)
+                keepGrabbedGray(j);
         }
         return true;
     };
@@ -127,6 +134,47 @@ DecodedFrame FrameReader::read(int n)
         throw VideoError(index_.path, nb::TrDevices::tr("frame %1 could not be decoded").arg(n));
     cache_.put(n, image);
     return {n, time, image};
+}
+
+namespace {
+cv::Mat grayOf(const cv::Mat& image)
+{
+    if (image.channels() == 1)
+        return image;
+    cv::Mat g;
+    cv::cvtColor(image, g, cv::COLOR_BGR2GRAY);
+    return g;
+}
+}  // namespace
+
+bool FrameReader::keepGrayFrames(std::size_t budget_bytes)
+{
+    const std::size_t bytes = std::size_t(std::max(0, index_.width)) * std::size_t(std::max(0, index_.height)) * index_.frames.size();
+    if (bytes > 0 && bytes <= budget_bytes)
+        gray_.resize(index_.frames.size());
+    else
+        gray_.clear();
+    return !gray_.empty();
+}
+
+void FrameReader::keepGrabbedGray(int j)
+{
+    if (j < 0 || std::size_t(j) >= gray_.size() || !gray_[std::size_t(j)].empty())
+        return;
+    cv::Mat image;
+    if (cap_.retrieve(image) && !image.empty())
+        gray_[std::size_t(j)] = grayOf(image);
+}
+
+cv::Mat FrameReader::gray(int n)
+{
+    const bool keeping = n >= 0 && std::size_t(n) < gray_.size();
+    if (keeping && !gray_[std::size_t(n)].empty())
+        return gray_[std::size_t(n)];
+    const cv::Mat g = grayOf(read(n).image);
+    if (keeping)
+        gray_[std::size_t(n)] = g;
+    return g;
 }
 
 int FrameReader::fillCache(int from, int to, int budget)

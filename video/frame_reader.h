@@ -9,6 +9,8 @@
 
 #include <opencv2/videoio.hpp>
 
+#include <vector>
+
 namespace nb::video {
 
 struct DecodedFrame {
@@ -22,7 +24,13 @@ struct ReaderStats {
     int retries = 0;          // seeks that landed past the target and were redone earlier
     int sequentialResets = 0; // fell back to decoding from the start
     int cacheHits = 0;
+    int grabbed = 0;          // frames decoded by the reader itself (not those a seek decodes inside OpenCV)
 };
+
+// What a caller that passes over a video several times keeps of its grey frames: all of a
+// video of about three and a half minutes at 640x480 or a minute and a half at 1024x768
+// (30 frames/s). A longer video is decoded again on each pass.
+constexpr std::size_t kPassesGrayBudget_bytes = std::size_t(1) << 30;
 
 class FrameReader {
 public:
@@ -39,9 +47,19 @@ public:
     FrameCache& cache() { return cache_; }
     const ReaderStats& stats() const { return stats_; }
 
+    // Keeps every frame's grey picture once it is decoded (frames decoded on the way to
+    // another included), when the whole video's fit in `budget_bytes`; else keeps none.
+    // For callers that pass over a short video several times (the sync samples it, tracks
+    // every frame and may track again): a noisy H.264 picture costs more to decode than to
+    // track, and each pass decoded it again. Returns whether the frames are kept.
+    bool keepGrayFrames(std::size_t budget_bytes);
+    // Frame n in grey, 8 bit (shared with the store when kept: read-only). Throws as read().
+    cv::Mat gray(int n);
+
 private:
     void reopen();
     int grabNext();            // grabs one frame; returns its index (-1 end/failure, -2 unknown time)
+    void keepGrabbedGray(int j);  // the grabbed frame j into the grey store, when kept and not yet there
     void seekTo(int n);        // leaves current_ <= n (or -1 after a reopen)
     bool forwardIsCheaper(int from, int to) const;
 
@@ -53,6 +71,7 @@ private:
     int firstFrameNumber_ = 0;
     bool seekable_ = true;  // OpenCV's frame seek can land near a frame (see the constructor)
     ReaderStats stats_;
+    std::vector<cv::Mat> gray_;  // one per frame when grey frames are kept, else empty
 };
 
 }  // namespace nb::video

@@ -28,6 +28,7 @@ VideoLabels suggestLabelsWithVideo(const Run& run, const FrameIndex& index, cons
     std::vector<SurfaceTrace> surface;
     try {
         FrameReader reader(index);
+        reader.keepGrayFrames(kPassesGrayBudget_bytes);  // the tissue's background, its shifts, the surface
         const TissueShifts shifts = trackTissueShifts(reader, {}, progress, cancel);
         if (cancel && cancel->load()) {
             out.cancelled = true;

@@ -23,16 +23,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-cv::Mat toGray(const cv::Mat& bgr)
-{
-    cv::Mat gray;
-    if (bgr.channels() == 1)
-        gray = bgr;
-    else
-        cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
-    return gray;
-}
-
 double median(std::vector<double> v)
 {
     if (v.empty())
@@ -709,7 +699,7 @@ FrameSamples sampleFrames(FrameReader& reader, int count)
         if (std::find(taken.begin(), taken.end(), i) != taken.end())
             return;
         taken.push_back(i);
-        s.gray.push_back(toGray(reader.read(i).image).clone());
+        s.gray.push_back(reader.gray(i).clone());
     };
     count = std::clamp(count, 1, n);
     for (int k = 0; k < count; ++k)
@@ -2077,7 +2067,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         // tell from a repeat (whole runs of frames get flagged), and a real repeat only shows
         // its tip one frame late, which the fit over all frames absorbs.
         const FrameInfo& info = index.frames[std::size_t(i)];
-        const cv::Mat gray = toGray(reader.read(i).image);
+        const cv::Mat gray = reader.gray(i);
         memory.add(gray);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);

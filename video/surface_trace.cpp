@@ -128,7 +128,7 @@ SurfaceTrace trackSurfaceEdges(FrameReader& reader, const QLineF& axis, const Ti
     for (int k = 0; k < n; ++k) {
         // The same picture again: no motion to measure (also where the index does not say so:
         // indexed from the file's packets, a long video).
-        const cv::Mat g = workingGray(reader.read(k).image, scale);
+        const cv::Mat g = workingGray(reader.gray(k), scale);
         const bool repeated = k > 0 && (index.frames[std::size_t(k)].duplicate || samePicture(lastShown, g));
         lastShown = g;
         if (repeated)

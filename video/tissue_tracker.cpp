@@ -106,7 +106,7 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     {
         const int count = std::min(n, kBackgroundFrames);
         for (int j = 0; j < count; ++j) {
-            const cv::Mat f = workingImage(reader.read(int((long long)j * (n - 1) / std::max(1, count - 1))).image, r, scale);
+            const cv::Mat f = workingImage(reader.gray(int((long long)j * (n - 1) / std::max(1, count - 1))), r, scale);
             if (background.empty())
                 background = cv::Mat::zeros(f.size(), CV_32F);
             background += f / double(count);
@@ -139,7 +139,7 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             progress(i, n);
         // The same picture again: no motion to measure, and a false zero. Also where the index
         // does not say so (indexed from the file's packets, a long video).
-        const cv::Mat shown = workingImage(reader.read(i).image, r, scale);
+        const cv::Mat shown = workingImage(reader.gray(i), r, scale);
         const bool repeated = i > 0 && (index.frames[std::size_t(i)].duplicate || samePicture(lastShown, shown));
         lastShown = shown;
         if (repeated)

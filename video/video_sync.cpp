@@ -46,6 +46,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     VideoSync out;
     out.frames = index.size();
     FrameReader reader(index, 8);
+    reader.keepGrayFrames(kPassesGrayBudget_bytes);  // sampled, tracked, maybe tracked again
     const bool detected = !options.axis;
     std::vector<double> scores;
     // Every line that looks at all like a needle is tracked, not the few that look most like

@@ -135,6 +135,43 @@ private slots:
         QCOMPARE(index.codec, QStringLiteral("h264"));
     }
 
+    // A caller that passes over the video several times (the sync: frames spread over it, then
+    // every frame, then every frame again) keeps them in grey: each frame is decoded once, the
+    // spread read decoding on through the frames between (no seek past a keyframe), and each is
+    // its own frame. A budget the video does not fit keeps none, and frames are still right.
+    void grayFramesKeptThroughPasses()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(100);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        QVERIFY(writeVideo(path("g.mp4"), spec).isEmpty());
+        const FrameIndex index = buildFrameIndex(path("g.mp4"));
+        std::vector<int> spread;
+        for (int k = 0; k < 10; ++k)
+            spread.push_back(k * 11);
+        const std::size_t videoBytes = std::size_t(index.width) * std::size_t(index.height) * std::size_t(index.size());
+
+        FrameReader kept(index, 8);
+        QVERIFY(kept.keepGrayFrames(videoBytes));
+        for (int pass = 0; pass < 3; ++pass)
+            for (int n : pass == 0 ? spread : sequence(index.size())) {
+                const cv::Mat g = kept.gray(n);
+                QCOMPARE(g.channels(), 1);
+                QVERIFY2(readCode(g) == spec.codes[std::size_t(n)], qPrintable(QStringLiteral("pass %1, frame %2: code %3").arg(pass).arg(n).arg(readCode(g))));
+            }
+        qInfo("kept: %d frames decoded, %d seeks", kept.stats().grabbed, kept.stats().seeks);
+        QCOMPARE(kept.stats().grabbed, index.size());
+        QCOMPARE(kept.stats().seeks, 0);
+
+        FrameReader streamed(index, 8);
+        QVERIFY(!streamed.keepGrayFrames(videoBytes - 1));
+        for (int pass = 0; pass < 2; ++pass)
+            for (int n : sequence(index.size()))
+                QCOMPARE(readCode(streamed.gray(n)), spec.codes[std::size_t(n)]);
+        qInfo("not kept: %d frames decoded", streamed.stats().grabbed);
+        QVERIFY(streamed.stats().grabbed >= 2 * index.size());
+    }
+
     void variableFrameRate_data()
     {
         QTest::addColumn<QString>("file");
