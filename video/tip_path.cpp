@@ -32,26 +32,29 @@ TipPath::TipPath(int length, int lag, double frame_s)
 std::optional<int> TipPath::push(const std::vector<double>& score)
 {
     const std::size_t states = std::size_t(2 * maxVelocity_ + 1) * std::size_t(length_);
-    auto scoreAt = [&](int i) {
+    scores_.resize(std::size_t(length_));
+    for (int i = 0; i < length_; ++i) {
         const double s = std::size_t(i) < score.size() ? score[std::size_t(i)] : 0.0;
-        return std::isfinite(s) ? float(std::clamp(s, -kScoreCap, kScoreCap)) : 0.0f;
-    };
+        scores_[std::size_t(i)] = std::isfinite(s) ? float(std::clamp(s, -kScoreCap, kScoreCap)) : 0.0f;
+    }
     std::vector<signed char>& from = from_[std::size_t(pushed_ % (lag_ + 1))];
     from.assign(states, 0);
     if (pushed_ == 0) {
         // The first frame: any velocity.
         best_.resize(states);
         for (int v = -maxVelocity_; v <= maxVelocity_; ++v)
-            for (int i = 0; i < length_; ++i)
-                best_[std::size_t(stateIndex(v, i))] = scoreAt(i);
+            std::copy(scores_.begin(), scores_.end(), best_.begin() + std::ptrdiff_t(stateIndex(v, 0)));
     } else {
         // The velocity changes at a cost per sample per frame of change; the tip then moves by
         // its new velocity: state (v, i) comes from (u, i − v) for the u that scores best after
         // paying for the change from u to v. That best u is found for every v at once by a
         // pass up the velocities and one down (an L1 distance transform), so any change of
-        // velocity costs no more time than a small one.
-        std::vector<float> reach(best_);
-        std::vector<signed char> origin(states);
+        // velocity costs no more time than a small one. (The buffers are kept from frame to
+        // frame: allocated anew, they cost as much as the search.)
+        std::vector<float>& reach = reach_;
+        reach.assign(best_.begin(), best_.end());
+        std::vector<signed char>& origin = origin_;
+        origin.resize(states);
         for (int v = -maxVelocity_; v <= maxVelocity_; ++v)
             std::fill_n(origin.begin() + std::ptrdiff_t(stateIndex(v, 0)), length_, static_cast<signed char>(v));
         const float cost = accelerationCost_;
@@ -70,15 +73,22 @@ std::optional<int> TipPath::push(const std::vector<double>& score)
             relax(v, v - 1);
         for (int v = maxVelocity_ - 1; v >= -maxVelocity_; --v)
             relax(v, v + 1);
-        std::vector<float> next(states, kNone);
+        std::vector<float>& next = next_;
+        next.assign(states, kNone);
         for (int v = -maxVelocity_; v <= maxVelocity_; ++v) {
-            for (int i = std::max(0, v); i < std::min(length_, length_ + v); ++i) {
-                const std::size_t s = std::size_t(stateIndex(v, i)), p = std::size_t(stateIndex(v, i - v));
-                next[s] = reach[p] + scoreAt(i);
-                from[s] = static_cast<signed char>(v - origin[p]);
+            // State (v, i) comes from (v, i − v), v states before it.
+            const std::size_t row = std::size_t(stateIndex(v, 0));
+            const int first = std::max(0, v), end = std::min(length_, length_ + v);
+            float* to = &next[row];
+            signed char* f = &from[row];
+            const float* by = &reach[row] - v;
+            const signed char* ob = &origin[row] - v;
+            for (int i = first; i < end; ++i) {
+                to[i] = by[i] + scores_[std::size_t(i)];
+                f[i] = static_cast<signed char>(v - ob[i]);
             }
         }
-        best_ = std::move(next);
+        std::swap(best_, next);
     }
     // Kept near zero so that an hour of frames does not run out of float precision.
     const float top = *std::max_element(best_.begin(), best_.end());

@@ -50,6 +50,8 @@ private:
     std::vector<float> best_;  // per state, the best course's score (the highest is 0)
     // Per frame (a ring of lag + 1), per state: the velocity change that led there.
     std::vector<std::vector<signed char>> from_;
+    std::vector<float> scores_, reach_, next_;  // one frame's work, kept from frame to frame
+    std::vector<signed char> origin_;
 };
 
 }  // namespace nb::video
