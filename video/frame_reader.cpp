@@ -63,7 +63,8 @@ int FrameReader::grabNext()
 
 bool FrameReader::forwardIsCheaper(int from, int to) const
 {
-    // Every frame decoded on the way is kept: each is decoded once whichever way.
+    // Decoding on keeps every frame on the way, which the next pass then need not decode; a
+    // seek would skip them, to decode them later.
     if (!gray_.empty())
         return true;
     // Without a usable seek the alternative is decoding from the start.

@@ -45,6 +45,15 @@ class TestFrameReader : public QObject {
             QCOMPARE(readCode(reader.read(n).image), codes[std::size_t(n)]);
     }
 
+    // 100 numbered frames of H.264 with B-frames and a keyframe every 30 frames.
+    static VideoSpec keyframedH264()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(100);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        return spec;
+    }
+
     static std::vector<double> cfrTimes(int n, double fps)
     {
         std::vector<double> t(static_cast<std::size_t>(n));
@@ -122,9 +131,7 @@ private slots:
 
     void keyframesFromProbe()
     {
-        VideoSpec spec;
-        spec.codes = sequence(100);
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        const VideoSpec spec = keyframedH264();
         QVERIFY(writeVideo(path("k.mp4"), spec).isEmpty());
         const FrameIndex index = buildFrameIndex(path("k.mp4"));
         if (!index.keyframesKnown)
@@ -141,9 +148,7 @@ private slots:
     // its own frame. A budget the video does not fit keeps none, and frames are still right.
     void grayFramesKeptThroughPasses()
     {
-        VideoSpec spec;
-        spec.codes = sequence(100);
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        const VideoSpec spec = keyframedH264();
         QVERIFY(writeVideo(path("g.mp4"), spec).isEmpty());
         const FrameIndex index = buildFrameIndex(path("g.mp4"));
         std::vector<int> spread;
