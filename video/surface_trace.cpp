@@ -40,13 +40,8 @@ constexpr int kWorkingSize_px = 480;  // longer side the picture is reduced to
 constexpr double kRekey_bins = 6.0;   // the reference moves on beyond this (as in tissue_tracker)
 constexpr double kSmooth_bins = 1.5;  // profile smoothing before the gradient
 
-cv::Mat workingGray(const cv::Mat& image, double scale)
+cv::Mat workingGray(const cv::Mat& gray, double scale)
 {
-    cv::Mat gray;
-    if (image.channels() == 3)
-        cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
-    else
-        gray = image;
     cv::Mat small;
     if (scale < 1.0)
         cv::resize(gray, small, cv::Size(), scale, scale, cv::INTER_AREA);

@@ -23,13 +23,9 @@ constexpr int kBackgroundFrames = 41; // frames whose median is the static backg
 constexpr double kTextureBlur_px = 3.0;
 constexpr double kScaleSpan_s = 0.2;  // stretch of video over which the scale is read
 
-cv::Mat workingImage(const cv::Mat& bgr, const cv::Rect& roi, double scale)
+cv::Mat workingImage(const cv::Mat& grayFrame, const cv::Rect& roi, double scale)
 {
-    cv::Mat gray;
-    if (bgr.channels() == 3)
-        cv::cvtColor(bgr(roi), gray, cv::COLOR_BGR2GRAY);
-    else
-        gray = bgr(roi);
+    const cv::Mat gray = grayFrame(roi);
     cv::Mat small;
     if (scale < 1.0)
         cv::resize(gray, small, cv::Size(), scale, scale, cv::INTER_AREA);
