@@ -7,6 +7,7 @@
 #include "main_window.h"
 #include "translation.h"
 
+#include "core/tr.h"
 #include "devices/acquisition_engine.h"
 
 #include <QApplication>
@@ -20,6 +21,34 @@ static bool isHeadless(int argc, char** argv)
 {
     // Qt's own GUI options (-platform, -style, ...) start with '-'; a command word does not.
     return argc > 1 && argv[1][0] != '-';
+}
+
+// The options a user types by habit to ask what a program is, answered as their commands are.
+static bool asksForHelpOrVersion(int argc, char** argv)
+{
+    if (argc < 2)
+        return false;
+    const QByteArray first(argv[1]);
+    return first == "--help" || first == "-h" || first == "--version" || first == "-v";
+}
+
+// Whether the window has somewhere to go: without a display Qt aborts with advice to reinstall,
+// which sends an operator on an SSH session the wrong way.
+static bool haveDisplay(int argc, char** argv)
+{
+#if defined(Q_OS_LINUX) || defined(Q_OS_FREEBSD)
+    if (!qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("DISPLAY")
+        || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
+        return true;
+    for (int i = 1; i < argc; ++i)
+        if (QByteArray(argv[i]) == "-platform")
+            return true;
+    return false;
+#else
+    Q_UNUSED(argc);
+    Q_UNUSED(argv);
+    return true;
+#endif
 }
 
 // The window on the workbench: a signal (SIGTERM, SIGINT, SIGHUP) stops the stage and closes
@@ -52,10 +81,12 @@ int main(int argc, char** argv)
     QCoreApplication::setApplicationVersion(QStringLiteral(NEEDLEBENCH_VERSION));
 
     QTextStream err(stderr);
-    if (isHeadless(argc, argv) || (argc > 1 && (QByteArray(argv[1]) == "--help" || QByteArray(argv[1]) == "-h"))) {
+    if (isHeadless(argc, argv) || asksForHelpOrVersion(argc, argv)) {
         QStringList words;
         for (int i = 1; i < argc; ++i)
             words << QString::fromLocal8Bit(argv[i]);
+        if (words.value(0) == QLatin1String("--version") || words.value(0) == QLatin1String("-v"))
+            words[0] = QStringLiteral("version");
         const QString what = words.value(0);
         return nb::runGuarded(what, [&] {
             std::unique_ptr<QCoreApplication> holder;
@@ -69,11 +100,24 @@ int main(int argc, char** argv)
             QCoreApplication& app = *holder;
             nb::installTranslation(app);
             QTextStream out(stdout);
-            const int code = nb::runGuarded(what, [&] { return nb::cli::run(app.arguments().mid(1), {out, err}); }, err);
+            QStringList arguments = app.arguments().mid(1);
+            if (!arguments.isEmpty())
+                arguments[0] = words.value(0);  // --version asked as the command it is
+            const int code = nb::runGuarded(what, [&] { return nb::cli::run(arguments, {out, err}); }, err);
             out.flush();
             err.flush();
             return code;
         }, err);
+    }
+
+    if (!haveDisplay(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        nb::installTranslation(app);
+        err << nb::TrCli::tr("needlebench: no display to open the workbench on (neither DISPLAY nor "
+                             "WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X, or run a command "
+                             "without the window, such as 'needlebench demo'; 'needlebench --help' lists them.")
+            << '\n';
+        return 2;
     }
 
     // A signal while the window starts up is kept and handled once it is up.

@@ -1471,7 +1471,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kraftgrenze bei %1 N, %2 mm ausgelöst: die Achse wurde angehalten</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Devices not changed: close the calibration wizard first.</source>
         <translation>Geräte nicht gewechselt: schließen Sie zuerst den Kalibrierassistenten.</translation>
     </message>
@@ -1668,12 +1668,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-534"/>
+        <location line="-538"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+534"/>
+        <location line="+538"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
@@ -4589,6 +4589,11 @@ Befehle:
         <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>
+    <message>
+        <location filename="../app/main.cpp" line="+116"/>
+        <source>needlebench: no display to open the workbench on (neither DISPLAY nor WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X, or run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
+        <translation>needlebench: kein Bildschirm, auf dem die Werkbank geöffnet werden kann (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt). Melden Sie sich an einem Desktop an oder verwenden Sie ssh -X, oder führen Sie einen Befehl ohne Fenster aus, etwa &apos;needlebench demo&apos;; &apos;needlebench --help&apos; listet sie auf.</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
@@ -6340,7 +6345,7 @@ Befehle:
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>
     <message>
-        <location filename="../video/frame_reader.cpp" line="+15"/>
+        <location filename="../video/frame_reader.cpp" line="+16"/>
         <source>the video has no indexed frames</source>
         <translation>das Video hat keine indizierten Bilder</translation>
     </message>
@@ -6350,12 +6355,12 @@ Befehle:
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+73"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation>Bild %1 konnte nicht dekodiert werden (Datei abgeschnitten oder verändert?)</translation>
     </message>
@@ -6719,7 +6724,7 @@ Befehle:
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+1947"/>
+        <location filename="../video/needle_tracker.cpp" line="+2054"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
@@ -6744,7 +6749,7 @@ Befehle:
         <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+99"/>
+        <location filename="../video/tissue_tracker.cpp" line="+95"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
     </message>
@@ -6769,7 +6774,7 @@ Befehle:
         <translation>die Bewegung des Gewebes hebt sich nicht vom Bildrauschen ab</translation>
     </message>
     <message>
-        <location filename="../video/labels_from_video.cpp" line="+34"/>
+        <location filename="../video/labels_from_video.cpp" line="+35"/>
         <source>stopped before the video was read</source>
         <translation>angehalten, bevor das Video gelesen war</translation>
     </message>

@@ -1470,7 +1470,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Devices not changed: close the calibration wizard first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1665,12 +1665,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-534"/>
+        <location line="-538"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+534"/>
+        <location line="+538"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4502,6 +4502,11 @@ Commands:
         <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../app/main.cpp" line="+116"/>
+        <source>needlebench: no display to open the workbench on (neither DISPLAY nor WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X, or run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
@@ -6253,7 +6258,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_reader.cpp" line="+15"/>
+        <location filename="../video/frame_reader.cpp" line="+16"/>
         <source>the video has no indexed frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6263,12 +6268,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+73"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6632,7 +6637,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+1947"/>
+        <location filename="../video/needle_tracker.cpp" line="+2054"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6657,7 +6662,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+99"/>
+        <location filename="../video/tissue_tracker.cpp" line="+95"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6682,7 +6687,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/labels_from_video.cpp" line="+34"/>
+        <location filename="../video/labels_from_video.cpp" line="+35"/>
         <source>stopped before the video was read</source>
         <translation type="unfinished"></translation>
     </message>
