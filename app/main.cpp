@@ -2,6 +2,7 @@
 // headless command on QCoreApplication (no display needed).
 
 #include "commands.h"
+#include "display_guard.h"
 #include "guarded_main.h"
 #include "interrupt_watcher.h"
 #include "main_window.h"
@@ -30,25 +31,6 @@ static bool asksForHelpOrVersion(int argc, char** argv)
         return false;
     const QByteArray first(argv[1]);
     return first == "--help" || first == "-h" || first == "--version" || first == "-v";
-}
-
-// Whether the window has somewhere to go: without a display Qt aborts with advice to reinstall,
-// which sends an operator on an SSH session the wrong way.
-static bool haveDisplay(int argc, char** argv)
-{
-#if defined(Q_OS_LINUX) || defined(Q_OS_FREEBSD)
-    if (!qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("DISPLAY")
-        || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
-        return true;
-    for (int i = 1; i < argc; ++i)
-        if (QByteArray(argv[i]) == "-platform")
-            return true;
-    return false;
-#else
-    Q_UNUSED(argc);
-    Q_UNUSED(argv);
-    return true;
-#endif
 }
 
 // The window on the workbench: a signal (SIGTERM, SIGINT, SIGHUP) stops the stage and closes
@@ -110,20 +92,32 @@ int main(int argc, char** argv)
         }, err);
     }
 
-    if (!haveDisplay(argc, argv)) {
-        QCoreApplication app(argc, argv);
-        nb::installTranslation(app);
-        err << nb::TrCli::tr("needlebench: no display to open the workbench on (neither DISPLAY nor "
-                             "WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X, or run a command "
-                             "without the window, such as 'needlebench demo'; 'needlebench --help' lists them.")
-            << '\n';
-        return 2;
+    // What to say if there is no display to open the window on, in the operator's language
+    // (the translation needs an application; the window's own needs the display).
+    QString cannotOpen;
+    {
+        QCoreApplication probe(argc, argv);
+        nb::installTranslation(probe);
+        const QString commands = nb::TrCli::tr("Run a command without the window, such as 'needlebench demo'; "
+                                               "'needlebench --help' lists them.");
+        if (!nb::haveDisplay(argc, argv)) {
+            err << nb::TrCli::tr("needlebench: no display to open the workbench on (neither DISPLAY nor "
+                                 "WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X.")
+                << ' ' << commands << '\n';
+            return 2;
+        }
+        cannotOpen = nb::TrCli::tr("needlebench: the workbench cannot open on the display '%1' (see above): is "
+                                   "the desktop still running, or the SSH session still forwarding X?")
+                         .arg(qEnvironmentVariable("DISPLAY", qEnvironmentVariable("WAYLAND_DISPLAY")))
+                     + QLatin1Char(' ') + commands;
     }
 
     // A signal while the window starts up is kept and handled once it is up.
     nb::InterruptWatcher::catchEarly();
     return nb::runGuarded(QStringLiteral("(window)"), [&] {
+        nb::explainFatalStartup(cannotOpen);
         QApplication app(argc, argv);
+        nb::endStartupExplanation();
         nb::installTranslation(app);
         return nb::runGuarded(QStringLiteral("(window)"), [&] { return runWindow(app); }, err);
     }, err);

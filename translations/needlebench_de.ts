@@ -4590,9 +4590,19 @@ Befehle:
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+116"/>
-        <source>needlebench: no display to open the workbench on (neither DISPLAY nor WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X, or run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
-        <translation>needlebench: kein Bildschirm, auf dem die Werkbank geöffnet werden kann (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt). Melden Sie sich an einem Desktop an oder verwenden Sie ssh -X, oder führen Sie einen Befehl ohne Fenster aus, etwa &apos;needlebench demo&apos;; &apos;needlebench --help&apos; listet sie auf.</translation>
+        <location filename="../app/main.cpp" line="+101"/>
+        <source>Run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
+        <translation>Führen Sie einen Befehl ohne Fenster aus, etwa &apos;needlebench demo&apos;; &apos;needlebench --help&apos; listet sie auf.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>needlebench: no display to open the workbench on (neither DISPLAY nor WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X.</source>
+        <translation>needlebench: kein Bildschirm, auf dem die Werkbank geöffnet werden kann (weder DISPLAY noch WAYLAND_DISPLAY ist gesetzt). Melden Sie sich an einem Desktop an oder verwenden Sie ssh -X.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>needlebench: the workbench cannot open on the display &apos;%1&apos; (see above): is the desktop still running, or the SSH session still forwarding X?</source>
+        <translation>needlebench: Die Werkbank kann auf dem Bildschirm &apos;%1&apos; nicht geöffnet werden (siehe oben): Läuft der Desktop noch, oder leitet die SSH-Sitzung X noch weiter?</translation>
     </message>
 </context>
 <context>

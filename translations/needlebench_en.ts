@@ -4503,8 +4503,18 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+116"/>
-        <source>needlebench: no display to open the workbench on (neither DISPLAY nor WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X, or run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
+        <location filename="../app/main.cpp" line="+101"/>
+        <source>Run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>needlebench: no display to open the workbench on (neither DISPLAY nor WAYLAND_DISPLAY is set). Log in to a desktop or use ssh -X.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>needlebench: the workbench cannot open on the display &apos;%1&apos; (see above): is the desktop still running, or the SSH session still forwarding X?</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -78,6 +78,21 @@ private slots:
         QVERIFY2(err.contains(QStringLiteral("DISPLAY")) && err.contains(QStringLiteral("needlebench demo")), qPrintable(err));
         QVERIFY2(!err.contains(QStringLiteral("einstall")), qPrintable(err));
     }
+    void windowOnADisplayThatDoesNotAnswerSaysWhatToDo()
+    {
+        // A stale DISPLAY (the SSH session's forwarding gone): Qt cannot connect and aborts.
+        QProcessEnvironment env = withoutDisplay();
+        env.insert(QStringLiteral("DISPLAY"), QStringLiteral(":9731"));
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(NB_EXECUTABLE), QStringList());
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 2);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.contains(QStringLiteral("':9731'")) && err.contains(QStringLiteral("needlebench demo")), qPrintable(err));
+        QVERIFY2(!err.contains(QStringLiteral("einstall")), qPrintable(err));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)
