@@ -3,6 +3,7 @@
 // cut off by a crash resumes at the first run not completed when the same command runs again.
 
 #include "cli_support.h"
+#include "interrupt_watcher.h"
 #include "plan_runner.h"
 #include "core/tr.h"
 
@@ -15,6 +16,7 @@
 #include "core/run_file.h"
 #include "core/session.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -364,11 +366,29 @@ int cmdRun(const QStringList& args, Io io)
     const int total = int(plan.runs.size());
     QTextStream in(stdin);
     int failures = 0;
+    int exitSignal = 0;
     QString stopped;
+    // Ctrl+C, a closed terminal or `kill` stops the stage and closes the run as "interrupted",
+    // and the plan stops there; between runs, before the next. Real devices: the `acquire`
+    // command watches for itself while it records (one watcher at a time), and its run ends
+    // "interrupted" as well.
+    std::optional<InterruptWatcher> interrupts;
+    if (simulated) {
+        interrupts.emplace();
+        interrupts->announceOn(io.err, QStringLiteral("plan run"));
+    }
     for (int i = plan.firstIncomplete(); i >= 0 && i < total; ++i) {
         PlannedRun& run = plan.runs[std::size_t(i)];
         if (run.completed())
             continue;
+        if (interrupts) {
+            QCoreApplication::processEvents();  // a signal between runs
+            if (interrupts->signalNumber()) {
+                stopped = nb::TrCli::tr("the plan stops before run %1 (interrupted); run the same command again to resume").arg(run.number);
+                exitSignal = interrupts->signalNumber();
+                break;
+            }
+        }
         const QJsonObject settings = plan.settingsFor(run);
         if (!run.instruction.isEmpty()) {
             io.out << nb::TrCli::tr("operator: %1").arg(run.instruction) << '\n';
@@ -400,13 +420,24 @@ int cmdRun(const QStringList& args, Io io)
         req.metadata = planRunMetadata(plan, run, kPlanFile);
         io.out << nb::TrCli::tr("run %1 of %2: %3").arg(run.number).arg(total).arg(describeRun(plan, run)) << " ... ";
         io.out.flush();
+        if (interrupts)
+            req.interruption = [&] { return interrupts->interruption(); };
         const PlannedRunOutcome r = runPlannedRun(req);
+        const int signalled = interrupts ? interrupts->signalNumber() : 0;
         finishAttempt(plan, i, r.ok ? r.endReason : (r.endReason.isEmpty() ? QStringLiteral("not started") : r.endReason),
                       QDateTime::currentDateTimeUtc());
         try {
             writePlanFile(planPath, plan);
         } catch (const PlanError& e) {
             return fail(io, sub, e.message());
+        }
+        if (signalled || r.endReason == QLatin1String("interrupted")) {
+            io.out << nb::TrCli::tr("interrupted") << " " << fi.fileName() << '\n';
+            io.out.flush();
+            stopped = nb::TrCli::tr("the plan stops at run %1 (interrupted); run the same command again to resume").arg(run.number);
+            exitSignal = signalled;
+            ++failures;
+            break;
         }
         if (run.completed()) {
             io.out << (r.endReason == QLatin1String("completed") ? nb::TrCli::tr("done") : nb::TrCli::tr("done (%1)").arg(r.endReason))
@@ -427,6 +458,8 @@ int cmdRun(const QStringList& args, Io io)
     summary.insert(QStringLiteral("plan"), planPath);
     summary.insert(QStringLiteral("session"), s->dir());
     printJson(io, summary);
+    if (exitSignal)
+        return 128 + exitSignal;
     return failures ? Failure : Ok;
 }
 

@@ -141,7 +141,9 @@ PlannedRunOutcome runSimulated(const PlannedRunRequest& r)
         q.extraMetadata.set(QStringLiteral("video_file"), q.video.mid(q.video.lastIndexOf(QLatin1Char('/')) + 1));
         q.extraMetadata.set(QStringLiteral("video_offset_s"), q.videoOffset_s);
     }
-    const SimulatedRunResult result = simulateRun(q);
+    devices::RunOnceOptions options;
+    options.interruption = r.interruption;
+    const SimulatedRunResult result = simulateRun(q, options);
     if (!result.summary) {
         outcome.error = result.error;
         return outcome;

@@ -8,10 +8,13 @@
 #include "core/run.h"
 #include "devices/acquisition_engine.h"
 #include "devices/device_spec.h"
+#include "devices/run_once.h"
 
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
+
+#include <functional>
 
 namespace nb::cli {
 
@@ -22,6 +25,9 @@ struct PlannedRunRequest {
     QString truthFile;     // empty: none (the simulated rig only)
     Metadata metadata;     // factor_<name>, plan_* lines for the run file's header
     QString daq, stage;    // device specs; both empty or "sim": the simulated rig
+    // A signal during a simulated run (the `acquire` command watches its own): the run stops
+    // and is closed as "interrupted".
+    std::function<devices::RunOnceOptions::Interruption()> interruption;
 };
 
 struct PlannedRunOutcome {

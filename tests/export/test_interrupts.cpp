@@ -118,6 +118,44 @@ private slots:
         QCOMPARE(run.footer.value(QStringLiteral("signal"), QString()), QStringLiteral("SIGINT"));
     }
 
+    // `plan run` on the simulated rig: the run being recorded is closed as interrupted, the
+    // plan keeps it as an interrupted attempt and stops (it used to die with the signal, the
+    // run file without its footer and the plan's run left "running").
+    void planRunStopsOnSigint()
+    {
+        QTemporaryDir dir, config;
+        const QString planPath = dir.filePath(QStringLiteral("plan.json")), session = dir.filePath(QStringLiteral("session"));
+        QCOMPARE(runCli({"plan", "new", "--template", "friction", "--out", planPath, "--set", "cycles=1000"}).code, 0);
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("plan"), QStringLiteral("run"), planPath, QStringLiteral("--session"), session,
+                                                QStringLiteral("--yes")});
+        QVERIFY(p.waitForStarted());
+        const QString runFile = QDir(session).filePath(QStringLiteral("run_001_sine.csv"));
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < 20000 && QFileInfo(runFile).size() < 20000)
+            QTest::qWait(50);
+        QVERIFY2(QFileInfo(runFile).size() >= 20000, "plan run did not start recording");
+        ::kill(pid_t(p.processId()), SIGINT);
+        QVERIFY(p.waitForFinished(20000));
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 128 + SIGINT);
+        QVERIFY2(err.contains(QStringLiteral("SIGINT")) && err.contains(QStringLiteral("resume")), qPrintable(err));
+        const nb::Run run = nb::readRunFile(runFile).run;
+        QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("interrupted"));
+        QCOMPARE(run.footer.value(QStringLiteral("signal"), QString()), QStringLiteral("SIGINT"));
+        QVERIFY(!QFileInfo::exists(QDir(session).filePath(QStringLiteral("run_002_sine.csv"))));  // stopped there
+        QFile kept(QDir(session).filePath(QStringLiteral("plan.json")));
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        const QByteArray planText = kept.readAll();
+        QVERIFY2(planText.contains("\"result\": \"interrupted\"") && !planText.contains("\"status\": \"running\""), planText.left(1500).constData());
+    }
+
     // A .part left by a killed export goes with the next export; one still being written
     // (locked) stops a second export of the same file with a message.
     void leftoverPartFilesAreCleaned()
