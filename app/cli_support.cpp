@@ -2,6 +2,9 @@
 #include "core/tr.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QTemporaryFile>
 
 namespace nb::cli {
 
@@ -46,6 +49,54 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
 void printJson(Io io, const QJsonObject& object)
 {
     io.out << QJsonDocument(object).toJson(QJsonDocument::Indented);
+}
+
+bool samePath(const QString& a, const QString& b)
+{
+    const QFileInfo x(a), y(b);
+    if (x.exists() && y.exists())
+        return x.canonicalFilePath() == y.canonicalFilePath();
+    return QDir::cleanPath(x.absoluteFilePath()) == QDir::cleanPath(y.absoluteFilePath());
+}
+
+QString overwritesInput(const QString& option, const QString& out, const QStringList& inputs)
+{
+    for (const QString& in : inputs)
+        if (!in.isEmpty() && samePath(out, in))
+            return nb::TrCli::tr("%1 %2 is a file this command reads; writing it would destroy it. Name another file.").arg(option, out);
+    return {};
+}
+
+QString existingOutput(const QString& option, const QString& out, bool overwrite)
+{
+    if (overwrite || !QFileInfo(out).isFile())
+        return {};
+    return nb::TrCli::tr("%1 %2 already exists; it is kept. Name another file, or add --overwrite to replace it.").arg(option, out);
+}
+
+QString unwritableOutput(const QString& option, const QString& out)
+{
+    const QFileInfo info(out);
+    if (info.isDir())
+        return nb::TrCli::tr("%1 %2 is a folder; name a file").arg(option, out);
+    const QString folder = info.absolutePath();
+    if (!QFileInfo(folder).isDir())
+        return nb::TrCli::tr("%1 %2: the folder %3 does not exist").arg(option, out, folder);
+    QTemporaryFile probe(QDir(folder).filePath(QStringLiteral(".needlebench-write-check-XXXXXX")));
+    if (!probe.open())
+        return nb::TrCli::tr("%1 %2: no file can be written in %3 (%4)").arg(option, out, folder, probe.errorString());
+    return {};
+}
+
+QString notAnInsertionRun(const Run& run, const QString& path)
+{
+    const bool sine = run.meta(QStringLiteral("motion")).value_or(QString()) == QLatin1String("sine")
+                      || run.meta(QStringLiteral("protocol")).value_or(QString()) == QLatin1String("friction");
+    if (!sine)
+        return {};
+    return nb::TrCli::tr("warning: %1 is a friction run (a sine on the platform, by its header); contact, punctures and "
+                         "stiffness are read for insertion runs and mean little here ('needlebench fit friction' fits it)")
+        .arg(path);
 }
 
 std::optional<int> parseStopAt(const QString& value)

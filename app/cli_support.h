@@ -2,6 +2,7 @@
 // Small helpers shared by the cmd_*.cpp files.
 
 #include "commands.h"
+#include "core/run.h"
 
 #include <QCommandLineParser>
 #include <QJsonDocument>
@@ -18,6 +19,28 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
                int minPositional, int maxPositional, int* exitCode);
 
 void printJson(Io io, const QJsonObject& object);
+
+// Whether `a` and `b` name the same file, whether or not it exists yet (links resolved).
+bool samePath(const QString& a, const QString& b);
+
+// What to tell the user when the output `out` (given with `option`) is one of the command's
+// `inputs`: writing it would destroy what the command reads. Empty when it is none of them.
+QString overwritesInput(const QString& option, const QString& out, const QStringList& inputs);
+
+// What to tell the user when `out` (given with `option`) already exists and holds data a person
+// would not want to lose (a recording, labels made by hand), unless `overwrite` (--overwrite)
+// says so. Empty when it may be written.
+QString existingOutput(const QString& option, const QString& out, bool overwrite);
+
+// What to tell the user when `out` (given with `option`) cannot be written: a folder, in a folder
+// that does not exist, or where no file can be made. Checked before a run records, so that a
+// run is not recorded (the needle inserted) only to fail on its outputs. Empty when writable.
+QString unwritableOutput(const QString& option, const QString& out);
+
+// A warning for commands made for insertion runs (events, stiffness) given a friction run (a
+// sine on the platform, by its header): their contact and punctures are then meaningless.
+// Empty for any other run.
+QString notAnInsertionRun(const Run& run, const QString& path);
 
 // `--stop-at`: "puncture" is 1, "puncture:N" is N (N >= 1); nullopt for anything else.
 std::optional<int> parseStopAt(const QString& value);

@@ -39,7 +39,8 @@ int cmdAcquire(const QStringList& args, Io io)
     const QCommandLineOption slope(QStringLiteral("slope-v-per-g"), nb::TrCli::tr("sensor calibration slope d in V/g (default: settings, else nominal)"), QStringLiteral("D"));
     const QCommandLineOption stopAt(QStringLiteral("stop-at"), nb::TrCli::tr("stop the insertion at a puncture: puncture (the first) or puncture:N (the N-th)"), QStringLiteral("puncture[:N]"));
     const QCommandLineOption slowAfter(QStringLiteral("slow-after-puncture"), nb::TrCli::tr("slow the insertion to V mm/s after the first puncture"), QStringLiteral("V"));
-    for (const auto* o : {&daq, &stage, &protocol, &out, &rate, &velocity, &depth, &amplitude, &frequency, &cycles, &maxForce, &steps, &slope, &stopAt, &slowAfter})
+    const QCommandLineOption overwrite(QStringLiteral("overwrite"), nb::TrCli::tr("replace an existing run file"));
+    for (const auto* o : {&daq, &stage, &protocol, &out, &rate, &velocity, &depth, &amplitude, &frequency, &cycles, &maxForce, &steps, &slope, &stopAt, &slowAfter, &overwrite})
         parser.addOption(*o);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("acquire"), args, io, 0, 0, &code))
@@ -64,6 +65,11 @@ int cmdAcquire(const QStringList& args, Io io)
         return usage(nb::TrCli::tr("--protocol must be one of %1").arg(protocols.join(QLatin1Char('|'))));
     if (!parser.isSet(out))
         return usage(nb::TrCli::tr("--out RUN.csv is required"));
+    // Before the devices move: an earlier recording is not replaced, and a run is not
+    // recorded (the needle inserted) only to find it cannot be written.
+    if (QString e = existingOutput(QStringLiteral("--out"), parser.value(out), parser.isSet(overwrite)); !e.isEmpty()
+        || !(e = unwritableOutput(QStringLiteral("--out"), parser.value(out))).isEmpty())
+        return usage(e);
     QString error;
     auto number = [&](const QCommandLineOption& o, double lo, double hi) -> std::optional<double> {
         bool ok = false;

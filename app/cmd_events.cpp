@@ -49,6 +49,8 @@ int cmdEvents(const QStringList& args, Io io)
         const RunReadResult r = readRunFile(path);
         for (const QString& w : r.warnings)
             io.err << nb::TrCli::tr("warning: %1\n").arg(w);
+        if (const QString w = notAnInsertionRun(r.run, path); !w.isEmpty())
+            io.err << w << '\n';
         ev = detectEvents(r.run);
     } catch (const RunFileError& e) {
         io.err << "needlebench events: " << e.message() << '\n';

@@ -14,6 +14,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QScopeGuard>
 #include <csignal>
@@ -81,6 +82,19 @@ int cmdExport(const QStringList& args, Io io)
     }
     const QString dir = parser.positionalArguments().first();
     const QString target = parser.value(out);
+    // The export's files carry the runs' names: written into the session they read, they
+    // replace its run files (the calibration header and the raw columns gone).
+    if (fmt != QLatin1String("hdf5") && samePath(target, dir)) {
+        io.err << "needlebench export: " << nb::TrCli::tr("--out %1 is the session folder itself; its run files would be replaced. Name another folder.").arg(target) << '\n';
+        return Usage;
+    }
+    if (fmt == QLatin1String("hdf5") && QFileInfo(target).isFile()) {
+        QFile existing(target);
+        if (!existing.open(QIODevice::ReadOnly) || !existing.read(8).startsWith("\x89HDF\r\n\x1a\n")) {
+            io.err << "needlebench export: " << nb::TrCli::tr("--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.").arg(target) << '\n';
+            return Usage;
+        }
+    }
 
     LoadedDataset loaded;
     try {

@@ -158,6 +158,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
     for (qsizetype f = 0; f < files.size(); ++f) {
         const QString& path = files[f];
         const Run run = loadRun(path, io);
+        if (const QString w = notAnInsertionRun(run, path); !w.isEmpty())
+            io.err << w << '\n';
         events.push_back(onFile(path, [&] { return detectEvents(run); }));
         if (!labelFiles.isEmpty()) {
             Labels marks;

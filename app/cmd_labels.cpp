@@ -50,7 +50,9 @@ int cmdLabels(const QStringList& args, Io io)
     const QCommandLineOption tissueTrace(QStringLiteral("tissue-trace"),
                                          nb::TrCli::tr("write the tissue's velocity read off the video as CSV (time_s,tissue_velocity_mm_s)"),
                                          QStringLiteral("FILE.csv"));
-    parser.addOptions({out, json, video, videoOffset, videoDrift, tissueTrace});
+    const QCommandLineOption overwrite(QStringLiteral("overwrite"),
+                                       nb::TrCli::tr("replace an existing labels file (it may hold labels made by hand)"));
+    parser.addOptions({out, json, video, videoOffset, videoDrift, tissueTrace, overwrite});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("labels"), args, io, 2, 2, &code))
         return code;
@@ -63,6 +65,18 @@ int cmdLabels(const QStringList& args, Io io)
     QString outPath = parser.value(out);
     if (outPath.isEmpty())
         outPath = labelsPathFor(runPath);
+    {
+        const QStringList inputs{runPath, parser.value(video)};
+        QString clash = overwritesInput(QStringLiteral("--out"), outPath, inputs);
+        if (clash.isEmpty() && parser.isSet(tissueTrace))
+            clash = overwritesInput(QStringLiteral("--tissue-trace"), parser.value(tissueTrace), inputs + QStringList{outPath});
+        if (clash.isEmpty())
+            clash = existingOutput(parser.isSet(out) ? QStringLiteral("--out") : nb::TrCli::tr("the labels file"), outPath, parser.isSet(overwrite));
+        if (!clash.isEmpty()) {
+            io.err << "needlebench labels: " << clash << '\n';
+            return Usage;
+        }
+    }
     std::optional<TimelineMapping> given;
     if (parser.isSet(videoOffset) || parser.isSet(videoDrift)) {
         bool okOffset = true, okDrift = true;

@@ -171,10 +171,18 @@ int cmdNew(const QStringList& args, Io io)
                 return usage(io, sub, QStringLiteral("--levels %1: %2").arg(kv, e));
         }
         auto it = std::find_if(design.factors.begin(), design.factors.end(), [&](const PlanFactor& x) { return x.name == name; });
-        if (it != design.factors.end())
+        if (it != design.factors.end()) {
             *it = f;
-        else
+        } else {
+            // Allowed (a factor the rig knows nothing of: an operator, a batch), but a typo of
+            // a known name would otherwise multiply the plan without a word.
+            if (!knownPlanSettings().contains(name))
+                io.err << nb::TrCli::tr("needlebench plan new: note: '%1' is neither a setting of the rig nor a factor of this template "
+                                        "(%2); it is added as a new factor that the operator sets")
+                              .arg(name, QStringList(knownPlanSettings()).join(QStringLiteral(", ")))
+                       << '\n';
             design.factors.push_back(f);
+        }
         design.defaults.remove(name);
     }
     if (QFileInfo::exists(p.value(out))) {

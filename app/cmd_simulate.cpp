@@ -51,12 +51,13 @@ struct OptionSet {
     QCommandLineOption plateGap{QStringLiteral("plate-gap-mm"), nb::TrCli::tr("friction platform: free travel of the slab before it meets a plate (default 1.5)"), QStringLiteral("MM"), QStringLiteral("1.5")};
     QCommandLineOption forceNoise{QStringLiteral("force-noise-n"), nb::TrCli::tr("rms noise of the force sensor in newtons (default about 0.0012)"), QStringLiteral("N")};
     QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), nb::TrCli::tr("the video starts this long before the recording (default 0)"), QStringLiteral("S"), QStringLiteral("0")};
+    QCommandLineOption overwrite{QStringLiteral("overwrite"), nb::TrCli::tr("replace an existing run file")};
 
     void addTo(QCommandLineParser& p) const
     {
         for (const auto* o : {&protocol, &tissue, &tip, &seed, &rate, &velocity, &depth, &amplitude, &frequency,
                               &cycles, &thickness, &bone, &maxForce, &realtime, &truth, &out, &video, &videoOffset, &stopAt, &slowAfter,
-                              &stickBand, &plateGap, &forceNoise})
+                              &stickBand, &plateGap, &forceNoise, &overwrite})
             p.addOption(*o);
     }
 };
@@ -88,6 +89,23 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
     s.out = p.value(o.out);
     s.truth = p.value(o.truth);
     s.video = p.value(o.video);
+    // Every output is checked before the run: a run is not recorded only to fail on them.
+    if (const QString e = existingOutput(QStringLiteral("--out"), s.out, p.isSet(o.overwrite)); !e.isEmpty())
+        return e;
+    for (const auto& [option, path] : {std::pair{QStringLiteral("--out"), s.out}, {QStringLiteral("--truth"), s.truth}, {QStringLiteral("--video"), s.video}})
+        if (!path.isEmpty())
+            if (const QString e = unwritableOutput(option, path); !e.isEmpty())
+                return e;
+    if (!s.truth.isEmpty())
+        if (const QString e = overwritesInput(QStringLiteral("--truth"), s.truth, {s.out}); !e.isEmpty())
+            return nb::TrCli::tr("--truth and --out name the same file %1").arg(s.out);
+    if (!s.video.isEmpty()) {
+        if (!overwritesInput(QStringLiteral("--video"), s.video, {s.out, s.truth}).isEmpty())
+            return nb::TrCli::tr("--video names the same file as --out or --truth: %1").arg(s.video);
+        const QString type = QFileInfo(s.video).suffix().toLower();
+        if (type != QLatin1String("avi") && type != QLatin1String("mkv") && type != QLatin1String("mp4"))
+            return nb::TrCli::tr("--video %1: unknown video type '%2' (use .avi, .mkv or .mp4)").arg(s.video, type.isEmpty() ? QString() : QLatin1Char('.') + type);
+    }
     {
         bool ok = false;
         s.videoOffset_s = p.value(o.videoOffset).toDouble(&ok);
@@ -150,15 +168,16 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
         return error;
     if (*a <= 0.0 || *a > -s.rig.stage.minPosition_mm)
         return nb::TrCli::tr("--amplitude-mm must be in (0, %1]").arg(-s.rig.stage.minPosition_mm);
-    if (*f <= 0.0 || *f > 5.0)
-        return nb::TrCli::tr("--frequency-hz must be in (0, 5]");
+    // As `acquire` takes them: a run of 10^6 s filled the disk.
+    if (*f < 0.01 || *f > 5.0)
+        return nb::TrCli::tr("--frequency-hz must be in [0.01, 5]");
     if (*t <= 0.0)
         return nb::TrCli::tr("--thickness-mm must be positive");
     if (*m <= 0.0)
         return nb::TrCli::tr("--max-force-n must be positive");
     const int cycles = p.value(o.cycles).toInt(&ok);
-    if (!ok || cycles < 1)
-        return nb::TrCli::tr("--cycles must be a positive integer");
+    if (!ok || cycles < 1 || cycles > 1000)
+        return nb::TrCli::tr("--cycles must be a whole number in [1, 1000]");
     s.sine = {*a, *f, cycles};
     s.rig.thickness_mm = *t;
     s.maxForce_N = *m;

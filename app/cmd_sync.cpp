@@ -61,6 +61,8 @@ int cmdSync(const QStringList& args, Io io)
         double v[4] = {0, 0, 0, 0};
         for (int i = 0; ok && i < 4; ++i)
             v[i] = p[i].trimmed().toDouble(&ok);
+        for (int i = 0; ok && i < 4; ++i)
+            ok = std::isfinite(v[i]) && std::abs(v[i]) < 1e5;
         if (!ok || std::hypot(v[2] - v[0], v[3] - v[1]) < 2.0) {
             io.err << nb::TrCli::tr("needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points\n\n") << parser.helpText();
             return Usage;
@@ -70,11 +72,16 @@ int cmdSync(const QStringList& args, Io io)
     bool ok = false;
     SyncOptions& options = vso.sync;
     options.maxOffset_s = parser.value(maxOffset).toDouble(&ok);
-    if (!ok || options.maxOffset_s <= 0) {
+    if (!ok || !std::isfinite(options.maxOffset_s) || options.maxOffset_s <= 0) {
         io.err << nb::TrCli::tr("needlebench sync: --max-offset wants a positive number of seconds\n");
         return Usage;
     }
     const QString runPath = parser.positionalArguments()[0], videoPath = parser.positionalArguments()[1];
+    if (parser.isSet(trace))
+        if (const QString clash = overwritesInput(QStringLiteral("--trace"), parser.value(trace), {runPath, videoPath}); !clash.isEmpty()) {
+            io.err << "needlebench sync: " << clash << '\n';
+            return Usage;
+        }
     try {
         const Run run = readRunFile(runPath).run;
         const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
@@ -85,6 +92,10 @@ int cmdSync(const QStringList& args, Io io)
             return Usage;
         }
         vso.roi = region;
+        // No offset beyond the two records' lengths lets them overlap: a larger limit only
+        // made the search take minutes and gigabytes.
+        if (run.size() > 1)
+            options.maxOffset_s = std::min(options.maxOffset_s, index.duration_s() + (run.time_s.back() - run.time_s.front()) + 1.0);
         const video::VideoSync vs = video::syncVideoToRun(index, run, vso);
         const SyncResult& r = vs.result;
         if (parser.isSet(trace)) {

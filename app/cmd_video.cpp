@@ -93,6 +93,19 @@ int cmdFrame(const QStringList& args, Io io)
     }
     const QString path = parser.positionalArguments().first();
     const QString out = parser.value(outOpt);
+    // Checked before the video is read: OpenCV's own message names its source file, not ours.
+    if (!cv::haveImageWriter(out.toStdString())) {
+        io.err << nb::TrCli::tr("needlebench frame: --out %1: not an image type that can be written (use .png, .tif or .jpg)\n").arg(out);
+        return Usage;
+    }
+    if (const QString e = unwritableOutput(QStringLiteral("--out"), out); !e.isEmpty()) {
+        io.err << "needlebench frame: " << e << '\n';
+        return Failure;
+    }
+    if (const QString e = overwritesInput(QStringLiteral("--out"), out, {path}); !e.isEmpty()) {
+        io.err << "needlebench frame: " << e << '\n';
+        return Usage;
+    }
     try {
         nb::video::FrameReader reader(nb::video::loadOrBuildFrameIndex(path), 4);
         const auto frame = reader.read(n);

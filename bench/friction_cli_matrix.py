@@ -71,7 +71,7 @@ def judge(run, truth):
 
 def one(exe, work, c):
     base = os.path.join(work, c['name'])
-    sim = subprocess.run([exe, 'simulate', '--protocol', 'friction', '--thickness-mm', '30', '--tissue', c['tissue'],
+    sim = subprocess.run([exe, 'simulate', '--overwrite', '--protocol', 'friction', '--thickness-mm', '30', '--tissue', c['tissue'],
                           '--amplitude-mm', str(c['amplitude_mm']), '--frequency-hz', str(c['frequency_hz']),
                           '--seed', str(c['seed']), '--stick-band-mm-s', str(c['band_mm_s']),
                           '--plate-gap-mm', str(c['gap_mm']), '--out', base + '.csv', '--truth', base + '.json'],

@@ -133,7 +133,7 @@ def run_case(c, exe, root):
         motion = ['--protocol', 'friction', '--frequency-hz', str(c['frequency']), '--amplitude-mm', str(c['amplitude']),
                   '--cycles', str(c.get('cycles', max(2, min(6, int(12 * c['frequency'])))))]
     run = os.path.join(d, 'run.csv')
-    subprocess.run([exe, 'simulate', '--tissue', c['tissue'], '--seed', str(c['seed']), '--out', run] + motion,
+    subprocess.run([exe, 'simulate', '--overwrite', '--tissue', c['tissue'], '--seed', str(c['seed']), '--out', run] + motion,
                    check=True, capture_output=True)
     t, x = read_run(run)
     video = os.path.join(d, 'video.mp4' if c['codec'] == 'libx264' else 'video.avi')

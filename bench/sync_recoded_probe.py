@@ -49,7 +49,7 @@ def run_case(i, c, exe, root):
     run, rendered = os.path.join(d, 'run.csv'), os.path.join(d, 'rendered.avi')
     motion = (['--protocol', 'friction', '--cycles', '4', '--frequency-hz', str(c['frequency'])] if c['friction']
               else ['--protocol', 'stiffness', '--velocity-mm-s', str(c['velocity'])])
-    subprocess.run([exe, 'simulate', '--tissue', 'liver7', '--seed', str(c['seed']), '--out', run, '--video', rendered,
+    subprocess.run([exe, 'simulate', '--overwrite', '--tissue', 'liver7', '--seed', str(c['seed']), '--out', run, '--video', rendered,
                     '--video-offset-s', str(c['offset'])] + motion, check=True, capture_output=True)
     video = rendered
     if c['args'] is not None:

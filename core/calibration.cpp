@@ -29,6 +29,8 @@ CalibrationFit fitCalibration(std::span<const CalibrationPoint> points)
         const auto& p = points[std::size_t(i)];
         if (!std::isfinite(p.mass_g) || !std::isfinite(p.voltage_V))
             throw FitError(nb::TrCore::tr("calibration point %1 is not a finite number").arg(i + 1));
+        if (p.mass_g < 0.0)
+            throw FitError(nb::TrCore::tr("calibration point %1 has a negative mass (%2 g)").arg(i + 1).arg(p.mass_g));
         A(i, 0) = 1.0;
         A(i, 1) = p.mass_g;
         v(i) = p.voltage_V;
@@ -45,6 +47,16 @@ CalibrationFit fitCalibration(std::span<const CalibrationPoint> points)
     std::vector<double> observed(v.data(), v.data() + v.size());
     fit.r2 = rSquared(observed, fit.residuals_V);
     fit.rms_V = rms(fit.residuals_V);
+    // A slope the points cannot tell from zero is no calibration: every force would read as
+    // the same voltage (a sensor unplugged, an amplifier off).
+    const double meanMass = A.col(1).mean();
+    const double sxx = (A.col(1).array() - meanMass).square().sum();
+    const double slopeError = n > 2 ? std::sqrt(r.squaredNorm() / double(n - 2) / sxx) : 0.0;
+    if (fit.slope_V_per_g == 0.0 || std::abs(fit.slope_V_per_g) < 3.0 * slopeError)
+        throw FitError(nb::TrCore::tr("the voltage does not change with the mass (slope %1 V/g, standard error %2): "
+                                      "is the sensor connected and its amplifier on?")
+                           .arg(fit.slope_V_per_g, 0, 'g', 3)
+                           .arg(slopeError, 0, 'g', 3));
     return fit;
 }
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <map>
 #include <set>
 
 namespace nb {
@@ -246,6 +247,8 @@ QString checkPlanSetting(const QString& key, const QJsonValue& value)
     if (key == QLatin1String("cycles") || key == QLatin1String("repeat") || key == QLatin1String("seed")) {
         const double v = value.toDouble(-1.0);
         const double lo = key == QLatin1String("seed") ? 0.0 : 1.0;
+        if (key == QLatin1String("cycles") && value.isDouble() && v > 1000.0)
+            return nb::TrCore::tr("%1 is outside %2 to %3").arg(levelText(value)).arg(1).arg(1000);
         if (!value.isDouble() || v < lo || v != std::floor(v) || v > 9.0e15)
             return key == QLatin1String("seed") ? nb::TrCore::tr("expected a non-negative integer") : nb::TrCore::tr("expected a positive integer");
         return {};
@@ -254,6 +257,16 @@ QString checkPlanSetting(const QString& key, const QJsonValue& value)
         if (!value.isDouble() || !std::isfinite(value.toDouble()) || value.toDouble() <= 0.0)
             return nb::TrCore::tr("expected a positive number, got %1").arg(value.isString() ? QLatin1Char('"') + value.toString() + QLatin1Char('"')
                                                                                            : levelText(value));
+        // The ranges `acquire` takes: a plan checked when it is made, not at the run that
+        // fails (a frequency of 10^-6 Hz recorded until the disk was full).
+        static const std::map<QString, std::pair<double, double>> ranges{
+            {QStringLiteral("velocity_mm_s"), {0.01, 50.0}},  {QStringLiteral("depth_mm"), {0.01, 150.0}},
+            {QStringLiteral("amplitude_mm"), {0.01, 10.0}},   {QStringLiteral("frequency_hz"), {0.01, 5.0}},
+            {QStringLiteral("rate_hz"), {100.0, 10000.0}},    {QStringLiteral("max_force_n"), {0.01, 20.0}},
+            {QStringLiteral("slow_after_puncture_mm_s"), {0.001, 50.0}}, {QStringLiteral("thickness_mm"), {1.0, 200.0}},
+            {QStringLiteral("bone_depth_mm"), {0.01, 150.0}}};
+        if (const auto r = ranges.find(key); r != ranges.end() && (value.toDouble() < r->second.first || value.toDouble() > r->second.second))
+            return nb::TrCore::tr("%1 is outside %2 to %3").arg(levelText(value)).arg(r->second.first).arg(r->second.second);
         return {};
     }
     return isScalar(value) ? QString() : nb::TrCore::tr("expected a number or a text");

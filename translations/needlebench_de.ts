@@ -2892,6 +2892,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Insertion nach der ersten Punktion auf V mm/s verlangsamen</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+5"/>
+        <source>replace an existing run file</source>
+        <translation>eine vorhandene Laufdatei ersetzen</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>Run &apos;needlebench acquire --help&apos; for the options.</source>
         <translation>&apos;needlebench acquire --help&apos; zeigt die Optionen.</translation>
@@ -2903,18 +2909,18 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+38"/>
+        <location filename="../app/cmd_simulate.cpp" line="+34"/>
         <source>--out RUN.csv is required</source>
         <translation>--out LAUF.csv ist erforderlich</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>--%1 must be a number in [%2, %3] (got &apos;%4&apos;)</source>
         <translation>--%1 muss eine Zahl in [%2, %3] sein (erhalten: &apos;%4&apos;)</translation>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+105"/>
+        <location filename="../app/cmd_simulate.cpp" line="+123"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
@@ -2934,10 +2940,10 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location filename="../app/cmd_events.cpp" line="+40"/>
         <location filename="../app/cmd_fit.cpp" line="+85"/>
         <location line="+49"/>
-        <location line="+131"/>
-        <location filename="../app/cmd_plan.cpp" line="+75"/>
-        <location line="+156"/>
-        <location line="+255"/>
+        <location line="+133"/>
+        <location filename="../app/cmd_plan.cpp" line="+77"/>
+        <location line="+164"/>
+        <location line="+286"/>
         <location filename="../app/cmd_sync.cpp" line="+36"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -2977,14 +2983,14 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-229"/>
+        <location filename="../app/cmd_fit.cpp" line="-231"/>
         <source>warning: %1
 </source>
         <translation>Warnung: %1
 </translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>events of %1 (force zeroed by %2 N, noise %3 N)
 </source>
         <translation>Ereignisse von %1 (Kraft um %2 N genullt, Rauschen %3 N)
@@ -3025,7 +3031,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+41"/>
+        <location filename="../app/cmd_export.cpp" line="+42"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation>Warnung: %1: das Video konnte nicht neben den Export kopiert werden; es wird an seinem Ort verknüpft</translation>
     </message>
@@ -3075,6 +3081,16 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location line="-1"/>
         <source>--out PATH is required</source>
         <translation>--out PFAD ist erforderlich</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>--out %1 is the session folder itself; its run files would be replaced. Name another folder.</source>
+        <translation>--out %1 ist der Sitzungsordner selbst; seine Laufdateien würden ersetzt. Geben Sie einen anderen Ordner an.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.</source>
+        <translation>--out %1 existiert und ist keine HDF5-Datei (eine Laufdatei?); sie bleibt erhalten. Geben Sie eine andere Datei an.</translation>
     </message>
     <message>
         <location filename="../app/cmd_demo.cpp" line="+59"/>
@@ -3174,7 +3190,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+15"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="+15"/>
+        <location filename="../app/cmd_export.cpp" line="+13"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -3349,7 +3365,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation>Steifigkeit f = a1*x + a2*x^2, x = Tiefe nach dem Kontakt [mm]
@@ -3660,7 +3676,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die aus dem Video gelesene Geschwindigkeit des Gewebes als CSV schreiben (time_s,tissue_velocity_mm_s)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
+        <source>replace an existing labels file (it may hold labels made by hand)</source>
+        <translation>eine vorhandene Label-Datei ersetzen (sie kann von Hand gesetzte Labels enthalten)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
 
 </source>
@@ -3669,7 +3690,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
+        <source>the labels file</source>
+        <translation>die Label-Datei</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>needlebench labels: --video-offset-s wants seconds and --video-drift a rate error below 0.1
 </source>
         <translation>needlebench labels: --video-offset-s erwartet Sekunden und --video-drift einen Gangfehler unter 0,1
@@ -3690,12 +3716,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="-87"/>
+        <location line="-101"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+108"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
@@ -3709,7 +3735,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-260"/>
+        <location filename="../app/cmd_simulate.cpp" line="-279"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -3779,7 +3805,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>das Video beginnt so lange vor der Aufzeichnung (Standard 0)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation>--%1: &apos;%2&apos; ist keine Zahl</translation>
     </message>
@@ -3794,7 +3820,22 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>unbekanntes Protokoll &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
+        <source>--truth and --out name the same file %1</source>
+        <translation>--truth und --out nennen dieselbe Datei %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--video names the same file as --out or --truth: %1</source>
+        <translation>--video nennt dieselbe Datei wie --out oder --truth: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--video %1: unknown video type &apos;%2&apos; (use .avi, .mkv or .mp4)</source>
+        <translation>--video %1: unbekannter Videotyp &apos;%2&apos; (.avi, .mkv oder .mp4 verwenden)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>--video-offset-s wants seconds between 0 and 600</source>
         <translation>--video-offset-s erwartet Sekunden zwischen 0 und 600</translation>
     </message>
@@ -3836,12 +3877,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--amplitude-mm muss in (0, %1] liegen</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>--frequency-hz must be in (0, 5]</source>
-        <translation>--frequency-hz muss in (0, 5] liegen</translation>
+        <location line="+3"/>
+        <source>--frequency-hz must be in [0.01, 5]</source>
+        <translation>--frequency-hz muss in [0.01, 5] liegen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
+        <source>--cycles must be a whole number in [1, 1000]</source>
+        <translation>--cycles muss eine ganze Zahl in [1, 1000] sein</translation>
+    </message>
+    <message>
+        <location line="-5"/>
         <source>--thickness-mm must be positive</source>
         <translation>--thickness-mm muss positiv sein</translation>
     </message>
@@ -3851,12 +3897,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--max-force-n muss positiv sein</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>--cycles must be a positive integer</source>
-        <translation>--cycles muss eine positive ganze Zahl sein</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>--stick-band-mm-s must be in (0, 50]</source>
         <translation>--stick-band-mm-s muss in (0, 50] liegen</translation>
     </message>
@@ -3886,7 +3927,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>&apos;needlebench simulate --help&apos; zeigt die Optionen.</translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-427"/>
+        <location filename="../app/cmd_plan.cpp" line="-466"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation>&apos;needlebench plan %1 --help&apos; zeigt die Optionen.</translation>
     </message>
@@ -3913,12 +3954,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+54"/>
-        <location line="+139"/>
+        <location line="+147"/>
         <source>runs</source>
         <translation>Läufe</translation>
     </message>
     <message>
-        <location line="-131"/>
+        <location line="-139"/>
         <source>the template (see &apos;plan templates&apos;)</source>
         <translation>die Vorlage (siehe &apos;plan templates&apos;)</translation>
     </message>
@@ -3988,7 +4029,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--levels %1: FAKTOR=S1,S2,... erwartet</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+14"/>
+        <source>needlebench plan new: note: &apos;%1&apos; is neither a setting of the rig nor a factor of this template (%2); it is added as a new factor that the operator sets</source>
+        <translation>needlebench plan new: Hinweis: &apos;%1&apos; ist weder eine Einstellung des Prüfstands noch ein Faktor dieser Vorlage (%2); er wird als neuer Faktor hinzugefügt, den der Bediener einstellt</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>%1 holds a plan with recorded runs; it is not overwritten</source>
         <translation>%1 enthält einen Plan mit aufgezeichneten Läufen; er wird nicht überschrieben</translation>
     </message>
@@ -4034,12 +4080,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+6"/>
-        <location line="+123"/>
+        <location line="+152"/>
         <source>run %1: %2</source>
         <translation>Lauf %1: %2</translation>
     </message>
     <message>
-        <location line="-112"/>
+        <location line="-141"/>
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation>der Sitzungsordner (wird angelegt, wenn er fehlt; enthält plan.json und die Läufe)</translation>
     </message>
@@ -4089,7 +4135,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Lauf %1 wurde unterbrochen; er läuft erneut</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+29"/>
+        <source>the plan stops before run %1 (interrupted); run the same command again to resume</source>
+        <translation>der Plan hält vor Lauf %1 an (unterbrochen); denselben Befehl erneut ausführen, um fortzufahren</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>operator: %1</source>
         <translation>Bediener: %1</translation>
     </message>
@@ -4104,7 +4155,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Lauf %1 von %2: %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
+        <source>interrupted</source>
+        <translation>unterbrochen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the plan stops at run %1 (interrupted); run the same command again to resume</source>
+        <translation>der Plan hält bei Lauf %1 an (unterbrochen); denselben Befehl erneut ausführen, um fortzufahren</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>done</source>
         <translation>fertig</translation>
     </message>
@@ -4124,7 +4185,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>der Plan hält bei Lauf %1 an; die Ursache beheben und denselben Befehl erneut ausführen, um fortzusetzen</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
         <location filename="../app/simulated_run.cpp" line="+165"/>
         <source>cannot write %1: %2</source>
@@ -4215,7 +4276,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points
 
 </source>
@@ -4231,7 +4292,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation>needlebench sync: --roi %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6
@@ -4239,7 +4300,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location filename="../app/cmd_labels.cpp" line="-23"/>
-        <location filename="../app/cmd_sync.cpp" line="+11"/>
+        <location filename="../app/cmd_sync.cpp" line="+15"/>
         <source>%1: cannot write the trace here</source>
         <translation>%1: die Spur kann hier nicht geschrieben werden</translation>
     </message>
@@ -4423,7 +4484,14 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
+        <source>needlebench frame: --out %1: not an image type that can be written (use .png, .tif or .jpg)
+</source>
+        <translation>needlebench frame: --out %1: kein Bildtyp, der geschrieben werden kann (.png, .tif oder .jpg verwenden)
+</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>needlebench frame: %1: %2
 </source>
         <translation>needlebench frame: %1: %2
@@ -4444,7 +4512,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cli_support.cpp" line="+13"/>
+        <location filename="../app/cli_support.cpp" line="+16"/>
         <source>show this help</source>
         <translation>diese Hilfe anzeigen</translation>
     </message>
@@ -4457,6 +4525,36 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location line="+1"/>
         <source>too many arguments</source>
         <translation>zu viele Argumente</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 %2 is a file this command reads; writing it would destroy it. Name another file.</source>
+        <translation>%1 %2 ist eine Datei, die dieser Befehl liest; sie zu schreiben würde sie zerstören. Geben Sie eine andere Datei an.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 %2 already exists; it is kept. Name another file, or add --overwrite to replace it.</source>
+        <translation>%1 %2 existiert bereits; sie bleibt erhalten. Geben Sie eine andere Datei an oder fügen Sie --overwrite hinzu, um sie zu ersetzen.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 %2 is a folder; name a file</source>
+        <translation>%1 %2 ist ein Ordner; geben Sie eine Datei an</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 %2: the folder %3 does not exist</source>
+        <translation>%1 %2: der Ordner %3 existiert nicht</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 %2: no file can be written in %3 (%4)</source>
+        <translation>%1 %2: in %3 kann keine Datei geschrieben werden (%4)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>warning: %1 is a friction run (a sine on the platform, by its header); contact, punctures and stiffness are read for insertion runs and mean little here (&apos;needlebench fit friction&apos; fits it)</source>
+        <translation>Warnung: %1 ist ein Reibungslauf (laut Kopfzeilen ein Sinus auf der Plattform); Kontakt, Durchstiche und Steifigkeit werden für Einstichläufe bestimmt und sagen hier wenig aus (&apos;needlebench fit friction&apos; passt ihn an)</translation>
     </message>
     <message>
         <location filename="../app/commands.cpp" line="+28"/>
@@ -4565,7 +4663,7 @@ Befehle:
         <translation>%1: keine Spaltenüberschrift</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+130"/>
         <source>the run did not start (exit code %1)</source>
         <translation>der Lauf hat nicht begonnen (Rückgabewert %1)</translation>
     </message>
@@ -4692,7 +4790,7 @@ Befehle:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+945"/>
+        <location filename="../core/plan.cpp" line="+958"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -5046,12 +5144,22 @@ Befehle:
         <translation>Kalibrierpunkt %1 ist keine endliche Zahl</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>calibration point %1 has a negative mass (%2 g)</source>
+        <translation>Kalibrierpunkt %1 hat eine negative Masse (%2 g)</translation>
+    </message>
+    <message>
         <location line="+7"/>
         <source>calibration needs at least two different masses</source>
         <translation>die Kalibrierung braucht mindestens zwei verschiedene Massen</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
+        <source>the voltage does not change with the mass (slope %1 V/g, standard error %2): is the sensor connected and its amplifier on?</source>
+        <translation>die Spannung ändert sich nicht mit der Masse (Steigung %1 V/g, Standardfehler %2): Ist der Sensor angeschlossen und sein Verstärker eingeschaltet?</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../core/labels.cpp" line="-61"/>
         <location filename="../core/run_file.cpp" line="-296"/>
         <source>cannot open: %1</source>
@@ -5363,7 +5471,7 @@ Befehle:
         <translation>keine Läufe zum Fitten</translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-862"/>
+        <location filename="../core/plan.cpp" line="-874"/>
         <source>neither motion nor protocol is set</source>
         <translation>weder Bewegung noch Protokoll ist gesetzt</translation>
     </message>
@@ -5419,33 +5527,39 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+503"/>
+        <location line="+515"/>
         <source>expected true or false</source>
         <translation>true oder false erwartet</translation>
     </message>
     <message>
-        <location line="-499"/>
+        <location line="-511"/>
         <source>expected &quot;puncture&quot; or &quot;puncture:N&quot; (N &gt;= 1)</source>
         <translation>&quot;puncture&quot; oder &quot;puncture:N&quot; (N &gt;= 1) erwartet</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location line="+18"/>
+        <source>%1 is outside %2 to %3</source>
+        <translation>%1 liegt außerhalb von %2 bis %3</translation>
+    </message>
+    <message>
+        <location line="-16"/>
         <source>expected a non-negative integer</source>
         <translation>nicht negative ganze Zahl erwartet</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+525"/>
+        <location line="+535"/>
         <source>expected a positive integer</source>
         <translation>positive ganze Zahl erwartet</translation>
     </message>
     <message>
-        <location line="-520"/>
+        <location line="-530"/>
         <source>expected a positive number, got %1</source>
         <translation>positive Zahl erwartet, erhalten: %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+14"/>
         <source>expected a number or a text</source>
         <translation>Zahl oder Text erwartet</translation>
     </message>
@@ -6345,7 +6459,7 @@ Befehle:
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>the file ends early: %1 of %2 frames are readable (truncated?)</source>
         <translation>die Datei endet zu früh: %1 von %2 Bildern sind lesbar (abgeschnitten?)</translation>
     </message>

@@ -2889,6 +2889,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+5"/>
+        <source>replace an existing run file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>Run &apos;needlebench acquire --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
@@ -2900,18 +2906,18 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+38"/>
+        <location filename="../app/cmd_simulate.cpp" line="+34"/>
         <source>--out RUN.csv is required</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>--%1 must be a number in [%2, %3] (got &apos;%4&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+105"/>
+        <location filename="../app/cmd_simulate.cpp" line="+123"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2931,10 +2937,10 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <location filename="../app/cmd_events.cpp" line="+40"/>
         <location filename="../app/cmd_fit.cpp" line="+85"/>
         <location line="+49"/>
-        <location line="+131"/>
-        <location filename="../app/cmd_plan.cpp" line="+75"/>
-        <location line="+156"/>
-        <location line="+255"/>
+        <location line="+133"/>
+        <location filename="../app/cmd_plan.cpp" line="+77"/>
+        <location line="+164"/>
+        <location line="+286"/>
         <location filename="../app/cmd_sync.cpp" line="+36"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -2972,13 +2978,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-229"/>
+        <location filename="../app/cmd_fit.cpp" line="-231"/>
         <source>warning: %1
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>events of %1 (force zeroed by %2 N, noise %3 N)
 </source>
         <translation type="unfinished"></translation>
@@ -3016,7 +3022,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+41"/>
+        <location filename="../app/cmd_export.cpp" line="+42"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3065,6 +3071,16 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="-1"/>
         <source>--out PATH is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>--out %1 is the session folder itself; its run files would be replaced. Name another folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3165,7 +3181,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+15"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="+15"/>
+        <location filename="../app/cmd_export.cpp" line="+13"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3336,7 +3352,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation type="unfinished"></translation>
@@ -3624,14 +3640,24 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
+        <source>replace an existing labels file (it may hold labels made by hand)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
 
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
+        <source>the labels file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>needlebench labels: --video-offset-s wants seconds and --video-drift a rate error below 0.1
 </source>
         <translation type="unfinished"></translation>
@@ -3649,12 +3675,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-87"/>
+        <location line="-101"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+108"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
@@ -3666,7 +3692,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-260"/>
+        <location filename="../app/cmd_simulate.cpp" line="-279"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3736,7 +3762,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3751,7 +3777,22 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
+        <source>--truth and --out name the same file %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--video names the same file as --out or --truth: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--video %1: unknown video type &apos;%2&apos; (use .avi, .mkv or .mp4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>--video-offset-s wants seconds between 0 and 600</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3793,12 +3834,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>--frequency-hz must be in (0, 5]</source>
+        <location line="+3"/>
+        <source>--frequency-hz must be in [0.01, 5]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
+        <source>--cycles must be a whole number in [1, 1000]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-5"/>
         <source>--thickness-mm must be positive</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3808,12 +3854,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>--cycles must be a positive integer</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>--stick-band-mm-s must be in (0, 50]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3843,7 +3884,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-427"/>
+        <location filename="../app/cmd_plan.cpp" line="-466"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3862,12 +3903,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+54"/>
-        <location line="+139"/>
+        <location line="+147"/>
         <source>runs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-131"/>
+        <location line="-139"/>
         <source>the template (see &apos;plan templates&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3937,7 +3978,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+14"/>
+        <source>needlebench plan new: note: &apos;%1&apos; is neither a setting of the rig nor a factor of this template (%2); it is added as a new factor that the operator sets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>%1 holds a plan with recorded runs; it is not overwritten</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3983,12 +4029,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+123"/>
+        <location line="+152"/>
         <source>run %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-112"/>
+        <location line="-141"/>
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4038,7 +4084,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+29"/>
+        <source>the plan stops before run %1 (interrupted); run the same command again to resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>operator: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4053,7 +4104,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
+        <source>interrupted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the plan stops at run %1 (interrupted); run the same command again to resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>done</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4073,7 +4134,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
         <location filename="../app/simulated_run.cpp" line="+165"/>
         <source>cannot write %1: %2</source>
@@ -4162,7 +4223,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points
 
 </source>
@@ -4175,14 +4236,14 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../app/cmd_labels.cpp" line="-23"/>
-        <location filename="../app/cmd_sync.cpp" line="+11"/>
+        <location filename="../app/cmd_sync.cpp" line="+15"/>
         <source>%1: cannot write the trace here</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4347,7 +4408,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
+        <source>needlebench frame: --out %1: not an image type that can be written (use .png, .tif or .jpg)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>needlebench frame: %1: %2
 </source>
         <translation type="unfinished"></translation>
@@ -4365,7 +4432,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cli_support.cpp" line="+13"/>
+        <location filename="../app/cli_support.cpp" line="+16"/>
         <source>show this help</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4377,6 +4444,36 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+1"/>
         <source>too many arguments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 %2 is a file this command reads; writing it would destroy it. Name another file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 %2 already exists; it is kept. Name another file, or add --overwrite to replace it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 %2 is a folder; name a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 %2: the folder %3 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 %2: no file can be written in %3 (%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>warning: %1 is a friction run (a sine on the platform, by its header); contact, punctures and stiffness are read for insertion runs and mean little here (&apos;needlebench fit friction&apos; fits it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4478,7 +4575,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+130"/>
         <source>the run did not start (exit code %1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4605,7 +4702,7 @@ Commands:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+945"/>
+        <location filename="../core/plan.cpp" line="+958"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -4959,12 +5056,22 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>calibration point %1 has a negative mass (%2 g)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+7"/>
         <source>calibration needs at least two different masses</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
+        <source>the voltage does not change with the mass (slope %1 V/g, standard error %2): is the sensor connected and its amplifier on?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../core/labels.cpp" line="-61"/>
         <location filename="../core/run_file.cpp" line="-296"/>
         <source>cannot open: %1</source>
@@ -5276,7 +5383,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-862"/>
+        <location filename="../core/plan.cpp" line="-874"/>
         <source>neither motion nor protocol is set</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5332,33 +5439,39 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+503"/>
+        <location line="+515"/>
         <source>expected true or false</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-499"/>
+        <location line="-511"/>
         <source>expected &quot;puncture&quot; or &quot;puncture:N&quot; (N &gt;= 1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+6"/>
+        <location line="+18"/>
+        <source>%1 is outside %2 to %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-16"/>
         <source>expected a non-negative integer</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+525"/>
+        <location line="+535"/>
         <source>expected a positive integer</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-520"/>
+        <location line="-530"/>
         <source>expected a positive number, got %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+14"/>
         <source>expected a number or a text</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6258,7 +6371,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>the file ends early: %1 of %2 frames are readable (truncated?)</source>
         <translation type="unfinished"></translation>
     </message>

@@ -172,7 +172,12 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     const double picturesPerNominal = index.fpsNominal * index.frameDuration();
     const bool timeBase = picturesPerNominal > 2.0;
     const int expected = timeBase ? int(std::lround(index.containerFrames / picturesPerNominal)) : index.containerFrames;
-    if (!(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1)
+    // Frames missing in the middle (a capture that dropped them: the timestamps jump) are no
+    // sign of a cut file; only a file whose readable frames end short of its duration is.
+    const double readSpan_s = index.frames.back().time_s - index.frames.front().time_s + index.frameDuration();
+    const double containerSpan_s = index.fpsNominal > 0.0 ? index.containerFrames / index.fpsNominal : 0.0;
+    const bool endsShort = !index.timestampsMonotonic || readSpan_s < containerSpan_s * (timeBase ? 0.9 : 0.98) - index.frameDuration();
+    if (!(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1 && endsShort)
         index.warnings << nb::TrDevices::tr("the file ends early: %1 of %2 frames are readable (truncated?)")
                               .arg(index.size())
                               .arg(expected);

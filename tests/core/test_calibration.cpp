@@ -75,6 +75,14 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(FitError, fitCalibration(same));
         const std::vector<CalibrationPoint> nan{{0, 0.1}, {100, std::nan("")}};
         QVERIFY_THROWS_EXCEPTION(FitError, fitCalibration(nan));
+        // A sensor that reads the same whatever the mass (unplugged): no calibration, where
+        // one with a slope of 0 V/g used to be printed.
+        const std::vector<CalibrationPoint> flat{{0, 0.42}, {100, 0.42}, {200, 0.42}, {500, 0.42}};
+        QVERIFY_THROWS_EXCEPTION(FitError, fitCalibration(flat));
+        const std::vector<CalibrationPoint> noise{{0, 0.4201}, {100, 0.4199}, {200, 0.4202}, {500, 0.4200}, {1000, 0.4199}};
+        QVERIFY_THROWS_EXCEPTION(FitError, fitCalibration(noise));
+        const std::vector<CalibrationPoint> negative{{0, 0.015}, {-100, 0.003}, {200, 0.039}};
+        QVERIFY_THROWS_EXCEPTION(FitError, fitCalibration(negative));
     }
     void readsFileFromDisk()
     {

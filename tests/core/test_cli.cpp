@@ -1,5 +1,7 @@
 // The command-line contract: the real executable, run as a user's script would.
 #include <QProcess>
+#include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include "support/needlebench_cli.h"
 
@@ -63,6 +65,83 @@ private slots:
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         QCOMPARE(p.exitCode(), 0);
         QVERIFY(p.readAllStandardOutput().startsWith("needlebench "));
+    }
+    // An output named like one of the command's inputs, an existing recording or labels file,
+    // an output that cannot be written: refused before anything is read or recorded, and the
+    // files stay as they were (each of these once replaced a run file or hand-made labels).
+    void outputsKeepWhatIsThere()
+    {
+        QTemporaryDir dir;
+        const QString run = dir.filePath(QStringLiteral("run_001_sine.csv"));
+        QCOMPARE(TestCli::run({"simulate", "--protocol", "friction", "--cycles", "1", "--frequency-hz", "1", "--out", run}).code, 0);
+        auto bytes = [](const QString& path) {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        const QByteArray recorded = bytes(run);
+        QVERIFY(recorded.contains("time_s"));
+        auto refused = [&](const QStringList& args, const QString& says) {
+            const nbtest::CliResult r = TestCli::run(args);
+            QVERIFY2(r.code == 2 && r.err.contains(says), qPrintable(args.join(QLatin1Char(' ')) + QStringLiteral(": exit %1: ").arg(r.code) + r.err));
+            QCOMPARE(bytes(run), recorded);
+        };
+        const QString video = dir.filePath(QStringLiteral("run_001_sine.avi"));
+        refused({"sync", run, video, "--trace", run}, QStringLiteral("--trace"));
+        refused({"labels", "suggest", run, "--out", run}, QStringLiteral("--out"));
+        refused({"labels", "suggest", run, "--tissue-trace", run}, QStringLiteral("--tissue-trace"));
+        refused({"export", dir.path(), "--format", "csv", "--out", dir.path()}, QStringLiteral("session folder"));
+        refused({"export", dir.path(), "--format", "hdf5", "--out", run}, QStringLiteral("not an HDF5 file"));
+        refused({"simulate", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
+        refused({"acquire", "--daq", "sim", "--stage", "sim", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
+
+        // Labels made by hand are kept unless --overwrite says otherwise.
+        const QString labels = dir.filePath(QStringLiteral("run_001_sine.labels.csv"));
+        QCOMPARE(TestCli::run({"labels", "suggest", run}).code, 0);
+        {
+            QFile f(labels);
+            QVERIFY(f.open(QIODevice::Append));
+            f.write("manual,my note,1.0,2.0,made by hand\n");
+        }
+        const QByteArray handMade = bytes(labels);
+        const nbtest::CliResult again = TestCli::run({"labels", "suggest", run});
+        QCOMPARE(again.code, 2);
+        QVERIFY2(again.err.contains(labels) && again.err.contains(QStringLiteral("--overwrite")), qPrintable(again.err));
+        QCOMPARE(bytes(labels), handMade);
+        QCOMPARE(TestCli::run({"labels", "suggest", run, "--overwrite"}).code, 0);
+        QVERIFY(!bytes(labels).contains("made by hand"));
+
+        // Outputs checked before the run is recorded: nothing recorded when one cannot be made.
+        const QString fresh = dir.filePath(QStringLiteral("fresh.csv"));
+        for (const QStringList& bad : {QStringList{"--video", dir.filePath(QStringLiteral("fresh.mov"))},
+                                       QStringList{"--truth", dir.filePath(QStringLiteral("no/such/folder/t.json"))},
+                                       QStringList{"--truth", fresh}}) {
+            const nbtest::CliResult r = TestCli::run(QStringList{"simulate", "--protocol", "stiffness", "--out", fresh} + bad);
+            QVERIFY2(r.code == 2, qPrintable(bad.join(QLatin1Char(' ')) + QStringLiteral(": exit %1: ").arg(r.code) + r.err));
+            QVERIFY2(!QFileInfo::exists(fresh), qPrintable(bad.join(QLatin1Char(' '))));
+        }
+        // Runs that would never end (10^6 s) are refused, by the command and by a plan.
+        QCOMPARE(TestCli::run({"simulate", "--protocol", "friction", "--frequency-hz", "1e-6", "--out", fresh}).code, 2);
+        QCOMPARE(TestCli::run({"simulate", "--protocol", "friction", "--cycles", "100000", "--out", fresh}).code, 2);
+        const nbtest::CliResult plan = TestCli::run({"plan", "new", "--template", "friction", "--out", dir.filePath(QStringLiteral("p.json")),
+                                                     "--levels", "frequency_hz=1e-6"});
+        QVERIFY2(plan.code == 2 && plan.err.contains(QStringLiteral("0.01")), qPrintable(plan.err));
+        QVERIFY(!QFileInfo::exists(fresh));
+    }
+    // Inputs a command was not made for are named as such, before anything is read.
+    void misdirectedInputsAreNamed()
+    {
+        QTemporaryDir dir;
+        const QString sine = dir.filePath(QStringLiteral("sine.csv"));
+        QCOMPARE(TestCli::run({"simulate", "--protocol", "friction", "--cycles", "1", "--frequency-hz", "1", "--out", sine}).code, 0);
+        for (const QStringList& insertionOnly : {QStringList{"events", sine}, QStringList{"fit", "stiffness", sine}}) {
+            const nbtest::CliResult r = TestCli::run(insertionOnly);
+            QVERIFY2(r.err.contains(QStringLiteral("is a friction run")), qPrintable(insertionOnly.join(QLatin1Char(' ')) + QStringLiteral(": ") + r.err));
+        }
+        const nbtest::CliResult image = TestCli::run({"frame", dir.filePath(QStringLiteral("v.avi")), "--index", "0", "--out", dir.filePath(QStringLiteral("f.txt"))});
+        QVERIFY2(image.code == 2 && image.err.contains(QStringLiteral("f.txt")) && !image.err.contains(QStringLiteral("OpenCV")), qPrintable(image.err));
+        const nbtest::CliResult typo = TestCli::run({"plan", "new", "--template", "friction", "--out", dir.filePath(QStringLiteral("p.json")), "--levels", "location=1"});
+        QCOMPARE(typo.code, 0);
+        QVERIFY2(typo.err.contains(QStringLiteral("'location'")), qPrintable(typo.err));
     }
     void windowWithoutDisplaySaysWhatToDo()
     {

@@ -27,8 +27,9 @@ Simulated simulate(const QString& dir, const QStringList& args)
 {
     Simulated s;
     const QString path = QDir(dir).filePath(QStringLiteral("run%1.csv").arg(qHash(args.join(QLatin1Char(' ')))));
-    const nbtest::CliResult r = nbtest::runCli(QStringList{QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"),
-                                                           QStringLiteral("--out"), path} + args);
+    // The same arguments make the same run again (--overwrite: the file is named by them).
+    const nbtest::CliResult r = nbtest::runCli(QStringList{QStringLiteral("simulate"), QStringLiteral("--overwrite"), QStringLiteral("--protocol"),
+                                                           QStringLiteral("friction"), QStringLiteral("--out"), path} + args);
     if (r.code != 0)
         qFatal("simulate failed: %s", qPrintable(r.err));
     s.blind = nb::readRunFile(path).run;

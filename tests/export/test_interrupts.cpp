@@ -190,8 +190,9 @@ private slots:
         const QString out = dir.filePath(QStringLiteral("shared.csv"));
         QProcess first;
         QVERIFY(startRecording(first, out));
-        const auto second = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
-                                    QStringLiteral("--out"), out});
+        // Even told to replace it, a second process does not write into a recording under way.
+        const auto second = runCli({QStringLiteral("simulate"), QStringLiteral("--overwrite"), QStringLiteral("--protocol"),
+                                    QStringLiteral("stiffness"), QStringLiteral("--out"), out});
         checkClean(second);
         QCOMPARE(second.code, 1);
         QVERIFY2(second.err.contains(out) && second.err.contains(QLatin1String("another process")), qPrintable(second.err));

@@ -107,11 +107,12 @@ std::vector<SyncCase> drawSyncCases(std::mt19937& rng, int count, bool small)
 
 namespace {
 
-// The run through `needlebench simulate` (a public command whose flags are promises).
+// The run through `needlebench simulate` (a public command whose flags are promises); a case
+// drawn again into a kept folder (bench_accuracy --keep) replaces its run.
 QString simulate(const QStringList& args, const QString& executable, const QString& out)
 {
     QProcess p;
-    p.start(executable, QStringList{QStringLiteral("simulate")} << args << QStringLiteral("--out") << out);
+    p.start(executable, QStringList{QStringLiteral("simulate"), QStringLiteral("--overwrite")} << args << QStringLiteral("--out") << out);
     if (!p.waitForFinished(120000) || p.exitCode() != 0)
         return QStringLiteral("simulate failed: ") + QString::fromUtf8(p.readAllStandardError());
     return {};

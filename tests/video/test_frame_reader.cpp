@@ -258,6 +258,25 @@ private slots:
         QCOMPARE(readCode(reader.read(3).image), 3);
     }
 
+    // A capture that dropped half a second of frames (the timestamps jump from frame 30 to
+    // 45) is whole: every frame the container holds is read. It was called "truncated?" for
+    // holding fewer frames than its duration times its rate.
+    void droppedFramesAreNotCalledTruncated()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(90);
+        spec.filterArgs = QStringList{"-vf", "setpts='if(lt(N,30),N,N+15)/(29.97*TB)'", "-fps_mode", "passthrough"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-pix_fmt", "yuv420p"};
+        const QString file = path("dropped.mkv");
+        const QString err = writeVideo(file, spec);
+        QVERIFY2(err.isEmpty(), qPrintable(err));
+        const FrameIndex index = buildFrameIndex(file);
+        QCOMPARE(index.size(), 90);
+        QVERIFY2(index.frames[30].time_s - index.frames[29].time_s > 0.4, "the file does not show the gap");
+        QVERIFY2(index.containerFrames > 100, qPrintable(QStringLiteral("the container says %1 frames: the file does not show the case").arg(index.containerFrames)));
+        QVERIFY2(!index.warnings.join(QLatin1Char(' ')).contains(QLatin1String("truncated")), qPrintable(index.warnings.join(QLatin1Char('\n'))));
+    }
+
     void duplicatesFlagged()
     {
         VideoSpec spec;

@@ -108,7 +108,7 @@ private slots:
         QCOMPARE(r.code, 0);
         QVERIFY(!r.json().contains(QStringLiteral("video")));
         QVERIFY(QFile::rename(own.filePath(QStringLiteral("sine_07.webm.part")), own.filePath(QStringLiteral("sine_07.avi"))));
-        r = nbtest::runCli({"labels", "suggest", run, "--json"}, 240000);
+        r = nbtest::runCli({"labels", "suggest", run, "--json", "--overwrite"}, 240000);  // the first suggestion's file replaced
         QCOMPARE(r.code, 0);
         const QJsonObject v = r.json()[QStringLiteral("video")].toObject();
         QVERIFY2(v[QStringLiteral("file")].toString().endsWith(QLatin1String("sine_07.avi")), qPrintable(r.out));
