@@ -4953,7 +4953,7 @@ Befehle:
         <translation>Karnopp-Reibung pro Länge, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau der Tabellen 4/5)</translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+222"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+229"/>
         <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation>Gruppe</translation>
@@ -4971,7 +4971,12 @@ Befehle:
         <translation>std</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-155"/>
+        <source>%1: left out of the table: %2</source>
+        <translation>%1: aus der Tabelle gelassen: %2</translation>
+    </message>
+    <message>
+        <location line="+93"/>
         <source>%1: no friction fit with the mass estimated (%2)</source>
         <translation>%1: keine Reibungsanpassung mit geschätzter Masse (%2)</translation>
     </message>

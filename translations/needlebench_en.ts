@@ -4865,7 +4865,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+222"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+229"/>
         <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation type="unfinished"></translation>
@@ -4883,7 +4883,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-155"/>
+        <source>%1: left out of the table: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+93"/>
         <source>%1: no friction fit with the mass estimated (%2)</source>
         <translation type="unfinished"></translation>
     </message>

@@ -25,7 +25,9 @@ double thicknessOf(const Run& run, const Dataset& d)
     return 0.0;
 }
 
-void putFriction(std::map<QString, double>& values, const FrictionFit& f)
+// The fit's coefficients, except those it flags as not physical or not determined: such values
+// are not results (the run's own fit says so), and in a group's mean they would pass for one.
+void putFriction(std::map<QString, double>& values, const FrictionFit& f, const QString& run, QStringList* warnings)
 {
     const KarnoppPerLength& k = f.perLength;
     values[QStringLiteral("Cp_N_per_m")] = k.Cp_N_per_m;
@@ -36,6 +38,11 @@ void putFriction(std::map<QString, double>& values, const FrictionFit& f)
     values[QStringLiteral("Dn_N_per_m")] = k.Dn_N_per_m;
     if (f.massEstimate_kg)
         values[QStringLiteral("m_est_kg")] = *f.massEstimate_kg;
+    for (const QString& name : f.notPhysicalValues)  // "Cp" names the key "Cp_N_per_m", "bp" "bp_Ns_per_m2"
+        for (auto it = values.begin(); it != values.end();)
+            it = it->first.startsWith(name + QLatin1Char('_')) ? values.erase(it) : std::next(it);
+    if (warnings && !f.notPhysical.isEmpty())
+        *warnings << nb::TrCore::tr("%1: left out of the table: %2").arg(run, f.notPhysical.join(QStringLiteral("; ")));
     for (auto it = values.begin(); it != values.end();)
         it = std::isfinite(it->second) ? std::next(it) : values.erase(it);
 }
@@ -118,14 +125,14 @@ std::vector<RunFactorValues> runFactorValues(const Dataset& dataset, const Sessi
             if (f.run != r.name || !f.ok())
                 continue;
             if (!options.estimateMass) {
-                putFriction(v.values, f.fit);
+                putFriction(v.values, f.fit, r.name, warnings);
                 continue;
             }
             try {
                 FrictionOptions o;
                 o.thickness_mm = thicknessOf(r.run, dataset);
                 o.estimateMass = true;
-                putFriction(v.values, fitFriction(r.run, o, f.phases));
+                putFriction(v.values, fitFriction(r.run, o, f.phases), r.name, warnings);
             } catch (const FitError& e) {
                 if (warnings)
                     *warnings << nb::TrCore::tr("%1: no friction fit with the mass estimated (%2)").arg(r.name, e.message());

@@ -6,6 +6,8 @@
 #include "synthetic.h"
 
 #include <QtTest>
+
+#include <algorithm>
 #include <cmath>
 
 using namespace nb;
@@ -205,6 +207,26 @@ private slots:
         // Right-aligned figures: every data row ends at the same column.
         for (int i = 2; i < lines.size(); ++i)
             QCOMPARE(lines[i].size(), lines[1].size());
+    }
+
+    // A coefficient the run's fit flags as not physical is no result: left out of the run's
+    // values (and so of its group's mean), and the report says which run and why. `plan
+    // report` printed bp = 187 N s/m^2 where `fit friction` on the same run said "not phys.".
+    void valuesTheFitFlagsAreLeftOut()
+    {
+        SessionAnalysis flagged = analysis_;
+        FrictionRunResult& f = flagged.friction.front();
+        QVERIFY(f.ok());
+        f.fit.notPhysical = QStringList{QStringLiteral("bp < 0: damping cannot feed energy in")};
+        f.fit.notPhysicalValues = QStringList{QStringLiteral("bp")};
+        QStringList warnings;
+        const auto values = runFactorValues(dataset_, flagged, QStringList{QStringLiteral("frequency_hz")}, {}, &warnings);
+        const auto run = std::find_if(values.begin(), values.end(), [&](const RunFactorValues& v) { return v.run == f.run; });
+        QVERIFY(run != values.end());
+        QVERIFY(!run->values.count(QStringLiteral("bp_Ns_per_m2")));
+        QVERIFY(run->values.count(QStringLiteral("bn_Ns_per_m2")) && run->values.count(QStringLiteral("Cp_N_per_m")));
+        QCOMPARE(warnings.size(), 1);
+        QVERIFY2(warnings[0].contains(f.run) && warnings[0].contains(QStringLiteral("bp < 0")), qPrintable(warnings[0]));
     }
 };
 
