@@ -15,14 +15,7 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
     const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
                                   nb::TrCli::tr("show this help"));
     parser.addOption(help);
-    auto helpText = [&] {
-        QString h = parser.helpText();
-        // QCommandLineParser names the program from argv[0]; name the command instead.
-        const qsizetype nl = h.indexOf(QLatin1Char('\n'));
-        const QString firstLine = h.left(nl);
-        const qsizetype opts = firstLine.indexOf(QLatin1String("[options]"));
-        return QStringLiteral("Usage: needlebench %1 %2").arg(command, firstLine.mid(opts)) + h.mid(nl);
-    };
+    auto helpText = [&] { return commandHelp(parser, command); };
     if (!parser.parse(QStringList{QStringLiteral("needlebench")} + args)) {
         io.err << "needlebench " << command << ": " << parser.errorText() << "\n\n" << helpText();
         *exitCode = Usage;
@@ -44,6 +37,16 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
         return false;
     }
     return true;
+}
+
+QString commandHelp(const QCommandLineParser& parser, const QString& command)
+{
+    const QString h = parser.helpText();
+    // QCommandLineParser names the program from argv[0]; name the command instead.
+    const qsizetype nl = h.indexOf(QLatin1Char('\n'));
+    const QString firstLine = h.left(nl);
+    const qsizetype opts = firstLine.indexOf(QLatin1String("[options]"));
+    return QStringLiteral("Usage: needlebench %1 %2").arg(command, firstLine.mid(opts)) + h.mid(nl);
 }
 
 void printJson(Io io, const QJsonObject& object)

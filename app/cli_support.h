@@ -20,6 +20,10 @@ bool parseArgs(QCommandLineParser& parser, const QString& command, const QString
 
 void printJson(Io io, const QJsonObject& object);
 
+// The command's help as parseArgs prints it: "Usage: needlebench COMMAND [options] ..." (Qt's
+// own names the program by the path it was started from).
+QString commandHelp(const QCommandLineParser& parser, const QString& command);
+
 // Whether `a` and `b` name the same file, whether or not it exists yet (links resolved).
 bool samePath(const QString& a, const QString& b);
 

@@ -58,7 +58,7 @@ int cmdLabels(const QStringList& args, Io io)
         return code;
     if (parser.positionalArguments()[0] != QLatin1String("suggest")) {
         io.err << nb::TrCli::tr("needlebench labels: unknown action '%1' (suggest)\n\n").arg(parser.positionalArguments()[0])
-               << parser.helpText();
+               << commandHelp(parser, QStringLiteral("labels"));
         return Usage;
     }
     const QString runPath = parser.positionalArguments()[1];

@@ -575,6 +575,14 @@ int cmdReport(const QStringList& args, Io io)
                                   [&](const DatasetRun& r) { return !counted.contains(QFileInfo(r.sourcePath).completeBaseName()); }),
                    runs.end());
     }
+    factors.removeDuplicates();
+    // A factor no run records a level of (a typo) would put every run in one group named "".
+    for (const QString& f : factors)
+        if (!loaded.dataset.runs.empty() && std::none_of(loaded.dataset.runs.begin(), loaded.dataset.runs.end(),
+                                                         [&](const DatasetRun& r) { return !factorLevel(r.run, f).isEmpty(); }))
+            return usage(io, sub, nb::TrCli::tr("--by %1: no run in %2 records a level of it (factors recorded: %3)")
+                                      .arg(f, dir, datasetFactors(loaded.dataset).isEmpty() ? nb::TrCli::tr("none; settings such as tissue or tip work too")
+                                                                                            : datasetFactors(loaded.dataset).join(QStringLiteral(", "))));
     const SessionAnalysis analysis = analyseDataset(loaded.dataset);
     QStringList warnings = loaded.warnings + analysis.warnings;
     FactorAnalysisOptions options;

@@ -49,7 +49,7 @@ int cmdSync(const QStringList& args, Io io)
         for (int i = 0; ok && i < 4; ++i)
             v[i] = p[i].trimmed().toInt(&ok);
         if (!ok || v[2] <= 0 || v[3] <= 0) {
-            io.err << nb::TrCli::tr("needlebench sync: --roi wants x,y,w,h in whole pixels, w and h > 0\n\n") << parser.helpText();
+            io.err << nb::TrCli::tr("needlebench sync: --roi wants x,y,w,h in whole pixels, w and h > 0\n\n") << commandHelp(parser, QStringLiteral("sync"));
             return Usage;
         }
         region = QRect(v[0], v[1], v[2], v[3]);
@@ -64,7 +64,7 @@ int cmdSync(const QStringList& args, Io io)
         for (int i = 0; ok && i < 4; ++i)
             ok = std::isfinite(v[i]) && std::abs(v[i]) < 1e5;
         if (!ok || std::hypot(v[2] - v[0], v[3] - v[1]) < 2.0) {
-            io.err << nb::TrCli::tr("needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points\n\n") << parser.helpText();
+            io.err << nb::TrCli::tr("needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points\n\n") << commandHelp(parser, QStringLiteral("sync"));
             return Usage;
         }
         vso.axis = video::NeedleAxis(v[0], v[1], v[2], v[3]);

@@ -88,7 +88,7 @@ int cmdFrame(const QStringList& args, Io io)
     const int n = parser.value(indexOpt).toInt(&ok);
     if (!parser.isSet(indexOpt) || !ok || n < 0 || !parser.isSet(outOpt)) {
         io.err << nb::TrCli::tr("needlebench frame: --index N (a whole number >= 0) and --out IMAGE are required\n\n")
-               << parser.helpText();
+               << commandHelp(parser, QStringLiteral("frame"));
         return Usage;
     }
     const QString path = parser.positionalArguments().first();

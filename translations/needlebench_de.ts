@@ -4222,7 +4222,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--by FAKTOR,... ist erforderlich, wenn der Ordner keine plan.json enthält</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+24"/>
+        <source>--by %1: no run in %2 records a level of it (factors recorded: %3)</source>
+        <translation>--by %1: kein Lauf in %2 verzeichnet eine Stufe davon (verzeichnete Faktoren: %3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none; settings such as tissue or tip work too</source>
+        <translation>keine; Einstellungen wie tissue oder tip gehen auch</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>cannot create %1</source>
         <translation>%1 kann nicht angelegt werden</translation>
     </message>
@@ -4517,7 +4527,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>diese Hilfe anzeigen</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+16"/>
         <source>missing arguments</source>
         <translation>fehlende Argumente</translation>
     </message>
@@ -4527,7 +4537,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>zu viele Argumente</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+36"/>
         <source>%1 %2 is a file this command reads; writing it would destroy it. Name another file.</source>
         <translation>%1 %2 ist eine Datei, die dieser Befehl liest; sie zu schreiben würde sie zerstören. Geben Sie eine andere Datei an.</translation>
     </message>
@@ -4953,7 +4963,7 @@ Befehle:
         <translation>Karnopp-Reibung pro Länge, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau der Tabellen 4/5)</translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+229"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+230"/>
         <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation>Gruppe</translation>
@@ -4971,12 +4981,12 @@ Befehle:
         <translation>std</translation>
     </message>
     <message>
-        <location line="-155"/>
+        <location line="-156"/>
         <source>%1: left out of the table: %2</source>
         <translation>%1: aus der Tabelle gelassen: %2</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+94"/>
         <source>%1: no friction fit with the mass estimated (%2)</source>
         <translation>%1: keine Reibungsanpassung mit geschätzter Masse (%2)</translation>
     </message>
@@ -6921,7 +6931,7 @@ Befehle:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+97"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+98"/>
         <source>Stiffness before puncture: %1</source>
         <translation>Steifigkeit vor dem Durchstich: %1</translation>
     </message>

@@ -4171,7 +4171,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+24"/>
+        <source>--by %1: no run in %2 records a level of it (factors recorded: %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none; settings such as tissue or tip work too</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>cannot create %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4437,7 +4447,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+16"/>
         <source>missing arguments</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4447,7 +4457,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+36"/>
         <source>%1 %2 is a file this command reads; writing it would destroy it. Name another file.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4865,7 +4875,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+229"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+230"/>
         <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation type="unfinished"></translation>
@@ -4883,12 +4893,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-155"/>
+        <location line="-156"/>
         <source>%1: left out of the table: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+94"/>
         <source>%1: no friction fit with the mass estimated (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6833,7 +6843,7 @@ Commands:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+97"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+98"/>
         <source>Stiffness before puncture: %1</source>
         <translation type="unfinished"></translation>
     </message>

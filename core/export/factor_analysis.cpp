@@ -63,7 +63,8 @@ bool levelLess(const QString& a, const QString& b)
 
 QuantityStats statsOf(const std::vector<double>& v)
 {
-    return {mean(v), sampleStdDev(v), v.size()};
+    // One run has no spread to tell (0 would read as a measured one): left blank.
+    return {mean(v), v.size() < 2 ? std::nan("") : sampleStdDev(v), v.size()};
 }
 
 }  // namespace
@@ -244,7 +245,7 @@ FitTable frictionFrequencyTable(const std::vector<RunFactorValues>& runs, const 
                 for (const RunFactorValues* r : members)
                     if (const auto it = r->values.find(key); it != r->values.end())
                         v.push_back(it->second);
-                row.emplace_back(v.empty() ? std::nan("") : (k ? sampleStdDev(v) : mean(v)));
+                row.emplace_back(v.empty() || (k && v.size() < 2) ? std::nan("") : (k ? sampleStdDev(v) : mean(v)));
             }
             t.rows.push_back(std::move(row));
         }

@@ -164,7 +164,7 @@ private slots:
         QCOMPARE(w.factorChooser()->currentText(), QStringLiteral("frequency_hz"));
         QCOMPARE(w.quantityChooser()->currentData().toString(), QStringLiteral("Cp_N_per_m"));
         QCOMPARE(m->item(1, nCol)->data(Qt::UserRole).toDouble(), 1.0);
-        QCOMPARE(m->item(1, stdCol)->data(Qt::UserRole).toDouble(), 0.0);
+        QVERIFY(std::isnan(m->item(1, stdCol)->data(Qt::UserRole).toDouble()));  // one run: no spread to tell, not 0
 
         // Saved with the other tables: each factor's table.
         QTemporaryDir out;

@@ -8,6 +8,7 @@
 
 #include <QCoreApplication>
 #include <algorithm>
+#include <cmath>
 #include <qcustomplot.h>
 
 namespace nb {
@@ -309,7 +310,7 @@ void plotByFactor(QCustomPlot* plot, const std::vector<RunFactorValues>& runs, c
         if (n > 0) {
             meanX << double(i);
             meanY << it->second.mean;
-            spread << it->second.stdDev;
+            spread << (std::isfinite(it->second.stdDev) ? it->second.stdDev : 0.0);  // one run: no bar
         }
         // The runs of this level, spread a little sideways so that equal values stay visible.
         std::vector<double> values;
