@@ -40,6 +40,24 @@ bool startRecording(QProcess& p, const QString& out)
     return false;
 }
 
+// Starts the executable headless with settings of its own, and returns once `file` has grown
+// to `bytes` (a recording under way); false if it did not within 20 s.
+bool startUntilWritten(QProcess& p, const QStringList& args, const QString& configDir, const QString& file, qint64 bytes)
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY"));
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), configDir);
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(NB_EXECUTABLE), args);
+    if (!p.waitForStarted())
+        return false;
+    QElapsedTimer t;
+    t.start();
+    while (t.elapsed() < 20000 && QFileInfo(file).size() < bytes)
+        QTest::qWait(50);
+    return QFileInfo(file).size() >= bytes;
+}
+
 void checkClean(const nbtest::CliResult& r)
 {
     QVERIFY2(r.code == 0 || r.code == 1 || r.code == 2, qPrintable(QStringLiteral("exit %1: %2").arg(r.code).arg(r.err.left(500))));
@@ -96,19 +114,10 @@ private slots:
         QTemporaryDir dir, config;
         const QString out = dir.filePath(QStringLiteral("acq.csv"));
         QProcess p;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.remove(QStringLiteral("DISPLAY"));
-        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
-        p.setProcessEnvironment(env);
-        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("sim"), QStringLiteral("--stage"),
-                                                QStringLiteral("sim"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
-                                                QStringLiteral("--out"), out});
-        QVERIFY(p.waitForStarted());
-        QElapsedTimer t;
-        t.start();
-        while (t.elapsed() < 20000 && QFileInfo(out).size() < 2000)
-            QTest::qWait(100);
-        QVERIFY2(QFileInfo(out).size() >= 2000, "acquire did not start recording");
+        QVERIFY2(startUntilWritten(p, {QStringLiteral("acquire"), QStringLiteral("--daq"), QStringLiteral("sim"), QStringLiteral("--stage"),
+                                       QStringLiteral("sim"), QStringLiteral("--protocol"), QStringLiteral("stiffness"), QStringLiteral("--out"), out},
+                                   config.path(), out, 2000),
+                 "acquire did not start recording");
         ::kill(pid_t(p.processId()), SIGINT);
         QVERIFY(p.waitForFinished(10000));
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
@@ -126,20 +135,11 @@ private slots:
         QTemporaryDir dir, config;
         const QString planPath = dir.filePath(QStringLiteral("plan.json")), session = dir.filePath(QStringLiteral("session"));
         QCOMPARE(runCli({"plan", "new", "--template", "friction", "--out", planPath, "--set", "cycles=1000"}).code, 0);
-        QProcess p;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.remove(QStringLiteral("DISPLAY"));
-        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
-        p.setProcessEnvironment(env);
-        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("plan"), QStringLiteral("run"), planPath, QStringLiteral("--session"), session,
-                                                QStringLiteral("--yes")});
-        QVERIFY(p.waitForStarted());
         const QString runFile = QDir(session).filePath(QStringLiteral("run_001_sine.csv"));
-        QElapsedTimer t;
-        t.start();
-        while (t.elapsed() < 20000 && QFileInfo(runFile).size() < 20000)
-            QTest::qWait(50);
-        QVERIFY2(QFileInfo(runFile).size() >= 20000, "plan run did not start recording");
+        QProcess p;
+        QVERIFY2(startUntilWritten(p, {QStringLiteral("plan"), QStringLiteral("run"), planPath, QStringLiteral("--session"), session, QStringLiteral("--yes")},
+                                   config.path(), runFile, 20000),
+                 "plan run did not start recording");
         ::kill(pid_t(p.processId()), SIGINT);
         QVERIFY(p.waitForFinished(20000));
         const QString err = QString::fromUtf8(p.readAllStandardError());
