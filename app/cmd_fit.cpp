@@ -17,6 +17,7 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <algorithm>
 #include <cmath>
 
 namespace nb::cli {
@@ -326,6 +327,15 @@ int fitFrictionCommand(const QStringList& args, Io io)
                 phases = phasePerSample(readLabelsFile(parser.value(labels)), run.time_s);
             } catch (const RunFileError& e) {
                 throw FileFailure{e.message()};
+            }
+            // A labels file without phases (an insertion run's, say) would silently set the
+            // run's own phase column aside.
+            if (std::all_of(phases.begin(), phases.end(), [](const QString& p) { return p.isEmpty(); })) {
+                io.err << nb::TrCli::tr("warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run's own phase column "
+                                        "is used, else the velocity band")
+                              .arg(parser.value(labels), path)
+                       << '\n';
+                phases.clear();
             }
         }
         fits.push_back(onFile(path, [&] { return fitFriction(run, options, phases); }));

@@ -2938,7 +2938,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+85"/>
+        <location filename="../app/cmd_fit.cpp" line="+86"/>
         <location line="+49"/>
         <location line="+133"/>
         <location filename="../app/cmd_plan.cpp" line="+77"/>
@@ -3465,7 +3465,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+15"/>
+        <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
+        <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
+    </message>
+    <message>
+        <location line="+115"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²

@@ -2935,7 +2935,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+85"/>
+        <location filename="../app/cmd_fit.cpp" line="+86"/>
         <location line="+49"/>
         <location line="+133"/>
         <location filename="../app/cmd_plan.cpp" line="+77"/>
@@ -3447,7 +3447,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+15"/>
+        <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+115"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>

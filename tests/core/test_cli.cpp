@@ -139,6 +139,18 @@ private slots:
         }
         const nbtest::CliResult image = TestCli::run({"frame", dir.filePath(QStringLiteral("v.avi")), "--index", "0", "--out", dir.filePath(QStringLiteral("f.txt"))});
         QVERIFY2(image.code == 2 && image.err.contains(QStringLiteral("f.txt")) && !image.err.contains(QStringLiteral("OpenCV")), qPrintable(image.err));
+        // Labels without friction phases set the run's own phase column aside no more.
+        const QString noPhases = dir.filePath(QStringLiteral("events.labels.csv"));
+        {
+            QFile f(noPhases);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("track,label,start_s,end_s,comment\nevent,contact,0.5,0.5,\n");
+        }
+        const nbtest::CliResult withPhases = TestCli::run({"fit", "friction", sine, "--thickness-mm", "30", "--json"});
+        const nbtest::CliResult aside = TestCli::run({"fit", "friction", sine, "--thickness-mm", "30", "--labels", noPhases, "--json"});
+        QCOMPARE(aside.code, withPhases.code);
+        QVERIFY2(aside.err.contains(noPhases) && aside.err.contains(QStringLiteral("no friction phase")), qPrintable(aside.err));
+        QCOMPARE(aside.out, withPhases.out);
         const nbtest::CliResult typo = TestCli::run({"plan", "new", "--template", "friction", "--out", dir.filePath(QStringLiteral("p.json")), "--levels", "location=1"});
         QCOMPARE(typo.code, 0);
         QVERIFY2(typo.err.contains(QStringLiteral("'location'")), qPrintable(typo.err));
