@@ -82,9 +82,13 @@ int cmdSync(const QStringList& args, Io io)
             io.err << "needlebench sync: " << clash << '\n';
             return Usage;
         }
+    int videoFrames = -1;
+    std::size_t runSamples = 0;
     try {
         const Run run = readRunFile(runPath).run;
+        runSamples = run.size();
         const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
+        videoFrames = index.size();
         if (!region.isEmpty() && !QRect(0, 0, index.width, index.height).contains(region)) {
             io.err << nb::TrCli::tr("needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture\n")
                           .arg(region.x()).arg(region.y()).arg(region.width()).arg(region.height())
@@ -164,7 +168,11 @@ int cmdSync(const QStringList& args, Io io)
     } catch (const video::VideoError& e) {
         io.err << "needlebench sync: " << e.message() << '\n';
     } catch (const std::invalid_argument& e) {
-        io.err << "needlebench sync: " << nb::TrCli::tr("cannot synchronise: %1").arg(QString::fromUtf8(e.what())) << '\n';
+        // Say which record is too short to hold a motion to match, by name.
+        const QString why = videoFrames >= 0 && videoFrames < 10 ? nb::TrCli::tr("the video %1 has only %n frame(s)", nullptr, videoFrames).arg(videoPath)
+                            : runSamples < 10 ? nb::TrCli::tr("the run %1 has only %n sample(s)", nullptr, int(runSamples)).arg(runPath)
+                                              : QString::fromUtf8(e.what());
+        io.err << "needlebench sync: " << nb::TrCli::tr("cannot synchronise %1 with %2: %3").arg(videoPath, runPath, why) << '\n';
     }
     return Failure;
 }

@@ -4307,7 +4307,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation>needlebench sync: --roi %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6
@@ -4399,10 +4399,26 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ (unter %1): den Versatz vor der Verwendung prüfen, indem ein Ereignis in beiden markiert wird
 </translation>
     </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>the video %1 has only %n frame(s)</source>
+        <translation>
+            <numerusform>das Video %1 hat nur %n Bild</numerusform>
+            <numerusform>das Video %1 hat nur %n Bilder</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>the run %1 has only %n sample(s)</source>
+        <translation>
+            <numerusform>der Lauf %1 hat nur %n Messwert</numerusform>
+            <numerusform>der Lauf %1 hat nur %n Messwerte</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+9"/>
-        <source>cannot synchronise: %1</source>
-        <translation>Synchronisierung nicht möglich: %1</translation>
+        <location line="+2"/>
+        <source>cannot synchronise %1 with %2: %3</source>
+        <translation>%1 kann nicht mit %2 synchronisiert werden: %3</translation>
     </message>
     <message>
         <location filename="../app/cmd_video.cpp" line="-38"/>

@@ -4251,7 +4251,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation type="unfinished"></translation>
@@ -4332,9 +4332,25 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 </source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>the video %1 has only %n frame(s)</source>
+        <translation>
+            <numerusform>the video %1 has only %n frame</numerusform>
+            <numerusform>the video %1 has only %n frames</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>the run %1 has only %n sample(s)</source>
+        <translation>
+            <numerusform>the run %1 has only %n sample</numerusform>
+            <numerusform>the run %1 has only %n samples</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+9"/>
-        <source>cannot synchronise: %1</source>
+        <location line="+2"/>
+        <source>cannot synchronise %1 with %2: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

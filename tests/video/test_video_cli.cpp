@@ -82,6 +82,18 @@ private slots:
         QVERIFY(missing.err.contains("none.mp4"));
         const nbtest::CliResult unwritable = run({"frame", vfr_, "--index", "3", "--out", dir_.filePath("no/such/dir/x.png")});
         QCOMPARE(unwritable.code, 1);
+        QVERIFY2(unwritable.err.contains(QStringLiteral("does not exist")), qPrintable(unwritable.err));
+        // A video of one frame holds no motion to match: named, with what it lacks.
+        VideoSpec one;
+        one.codes = {0};
+        one.encodeArgs = QStringList{"-c:v", "mjpeg", "-pix_fmt", "yuvj420p"};
+        const QString still = dir_.filePath("one.avi");
+        QVERIFY(writeVideo(still, one).isEmpty());
+        const QString runFile = dir_.filePath("run.csv");
+        QCOMPARE(run({"simulate", "--protocol", "friction", "--cycles", "1", "--frequency-hz", "1", "--out", runFile}).code, 0);
+        const nbtest::CliResult tooShort = run({"sync", runFile, still});
+        QCOMPARE(tooShort.code, 1);
+        QVERIFY2(tooShort.err.contains(still) && tooShort.err.contains(QStringLiteral("1 frame")), qPrintable(tooShort.err));
     }
 };
 
