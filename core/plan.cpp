@@ -942,9 +942,13 @@ Plan readPlanFile(const QString& path)
     QJsonParseError pe{};
     const QByteArray bytes = f.readAll();
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &pe);
+    if (bytes.trimmed().isEmpty())
+        throw PlanError(path, {}, nb::TrCore::tr("the file is empty; a plan is a JSON file (needlebench plan new writes one)"));
     if (pe.error != QJsonParseError::NoError) {
         const int line = int(bytes.left(pe.offset).count('\n')) + 1;
-        throw PlanError(path, nb::TrCore::tr("line %1").arg(line), pe.errorString());
+        // Qt's parser says "illegal value" of a CSV as of a typo; say what was expected.
+        throw PlanError(path, nb::TrCore::tr("line %1").arg(line),
+                        nb::TrCore::tr("not JSON as a plan is written (%1)").arg(pe.errorString()));
     }
     if (!doc.isObject())
         throw PlanError(path, {}, nb::TrCore::tr("expected a JSON object {...}"));

@@ -4821,7 +4821,7 @@ Befehle:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+958"/>
+        <location filename="../core/plan.cpp" line="+962"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -5507,7 +5507,7 @@ Befehle:
         <translation>keine Läufe zum Fitten</translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-874"/>
+        <location filename="../core/plan.cpp" line="-878"/>
         <source>neither motion nor protocol is set</source>
         <translation>weder Bewegung noch Protokoll ist gesetzt</translation>
     </message>
@@ -5780,9 +5780,19 @@ Befehle:
         <translation>Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>the file is empty; a plan is a JSON file (needlebench plan new writes one)</source>
+        <translation>die Datei ist leer; ein Plan ist eine JSON-Datei (needlebench plan new schreibt eine)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not JSON as a plan is written (%1)</source>
+        <translation>kein JSON, wie ein Plan geschrieben ist (%1)</translation>
     </message>
     <message>
         <location line="+3"/>

@@ -4733,7 +4733,7 @@ Commands:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+958"/>
+        <location filename="../core/plan.cpp" line="+962"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -5419,7 +5419,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-874"/>
+        <location filename="../core/plan.cpp" line="-878"/>
         <source>neither motion nor protocol is set</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5692,8 +5692,18 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>the file is empty; a plan is a JSON file (needlebench plan new writes one)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>line %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not JSON as a plan is written (%1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -326,6 +326,22 @@ private slots:
         } catch (const PlanError& e) {
             QVERIFY(e.message().contains(QStringLiteral("absent.json")));
         }
+        // An empty file, or a run file given for a plan: said so, not only Qt's "illegal value".
+        const QString empty = dir_.filePath(QStringLiteral("empty.json")), csv = dir_.filePath(QStringLiteral("run.csv"));
+        QFile(empty).open(QIODevice::WriteOnly);
+        {
+            QFile r(csv);
+            QVERIFY(r.open(QIODevice::WriteOnly));
+            r.write("time_s,position_mm,force_N\n0,0,0\n");
+        }
+        for (const auto& [path, says] : {std::pair{empty, QStringLiteral("empty")}, {csv, QStringLiteral("not JSON")}}) {
+            try {
+                readPlanFile(path);
+                QFAIL("accepted");
+            } catch (const PlanError& e) {
+                QVERIFY2(e.message().contains(path) && e.message().contains(says), qPrintable(e.message()));
+            }
+        }
     }
 
     void aCrashedPlanResumesAtTheFirstRunNotCompleted()
