@@ -11,6 +11,7 @@
 #include "devices/acquisition_engine.h"
 #include "devices/run_once.h"
 #include "core/run_file.h"
+#include "devices/sim/imaging_render.h"
 #include "devices/sim/tissue_presets.h"
 
 #include <QCoreApplication>
@@ -96,15 +97,13 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
         if (!path.isEmpty())
             if (const QString e = unwritableOutput(option, path); !e.isEmpty())
                 return e;
-    if (!s.truth.isEmpty())
-        if (const QString e = overwritesInput(QStringLiteral("--truth"), s.truth, {s.out}); !e.isEmpty())
-            return nb::TrCli::tr("--truth and --out name the same file %1").arg(s.out);
+    if (!s.truth.isEmpty() && samePath(s.truth, s.out))
+        return nb::TrCli::tr("--truth and --out name the same file %1").arg(s.out);
     if (!s.video.isEmpty()) {
-        if (!overwritesInput(QStringLiteral("--video"), s.video, {s.out, s.truth}).isEmpty())
+        if (samePath(s.video, s.out) || (!s.truth.isEmpty() && samePath(s.video, s.truth)))
             return nb::TrCli::tr("--video names the same file as --out or --truth: %1").arg(s.video);
-        const QString type = QFileInfo(s.video).suffix().toLower();
-        if (type != QLatin1String("avi") && type != QLatin1String("mkv") && type != QLatin1String("mp4"))
-            return nb::TrCli::tr("--video %1: unknown video type '%2' (use .avi, .mkv or .mp4)").arg(s.video, type.isEmpty() ? QString() : QLatin1Char('.') + type);
+        if (const QString e = devices::sim::imagingVideoTypeProblem(s.video); !e.isEmpty())
+            return QStringLiteral("--video %1: %2").arg(s.video, e);
     }
     {
         bool ok = false;

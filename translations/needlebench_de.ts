@@ -2824,7 +2824,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+46"/>
+        <location filename="../app/cmd_simulate.cpp" line="+47"/>
         <source>the run file to write</source>
         <translation>die zu schreibende Laufdatei</translation>
     </message>
@@ -2920,7 +2920,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+123"/>
+        <location filename="../app/cmd_simulate.cpp" line="+121"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
@@ -3740,7 +3740,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-279"/>
+        <location filename="../app/cmd_simulate.cpp" line="-277"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -3825,7 +3825,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>unbekanntes Protokoll &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>--truth and --out name the same file %1</source>
         <translation>--truth und --out nennen dieselbe Datei %1</translation>
     </message>
@@ -3835,12 +3835,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--video nennt dieselbe Datei wie --out oder --truth: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>--video %1: unknown video type &apos;%2&apos; (use .avi, .mkv or .mp4)</source>
-        <translation>--video %1: unbekannter Videotyp &apos;%2&apos; (.avi, .mkv oder .mp4 verwenden)</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>--video-offset-s wants seconds between 0 and 600</source>
         <translation>--video-offset-s erwartet Sekunden zwischen 0 und 600</translation>
     </message>
@@ -6402,17 +6397,17 @@ Befehle:
         <translation>Speicher konnte nicht gesperrt werden (mlockall: %1); Seitenfehler können Messwerte verzögern</translation>
     </message>
     <message>
-        <location filename="../devices/sim/imaging_render.cpp" line="+136"/>
+        <location filename="../devices/sim/imaging_render.cpp" line="+144"/>
         <source>the run has too few samples to render</source>
         <translation>der Lauf hat zu wenige Messwerte zum Zeichnen</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-6"/>
         <source>unknown video type &apos;.%1&apos; (use .avi, .mkv or .mp4)</source>
         <translation>unbekannter Videotyp &apos;.%1&apos; (.avi, .mkv oder .mp4 verwenden)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+26"/>
         <source>cannot write a video here (folder missing or not writable, or no encoder)</source>
         <translation>hier kann kein Video geschrieben werden (Ordner fehlt oder ist nicht beschreibbar, oder kein Encoder)</translation>
     </message>

@@ -2821,7 +2821,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+46"/>
+        <location filename="../app/cmd_simulate.cpp" line="+47"/>
         <source>the run file to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2917,7 +2917,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+123"/>
+        <location filename="../app/cmd_simulate.cpp" line="+121"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3697,7 +3697,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-279"/>
+        <location filename="../app/cmd_simulate.cpp" line="-277"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3782,7 +3782,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>--truth and --out name the same file %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3792,12 +3792,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>--video %1: unknown video type &apos;%2&apos; (use .avi, .mkv or .mp4)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>--video-offset-s wants seconds between 0 and 600</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6314,17 +6309,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/sim/imaging_render.cpp" line="+136"/>
+        <location filename="../devices/sim/imaging_render.cpp" line="+144"/>
         <source>the run has too few samples to render</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-6"/>
         <source>unknown video type &apos;.%1&apos; (use .avi, .mkv or .mp4)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+26"/>
         <source>cannot write a video here (folder missing or not writable, or no encoder)</source>
         <translation type="unfinished"></translation>
     </message>

@@ -130,6 +130,14 @@ void ImagingRenderer::render(double t, int frameNumber, cv::Mat& out) const
     noisy.convertTo(out, CV_8UC1);
 }
 
+QString imagingVideoTypeProblem(const QString& path)
+{
+    const QString ext = QFileInfo(path).suffix().toLower();
+    if (ext == QLatin1String("avi") || ext == QLatin1String("mkv") || ext == QLatin1String("mp4"))
+        return {};
+    return nb::TrDevices::tr("unknown video type '.%1' (use .avi, .mkv or .mp4)").arg(ext);
+}
+
 ImagingTruth renderImagingVideo(const Run& run, const QString& path, const ImagingOptions& options)
 {
     if (run.size() < 2)
@@ -143,7 +151,7 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
     else if (ext == QLatin1String("mp4"))
         fourccs = {cv::VideoWriter::fourcc('a', 'v', 'c', '1'), cv::VideoWriter::fourcc('m', 'p', '4', 'v')};
     else
-        throw nb::video::VideoError(path, nb::TrDevices::tr("unknown video type '.%1' (use .avi, .mkv or .mp4)").arg(ext));
+        throw nb::video::VideoError(path, imagingVideoTypeProblem(path));
     cv::VideoWriter writer;
     for (int fourcc : fourccs) {
         try {

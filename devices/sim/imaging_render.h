@@ -60,4 +60,8 @@ private:
 // MPEG-4 Part 2). Throws VideoError naming the file.
 ImagingTruth renderImagingVideo(const Run& run, const QString& path, const ImagingOptions& options = {});
 
+// Why renderImagingVideo cannot write a video of `path`'s type (.avi, .mkv, .mp4), or empty:
+// for a command to check before it records the run the video shows.
+QString imagingVideoTypeProblem(const QString& path);
+
 }  // namespace nb::devices::sim
