@@ -58,6 +58,10 @@ static int runWindow(QApplication& app)
 int main(int argc, char** argv)
 {
     nb::installTerminateHandler();
+    // FFmpeg's own log lines ("[mov,mp4,… @ 0x…] moov atom not found") duplicate what NeedleBench
+    // says about a video, by name; OPENCV_FFMPEG_LOGLEVEL=16 brings them back for a diagnosis.
+    if (qEnvironmentVariableIsEmpty("OPENCV_FFMPEG_LOGLEVEL"))
+        qputenv("OPENCV_FFMPEG_LOGLEVEL", "-8");
     QCoreApplication::setOrganizationName(QStringLiteral("NeedleBench"));
     QCoreApplication::setApplicationName(QStringLiteral("needlebench"));
     QCoreApplication::setApplicationVersion(QStringLiteral(NEEDLEBENCH_VERSION));

@@ -4714,7 +4714,7 @@ Befehle:
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+101"/>
+        <location filename="../app/main.cpp" line="+105"/>
         <source>Run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
         <translation>Führen Sie einen Befehl ohne Fenster aus, etwa &apos;needlebench demo&apos;; &apos;needlebench --help&apos; listet sie auf.</translation>
     </message>
@@ -6468,7 +6468,7 @@ Befehle:
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+111"/>
+        <location filename="../video/frame_index.cpp" line="+112"/>
         <location filename="../video/packet_index.cpp" line="+35"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -6489,12 +6489,17 @@ Befehle:
         <translation>kann nicht als Video geöffnet werden: %1</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>an MP4/MOV file without its index (the &apos;moov&apos; box written when a recording is closed): the recording was cut off before it was finished, and its frames cannot be found without that index</source>
+        <translation>eine MP4/MOV-Datei ohne ihren Index (die &apos;moov&apos;-Box, die beim Schließen einer Aufnahme geschrieben wird): die Aufnahme wurde abgebrochen, bevor sie fertig war, und ihre Bilder lassen sich ohne diesen Index nicht finden</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>cannot open as video (not a video file, or a format FFmpeg does not read)</source>
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>

@@ -4626,7 +4626,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+101"/>
+        <location filename="../app/main.cpp" line="+105"/>
         <source>Run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6380,7 +6380,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+111"/>
+        <location filename="../video/frame_index.cpp" line="+112"/>
         <location filename="../video/packet_index.cpp" line="+35"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -6401,12 +6401,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>an MP4/MOV file without its index (the &apos;moov&apos; box written when a recording is closed): the recording was cut off before it was finished, and its frames cannot be found without that index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>cannot open as video (not a video file, or a format FFmpeg does not read)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>

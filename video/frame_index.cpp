@@ -5,6 +5,7 @@
 #include "video_error.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QFileInfo>
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
@@ -120,8 +121,16 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     } catch (const cv::Exception& e) {
         throw VideoError(path, nb::TrDevices::tr("cannot open as video: %1").arg(QString::fromStdString(e.what())));
     }
-    if (!cap.isOpened())
+    if (!cap.isOpened()) {
+        // An MP4/MOV recording cut off before it was closed (power lost, disk full) starts as
+        // one but lacks the index written at its end: say that, not "not a video file".
+        QFile head(path);
+        if (head.open(QIODevice::ReadOnly) && head.read(12).mid(4, 4) == "ftyp")
+            throw VideoError(path, nb::TrDevices::tr("an MP4/MOV file without its index (the 'moov' box written when a recording "
+                                                     "is closed): the recording was cut off before it was finished, and its "
+                                                     "frames cannot be found without that index"));
         throw VideoError(path, nb::TrDevices::tr("cannot open as video (not a video file, or a format FFmpeg does not read)"));
+    }
 
     FrameIndex index;
     index.path = path;

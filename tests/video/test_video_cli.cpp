@@ -83,6 +83,22 @@ private slots:
         const nbtest::CliResult unwritable = run({"frame", vfr_, "--index", "3", "--out", dir_.filePath("no/such/dir/x.png")});
         QCOMPARE(unwritable.code, 1);
         QVERIFY2(unwritable.err.contains(QStringLiteral("does not exist")), qPrintable(unwritable.err));
+        // An MP4 recording cut off before it was closed (no index at its end): said so, by name,
+        // without FFmpeg's own log line (it was "cannot open as video (not a video file…)").
+        VideoSpec whole;
+        whole.codes = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19};
+        whole.encodeArgs = QStringList{"-c:v", "libx264", "-pix_fmt", "yuv420p"};
+        const QString full = dir_.filePath("whole.mp4"), cut = dir_.filePath("cut off.mp4");
+        QVERIFY(writeVideo(full, whole).isEmpty());
+        {
+            QFile in(full), out(cut);
+            QVERIFY(in.open(QIODevice::ReadOnly) && out.open(QIODevice::WriteOnly));
+            out.write(in.read(in.size() / 2));
+        }
+        const nbtest::CliResult cutOff = run({"video-info", cut});
+        QCOMPARE(cutOff.code, 1);
+        QVERIFY2(cutOff.err.contains(cut) && cutOff.err.contains(QStringLiteral("cut off")) && !cutOff.err.contains(QStringLiteral("@ 0x")),
+                 qPrintable(cutOff.err));
         // A video of one frame holds no motion to match: named, with what it lacks.
         VideoSpec one;
         one.codes = {0};
