@@ -1,4 +1,6 @@
 #include "main_window.h"
+
+#include "widgets/modeless_dialogs.h"
 #include "core/run_file.h"
 #include "core/run_keys.h"
 
@@ -342,6 +344,8 @@ bool MainWindow::openSession(const QString& dir)
     }
     if (const auto cal = session_->activeCalibration())
         engine_->setCalibration(cal->fit.slope_V_per_g, cal->name);
+    else
+        engine_->useNominalCalibration();
     restoreSimulatedRig();
     panel_->setSessionOpen(true);
     sessionView_->setSession(&*session_);
@@ -445,7 +449,7 @@ ExportDialog* MainWindow::exportSession()
         if (ok)
             showMessage(tr("Session exported into %1").arg(QDir::toNativeSeparators(dialog->targetDir())));
     });
-    dialog->open();
+    showModeless(dialog);  // the stage may be moving meanwhile (modeless_dialogs.h)
     return dialog;
 }
 
@@ -520,6 +524,8 @@ CalibrationWizard* MainWindow::openCalibrationWizard()
             if (auto load = engine_->calibrationLoad())
                 load->setLoadMass_g(0.0);
         });
+        connect(wizard_, &QObject::destroyed, panel_, [this] { panel_->setCalibrating(false); });
+        panel_->setCalibrating(true);
     }
     wizard_->show();
     wizard_->raise();
@@ -547,6 +553,12 @@ void MainWindow::startRun()
 {
     if (!session_)
         return;
+    if (wizard_) {  // Start is off in the panel then; a plan's next run comes this way too
+        InterlockState state = panel_->interlockState();
+        state.calibrating = true;
+        showMessage(tr("Not now: %1").arg(permission(Control::StartInsertion, state).reason), true);
+        return;
+    }
     devices::RunPlan plan = panel_->motionPlan();
     plan.outPath = session_->nextRunPath(panel_->motionName());
     plan.endWhenMotionDone = true;
@@ -613,17 +625,31 @@ void MainWindow::showMessage(const QString& text, bool alarm)
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     const Permission quit = permission(Control::Quit, engine_->status().interlocks());
-    if (!quit.enabled) {
-        // The offer to end the run first; Esc in this question is the emergency stop as well.
-        const auto answer = QMessageBox::question(
-            this, tr("Quit"), tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason),
-            QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
-        if (answer != QMessageBox::Yes) {
-            event->ignore();
+    if (!quit.enabled && !quitConfirmed_) {
+        // The offer to end the run first, modeless: the stage moves while it is asked, and the
+        // EMERGENCY STOP button must stay clickable (Esc in the question stops it as well).
+        event->ignore();
+        if (quitQuestion_) {
+            quitQuestion_->raise();
+            quitQuestion_->activateWindow();
             return;
         }
-        engine_->emergencyStop();
+        quitQuestion_ = new QMessageBox(QMessageBox::Question, tr("Quit"),
+                                        tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason),
+                                        QMessageBox::Yes | QMessageBox::No, this);
+        quitQuestion_->setObjectName(QStringLiteral("quitQuestion"));
+        quitQuestion_->setDefaultButton(QMessageBox::No);
+        connect(quitQuestion_, &QMessageBox::finished, this, [this](int answer) {
+            if (answer != QMessageBox::Yes)
+                return;
+            quitConfirmed_ = true;
+            QTimer::singleShot(0, this, &QWidget::close);
+        });
+        showModeless(quitQuestion_);
+        return;
     }
+    if (!quit.enabled)
+        engine_->emergencyStop();
     if (options_.persistSettings) {
         QSettings settings;
         settings.setValue(QStringLiteral("window/geometry"), saveGeometry());

@@ -15,6 +15,7 @@
 #include <vector>
 
 class QLabel;
+class QMessageBox;
 class QTimer;
 class QDockWidget;
 class QTabWidget;
@@ -184,6 +185,8 @@ private:
     QDockWidget* panelDock_ = nullptr;
     QDockWidget* sessionDock_ = nullptr;
     QPointer<CalibrationWizard> wizard_;
+    QPointer<QMessageBox> quitQuestion_;  // asked while the stage moves; modeless
+    bool quitConfirmed_ = false;
     QTimer* drainTimer_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     devices::LiveRun* liveRun_ = nullptr;  // what the plots and the calibration wizard observe
@@ -198,6 +201,7 @@ private:
     PlanPanel* planPanel_ = nullptr;
     QDockWidget* planDock_ = nullptr;
     bool planRigPending_ = false;
+    bool planPanelBusy_ = false;  // what the Plan dock last showed: the rig moving or recording
 };
 
 }  // namespace nb

@@ -265,7 +265,9 @@ void MainWindow::showPlan()
         const Plan& plan = planWalker_->plan();
         v.hasPlan = true;
         v.walking = planWalker_->walking();
-        v.recording = planWalker_->attemptOpen();
+        // Any run or motion, the plan's or one made after leaving it: skip, redo, leave and
+        // return would change the plan (and lock the panel to its settings) under a run.
+        v.recording = planWalker_->attemptOpen() || planPanelBusy_;
         v.title = plan.templateName.isEmpty() ? plan.name : tr("%1 (template %2)").arg(plan.name, plan.templateName);
         v.progress = planWalker_->progressText();
         if (const PlannedRun* r = planWalker_->nextRun()) {
@@ -322,6 +324,10 @@ void MainWindow::endPlanRun(const QString& endReason)
 void MainWindow::planStatus(const devices::EngineStatus& status)
 {
     planWalker_->noteEngineCounts(status.biasCount, status.zeroCount);
+    if (const bool busy = status.recording || status.moving; busy != planPanelBusy_) {
+        planPanelBusy_ = busy;
+        showPlan();
+    }
     if (planRigPending_ && !status.moving && !status.recording)
         applyPlanRig();
 }

@@ -274,6 +274,14 @@ void AcquisitionEngine::setCalibration(double slope_V_per_g, const QString& name
     });
 }
 
+void AcquisitionEngine::useNominalCalibration()
+{
+    post([this] {
+        state_->proc->setSlope(nominalSlope_);
+        state_->calibrationName = nominalSlope_ > 0 ? QString::fromLatin1(kNominalCalibration) : QString();
+    });
+}
+
 void AcquisitionEngine::startRun(const RunPlan& plan)
 {
     post([this, plan] {

@@ -141,6 +141,9 @@ public slots:
     void setForceLimit(double newtons);
     void setWithdrawForceLimit(double newtons);
     void setCalibration(double slope_V_per_g, const QString& name);
+    // Back to the device's nominal calibration (none when it has none): a session without a
+    // calibration of its own must not inherit the last session's.
+    void useNominalCalibration();
     void startRun(const nb::devices::RunPlan& plan);
     // Out to `target_mm` (default 0), never recorded unless a run is open; guarded by the
     // withdrawal limit, so a force-limit stop never traps the needle.

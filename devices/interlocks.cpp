@@ -89,6 +89,10 @@ Permission permission(Control control, const InterlockState& s)
             return deny(nb::TrDevices::tr("Zero the stage position first."));
         if (!s.calibrated)
             return deny(nb::TrDevices::tr("No active calibration: calibrate the sensor or choose a calibration."));
+        // The wizard's masses on the sensor would be recorded as the run's force, and a
+        // calibration saved mid-run would apply to part of it.
+        if (s.calibrating)
+            return deny(nb::TrDevices::tr("The calibration wizard is open: finish or close it before a run."));
         if (s.forceLimit_N <= 0.0)
             return deny(nb::TrDevices::tr("Set a maximum-force limit first."));
         if (s.recording)

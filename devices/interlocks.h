@@ -24,6 +24,7 @@ struct InterlockState {
     bool sessionOpen = false;
     QString motionProblem;        // why the chosen motion parameters are invalid; empty when valid
     QString planHold;             // what the plan being walked needs before its next run (its checklist); empty when nothing
+    bool calibrating = false;     // the calibration wizard is open: the masses it asks for load the sensor
     // Bias and zero make sense only with the needle free: not while the force is above the
     // noise band, nor past the depth where the last insertion met tissue.
     bool loaded = false;

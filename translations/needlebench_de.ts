@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+130"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+132"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -169,8 +169,8 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>kein Lauf</translation>
     </message>
     <message>
-        <location line="+10"/>
         <location line="+11"/>
+        <location line="+10"/>
         <source>Save figure</source>
         <translation>Abbildung speichern</translation>
     </message>
@@ -180,12 +180,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>PNG-Bild (*.png);;SVG-Zeichnung (*.svg);;PDF-Dokument (*.pdf)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Save tables (CSV and LaTeX) into</source>
         <translation>Tabellen (CSV und LaTeX) speichern in</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Save tables</source>
         <translation>Tabellen speichern</translation>
     </message>
@@ -422,12 +422,12 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+422"/>
+        <location line="+429"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="-440"/>
+        <location line="-447"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -462,18 +462,18 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>3. Lauf</translation>
     </message>
     <message>
-        <location line="+420"/>
+        <location line="+427"/>
         <source>To start (%1 mm)</source>
         <translation>Zum Start (%1 mm)</translation>
     </message>
     <message>
-        <location line="-508"/>
-        <location line="+401"/>
+        <location line="-515"/>
+        <location line="+408"/>
         <source>&amp;Enable stage</source>
         <translation>Achse &amp;einschalten</translation>
     </message>
     <message>
-        <location line="-398"/>
+        <location line="-405"/>
         <source>&amp;Bias force sensor</source>
         <translation>Kraftsensor &amp;tarieren</translation>
     </message>
@@ -604,7 +604,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+194"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
         <translation>Der Sinus würde %1 mm erreichen, jenseits des Verfahrwegs der Achse.</translation>
     </message>
@@ -619,7 +619,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Tiefe (%1 mm) liegt nicht tiefer als die Nadel jetzt (%2 mm).</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <location line="+107"/>
         <location line="+9"/>
         <source>Not now: %1</source>
@@ -641,26 +641,26 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>angehalten</translation>
     </message>
     <message>
-        <location line="-221"/>
-        <location line="+222"/>
+        <location line="-228"/>
+        <location line="+229"/>
         <source>enabled</source>
         <translation>eingeschaltet</translation>
     </message>
     <message>
-        <location line="-222"/>
-        <location line="+222"/>
+        <location line="-229"/>
+        <location line="+229"/>
         <source>disabled</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+225"/>
+        <location line="-231"/>
+        <location line="+232"/>
         <source>yes (%1 V)</source>
         <translation>ja (%1 V)</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-230"/>
+        <location line="+232"/>
         <source>at rest</source>
         <translation>in Ruhe</translation>
     </message>
@@ -670,8 +670,8 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>keine Aufzeichnung</translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+223"/>
+        <location line="-236"/>
+        <location line="+230"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
@@ -681,21 +681,21 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1 (Überläufe %2)</translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+231"/>
+        <location line="-237"/>
+        <location line="+238"/>
         <source>%1 N</source>
         <translation>%1 N</translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+231"/>
+        <location line="-237"/>
+        <location line="+238"/>
         <location line="+44"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="-274"/>
-        <location line="+233"/>
+        <location line="-281"/>
+        <location line="+240"/>
         <source>%1 N (%2 %)</source>
         <translation>%1 N (%2 %)</translation>
     </message>
@@ -726,7 +726,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt zurücksetzen (Achse einschalten)</translation>
     </message>
     <message>
-        <location line="-241"/>
+        <location line="-248"/>
         <source>Jog (never recorded)</source>
         <translation>Tippbetrieb (nie aufgezeichnet)</translation>
     </message>
@@ -747,12 +747,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+373"/>
+        <location line="+380"/>
         <source>To start</source>
         <translation>Zum Start</translation>
     </message>
     <message>
-        <location line="-351"/>
+        <location line="-358"/>
         <source>Sampling</source>
         <translation>Abtastung</translation>
     </message>
@@ -768,12 +768,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+226"/>
+        <location line="+233"/>
         <source>%1 mm/s</source>
         <translation>%1 mm/s</translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-213"/>
         <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
         <translation>Bewegungen der Nadel ohne Aufzeichnung: Schritte hinein und heraus oder zu einer Position</translation>
     </message>
@@ -793,7 +793,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>2. Bewegung (vom Plan gesetzt)</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+117"/>
         <source>Withdraw (recorded)</source>
         <translation>Rückzug (aufgezeichnet)</translation>
     </message>
@@ -996,7 +996,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+48"/>
+        <location filename="../widgets/export_dialog.cpp" line="+50"/>
         <source>Export session</source>
         <translation>Sitzung exportieren</translation>
     </message>
@@ -1011,7 +1011,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Exportieren nach</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>CSV per run, with JSON sidecar and label intervals</source>
         <translation>CSV je Lauf, mit JSON-Begleitdatei und Label-Intervallen</translation>
     </message>
@@ -1349,7 +1349,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+63"/>
+        <location filename="../app/main_window.cpp" line="+65"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1394,14 +1394,15 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location filename="../app/main_window.cpp" line="+442"/>
+        <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
         <source>Not now: %1</source>
         <translation>Jetzt nicht: %1</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location filename="../app/main_window_safety.cpp" line="-37"/>
         <source>Do it anyway only if you are sure the needle is free and at rest.</source>
         <translation>Nur dann trotzdem, wenn Sie sicher sind, dass die Nadel frei ist und ruht.</translation>
     </message>
@@ -1456,7 +1457,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+77"/>
+        <location filename="../app/main_window.cpp" line="-365"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1586,7 +1587,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzung öffnen</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>NeedleBench – %1</source>
         <translation>NeedleBench – %1</translation>
     </message>
@@ -1603,7 +1604,7 @@ oder ohne Kontakt einbeziehen</translation>
     <message>
         <location line="+34"/>
         <source>Open &amp;video for the run in review…</source>
-        <translation>&amp;Video zum Lauf in der Auswertung öffnen…</translation>
+        <translation>&amp;Video zum Lauf in der Sichtung öffnen…</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -1636,7 +1637,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzungsordner öffnen</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)</source>
         <translation>Kalibrierung %1 in der Sitzung gespeichert und für alle folgenden Läufe verwendet (d = %2 mV/g, r² = %3)</translation>
     </message>
@@ -1646,7 +1647,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+36"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
@@ -1661,24 +1662,24 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+25"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-538"/>
+        <location line="-555"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+538"/>
+        <location line="+554"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-342"/>
+        <location line="-358"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -1837,7 +1838,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Simulierter Prüfstand für Planlauf %1: %2, Seed %3 (erneut freigeben, Nullabgleich und Nullposition)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>%1 (template %2)</source>
         <translation>%1 (Vorlage %2)</translation>
     </message>
@@ -2116,7 +2117,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+47"/>
+        <location filename="../widgets/review_workspace.cpp" line="+49"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2126,12 +2127,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+14"/>
+        <source>%1 (not attached: the run keeps the video it had)</source>
+        <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -2187,12 +2193,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+766"/>
+        <location line="+774"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-763"/>
+        <location line="-771"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2218,12 +2224,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+419"/>
+        <location line="+427"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-419"/>
+        <location line="-427"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2359,27 +2365,32 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+26"/>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation>Zuerst einen Lauf öffnen (Doppelklick in der Sitzungsliste), dann sein Video anhängen</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-18"/>
         <source>%1: no such video file</source>
         <translation>%1: keine solche Videodatei</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>%1 attached to %2; sync it (Auto sync, or mark an event in both)</source>
         <translation>%1 an %2 angehängt; jetzt synchronisieren (automatisch, oder ein Ereignis in beiden markieren)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>Open the video of %1</source>
         <translation>Video zu %1 öffnen</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+6"/>
+        <source>Video not attached: %1 is no longer the run in review</source>
+        <translation>Video nicht zugeordnet: %1 ist nicht mehr der Lauf in der Sichtung</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>The video of this run, %1, is missing. Open it again where it now lies.</source>
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
@@ -2452,7 +2463,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-660"/>
+        <location line="-668"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2527,12 +2538,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+60"/>
         <source>Videos (%1);;All files (*)</source>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+105"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -6641,13 +6652,13 @@ Befehle:
     </message>
     <message>
         <location line="+7"/>
-        <location line="+62"/>
+        <location line="+66"/>
         <location line="+10"/>
         <source>Stop the motion first.</source>
         <translation>Zuerst die Bewegung stoppen.</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-74"/>
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation>Zuerst den Lauf beenden: das Ausschalten des Antriebs würde das Experiment unaufgezeichnet beenden.</translation>
     </message>
@@ -6674,13 +6685,13 @@ Befehle:
     <message>
         <location line="+4"/>
         <location line="+20"/>
-        <location line="+22"/>
+        <location line="+26"/>
         <location line="+10"/>
         <source>Enable the stage first.</source>
         <translation>Zuerst die Achse einschalten.</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-54"/>
         <source>Zeroing needs the stage at rest.</source>
         <translation>Nullen geht nur bei stehender Achse.</translation>
     </message>
@@ -6706,13 +6717,13 @@ Befehle:
     </message>
     <message>
         <location line="+4"/>
-        <location line="+24"/>
+        <location line="+28"/>
         <location line="+10"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation>Not-Aus: Schalten Sie die Achse wieder ein, um ihn zurückzusetzen.</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-36"/>
         <source>Open or create a session first: the run needs a folder.</source>
         <translation>Zuerst eine Sitzung öffnen oder anlegen: der Lauf braucht einen Ordner.</translation>
     </message>
@@ -6723,14 +6734,19 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Zero the stage position first.</source>
         <translation>Zuerst die Achsposition nullen.</translation>
     </message>
     <message>
-        <location line="-18"/>
+        <location line="-22"/>
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
         <translation>Keine aktive Kalibrierung: Sensor kalibrieren oder eine Kalibrierung wählen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The calibration wizard is open: finish or close it before a run.</source>
+        <translation>Der Kalibrierassistent ist geöffnet: vor einem Lauf abschließen oder schließen.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -7275,7 +7291,7 @@ F = %1 x + %2 x²
         <translation>Kalibrierung &apos;%1&apos;: %2 V/g</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+22"/>
         <location line="+48"/>
         <source>run not started: %1</source>
         <translation>Lauf nicht gestartet: %1</translation>
@@ -7347,7 +7363,7 @@ F = %1 x + %2 x²
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-423"/>
+        <location line="-431"/>
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -7357,7 +7373,7 @@ F = %1 x + %2 x²
         <translation>Nullen abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+68"/>
         <source>a run is already on its way to its start position</source>
         <translation>eine Messung fährt bereits ihre Startposition an</translation>
     </message>

@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+130"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+132"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -168,8 +168,8 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
         <location line="+11"/>
+        <location line="+10"/>
         <source>Save figure</source>
         <translation type="unfinished"></translation>
     </message>
@@ -179,12 +179,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Save tables (CSV and LaTeX) into</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Save tables</source>
         <translation type="unfinished"></translation>
     </message>
@@ -421,12 +421,12 @@ or without contact</source>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+422"/>
+        <location line="+429"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-440"/>
+        <location line="-447"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -461,18 +461,18 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+420"/>
+        <location line="+427"/>
         <source>To start (%1 mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-508"/>
-        <location line="+401"/>
+        <location line="-515"/>
+        <location line="+408"/>
         <source>&amp;Enable stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-398"/>
+        <location line="-405"/>
         <source>&amp;Bias force sensor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -603,7 +603,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+194"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -618,7 +618,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <location line="+107"/>
         <location line="+9"/>
         <source>Not now: %1</source>
@@ -640,26 +640,26 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-221"/>
-        <location line="+222"/>
+        <location line="-228"/>
+        <location line="+229"/>
         <source>enabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-222"/>
-        <location line="+222"/>
+        <location line="-229"/>
+        <location line="+229"/>
         <source>disabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+225"/>
+        <location line="-231"/>
+        <location line="+232"/>
         <source>yes (%1 V)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+225"/>
+        <location line="-230"/>
+        <location line="+232"/>
         <source>at rest</source>
         <translation type="unfinished"></translation>
     </message>
@@ -669,8 +669,8 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+223"/>
+        <location line="-236"/>
+        <location line="+230"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
     </message>
@@ -680,21 +680,21 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+231"/>
+        <location line="-237"/>
+        <location line="+238"/>
         <source>%1 N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+231"/>
+        <location line="-237"/>
+        <location line="+238"/>
         <location line="+44"/>
         <source>%1 mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-274"/>
-        <location line="+233"/>
+        <location line="-281"/>
+        <location line="+240"/>
         <source>%1 N (%2 %)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -725,7 +725,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-241"/>
+        <location line="-248"/>
         <source>Jog (never recorded)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -746,12 +746,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+373"/>
+        <location line="+380"/>
         <source>To start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-351"/>
+        <location line="-358"/>
         <source>Sampling</source>
         <translation type="unfinished"></translation>
     </message>
@@ -767,12 +767,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+226"/>
+        <location line="+233"/>
         <source>%1 mm/s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-213"/>
         <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
         <translation type="unfinished"></translation>
     </message>
@@ -792,7 +792,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+117"/>
         <source>Withdraw (recorded)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -995,7 +995,7 @@ or without contact</source>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+48"/>
+        <location filename="../widgets/export_dialog.cpp" line="+50"/>
         <source>Export session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1010,7 +1010,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>CSV per run, with JSON sidecar and label intervals</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1348,7 +1348,7 @@ or without contact</source>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+63"/>
+        <location filename="../app/main_window.cpp" line="+65"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1393,14 +1393,15 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location filename="../app/main_window.cpp" line="+442"/>
+        <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
         <source>Not now: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location filename="../app/main_window_safety.cpp" line="-37"/>
         <source>Do it anyway only if you are sure the needle is free and at rest.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1455,7 +1456,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+77"/>
+        <location filename="../app/main_window.cpp" line="-365"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1584,7 +1585,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>NeedleBench – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1634,7 +1635,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1644,7 +1645,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+36"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1659,23 +1660,23 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+25"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-538"/>
+        <location line="-555"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+538"/>
+        <location line="+554"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-342"/>
+        <location line="-358"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1834,7 +1835,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>%1 (template %2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2113,7 +2114,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+47"/>
+        <location filename="../widgets/review_workspace.cpp" line="+49"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2123,12 +2124,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+14"/>
+        <source>%1 (not attached: the run keeps the video it had)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2184,12 +2190,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+766"/>
+        <location line="+774"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-763"/>
+        <location line="-771"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2215,12 +2221,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+419"/>
+        <location line="+427"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-419"/>
+        <location line="-427"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2356,27 +2362,32 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-18"/>
         <source>%1: no such video file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>%1 attached to %2; sync it (Auto sync, or mark an event in both)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>Open the video of %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+6"/>
+        <source>Video not attached: %1 is no longer the run in review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>The video of this run, %1, is missing. Open it again where it now lies.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2449,7 +2460,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-660"/>
+        <location line="-668"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2524,12 +2535,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+60"/>
         <source>Videos (%1);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+105"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6553,13 +6564,13 @@ Commands:
     </message>
     <message>
         <location line="+7"/>
-        <location line="+62"/>
+        <location line="+66"/>
         <location line="+10"/>
         <source>Stop the motion first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-74"/>
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6586,13 +6597,13 @@ Commands:
     <message>
         <location line="+4"/>
         <location line="+20"/>
-        <location line="+22"/>
+        <location line="+26"/>
         <location line="+10"/>
         <source>Enable the stage first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-54"/>
         <source>Zeroing needs the stage at rest.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6618,13 +6629,13 @@ Commands:
     </message>
     <message>
         <location line="+4"/>
-        <location line="+24"/>
+        <location line="+28"/>
         <location line="+10"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-36"/>
         <source>Open or create a session first: the run needs a folder.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6635,13 +6646,18 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Zero the stage position first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-18"/>
+        <location line="-22"/>
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The calibration wizard is open: finish or close it before a run.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -7185,7 +7201,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+22"/>
         <location line="+48"/>
         <source>run not started: %1</source>
         <translation type="unfinished"></translation>
@@ -7257,7 +7273,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-423"/>
+        <location line="-431"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7267,7 +7283,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+68"/>
         <source>a run is already on its way to its start position</source>
         <translation type="unfinished"></translation>
     </message>

@@ -396,6 +396,12 @@ void ControlPanel::setStartHold(const QString& reason)
     updateControls();
 }
 
+void ControlPanel::setCalibrating(bool open)
+{
+    calibrating_ = open;
+    updateControls();
+}
+
 QString ControlPanel::motionName() const
 {
     return sine_->isChecked() ? QStringLiteral("sine") : QStringLiteral("linear");
@@ -474,6 +480,7 @@ void ControlPanel::updateControls()
 {
     state_.motionProblem = motionProblem();
     state_.planHold = startHold_;
+    state_.calibrating = calibrating_;
     for (auto& [control, b] : buttons_) {
         const Permission p = permission(control, state_);
         // Refused but insistable (bias or zero under load): clickable, the window asks first.

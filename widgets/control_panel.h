@@ -57,6 +57,8 @@ public:
     // What must be done before Start besides the interlocks' own rules (a plan's checklist);
     // empty: nothing. Start stays disabled with it in its tooltip.
     void setStartHold(const QString& reason);
+    // Whether the calibration wizard is open (no run starts while it is).
+    void setCalibrating(bool open);
 
     void setStatus(const devices::EngineStatus& status);
     void setSessionOpen(bool open);
@@ -122,6 +124,7 @@ private:
     QString calibrationName_;
     std::optional<devices::RunPlan> locked_;
     QString lockReason_, startHold_;
+    bool calibrating_ = false;
 };
 
 }  // namespace nb

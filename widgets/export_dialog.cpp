@@ -1,5 +1,7 @@
 #include "export_dialog.h"
 
+#include "widgets/modeless_dialogs.h"
+
 #include "widgets/analysis/analysis_workspace.h"
 
 #include "core/export/dataset_loader.h"
@@ -50,9 +52,8 @@ ExportDialog::ExportDialog(const QString& sessionDir, AnalysisWorkspace* analysi
     target_->setObjectName(QStringLiteral("exportTarget"));
     auto* browse = new QPushButton(tr("Choose…"), this);
     connect(browse, &QPushButton::clicked, this, [this] {
-        const QString d = QFileDialog::getExistingDirectory(this, tr("Export into"), target_->text());
-        if (!d.isEmpty())
-            target_->setText(d);
+        chooseFileModeless(this, {tr("Export into"), target_->text(), QString(), QFileDialog::Directory},
+                           [this](const QString& d) { target_->setText(d); });
     });
     auto* where = new QHBoxLayout;
     where->addWidget(target_, 1);

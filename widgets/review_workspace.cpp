@@ -1,5 +1,7 @@
 #include "review_workspace.h"
 
+#include "widgets/modeless_dialogs.h"
+
 #include "label_commands.h"
 #include "label_model.h"
 #include "label_set_dialog.h"
@@ -51,6 +53,10 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         if (videoPath_.isEmpty())
             return;  // the run changed to one without video while this one was indexed
         index_ = index;
+        if (attachPending_) {
+            attachPending_ = false;
+            storeVideoLink();
+        }
         for (const QString& w : index->warnings)
             showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
         if (run_.size() == 0)
@@ -62,6 +68,13 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
     });
     connect(decoder_, &video::VideoDecoder::failed, this, [this](const QString& message) {
         video_->setMessage(message);
+        if (attachPending_) {
+            // Back to the video the run had (or none), which the session still names.
+            attachPending_ = false;
+            restoreVideoLink();
+            showStatus(tr("%1 (not attached: the run keeps the video it had)").arg(message));
+            return;
+        }
         showStatus(message);
     });
     connect(decoder_, &video::VideoDecoder::frameReady, this, [this](int n, double t, const QImage& image) {
@@ -407,7 +420,7 @@ LabelSetDialog* ReviewWorkspace::editLabelSet()
         updateKeysHelp();
         showStatus(tr("Label set of %1 saved: %2 labels").arg(protocol_).arg(defs.size()));
     });
-    dialog->open();
+    showModeless(dialog);  // a run may be recording meanwhile (modeless_dialogs.h)
     return dialog;
 }
 
@@ -505,11 +518,13 @@ bool ReviewWorkspace::attachVideo(const QString& path)
         showStatus(tr("%1: no such video file").arg(QDir::toNativeSeparators(path)));
         return false;
     }
-    openVideo(QFileInfo(path).absoluteFilePath());
-    // An offset belongs to one video: a new one starts from nothing.
+    // An offset belongs to one video: a new one starts from nothing (kept once it opens; the
+    // decoder may say so before open() returns).
+    attachPending_ = true;
     pendingSync_.reset();
     updateSyncUi();
     setMapping({}, SyncMethod::None);
+    openVideo(QFileInfo(path).absoluteFilePath());
     showStatus(tr("%1 attached to %2; sync it (Auto sync, or mark an event in both)")
                    .arg(QFileInfo(path).fileName(), QFileInfo(runPath_).fileName()));
     return true;
@@ -521,15 +536,21 @@ void ReviewWorkspace::chooseVideo()
         showStatus(tr("Open a run first (double-click it in the session list), then attach its video"));
         return;
     }
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open the video of %1").arg(QFileInfo(runPath_).fileName()),
-                                                      QFileInfo(runPath_).absolutePath(),
-                                                      tr("Videos (%1);;All files (*)").arg(QStringLiteral("*.") + videoSuffixes().join(QStringLiteral(" *."))));
-    if (!path.isEmpty())
-        attachVideo(path);
+    // Modeless: a run may be recording meanwhile (modeless_dialogs.h). The video goes to the
+    // run the chooser was opened for, even if another is opened in Review before it closes.
+    const FileChoice choice{tr("Open the video of %1").arg(QFileInfo(runPath_).fileName()), QFileInfo(runPath_).absolutePath(),
+                            tr("Videos (%1);;All files (*)").arg(QStringLiteral("*.") + videoSuffixes().join(QStringLiteral(" *.")))};
+    chooseFileModeless(this, choice, [this, run = runPath_](const QString& path) {
+        if (run == runPath_)
+            attachVideo(path);
+        else
+            showStatus(tr("Video not attached: %1 is no longer the run in review").arg(QFileInfo(run).fileName()));
+    });
 }
 
 void ReviewWorkspace::restoreVideoLink()
 {
+    attachPending_ = false;
     QString problem;
     const std::optional<RunVideoLink> link = readRunVideoLink(runPath_, &problem);
     // The run's own video beside it (RUN.mp4) when the session names none.
@@ -561,7 +582,7 @@ void ReviewWorkspace::restoreVideoLink()
 
 void ReviewWorkspace::storeVideoLink()
 {
-    if (runPath_.isEmpty())
+    if (runPath_.isEmpty() || attachPending_)
         return;
     try {
         RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_};

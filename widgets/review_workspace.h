@@ -164,6 +164,9 @@ private:
     int frame_ = -1, requested_ = -1;
     video::FrameIndexPtr index_;
     QString videoPath_;
+    // A video the operator chose, not yet opened: the run's link keeps the one before until
+    // it opens (a file that fails to open replaced it).
+    bool attachPending_ = false;
     std::map<QString, std::pair<QString, double>> pending_;  // track -> (label, start)
     std::optional<double> markRecording_, markVideo_;
     std::optional<std::pair<double, double>> markedEvent_;  // the last event marked in both (recording, video)

@@ -298,6 +298,19 @@ private slots:
         QVERIFY(!p->motionLocked());
         QVERIFY(velocity->isEnabled());
         velocity->setValue(3.0);
+        // A run of the operator's own meanwhile: while it records, the plan's buttons wait
+        // (Return to plan locked the panel to the plan's settings under the moving stage, and
+        // Skip went through mid-run).
+        QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::StartInsertion)->isEnabled(), qPrintable(p->button(Control::StartInsertion)->toolTip()), 20000);
+        const int ownBefore = w.runsEnded();
+        p->button(Control::StartInsertion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().recording, 20000);
+        QTRY_VERIFY(!w.planPanel()->leaveButton()->isEnabled());
+        QVERIFY(!w.planPanel()->skipButton()->isEnabled());
+        QVERIFY(!w.planPanel()->redoButton()->isEnabled());
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), ownBefore + 1, 30000);
+        QVERIFY(!p->motionLocked());
+        QTRY_VERIFY_WITH_TIMEOUT(w.planPanel()->leaveButton()->isEnabled(), 10000);
         QTest::mouseClick(w.planPanel()->leaveButton(), Qt::LeftButton);
         QVERIFY(p->motionLocked());
         QCOMPARE(velocity->value(), kSlowVelocity_mm_s);

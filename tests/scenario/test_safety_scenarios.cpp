@@ -6,7 +6,9 @@
 #include "main_window.h"
 #include "support/simulated_window.h"
 
+#include "core/data_names.h"
 #include "core/run_file.h"
+#include "core/session.h"
 #include "devices/acquisition_engine.h"
 #include "devices/sim/rig_config.h"
 #include "devices/sim/simulated_rig.h"
@@ -72,6 +74,23 @@ QAction* action(nb::MainWindow& w, const QString& text)
 }
 
 bool busy(const nb::devices::EngineStatus& s) { return s.moving || s.approaching || s.jogging; }
+
+// The dialog on screen besides the main window, modal or not.
+QWidget* visibleDialog()
+{
+    for (QWidget* t : QApplication::topLevelWidgets())
+        if (qobject_cast<QDialog*>(t) && t->isVisible())
+            return t;
+    return nullptr;
+}
+
+// A click as the window system delivers it: through Qt's modality (QTest's QWidget overload
+// would hand the event to the button directly, past a modal dialog that blocks it).
+void clickLikeAMouse(QWidget* button)
+{
+    QWidget* top = button->window();
+    QTest::mouseClick(top->windowHandle(), Qt::LeftButton, {}, button->mapTo(top, button->rect().center()));
+}
 
 // What one Esc inside a dialog did.
 struct EscResult {
@@ -166,8 +185,9 @@ private slots:
     void escStopsFromEveryDialog_data()
     {
         QTest::addColumn<QString>("which");
+        // (The calibration wizard is never open during a run: calibrationAndRunExcludeEachOther.)
         for (const char* name : {"new session", "file chooser", "session details", "devices", "simulated rig",
-                                 "calibration wizard", "label set", "quit confirmation", "menu", "new plan"})
+                                 "label set", "quit confirmation", "menu", "new plan"})
             QTest::newRow(name) << QString::fromLatin1(name);
     }
 
@@ -198,15 +218,14 @@ private slots:
             open = [&] { action(w, QStringLiteral("New &plan from template…"))->trigger(); };
         else if (which == QLatin1String("simulated rig"))
             open = [&] { action(w, QStringLiteral("&Simulated rig…"))->trigger(); };
-        else if (which == QLatin1String("calibration wizard")) {
-            open = [&] { action(w, QStringLiteral("&Calibrate force sensor…"))->trigger(); };
-            dialog = [&] { return static_cast<QWidget*>(w.findChild<nb::CalibrationWizard*>()); };
-        } else if (which == QLatin1String("label set")) {
+        else if (which == QLatin1String("label set")) {
             motionFirst = true;  // allowed mid-run: it changes no run
             open = [&] { w.reviewWorkspace()->editLabelSet(); };
+            dialog = [] { return visibleDialog(); };  // modeless: the stop button stays clickable
         } else if (which == QLatin1String("quit confirmation")) {
             motionFirst = true;
             open = [&] { w.close(); };
+            dialog = [] { return visibleDialog(); };
         } else if (which == QLatin1String("menu")) {
             motionFirst = true;
             QMenu* menu = w.menuBar()->actions().at(0)->menu();
@@ -231,6 +250,143 @@ private slots:
         QVERIFY(w.isVisible());                   // the quit question was not answered by the stop
         QCOMPARE(w.session()->dir(), sessionDir);  // nor a session switched
         QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().latched, 5000);
+    }
+
+    // Whatever the window offers while a run records opens without blocking it: the EMERGENCY
+    // STOP button takes a click with any of them open (a modal one swallowed the click, and on
+    // X11 the keyboard with it), and the dialog stays open.
+    void stopButtonClickableWithEveryDialog_data()
+    {
+        QTest::addColumn<QString>("which");
+        for (const char* name : {"export", "export folder", "video chooser", "label set", "quit confirmation", "save figure", "save tables"})
+            QTest::newRow(name) << QString::fromLatin1(name);
+    }
+
+    void stopButtonClickableWithEveryDialog()
+    {
+        QFETCH(QString, which);
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setLinear(w, 5.0, 60.0);
+        nbtest::prepareToRecord(w);
+        nb::devices::AcquisitionEngine* engine = w.engine();
+        // Review needs a run for its video chooser: a short one first.
+        if (which == QLatin1String("video chooser")) {
+            setLinear(w, 5.0, 2.0);
+            w.controlPanel()->button(Control::StartInsertion)->click();
+            QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 20000);
+            w.reviewRun(w.lastRunPath());
+            w.controlPanel()->button(Control::Withdraw)->click();
+            QTRY_VERIFY_WITH_TIMEOUT(!engine->status().moving && w.controlPanel()->button(Control::StartInsertion)->isEnabled(), 20000);
+            setLinear(w, 5.0, 60.0);
+        }
+        const int endedBefore = w.runsEnded();
+        w.controlPanel()->button(Control::StartInsertion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(engine->status().moving && engine->status().recording, 20000);
+
+        if (which == QLatin1String("export"))
+            action(w, QStringLiteral("&Export session…"))->trigger();
+        else if (which == QLatin1String("export folder")) {
+            action(w, QStringLiteral("&Export session…"))->trigger();
+            QTRY_VERIFY(visibleDialog());
+            QPushButton* choose = nullptr;
+            for (QPushButton* b : visibleDialog()->findChildren<QPushButton*>())
+                if (b->text() == QStringLiteral("Choose…"))
+                    choose = b;
+            QVERIFY(choose);
+            choose->click();
+            QTRY_VERIFY(w.findChild<QFileDialog*>());
+        } else if (which == QLatin1String("video chooser"))
+            action(w, QStringLiteral("Open &video for the run in review…"))->trigger();
+        else if (which == QLatin1String("label set"))
+            w.reviewWorkspace()->editLabelSet();
+        else if (which == QLatin1String("quit confirmation"))
+            w.close();
+        else if (which == QLatin1String("save figure") || which == QLatin1String("save tables")) {
+            // The Analysis tab's buttons (its first page's).
+            const QString text = which == QLatin1String("save figure") ? QStringLiteral("Save figure…") : QStringLiteral("Save tables…");
+            QPushButton* b = nullptr;
+            for (QPushButton* candidate : w.findChildren<QPushButton*>())
+                if (!b && candidate->text() == text)
+                    b = candidate;
+            QVERIFY2(b, qPrintable(text));
+            b->click();
+        }
+        QTRY_VERIFY(visibleDialog());
+        QWidget* open = which == QLatin1String("export folder") ? w.findChild<QFileDialog*>() : visibleDialog();
+        QVERIFY(open && open->isVisible());
+        QCOMPARE(QApplication::activeModalWidget(), nullptr);
+        QTest::qWait(200);
+        QVERIFY(engine->status().moving);
+        clickLikeAMouse(w.controlPanel()->button(Control::EmergencyStop));
+        QTRY_VERIFY_WITH_TIMEOUT(!engine->status().moving, 2000);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), endedBefore + 1, 10000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("emergency_stop"));
+        QVERIFY(open->isVisible());  // the click stopped; it closed nothing
+        QVERIFY(w.isVisible());
+        for (QWidget* t : QApplication::topLevelWidgets())
+            if (auto* d = qobject_cast<QDialog*>(t); d && d->isVisible())
+                d->reject();
+    }
+
+    // The wizard's masses load the sensor and its Save and use changes the calibration: with
+    // it open no run starts (its loads were recorded as the run's force, and a calibration
+    // saved mid-run applied to part of it), and during a run it does not open.
+    void calibrationAndRunExcludeEachOther()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setLinear(w, 5.0, 20.0);
+        nbtest::prepareToRecord(w);
+        QAbstractButton* start = w.controlPanel()->button(Control::StartInsertion);
+        QVERIFY(w.openCalibrationWizard());
+        QTRY_VERIFY(!start->isEnabled());
+        QVERIFY2(start->toolTip().contains(QStringLiteral("calibration wizard")), qPrintable(start->toolTip()));
+        // A start asked for all the same (as a plan's next run is) is refused by the window too.
+        emit w.controlPanel()->startRequested();
+        QTest::qWait(300);
+        QVERIFY(!w.engine()->status().recording);
+        w.findChild<nb::CalibrationWizard*>()->reject();
+        QTRY_VERIFY(!w.findChild<nb::CalibrationWizard*>());
+        QTRY_VERIFY(start->isEnabled());
+        start->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().recording, 20000);
+        QCOMPARE(w.openCalibrationWizard(), nullptr);
+        w.controlPanel()->button(Control::EmergencyStop)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 10000);
+    }
+
+    // A calibration saved in one session is that session's: another session without one of its
+    // own runs on the sensor's nominal calibration, and its runs say so.
+    void calibrationStaysWithItsSession()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("a")), false, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+        nb::StoredCalibration cal;
+        cal.date = QDateTime::currentDateTime();
+        cal.sensor = QStringLiteral("test");
+        cal.fit.slope_V_per_g = 0.0123;
+        cal.fit.r2 = 0.9999;
+        for (double g : {0.0, 50.0, 100.0})
+            cal.points.push_back({g, 0.0123 * g});
+        w.useCalibration(cal);
+        QTRY_VERIFY(w.engine()->status().calibrationName.startsWith(QStringLiteral("cal_")));
+        const QString saved = w.engine()->status().calibrationName;
+        QVERIFY(w.createSession(tmp.filePath(QStringLiteral("b")), {}));
+        QTRY_COMPARE(w.engine()->status().calibrationName, QString::fromLatin1(nb::kNominalCalibration));
+        // Back in the first session, its own calibration again.
+        QVERIFY(w.openSession(tmp.filePath(QStringLiteral("a"))));
+        QTRY_COMPARE(w.engine()->status().calibrationName, saved);
     }
 
     void escAtRestClosesTheDialog()

@@ -496,6 +496,38 @@ private slots:
         QVERIFY(failed.wait(20000));
         QVERIFY(failed.first().first().toString().contains("missing.avi"));
     }
+
+    // A file that does not open as video (here the head of an H.264 MP4 whose index was never
+    // written) is not attached: the run keeps the video it had, in the session and on screen.
+    void aVideoThatFailsToOpenIsNotAttached()
+    {
+        const QString broken = dir_.filePath("broken.mp4");
+        QFile cut(broken);
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(QByteArray::fromHex("0000001c667479706973736f6d0000020069736f6d69736f32617663310000000866726565"));
+        cut.write(QByteArray(40000, '\x5a'));
+        cut.close();
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QVERIFY(ws.openRun(run_));
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        QVERIFY(ws.attachVideo(video_));
+        QVERIFY(opened.wait(60000));
+        auto linked = [this] {
+            const auto link = nb::readRunVideoLink(run_);
+            return link ? link->video : QStringLiteral("(none)");
+        };
+        QCOMPARE(linked(), QFileInfo(video_).absoluteFilePath());
+        QSignalSpy failed(ws.decoder(), &nb::video::VideoDecoder::failed);
+        QVERIFY(ws.attachVideo(broken));
+        QVERIFY(failed.wait(20000));
+        QTRY_VERIFY2(ws.status().contains(QStringLiteral("not attached")), qPrintable(ws.status()));
+        QVERIFY2(ws.status().contains(QStringLiteral("broken.mp4")), qPrintable(ws.status()));
+        QCOMPARE(linked(), QFileInfo(video_).absoluteFilePath());
+        QTRY_COMPARE(ws.videoPath(), QFileInfo(video_).absoluteFilePath());
+        QVERIFY(opened.wait(60000));  // the run's own video, shown again
+    }
 };
 
 QTEST_MAIN(TestReviewWorkspace)

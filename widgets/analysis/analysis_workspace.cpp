@@ -1,4 +1,6 @@
 #include "analysis_workspace.h"
+
+#include "widgets/modeless_dialogs.h"
 #include "core/tr.h"
 
 #include "analysis_plots.h"
@@ -620,19 +622,20 @@ void AnalysisWorkspace::exportCurrentFigure()
                                       : tab == 1 ? std::vector<QCustomPlot*>{frictionPlot_, phasesPlot_}
                                       : tab == 2 ? std::vector<QCustomPlot*>{validationPlot_}
                                                  : std::vector<QCustomPlot*>{factorPlot_};
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save figure"), QString(),
-                                                      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"));
-    if (path.isEmpty())
-        return;
-    try {
-        const QFileInfo fi(path);
-        for (std::size_t i = 0; i < plots.size(); ++i) {
-            const QString p = i == 0 ? path : fi.dir().filePath(QStringLiteral("%1_%2.%3").arg(fi.completeBaseName()).arg(i + 1).arg(fi.suffix()));
-            saveFigure(plots[i], p);
+    // Modeless: a run may be recording meanwhile (modeless_dialogs.h).
+    FileChoice choice{tr("Save figure"), QString(), tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
+                      QFileDialog::AnyFile, QFileDialog::AcceptSave};
+    chooseFileModeless(this, choice, [this, plots](const QString& path) {
+        try {
+            const QFileInfo fi(path);
+            for (std::size_t i = 0; i < plots.size(); ++i) {
+                const QString p = i == 0 ? path : fi.dir().filePath(QStringLiteral("%1_%2.%3").arg(fi.completeBaseName()).arg(i + 1).arg(fi.suffix()));
+                saveFigure(plots[i], p);
+            }
+        } catch (const ExportError& e) {
+            warnModeless(this, tr("Save figure"), e.message());
         }
-    } catch (const ExportError& e) {
-        QMessageBox::warning(this, tr("Save figure"), e.message());
-    }
+    });
 }
 
 void AnalysisWorkspace::exportCurrentTables()
@@ -647,17 +650,17 @@ void AnalysisWorkspace::exportCurrentTables()
         tables = {{QStringLiteral("validation"), validationTable(analysis_)}};
     else
         tables = {{QStringLiteral("by_factor_") + factorChoice_->currentText(), factorTableFor(factorChoice_->currentText())}};
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Save tables (CSV and LaTeX) into"));
-    if (dir.isEmpty())
-        return;
-    try {
-        for (const auto& [name, table] : tables) {
-            writeFitTableCsv(QDir(dir).filePath(name + QStringLiteral(".csv")), table);
-            writeFitTableLatex(QDir(dir).filePath(name + QStringLiteral(".tex")), table);
+    FileChoice choice{tr("Save tables (CSV and LaTeX) into"), QString(), QString(), QFileDialog::Directory};
+    chooseFileModeless(this, choice, [this, tables](const QString& dir) {
+        try {
+            for (const auto& [name, table] : tables) {
+                writeFitTableCsv(QDir(dir).filePath(name + QStringLiteral(".csv")), table);
+                writeFitTableLatex(QDir(dir).filePath(name + QStringLiteral(".tex")), table);
+            }
+        } catch (const ExportError& e) {
+            warnModeless(this, tr("Save tables"), e.message());
         }
-    } catch (const ExportError& e) {
-        QMessageBox::warning(this, tr("Save tables"), e.message());
-    }
+    });
 }
 
 }  // namespace nb
