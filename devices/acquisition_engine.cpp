@@ -40,6 +40,7 @@ InterlockState EngineStatus::interlocks() const
     s.latched = latched;
     s.biased = biased;
     s.zeroed = zeroed;
+    s.startKnown = zeroCount > 0;
     s.moving = moving || approaching;
     s.recording = recording;
     s.calibrated = slope_V_per_g > 0.0;

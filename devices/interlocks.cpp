@@ -109,7 +109,9 @@ Permission permission(Control control, const InterlockState& s)
             return deny(nb::TrDevices::tr("Emergency stop: enable the stage again to reset it."));
         if (!s.stageEnabled)
             return deny(nb::TrDevices::tr("Enable the stage first."));
-        if (!s.zeroed)
+        // Out towards the last zero needs no fresh one: a withdrawal never goes deeper than
+        // where the needle is, and after an emergency stop the needle must come out.
+        if (!s.zeroed && !s.startKnown)
             return deny(nb::TrDevices::tr("Zero the stage position first."));
         if (s.moving)
             return deny(nb::TrDevices::tr("Stop the motion first."));

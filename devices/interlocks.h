@@ -17,6 +17,9 @@ struct InterlockState {
     bool latched = false;         // an emergency stop holds until the operator enables again
     bool biased = false;
     bool zeroed = false;
+    // Zeroed at least once on these devices: position 0 is the operator's start, still, after an
+    // emergency stop's reset or a re-enable has asked for a fresh zero.
+    bool startKnown = false;
     bool moving = false;
     bool recording = false;
     bool calibrated = false;      // an active calibration is set on the engine

@@ -492,6 +492,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().latched, 5000);
         QVERIFY(p->interlockState().stageEnabled);
         QTRY_VERIFY_WITH_TIMEOUT(!banner->isVisible(), 5000);
+        // The reset asks for a fresh zero before the next run, but the needle comes out without
+        // one: Withdraw goes back towards the start the last zero set.
+        QVERIFY(!p->interlockState().zeroed);
+        QVERIFY(!p->button(Control::StartInsertion)->isEnabled());
+        QTRY_VERIFY2_WITH_TIMEOUT(p->button(Control::Withdraw)->isEnabled(), qPrintable(p->button(Control::Withdraw)->toolTip()), 5000);
         // Jogging out works again, unrecorded.
         QTRY_VERIFY_WITH_TIMEOUT(p->findChild<QPushButton*>(QStringLiteral("jogOut"))->isEnabled(), 5000);
         p->findChild<QComboBox*>(QStringLiteral("jogStep"))->setCurrentIndex(1);  // 1 mm

@@ -81,6 +81,23 @@ private slots:
         QVERIFY(!permission(Control::Enable, s).enabled);  // disabling mid-run would end it unrecorded
         s.recording = false;
         QVERIFY(permission(Control::Enable, s).enabled);
+
+        // After an emergency stop's reset the zero is asked for again before a run, but the
+        // needle comes out towards the start the last zero set.
+        s.zeroed = false;
+        s.startKnown = true;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("Zero")));
+        QVERIFY(permission(Control::Withdraw, s).enabled);
+        s.startKnown = false;
+        QVERIFY(!permission(Control::Withdraw, s).enabled);
+
+        // The calibration wizard's masses would be recorded as force: no run while it is open.
+        s.zeroed = true;
+        QVERIFY(permission(Control::StartInsertion, s).enabled);
+        s.calibrating = true;
+        QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("calibration wizard")));
+        QVERIFY(permission(Control::Withdraw, s).enabled);
+        QVERIFY(permission(Control::Jog, s).enabled);
     }
 
     void prerequisitesOfAnInsertion()
