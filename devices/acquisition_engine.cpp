@@ -106,6 +106,7 @@ AcquisitionEngine::AcquisitionEngine(DeviceSet devices, EngineConfig config, QOb
       nominalSlope_(devices.nominalSlope_V_per_g),
       hostPaced_(!devices.selfPacedClock),
       description_(devices.description),
+      fileDescription_(devices.fileDescription.isEmpty() ? devices.description : devices.fileDescription),
       config_(config),
       live_(config.liveCapacity),
       state_(std::make_unique<State>())
@@ -322,7 +323,8 @@ void AcquisitionEngine::openRun(const RunPlan& plan)
     State& s = *state_;
     Metadata meta = plan.metadata;
     meta.set(key::rate_hz, s.proc->rate());
-    meta.set(key::device, description_);
+    // The file's words are English in every language (views translate them).
+    meta.set(key::device, fileDescription_);
     meta.set(key::calibration, s.calibrationName);
     meta.set(key::slope_V_per_g, QString::number(s.proc->slope(), 'g', 8));
     meta.set(key::bias_V, QString::number(s.proc->bias_V(), 'f', 6));
@@ -337,7 +339,7 @@ void AcquisitionEngine::openRun(const RunPlan& plan)
         meta.set(QStringLiteral("slow_after_puncture_mm_s"), plan.slowAfterPuncture_mm_s);
     s.runStart = s.proc->lastTime_s() + 1.0 / s.proc->rate();
     meta.set(key::run_start_device_time_s, QString::number(s.runStart, 'f', 6));
-    meta.set(key::position_source, tr("stage read-back, interpolated to the sample clock"));
+    meta.set(key::position_source, QStringLiteral("stage read-back, interpolated to the sample clock"));
     try {
         s.recorder.open(plan.outPath, meta, truth_ != nullptr);
     } catch (const Error& e) {

@@ -188,6 +188,7 @@ private:
     double nominalSlope_ = 0.0;
     bool hostPaced_ = true;
     QString description_;
+    QString fileDescription_;  // the same in English, for run files
     EngineConfig config_;
     SpscRing<Sample> live_;
     std::unique_ptr<State> state_;  // owned by the engine thread

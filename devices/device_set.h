@@ -20,7 +20,8 @@ struct DeviceSet {
     // True when the sensor's clock runs as fast as it is read (a simulation on its own
     // clock): the host does not pace it, and an idle engine waits instead of racing it.
     bool selfPacedClock = false;
-    QString description;                     // "simulated rig (liver1, beveled tip, seed 1)"
+    QString description;                     // "simulated rig (liver1, beveled tip, seed 1)", in the operator's language
+    QString fileDescription;                 // the same in English, as run files record it (empty: `description`)
     double nominalSlope_V_per_g = 0.0;       // the sensor chain's nominal calibration, 0 = unknown
 };
 

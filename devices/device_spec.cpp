@@ -143,7 +143,7 @@ DeviceSet openDevices(const DeviceSpec& spec)
         return sim::makeSimulatedDevices(simConfig);
 
     DeviceSet set;
-    QStringList parts;
+    QStringList parts, fileParts;  // fileParts: in English, for run files
     if (simDaq || simStage) {
         // Half real, half simulated: the simulated half must keep wall-clock time.
         sim::RigConfig c = simConfig;
@@ -156,9 +156,11 @@ DeviceSet openDevices(const DeviceSpec& spec)
             set.sensor = std::move(simulated.sensor);
             set.nominalSlope_V_per_g = simulated.nominalSlope_V_per_g;
             parts << nb::TrDevices::tr("simulated load cell");
+            fileParts << QStringLiteral("simulated load cell");
         } else {
             set.stage = std::move(simulated.stage);
             parts << nb::TrDevices::tr("simulated stage");
+            fileParts << QStringLiteral("simulated stage");
         }
     }
     if (!simDaq) {
@@ -168,6 +170,7 @@ DeviceSet openDevices(const DeviceSpec& spec)
         c.gainIndex = spec.u6GainIndex;
         auto sensor = std::make_unique<U6ForceSensor>(c);
         parts.prepend(sensor->name());
+        fileParts.prepend(sensor->name());
         set.sensor = std::move(sensor);
         set.nominalSlope_V_per_g = spec.slope_V_per_g > 0 ? spec.slope_V_per_g : kBridgeSlope_V_per_g;
     }
@@ -177,9 +180,11 @@ DeviceSet openDevices(const DeviceSpec& spec)
         c.units.microstepsPerMm = spec.zaberMicrostepsPerMm;
         auto stage = std::make_unique<ZaberStage>(c);
         parts << stage->name();
+        fileParts << QStringLiteral("Zaber stage on %1").arg(c.port);
         set.stage = std::move(stage);
     }
     set.description = parts.join(QStringLiteral(", "));
+    set.fileDescription = fileParts.join(QStringLiteral(", "));
     return set;
 }
 

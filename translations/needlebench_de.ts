@@ -6174,13 +6174,13 @@ Befehle:
         <translation>simulierte Kraftmessdose</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <location filename="../devices/sim/simulated_rig.cpp" line="-1"/>
         <source>simulated stage</source>
         <translation>simulierte Achse</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+52"/>
         <source>LabJack U6 (USB bus %1 device %2)</source>
         <translation>LabJack U6 (USB-Bus %1, Gerät %2)</translation>
     </message>
@@ -6652,13 +6652,13 @@ Befehle:
     </message>
     <message>
         <location line="+7"/>
-        <location line="+66"/>
+        <location line="+68"/>
         <location line="+10"/>
         <source>Stop the motion first.</source>
         <translation>Zuerst die Bewegung stoppen.</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-76"/>
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation>Zuerst den Lauf beenden: das Ausschalten des Antriebs würde das Experiment unaufgezeichnet beenden.</translation>
     </message>
@@ -6686,12 +6686,12 @@ Befehle:
         <location line="+4"/>
         <location line="+20"/>
         <location line="+26"/>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Enable the stage first.</source>
         <translation>Zuerst die Achse einschalten.</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-56"/>
         <source>Zeroing needs the stage at rest.</source>
         <translation>Nullen geht nur bei stehender Achse.</translation>
     </message>
@@ -6718,12 +6718,12 @@ Befehle:
     <message>
         <location line="+4"/>
         <location line="+28"/>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation>Not-Aus: Schalten Sie die Achse wieder ein, um ihn zurückzusetzen.</translation>
     </message>
     <message>
-        <location line="-36"/>
+        <location line="-38"/>
         <source>Open or create a session first: the run needs a folder.</source>
         <translation>Zuerst eine Sitzung öffnen oder anlegen: der Lauf braucht einen Ordner.</translation>
     </message>
@@ -6734,12 +6734,12 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Zero the stage position first.</source>
         <translation>Zuerst die Achsposition nullen.</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-24"/>
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
         <translation>Keine aktive Kalibrierung: Sensor kalibrieren oder eine Kalibrierung wählen.</translation>
     </message>
@@ -6760,7 +6760,7 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+38"/>
+        <location line="+40"/>
         <source>The stage is moving.</source>
         <translation>Die Achse bewegt sich.</translation>
     </message>
@@ -7231,7 +7231,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+196"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+198"/>
         <source>stage enabled; fault cleared</source>
         <translation>Achse eingeschaltet; Fehler zurückgesetzt</translation>
     </message>
@@ -7292,17 +7292,12 @@ F = %1 x + %2 x²
     </message>
     <message>
         <location line="+22"/>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>run not started: %1</source>
         <translation>Lauf nicht gestartet: %1</translation>
     </message>
     <message>
-        <location line="-4"/>
-        <source>stage read-back, interpolated to the sample clock</source>
-        <translation>Rücklesewert der Achse, auf den Abtasttakt interpoliert</translation>
-    </message>
-    <message>
-        <location line="+29"/>
+        <location line="+25"/>
         <source>recording to %1</source>
         <translation>Aufzeichnung nach %1</translation>
     </message>
@@ -7363,7 +7358,7 @@ F = %1 x + %2 x²
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-432"/>
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -7388,7 +7383,7 @@ F = %1 x + %2 x²
         <translation>fahre zur Startposition %1 mm (nicht aufgezeichnet)</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>withdraw refused: %1</source>
         <translation>Zurückziehen abgelehnt: %1</translation>
     </message>

@@ -6086,13 +6086,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <location filename="../devices/sim/simulated_rig.cpp" line="-1"/>
         <source>simulated stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+52"/>
         <source>LabJack U6 (USB bus %1 device %2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6564,13 +6564,13 @@ Commands:
     </message>
     <message>
         <location line="+7"/>
-        <location line="+66"/>
+        <location line="+68"/>
         <location line="+10"/>
         <source>Stop the motion first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-76"/>
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6598,12 +6598,12 @@ Commands:
         <location line="+4"/>
         <location line="+20"/>
         <location line="+26"/>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Enable the stage first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-56"/>
         <source>Zeroing needs the stage at rest.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6630,12 +6630,12 @@ Commands:
     <message>
         <location line="+4"/>
         <location line="+28"/>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-36"/>
+        <location line="-38"/>
         <source>Open or create a session first: the run needs a folder.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6646,12 +6646,12 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Zero the stage position first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-24"/>
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6672,7 +6672,7 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+38"/>
+        <location line="+40"/>
         <source>The stage is moving.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7141,7 +7141,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+196"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+198"/>
         <source>stage enabled; fault cleared</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7202,17 +7202,12 @@ F = %1 x + %2 x²
     </message>
     <message>
         <location line="+22"/>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>run not started: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-4"/>
-        <source>stage read-back, interpolated to the sample clock</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+29"/>
+        <location line="+25"/>
         <source>recording to %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7273,7 +7268,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-432"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7298,7 +7293,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>withdraw refused: %1</source>
         <translation type="unfinished"></translation>
     </message>

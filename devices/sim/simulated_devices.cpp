@@ -20,6 +20,11 @@ DeviceSet simulatedDeviceSet(const std::shared_ptr<SimulatedRig>& rig)
                           .arg(config.tissue, tipDisplayName(tipName(config.tip)))
                           .arg(config.seed)
                           .arg(config.realtime ? QString() : nb::TrDevices::tr(", simulated clock"));
+    // Run files are in one language whatever the window speaks: a dataset mixes none.
+    set.fileDescription = QStringLiteral("simulated rig (%1, %2 tip, seed %3%4)")
+                              .arg(config.tissue, tipName(config.tip))
+                              .arg(config.seed)
+                              .arg(config.realtime ? QString() : QStringLiteral(", simulated clock"));
     return set;
 }
 

@@ -352,6 +352,12 @@ private slots:
         nb::setPreferredLanguage(QStringLiteral("de"));
         QCOMPARE(nb::preferredLanguage(), QStringLiteral("de"));
         nb::installTranslation(*QCoreApplication::instance());
+        // Whatever fails below, the tests after this one run in English.
+        auto english = qScopeGuard([] {
+            for (QTranslator* t : QCoreApplication::instance()->findChildren<QTranslator*>())
+                QCoreApplication::removeTranslator(t);
+            nb::setPreferredLanguage(QStringLiteral("en"));
+        });
         QTemporaryDir tmp;
         {
             nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), false));
@@ -368,6 +374,18 @@ private slots:
             QTRY_COMPARE(w.controlPanel()->findChild<QLabel*>(QStringLiteral("status_calibration"))->text(), QStringLiteral("nominal (Gerät)"));
             QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("Spitze: abgeschrägt")), qPrintable(w.engine()->deviceDescription()));
             QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_de.png")));
+            // A run recorded in German is written in the files' one language: a dataset of
+            // several operators mixes none.
+            setMotion(w, 10.0, 5.0);
+            nbtest::prepareToRecord(w);
+            QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+            QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+            const nb::Run run = nb::readRunFile(w.lastRunPath()).run;
+            const QString device = run.meta(QStringLiteral("device")).value_or(QString());
+            QVERIFY2(device.startsWith(QStringLiteral("simulated rig (")) && device.contains(QStringLiteral("beveled tip")), qPrintable(device));
+            QCOMPARE(run.meta(QStringLiteral("position_source")).value_or(QString()),
+                     QStringLiteral("stage read-back, interpolated to the sample clock"));
+            QCOMPARE(run.meta(QStringLiteral("end_reason")).value_or(QString()), QStringLiteral("completed"));
         }
         {
             // Data names (tips, tissue presets) are shown in German and stored as they are.
@@ -403,9 +421,6 @@ private slots:
                     for (int i = 0; i < box->count(); ++i)
                         QVERIFY2(!stored.contains(box->itemText(i)), qPrintable(box->itemText(i)));
         }
-        for (QTranslator* t : QCoreApplication::instance()->findChildren<QTranslator*>())
-            QCoreApplication::removeTranslator(t);
-        nb::setPreferredLanguage(QStringLiteral("en"));
     }
 
     // Devices ▸ Choose devices…: what is connected is listed, the choice becomes a device spec,
