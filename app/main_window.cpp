@@ -461,9 +461,7 @@ void MainWindow::newSessionDialog()
     if (dialog.exec() != QDialog::Accepted || refused(Control::ChangeSetup))
         return;
     const SessionInfo info = dialog.info();
-    QString name = QStringLiteral("%1_%2_%3").arg(info.organ, info.specimen, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd_HHmmss")));
-    name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("_"));
-    createSession(QDir(dialog.parentFolder()).filePath(name), info);
+    createSession(QDir(dialog.parentFolder()).filePath(sessionFolderName(info, QDateTime::currentDateTime())), info);
 }
 
 void MainWindow::editSessionDetails()
@@ -605,8 +603,10 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
                        .arg(file, displayName(summary.endReason))
                        .arg(summary.samples)
                        .arg(summary.dropped);
+    // The fault names the file by its whole path: by its name here, so that what went wrong
+    // ("No space left on device") is not cut off at the status bar's end.
     if (!summary.fault.isEmpty())
-        text += QStringLiteral(" – ") + summary.fault;
+        text += QStringLiteral(" – ") + QString(summary.fault).replace(summary.path, file).replace(QDir::toNativeSeparators(summary.path), file);
     // Red is for what cut the run short; a few dropped samples are a note, not an alarm.
     showMessage(text, !normal);
     if (const QString problem = liveRun_->endRun(summary.path); !problem.isEmpty())
@@ -620,6 +620,7 @@ void MainWindow::showMessage(const QString& text, bool alarm)
 {
     statusBar()->setStyleSheet(alarm ? QStringLiteral("QStatusBar { color: #c62828; font-weight: bold; }") : QString());
     statusBar()->showMessage(text);
+    statusBar()->setToolTip(text);  // whole, where the bar is too narrow for it
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

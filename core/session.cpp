@@ -96,6 +96,25 @@ Metadata sessionMetadata(const SessionInfo& i)
     return m;
 }
 
+QString sessionFolderName(const SessionInfo& info, const QDateTime& created)
+{
+    static const QRegularExpression unsafe(QStringLiteral("[^\\p{L}\\p{N}_-]+"));
+    QStringList parts;
+    for (QString part : {info.organ, info.specimen}) {
+        part.replace(unsafe, QStringLiteral("_"));
+        while (part.startsWith(QLatin1Char('_')))
+            part.remove(0, 1);
+        while (part.endsWith(QLatin1Char('_')))
+            part.chop(1);
+        if (!part.isEmpty())
+            parts << part;
+    }
+    if (parts.isEmpty())
+        parts << QStringLiteral("session");
+    parts << created.toString(QStringLiteral("yyyyMMdd_HHmmss"));
+    return parts.join(QLatin1Char('_'));
+}
+
 RunState runStateForEndReason(const QString& r)
 {
     if (r.isEmpty())

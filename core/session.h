@@ -46,6 +46,10 @@ struct SessionInfo {
 // The session's details as run metadata (organ, specimen, tip, thickness_mm, operator,
 // protocol): what every run of the session and every export of it carries.
 Metadata sessionMetadata(const SessionInfo& info);
+// A new session's folder name: organ and specimen as the operator wrote them (letters of any
+// language kept, "Leber ü" stays "Leber_ü"; what a file system or shell trips over becomes
+// "_"), then the time; "session" when both are empty.
+QString sessionFolderName(const SessionInfo& info, const QDateTime& created);
 
 struct StoredCalibration {
     QString name;         // file base name, e.g. cal_20261121_093000

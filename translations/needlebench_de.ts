@@ -1394,7 +1394,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+442"/>
+        <location filename="../app/main_window.cpp" line="+440"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1457,7 +1457,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-365"/>
+        <location filename="../app/main_window.cpp" line="-363"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1622,7 +1622,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzung nach %1 exportiert</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+33"/>
         <source>Session details</source>
         <translation>Sitzungsdetails</translation>
     </message>
@@ -1657,29 +1657,29 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Could not read the run back to mark its events: %1</source>
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-555"/>
+        <location line="-556"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+554"/>
+        <location line="+555"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-358"/>
+        <location line="-359"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2137,7 +2137,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+34"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -4793,12 +4793,17 @@ Befehle:
         <translation>Ordner existiert nicht</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>%1: skipped, %2</source>
         <translation>%1: übersprungen, %2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+4"/>
+        <source>%1: left out, the run is still recording or was cut off before it was closed (export it after it ends; a cut-off run is recovered when its session is opened in the window)</source>
+        <translation>%1: ausgelassen, der Lauf zeichnet noch auf oder wurde abgebrochen, bevor er geschlossen war (nach seinem Ende exportieren; ein abgebrochener Lauf wird wiederhergestellt, wenn seine Sitzung im Fenster geöffnet wird)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>%1: skipped, not a run file (%2)</source>
         <translation>%1: übersprungen, keine Laufdatei (%2)</translation>
     </message>
@@ -5310,7 +5315,7 @@ Befehle:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+174"/>
+        <location filename="../core/session.cpp" line="+193"/>
         <source>no header row</source>
         <translation>keine Kopfzeile</translation>
     </message>
@@ -5341,7 +5346,7 @@ Befehle:
         <translation>Schreiben nach %1 Zeilen fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-130"/>
+        <location filename="../core/session.cpp" line="-149"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation>ungültiges JSON bei Byte %1: %2</translation>
     </message>
@@ -5401,7 +5406,7 @@ Befehle:
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+167"/>
+        <location filename="../core/session.cpp" line="+186"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation>Ordner kann nicht angelegt werden</translation>

@@ -1393,7 +1393,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+442"/>
+        <location filename="../app/main_window.cpp" line="+440"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1456,7 +1456,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-365"/>
+        <location filename="../app/main_window.cpp" line="-363"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1620,7 +1620,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+33"/>
         <source>Session details</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1655,28 +1655,28 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Could not read the run back to mark its events: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-555"/>
+        <location line="-556"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+554"/>
+        <location line="+555"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-358"/>
+        <location line="-359"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2134,7 +2134,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+34"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4705,12 +4705,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>%1: skipped, %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+4"/>
+        <source>%1: left out, the run is still recording or was cut off before it was closed (export it after it ends; a cut-off run is recovered when its session is opened in the window)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>%1: skipped, not a run file (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5222,7 +5227,7 @@ Commands:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+174"/>
+        <location filename="../core/session.cpp" line="+193"/>
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5253,7 +5258,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-130"/>
+        <location filename="../core/session.cpp" line="-149"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5313,7 +5318,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+167"/>
+        <location filename="../core/session.cpp" line="+186"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>

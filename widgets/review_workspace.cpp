@@ -78,6 +78,10 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         showStatus(message);
     });
     connect(decoder_, &video::VideoDecoder::frameReady, this, [this](int n, double t, const QImage& image) {
+        // A frame of the video shown before, decoded while the run or the video changed: the
+        // view said "no video" and went on showing it.
+        if (!index_)
+            return;
         frame_ = n;
         video_->setFrame(image, n, t);
         emit frameShown(n);

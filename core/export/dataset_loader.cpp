@@ -32,9 +32,11 @@ LoadedDataset loadDataset(const QString& dirPath)
     const QDir dir(dirPath);
 
     QStringList runPaths;
+    bool fromSession = false;  // the session's own list of runs, not every CSV in the folder
     if (Session::isSession(dirPath)) {
         try {
             const Session s = Session::open(dirPath);
+            fromSession = true;
             const SessionInfo& si = s.info();
             const Metadata sm = sessionMetadata(si);
             for (const auto& [k, v] : sm.entries())
@@ -50,6 +52,13 @@ LoadedDataset loadDataset(const QString& dirPath)
             for (const RunEntry& e : s.runs()) {
                 if (e.state == RunState::Unreadable)
                     out.warnings << nb::TrCore::tr("%1: skipped, %2").arg(e.path, e.detail);
+                else if (e.endReason.isEmpty())
+                    // No footer: a run still recording (exported half, it looked complete) or
+                    // one cut off by a crash, which opening the session in the window recovers.
+                    out.warnings << nb::TrCore::tr("%1: left out, the run is still recording or was cut off before it was closed "
+                                                   "(export it after it ends; a cut-off run is recovered when its session is "
+                                                   "opened in the window)")
+                                        .arg(e.path);
                 else
                     runPaths << e.path;
             }
@@ -57,7 +66,7 @@ LoadedDataset loadDataset(const QString& dirPath)
             out.warnings << e.message();
         }
     }
-    if (runPaths.isEmpty()) {
+    if (!fromSession) {
         for (const QString& name : dir.entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name))
             if (!isLabelsFile(name))
                 runPaths << dir.filePath(name);

@@ -1,6 +1,8 @@
 // Every exporter writes real files that are read back with independent readers: Qt's CSV
 // splitting and JSON parser, the HDF5 C library (and h5dump), Qt's XML reader.
+#include "core/export/dataset_loader.h"
 #include "core/export/eaf_export.h"
+#include "core/session.h"
 #include "core/export/fit_table.h"
 #include "core/export/label_intervals.h"
 #include "core/export/run_csv_export.h"
@@ -324,6 +326,34 @@ private slots:
         QCOMPARE(labelIntervals(run, labels, frameClockFor(run))[1].start_frame, (long long)std::floor(1.0 * 29.97));
         // A label far beyond any video has no frame (not a wrapped-around integer).
         QCOMPARE(frameClockFor(run).frameAt(1e300), -1LL);
+    }
+
+    // A session's run without a footer is being recorded (or was cut off by a crash): the
+    // export leaves it out and says so, where it exported the first seconds as a whole run.
+    void unfinishedRunIsLeftOut()
+    {
+        QTemporaryDir dir;
+        const QString sessionDir = dir.filePath(QStringLiteral("s"));
+        nb::Session session = nb::Session::create(sessionDir, {});
+        auto write = [&](const QString& name, bool closed) {
+            QFile f(QDir(sessionDir).filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+            f.write("# format: needlebench-run 1\n# motion: linear\ntime_s,position_mm,force_N\n");
+            for (int i = 0; i < 50; ++i)
+                f.write(QStringLiteral("%1,%2,%3\n").arg(i * 0.001).arg(i * 0.01).arg(i * 0.002).toUtf8());
+            if (closed)
+                f.write("# end_reason: completed\n");
+        };
+        write(QStringLiteral("run_001_linear.csv"), true);
+        write(QStringLiteral("run_002_linear.csv"), false);
+        const nb::LoadedDataset loaded = nb::loadDataset(sessionDir);
+        QCOMPARE(int(loaded.dataset.runs.size()), 1);
+        QVERIFY(loaded.dataset.runs[0].sourcePath.endsWith(QStringLiteral("run_001_linear.csv")));
+        const QString warnings = loaded.warnings.join(QLatin1Char('\n'));
+        QVERIFY2(warnings.contains(QStringLiteral("run_002_linear.csv: left out, the run is still recording")), qPrintable(warnings));
+        // A folder that is not a session keeps every run file it holds.
+        QDir(sessionDir).rename(QStringLiteral("session.json"), QStringLiteral("session.json.away"));
+        QCOMPARE(int(nb::loadDataset(sessionDir).dataset.runs.size()), 2);
     }
 
     void sessionHdf5RoundTrip()

@@ -37,6 +37,21 @@ void writeRun(const QString& path, int rows, const QString& endReason, bool part
 class TestSession : public QObject {
     Q_OBJECT
 private slots:
+    // What the operator typed names the folder, in any language; what a file system or a
+    // shell trips over does not.
+    void folderNameKeepsTheOperatorsWords()
+    {
+        const QDateTime at(QDate(2026, 11, 30), QTime(3, 8, 39));
+        nb::SessionInfo info;
+        info.organ = QStringLiteral("Leber ü");
+        info.specimen = QStringLiteral("S 1/x");
+        QCOMPARE(nb::sessionFolderName(info, at), QStringLiteral("Leber_ü_S_1_x_20261130_030839"));
+        info.organ = QStringLiteral("../prostate.");
+        info.specimen.clear();
+        QCOMPARE(nb::sessionFolderName(info, at), QStringLiteral("prostate_20261130_030839"));
+        QCOMPARE(nb::sessionFolderName({}, at), QStringLiteral("session_20261130_030839"));
+    }
+
     void createOpenAndName()
     {
         QTemporaryDir tmp;
