@@ -6484,7 +6484,7 @@ Befehle:
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+112"/>
+        <location filename="../video/frame_index.cpp" line="+153"/>
         <location filename="../video/packet_index.cpp" line="+35"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -6505,12 +6505,17 @@ Befehle:
         <translation>kann nicht als Video geöffnet werden: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>an MP4/MOV file without its index (the &apos;moov&apos; box written when a recording is closed): the recording was cut off before it was finished, and its frames cannot be found without that index</source>
         <translation>eine MP4/MOV-Datei ohne ihren Index (die &apos;moov&apos;-Box, die beim Schließen einer Aufnahme geschrieben wird): die Aufnahme wurde abgebrochen, bevor sie fertig war, und ihre Bilder lassen sich ohne diesen Index nicht finden</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>an MP4/MOV file with no video FFmpeg can read (sound only, or a video codec this system lacks)</source>
+        <translation>eine MP4/MOV-Datei ohne Video, das FFmpeg lesen kann (nur Ton, oder ein Videocodec, der diesem System fehlt)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>cannot open as video (not a video file, or a format FFmpeg does not read)</source>
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
@@ -6522,8 +6527,8 @@ Befehle:
     </message>
     <message>
         <location line="+16"/>
-        <source>the file ends early: %1 of %2 frames are readable (truncated?)</source>
-        <translation>die Datei endet zu früh: %1 von %2 Bildern sind lesbar (abgeschnitten?)</translation>
+        <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
+        <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
     <message>
         <location line="+4"/>

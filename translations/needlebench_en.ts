@@ -6396,7 +6396,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+112"/>
+        <location filename="../video/frame_index.cpp" line="+153"/>
         <location filename="../video/packet_index.cpp" line="+35"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -6417,12 +6417,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>an MP4/MOV file without its index (the &apos;moov&apos; box written when a recording is closed): the recording was cut off before it was finished, and its frames cannot be found without that index</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>an MP4/MOV file with no video FFmpeg can read (sound only, or a video codec this system lacks)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>cannot open as video (not a video file, or a format FFmpeg does not read)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6434,7 +6439,7 @@ Commands:
     </message>
     <message>
         <location line="+16"/>
-        <source>the file ends early: %1 of %2 frames are readable (truncated?)</source>
+        <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

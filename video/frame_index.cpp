@@ -105,6 +105,47 @@ int FrameIndex::keyframeAtOrBefore(int n) const
     return 0;
 }
 
+namespace {
+
+enum class Mp4Index { NotMp4, Missing, Present };
+
+// Walks an ISO media file's top-level boxes (size, type) for its index, 'moov'.
+Mp4Index mp4Index(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return Mp4Index::NotMp4;
+    bool first = true;
+    while (!f.atEnd()) {
+        const qint64 at = f.pos();
+        const QByteArray head = f.read(8);
+        if (head.size() < 8)
+            break;
+        quint64 size = (quint64(quint8(head[0])) << 24) | (quint64(quint8(head[1])) << 16) | (quint64(quint8(head[2])) << 8) | quint8(head[3]);
+        const QByteArray type = head.mid(4, 4);
+        if (first && type != "ftyp")
+            return Mp4Index::NotMp4;
+        first = false;
+        if (type == "moov")
+            return Mp4Index::Present;
+        if (size == 1) {  // a 64-bit size follows
+            const QByteArray large = f.read(8);
+            if (large.size() < 8)
+                break;
+            size = 0;
+            for (char c : large)
+                size = (size << 8) | quint8(c);
+        } else if (size == 0) {  // to the end of the file
+            break;
+        }
+        if (size < 8 || !f.seek(at + qint64(size)))
+            break;
+    }
+    return first ? Mp4Index::NotMp4 : Mp4Index::Missing;
+}
+
+}  // namespace
+
 FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, const std::atomic_bool* cancel)
 {
     const QFileInfo fi(path);
@@ -123,12 +164,19 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     }
     if (!cap.isOpened()) {
         // An MP4/MOV recording cut off before it was closed (power lost, disk full) starts as
-        // one but lacks the index written at its end: say that, not "not a video file".
-        QFile head(path);
-        if (head.open(QIODevice::ReadOnly) && head.read(12).mid(4, 4) == "ftyp")
+        // one but lacks the index written at its end: say that, not "not a video file". One
+        // with its index but nothing to show (a sound recording) is something else again.
+        switch (mp4Index(path)) {
+        case Mp4Index::Missing:
             throw VideoError(path, nb::TrDevices::tr("an MP4/MOV file without its index (the 'moov' box written when a recording "
                                                      "is closed): the recording was cut off before it was finished, and its "
                                                      "frames cannot be found without that index"));
+        case Mp4Index::Present:
+            throw VideoError(path, nb::TrDevices::tr("an MP4/MOV file with no video FFmpeg can read (sound only, or a video codec "
+                                                     "this system lacks)"));
+        case Mp4Index::NotMp4:
+            break;
+        }
         throw VideoError(path, nb::TrDevices::tr("cannot open as video (not a video file, or a format FFmpeg does not read)"));
     }
 
@@ -187,7 +235,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     const double containerSpan_s = index.fpsNominal > 0.0 ? index.containerFrames / index.fpsNominal : 0.0;
     const bool endsShort = !index.timestampsMonotonic || readSpan_s < containerSpan_s * (timeBase ? 0.9 : 0.98) - index.frameDuration();
     if (!(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1 && endsShort)
-        index.warnings << nb::TrDevices::tr("the file ends early: %1 of %2 frames are readable (truncated?)")
+        index.warnings << nb::TrDevices::tr("only %1 of %2 frames are readable: the file is cut off, or damaged after that frame")
                               .arg(index.size())
                               .arg(expected);
     if (!index.timestampsMonotonic)

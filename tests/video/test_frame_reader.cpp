@@ -9,6 +9,7 @@
 
 #include <QFile>
 #include <QTemporaryDir>
+#include <QProcess>
 #include <QtTest>
 #include <opencv2/videoio.hpp>
 #include <random>
@@ -274,7 +275,7 @@ private slots:
         QCOMPARE(index.size(), 90);
         QVERIFY2(index.frames[30].time_s - index.frames[29].time_s > 0.4, "the file does not show the gap");
         QVERIFY2(index.containerFrames > 100, qPrintable(QStringLiteral("the container says %1 frames: the file does not show the case").arg(index.containerFrames)));
-        QVERIFY2(!index.warnings.join(QLatin1Char(' ')).contains(QLatin1String("truncated")), qPrintable(index.warnings.join(QLatin1Char('\n'))));
+        QVERIFY2(!index.warnings.join(QLatin1Char(' ')).contains(QLatin1String("cut off")), qPrintable(index.warnings.join(QLatin1Char('\n'))));
     }
 
     void duplicatesFlagged()
@@ -307,7 +308,7 @@ private slots:
         QVERIFY(index.size() > 10);
         QVERIFY(index.size() < 90);
         QVERIFY(!index.warnings.isEmpty());
-        QVERIFY(index.warnings.join(' ').contains("truncated"));
+        QVERIFY(index.warnings.join(' ').contains("cut off"));
         FrameReader reader(index);
         // The last frame may be cut short (decoders then repeat the previous picture).
         for (int n = index.size() - 2; n >= 0; n -= 5)
@@ -354,6 +355,18 @@ private slots:
             QVERIFY(index.size() < 30 && !index.warnings.isEmpty());
         } catch (const VideoError& e) {
             QVERIFY(e.message().contains("mcut.mp4"));
+        }
+        // A whole MP4 with sound and no picture is not called cut off: it has its index.
+        QProcess ffmpeg;
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-f", "lavfi", "-i", "sine=frequency=440:duration=1", "-c:a", "aac",
+                                               path("sound.mp4")});
+        QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
+        try {
+            buildFrameIndex(path("sound.mp4"));
+            QFAIL("a sound file indexed as video");
+        } catch (const VideoError& e) {
+            QVERIFY2(e.message().contains("sound.mp4") && e.message().contains(QStringLiteral("no video")) && !e.message().contains(QStringLiteral("cut off")),
+                     qPrintable(e.message()));
         }
     }
 };
