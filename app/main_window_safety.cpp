@@ -81,7 +81,8 @@ void MainWindow::addRigMetadata(devices::RunPlan& plan) const
     if (!spec_ || spec_->stage != QLatin1String("sim"))
         return;
     plan.metadata.set(QStringLiteral("sim_tissue"), spec_->simulated.tissue);
-    plan.metadata.set(QStringLiteral("sim_tip"), spec_->simulated.tip);
+    // The tip the rig runs with (an empty choice is the preset's usual one, as the device line says).
+    plan.metadata.set(QStringLiteral("sim_tip"), devices::simulatedTip(spec_->simulated));
     plan.metadata.set(QStringLiteral("sim_seed"), QString::number(spec_->simulated.seed));
 }
 

@@ -39,6 +39,8 @@ QStringList tipNames()
     return {sim::tipName(sim::Tip::Beveled), sim::tipName(sim::Tip::Diamond), sim::tipName(sim::Tip::Blunt)};
 }
 
+QString simulatedTip(const SimulatedRigSpec& spec) { return sim::tipName(rigConfig(spec).tip); }
+
 QString checkSimulatedRig(const SimulatedRigSpec& spec)
 {
     if (!sim::tissueNames().contains(spec.tissue))

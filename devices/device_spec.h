@@ -54,6 +54,8 @@ DeviceSet openDevicesOrSimulated(const DeviceSpec& spec, QString* problem);
 // What the simulated rig offers, for choosers: preset names and tip names.
 QStringList simulatedTissues();
 QStringList tipNames();
+// The tip the simulated rig runs with: the spec's, else the tissue preset's usual one.
+QString simulatedTip(const SimulatedRigSpec& spec);
 // Where a sine run should oscillate about so that it works in tissue with the default
 // amplitude: inside the simulated rig's tissue; nullopt for a real stage (the operator knows).
 std::optional<double> suggestedSineCentre_mm(const DeviceSpec& spec);

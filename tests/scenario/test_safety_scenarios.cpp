@@ -10,6 +10,7 @@
 #include "core/run_file.h"
 #include "core/session.h"
 #include "devices/acquisition_engine.h"
+#include "devices/device_spec.h"
 #include "devices/sim/rig_config.h"
 #include "devices/sim/simulated_rig.h"
 #include "widgets/calibration_wizard.h"
@@ -594,6 +595,10 @@ private slots:
         const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
         QCOMPARE(r.run.meta(QStringLiteral("sim_tissue")).value_or(QString()), chosen);
         QCOMPARE(r.run.meta(QStringLiteral("sim_seed")).value_or(QString()), QStringLiteral("7"));
+        // The tip the rig ran with, as its device line names it, also where none was chosen.
+        const QString tip = r.run.meta(QStringLiteral("sim_tip")).value_or(QString());
+        QVERIFY2(nb::devices::tipNames().contains(tip), qPrintable(tip));
+        QVERIFY2(r.run.meta(QStringLiteral("device")).value_or(QString()).contains(tip + QStringLiteral(" tip")), qPrintable(tip));
         }
         // The session keeps the choice: reopened, it runs on the same simulated specimen.
         std::shared_ptr<nb::devices::sim::SimulatedRig> fresh;
