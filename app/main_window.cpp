@@ -39,6 +39,8 @@
 #include <QMessageBox>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QGuiApplication>
+#include <QScreen>
 #include <QSettings>
 #include <QShortcut>
 #include <QStandardPaths>
@@ -142,12 +144,22 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     buildMenus();
 
     QSettings settings;
+    const bool restored = options_.persistSettings && restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     if (options_.persistSettings) {
-        restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
         restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
         panel_->restoreSettings(settings);
-    } else {
+    }
+    if (!options_.persistSettings) {
         resize(1400, 860);
+    } else if (!restored) {
+        // The first start: the layout wants 1400x860; on a smaller screen (a laptop's 1366x768)
+        // the whole screen, where Qt's own guess cut off the panel's controls.
+        const QScreen* screen = QGuiApplication::primaryScreen();
+        const QSize room = screen ? screen->availableGeometry().size() : QSize(1400, 860);
+        if (room.width() < 1400 || room.height() < 860)
+            setWindowState(windowState() | Qt::WindowMaximized);
+        else
+            resize(1400, 860);
     }
     engine_->setForceLimit(panel_->forceLimit());
     engine_->setWithdrawForceLimit(panel_->withdrawForceLimit());
