@@ -934,7 +934,7 @@ oder ohne Kontakt einbeziehen</translation>
     <message>
         <location line="+35"/>
         <source>Simulated rig</source>
-        <translation>Simulierter Prüfstand</translation>
+        <translation>Simulierter Versuchsstand</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1349,7 +1349,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+65"/>
+        <location filename="../app/main_window.cpp" line="+67"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1376,7 +1376,7 @@ oder ohne Kontakt einbeziehen</translation>
     <message>
         <location line="+13"/>
         <source>Could not open the configured devices (%1); using the simulated rig.</source>
-        <translation>Die eingestellten Geräte konnten nicht geöffnet werden (%1); der simulierte Prüfstand wird verwendet.</translation>
+        <translation>Die eingestellten Geräte konnten nicht geöffnet werden (%1); der simulierte Versuchsstand wird verwendet.</translation>
     </message>
     <message>
         <location filename="../app/main_window_safety.cpp" line="+47"/>
@@ -1389,12 +1389,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Zurückziehen zur Startposition, %1 mm (nicht aufgezeichnet)</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Emergency stop: the stage is disabled until you reset it in the control panel.</source>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+440"/>
+        <location filename="../app/main_window.cpp" line="+450"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1479,7 +1479,7 @@ oder ohne Kontakt einbeziehen</translation>
     <message>
         <location line="+15"/>
         <source>Could not open the chosen devices (%1); using the simulated rig.</source>
-        <translation>Die gewählten Geräte ließen sich nicht öffnen (%1); der simulierte Prüfstand wird verwendet.</translation>
+        <translation>Die gewählten Geräte ließen sich nicht öffnen (%1); der simulierte Versuchsstand wird verwendet.</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1669,12 +1669,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-556"/>
+        <location line="-566"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+555"/>
+        <location line="+565"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
@@ -1835,7 +1835,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+11"/>
         <source>Simulated rig for plan run %1: %2, seed %3 (enable, bias and zero again)</source>
-        <translation>Simulierter Prüfstand für Planlauf %1: %2, Seed %3 (erneut freigeben, Nullabgleich und Nullposition)</translation>
+        <translation>Simulierter Versuchsstand für Planlauf %1: %2, Seed %3 (erneut freigeben, Nullabgleich und Nullposition)</translation>
     </message>
     <message>
         <location line="+17"/>
@@ -4042,7 +4042,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+14"/>
         <source>needlebench plan new: note: &apos;%1&apos; is neither a setting of the rig nor a factor of this template (%2); it is added as a new factor that the operator sets</source>
-        <translation>needlebench plan new: Hinweis: &apos;%1&apos; ist weder eine Einstellung des Prüfstands noch ein Faktor dieser Vorlage (%2); er wird als neuer Faktor hinzugefügt, den der Bediener einstellt</translation>
+        <translation>needlebench plan new: Hinweis: &apos;%1&apos; ist weder eine Einstellung des Versuchsstands noch ein Faktor dieser Vorlage (%2); er wird als neuer Faktor hinzugefügt, den der Bediener einstellt</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -6138,7 +6138,7 @@ Befehle:
 <context>
     <name>nb::TrDevices</name>
     <message>
-        <location filename="../devices/device_spec.cpp" line="+45"/>
+        <location filename="../devices/device_spec.cpp" line="+47"/>
         <source>unknown tissue &apos;%1&apos; (%2)</source>
         <translation>unbekanntes Gewebe &apos;%1&apos; (%2)</translation>
     </message>

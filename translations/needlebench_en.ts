@@ -1348,7 +1348,7 @@ or without contact</source>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+65"/>
+        <location filename="../app/main_window.cpp" line="+67"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1388,12 +1388,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Emergency stop: the stage is disabled until you reset it in the control panel.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+440"/>
+        <location filename="../app/main_window.cpp" line="+450"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1666,12 +1666,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-556"/>
+        <location line="-566"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+555"/>
+        <location line="+565"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6050,7 +6050,7 @@ Commands:
 <context>
     <name>nb::TrDevices</name>
     <message>
-        <location filename="../devices/device_spec.cpp" line="+45"/>
+        <location filename="../devices/device_spec.cpp" line="+47"/>
         <source>unknown tissue &apos;%1&apos; (%2)</source>
         <translation type="unfinished"></translation>
     </message>
