@@ -208,7 +208,7 @@ void MainWindow::attachEngine()
     });
     connect(e, &devices::AcquisitionEngine::runEnded, this, &MainWindow::onRunEnded);
     connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) {
-        showMessage(why, true);
+        showMessage(withinSession(why), true);
         if (!engine_->status().recording)
             endPlanRun(QStringLiteral("not started"));
     });
@@ -615,10 +615,8 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
                        .arg(file, displayName(summary.endReason))
                        .arg(summary.samples)
                        .arg(summary.dropped);
-    // The fault names the file by its whole path: by its name here, so that what went wrong
-    // ("No space left on device") is not cut off at the status bar's end.
     if (!summary.fault.isEmpty())
-        text += QStringLiteral(" – ") + QString(summary.fault).replace(summary.path, file).replace(QDir::toNativeSeparators(summary.path), file);
+        text += QStringLiteral(" – ") + withinSession(summary.fault);
     // Red is for what cut the run short; a few dropped samples are a note, not an alarm.
     showMessage(text, !normal);
     if (const QString problem = liveRun_->endRun(summary.path); !problem.isEmpty())
@@ -626,6 +624,16 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
     sessionView_->refresh();
     if (session_)
         analysis_->openSession(session_->dir());
+}
+
+QString MainWindow::withinSession(QString text) const
+{
+    // The session's folder is in the title bar: files in it by their names, so that what went
+    // wrong ("No space left on device", "only 12 kB free") is not cut off at the status bar's end.
+    if (session_)
+        for (const QString& dir : {QDir(session_->dir()).absolutePath(), QDir::toNativeSeparators(QDir(session_->dir()).absolutePath())})
+            text.replace(dir + QLatin1Char('/'), QString()).replace(dir + QDir::separator(), QString());
+    return text;
 }
 
 void MainWindow::showMessage(const QString& text, bool alarm)

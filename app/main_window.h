@@ -147,6 +147,8 @@ private:
     void newSessionDialog();
     void openSessionDialog();
     void showMessage(const QString& text, bool alarm = false);
+    // `text` with the open session's folder left out of the paths it names.
+    QString withinSession(QString text) const;
 
     // Operator safety (issue 12), in main_window_safety.cpp.
     void installSafety();
