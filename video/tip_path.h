@@ -6,6 +6,7 @@
 // gains each frame's score where it passes and pays for every change of velocity. Decided
 // with a fixed lag, so that an hour's video needs no more memory than a minute's.
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -48,10 +49,11 @@ private:
     int pushed_ = 0;
     int decided_ = 0;
     std::vector<float> best_;  // per state, the best course's score (the highest is 0)
+    std::size_t bestState_ = 0;  // the first state of the highest score
     // Per frame (a ring of lag + 1), per state: the velocity change that led there.
     std::vector<std::vector<signed char>> from_;
     std::vector<float> scores_, reach_, next_;  // one frame's work, kept from frame to frame
-    std::vector<signed char> origin_;
+    std::vector<std::int32_t> origin_;  // per state, the velocity its best course came with
 };
 
 }  // namespace nb::video
