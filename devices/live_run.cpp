@@ -18,6 +18,18 @@ void LiveSeries::clear()
 
 LiveRun::LiveRun(double keep_s, QObject* parent) : QObject(parent), keep_s_(keep_s) {}
 
+void LiveRun::setSource(SpscRing<Sample>* ring)
+{
+    if (ring == source_)
+        return;
+    source_ = ring;
+    // Samples of the new devices, timed on the old clock's origin, fell before it: the plots
+    // stayed empty at rest for as long as the old clock had run.
+    haveSample_ = false;
+    recording_ = false;
+    startOver();
+}
+
 void LiveRun::pull()
 {
     drained_.clear();

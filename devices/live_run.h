@@ -47,8 +47,9 @@ public:
     // `keep_s`: between runs the live signal is kept this long, then starts over.
     explicit LiveRun(double keep_s = 60.0, QObject* parent = nullptr);
 
-    // The ring that pull() drains (the engine's live ring; null detaches). Not owned.
-    void setSource(SpscRing<Sample>* ring) { source_ = ring; }
+    // The ring that pull() drains (the engine's live ring; null detaches). Not owned. Another
+    // engine's clock starts again from zero: the series starts over on it.
+    void setSource(SpscRing<Sample>* ring);
     // Drains the source and appends what it held; emits samplesAppended, then pulled.
     void pull();
     // Appends samples as pull() does (for a source that is not a ring).

@@ -422,12 +422,12 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+429"/>
+        <location line="+431"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="-447"/>
+        <location line="-449"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -462,12 +462,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>3. Lauf</translation>
     </message>
     <message>
-        <location line="+427"/>
+        <location line="+429"/>
         <source>To start (%1 mm)</source>
         <translation>Zum Start (%1 mm)</translation>
     </message>
     <message>
-        <location line="-515"/>
+        <location line="-517"/>
         <location line="+408"/>
         <source>&amp;Enable stage</source>
         <translation>Achse &amp;einschalten</translation>
@@ -620,13 +620,13 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+107"/>
+        <location line="+109"/>
         <location line="+9"/>
         <source>Not now: %1</source>
         <translation>Jetzt nicht: %1</translation>
     </message>
     <message>
-        <location line="-109"/>
+        <location line="-111"/>
         <source>Disable stage</source>
         <translation>Achse ausschalten</translation>
     </message>
@@ -636,31 +636,31 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Rückzug (ohne Aufnahme)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>stopped</source>
         <translation>angehalten</translation>
     </message>
     <message>
-        <location line="-228"/>
-        <location line="+229"/>
+        <location line="-230"/>
+        <location line="+231"/>
         <source>enabled</source>
         <translation>eingeschaltet</translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+229"/>
+        <location line="-231"/>
+        <location line="+231"/>
         <source>disabled</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location line="-231"/>
-        <location line="+232"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>yes (%1 V)</source>
         <translation>ja (%1 V)</translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+232"/>
+        <location line="-232"/>
+        <location line="+234"/>
         <source>at rest</source>
         <translation>in Ruhe</translation>
     </message>
@@ -670,8 +670,8 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>keine Aufzeichnung</translation>
     </message>
     <message>
-        <location line="-236"/>
-        <location line="+230"/>
+        <location line="-238"/>
+        <location line="+232"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
@@ -681,21 +681,21 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1 (Überläufe %2)</translation>
     </message>
     <message>
-        <location line="-237"/>
-        <location line="+238"/>
+        <location line="-239"/>
+        <location line="+240"/>
         <source>%1 N</source>
         <translation>%1 N</translation>
     </message>
     <message>
-        <location line="-237"/>
-        <location line="+238"/>
+        <location line="-239"/>
+        <location line="+240"/>
         <location line="+44"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="-281"/>
-        <location line="+240"/>
+        <location line="-283"/>
+        <location line="+242"/>
         <source>%1 N (%2 %)</source>
         <translation>%1 N (%2 %)</translation>
     </message>
@@ -726,17 +726,18 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt zurücksetzen (Achse einschalten)</translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-250"/>
         <source>Jog (never recorded)</source>
         <translation>Tippbetrieb (nie aufgezeichnet)</translation>
     </message>
     <message>
         <location line="-109"/>
+        <location line="+309"/>
         <source>Stop (keeps recording)</source>
         <translation>Stopp (zeichnet weiter)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-305"/>
         <source>End run (closes file)</source>
         <translation>Lauf beenden (Datei zu)</translation>
     </message>
@@ -747,12 +748,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+380"/>
+        <location line="+382"/>
         <source>To start</source>
         <translation>Zum Start</translation>
     </message>
     <message>
-        <location line="-358"/>
+        <location line="-360"/>
         <source>Sampling</source>
         <translation>Abtastung</translation>
     </message>
@@ -768,12 +769,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+233"/>
+        <location line="+235"/>
         <source>%1 mm/s</source>
         <translation>%1 mm/s</translation>
     </message>
     <message>
-        <location line="-213"/>
+        <location line="-215"/>
         <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
         <translation>Bewegungen der Nadel ohne Aufzeichnung: Schritte hinein und heraus oder zu einer Position</translation>
     </message>
@@ -796,6 +797,11 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+117"/>
         <source>Withdraw (recorded)</source>
         <translation>Rückzug (aufgezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop</source>
+        <translation>Stopp</translation>
     </message>
     <message>
         <location line="+21"/>
@@ -1657,29 +1663,29 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
         <source>Could not read the run back to mark its events: %1</source>
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+36"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-566"/>
+        <location line="-574"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+565"/>
+        <location line="+573"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-359"/>
+        <location line="-367"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -421,12 +421,12 @@ or without contact</source>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+429"/>
+        <location line="+431"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-447"/>
+        <location line="-449"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -461,12 +461,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+427"/>
+        <location line="+429"/>
         <source>To start (%1 mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-515"/>
+        <location line="-517"/>
         <location line="+408"/>
         <source>&amp;Enable stage</source>
         <translation type="unfinished"></translation>
@@ -619,13 +619,13 @@ or without contact</source>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+107"/>
+        <location line="+109"/>
         <location line="+9"/>
         <source>Not now: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-109"/>
+        <location line="-111"/>
         <source>Disable stage</source>
         <translation type="unfinished"></translation>
     </message>
@@ -635,31 +635,31 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>stopped</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-228"/>
-        <location line="+229"/>
+        <location line="-230"/>
+        <location line="+231"/>
         <source>enabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+229"/>
+        <location line="-231"/>
+        <location line="+231"/>
         <source>disabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-231"/>
-        <location line="+232"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>yes (%1 V)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+232"/>
+        <location line="-232"/>
+        <location line="+234"/>
         <source>at rest</source>
         <translation type="unfinished"></translation>
     </message>
@@ -669,8 +669,8 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-236"/>
-        <location line="+230"/>
+        <location line="-238"/>
+        <location line="+232"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
     </message>
@@ -680,21 +680,21 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-237"/>
-        <location line="+238"/>
+        <location line="-239"/>
+        <location line="+240"/>
         <source>%1 N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-237"/>
-        <location line="+238"/>
+        <location line="-239"/>
+        <location line="+240"/>
         <location line="+44"/>
         <source>%1 mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-281"/>
-        <location line="+240"/>
+        <location line="-283"/>
+        <location line="+242"/>
         <source>%1 N (%2 %)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -725,17 +725,18 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-250"/>
         <source>Jog (never recorded)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="-109"/>
+        <location line="+309"/>
         <source>Stop (keeps recording)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-305"/>
         <source>End run (closes file)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -746,12 +747,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+380"/>
+        <location line="+382"/>
         <source>To start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-358"/>
+        <location line="-360"/>
         <source>Sampling</source>
         <translation type="unfinished"></translation>
     </message>
@@ -767,12 +768,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+233"/>
+        <location line="+235"/>
         <source>%1 mm/s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-213"/>
+        <location line="-215"/>
         <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
         <translation type="unfinished"></translation>
     </message>
@@ -794,6 +795,11 @@ or without contact</source>
     <message>
         <location line="+117"/>
         <source>Withdraw (recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1655,28 +1661,28 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
         <source>Could not read the run back to mark its events: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+36"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-566"/>
+        <location line="-574"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+565"/>
+        <location line="+573"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-359"/>
+        <location line="-367"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

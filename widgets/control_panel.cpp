@@ -495,6 +495,8 @@ void ControlPanel::updateControls()
     enable->setText(state_.stageEnabled ? tr("Disable stage") : tr("&Enable stage"));
     // Whether a withdrawal lands in a file is never left to memory.
     buttons_[Control::Withdraw]->setText(state_.recording ? tr("Withdraw (recorded)") : tr("Withdraw (not recorded)"));
+    // Nor whether stopping leaves a run open: a jog or a withdrawal outside a run has none.
+    buttons_[Control::StopMotion]->setText(state_.recording ? tr("Stop (keeps recording)") : tr("Stop"));
 
     const auto set = [this](const char* key, const QString& text, bool alarm = false) {
         QLabel* l = status_labels_[QString::fromLatin1(key)];

@@ -73,6 +73,36 @@ double timeOf(const std::vector<LiveMark>& marks, LiveMarkKind kind)
 class TestLiveRun : public QObject {
     Q_OBJECT
 private slots:
+    // Devices switched (another simulated rig, a real stage): the new engine's clock starts at
+    // zero, and the series starts over on it. Timed on the old clock's origin, its samples fell
+    // 70 s before it and the live plots stayed empty at rest.
+    void anotherEngineStartsTheSeriesOver()
+    {
+        SpscRing<Sample> first(1 << 12), second(1 << 12);
+        LiveRun live;
+        live.setSource(&first);
+        for (int i = 0; i < 1000; ++i) {
+            Sample s;
+            s.time_s = 70.0 + i / kRate_Hz;
+            QVERIFY(first.push(s));
+        }
+        live.pull();
+        QCOMPARE(live.series().size(), std::size_t(1000));
+        QSignalSpy reset(&live, &LiveRun::reset);
+        live.setSource(&second);
+        QCOMPARE(reset.count(), 1);
+        QCOMPARE(live.series().size(), std::size_t(0));
+        for (int i = 0; i < 500; ++i) {
+            Sample s;
+            s.time_s = i / kRate_Hz;
+            QVERIFY(second.push(s));
+        }
+        live.pull();
+        QCOMPARE(live.series().size(), std::size_t(500));
+        QCOMPARE(live.series().time_s.front(), 0.0);
+        QVERIFY(live.series().time_s.back() > 0.49);
+    }
+
     void pullDrainsTheRingInOrder()
     {
         Rig rig;

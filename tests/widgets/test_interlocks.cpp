@@ -171,6 +171,7 @@ private slots:
         panel.setStatus(s);
         QVERIFY(startButton->isEnabled());
         QVERIFY(panel.button(Control::Withdraw)->text().contains(QStringLiteral("not recorded")));
+        QCOMPARE(panel.button(Control::StopMotion)->text(), QStringLiteral("Stop"));  // nothing records: nothing is kept
 
         // A depth shallower than the needle already is cannot start.
         auto* depth = panel.findChild<QDoubleSpinBox*>(QStringLiteral("depth"));
@@ -199,6 +200,7 @@ private slots:
         QVERIFY(panel.button(Control::StopMotion)->isEnabled());
         QVERIFY(!panel.button(Control::EndRun)->isEnabled());
         QVERIFY(panel.button(Control::Withdraw)->text() == QStringLiteral("Withdraw (recorded)"));
+        QCOMPARE(panel.button(Control::StopMotion)->text(), QStringLiteral("Stop (keeps recording)"));
         QVERIFY(panel.findChild<QLabel*>(QStringLiteral("status_margin"))->text().startsWith(QStringLiteral("0.50 N")));
         QVERIFY(!panel.findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->isEnabled());
         QVERIFY(estopButton->isEnabled());
