@@ -346,10 +346,20 @@ bool MainWindow::openSession(const QString& dir)
         QStringList problems;
         recovered_ = s.recoverInterrupted(engine_->status().runPath, &problems);
         session_ = std::move(s);
+        // Said in a box, not only in the status bar, which the devices' first messages overwrote
+        // at once: a run cut short by a crash is news the operator must not miss. Modeless, and
+        // shown once: the recovered files are closed now.
+        QStringList news;
         if (!recovered_.isEmpty())
-            showMessage(tr("Recovered %n interrupted run(s): %1", nullptr, int(recovered_.size())).arg(recovered_.join(QStringLiteral(", "))), true);
+            news << tr("Recovered %n interrupted run(s): %1. Each ends where its recording stopped; its file says "
+                       "'end_reason: recovered'.", nullptr, int(recovered_.size()))
+                        .arg(recovered_.join(QStringLiteral(", ")));
         if (!problems.isEmpty())
-            QMessageBox::warning(this, tr("Interrupted runs"), tr("Could not recover:\n%1").arg(problems.join(QLatin1Char('\n'))));
+            news << tr("Could not recover:\n%1").arg(problems.join(QLatin1Char('\n')));
+        if (!news.isEmpty()) {
+            showMessage(news.join(QLatin1Char(' ')), true);
+            warnModeless(this, tr("Interrupted runs"), news.join(QStringLiteral("\n\n")))->setObjectName(QStringLiteral("interruptedRuns"));
+        }
     } catch (const SessionError& e) {
         QMessageBox::warning(this, tr("Open session"), e.message());
         return false;

@@ -1400,7 +1400,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+450"/>
+        <location filename="../app/main_window.cpp" line="+460"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1463,7 +1463,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-363"/>
+        <location filename="../app/main_window.cpp" line="-373"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1567,28 +1567,28 @@ oder ohne Kontakt einbeziehen</translation>
         <source>The language changes when NeedleBench is started again.</source>
         <translation>Die Sprache wechselt beim nächsten Start von NeedleBench.</translation>
     </message>
-    <message numerus="yes">
-        <location line="+13"/>
-        <source>Recovered %n interrupted run(s): %1</source>
-        <translation>
-            <numerusform>%n unterbrochener Lauf wiederhergestellt: %1</numerusform>
-            <numerusform>%n unterbrochene Läufe wiederhergestellt: %1</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+2"/>
+        <location line="+24"/>
         <source>Interrupted runs</source>
         <translation>Unterbrochene Läufe</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-3"/>
         <source>Could not recover:
 %1</source>
         <translation>Konnte nicht wiederhergestellt werden:
 %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="-4"/>
+        <source>Recovered %n interrupted run(s): %1. Each ends where its recording stopped; its file says &apos;end_reason: recovered&apos;.</source>
+        <translation>
+            <numerusform>%n unterbrochener Lauf wiederhergestellt: %1. Er endet, wo seine Aufzeichnung abbrach; seine Datei sagt &apos;end_reason: recovered&apos;.</numerusform>
+            <numerusform>%n unterbrochene Läufe wiederhergestellt: %1. Jeder endet, wo seine Aufzeichnung abbrach; seine Datei sagt &apos;end_reason: recovered&apos;.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+2"/>
+        <location line="+10"/>
         <source>Open session</source>
         <translation>Sitzung öffnen</translation>
     </message>
@@ -1675,17 +1675,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-574"/>
+        <location line="-584"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+573"/>
+        <location line="+583"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-377"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -1399,7 +1399,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+450"/>
+        <location filename="../app/main_window.cpp" line="+460"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1462,7 +1462,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-363"/>
+        <location filename="../app/main_window.cpp" line="-373"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1566,27 +1566,27 @@ or without contact</source>
         <source>The language changes when NeedleBench is started again.</source>
         <translation type="unfinished"></translation>
     </message>
-    <message numerus="yes">
-        <location line="+13"/>
-        <source>Recovered %n interrupted run(s): %1</source>
-        <translation>
-            <numerusform>Recovered %n interrupted run: %1</numerusform>
-            <numerusform>Recovered %n interrupted runs: %1</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+2"/>
+        <location line="+24"/>
         <source>Interrupted runs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-3"/>
         <source>Could not recover:
 %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="-4"/>
+        <source>Recovered %n interrupted run(s): %1. Each ends where its recording stopped; its file says &apos;end_reason: recovered&apos;.</source>
+        <translation>
+            <numerusform>Recovered %n interrupted run: %1. It ends where its recording stopped; its file says &apos;end_reason: recovered&apos;.</numerusform>
+            <numerusform>Recovered %n interrupted runs: %1. Each ends where its recording stopped; its file says &apos;end_reason: recovered&apos;.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+2"/>
+        <location line="+10"/>
         <source>Open session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1672,17 +1672,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-574"/>
+        <location line="-584"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+573"/>
+        <location line="+583"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-377"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

@@ -31,6 +31,7 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QMessageBox>
 #include <QTranslator>
 #include <qcustomplot.h>
 #include <QtTest>
@@ -337,6 +338,13 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QCOMPARE(w.recoveredRuns().size(), 1);
+        // Said in a box that does not block the window (the status bar's line was overwritten
+        // by the devices' first messages at once).
+        auto* box = w.findChild<QMessageBox*>(QStringLiteral("interruptedRuns"));
+        QVERIFY(box && box->isVisible());
+        QVERIFY2(box->text().contains(QStringLiteral("run_001_linear.csv")), qPrintable(box->text()));
+        QCOMPARE(QApplication::activeModalWidget(), nullptr);
+        box->accept();
         const nb::RunReadResult r = nb::readRunFile(crashed);
         QCOMPARE(r.run.size(), 500u);
         QCOMPARE(r.run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("recovered"));
