@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
@@ -219,7 +220,7 @@ void CalibrationWizard::setMasses(double from_g, double to_g, double step_g)
     for (double m = from_g; m <= to_g + 1e-9 && step_g > 0; m += step_g) {
         const int row = table_->rowCount();
         table_->insertRow(row);
-        auto* mass = new QTableWidgetItem(QString::number(m, 'f', 1));
+        auto* mass = new QTableWidgetItem(QLocale().toString(m, 'f', 1));
         table_->setItem(row, Mass, mass);
         for (int c : {Voltage, Residual}) {
             auto* item = new QTableWidgetItem(QStringLiteral("–"));
@@ -240,7 +241,15 @@ void CalibrationWizard::setMasses(double from_g, double to_g, double step_g)
 }
 
 int CalibrationWizard::rowCount() const { return table_->rowCount(); }
-double CalibrationWizard::massAt(int row) const { return table_->item(row, Mass)->text().toDouble(); }
+// In the operator's notation (German "50,5"), as the spin boxes beside it; a point is taken too.
+// Read with toDouble alone, "50,5" was 0 g.
+double CalibrationWizard::massAt(int row) const
+{
+    const QString text = table_->item(row, Mass)->text().trimmed();
+    bool ok = false;
+    const double grams = QLocale().toDouble(text, &ok);
+    return ok ? grams : QLocale::c().toDouble(text);
+}
 bool CalibrationWizard::usedAt(int row) const { return table_->item(row, Use)->checkState() == Qt::Checked; }
 bool CalibrationWizard::measuredAt(int row) const { return table_->item(row, Voltage)->data(Qt::UserRole).isValid(); }
 
@@ -365,7 +374,7 @@ void CalibrationWizard::finishRow()
     item->setData(Qt::UserRole, mean);
     item->setData(Qt::UserRole + 1, QVariant());  // not (or no longer) saturated
     updating_ = true;
-    item->setText(QString::number(mean, 'f', 5));
+    item->setText(QLocale().toString(mean, 'f', 5));
     updating_ = false;
     refit();
     redraw();
@@ -412,7 +421,7 @@ void CalibrationWizard::refit()
     }
     const int worst = worstRow();
     for (std::size_t k = 0; hasFit_ && k < fitRows_.size(); ++k)
-        table_->item(fitRows_[k], Residual)->setText(QString::number(fit_.residuals_V[k] * 1000.0, 'f', 3));
+        table_->item(fitRows_[k], Residual)->setText(QLocale().toString(fit_.residuals_V[k] * 1000.0, 'f', 3));
     if (worst >= 0)
         for (int c = 0; c < Columns; ++c)
             table_->item(worst, c)->setBackground(QColor(255, 205, 205));

@@ -190,7 +190,16 @@ void ReviewWorkspace::buildUi()
     legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
     plot_->legend->setFont(legendFont);
     plot_->legend->setBrush(QColor(255, 255, 255, 200));
-    plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    // In one row above the plot, not over it: the force and the position reach every corner.
+    plot_->axisRect()->insetLayout()->take(plot_->legend);
+    plot_->axisRect()->insetLayout()->simplify();
+    plot_->plotLayout()->insertRow(0);
+    plot_->plotLayout()->addElement(0, 0, plot_->legend);
+    plot_->plotLayout()->setRowStretchFactor(0, 0.001);
+    plot_->legend->setWrap(2);  // the plot beside the video is narrow: two names a row
+    plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    plot_->legend->setBorderPen(Qt::NoPen);
+    plot_->legend->setMargins(QMargins(4, 0, 4, 0));
     plotCursor_ = new QCPItemStraightLine(plot_);
     plotCursor_->setPen(QPen(QColor(220, 0, 0), 1.5));
     plotCursor_->point1->setCoords(0, 0);

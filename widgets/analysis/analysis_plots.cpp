@@ -14,6 +14,17 @@
 namespace nb {
 
 namespace {
+// Where the legend sits over the data, while it does: the Analysis tab moves it under the plot
+// (legendBelow), after which the inset has nothing to align and Qt Custom Plot warned, 81 times.
+void alignLegend(QCustomPlot* plot, Qt::Alignment where)
+{
+    QCPLayoutInset* inset = plot->axisRect()->insetLayout();
+    if (plot->legend && plot->legend->layout() == inset && inset->elementCount() > 0)
+        inset->setInsetAlignment(0, where);
+}
+}  // namespace
+
+namespace {
 
 void reset(QCustomPlot* plot, const QString& title, const QString& x, const QString& y)
 {
@@ -31,7 +42,7 @@ void reset(QCustomPlot* plot, const QString& title, const QString& x, const QStr
     plot->legend->setVisible(true);
     plot->legend->setFont(QFont(plot->font().family(), 8));
     plot->legend->setFillOrder(QCPLayoutGrid::foRowsFirst, true);  // plotPhases lays it out in a row
-    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    alignLegend(plot, Qt::AlignTop | Qt::AlignLeft);
     plot->setObjectName(title);
 }
 
@@ -206,7 +217,7 @@ void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const Fricti
     curve->setPen(QPen(QColor(213, 94, 0), 2.5));
     curve->setName(nb::TrViews::tr("Karnopp fit (%1 Hz)").arg(f.fit.frequency_hz, 0, 'f', 2));
     // Slow withdrawal with little friction is where the data leave room for the legend.
-    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+    alignLegend(plot, Qt::AlignBottom | Qt::AlignRight);
     fitRanges(plot);
     plot->replot();
 }
@@ -289,7 +300,7 @@ void plotValidation(QCustomPlot* plot, const ValidationResult& v)
         sim->setName(nb::TrViews::tr("summed model"));
     }
     // After the puncture the force stays low: the top right is free for the legend.
-    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    alignLegend(plot, Qt::AlignTop | Qt::AlignRight);
     fitRanges(plot);
     plot->replot();
 }
