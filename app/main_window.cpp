@@ -84,6 +84,13 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     tabs_->addTab(plots_, tr("&Record"));
     tabs_->addTab(review_, tr("Revie&w"));  // Alt+V is the View menu
     tabs_->addTab(analysis_, tr("&Analysis"));
+    // Review's keys (Space plays, digits label) act on the review: the keyboard goes there with
+    // the tab. It stayed on the control panel's last button, and Space pressed it (the stage
+    // was disabled and its zero lost).
+    connect(tabs_, &QTabWidget::currentChanged, this, [this] {
+        if (tabs_->currentWidget() == review_)
+            review_->setFocus(Qt::TabFocusReason);
+    });
     setCentralWidget(tabs_);
 
     panel_ = new ControlPanel(this);
@@ -368,6 +375,9 @@ bool MainWindow::openSession(const QString& dir)
         engine_->setCalibration(cal->fit.slope_V_per_g, cal->name);
     else
         engine_->useNominalCalibration();
+    // Review showed the last session's run, and edits went to its files.
+    if (!review_->runPath().isEmpty() && QFileInfo(review_->runPath()).absoluteDir() != QDir(session_->dir()))
+        review_->closeRun();
     restoreSimulatedRig();
     panel_->setSessionOpen(true);
     sessionView_->setSession(&*session_);

@@ -193,7 +193,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+26"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+27"/>
         <source>Calibrate force sensor – %1</source>
         <translation>Kraftsensor kalibrieren – %1</translation>
     </message>
@@ -265,12 +265,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+339"/>
+        <location line="+347"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation>Noch kein Fit: mindestens zwei Massen messen.</translation>
     </message>
     <message>
-        <location line="-326"/>
+        <location line="-334"/>
         <source>Measure</source>
         <translation>Messen</translation>
     </message>
@@ -300,7 +300,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1 g übersteuert den Eingang (%2 V, der Bereich endet bei ±%3 V): der Punkt wird abgelehnt. Nur bis zu Massen kalibrieren, die der Sensor lesen kann.</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+108"/>
         <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
         <translation>Schritt %1 von %2: %3 g – warte, bis sich der Messwert beruhigt, dann %4 s mitteln; die Masse ruhig halten…</translation>
     </message>
@@ -315,7 +315,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Alle Massen gemessen, aber noch keine Anpassung.</translation>
     </message>
     <message>
-        <location line="-271"/>
+        <location line="-279"/>
         <source>Measure all</source>
         <translation>Alle messen</translation>
     </message>
@@ -345,7 +345,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+300"/>
+        <location line="+308"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation>d = %1 mV/g,  c = %2 V,  r² = %3,  RMS-Residuum = %4 mV,  %5 Punkte</translation>
     </message>
@@ -1370,7 +1370,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Ana&amp;lyse</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+20"/>
         <source>Control panel</source>
         <translation>Bedienfeld</translation>
     </message>
@@ -1400,7 +1400,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+460"/>
+        <location filename="../app/main_window.cpp" line="+463"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1463,7 +1463,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-373"/>
+        <location filename="../app/main_window.cpp" line="-376"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1593,7 +1593,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzung öffnen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>NeedleBench – %1</source>
         <translation>NeedleBench – %1</translation>
     </message>
@@ -1675,17 +1675,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-584"/>
+        <location line="-594"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+583"/>
+        <location line="+593"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-377"/>
+        <location line="-380"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2199,17 +2199,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+774"/>
+        <location line="+815"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-771"/>
+        <location line="-812"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>−10</source>
         <translation>−10</translation>
     </message>
@@ -2230,12 +2230,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+427"/>
+        <location line="+459"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-427"/>
+        <location line="-459"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2266,17 +2266,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+7"/>
-        <location line="+20"/>
+        <location line="+25"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="-19"/>
+        <location line="-24"/>
         <source>jump to a recording time</source>
         <translation>zu einer Aufzeichnungszeit springen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>go to</source>
         <translation>gehe zu</translation>
     </message>
@@ -2361,8 +2361,13 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <source>phases or events from force and position, and from the synchronised video when there is one</source>
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
+    <message>
+        <location line="+155"/>
+        <source>No run open: double-click one in the session list</source>
+        <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
+    </message>
     <message numerus="yes">
-        <location line="+148"/>
+        <location line="+20"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>Labels: %n</numerusform>
@@ -2469,7 +2474,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-668"/>
+        <location line="-695"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2539,7 +2544,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+47"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -6994,7 +6999,7 @@ Befehle:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+98"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+109"/>
         <source>Stiffness before puncture: %1</source>
         <translation>Steifigkeit vor dem Durchstich: %1</translation>
     </message>

@@ -192,7 +192,7 @@ or without contact</source>
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+26"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+27"/>
         <source>Calibrate force sensor – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -264,12 +264,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+339"/>
+        <location line="+347"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-326"/>
+        <location line="-334"/>
         <source>Measure</source>
         <translation type="unfinished"></translation>
     </message>
@@ -299,7 +299,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+108"/>
         <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -314,7 +314,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-271"/>
+        <location line="-279"/>
         <source>Measure all</source>
         <translation type="unfinished"></translation>
     </message>
@@ -344,7 +344,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+300"/>
+        <location line="+308"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1369,7 +1369,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+20"/>
         <source>Control panel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1399,7 +1399,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+460"/>
+        <location filename="../app/main_window.cpp" line="+463"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1462,7 +1462,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-373"/>
+        <location filename="../app/main_window.cpp" line="-376"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1591,7 +1591,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>NeedleBench – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1672,17 +1672,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-584"/>
+        <location line="-594"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+583"/>
+        <location line="+593"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-377"/>
+        <location line="-380"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2196,17 +2196,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+774"/>
+        <location line="+815"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-771"/>
+        <location line="-812"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>−10</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2227,12 +2227,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+427"/>
+        <location line="+459"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-427"/>
+        <location line="-459"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2263,17 +2263,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+20"/>
+        <location line="+25"/>
         <source> s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-19"/>
+        <location line="-24"/>
         <source>jump to a recording time</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>go to</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2358,8 +2358,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <source>phases or events from force and position, and from the synchronised video when there is one</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="+155"/>
+        <source>No run open: double-click one in the session list</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
-        <location line="+148"/>
+        <location line="+20"/>
         <source>labels: %n</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -2466,7 +2471,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-668"/>
+        <location line="-695"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2536,7 +2541,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+47"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6906,7 +6911,7 @@ Commands:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+98"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+109"/>
         <source>Stiffness before puncture: %1</source>
         <translation type="unfinished"></translation>
     </message>

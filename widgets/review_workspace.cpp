@@ -245,7 +245,12 @@ void ReviewWorkspace::buildUi()
     jump->setDecimals(3);
     jump->setSuffix(tr(" s"));
     jump->setToolTip(tr("jump to a recording time"));
-    connect(jump, &QDoubleSpinBox::editingFinished, this, [this, jump] { setCursorTime(jump->value()); });
+    connect(jump, &QDoubleSpinBox::editingFinished, this, [this, jump] {
+        setCursorTime(jump->value());
+        // The keyboard back to the hotkeys: the next label key went into the box.
+        if (jump->hasFocus())
+            setFocus(Qt::OtherFocusReason);
+    });
     jumpBox_ = jump;
     jump->setFocusPolicy(Qt::ClickFocus);  // the workspace keeps the keyboard for the hotkeys
     transport->addWidget(new QLabel(tr("go to"), this));
@@ -479,6 +484,33 @@ bool ReviewWorkspace::openRun(const QString& path)
         showStatus(e.message());
         return false;
     }
+}
+
+void ReviewWorkspace::closeRun()
+{
+    setPlaying(false);
+    markRecording_.reset();
+    markVideo_.reset();
+    markedEvent_.reset();
+    runPath_.clear();  // nothing is saved from here on
+    resetTrack();
+    run_ = Run{};
+    model_->setLabels({});
+    undo_->clear();
+    for (const auto& [track, p] : pending_)
+        timeline_->setPending(track, {}, std::nullopt);
+    pending_.clear();
+    plot_->graph(0)->data()->clear();
+    positionGraph_->data()->clear();
+    trackedGraph_->data()->clear();
+    plot_->replot();
+    pendingSync_.reset();
+    clearVideo();
+    setMapping({}, SyncMethod::None);
+    updateSyncUi();
+    updateShading();
+    updateLabelCount();
+    showStatus(tr("No run open: double-click one in the session list"));
 }
 
 void ReviewWorkspace::openVideo(const QString& path)

@@ -52,6 +52,8 @@ public:
 
     // Both report problems in the workspace (status line) and return false.
     bool openRun(const QString& path);
+    // Shows no run (another session was opened: its runs are not this one's).
+    void closeRun();
     void openVideo(const QString& path);  // asynchronous: indexing, then the first frame
     // Attaches a video to the run in review and keeps it with the run in the session
     // (videos.json); the offset starts again from 0. False with a message when no run is open.

@@ -4,6 +4,8 @@
 // Screenshots land in build-gui/screenshots/.
 #include "main_window.h"
 #include "support/simulated_window.h"
+#include "widgets/label_model.h"
+#include "widgets/review_workspace.h"
 #include "translation.h"
 
 #include "core/data_names.h"
@@ -351,6 +353,41 @@ private slots:
         QCOMPARE(w.sessionView()->model()->index(0, nb::RunListModel::State).data().toString(), QStringLiteral("recovered"));
         // The next run does not overwrite it.
         QCOMPARE(QFileInfo(w.session()->nextRunPath(QStringLiteral("linear"))).fileName(), QStringLiteral("run_002_linear.csv"));
+    }
+
+    // Review shows a run of the open session only (edits to a run of the last one went to its
+    // files), and the keyboard goes to it with the tab (Space pressed the control panel's last
+    // button: the stage was disabled and its zero lost).
+    void reviewBelongsToTheOpenSession()
+    {
+        QTemporaryDir tmp;
+        const QString a = tmp.filePath(QStringLiteral("a")), b = tmp.filePath(QStringLiteral("b"));
+        nb::Session::create(a, {});
+        const QString run = QDir(a).filePath(QStringLiteral("run_001_linear.csv"));
+        {
+            nb::RunFileWriter writer;
+            nb::Metadata meta;
+            meta.set(QStringLiteral("motion"), QStringLiteral("linear"));
+            writer.open(run, meta, {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")});
+            for (int i = 0; i < 500; ++i) {
+                const double row[] = {i * 0.002, i * 0.008, 0.001 * i};
+                writer.writeRow(row);
+            }
+            nb::Metadata footer;
+            footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
+            writer.close(footer);
+        }
+        nb::MainWindow w(options(a, false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.controlPanel()->button(Control::Enable)->setFocus();
+        w.reviewRun(run);
+        QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.reviewWorkspace()));
+        QTRY_VERIFY(w.reviewWorkspace()->hasFocus());
+        QCOMPARE(w.reviewWorkspace()->runPath(), run);
+        QVERIFY(w.createSession(b, {}));
+        QVERIFY(w.reviewWorkspace()->runPath().isEmpty());
+        QCOMPARE(w.reviewWorkspace()->labelModel()->labels().size(), std::size_t(0));
     }
 
     // Last: the German translation, chosen as in the Language menu, reaches the widgets.
