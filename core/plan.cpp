@@ -804,7 +804,13 @@ Plan planFromJson(const QJsonObject& object, const QString& file)
                 rr.fail(QStringLiteral("status"), nb::TrCore::tr("'%1' is not one of pending|running|done|skipped|redone").arg(s));
             r.status = *st;
         }
-        r.reason = rr.text(QStringLiteral("reason"));
+        // Versions before this one wrote a reason longer than a line as {}: such a plan is read,
+        // its reason lost, rather than refused (its runs and attempts are all there).
+        const QJsonValue reason = rr.o.value(QStringLiteral("reason"));
+        if (reason.isObject() && reason.toObject().isEmpty())
+            r.reason = nb::TrCore::tr("(the reason was lost by an earlier version of NeedleBench)");
+        else
+            r.reason = rr.text(QStringLiteral("reason"));
         const QJsonArray attempts = rr.array(QStringLiteral("attempts"), false);
         for (qsizetype j = 0; j < attempts.size(); ++j) {
             const QString apath = path + QStringLiteral(".attempts[%1]").arg(j);
@@ -894,6 +900,12 @@ QByteArray inlineJson(const QJsonValue& v)
 
 void writeJson(QByteArray& out, const QJsonValue& v, int indent)
 {
+    // A text, number or truth value as it is, however long: a reason of more than a line's
+    // width went on to the object branch below and was written as {} (the plan then unreadable).
+    if (!v.isArray() && !v.isObject()) {
+        out += scalarJson(v);
+        return;
+    }
     // Flat and short (or an object whose values are all flat and short): one line.
     if (isFlat(v) || (v.isObject() && std::all_of(v.toObject().begin(), v.toObject().end(), [](const QJsonValue& x) { return isFlat(x); }))) {
         const QByteArray one = inlineJson(v);

@@ -4843,7 +4843,7 @@ Befehle:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+962"/>
+        <location filename="../core/plan.cpp" line="+974"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -5529,7 +5529,7 @@ Befehle:
         <translation>keine Läufe zum Fitten</translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-878"/>
+        <location filename="../core/plan.cpp" line="-890"/>
         <source>neither motion nor protocol is set</source>
         <translation>weder Bewegung noch Protokoll ist gesetzt</translation>
     </message>
@@ -5732,12 +5732,12 @@ Befehle:
         <location line="+9"/>
         <location line="+57"/>
         <location line="+41"/>
-        <location line="+31"/>
+        <location line="+37"/>
         <source>expected an object {...}</source>
         <translation>Objekt {...} erwartet</translation>
     </message>
     <message>
-        <location line="-117"/>
+        <location line="-123"/>
         <source>expected a list [...]</source>
         <translation>Liste [...] erwartet</translation>
     </message>
@@ -5787,12 +5787,17 @@ Befehle:
         <translation>&apos;%1&apos; ist keiner der Werte pending|running|done|skipped|redone</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+7"/>
+        <source>(the reason was lost by an earlier version of NeedleBench)</source>
+        <translation>(der Grund ging in einer früheren Version von NeedleBench verloren)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>a run marked %1 needs the attempt that made it</source>
         <translation>ein als %1 markierter Lauf braucht den Versuch, der ihn ergab</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+123"/>
         <source>cannot read: %1</source>
         <translation>kann nicht gelesen werden: %1</translation>
     </message>

@@ -4755,7 +4755,7 @@ Commands:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+962"/>
+        <location filename="../core/plan.cpp" line="+974"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -5441,7 +5441,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-878"/>
+        <location filename="../core/plan.cpp" line="-890"/>
         <source>neither motion nor protocol is set</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5644,12 +5644,12 @@ Commands:
         <location line="+9"/>
         <location line="+57"/>
         <location line="+41"/>
-        <location line="+31"/>
+        <location line="+37"/>
         <source>expected an object {...}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-117"/>
+        <location line="-123"/>
         <source>expected a list [...]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5699,12 +5699,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+7"/>
+        <source>(the reason was lost by an earlier version of NeedleBench)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>a run marked %1 needs the attempt that made it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+123"/>
         <source>cannot read: %1</source>
         <translation type="unfinished"></translation>
     </message>

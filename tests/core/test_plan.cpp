@@ -223,6 +223,23 @@ private slots:
         QCOMPARE(back.settingsFor(back.runs[3]).value(QStringLiteral("stop_at")).toString(), QStringLiteral("puncture:2"));
         QCOMPARE(back.settingsFor(back.runs[3]).value(QStringLiteral("slow_after_puncture_mm_s")).toDouble(), 1.0);
         QCOMPARE(back.runs[1].reason, QStringLiteral("slab torn"));
+        // A reason longer than a line (it was written as {} and the plan could not be read again).
+        const QString longReason = QStringLiteral("the slab tore along the whole of its left edge when the platform reversed, "
+                                                  "and the needle left a track that the next insertion would follow");
+        skipRun(p, 2, longReason);
+        writePlanFile(path, p);
+        QCOMPARE(readPlanFile(path).runs[2].reason, longReason);
+        // A plan an earlier version broke that way is read, its reason said to be lost.
+        QFile broken(path);
+        QVERIFY(broken.open(QIODevice::ReadOnly));
+        QByteArray brokenText = broken.readAll();
+        broken.close();
+        brokenText.replace(QJsonDocument(QJsonArray{longReason}).toJson(QJsonDocument::Compact).mid(1).chopped(1), "{}");
+        QVERIFY(brokenText.contains("\"reason\": {}"));
+        QVERIFY(broken.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        broken.write(brokenText);
+        broken.close();
+        QVERIFY(readPlanFile(path).runs[2].reason.contains(QStringLiteral("lost")));
         QCOMPARE(back.runs[0].currentAttempt()->videoFile, QStringLiteral("run_001_sine.avi"));
         // A person reads it: one run's factors on one line.
         QFile f(path);
