@@ -148,6 +148,29 @@ void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>
         throw SessionError(path, nb::TrCore::tr("cannot write (%1)").arg(f.errorString()));
 }
 
+std::optional<RunVideoLink> runVideoLinkFromRun(const Run& run, const QString& runPath)
+{
+    const std::optional<double> offset = run.metadata.number(key::sync_offset_s);
+    if (!offset || !std::isfinite(*offset))
+        return std::nullopt;
+    RunVideoLink link;
+    link.mapping.offset_s = *offset;
+    if (const std::optional<double> drift = run.metadata.number(QStringLiteral("sync_drift")); drift && std::isfinite(*drift))
+        link.mapping.drift = *drift;
+    link.method = syncMethodFromKey(run.metadata.value(key::sync_method, QString()));
+    if (const std::optional<double> c = run.metadata.number(key::sync_confidence); c && std::isfinite(*c))
+        link.confidence = *c;
+    // A method in words of its own (the demo's): found by a sync when it has a confidence.
+    if (link.method == SyncMethod::None)
+        link.method = link.confidence ? SyncMethod::Automatic : SyncMethod::Manual;
+    const QString video = run.metadata.value(key::video_file, QString());
+    if (!video.isEmpty())
+        link.video = QFileInfo(video).isAbsolute() ? video : QFileInfo(runPath).absoluteDir().filePath(video);
+    if (link.video.isEmpty() || !QFileInfo::exists(link.video))
+        link.video = videoBesideRun(runPath);
+    return link;
+}
+
 void applyRunVideoLink(Run& run, const QString& runPath, const RunVideoLink& link)
 {
     if (!link.video.isEmpty()) {

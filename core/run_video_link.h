@@ -44,5 +44,8 @@ QString videoBesideRun(const QString& runPath);
 // Puts the link into the run's metadata as the exporters read it (video_file relative to the
 // run file when beside or below it, sync_offset_s, sync_drift, sync_method, sync_confidence).
 void applyRunVideoLink(Run& run, const QString& runPath, const RunVideoLink& link);
+// The reverse: the link a run file carries itself (`needlebench demo` and exports write
+// sync_offset_s and video_file into the run); nullopt when it names no offset.
+std::optional<RunVideoLink> runVideoLinkFromRun(const Run& run, const QString& runPath);
 
 }  // namespace nb

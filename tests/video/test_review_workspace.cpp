@@ -486,6 +486,26 @@ private slots:
         QVERIFY2(ws.status().contains(QStringLiteral("no clock has")), qPrintable(ws.status()));
     }
 
+    // A run file that carries its own sync (as the demo's and exported runs do) opens at that
+    // offset, not at 0 (the demo's runs were shown 0.6 to 1.3 s off).
+    void theRunsOwnSyncIsUsed()
+    {
+        QTemporaryDir own;
+        const QString run = own.filePath("carried.csv"), video = own.filePath("carried.avi");
+        QFile in(run_), out(run);
+        QVERIFY(in.open(QIODevice::ReadOnly) && out.open(QIODevice::WriteOnly));
+        out.write("# sync_offset_s: 1.2\n# sync_confidence: 0.97\n# video_file: carried.avi\n");
+        out.write(in.readAll());
+        out.close();
+        QVERIFY(QFile::copy(video_, video));
+        nb::ReviewWorkspace ws;
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        QVERIFY(ws.openRun(run));
+        QCOMPARE(ws.mapping().offset_s, 1.2);
+        QVERIFY(opened.wait(60000));
+        QCOMPARE(ws.videoPath(), QFileInfo(video).absoluteFilePath());
+    }
+
     void badFilesAreReported()
     {
         nb::ReviewWorkspace ws;
