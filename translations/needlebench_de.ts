@@ -2123,7 +2123,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+49"/>
+        <location filename="../widgets/review_workspace.cpp" line="+50"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2199,12 +2199,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+815"/>
+        <location line="+840"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-812"/>
+        <location line="-837"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2230,12 +2230,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+459"/>
+        <location line="+463"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-459"/>
+        <location line="-463"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2401,7 +2401,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video nicht zugeordnet: %1 ist nicht mehr der Lauf in der Sichtung</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
         <source>The video of this run, %1, is missing. Open it again where it now lies.</source>
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
@@ -2421,7 +2421,31 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 auf %2 nicht geschlossen (wäre leer oder überlappte eine andere Phase): nicht hinzugefügt</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+98"/>
+        <source>They are kept in %1; copy that file beside the run when its folder can be written.</source>
+        <translation>Sie sind in %1 aufbewahrt; kopieren Sie diese Datei neben den Lauf, sobald sein Ordner beschreibbar ist.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>They could not be kept elsewhere either (%1): they are lost when another run is opened.</source>
+        <translation>Sie ließen sich auch anderswo nicht aufbewahren (%1): Sie gehen verloren, wenn ein anderer Lauf geöffnet wird.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Labels not saved</source>
+        <translation>Labels nicht gespeichert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Labels not saved: %1
+
+%2</source>
+        <translation>Labels nicht gespeichert: %1
+
+%2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>force and position (synchronise the video to have its motion used)</source>
         <translation>Kraft und Position (das Video synchronisieren, damit seine Bewegung genutzt wird)</translation>
     </message>
@@ -2474,7 +2498,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-695"/>
+        <location line="-720"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2554,7 +2578,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+109"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -2589,12 +2613,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+89"/>
         <source>Labels not saved: %1</source>
         <translation>Labels nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>suggest labels</source>
         <translation>Labels vorschlagen</translation>
     </message>

@@ -20,6 +20,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QDir>
+#include <QStandardPaths>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -878,7 +879,28 @@ void ReviewWorkspace::saveLabels()
     try {
         writeLabelsFile(labelsPathFor(runPath_), model_->labels());
     } catch (const RunFileError& e) {
+        // Beside the run they cannot be written (a read-only or full disk): kept in the user's
+        // own data folder instead, and said in a box once, where only a status line said it and
+        // the labels were gone with the next run opened.
+        QString name = QFileInfo(labelsPathFor(runPath_)).fileName();
+        if (name.size() > 200)  // a name the run's own disk refused for its length
+            name = name.left(189) + QStringLiteral(".labels.csv");
+        const QString kept = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                                 .filePath(QStringLiteral("unsaved-labels/%1/%2").arg(QFileInfo(runPath_).absoluteDir().dirName(), name));
+        QString where;
+        try {
+            QDir().mkpath(QFileInfo(kept).absolutePath());
+            writeLabelsFile(kept, model_->labels());
+            where = tr("They are kept in %1; copy that file beside the run when its folder can be written.").arg(QDir::toNativeSeparators(kept));
+        } catch (const RunFileError& e2) {
+            where = tr("They could not be kept elsewhere either (%1): they are lost when another run is opened.").arg(e2.message());
+        }
         showStatus(tr("Labels not saved: %1").arg(e.message()));
+        if (labelsWarnedFor_ != runPath_) {
+            labelsWarnedFor_ = runPath_;
+            warnModeless(this, tr("Labels not saved"), tr("Labels not saved: %1\n\n%2").arg(e.message(), where))
+                ->setObjectName(QStringLiteral("labelsNotSaved"));
+        }
     }
 }
 

@@ -169,6 +169,7 @@ private:
     // A video the operator chose, not yet opened: the run's link keeps the one before until
     // it opens (a file that fails to open replaced it).
     bool attachPending_ = false;
+    QString labelsWarnedFor_;  // the run whose labels could not be saved beside it, said once
     std::map<QString, std::pair<QString, double>> pending_;  // track -> (label, start)
     std::optional<double> markRecording_, markVideo_;
     std::optional<std::pair<double, double>> markedEvent_;  // the last event marked in both (recording, video)

@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMessageBox>
 #include <QPointer>
 #include <QProcess>
 #include <QPushButton>
@@ -504,6 +505,34 @@ private slots:
         QCOMPARE(ws.mapping().offset_s, 1.2);
         QVERIFY(opened.wait(60000));
         QCOMPARE(ws.videoPath(), QFileInfo(video).absoluteFilePath());
+    }
+
+    // Labels that cannot be written beside the run (its folder read-only, the disk full: here a
+    // run name so long that its labels file's name is past the file system's limit, which stops
+    // root too) are kept in the user's data folder and said in a box, not lost with the next
+    // run opened.
+    void labelsThatCannotBeSavedAreKeptElsewhere()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QTemporaryDir own;
+        const QString stem = QString(246, QLatin1Char('r'));
+        const QString run = own.filePath(stem + ".csv");
+        QVERIFY(QFile::copy(run_, run));
+        nb::ReviewWorkspace ws;
+        ws.show();
+        QVERIFY(ws.openRun(run));
+        QVERIFY(ws.labelModel()->insertLabel({QStringLiteral("events"), QStringLiteral("contact"), 0.5, 0.5, {}}));
+        auto* box = ws.findChild<QMessageBox*>(QStringLiteral("labelsNotSaved"));
+        QVERIFY(box && box->isVisible());
+        QVERIFY2(box->text().contains(stem.left(100)), qPrintable(box->text()));
+        const QString kept = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                                 .filePath(QStringLiteral("unsaved-labels/%1/%2.labels.csv").arg(QDir(own.path()).dirName(), stem.left(189)));
+        QVERIFY2(box->text().contains(QDir::toNativeSeparators(kept)), qPrintable(box->text()));
+        const nb::Labels back = nb::readLabelsFile(kept);
+        QCOMPARE(back.size(), std::size_t(1));
+        QCOMPARE(back.front().label, QStringLiteral("contact"));
+        box->accept();
+        QFile::remove(kept);
     }
 
     void badFilesAreReported()
