@@ -32,6 +32,7 @@ public:
     void open(const QString& path, std::shared_ptr<std::atomic_bool> cancel)
     {
         reader_.reset();
+        path_ = path;
         try {
             FrameIndex index = loadOrBuildFrameIndex(
                 path, [this](int done, int expected) { emit indexProgress(done, expected); }, cancel.get());
@@ -39,9 +40,9 @@ public:
                 return;
             auto shared = std::make_shared<const FrameIndex>(index);
             reader_ = std::make_unique<FrameReader>(std::move(index), 96);
-            emit opened(shared);
+            emit opened(path, shared);
         } catch (const VideoError& e) {
-            emit failed(e.message());
+            emit failed(path, e.message());
         }
     }
 
@@ -54,9 +55,9 @@ public:
         try {
             const DecodedFrame f = reader_->read(n);
             cursor_ = n;
-            emit frameReady(f.index, f.time_s, toQImage(f.image));
+            emit frameReady(path_, f.index, f.time_s, toQImage(f.image));
         } catch (const VideoError& e) {
-            emit failed(e.message());
+            emit failed(path_, e.message());
             return;
         }
         scheduleFill();
@@ -78,10 +79,11 @@ public:
     }
 
 signals:
+    // Each names the file it is about: what the window hears is only the file it opened last.
     void indexProgress(int done, int expected);
-    void opened(nb::video::FrameIndexPtr index);
-    void failed(const QString& message);
-    void frameReady(int index, double time_s, const QImage& image);
+    void opened(const QString& path, nb::video::FrameIndexPtr index);
+    void failed(const QString& path, const QString& message);
+    void frameReady(const QString& path, int index, double time_s, const QImage& image);
 
 private:
     void scheduleFill()
@@ -92,6 +94,7 @@ private:
         QMetaObject::invokeMethod(this, &DecoderWorker::fill, Qt::QueuedConnection);
     }
     std::unique_ptr<FrameReader> reader_;
+    QString path_;  // of reader_
     int cursor_ = -1;
     bool fillQueued_ = false;
 };
@@ -103,12 +106,23 @@ VideoDecoder::VideoDecoder(QObject* parent) : QObject(parent), cancel_(std::make
     worker_->moveToThread(&thread_);
     connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
     connect(worker_, &DecoderWorker::indexProgress, this, &VideoDecoder::indexProgress);
-    connect(worker_, &DecoderWorker::opened, this, [this](FrameIndexPtr index) {
+    // A file opened before the last one may still report (its index was built, or a frame of it
+    // decoded, before open() was asked again): the run in review showed another run's video
+    // and its needle trace, or "no frame could be decoded" of a file no longer shown.
+    connect(worker_, &DecoderWorker::opened, this, [this](const QString& path, FrameIndexPtr index) {
+        if (path != path_)
+            return;
         index_ = index;
         emit opened(index);
     });
-    connect(worker_, &DecoderWorker::failed, this, &VideoDecoder::failed);
-    connect(worker_, &DecoderWorker::frameReady, this, &VideoDecoder::frameReady);
+    connect(worker_, &DecoderWorker::failed, this, [this](const QString& path, const QString& message) {
+        if (path == path_)
+            emit failed(message);
+    });
+    connect(worker_, &DecoderWorker::frameReady, this, [this](const QString& path, int n, double t, const QImage& image) {
+        if (path == path_)
+            emit frameReady(n, t, image);
+    });
     thread_.setObjectName(QStringLiteral("video decoder"));
     thread_.start();
 }
@@ -125,6 +139,7 @@ void VideoDecoder::open(const QString& path)
     cancel_->store(true);  // an index still being built for the previous file stops
     cancel_ = std::make_shared<std::atomic_bool>(false);
     index_.reset();
+    path_ = path;
     QMetaObject::invokeMethod(worker_, [w = worker_, path, c = cancel_] { w->open(path, c); }, Qt::QueuedConnection);
 }
 

@@ -47,6 +47,7 @@ private:
     QThread thread_;
     DecoderWorker* worker_ = nullptr;
     FrameIndexPtr index_;
+    QString path_;  // the file opened last
     std::shared_ptr<std::atomic_bool> cancel_;
 };
 

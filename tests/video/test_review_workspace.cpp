@@ -27,6 +27,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <QThread>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -533,6 +534,30 @@ private slots:
         QCOMPARE(back.front().label, QStringLiteral("contact"));
         box->accept();
         QFile::remove(kept);
+    }
+
+    // What the decoder reports of a file opened before the last one is not passed on: an index
+    // (or a frame) of the run shown before, arriving after another video was asked for, gave
+    // the run in review that video's needle trace and its errors.
+    void theDecoderSpeaksOnlyOfTheLastFileOpened()
+    {
+        nb::video::VideoDecoder decoder;
+        QSignalSpy opened(&decoder, &nb::video::VideoDecoder::opened);
+        QSignalSpy failed(&decoder, &nb::video::VideoDecoder::failed);
+        decoder.open(video_);
+        QVERIFY(opened.wait(60000));  // indexed once: the next open is quick
+        opened.clear();
+        decoder.open(video_ + QStringLiteral(".again"));  // no such file: fails
+        decoder.open(video_);
+        // The worker answers both before this thread looks: the first answer, queued ahead of
+        // the second, is about a file no longer wanted.
+        QThread::msleep(1500);
+        decoder.open(dir_.filePath("missing.avi"));
+        QVERIFY(failed.wait(20000));
+        QTest::qWait(300);
+        QCOMPARE(opened.count(), 0);
+        QCOMPARE(failed.count(), 1);
+        QVERIFY(failed.first().first().toString().contains("missing.avi"));
     }
 
     void badFilesAreReported()
