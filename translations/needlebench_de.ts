@@ -2199,12 +2199,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+840"/>
+        <location line="+848"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-837"/>
+        <location line="-845"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2470,15 +2470,23 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Lese die Bewegung in %1 für den Vorschlag: Bild %2 von %3</translation>
     </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+20"/>
         <source>%n label(s) suggested from %1: check and correct them</source>
         <translation>
             <numerusform>%n Label vorgeschlagen aus %1: prüfen und korrigieren</numerusform>
             <numerusform>%n Labels vorgeschlagen aus %1: prüfen und korrigieren</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>(%n more left out: they overlap labels already there)</source>
+        <translation>
+            <numerusform>(%n weiteres ausgelassen: es überschneidet vorhandene Labels)</numerusform>
+            <numerusform>(%n weitere ausgelassen: sie überschneiden vorhandene Labels)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>needle tracked in the video (at the offset found)</source>
         <translation>im Video verfolgte Nadel (beim gefundenen Versatz)</translation>
     </message>
@@ -2498,7 +2506,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-720"/>
+        <location line="-728"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2623,7 +2631,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Labels vorschlagen</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Open a run and a video first</source>
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>

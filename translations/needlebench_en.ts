@@ -2196,12 +2196,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+840"/>
+        <location line="+848"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-837"/>
+        <location line="-845"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2465,15 +2465,23 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+20"/>
         <source>%n label(s) suggested from %1: check and correct them</source>
         <translation>
             <numerusform>%n label suggested from %1: check and correct them</numerusform>
             <numerusform>%n labels suggested from %1: check and correct them</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>(%n more left out: they overlap labels already there)</source>
+        <translation>
+            <numerusform>(%n more left out: it overlaps labels already there)</numerusform>
+            <numerusform>(%n more left out: they overlap labels already there)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>needle tracked in the video (at the offset found)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2493,7 +2501,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-720"/>
+        <location line="-728"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2618,7 +2626,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Open a run and a video first</source>
         <translation type="unfinished"></translation>
     </message>

@@ -941,11 +941,19 @@ void ReviewWorkspace::suggestLabels()
 void ReviewWorkspace::applySuggestion(const Labels& suggested, const QString& from)
 {
     undo_->beginMacro(tr("suggest labels"));
+    int placed = 0;
     for (const Label& l : suggested)
-        if (model_->canPlace(l))
+        if (model_->canPlace(l)) {
             undo_->push(new AddLabelCommand(model_, l));
+            ++placed;
+        }
     undo_->endMacro();
-    showStatus(tr("%n label(s) suggested from %1: check and correct them", nullptr, int(suggested.size())).arg(from));
+    // What was added, not what was found: on a run already labelled it said "45 labels
+    // suggested" and added none.
+    QString text = tr("%n label(s) suggested from %1: check and correct them", nullptr, placed).arg(from);
+    if (placed < int(suggested.size()))
+        text += QLatin1Char(' ') + tr("(%n more left out: they overlap labels already there)", nullptr, int(suggested.size()) - placed);
+    showStatus(text);
     emit labelsSuggested();
 }
 

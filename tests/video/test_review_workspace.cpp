@@ -560,6 +560,23 @@ private slots:
         QVERIFY(failed.first().first().toString().contains("missing.avi"));
     }
 
+    // Suggesting again on a labelled run says what it added (nothing) and what it left out.
+    void suggestingTwiceSaysWhatItAdded()
+    {
+        QTemporaryDir own;
+        const QString run = own.filePath("suggest.csv");
+        QVERIFY(QFile::copy(run_, run));
+        nb::ReviewWorkspace ws;
+        QVERIFY(ws.openRun(run));
+        ws.suggestLabels();
+        const std::size_t first = ws.labelModel()->labels().size();
+        QVERIFY(first > 0);
+        QVERIFY2(!ws.status().contains("left out"), qPrintable(ws.status()));
+        ws.suggestLabels();
+        QCOMPARE(ws.labelModel()->labels().size(), first);
+        QVERIFY2(ws.status().startsWith("0 label") && ws.status().contains("left out"), qPrintable(ws.status()));
+    }
+
     void badFilesAreReported()
     {
         nb::ReviewWorkspace ws;
