@@ -4,6 +4,7 @@
 // plan run's attempt recorded as `plan run` records it. Kept apart from main_window.cpp so the
 // window's own file stays about the window.
 #include "main_window.h"
+#include "widgets/analysis/analysis_workspace.h"
 
 #include "plan_runner.h"
 #include "plan_walker.h"
@@ -114,10 +115,13 @@ void MainWindow::buildPlanDock()
     connect(planPanel_, &PlanPanel::redoRequested, this, [this](const QString& reason) {
         const int i = planWalker_->lastDoneIndex();
         QString error;
-        if (!planWalker_->redo(i, reason, &error))
+        if (!planWalker_->redo(i, reason, &error)) {
             showMessage(error, true);
-        else
+        } else {
             showMessage(tr("Plan run %1 is made again: %2").arg(planWalker_->plan().runs[std::size_t(i)].number).arg(reason));
+            if (session_)
+                analysis_->openSession(session_->dir());  // the discarded run leaves the fits
+        }
     });
     connect(planPanel_, &PlanPanel::leaveRequested, this, [this] {
         planWalker_->leave();

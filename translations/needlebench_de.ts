@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+132"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+135"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -40,18 +40,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+349"/>
+        <location line="+382"/>
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-348"/>
-        <location line="+349"/>
+        <location line="-381"/>
+        <location line="+382"/>
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-313"/>
+        <location line="-346"/>
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -98,7 +98,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Nach Faktor</translation>
     </message>
     <message numerus="yes">
-        <location line="+129"/>
+        <location line="+160"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n Lauf ausgewertet</numerusform>
@@ -127,7 +127,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1: C weicht von der Geraden durch die Spitzengeschwindigkeiten ab (Cp %2 %, Cn %3 %); siehe Reibung ▸ Zusammenfassung</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+33"/>
+        <source>made again in the plan: %1</source>
+        <translation>im Plan wiederholt: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>left out by default: %1</source>
         <translation>standardmäßig ausgelassen: %1</translation>
     </message>
@@ -1690,7 +1695,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/main_window_plan.cpp" line="+35"/>
+        <location filename="../app/main_window_plan.cpp" line="+36"/>
         <source>pending</source>
         <translation>ausstehend</translation>
     </message>
@@ -1770,7 +1775,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Planlauf %1 wird wiederholt: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>Left the plan: the control panel is yours; runs made now are not the plan&apos;s.</source>
         <translation>Plan verlassen: Das Bedienfeld ist frei; Läufe von jetzt an gehören nicht zum Plan.</translation>
     </message>
@@ -7079,8 +7084,8 @@ Befehle:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-557"/>
-        <location line="+364"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-590"/>
+        <location line="+397"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>
     </message>
@@ -7214,7 +7219,7 @@ F = %1 x + %2 x²
         <translation>%1 teilen</translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-360"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-393"/>
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>

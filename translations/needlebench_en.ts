@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+132"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+135"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+349"/>
+        <location line="+382"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-348"/>
-        <location line="+349"/>
+        <location line="-381"/>
+        <location line="+382"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-313"/>
+        <location line="-346"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -97,7 +97,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+129"/>
+        <location line="+160"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n run analysed</numerusform>
@@ -126,7 +126,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+33"/>
+        <source>made again in the plan: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>left out by default: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1687,7 +1692,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window_plan.cpp" line="+35"/>
+        <location filename="../app/main_window_plan.cpp" line="+36"/>
         <source>pending</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1767,7 +1772,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>Left the plan: the control panel is yours; runs made now are not the plan&apos;s.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6989,8 +6994,8 @@ Commands:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-557"/>
-        <location line="+364"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-590"/>
+        <location line="+397"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7122,7 +7127,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-360"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-393"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>

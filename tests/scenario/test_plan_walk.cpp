@@ -6,6 +6,7 @@
 // factor levels, run four's dead attempt recorded as interrupted. Then skip, leave and return
 // work on the resumed plan, and a plan is made from a template through the Session menu.
 #include "main_window.h"
+#include "widgets/analysis/analysis_workspace.h"
 #include "plan_walker.h"
 #include "support/simulated_window.h"
 
@@ -33,6 +34,7 @@
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QListWidget>
 #include <QtTest>
 #include <csignal>
 #include <cstdio>
@@ -349,6 +351,17 @@ private slots:
         QCOMPARE(redone.runs[2].status, nb::PlanRunStatus::Pending);
         QCOMPARE(int(redone.runs[2].attempts.size()), 1);
         QCOMPARE(redone.runs[2].attempts[0].discarded, QStringLiteral("air bubble in the trace"));
+        // Analysis leaves the discarded run out of its fits (as plan report does), saying why.
+        {
+            const QString discarded = QFileInfo(redone.runs[2].attempts[0].runFile).completeBaseName();
+            QListWidgetItem* item = nullptr;
+            for (QListWidget* list : w.analysisWorkspace()->findChildren<QListWidget*>())
+                for (QListWidgetItem* candidate : list->findItems(discarded, Qt::MatchExactly))
+                    item = candidate;
+            QVERIFY2(item, qPrintable(discarded));
+            QCOMPARE(item->checkState(), Qt::Unchecked);
+            QVERIFY(item->toolTip().contains(QStringLiteral("air bubble in the trace")));
+        }
         QVERIFY(QFileInfo::exists(QDir(sessionDir).filePath(redone.runs[2].attempts[0].runFile)));
         QCOMPARE(redone.runs[3].status, nb::PlanRunStatus::Skipped);
 

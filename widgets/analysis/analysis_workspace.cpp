@@ -7,10 +7,13 @@
 #include "figure_export.h"
 
 #include "core/export/dataset_loader.h"
+#include "core/plan.h"
 #include "core/export/export_error.h"
 #include "core/run_file.h"
 #include "core/run_judgement.h"
 #include "core/data_names.h"
+
+#include <map>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -254,6 +257,7 @@ bool AnalysisWorkspace::openSession(const QString& dir)
         LoadedDataset loaded = loadDataset(dir);
         dir_ = dir;
         setDataset(std::move(loaded.dataset));
+        leaveOutDiscardedRuns(dir);
         if (!loaded.warnings.isEmpty())
             status_->setText(status_->text() + QLatin1Char('\n') + loaded.warnings.join(QLatin1Char('\n')));
         watchLabels();
@@ -264,9 +268,39 @@ bool AnalysisWorkspace::openSession(const QString& dir)
     }
 }
 
+void AnalysisWorkspace::leaveOutDiscardedRuns(const QString& dir)
+{
+    // A run the plan made again (Redo, with a reason) is not one of its results: it starts
+    // unticked, saying why, as `plan report` leaves it out. It was fitted with the rest.
+    const QString planPath = QDir(dir).filePath(QStringLiteral("plan.json"));
+    if (!QFileInfo::exists(planPath))
+        return;
+    std::map<QString, QString>& discarded = discardedByPlan_;
+    discarded.clear();
+    try {
+        for (const PlannedRun& r : readPlanFile(planPath).runs)
+            for (const PlanAttempt& a : r.attempts)
+                if (!a.discarded.isEmpty())
+                    discarded[QFileInfo(a.runFile).completeBaseName()] = a.discarded;
+    } catch (const PlanError&) {
+        return;  // the plan dock says what is wrong with it
+    }
+    if (discarded.empty())
+        return;
+    updatingList_ = true;
+    for (int i = 0; i < runList_->count(); ++i) {
+        QListWidgetItem* item = runList_->item(i);
+        if (discarded.count(item->text()))
+            item->setCheckState(Qt::Unchecked);
+    }
+    updatingList_ = false;
+    recompute();
+}
+
 void AnalysisWorkspace::setDataset(Dataset dataset)
 {
     dataset_ = std::move(dataset);
+    discardedByPlan_.clear();
     updatingList_ = true;
     runList_->clear();
     for (const DatasetRun& r : dataset_.runs) {
@@ -393,7 +427,9 @@ void AnalysisWorkspace::markJudgedRuns()
     for (int i = 0; i < runList_->count(); ++i) {
         QListWidgetItem* item = runList_->item(i);
         const auto it = std::find_if(dataset_.runs.begin(), dataset_.runs.end(), [&](const DatasetRun& r) { return r.name == item->text(); });
-        const RunJudgement j = it == dataset_.runs.end() ? RunJudgement{} : judgeRun(it->run);
+        RunJudgement j = it == dataset_.runs.end() ? RunJudgement{} : judgeRun(it->run);
+        if (const auto d = discardedByPlan_.find(item->text()); d != discardedByPlan_.end())
+            j = {false, tr("made again in the plan: %1").arg(d->second)};
         item->setToolTip(j.usable ? QString() : tr("left out by default: %1").arg(j.reason));
         item->setForeground(j.usable ? palette().text() : QBrush(QColor(150, 150, 150)));
         QFont f = item->font();

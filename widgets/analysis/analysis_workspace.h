@@ -13,6 +13,8 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <map>
+
 class QCheckBox;
 class QComboBox;
 class QCustomPlot;
@@ -77,6 +79,8 @@ signals:
     void analysisUpdated();
 
 private:
+    // Unticks the runs the session's plan made again (their reason in the tooltip).
+    void leaveOutDiscardedRuns(const QString& dir);
     void recompute();
     void refreshViews();
     void showStiffness();
@@ -95,6 +99,7 @@ private:
     QTimer reloadTimer_;
 
     QListWidget* runList_ = nullptr;
+    std::map<QString, QString> discardedByPlan_;  // run name -> why the plan made it again
     QLabel* status_ = nullptr;
     QCheckBox* includeJudgedOut_ = nullptr;
     void markJudgedRuns();
