@@ -10,6 +10,7 @@
 #include "plan_walker.h"
 
 #include "core/data_names.h"
+#include "core/end_reason.h"
 #include "core/plan.h"
 #include "devices/acquisition_engine.h"
 #include "devices/device_spec.h"
@@ -32,8 +33,17 @@ namespace {
 QString statusText(const PlannedRun& r)
 {
     switch (r.status) {
-    case PlanRunStatus::Pending:
-        return r.attempts.empty() ? MainWindow::tr("pending") : MainWindow::tr("again (%1)").arg(r.attempts.back().result);
+    case PlanRunStatus::Pending: {
+        if (r.attempts.empty())
+            return MainWindow::tr("pending");
+        // Why it is made again, in the operator's words: the reason given for a redo, else how
+        // the last attempt ended (shown as the session list shows it, not the file's key).
+        const PlanAttempt& last = r.attempts.back();
+        if (!last.discarded.isEmpty())
+            return MainWindow::tr("again: %1").arg(last.discarded);
+        const std::optional<EndReason> ended = endReasonFromFileName(last.result);
+        return MainWindow::tr("again (%1)").arg(ended ? displayName(*ended) : last.result);
+    }
     case PlanRunStatus::Running:
         return MainWindow::tr("running");
     case PlanRunStatus::Done:

@@ -1695,17 +1695,22 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/main_window_plan.cpp" line="+36"/>
+        <location filename="../app/main_window_plan.cpp" line="+38"/>
         <source>pending</source>
         <translation>ausstehend</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+5"/>
+        <source>again: %1</source>
+        <translation>erneut: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>again (%1)</source>
         <translation>erneut (%1)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>running</source>
         <translation>läuft</translation>
     </message>
@@ -1846,7 +1851,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+11"/>
         <source>Simulated rig for plan run %1: %2, seed %3 (enable, bias and zero again)</source>
-        <translation>Simulierter Versuchsstand für Planlauf %1: %2, Seed %3 (erneut freigeben, Nullabgleich und Nullposition)</translation>
+        <translation>Simulierter Versuchsstand für Planlauf %1: %2, Seed %3 (Achse erneut einschalten, tarieren und Position nullen)</translation>
     </message>
     <message>
         <location line="+17"/>
@@ -1932,7 +1937,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+33"/>
         <source>Bias done</source>
-        <translation>Nullabgleich erledigt</translation>
+        <translation>Tariert</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2075,7 +2080,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+2"/>
         <source>bias</source>
-        <translation>Nullabgleich</translation>
+        <translation>Tarieren</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2717,7 +2722,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Gesamtsteifigkeit, Reibung, …</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Organ</source>
         <translation>Organ</translation>
     </message>
@@ -6783,7 +6788,7 @@ Befehle:
         <location line="+28"/>
         <location line="+12"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
-        <translation>Not-Aus: Schalten Sie die Achse wieder ein, um ihn zurückzusetzen.</translation>
+        <translation>Not-Halt: Schalten Sie die Achse wieder ein, um ihn zurückzusetzen.</translation>
     </message>
     <message>
         <location line="-38"/>
@@ -7301,7 +7306,7 @@ F = %1 x + %2 x²
     <message>
         <location line="+2"/>
         <source>stage enabled; emergency stop reset</source>
-        <translation>Achse eingeschaltet; Not-Aus zurückgesetzt</translation>
+        <translation>Achse eingeschaltet; Not-Halt zurückgesetzt</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -7478,12 +7483,12 @@ F = %1 x + %2 x²
     <message>
         <location line="+54"/>
         <source>could not disable the stage after the emergency stop: %1</source>
-        <translation>konnte die Achse nach dem Not-Aus nicht ausschalten: %1</translation>
+        <translation>konnte die Achse nach dem Not-Halt nicht ausschalten: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>emergency stop: the stage is disabled until you enable it again</source>
-        <translation>Not-Aus: die Achse bleibt aus, bis Sie sie wieder einschalten</translation>
+        <translation>Not-Halt: die Achse bleibt aus, bis Sie sie wieder einschalten</translation>
     </message>
     <message>
         <location line="+159"/>

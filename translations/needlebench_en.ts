@@ -1692,17 +1692,22 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window_plan.cpp" line="+36"/>
+        <location filename="../app/main_window_plan.cpp" line="+38"/>
         <source>pending</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>again (%1)</source>
+        <location line="+5"/>
+        <source>again: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>again (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>running</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2712,7 +2717,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Organ</source>
         <translation type="unfinished"></translation>
     </message>

@@ -41,6 +41,7 @@ SessionInfoDialog::SessionInfoDialog(Mode mode, const SessionInfo& info, const Q
     protocol_->setObjectName(QStringLiteral("protocol"));
     protocol_->setPlaceholderText(tr("overall stiffness, friction, …"));
     notes_->setObjectName(QStringLiteral("notes"));
+    notes_->setTabChangesFocus(true);  // Tab moves on, as in every other field; a keyboard-only operator was trapped here
 
     auto* form = new QFormLayout(this);
     form->addRow(tr("Organ"), organ_);

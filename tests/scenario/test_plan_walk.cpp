@@ -362,6 +362,9 @@ private slots:
             QCOMPARE(item->checkState(), Qt::Unchecked);
             QVERIFY(item->toolTip().contains(QStringLiteral("air bubble in the trace")));
         }
+        // The dock says why run three is made again (it said "again (completed)").
+        QVERIFY2(w.planPanel()->view().runs.join(QLatin1Char('\n')).contains(QStringLiteral("again: air bubble in the trace")),
+                 qPrintable(w.planPanel()->view().runs.join(QLatin1Char('\n'))));
         QVERIFY(QFileInfo::exists(QDir(sessionDir).filePath(redone.runs[2].attempts[0].runFile)));
         QCOMPARE(redone.runs[3].status, nb::PlanRunStatus::Skipped);
 
