@@ -2209,12 +2209,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+848"/>
+        <location line="+858"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-845"/>
+        <location line="-855"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2496,7 +2496,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+48"/>
+        <source>correlating: frame %1 of %2…</source>
+        <translation>korreliere: Bild %1 von %2…</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>needle tracked in the video (at the offset found)</source>
         <translation>im Video verfolgte Nadel (beim gefundenen Versatz)</translation>
     </message>
@@ -2516,7 +2521,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-728"/>
+        <location line="-738"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2651,7 +2656,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+90"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>

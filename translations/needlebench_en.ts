@@ -2206,12 +2206,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+848"/>
+        <location line="+858"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-845"/>
+        <location line="-855"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2491,7 +2491,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+48"/>
+        <source>correlating: frame %1 of %2…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>needle tracked in the video (at the offset found)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2511,7 +2516,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-728"/>
+        <location line="-738"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2646,7 +2651,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+90"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>

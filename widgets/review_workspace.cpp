@@ -993,8 +993,18 @@ void ReviewWorkspace::startSyncJob(bool forOperator)
     options.roi = jobRoi_;
     const Run run = run_;
     const std::shared_ptr<std::atomic_bool> cancel = jobCancel_;
-    syncWatcher_.setFuture(QtConcurrent::run([index, run, options, cancel] {
-        return video::syncVideoToRun(index, run, options, {}, cancel.get());
+    // How far the tracking is, while the operator waits for it: a long video showed
+    // "correlating…" for minutes with nothing moving.
+    QPointer<ReviewWorkspace> self(this);
+    const int generation = jobGeneration_;
+    auto progress = [self, generation](int done, int total) {
+        QMetaObject::invokeMethod(self, [self, generation, done, total] {
+            if (self && self->wantPending_ && self->watchedGeneration_ == generation && self->jobGeneration_ == generation)
+                self->syncLabel_->setText(tr("correlating: frame %1 of %2…").arg(done).arg(total));
+        }, Qt::QueuedConnection);
+    };
+    syncWatcher_.setFuture(QtConcurrent::run([index, run, options, cancel, progress] {
+        return video::syncVideoToRun(index, run, options, progress, cancel.get());
     }));
 }
 
