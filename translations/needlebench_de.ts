@@ -40,18 +40,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+382"/>
+        <location line="+386"/>
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-381"/>
-        <location line="+382"/>
+        <location line="-385"/>
+        <location line="+386"/>
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-350"/>
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -143,7 +143,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+80"/>
         <source>The factors of a plan&apos;s runs (their factor_… metadata)</source>
         <translation>Die Faktoren der Planläufe (ihre factor_…-Metadaten)</translation>
     </message>
@@ -5053,7 +5053,7 @@ Befehle:
         <translation>Karnopp-Reibung pro Länge, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau der Tabellen 4/5)</translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+230"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+246"/>
         <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation>Gruppe</translation>
@@ -5071,12 +5071,12 @@ Befehle:
         <translation>std</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-172"/>
         <source>%1: left out of the table: %2</source>
         <translation>%1: aus der Tabelle gelassen: %2</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+110"/>
         <source>%1: no friction fit with the mass estimated (%2)</source>
         <translation>%1: keine Reibungsanpassung mit geschätzter Masse (%2)</translation>
     </message>
@@ -7094,7 +7094,7 @@ Befehle:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-590"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-594"/>
         <location line="+397"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>

@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+382"/>
+        <location line="+386"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-381"/>
-        <location line="+382"/>
+        <location line="-385"/>
+        <location line="+386"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-350"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -142,7 +142,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+80"/>
         <source>The factors of a plan&apos;s runs (their factor_… metadata)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4963,7 +4963,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/factor_analysis.cpp" line="+230"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+246"/>
         <location filename="../core/export/session_analysis.cpp" line="+2"/>
         <source>group</source>
         <translation type="unfinished"></translation>
@@ -4981,12 +4981,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-172"/>
         <source>%1: left out of the table: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+110"/>
         <source>%1: no friction fit with the mass estimated (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7004,7 +7004,7 @@ Commands:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-590"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-594"/>
         <location line="+397"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>

@@ -105,6 +105,22 @@ QStringList datasetFactors(const Dataset& dataset)
     return names;
 }
 
+QStringList datasetSettingFactors(const Dataset& dataset)
+{
+    QStringList out;
+    for (const QString key : {QStringLiteral("tissue"), QStringLiteral("sim_tissue"), QStringLiteral("tip"), QStringLiteral("sim_tip"),
+                              QStringLiteral("motion"), QStringLiteral("velocity_mm_s"), QStringLiteral("frequency_hz"),
+                              QStringLiteral("amplitude_mm")}) {
+        QStringList levels;
+        for (const DatasetRun& r : dataset.runs)
+            if (const QString level = factorLevel(r.run, key); !level.isEmpty() && !levels.contains(level))
+                levels << level;
+        if (levels.size() >= 2)
+            out << key;
+    }
+    return out;
+}
+
 std::vector<RunFactorValues> runFactorValues(const Dataset& dataset, const SessionAnalysis& analysis, const QStringList& factors,
                                              const FactorAnalysisOptions& options, QStringList* warnings)
 {

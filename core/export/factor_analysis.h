@@ -45,6 +45,10 @@ QString factorLevel(const Run& run, const QString& factor);
 // The factors a dataset's runs carry as `factor_<name>` metadata (a plan's runs), in the order
 // first met; empty for runs recorded without a plan.
 QStringList datasetFactors(const Dataset& dataset);
+// Settings the runs were made at, as factors where they differ between runs (two levels or
+// more): tissue, tip, motion, velocity, frequency, amplitude. What By factor offers a session
+// made without a plan, whose runs record no factor_… of their own.
+QStringList datasetSettingFactors(const Dataset& dataset);
 
 // One entry per run with at least one fitted quantity, in the dataset's order. Warnings for
 // runs whose friction re-fit failed go to *warnings.

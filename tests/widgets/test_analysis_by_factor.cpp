@@ -176,7 +176,7 @@ private slots:
         QCOMPARE(csv.readAll(), fitTableCsv(w.factorTableFor(QStringLiteral("velocity_mm_s"))));
     }
 
-    void runsWithoutAPlanOfferNoFactor()
+    void runsWithoutAPlanOfferNoFactorOfTheirOwn()
     {
         Dataset d = makeDataset();
         for (DatasetRun& r : d.runs) {
@@ -188,11 +188,40 @@ private slots:
         }
         AnalysisWorkspace w;
         w.setDataset(d);
-        QCOMPARE(w.factorChooser()->count(), 0);
-        QCOMPARE(w.factorModel()->rowCount(), 0);
+        // No factor of a plan: only the settings the runs differ in (here the friction runs'
+        // frequencies, from their headers) are offered, and no by-factor table is saved.
+        for (int i = 0; i < w.factorChooser()->count(); ++i)
+            QVERIFY2(datasetSettingFactors(d).contains(w.factorChooser()->itemText(i)), qPrintable(w.factorChooser()->itemText(i)));
+        QVERIFY(datasetFactors(d).isEmpty());
         QTemporaryDir out;
         for (const QString& f : w.saveAllTables(out.path()))
             QVERIFY(!QFileInfo(f).fileName().startsWith(QLatin1String("by_factor")));
+    }
+
+    // Runs made without a plan that differ in a setting (here their velocity, recorded as the
+    // setting it is, not as a factor): By factor offers that setting, where it showed an empty
+    // plot titled "a1 by no factor". A setting all runs share is no factor.
+    void runsWithoutAPlanOfferTheSettingsTheyDifferIn()
+    {
+        Dataset d = makeDataset();
+        for (DatasetRun& r : d.runs) {
+            Metadata kept;
+            for (const auto& [k, v] : r.run.metadata.entries())
+                if (k == QLatin1String("factor_velocity_mm_s"))
+                    kept.set(QStringLiteral("velocity_mm_s"), v);
+                else if (!k.startsWith(QLatin1String("factor_")))
+                    kept.set(k, v);
+            r.run.metadata = kept;
+        }
+        AnalysisWorkspace w;
+        w.setDataset(d);
+        QStringList offered;
+        for (int i = 0; i < w.factorChooser()->count(); ++i)
+            offered << w.factorChooser()->itemText(i);
+        QVERIFY2(offered.contains(QStringLiteral("velocity_mm_s")), qPrintable(offered.join(QStringLiteral(", "))));
+        QVERIFY(!offered.contains(QStringLiteral("tissue")));  // liver1 in every run
+        w.factorChooser()->setCurrentText(QStringLiteral("velocity_mm_s"));
+        QVERIFY(w.factorModel()->rowCount() > 0);
     }
 };
 

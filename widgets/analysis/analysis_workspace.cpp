@@ -517,7 +517,11 @@ void AnalysisWorkspace::refreshViews()
     refill(validationRun_, validation);
     // By factor: the factors of every run in the session (so the choice survives unticking),
     // the quantities of the runs analysed.
-    const QStringList factors = datasetFactors(dataset_);
+    // A session made without a plan records no factors: the settings its runs differ in stand
+    // in (it showed an empty plot titled "a1 by no factor").
+    QStringList factors = datasetFactors(dataset_);
+    if (factors.isEmpty())
+        factors = datasetSettingFactors(dataset_);
     factorValues_ = runFactorValues(dataset_, analysis_, factors);
     refill(factorChoice_, factors);
     {
