@@ -64,7 +64,8 @@ RunJudgement judgeRun(const Run& run)
     case EndReason::Interrupted:
     case EndReason::Aborted:
     case EndReason::Recovered:
-        return {false, nb::TrCore::tr("ended by %1").arg(displayName(*reason))};
+        // "ended early (recovered)": it read "ended by recovered", "ended by interrupted".
+        return {false, nb::TrCore::tr("ended early (%1)").arg(displayName(*reason))};
     default:
         break;
     }

@@ -5897,9 +5897,9 @@ Befehle:
         <translation>unbekannter Endgrund „%1“</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>ended by %1</source>
-        <translation>beendet durch %1</translation>
+        <location line="+10"/>
+        <source>ended early (%1)</source>
+        <translation>vorzeitig beendet (%1)</translation>
     </message>
     <message>
         <location line="+5"/>

@@ -5807,8 +5807,8 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>ended by %1</source>
+        <location line="+10"/>
+        <source>ended early (%1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

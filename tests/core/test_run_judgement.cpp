@@ -65,7 +65,7 @@ private slots:
             nb::Run r = contact;
             r.footer.set(nb::key::end_reason, QString::fromLatin1(reason));
             const nb::RunJudgement j = nb::judgeRun(r);
-            QVERIFY2(!j.usable && j.reason.startsWith(QStringLiteral("ended by")), qPrintable(j.reason));
+            QVERIFY2(!j.usable && j.reason.startsWith(QStringLiteral("ended early (")), qPrintable(j.reason));
         }
         nb::Run cutOff = contact;
         cutOff.footer = {};
@@ -106,7 +106,7 @@ private slots:
         const nb::SessionAnalysis judged = nb::analyseDataset(d);
         QCOMPARE(judged.stiffness.size(), std::size_t(4));
         QCOMPARE(judged.leftOut.size(), 1);
-        QVERIFY(judged.leftOut.front().startsWith(QStringLiteral("run_005_linear: ended by")));
+        QVERIFY(judged.leftOut.front().startsWith(QStringLiteral("run_005_linear: ended early (")));
         for (const nb::StiffnessRunResult& s : judged.stiffness)
             QVERIFY2(!s.outlier, qPrintable(s.run + QStringLiteral(": ") + s.outlierReason));
 
