@@ -650,9 +650,10 @@ QString MainWindow::withinSession(QString text) const
 {
     // The session's folder is in the title bar: files in it by their names, so that what went
     // wrong ("No space left on device", "only 12 kB free") is not cut off at the status bar's end.
-    if (session_)
-        for (const QString& dir : {QDir(session_->dir()).absolutePath(), QDir::toNativeSeparators(QDir(session_->dir()).absolutePath())})
-            text.replace(dir + QLatin1Char('/'), QString()).replace(dir + QDir::separator(), QString());
+    if (session_) {
+        const QString dir = QDir(session_->dir()).absolutePath();
+        text.replace(dir + QLatin1Char('/'), QString()).replace(QDir::toNativeSeparators(dir) + QDir::separator(), QString());
+    }
     return text;
 }
 

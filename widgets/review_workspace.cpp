@@ -490,11 +490,7 @@ bool ReviewWorkspace::openRun(const QString& path)
 void ReviewWorkspace::closeRun()
 {
     setPlaying(false);
-    markRecording_.reset();
-    markVideo_.reset();
-    markedEvent_.reset();
     runPath_.clear();  // nothing is saved from here on
-    resetTrack();
     run_ = Run{};
     model_->setLabels({});
     undo_->clear();
@@ -506,7 +502,7 @@ void ReviewWorkspace::closeRun()
     trackedGraph_->data()->clear();
     plot_->replot();
     pendingSync_.reset();
-    clearVideo();
+    clearVideo();  // the marks and what was tracked go with it
     setMapping({}, SyncMethod::None);
     updateSyncUi();
     updateShading();

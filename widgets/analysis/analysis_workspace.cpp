@@ -8,6 +8,7 @@
 
 #include "core/export/dataset_loader.h"
 #include "core/plan.h"
+#include "core/plan_session.h"
 #include "core/export/export_error.h"
 #include "core/run_file.h"
 #include "core/run_judgement.h"
@@ -272,7 +273,7 @@ void AnalysisWorkspace::leaveOutDiscardedRuns(const QString& dir)
 {
     // A run the plan made again (Redo, with a reason) is not one of its results: it starts
     // unticked, saying why, as `plan report` leaves it out. It was fitted with the rest.
-    const QString planPath = QDir(dir).filePath(QStringLiteral("plan.json"));
+    const QString planPath = QDir(dir).filePath(planFileName());
     if (!QFileInfo::exists(planPath))
         return;
     std::map<QString, QString>& discarded = discardedByPlan_;
