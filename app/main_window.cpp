@@ -229,11 +229,11 @@ void MainWindow::attachEngine()
     });
     connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) {
         statusBar()->setStyleSheet(QString());  // a plain note is not shown in the last alarm's red
-        // Elided in the middle where it would run under the rig's summary on the right (which
-        // grows by a few digits as a run goes on): a run's path is long, and its file name, at
-        // the end, is what the operator looks for.
+        // Files in the session by their names, and elided in the middle where the rest would
+        // run under the rig's summary on the right: a file name, at the end, is what the
+        // operator looks for.
         const int room = statusBar()->width() - statusLabel_->width() - 12 * statusBar()->fontMetrics().averageCharWidth();
-        statusBar()->showMessage(statusBar()->fontMetrics().elidedText(text, Qt::ElideMiddle, std::max(room, 120)), 8000);
+        statusBar()->showMessage(statusBar()->fontMetrics().elidedText(withinSession(text), Qt::ElideMiddle, std::max(room, 120)), 8000);
     });
 }
 
@@ -610,12 +610,19 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
     planStatus(s);
     if (wizard_)
         wizard_->setDeviceTime(s.deviceTime_s);
-    statusLabel_->setText(tr("%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn")
-                              .arg(engine_->deviceDescription())
-                              .arg(s.rateHz, 0, 'f', 0)
-                              .arg(s.samples)
-                              .arg(s.dropped + s.overruns)
-                              .arg(plots_->framesDrawn()));
+    const auto summary = [this](double rateHz, qint64 samples, qint64 dropped, qint64 frames) {
+        return tr("%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn")
+            .arg(engine_->deviceDescription())
+            .arg(rateHz, 0, 'f', 0)
+            .arg(samples)
+            .arg(dropped)
+            .arg(frames);
+    };
+    statusLabel_->setText(summary(s.rateHz, qint64(s.samples), qint64(s.dropped + s.overruns), qint64(plots_->framesDrawn())));
+    // As wide as a day's counts from the start, so that the summary does not grow under the
+    // message beside it (elided to the room left when it was shown) as the samples add up.
+    statusLabel_->setMinimumWidth(statusLabel_->fontMetrics().horizontalAdvance(summary(std::max(s.rateHz, 10000.0), 99999999, 99999, 9999999)) +
+                                  2 * statusLabel_->margin() + 4);
     if (!s.realtimeWarning.isEmpty())
         statusLabel_->setToolTip(s.realtimeWarning);
 }

@@ -154,9 +154,11 @@ private slots:
             nbtest::prepareToRecord(w);
             p->button(Control::StartInsertion)->click();
             QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving && p->interlockState().recording, 20000);
-            // Where it records, said beside the rig's summary without running under it: the
-            // path elided in its middle, the run's file name whole.
+            // Where it records, said beside the rig's summary without running under it, as the
+            // summary's counts grow: the run's file name, its session's folder is in the title.
             QTRY_VERIFY_WITH_TIMEOUT(w.statusBar()->currentMessage().endsWith(QLatin1String("_linear.csv")), 5000);
+            QVERIFY2(!w.statusBar()->currentMessage().contains(QDir(sessionDir).dirName()), qPrintable(w.statusBar()->currentMessage()));
+            QTest::qWait(1500);
             QLabel* summary = nullptr;
             for (QLabel* l : w.statusBar()->findChildren<QLabel*>())
                 if (l->isVisible() && (!summary || l->width() > summary->width()))
