@@ -90,6 +90,46 @@ private slots:
         }
     }
 
+    // The grid's search sums each onset's terms from running sums; it must pick what fitting
+    // every point of the grid on its own picks, windows and weights as they come.
+    void gridPicksWhatEveryPointPicks()
+    {
+        std::mt19937 rng(drawSeed(552871u));
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        for (int i = 0; i < 12; ++i) {
+            const double frame_s = 1.0 / (u(rng) < 0.5 ? 25.0 : 29.97), t0 = 1.0 + u(rng), tau = 0.02 + 0.3 * u(rng);
+            const double v = 30.0 * (u(rng) - 0.5), rest = 20.0 * (u(rng) - 0.5);
+            std::normal_distribution<double> noise(0.0, 0.05 + 0.5 * u(rng));
+            std::vector<double> t, d, w;
+            for (double time = 20.0 + u(rng) * frame_s; time < 20.0 + t0 + 10.0 * tau; time += frame_s) {
+                t.push_back(time);
+                const double r = time - 20.0;
+                d.push_back((r < t0 ? v * (r - t0) : rest * (1.0 - std::exp(-(r - t0) / tau))) + noise(rng));
+                w.push_back(u(rng) < 0.1 ? 0.2 * u(rng) : 1.0);
+            }
+            const double lo = 20.0 + 0.3 * u(rng), hi = t.back() - 0.2 * u(rng) * tau;
+            const double from = 20.0 + t0 - 0.1, to = 20.0 + t0 + 0.1, step = 0.004, tauFrom = 0.005, tauTo = 1.0, factor = 1.03;
+            const nb::SettlingFit grid = nb::fitSettling(t, d, w, from, to, step, tauFrom, tauTo, factor, lo, hi);
+            nb::SettlingFit each;
+            for (double o = from; o <= to + 1e-12; o += step)
+                for (double k = tauFrom; k <= tauTo * (1 + 1e-9); k *= factor)
+                    if (const nb::SettlingFit f = nb::fitSettlingAt(t, d, w, o, k, lo, hi); f.sse < each.sse)
+                        each = f;
+            QVERIFY(std::isfinite(each.sse));
+            QVERIFY2(grid.sse <= each.sse * (1.0 + 1e-9) + 1e-12,
+                     qPrintable(QStringLiteral("case %1: sse %2 at t0 %3, tau %4; point by point %5 at t0 %6, tau %7")
+                                    .arg(i).arg(grid.sse, 0, 'g', 12).arg(grid.t0_s, 0, 'f', 4).arg(grid.tau_s, 0, 'f', 4)
+                                    .arg(each.sse, 0, 'g', 12).arg(each.t0_s, 0, 'f', 4).arg(each.tau_s, 0, 'f', 4)));
+            QCOMPARE(grid.t0_s, each.t0_s);
+            QCOMPARE(grid.tau_s, each.tau_s);
+        }
+        // An onset before every sample in the window, or after all of them: one side is empty,
+        // nothing is determined, as point by point.
+        const std::vector<double> t{1.0, 1.1, 1.2, 1.3}, d{0.0, 1.0, 2.0, 3.0}, w(4, 1.0);
+        QVERIFY(!std::isfinite(nb::fitSettling(t, d, w, 2.0, 2.5, 0.1, 0.01, 1.0, 1.1, 0.0, 3.0).sse));
+        QVERIFY(!std::isfinite(nb::fitSettling(t, d, w, 0.0, 0.9, 0.1, 0.01, 1.0, 1.1, 0.0, 3.0).sse));
+    }
+
     void nothingToFit()
     {
         const std::vector<double> none;
