@@ -77,6 +77,15 @@ int cmdLabels(const QStringList& args, Io io)
             return Usage;
         }
     }
+    // A video asked for by name that is not there is a mistake in the command, not a run
+    // without a video: labels from force and position alone would pass for what was asked.
+    if (parser.isSet(video) && !QFileInfo(parser.value(video)).isFile()) {
+        io.err << "needlebench labels: "
+               << (QFileInfo(parser.value(video)).isDir() ? nb::TrCli::tr("%1: a folder, not a video").arg(parser.value(video))
+                                                          : nb::TrCli::tr("%1: no such video").arg(parser.value(video)))
+               << '\n';
+        return Failure;
+    }
     std::optional<TimelineMapping> given;
     if (parser.isSet(videoOffset) || parser.isSet(videoDrift)) {
         bool okOffset = true, okDrift = true;

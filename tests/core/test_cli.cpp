@@ -110,6 +110,14 @@ private slots:
         QCOMPARE(TestCli::run({"labels", "suggest", run, "--overwrite"}).code, 0);
         QVERIFY(!bytes(labels).contains("made by hand"));
 
+        // A video asked for that is not there fails the command, naming it, and writes nothing.
+        const QByteArray suggested = bytes(labels);
+        for (const QString& missing : {dir.filePath(QStringLiteral("no_such_video.mp4")), dir.path()}) {
+            const nbtest::CliResult r = TestCli::run({"labels", "suggest", run, "--overwrite", "--video", missing});
+            QVERIFY2(r.code == 1 && r.err.contains(missing), qPrintable(QStringLiteral("exit %1: ").arg(r.code) + r.err));
+            QCOMPARE(bytes(labels), suggested);
+        }
+
         // Outputs checked before the run is recorded: nothing recorded when one cannot be made.
         const QString fresh = dir.filePath(QStringLiteral("fresh.csv"));
         for (const QStringList& bad : {QStringList{"--video", dir.filePath(QStringLiteral("fresh.mov"))},
