@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+135"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+136"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -1658,12 +1658,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+27"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
@@ -1673,24 +1673,24 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-594"/>
+        <location line="-602"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+593"/>
+        <location line="+601"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-380"/>
+        <location line="-388"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2153,7 +2153,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+42"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -2209,12 +2209,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+858"/>
+        <location line="+886"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-855"/>
+        <location line="-883"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2240,12 +2240,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+463"/>
+        <location line="+464"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-463"/>
+        <location line="-464"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2353,16 +2353,32 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
+        <location line="+680"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-8"/>
+        <source>Automatic sync stopped</source>
+        <translation>Automatische Synchronisation abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Stop sync</source>
+        <translation>Synchronisieren abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stop the automatic sync (the offset in use stays)</source>
+        <translation>die automatische Synchronisation abbrechen (der verwendete Versatz bleibt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position</source>
         <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-669"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2372,7 +2388,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+151"/>
         <source>No run open: double-click one in the session list</source>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
@@ -2496,12 +2512,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+73"/>
         <source>correlating: frame %1 of %2…</source>
         <translation>korreliere: Bild %1 von %2…</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+42"/>
         <source>needle tracked in the video (at the offset found)</source>
         <translation>im Video verfolgte Nadel (beim gefundenen Versatz)</translation>
     </message>
@@ -2521,7 +2537,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-738"/>
+        <location line="-761"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2591,7 +2607,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+43"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -2651,12 +2667,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>correlating…</source>
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+116"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -3769,7 +3785,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Label-Datei</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+10"/>
+        <source>%1: a folder, not a video</source>
+        <translation>%1: ein Ordner, kein Video</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: no such video</source>
+        <translation>%1: dieses Video gibt es nicht</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>needlebench labels: --video-offset-s wants seconds and --video-drift a rate error below 0.1
 </source>
         <translation>needlebench labels: --video-offset-s erwartet Sekunden und --video-drift einen Gangfehler unter 0,1
@@ -3790,12 +3816,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-110"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+117"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2

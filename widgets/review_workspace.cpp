@@ -97,6 +97,14 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
             return;  // the run or the video changed while it ran
         const bool forOperator = wantPending_;
         wantPending_ = false;
+        updateAutoSyncButton();
+        if (jobCancel_ && jobCancel_->load()) {
+            // Stopped by the operator: what it tracked so far is not a trace, nor a sync.
+            tracked_.reset();
+            updateTrace();
+            emit trackingFinished();
+            return;
+        }
         try {
             video::VideoSync vs = syncWatcher_.result();
             if (forOperator)
@@ -321,8 +329,13 @@ void ReviewWorkspace::buildUi()
     syncRow = syncFind;
     syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] { markEventInRecording(); });
     syncButton(tr("Mark event in video"), tr("the event is in the frame shown"), [this] { markEventInVideo(); });
-    syncButton(tr("Auto sync"), tr("track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position"),
-               [this] { startAutoSync(); });
+    autoSyncButton_ = syncButton(tr("Auto sync"), QString(), [this] {
+        if (wantPending_)
+            stopAutoSync();
+        else
+            startAutoSync();
+    });
+    autoSyncButton_->setObjectName(QStringLiteral("autoSync"));
     syncLabel_ = new QLabel(this);
     syncLabel_->setObjectName(QStringLiteral("syncResult"));
     // A long result wraps in the space there is instead of widening the window.
@@ -969,11 +982,36 @@ void ReviewWorkspace::startAutoSync()
         QTimer::singleShot(0, this, [this] { emit syncFinished(); });
         return;
     }
+    operatorStopped_ = false;
     syncLabel_->setText(tr("correlating…"));
     if (running && jobRoi_ == roi)
         wantPending_ = true;  // the background job is doing just this
     else
         startSyncJob(true);
+    updateAutoSyncButton();
+}
+
+void ReviewWorkspace::stopAutoSync()
+{
+    if (!wantPending_)
+        return;
+    // The tracking stops as well, and is not started again in the background for this run and
+    // video: on a long video the operator stops it to have the machine back.
+    wantPending_ = false;
+    operatorStopped_ = true;
+    if (jobCancel_)
+        jobCancel_->store(true);
+    syncLabel_->setText(tr("Automatic sync stopped"));
+    updateAutoSyncButton();
+}
+
+void ReviewWorkspace::updateAutoSyncButton()
+{
+    if (!autoSyncButton_)
+        return;
+    autoSyncButton_->setText(wantPending_ ? tr("Stop sync") : tr("Auto sync"));
+    autoSyncButton_->setToolTip(wantPending_ ? tr("stop the automatic sync (the offset in use stays)")
+                                             : tr("track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position"));
 }
 
 void ReviewWorkspace::startSyncJob(bool forOperator)
@@ -1006,7 +1044,7 @@ void ReviewWorkspace::startSyncJob(bool forOperator)
 
 void ReviewWorkspace::trackInBackground()
 {
-    if (!index_ || run_.size() == 0 || tracked_ || (syncWatcher_.isRunning() && watchedGeneration_ == jobGeneration_))
+    if (!index_ || run_.size() == 0 || tracked_ || operatorStopped_ || (syncWatcher_.isRunning() && watchedGeneration_ == jobGeneration_))
         return;
     startSyncJob(false);
 }
@@ -1021,7 +1059,9 @@ void ReviewWorkspace::resetTrack()
     if (wantPending_) {
         wantPending_ = false;
         syncLabel_->clear();
+        updateAutoSyncButton();
     }
+    operatorStopped_ = false;
     tracked_.reset();
     updateTrace();
 }

@@ -100,6 +100,8 @@ public:
     LabelSetDialog* editLabelSet();
     // Runs automatic synchronisation in the background; the result waits for accept/reject.
     void startAutoSync();
+    // While Auto sync runs, its button stops it (and the tracking under it).
+    void stopAutoSync();
     std::optional<SyncResult> pendingSync() const { return pendingSync_; }
     // Takes the pending offset (and drift); refused below kSyncAcceptConfidence unless the
     // operator ticked the override.
@@ -197,6 +199,9 @@ private:
     QCustomPlot* syncPlot_ = nullptr;
     QCPItemStraightLine* syncMarker_ = nullptr;
     QPushButton* acceptButton_ = nullptr;
+    QPushButton* autoSyncButton_ = nullptr;
+    bool operatorStopped_ = false;  // the operator stopped Auto sync: no tracking in the background
+    void updateAutoSyncButton();
     QCheckBox* overrideBox_ = nullptr;
     QPushButton* rejectButton_ = nullptr;
     QLabel* status_ = nullptr;

@@ -609,6 +609,45 @@ private slots:
                  qPrintable(seen.join(QStringLiteral(" | "))));
     }
 
+    // The operator can stop Auto sync (a long video keeps the machine busy for minutes): its
+    // button stops it, nothing is pending, the tracking is not started again behind the
+    // operator's back, and Auto sync can be asked again.
+    void autoSyncCanBeStopped()
+    {
+        QTemporaryDir own;
+        const QString run = own.filePath("stopped.csv"), video = own.filePath("stopped.avi");
+        QVERIFY(QFile::copy(run_, run));
+        QVERIFY(QFile::copy(video_, video));
+        nb::ReviewWorkspace ws;
+        ws.show();
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        QSignalSpy finished(&ws, &nb::ReviewWorkspace::syncFinished);
+        QVERIFY(ws.openRun(run));
+        QVERIFY(opened.wait(60000));
+        auto* button = ws.findChild<QPushButton*>(QStringLiteral("autoSync"));
+        auto* label = ws.findChild<QLabel*>(QStringLiteral("syncResult"));
+        QVERIFY(button && label);
+        QCOMPARE(button->text(), QStringLiteral("Auto sync"));
+        button->click();
+        QTRY_VERIFY_WITH_TIMEOUT(label->text().startsWith(QStringLiteral("correlating: frame")), 60000);
+        QCOMPARE(button->text(), QStringLiteral("Stop sync"));
+        button->click();
+        QCOMPARE(label->text(), QStringLiteral("Automatic sync stopped"));
+        QCOMPARE(button->text(), QStringLiteral("Auto sync"));
+        QTRY_VERIFY_WITH_TIMEOUT(!ws.isTracking(), 20000);
+        QTest::qWait(500);
+        QVERIFY(!ws.isTracking());
+        QVERIFY(finished.isEmpty());
+        QVERIFY(!ws.pendingSync());
+        QCOMPARE(label->text(), QStringLiteral("Automatic sync stopped"));
+        QVERIFY(ws.trackedGraph()->data()->isEmpty());
+        button->click();
+        QVERIFY(ws.isTracking());
+        QVERIFY(finished.wait(120000));
+        QVERIFY(ws.pendingSync());
+        QCOMPARE(button->text(), QStringLiteral("Auto sync"));
+    }
+
     void badFilesAreReported()
     {
         nb::ReviewWorkspace ws;
