@@ -282,7 +282,7 @@ void MainWindow::showPlan()
         // Any run or motion, the plan's or one made after leaving it: skip, redo, leave and
         // return would change the plan (and lock the panel to its settings) under a run.
         v.recording = planWalker_->attemptOpen() || planPanelBusy_;
-        v.title = plan.templateName.isEmpty() ? plan.name : tr("%1 (template %2)").arg(plan.name, plan.templateName);
+        v.title = plan.templateName.isEmpty() ? plan.name : tr("%1 (template %2)").arg(planTitleDisplayName(plan.name), plan.templateName);
         v.progress = planWalker_->progressText();
         if (const PlannedRun* r = planWalker_->nextRun()) {
             v.next = tr("Run %1: %2").arg(r->number).arg(describeRun(plan, *r));

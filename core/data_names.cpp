@@ -42,7 +42,39 @@ QString trackDisplayName(const QString& track)
         return nb::TrCore::tr("insertion");
     if (track == QLatin1String("withdrawal"))
         return nb::TrCore::tr("withdrawal");
+    if (track == QLatin1String("events"))
+        return nb::TrCore::tr("events");
     return track;
+}
+
+QString protocolDisplayName(const QString& protocol)
+{
+    if (protocol == QLatin1String("stiffness"))
+        return nb::TrCore::tr("stiffness");
+    if (protocol == QLatin1String("internal"))
+        return nb::TrCore::tr("internal stiffness");
+    if (protocol == QLatin1String("friction"))
+        return nb::TrCore::tr("friction");
+    if (protocol == QLatin1String("prostate"))
+        return nb::TrCore::tr("prostate");
+    return protocol;
+}
+
+QString planTitleDisplayName(const QString& title)
+{
+    if (title == QLatin1String("overall stiffness"))
+        return nb::TrCore::tr("overall stiffness");
+    if (title == QLatin1String("internal stiffness"))
+        return nb::TrCore::tr("internal stiffness");
+    if (title == QLatin1String("friction"))
+        return nb::TrCore::tr("friction");
+    if (title == QLatin1String("stiffness under imaging"))
+        return nb::TrCore::tr("stiffness under imaging");
+    if (title == QLatin1String("friction under imaging"))
+        return nb::TrCore::tr("friction under imaging");
+    if (title == QLatin1String("prostate"))
+        return nb::TrCore::tr("prostate");
+    return title;
 }
 
 QString staticSourceDisplayName(const QString& source)

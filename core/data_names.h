@@ -21,6 +21,12 @@ QString calibrationDisplayName(const QString& calibration);
 // A label track of the default label sets ("insertion" → "Einstich"); tracks the operator
 // named are shown as named.
 QString trackDisplayName(const QString& track);
+// A run's protocol as plans and run files store it ("stiffness", "internal", "friction",
+// "prostate"); others as stored.
+QString protocolDisplayName(const QString& protocol);
+// A plan template's title ("friction under imaging"), which a plan made from it keeps as its
+// name; a plan the operator named is shown as named.
+QString planTitleDisplayName(const QString& title);
 // Where a friction fit took its static friction D from ("phase a", "velocity band", "none",
 // as the fit's JSON and the exported tables store it).
 QString staticSourceDisplayName(const QString& source);

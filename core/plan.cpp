@@ -438,7 +438,7 @@ void refreshInstructions(Plan& plan)
 QString describeRun(const Plan& plan, const PlannedRun& run)
 {
     const QJsonObject s = plan.settingsFor(run);
-    QStringList parts{s.value(QStringLiteral("protocol")).toString()};
+    QStringList parts{protocolDisplayName(s.value(QStringLiteral("protocol")).toString())};
     std::vector<QString> names;
     for (const PlanFactor& f : plan.factors)
         names.push_back(f.name);

@@ -1882,7 +1882,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::NewPlanDialog</name>
     <message>
-        <location filename="../widgets/plan_panel.cpp" line="+186"/>
+        <location filename="../widgets/plan_panel.cpp" line="+187"/>
         <source>New plan from template</source>
         <translation>Neuer Plan aus Vorlage</translation>
     </message>
@@ -6149,7 +6149,50 @@ Befehle:
         <translation>Rückzug</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>events</source>
+        <translation>Ereignisse</translation>
+    </message>
+    <message>
         <location line="+7"/>
+        <source>stiffness</source>
+        <translation>Steifigkeit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+13"/>
+        <source>internal stiffness</source>
+        <translation>innere Steifigkeit</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+13"/>
+        <source>friction</source>
+        <translation>Reibung</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+17"/>
+        <source>prostate</source>
+        <translation>Prostata</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>overall stiffness</source>
+        <translation>Gesamtsteifigkeit</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>stiffness under imaging</source>
+        <translation>Steifigkeit unter Bildgebung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>friction under imaging</source>
+        <translation>Reibung unter Bildgebung</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>phase a</source>
         <translation>Phase a</translation>
     </message>

@@ -1879,7 +1879,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::NewPlanDialog</name>
     <message>
-        <location filename="../widgets/plan_panel.cpp" line="+186"/>
+        <location filename="../widgets/plan_panel.cpp" line="+187"/>
         <source>New plan from template</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6059,7 +6059,50 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>events</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+7"/>
+        <source>stiffness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+13"/>
+        <source>internal stiffness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+13"/>
+        <source>friction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+17"/>
+        <source>prostate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>overall stiffness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>stiffness under imaging</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>friction under imaging</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>phase a</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1,4 +1,5 @@
 #include "plan_panel.h"
+#include "core/data_names.h"
 #include "core/plan.h"
 
 #include <QCheckBox>
@@ -188,7 +189,7 @@ NewPlanDialog::NewPlanDialog(QWidget* parent) : QDialog(parent)
     template_ = new QComboBox(this);
     template_->setObjectName(QStringLiteral("planTemplate"));
     for (const PlanTemplate& t : planTemplates())
-        template_->addItem(t.title, t.name);
+        template_->addItem(planTitleDisplayName(t.title), t.name);
     description_ = new QLabel(this);
     description_->setWordWrap(true);
     order_ = new QComboBox(this);

@@ -120,12 +120,24 @@ private slots:
 
     void badInput()
     {
-        // A video that is not there: named, and the phases still come from the force.
+        // A video asked for that is not there: a mistake in the command, named, nothing written.
         const QString missing = dir_.filePath(QStringLiteral("missing.avi"));
-        const nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind_, "--video", missing, "--video-offset-s", "0",
-                                                    "--out", dir_.filePath(QStringLiteral("m.csv")), "--json"});
-        QCOMPARE(r.code, 0);
+        nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind_, "--video", missing, "--video-offset-s", "0",
+                                              "--out", dir_.filePath(QStringLiteral("m.csv")), "--json"});
+        QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains(missing), qPrintable(r.err));
+        QVERIFY(!QFile::exists(dir_.filePath(QStringLiteral("m.csv"))));
+        // One that is there but cannot be read: named, and the phases still come from the force.
+        const QString damaged = dir_.filePath(QStringLiteral("damaged.avi"));
+        {
+            QFile f(damaged);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(5000, 'x'));
+        }
+        r = nbtest::runCli({"labels", "suggest", blind_, "--video", damaged, "--video-offset-s", "0", "--out", dir_.filePath(QStringLiteral("m.csv")),
+                            "--json"});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.err.contains(damaged), qPrintable(r.err));
         QCOMPARE(r.json()["video"].toObject()["used"].toBool(), false);
         QVERIFY(!r.json()["labels"].toArray().isEmpty());
         // Offsets that are not numbers are usage errors.
