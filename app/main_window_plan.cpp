@@ -289,6 +289,13 @@ void MainWindow::showPlan()
             v.settings = settingsLine(planWalker_->nextSettings(), cli::runPlanForSettings(planWalker_->nextSettings()),
                                       onSimulatedRig(currentSpec()));
             v.instruction = r->instruction;
+            // A template's plan says its instructions in the operator's language, whichever
+            // language wrote plan.json; a plan written by hand keeps its own words.
+            if (!plan.templateName.isEmpty() && !r->instruction.isEmpty()) {
+                const std::size_t at = std::size_t(r - plan.runs.data());
+                if (const QString now = operatorInstruction(plan, at ? &plan.runs[at - 1] : nullptr, *r); !now.isEmpty())
+                    v.instruction = now;
+            }
             v.nextRow = planWalker_->nextIndex();
         }
         v.instructionDone = planWalker_->checked(PlanWalker::Check::Instruction);

@@ -5,6 +5,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QLocale>
 #include <QRegularExpression>
 #include <QSaveFile>
 #include <algorithm>
@@ -103,15 +104,21 @@ void shuffle(std::vector<T>& v, std::mt19937_64& rng)
     }
 }
 
+// A level as the operator reads it: numbers in the operator's notation ("0,5" in German).
+QString shownLevel(const QJsonValue& value)
+{
+    return value.isDouble() ? QLocale().toString(value.toDouble(), 'g', 12) : levelText(value);
+}
+
 QString settingText(const QString& key, const QJsonValue& value, bool sine)
 {
-    const QString v = levelText(value);
+    const QString v = shownLevel(value);
     if (key == QLatin1String("site"))
         return sine ? nb::TrCore::tr("Move the slab to site %1.").arg(v) : nb::TrCore::tr("Move the specimen to site %1.").arg(v);
     if (key == QLatin1String("tip"))
         return nb::TrCore::tr("Change to the %1 tip.").arg(tipDisplayName(v));
     if (key == QLatin1String("tissue"))
-        return nb::TrCore::tr("Mount %1.").arg(v);
+        return nb::TrCore::tr("Mount %1.").arg(tissueDisplayName(v));
     if (key == QLatin1String("thickness_mm"))
         return nb::TrCore::tr("Mount the %1 mm slab.").arg(v);
     return nb::TrCore::tr("Set %1 to %2.").arg(key, v);
@@ -448,7 +455,7 @@ QString describeRun(const Plan& plan, const PlannedRun& run)
     for (const QString& key : names) {
         if (!run.factors.contains(key))
             continue;
-        const QString v = levelText(run.factors.value(key));
+        const QString v = shownLevel(run.factors.value(key));
         if (key == QLatin1String("frequency_hz"))
             parts << nb::TrCore::tr("%1 Hz").arg(v);
         else if (key == QLatin1String("velocity_mm_s"))
@@ -462,13 +469,15 @@ QString describeRun(const Plan& plan, const PlannedRun& run)
         else if (key == QLatin1String("repeat"))
             parts << nb::TrCore::tr("repeat %1").arg(v);
         else if (key == QLatin1String("tip"))
-            parts << nb::TrCore::tr("%1 tip").arg(v);
+            parts << nb::TrCore::tr("%1 tip").arg(tipDisplayName(v));
         else if (key == QLatin1String("cycles"))
             parts << nb::TrCore::tr("%1 cycles").arg(v);
         else if (key == QLatin1String("thickness_mm"))
             parts << nb::TrCore::tr("%1 mm slab").arg(v);
-        else if (key == QLatin1String("tissue") || key == QLatin1String("motion"))
-            parts << v;
+        else if (key == QLatin1String("tissue"))
+            parts << tissueDisplayName(v);
+        else if (key == QLatin1String("motion"))
+            parts << motionDisplayName(v);
         else
             parts << key + QLatin1Char(' ') + v;
     }

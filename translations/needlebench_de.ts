@@ -1864,7 +1864,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Lauf %1: %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+17"/>
         <source>%1. %2 – %3</source>
         <translation>%1. %2 – %3</translation>
     </message>
@@ -1882,7 +1882,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::NewPlanDialog</name>
     <message>
-        <location filename="../widgets/plan_panel.cpp" line="+187"/>
+        <location filename="../widgets/plan_panel.cpp" line="+188"/>
         <source>New plan from template</source>
         <translation>Neuer Plan aus Vorlage</translation>
     </message>
@@ -1925,7 +1925,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::PlanPanel</name>
     <message>
-        <location line="-183"/>
+        <location line="-184"/>
         <source>No experiment plan in this session. Session ▸ New plan from template… makes one; its runs are then set here one after the other.</source>
         <translation>Kein Versuchsplan in dieser Sitzung. Sitzung ▸ Neuer Plan aus Vorlage… legt einen an; seine Läufe werden dann hier nacheinander eingestellt.</translation>
     </message>
@@ -1935,7 +1935,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Neuer Plan aus Vorlage…</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>Bias done</source>
         <translation>Tariert</translation>
     </message>
@@ -4916,7 +4916,7 @@ Befehle:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+974"/>
+        <location filename="../core/plan.cpp" line="+983"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -5602,7 +5602,7 @@ Befehle:
         <translation>keine Läufe zum Fitten</translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-890"/>
+        <location filename="../core/plan.cpp" line="-898"/>
         <source>neither motion nor protocol is set</source>
         <translation>weder Bewegung noch Protokoll ist gesetzt</translation>
     </message>
@@ -5612,7 +5612,7 @@ Befehle:
         <translation>Bewegung &apos;%1&apos; passt nicht zu Protokoll &apos;%2&apos; (Sinusbewegung ist das Reibungsprotokoll)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+30"/>
         <source>Move the slab to site %1.</source>
         <translation>Die Gewebescheibe an Stelle %1 verschieben.</translation>
     </message>
@@ -5658,12 +5658,12 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+515"/>
+        <location line="+517"/>
         <source>expected true or false</source>
         <translation>true oder false erwartet</translation>
     </message>
     <message>
-        <location line="-511"/>
+        <location line="-513"/>
         <source>expected &quot;puncture&quot; or &quot;puncture:N&quot; (N &gt;= 1)</source>
         <translation>&quot;puncture&quot; oder &quot;puncture:N&quot; (N &gt;= 1) erwartet</translation>
     </message>
@@ -5680,12 +5680,12 @@ Befehle:
     </message>
     <message>
         <location line="+0"/>
-        <location line="+535"/>
+        <location line="+537"/>
         <source>expected a positive integer</source>
         <translation>positive ganze Zahl erwartet</translation>
     </message>
     <message>
-        <location line="-530"/>
+        <location line="-532"/>
         <source>expected a positive number, got %1</source>
         <translation>positive Zahl erwartet, erhalten: %1</translation>
     </message>
@@ -5726,12 +5726,12 @@ Befehle:
     </message>
     <message>
         <location line="+32"/>
-        <location line="+405"/>
+        <location line="+407"/>
         <source>a factor needs at least one level</source>
         <translation>ein Faktor braucht mindestens eine Stufe</translation>
     </message>
     <message>
-        <location line="-381"/>
+        <location line="-383"/>
         <source>blocked order needs a factor named site</source>
         <translation>die Reihenfolge in Blöcken braucht einen Faktor namens site</translation>
     </message>
@@ -5786,7 +5786,7 @@ Befehle:
         <translation>%1-mm-Scheibe</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+66"/>
         <source>redone</source>
         <translation>wiederholt</translation>
     </message>

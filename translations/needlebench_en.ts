@@ -1861,7 +1861,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+17"/>
         <source>%1. %2 – %3</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1879,7 +1879,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::NewPlanDialog</name>
     <message>
-        <location filename="../widgets/plan_panel.cpp" line="+187"/>
+        <location filename="../widgets/plan_panel.cpp" line="+188"/>
         <source>New plan from template</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1922,7 +1922,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::PlanPanel</name>
     <message>
-        <location line="-183"/>
+        <location line="-184"/>
         <source>No experiment plan in this session. Session ▸ New plan from template… makes one; its runs are then set here one after the other.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1932,7 +1932,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>Bias done</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4826,7 +4826,7 @@ Commands:
         <location filename="../core/export/session_hdf5.cpp" line="+303"/>
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
-        <location filename="../core/plan.cpp" line="+974"/>
+        <location filename="../core/plan.cpp" line="+983"/>
         <location filename="../core/run_file.cpp" line="+301"/>
         <location line="+40"/>
         <location line="+39"/>
@@ -5512,7 +5512,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/plan.cpp" line="-890"/>
+        <location filename="../core/plan.cpp" line="-898"/>
         <source>neither motion nor protocol is set</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5522,7 +5522,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+30"/>
         <source>Move the slab to site %1.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5568,12 +5568,12 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+515"/>
+        <location line="+517"/>
         <source>expected true or false</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-511"/>
+        <location line="-513"/>
         <source>expected &quot;puncture&quot; or &quot;puncture:N&quot; (N &gt;= 1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5590,12 +5590,12 @@ Commands:
     </message>
     <message>
         <location line="+0"/>
-        <location line="+535"/>
+        <location line="+537"/>
         <source>expected a positive integer</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-530"/>
+        <location line="-532"/>
         <source>expected a positive number, got %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5636,12 +5636,12 @@ Commands:
     </message>
     <message>
         <location line="+32"/>
-        <location line="+405"/>
+        <location line="+407"/>
         <source>a factor needs at least one level</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-381"/>
+        <location line="-383"/>
         <source>blocked order needs a factor named site</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5696,7 +5696,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+66"/>
         <source>redone</source>
         <translation type="unfinished"></translation>
     </message>

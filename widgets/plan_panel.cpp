@@ -39,6 +39,7 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent)
     auto* left = new QVBoxLayout;
     left->setSpacing(2);
     title_ = new QLabel(walker_);
+    title_->setObjectName(QStringLiteral("planTitle"));
     progress_ = new QLabel(walker_);
     progress_->setObjectName(QStringLiteral("planProgress"));
     progress_->setStyleSheet(QStringLiteral("font-weight: bold;"));

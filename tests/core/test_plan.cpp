@@ -176,7 +176,7 @@ private slots:
         t.defaults.remove(QStringLiteral("tip"));
         const Plan p = generatePlan(t, PlanOrder::Listed, 1);
         QCOMPARE(p.runs.size(), std::size_t(30));
-        QCOMPARE(p.runs[0].instruction, QStringLiteral("Mount liver7. Mount the 30 mm slab. Fit the diamond tip. Move the slab to site 1."));
+        QCOMPARE(p.runs[0].instruction, QStringLiteral("Mount Liver 7. Mount the 30 mm slab. Fit the diamond tip. Move the slab to site 1."));
         QCOMPARE(p.runs[1].instruction, QStringLiteral("Change to the beveled tip."));
         // 0.5 Hz, diamond: the tip changes back; the frequency needs no hands.
         QCOMPARE(p.runs[2].instruction, QStringLiteral("Change to the diamond tip."));
@@ -268,7 +268,7 @@ private slots:
         QCOMPARE(p.runs.size(), std::size_t(2));
         QCOMPARE(p.runs[1].number, 2);
         QCOMPARE(p.settingsFor(p.runs[0]).value(QStringLiteral("motion")).toString(), QStringLiteral("linear"));
-        QVERIFY(p.runs[0].instruction.contains(QStringLiteral("Mount liver2.")));
+        QVERIFY(p.runs[0].instruction.contains(QStringLiteral("Mount Liver 2.")));
         QCOMPARE(p.runs[1].instruction, QStringLiteral("Set rotation_deg to 90."));
     }
 

@@ -106,7 +106,7 @@ private slots:
             QCOMPARE(m.captured(1).toInt(), n);
         }
         QCOMPARE(n, 15);
-        QVERIFY(r.out.contains(QStringLiteral("operator: Mount liver7.")));
+        QVERIFY(r.out.contains(QStringLiteral("operator: Mount Liver 7.")));
         QVERIFY(r.out.contains(QStringLiteral("operator: Move the slab to site 5.")));
         const QJsonObject summary = r.json();
         QCOMPARE(summary.value(QStringLiteral("done")).toInt(), 15);

@@ -9,6 +9,8 @@
 #include "translation.h"
 
 #include "core/data_names.h"
+#include "core/plan.h"
+#include "core/plan_session.h"
 #include "core/run_file.h"
 #include "devices/acquisition_engine.h"
 #include "devices/sim/rig_config.h"
@@ -22,6 +24,7 @@
 #include "widgets/simulated_rig_dialog.h"
 
 #include <QAbstractButton>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -431,6 +434,28 @@ private slots:
             QCOMPARE(run.meta(QStringLiteral("position_source")).value_or(QString()),
                      QStringLiteral("stage read-back, interpolated to the sample clock"));
             QCOMPARE(run.meta(QStringLiteral("end_reason")).value_or(QString()), QStringLiteral("completed"));
+        }
+        {
+            // A template's plan that an English window wrote is said in German in the Plan
+            // dock: its title, its runs (numbers in German notation) and the instruction.
+            const QString dir = tmp.filePath(QStringLiteral("s"));
+            nb::Plan plan = nb::generatePlan(*nb::findPlanTemplate(QStringLiteral("friction-imaging")), nb::PlanOrder::Listed, 1);
+            plan.runs[0].instruction = QStringLiteral("Mount liver7. Mount the 30 mm slab. Fit the diamond tip. Move the slab to site 1.");
+            nb::writePlanFile(QDir(dir).filePath(nb::planFileName()), plan);
+            const QLocale before;
+            QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+            auto locale = qScopeGuard([before] { QLocale::setDefault(before); });
+            nb::MainWindow w(options(dir, false));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            auto* title = w.findChild<QLabel*>(QStringLiteral("planTitle"));
+            auto* next = w.findChild<QLabel*>(QStringLiteral("planNext"));
+            auto* instruction = w.findChild<QCheckBox*>(QStringLiteral("planCheckInstruction"));
+            QVERIFY(title && next && instruction);
+            QTRY_VERIFY2(title->text().startsWith(QStringLiteral("Reibung unter Bildgebung")), qPrintable(title->text()));
+            QVERIFY2(next->text().contains(QStringLiteral("Reibung Stelle 1 0,2 Hz")), qPrintable(next->text()));
+            QVERIFY2(instruction->text().contains(QStringLiteral("Leber 7 einspannen. Die 30-mm-Gewebescheibe einspannen.")),
+                     qPrintable(instruction->text()));
         }
         {
             // Data names (tips, tissue presets) are shown in German and stored as they are.
