@@ -47,6 +47,45 @@ QString trackDisplayName(const QString& track)
     return track;
 }
 
+QString tableValueDisplayName(const QString& value)
+{
+    static const QLatin1String peakSpeeds("peak speeds, ");
+    if (value.startsWith(peakSpeeds))
+        return nb::TrCore::tr("peak speeds, %1").arg(tissueDisplayName(value.mid(peakSpeeds.size())));
+    if (value == QLatin1String("pooled"))
+        return nb::TrCore::tr("pooled");
+    if (value == QLatin1String("mean of runs"))
+        return nb::TrCore::tr("mean of runs");
+    if (value == QLatin1String("not fitted"))
+        return nb::TrCore::tr("not fitted");
+    if (value == QLatin1String("yes"))
+        return nb::TrCore::tr("yes");
+    if (value == QLatin1String("mean"))
+        return nb::TrCore::tr("mean");
+    if (value == QLatin1String("std"))
+        return nb::TrCore::tr("std");
+    if (value == QLatin1String("overall"))
+        return nb::TrCore::tr("overall");
+    if (value == QLatin1String("line"))
+        return nb::TrCore::tr("line");
+    if (value == QLatin1String("peak speeds"))
+        return nb::TrCore::tr("peak speeds");
+    if (value == QLatin1String("unknown"))
+        return nb::TrCore::tr("unknown");
+    if (value == QLatin1String("all"))
+        return nb::TrCore::tr("all");
+    return value;
+}
+
+QString tableCellDisplayName(const QString& key, const QString& value)
+{
+    if (key == QLatin1String("tip"))
+        return tipDisplayName(value);
+    if (key == QLatin1String("static_from"))
+        return staticSourceDisplayName(value);
+    return tableValueDisplayName(value);
+}
+
 QString protocolDisplayName(const QString& protocol)
 {
     if (protocol == QLatin1String("stiffness"))

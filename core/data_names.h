@@ -30,6 +30,13 @@ QString planTitleDisplayName(const QString& title);
 // Where a friction fit took its static friction D from ("phase a", "velocity band", "none",
 // as the fit's JSON and the exported tables store it).
 QString staticSourceDisplayName(const QString& source);
+// A word the fit tables hold as data ("pooled", "mean of runs", "not fitted", "yes", "mean",
+// "std", "overall", "line", "peak speeds[, TISSUE]", "unknown"): the tables' CSV keeps it in
+// English for scripts, the window and the LaTeX report say it in the operator's language.
+QString tableValueDisplayName(const QString& value);
+// A text cell of a fit table's column `key` as shown: tips and where D came from by their
+// display names, the tables' own words by tableValueDisplayName.
+QString tableCellDisplayName(const QString& key, const QString& value);
 // What the acquisition engine stores as the calibration before one is chosen.
 inline constexpr char kNominalCalibration[] = "nominal (device)";
 

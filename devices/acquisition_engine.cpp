@@ -48,6 +48,7 @@ InterlockState EngineStatus::interlocks() const
     s.sessionOpen = true;  // the engine records wherever it is told; the window knows better
     s.loaded = loaded;
     s.inTissue = contactDepth_mm && position_mm > *contactDepth_mm;
+    s.force_N = force_N;
     return s;
 }
 

@@ -2,6 +2,9 @@
 #include "core/tr.h"
 
 #include <QCoreApplication>
+#include <QLocale>
+
+#include <cmath>
 
 namespace nb {
 
@@ -97,6 +100,11 @@ Permission permission(Control control, const InterlockState& s)
             return deny(nb::TrDevices::tr("Set a maximum-force limit first."));
         if (s.recording)
             return deny(nb::TrDevices::tr("A run is already recording: end it first."));
+        // After the limit tripped the needle is still in the tissue, loaded: a run started there
+        // stops at once and leaves a run of a few samples.
+        if (std::abs(s.force_N) >= kStartForceFraction * s.forceLimit_N)
+            return deny(nb::TrDevices::tr("The force is %1 N, near the %2 N limit: withdraw the needle first.")
+                            .arg(QLocale().toString(s.force_N, 'f', 2), QLocale().toString(s.forceLimit_N, 'f', 2)));
         if (s.moving)
             return deny(nb::TrDevices::tr("The stage is moving."));
         if (!s.motionProblem.isEmpty())

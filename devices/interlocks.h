@@ -32,7 +32,11 @@ struct InterlockState {
     // noise band, nor past the depth where the last insertion met tissue.
     bool loaded = false;
     bool inTissue = false;
+    double force_N = 0.0;         // now: a run that starts near the force limit would stop at once
 };
+
+// A run does not start with the force at this fraction of the limit or above.
+inline constexpr double kStartForceFraction = 0.8;
 
 struct Permission {
     bool enabled = false;

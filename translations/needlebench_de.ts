@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+136"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+134"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -5001,18 +5001,17 @@ Befehle:
         <translation>Ausreißer</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+50"/>
+        <location filename="../core/data_names.cpp" line="+60"/>
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>
     <message>
-        <location line="-45"/>
+        <location line="+2"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location filename="../core/export/session_analysis.cpp" line="+17"/>
         <source>Pooled pre-puncture fits per tissue (Table 2 layout)</source>
         <translation>Gepoolte Fits vor dem Durchstich je Gewebe (Aufbau von Tabelle 2)</translation>
     </message>
@@ -5043,17 +5042,17 @@ Befehle:
         <translation>Läufe</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location filename="../core/data_names.cpp" line="-6"/>
         <source>pooled</source>
         <translation>gepoolt</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>mean of runs</source>
         <translation>Mittel der Läufe</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../core/export/session_analysis.cpp" line="-42"/>
         <source>Karnopp friction per unit length of needle in tissue, per run</source>
         <translation>Karnopp-Reibung pro Länge der Nadel im Gewebe, je Lauf</translation>
     </message>
@@ -5091,13 +5090,13 @@ Befehle:
         <translation>Statistik</translation>
     </message>
     <message>
-        <location line="-29"/>
-        <location filename="../core/export/session_analysis.cpp" line="+7"/>
+        <location filename="../core/data_names.cpp" line="+8"/>
+        <location filename="../core/export/factor_analysis.cpp" line="-29"/>
         <source>std</source>
         <translation>std</translation>
     </message>
     <message>
-        <location line="-172"/>
+        <location filename="../core/export/factor_analysis.cpp" line="-172"/>
         <source>%1: left out of the table: %2</source>
         <translation>%1: aus der Tabelle gelassen: %2</translation>
     </message>
@@ -5122,23 +5121,23 @@ Befehle:
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location filename="../core/export/session_analysis.cpp" line="+0"/>
+        <location filename="../core/data_names.cpp" line="-2"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+1"/>
         <source>mean</source>
         <translation>Mittelwert</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+28"/>
         <source>Karnopp friction per unit length, mean and standard deviation per frequency and overall (Table 5 layout)</source>
         <translation>Karnopp-Reibung je Längeneinheit, Mittelwert und Standardabweichung je Frequenz und gesamt (Aufbau von Tabelle 5)</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location filename="../core/data_names.cpp" line="+10"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+12"/>
+        <location line="-6"/>
         <source>overall</source>
         <translation>gesamt</translation>
     </message>
@@ -5148,17 +5147,17 @@ Befehle:
         <translation>Spitzengeschwindigkeiten</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-18"/>
         <source>peak speeds, %1</source>
         <translation>Spitzengeschwindigkeiten, %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+16"/>
         <source>line</source>
         <translation>Gerade</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location filename="../core/export/session_analysis.cpp" line="+34"/>
         <source>Summed model against the recorded insertions (Fig. 38)</source>
         <translation>Summiertes Modell gegen die aufgezeichneten Einstiche (Abb. 38)</translation>
     </message>
@@ -6104,7 +6103,7 @@ Befehle:
         <translation>|Dn| &lt; |Cn|: Haftreibung unter der Gleitreibung</translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="+12"/>
+        <location filename="../core/data_names.cpp" line="-58"/>
         <source>beveled</source>
         <translation>abgeschrägt</translation>
     </message>
@@ -6154,7 +6153,12 @@ Befehle:
         <translation>Ereignisse</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+30"/>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -6758,7 +6762,7 @@ Befehle:
         <translation>Positionsantwort ist keine Zahl: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../devices/interlocks.cpp" line="+19"/>
+        <location filename="../devices/interlocks.cpp" line="+22"/>
         <source>A run is recording: end it before %1.</source>
         <translation>Eine Messung läuft: Beenden Sie sie vor dem %1.</translation>
     </message>
@@ -6794,13 +6798,13 @@ Befehle:
     </message>
     <message>
         <location line="+7"/>
-        <location line="+68"/>
+        <location line="+73"/>
         <location line="+10"/>
         <source>Stop the motion first.</source>
         <translation>Zuerst die Bewegung stoppen.</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-81"/>
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation>Zuerst den Lauf beenden: das Ausschalten des Antriebs würde das Experiment unaufgezeichnet beenden.</translation>
     </message>
@@ -6827,13 +6831,13 @@ Befehle:
     <message>
         <location line="+4"/>
         <location line="+20"/>
-        <location line="+26"/>
+        <location line="+31"/>
         <location line="+12"/>
         <source>Enable the stage first.</source>
         <translation>Zuerst die Achse einschalten.</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-61"/>
         <source>Zeroing needs the stage at rest.</source>
         <translation>Nullen geht nur bei stehender Achse.</translation>
     </message>
@@ -6859,13 +6863,13 @@ Befehle:
     </message>
     <message>
         <location line="+4"/>
-        <location line="+28"/>
+        <location line="+33"/>
         <location line="+12"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation>Not-Halt: Schalten Sie die Achse wieder ein, um ihn zurückzusetzen.</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-43"/>
         <source>Open or create a session first: the run needs a folder.</source>
         <translation>Zuerst eine Sitzung öffnen oder anlegen: der Lauf braucht einen Ordner.</translation>
     </message>
@@ -6876,12 +6880,12 @@ Befehle:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+26"/>
+        <location line="+31"/>
         <source>Zero the stage position first.</source>
         <translation>Zuerst die Achsposition nullen.</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-29"/>
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
         <translation>Keine aktive Kalibrierung: Sensor kalibrieren oder eine Kalibrierung wählen.</translation>
     </message>
@@ -6901,7 +6905,12 @@ Befehle:
         <translation>Es wird bereits ein Lauf aufgezeichnet: zuerst beenden.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>The force is %1 N, near the %2 N limit: withdraw the needle first.</source>
+        <translation>Die Kraft beträgt %1 N, nahe der Grenze von %2 N: zuerst die Nadel zurückziehen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <location line="+40"/>
         <source>The stage is moving.</source>
         <translation>Die Achse bewegt sich.</translation>
@@ -7297,11 +7306,6 @@ F = %1 x + %2 x²
         <source>split %1</source>
         <translation>%1 teilen</translation>
     </message>
-    <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-393"/>
-        <source>not fitted</source>
-        <translation>nicht gefittet</translation>
-    </message>
 </context>
 <context>
     <name>nb::VideoView</name>
@@ -7373,7 +7377,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+198"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+199"/>
         <source>stage enabled; fault cleared</source>
         <translation>Achse eingeschaltet; Fehler zurückgesetzt</translation>
     </message>

@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+136"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+134"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4911,18 +4911,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+50"/>
+        <location filename="../core/data_names.cpp" line="+60"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-45"/>
+        <location line="+2"/>
         <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location filename="../core/export/session_analysis.cpp" line="+17"/>
         <source>Pooled pre-puncture fits per tissue (Table 2 layout)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4953,17 +4952,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location filename="../core/data_names.cpp" line="-6"/>
         <source>pooled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>mean of runs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../core/export/session_analysis.cpp" line="-42"/>
         <source>Karnopp friction per unit length of needle in tissue, per run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5001,13 +5000,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-29"/>
-        <location filename="../core/export/session_analysis.cpp" line="+7"/>
+        <location filename="../core/data_names.cpp" line="+8"/>
+        <location filename="../core/export/factor_analysis.cpp" line="-29"/>
         <source>std</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-172"/>
+        <location filename="../core/export/factor_analysis.cpp" line="-172"/>
         <source>%1: left out of the table: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5032,23 +5031,23 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location filename="../core/export/session_analysis.cpp" line="+0"/>
+        <location filename="../core/data_names.cpp" line="-2"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+1"/>
         <source>mean</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../core/export/factor_analysis.cpp" line="+28"/>
         <source>Karnopp friction per unit length, mean and standard deviation per frequency and overall (Table 5 layout)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location filename="../core/data_names.cpp" line="+10"/>
         <source>unknown</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+12"/>
+        <location line="-6"/>
         <source>overall</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5058,17 +5057,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-18"/>
         <source>peak speeds, %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+16"/>
         <source>line</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location filename="../core/export/session_analysis.cpp" line="+34"/>
         <source>Summed model against the recorded insertions (Fig. 38)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6014,7 +6013,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="+12"/>
+        <location filename="../core/data_names.cpp" line="-58"/>
         <source>beveled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6064,7 +6063,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+30"/>
+        <source>all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6668,7 +6672,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/interlocks.cpp" line="+19"/>
+        <location filename="../devices/interlocks.cpp" line="+22"/>
         <source>A run is recording: end it before %1.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6704,13 +6708,13 @@ Commands:
     </message>
     <message>
         <location line="+7"/>
-        <location line="+68"/>
+        <location line="+73"/>
         <location line="+10"/>
         <source>Stop the motion first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-81"/>
         <source>End the run first: disabling the drive would end the experiment unrecorded.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6737,13 +6741,13 @@ Commands:
     <message>
         <location line="+4"/>
         <location line="+20"/>
-        <location line="+26"/>
+        <location line="+31"/>
         <location line="+12"/>
         <source>Enable the stage first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-61"/>
         <source>Zeroing needs the stage at rest.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6769,13 +6773,13 @@ Commands:
     </message>
     <message>
         <location line="+4"/>
-        <location line="+28"/>
+        <location line="+33"/>
         <location line="+12"/>
         <source>Emergency stop: enable the stage again to reset it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-43"/>
         <source>Open or create a session first: the run needs a folder.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6786,12 +6790,12 @@ Commands:
     </message>
     <message>
         <location line="+2"/>
-        <location line="+26"/>
+        <location line="+31"/>
         <source>Zero the stage position first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-29"/>
         <source>No active calibration: calibrate the sensor or choose a calibration.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6811,7 +6815,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>The force is %1 N, near the %2 N limit: withdraw the needle first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <location line="+40"/>
         <source>The stage is moving.</source>
         <translation type="unfinished"></translation>
@@ -7205,11 +7214,6 @@ F = %1 x + %2 x²
         <source>split %1</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-393"/>
-        <source>not fitted</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>nb::VideoView</name>
@@ -7281,7 +7285,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+198"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+199"/>
         <source>stage enabled; fault cleared</source>
         <translation type="unfinished"></translation>
     </message>

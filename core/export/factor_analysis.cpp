@@ -280,7 +280,7 @@ FitTable frictionFrequencyTable(const std::vector<RunFactorValues>& runs, const 
                 members.push_back(&r);
         bool ok = false;
         const double f = l.toDouble(&ok);
-        addGroup(l.isEmpty() ? nb::TrCore::tr("unknown") : (ok ? QStringLiteral("%1Hz").arg(l) : l), ok ? f : std::nan(""), members);
+        addGroup(l.isEmpty() ? QStringLiteral("unknown") : (ok ? QStringLiteral("%1Hz").arg(l) : l), ok ? f : std::nan(""), members);
     }
     if (!friction.empty()) {
         std::vector<const RunFactorValues*> all;

@@ -1,6 +1,7 @@
 #include "fit_table.h"
 
 #include "csv_text.h"
+#include "core/data_names.h"
 
 #include <QStringList>
 
@@ -122,8 +123,13 @@ QByteArray fitTableLatex(const FitTable& t)
     s += QStringLiteral("\\midrule\n");
     for (const auto& row : t.rows) {
         QStringList cells;
-        for (std::size_t c = 0; c < t.columns.size(); ++c)
-            cells << (c < row.size() ? latexEscaped(cellText(row[c], t.columns[c].decimals, QStringLiteral("--"))) : QString());
+        for (std::size_t c = 0; c < t.columns.size(); ++c) {
+            // The report is read, not parsed: its words in the operator's language.
+            const auto* text = c < row.size() ? std::get_if<QString>(&row[c]) : nullptr;
+            cells << (c >= row.size() ? QString()
+                      : text          ? latexEscaped(tableCellDisplayName(t.columns[c].key, *text))
+                                      : latexEscaped(cellText(row[c], t.columns[c].decimals, QStringLiteral("--"))));
+        }
         s += cells.join(QStringLiteral(" & ")) + QStringLiteral(" \\\\\n");
     }
     s += QStringLiteral("\\bottomrule\n\\end{tabular}\n\\end{table}\n");

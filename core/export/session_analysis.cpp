@@ -291,12 +291,12 @@ FitTable stiffnessRunsTable(const SessionAnalysis& a)
     for (const StiffnessRunResult& s : a.stiffness) {
         const double nan = std::nan("");
         if (!s.ok()) {
-            t.rows.push_back({s.run, s.group, nan, nan, nan, nan, nan, nan, nb::TrCore::tr("not fitted")});
+            t.rows.push_back({s.run, s.group, nan, nan, nan, nan, nan, nan, QStringLiteral("not fitted")});
             continue;
         }
         t.rows.push_back({s.run, s.group, s.fit.quadratic.model.a1_N_per_mm, s.fit.quadratic.model.a2_N_per_mm2,
                           s.fit.quadratic.rms_N, s.fit.quadratic.r2, s.events.punctureDepth_mm(), s.events.puncture.force_N,
-                          s.outlier ? nb::TrCore::tr("yes") : QString()});
+                          s.outlier ? QStringLiteral("yes") : QString()});
     }
     return t;
 }
@@ -315,10 +315,10 @@ FitTable stiffnessPooledTable(const SessionAnalysis& a)
                  col("mean_puncture_force_N", nb::TrCore::tr("mean puncture force"), "N", 4),
                  col("runs", nb::TrCore::tr("runs"), "", 0)};
     for (const StiffnessGroupResult& g : a.stiffnessGroups) {
-        t.rows.push_back({g.group, g.tip, nb::TrCore::tr("pooled"), g.summary.pooled.quadratic.model.a1_N_per_mm,
+        t.rows.push_back({g.group, g.tip, QStringLiteral("pooled"), g.summary.pooled.quadratic.model.a1_N_per_mm,
                           g.summary.pooled.quadratic.model.a2_N_per_mm2, g.meanPunctureDepth_mm, g.meanPunctureForce_N,
                           double(g.runs.size())});
-        t.rows.push_back({g.group, g.tip, nb::TrCore::tr("mean of runs"), g.summary.meanOfRuns.a1_N_per_mm, g.summary.meanOfRuns.a2_N_per_mm2,
+        t.rows.push_back({g.group, g.tip, QStringLiteral("mean of runs"), g.summary.meanOfRuns.a1_N_per_mm, g.summary.meanOfRuns.a2_N_per_mm2,
                           g.meanPunctureDepth_mm, g.meanPunctureForce_N, double(g.runs.size())});
     }
     return t;
@@ -341,7 +341,7 @@ FitTable frictionRunsTable(const SessionAnalysis& a)
         if (!f.ok()) {
             for (int i = 0; i < 8; ++i)
                 row.emplace_back(std::nan(""));
-            row.emplace_back(nb::TrCore::tr("not fitted"));
+            row.emplace_back(QStringLiteral("not fitted"));
             row.emplace_back(QString());
         } else {
             row.emplace_back(f.fit.frequency_hz);
@@ -375,7 +375,7 @@ FitTable frictionSummaryTable(const SessionAnalysis& a)
     auto add = [&](const QString& name, const FrictionGroup& g) {
         for (int k = 0; k < 2; ++k) {
             // The overall group has no single frequency.
-            std::vector<TableCell> row{name, k ? nb::TrCore::tr("std") : nb::TrCore::tr("mean"), g.frequency_hz > 0.0 ? g.frequency_hz : std::nan(""),
+            std::vector<TableCell> row{name, k ? QStringLiteral("std") : QStringLiteral("mean"), g.frequency_hz > 0.0 ? g.frequency_hz : std::nan(""),
                                        double(g.runs)};
             appendKarnopp(row, k ? g.stdDev : g.mean);
             if (k == 1 && g.runs < 2)  // a standard deviation of one run is undefined: left empty
@@ -387,12 +387,12 @@ FitTable frictionSummaryTable(const SessionAnalysis& a)
     for (const FrictionGroup& g : a.frictionGroups)
         add(QStringLiteral("%1Hz").arg(g.frequency_hz, 0, 'g', 3), g);
     if (a.frictionOverall)
-        add(nb::TrCore::tr("overall"), *a.frictionOverall);
+        add(QStringLiteral("overall"), *a.frictionOverall);
     for (const auto& [tissue, line] : a.frictionPeakLines) {
         // Already per unit length (see analyseFriction); D is not defined by the line.
         const KarnoppModel& k = line.model;
-        std::vector<TableCell> row{tissue.isEmpty() ? nb::TrCore::tr("peak speeds") : nb::TrCore::tr("peak speeds, %1").arg(tissue),
-                                   nb::TrCore::tr("line"), std::nan(""), double(line.runs)};
+        std::vector<TableCell> row{tissue.isEmpty() ? QStringLiteral("peak speeds") : QStringLiteral("peak speeds, %1").arg(tissue),
+                                   QStringLiteral("line"), std::nan(""), double(line.runs)};
         appendKarnopp(row, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, std::nan(""), std::nan("")});
         t.rows.push_back(std::move(row));
     }

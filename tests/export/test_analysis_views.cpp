@@ -166,7 +166,7 @@ private slots:
         QCOMPARE(w.analysis().frictionPeakLines.size(), std::size_t(1));
         bool lineRow = false;
         for (int r = 0; r < w.frictionSummaryModel()->rowCount(); ++r)
-            lineRow |= w.frictionSummaryModel()->item(r, 0)->text() == QStringLiteral("peak speeds, liver3");
+            lineRow |= w.frictionSummaryModel()->item(r, 0)->text() == QStringLiteral("peak speeds, Liver 3");
         QVERIFY(lineRow);
         // Each run's own C agrees with the line now that the fit follows the slab's spring-back
         // (the 0.8 Hz run departed by 25 % before), so the status names none.

@@ -127,6 +127,16 @@ private slots:
         s.biased = true;
         s.planHold.clear();
         QVERIFY(permission(Control::StartInsertion, s).enabled);
+        // Still loaded near the limit (after it tripped, the needle in the tissue): a run
+        // would stop at once. Pushing or pulling alike; the needle can come out.
+        for (const double force : {7.5, -7.0}) {
+            s.force_N = force;
+            QVERIFY2(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("withdraw the needle first")),
+                     qPrintable(permission(Control::StartInsertion, s).reason));
+            QVERIFY(permission(Control::Withdraw, s).enabled);
+        }
+        s.force_N = 6.0;
+        QVERIFY(permission(Control::StartInsertion, s).enabled);
         s.fault = QStringLiteral("sensor: no reply");
         QVERIFY(!permission(Control::StartInsertion, s).enabled);
         QVERIFY(permission(Control::StartInsertion, s).reason.contains(QStringLiteral("no reply")));

@@ -3,12 +3,16 @@
 // calibration wizard on the simulated load cell, and recovery of a run cut off by a crash.
 // Screenshots land in build-gui/screenshots/.
 #include "main_window.h"
+#include "support/needlebench_cli.h"
 #include "support/simulated_window.h"
 #include "widgets/label_model.h"
 #include "widgets/review_workspace.h"
 #include "translation.h"
 
 #include "core/data_names.h"
+#include "core/export/dataset_loader.h"
+#include "core/export/fit_table.h"
+#include "core/export/session_analysis.h"
 #include "core/plan.h"
 #include "core/plan_session.h"
 #include "core/run_file.h"
@@ -434,6 +438,22 @@ private slots:
             QCOMPARE(run.meta(QStringLiteral("position_source")).value_or(QString()),
                      QStringLiteral("stage read-back, interpolated to the sample clock"));
             QCOMPARE(run.meta(QStringLiteral("end_reason")).value_or(QString()), QStringLiteral("completed"));
+            // The fit tables' CSV is data too: "pooled" whatever the window speaks ("gepoolt"
+            // broke the scripts that read it); the window and the LaTeX report say it in German.
+            const QString twoRuns = tmp.filePath(QStringLiteral("two"));
+            QVERIFY(QDir().mkpath(twoRuns));
+            for (const char* seed : {"1", "2"})
+                QCOMPARE(nbtest::runCli({"simulate", "--protocol", "stiffness", "--tissue", "liver1", "--seed", QLatin1String(seed), "--out",
+                                         QDir(twoRuns).filePath(QStringLiteral("run_00%1_linear.csv").arg(QLatin1String(seed)))})
+                             .code,
+                         0);
+            const nb::SessionAnalysis analysis = nb::analyseDataset(nb::loadDataset(twoRuns).dataset);
+            const nb::FitTable pooled = nb::stiffnessPooledTable(analysis);
+            QVERIFY(!pooled.rows.empty());
+            const QByteArray csv = nb::fitTableCsv(pooled);
+            QVERIFY2(csv.contains(",pooled,") && csv.contains(",mean of runs,") && !csv.contains("gepoolt"), csv.constData());
+            QVERIFY(nb::fitTableLatex(pooled).contains("gepoolt"));
+            QCOMPARE(nb::tableValueDisplayName(QStringLiteral("pooled")), QStringLiteral("gepoolt"));
         }
         {
             // A template's plan that an English window wrote is said in German in the Plan

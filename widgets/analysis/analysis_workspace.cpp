@@ -103,13 +103,11 @@ void fillTableModel(QStandardItemModel* model, const FitTable& t)
                     // A tip or where D came from is data ("beveled", "phase a" in the exported table),
                     // said in the operator's language here.
                     const QString& key = t.columns[c].key;
-                    item->setText(key == QLatin1String("tip")                       ? tipDisplayName(*s)
-                                  : key == QLatin1String("static_from")             ? staticSourceDisplayName(*s)
-                                  : key == QLatin1String("tissue") && s->isEmpty() ? nb::TrViews::tr("no tissue given")
-                                                                                    : *s);
+                    item->setText(key == QLatin1String("tissue") && s->isEmpty() ? nb::TrViews::tr("no tissue given")
+                                                                                  : tableCellDisplayName(key, *s));
                     // Outliers and failed fits stand out; other text columns are just text.
                     if ((t.columns[c].key == QLatin1String("outlier") && !s->isEmpty()) ||
-                        *s == nb::TrViews::tr("not fitted"))
+                        *s == QLatin1String("not fitted"))
                         flagged = true;
                 } else {
                     const double v = std::get<double>(row[c]);
