@@ -610,21 +610,22 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
     planStatus(s);
     if (wizard_)
         wizard_->setDeviceTime(s.deviceTime_s);
-    const auto summary = [this](double rateHz, qint64 samples, qint64 dropped, qint64 frames) {
-        return tr("%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn")
-            .arg(engine_->deviceDescription())
-            .arg(rateHz, 0, 'f', 0)
-            .arg(samples)
-            .arg(dropped)
-            .arg(frames);
+    // The devices' description (a simulated rig's tissue, tip and seed; a real device's serial
+    // and port) is shortened here and whole in the tooltip: the messages beside it need room.
+    const QFontMetrics metrics = statusLabel_->fontMetrics();
+    const QString devices = engine_->deviceDescription();
+    const QString shortDevices = metrics.elidedText(devices, Qt::ElideRight, 28 * metrics.averageCharWidth());
+    const auto summary = [this, &shortDevices](double rateHz, qint64 samples, qint64 dropped) {
+        return tr("%1 · %2 Hz · %3 samples · dropped %4").arg(shortDevices).arg(rateHz, 0, 'f', 0).arg(samples).arg(dropped);
     };
-    statusLabel_->setText(summary(s.rateHz, qint64(s.samples), qint64(s.dropped + s.overruns), qint64(plots_->framesDrawn())));
+    statusLabel_->setText(summary(s.rateHz, qint64(s.samples), qint64(s.dropped + s.overruns)));
     // As wide as a day's counts from the start, so that the summary does not grow under the
     // message beside it (elided to the room left when it was shown) as the samples add up.
-    statusLabel_->setMinimumWidth(statusLabel_->fontMetrics().horizontalAdvance(summary(std::max(s.rateHz, 10000.0), 99999999, 99999, 9999999)) +
-                                  2 * statusLabel_->margin() + 4);
+    statusLabel_->setMinimumWidth(metrics.horizontalAdvance(summary(std::max(s.rateHz, 10000.0), 99999999, 99999)) + 2 * statusLabel_->margin() + 4);
+    QString tip = tr("%1\n%n plot frame(s) drawn", nullptr, plots_->framesDrawn()).arg(devices);
     if (!s.realtimeWarning.isEmpty())
-        statusLabel_->setToolTip(s.realtimeWarning);
+        tip += QLatin1Char('\n') + s.realtimeWarning;
+    statusLabel_->setToolTip(tip);
 }
 
 void MainWindow::onRunEnded(const devices::RunSummary& summary)
@@ -667,7 +668,13 @@ QString MainWindow::withinSession(QString text) const
 void MainWindow::showMessage(const QString& text, bool alarm)
 {
     statusBar()->setStyleSheet(alarm ? QStringLiteral("QStatusBar { color: #c62828; font-weight: bold; }") : QString());
-    statusBar()->showMessage(text);
+    // Shortened in the middle where it would run under the summary on the right (the start
+    // says what happened, the end names the file or the reason); whole in the tooltip.
+    QFont font = statusBar()->font();
+    font.setBold(alarm);
+    const QFontMetrics metrics(font);
+    const int room = statusBar()->width() - statusLabel_->width() - 4 * metrics.averageCharWidth();
+    statusBar()->showMessage(metrics.elidedText(text, Qt::ElideMiddle, std::max(room, 160)));
     statusBar()->setToolTip(text);  // whole, where the bar is too narrow for it
 }
 

@@ -1658,12 +1658,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
-        <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren · %5 Bilder gezeichnet</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+65"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
@@ -1673,24 +1668,40 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+43"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-602"/>
+        <location line="-609"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+601"/>
+        <location line="+534"/>
+        <source>%1 · %2 Hz · %3 samples · dropped %4</source>
+        <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%1
+%n plot frame(s) drawn</source>
+        <translation>
+            <numerusform>%1
+%n Diagrammbild gezeichnet</numerusform>
+            <numerusform>%1
+%n Diagrammbilder gezeichnet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+68"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-388"/>
+        <location line="-395"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -1656,12 +1656,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>%1 · %2 Hz · %3 samples · dropped %4 · %5 frames drawn</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+65"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1671,23 +1666,39 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+43"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-602"/>
+        <location line="-609"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+601"/>
+        <location line="+534"/>
+        <source>%1 · %2 Hz · %3 samples · dropped %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%1
+%n plot frame(s) drawn</source>
+        <translation>
+            <numerusform>%1
+%n plot frame drawn</numerusform>
+            <numerusform>%1
+%n plot frames drawn</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+68"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-388"/>
+        <location line="-395"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
