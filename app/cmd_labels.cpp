@@ -111,8 +111,12 @@ int cmdLabels(const QStringList& args, Io io)
             const std::optional<RunVideoLink> link = readRunVideoLink(runPath, &linkProblem);
             std::optional<TimelineMapping> mapping = given;
             QString mappingSource = given ? QStringLiteral("given") : QString();
-            if (videoPath.isEmpty() && link && !link->video.isEmpty())
-                videoPath = link->video;
+            if (videoPath.isEmpty() && link && !link->video.isEmpty()) {
+                if (QFileInfo::exists(link->video))
+                    videoPath = link->video;
+                else
+                    io.err << nb::TrCli::tr("needlebench labels: the run's video %1 is missing; looking beside the run\n").arg(link->video);
+            }
             if (videoPath.isEmpty())
                 videoPath = videoBesideRun(runPath);
             if (!mapping && link && !videoPath.isEmpty() && link->method != SyncMethod::None &&
@@ -136,6 +140,12 @@ int cmdLabels(const QStringList& args, Io io)
                     labels = found.labels;
                     tissue = found.tissue;
                 } catch (const video::VideoError& e) {
+                    // A video named on the command line that cannot be read fails the command,
+                    // as one that is not there does; one found beside the run is passed over.
+                    if (parser.isSet(video)) {
+                        io.err << "needlebench labels: " << e.message() << '\n';
+                        return Failure;
+                    }
                     found.problem = e.message();
                 } catch (const std::exception& e) {
                     found.problem = QString::fromUtf8(e.what());

@@ -36,6 +36,17 @@ void Metadata::set(const QString& key, const QString& value)
     entries_.emplace_back(key, value);
 }
 
+void Metadata::remove(const QString& key)
+{
+    const auto it = index_.constFind(key);
+    if (it == index_.constEnd())
+        return;
+    entries_.erase(entries_.begin() + std::ptrdiff_t(*it));
+    index_.clear();
+    for (std::size_t i = 0; i < entries_.size(); ++i)
+        index_.insert(entries_[i].first, i);
+}
+
 void Metadata::set(const QString& key, double value)
 {
     set(key, QString::number(value, 'g', 12));

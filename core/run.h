@@ -22,6 +22,7 @@ public:
     std::optional<double> number(const QString& key) const;
     void set(const QString& key, const QString& value);
     void set(const QString& key, double value);
+    void remove(const QString& key);
     bool contains(const QString& key) const { return value(key).has_value(); }
     const std::vector<std::pair<QString, QString>>& entries() const { return entries_; }
     bool empty() const { return entries_.empty(); }

@@ -87,9 +87,12 @@ QString videoBesideRun(const QString& runPath)
     if (runPath.isEmpty())
         return {};
     const QFileInfo run(runPath);
+    // In the suffixes' order of preference, whatever their case: cameras write ".MP4", ".MOV".
+    const QFileInfoList beside = run.dir().entryInfoList({run.completeBaseName() + QStringLiteral(".*")}, QDir::Files);
     for (const QString& suffix : videoSuffixes())
-        if (const QFileInfo v(run.dir().filePath(run.completeBaseName() + QLatin1Char('.') + suffix)); v.isFile())
-            return v.absoluteFilePath();
+        for (const QFileInfo& v : beside)
+            if (v.completeBaseName() == run.completeBaseName() && v.suffix().compare(suffix, Qt::CaseInsensitive) == 0)
+                return v.absoluteFilePath();
     return {};
 }
 
@@ -175,14 +178,24 @@ void applyRunVideoLink(Run& run, const QString& runPath, const RunVideoLink& lin
 {
     if (!link.video.isEmpty()) {
         const QString rel = QFileInfo(runPath).absoluteDir().relativeFilePath(link.video);
-        run.metadata.set(key::video_file, rel.startsWith(QLatin1String("..")) ? link.video : rel);
+        const QString shown = rel.startsWith(QLatin1String("..")) ? link.video : rel;
+        // Another video than the one the run was recorded with: what the header says of that
+        // one (its frame rate) is not this one's.
+        const std::optional<QString> before = run.metadata.value(key::video_file);
+        if (before && QFileInfo(QFileInfo(runPath).absoluteDir(), *before).absoluteFilePath() !=
+                          QFileInfo(QFileInfo(runPath).absoluteDir(), shown).absoluteFilePath())
+            run.metadata.remove(key::video_fps);
+        run.metadata.set(key::video_file, shown);
     }
     run.metadata.set(key::sync_offset_s, link.mapping.offset_s);
     run.metadata.set(QStringLiteral("sync_drift"), link.mapping.drift);
     if (link.method != SyncMethod::None)
         run.metadata.set(key::sync_method, syncMethodKey(link.method));
+    // A confidence belongs to the sync that found it: a manual sync has none.
     if (link.confidence)
         run.metadata.set(key::sync_confidence, *link.confidence);
+    else
+        run.metadata.remove(key::sync_confidence);
 }
 
 }  // namespace nb

@@ -3813,7 +3813,14 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+20"/>
+        <source>needlebench labels: the run&apos;s video %1 is missing; looking beside the run
+</source>
+        <translation>needlebench labels: das Video des Laufs, %1, fehlt; es wird neben dem Lauf gesucht
+</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>needlebench labels: %1: the surface&apos;s motion could not be read (%2); no relaxation suggested
 </source>
         <translation>needlebench labels: %1: die Bewegung der Oberfläche ließ sich nicht lesen (%2); keine Relaxation vorgeschlagen
@@ -3827,12 +3834,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="-110"/>
+        <location line="-120"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+127"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
@@ -5978,7 +5985,7 @@ Befehle:
         <translation>nicht synchronisiert</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+78"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation>nicht schreibbar (%1)</translation>

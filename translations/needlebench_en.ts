@@ -3772,7 +3772,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+20"/>
+        <source>needlebench labels: the run&apos;s video %1 is missing; looking beside the run
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>needlebench labels: %1: the surface&apos;s motion could not be read (%2); no relaxation suggested
 </source>
         <translation type="unfinished"></translation>
@@ -3784,12 +3790,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-110"/>
+        <location line="-120"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+127"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
@@ -5888,7 +5894,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+78"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation type="unfinished"></translation>

@@ -168,12 +168,37 @@ private slots:
         QCOMPARE(nb::readRunVideoLink(run)->video, QDir::cleanPath(link.video));
 
         nb::Run r;
+        // Recorded with the simulator's video, synced automatically; then another video linked
+        // by hand: its file, and nothing of the first video's (frame rate, confidence) left.
+        r.metadata.set(nb::key::video_file, QStringLiteral("run_002_sine.avi"));
+        r.metadata.set(nb::key::video_fps, 29.97002997);
+        r.metadata.set(nb::key::sync_method, QStringLiteral("needle_displacement"));
+        r.metadata.set(nb::key::sync_confidence, 0.9959);
         nb::applyRunVideoLink(r, run, *nb::readRunVideoLink(run));
         QCOMPARE(r.meta(nb::key::sync_offset_s).value_or(QString()), QStringLiteral("0.4123"));
         QCOMPARE(r.meta(nb::key::sync_method).value_or(QString()), QStringLiteral("event_marks"));
+        QCOMPARE(r.meta(nb::key::video_file).value_or(QString()), QDir::cleanPath(link.video));
+        QVERIFY(!r.meta(nb::key::video_fps));
+        QVERIFY(!r.meta(nb::key::sync_confidence));
+        // The same video linked again keeps its frame rate.
+        nb::Run same;
+        same.metadata.set(nb::key::video_file, QDir::cleanPath(link.video));
+        same.metadata.set(nb::key::video_fps, 25.0);
+        nb::applyRunVideoLink(same, run, *nb::readRunVideoLink(run));
+        QCOMPARE(same.meta(nb::key::video_fps).value_or(QString()), QStringLiteral("25"));
+        same.metadata.set(QStringLiteral("later"), 1.0);
+        QCOMPARE(same.meta(QStringLiteral("later")).value_or(QString()), QStringLiteral("1"));
 
         nb::writeRunVideoLink(run, std::nullopt);
         QVERIFY(!nb::readRunVideoLink(run));
+
+        // A camera's file beside the run, its suffix in capitals.
+        QVERIFY(nb::videoBesideRun(run).isEmpty());
+        {
+            QFile cam(tmp.filePath(QStringLiteral("run_002_sine.MP4")));
+            QVERIFY(cam.open(QIODevice::WriteOnly));
+        }
+        QCOMPARE(nb::videoBesideRun(run), QFileInfo(tmp.filePath(QStringLiteral("run_002_sine.MP4"))).absoluteFilePath());
 
         // A broken store is reported, not taken for "no video", and not overwritten.
         QVERIFY(f.open(QIODevice::WriteOnly));

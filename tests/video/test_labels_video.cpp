@@ -127,7 +127,7 @@ private slots:
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains(missing), qPrintable(r.err));
         QVERIFY(!QFile::exists(dir_.filePath(QStringLiteral("m.csv"))));
-        // One that is there but cannot be read: named, and the phases still come from the force.
+        // One that is there but cannot be read: the same, named with what is wrong.
         const QString damaged = dir_.filePath(QStringLiteral("damaged.avi"));
         {
             QFile f(damaged);
@@ -136,8 +136,18 @@ private slots:
         }
         r = nbtest::runCli({"labels", "suggest", blind_, "--video", damaged, "--video-offset-s", "0", "--out", dir_.filePath(QStringLiteral("m.csv")),
                             "--json"});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("damaged.avi")), qPrintable(r.err));
+        QVERIFY(!QFile::exists(dir_.filePath(QStringLiteral("m.csv"))));
+        // Found beside the run instead, it is passed over: the phases come from the force.
+        const QString besideRun = dir_.filePath(QStringLiteral("beside.csv"));
+        QFile::remove(besideRun);
+        QVERIFY(QFile::copy(blind_, besideRun));
+        QFile::remove(dir_.filePath(QStringLiteral("beside.avi")));
+        QVERIFY(QFile::copy(damaged, dir_.filePath(QStringLiteral("beside.avi"))));
+        r = nbtest::runCli({"labels", "suggest", besideRun, "--video-offset-s", "0", "--overwrite", "--json"});
         QCOMPARE(r.code, 0);
-        QVERIFY2(r.err.contains(damaged), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("beside.avi")), qPrintable(r.err));
         QCOMPARE(r.json()["video"].toObject()["used"].toBool(), false);
         QVERIFY(!r.json()["labels"].toArray().isEmpty());
         // Offsets that are not numbers are usage errors.
