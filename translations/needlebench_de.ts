@@ -6638,8 +6638,8 @@ Befehle:
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+153"/>
-        <location filename="../video/packet_index.cpp" line="+35"/>
+        <location filename="../video/frame_index.cpp" line="+154"/>
+        <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
     </message>
@@ -6674,8 +6674,14 @@ Befehle:
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="+42"/>
-        <location filename="../video/packet_index.cpp" line="+66"/>
+        <location line="+11"/>
+        <location filename="../video/packet_index.cpp" line="+71"/>
+        <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
+        <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <location filename="../video/packet_index.cpp" line="-5"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
@@ -6690,7 +6696,7 @@ Befehle:
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>
     <message>
-        <location filename="../video/frame_reader.cpp" line="+16"/>
+        <location filename="../video/frame_reader.cpp" line="+17"/>
         <source>the video has no indexed frames</source>
         <translation>das Video hat keine indizierten Bilder</translation>
     </message>
@@ -6700,7 +6706,7 @@ Befehle:
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+74"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
@@ -7084,7 +7090,7 @@ Befehle:
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location filename="../video/packet_index.cpp" line="+15"/>
+        <location filename="../video/packet_index.cpp" line="+20"/>
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation>aus den Paketen der Datei indiziert: wiederholte Bilder sind nicht als Duplikate markiert</translation>
     </message>

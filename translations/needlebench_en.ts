@@ -6547,8 +6547,8 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+153"/>
-        <location filename="../video/packet_index.cpp" line="+35"/>
+        <location filename="../video/frame_index.cpp" line="+154"/>
+        <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6583,8 +6583,14 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
-        <location filename="../video/packet_index.cpp" line="+66"/>
+        <location line="+11"/>
+        <location filename="../video/packet_index.cpp" line="+71"/>
+        <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <location filename="../video/packet_index.cpp" line="-5"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6599,7 +6605,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_reader.cpp" line="+16"/>
+        <location filename="../video/frame_reader.cpp" line="+17"/>
         <source>the video has no indexed frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6609,7 +6615,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+74"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6993,7 +6999,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/packet_index.cpp" line="+15"/>
+        <location filename="../video/packet_index.cpp" line="+20"/>
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation type="unfinished"></translation>
     </message>

@@ -2,6 +2,7 @@
 #include "core/tr.h"
 
 #include "keyframe_probe.h"
+#include "orientation.h"
 #include "video_error.h"
 
 #include <QCoreApplication>
@@ -182,8 +183,13 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
 
     FrameIndex index;
     index.path = path;
+    const int rotation = takeRotation(cap);
     index.width = int(cap.get(cv::CAP_PROP_FRAME_WIDTH));
     index.height = int(cap.get(cv::CAP_PROP_FRAME_HEIGHT));
+    if (quarterTurn(rotation))
+        std::swap(index.width, index.height);
+    if (rotation != 0)
+        index.warnings << nb::TrDevices::tr("the file says its picture is turned by %1°: shown turned, as players show it").arg(rotation);
     index.fpsNominal = cap.get(cv::CAP_PROP_FPS);
     index.containerFrames = std::max(0, int(cap.get(cv::CAP_PROP_FRAME_COUNT)));
     const int fourcc = int(cap.get(cv::CAP_PROP_FOURCC));

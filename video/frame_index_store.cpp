@@ -15,7 +15,7 @@ namespace nb::video {
 namespace {
 constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
 // Bump whenever buildFrameIndex() would index a file differently.
-constexpr quint32 kVersion = 1;
+constexpr quint32 kVersion = 2;  // 2: width and height as shown, turned by the rotation tag
 // Indexes kept at most; the least recently stored go first.
 constexpr int kMaxStored = 300;
 

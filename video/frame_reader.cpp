@@ -1,4 +1,5 @@
 #include "frame_reader.h"
+#include "orientation.h"
 #include "core/tr.h"
 
 #include "video_error.h"
@@ -33,6 +34,7 @@ void FrameReader::reopen()
     cap_.release();
     if (!cap_.open(index_.path.toStdString(), cv::CAP_FFMPEG))
         throw VideoError(index_.path, nb::TrDevices::tr("cannot reopen the video (moved or deleted?)"));
+    rotation_deg_ = takeRotation(cap_);
     current_ = -1;
     fresh_ = true;
     ++stats_.sequentialResets;
@@ -133,6 +135,7 @@ DecodedFrame FrameReader::read(int n)
     cv::Mat image;
     if (!cap_.retrieve(image) || image.empty())
         throw VideoError(index_.path, nb::TrDevices::tr("frame %1 could not be decoded").arg(n));
+    turnUpright(image, rotation_deg_);
     cache_.put(n, image);
     return {n, time, image};
 }
@@ -163,8 +166,10 @@ void FrameReader::keepGrabbedGray(int j)
     if (j < 0 || std::size_t(j) >= gray_.size() || !gray_[std::size_t(j)].empty())
         return;
     cv::Mat image;
-    if (cap_.retrieve(image) && !image.empty())
+    if (cap_.retrieve(image) && !image.empty()) {
+        turnUpright(image, rotation_deg_);
         gray_[std::size_t(j)] = grayOf(image);
+    }
 }
 
 cv::Mat FrameReader::gray(int n)

@@ -65,6 +65,7 @@ private:
 
     FrameIndex index_;
     cv::VideoCapture cap_;
+    int rotation_deg_ = 0;  // the file's rotation tag, turned here (orientation.h)
     FrameCache cache_;
     bool fresh_ = true;     // just opened: the next grab is frame 0
     int current_ = -1;      // index of the last grabbed frame; -1 before the first

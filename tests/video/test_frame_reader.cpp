@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QProcess>
 #include <QtTest>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 #include <random>
 
@@ -368,6 +369,44 @@ private slots:
             QVERIFY2(e.message().contains("sound.mp4") && e.message().contains(QStringLiteral("no video")) && !e.message().contains(QStringLiteral("cut off")),
                      qPrintable(e.message()));
         }
+    }
+
+    // A phone's or console's rotation tag: frames as ffmpeg and players show them, width and
+    // height as shown, and said. OpenCV 4.6 on its own turned a 90° tag the wrong way round.
+    void rotationTagTurnsThePicture_data()
+    {
+        QTest::addColumn<int>("rotation");
+        QTest::newRow("90") << 90;
+        QTest::newRow("180") << 180;
+        QTest::newRow("270") << 270;
+    }
+
+    void rotationTagTurnsThePicture()
+    {
+        QFETCH(int, rotation);
+        auto ffmpeg = [](const QStringList& args) {
+            QProcess p;
+            p.start(QStringLiteral("ffmpeg"), QStringList{"-v", "error", "-y"} + args);
+            return p.waitForFinished(60000) && p.exitCode() == 0;
+        };
+        const QString plain = path("upright.mp4"), tagged = path(QStringLiteral("turned%1.mp4").arg(rotation));
+        const QString shown = path(QStringLiteral("shown%1.png").arg(rotation));
+        QVERIFY(QFile::exists(plain) || ffmpeg({"-f", "lavfi", "-i", "testsrc2=size=320x240:rate=25:duration=2", "-c:v", "libx264", "-pix_fmt",
+                                                "yuv444p", "-qp", "0", plain}));
+        QVERIFY(ffmpeg({"-i", plain, "-c", "copy", "-metadata:s:v", QStringLiteral("rotate=%1").arg(rotation), tagged}));
+        QVERIFY(ffmpeg({"-i", tagged, "-vf", "select=eq(n\\,10)", "-frames:v", "1", shown}));  // ffmpeg turns it as players do
+        const FrameIndex index = buildFrameIndex(tagged);
+        const bool quarter = rotation != 180;
+        QCOMPARE(index.width, quarter ? 240 : 320);
+        QCOMPARE(index.height, quarter ? 320 : 240);
+        QVERIFY2(index.warnings.join(QLatin1Char(' ')).contains(QStringLiteral("turned by %1").arg(rotation)), qPrintable(index.warnings.join(QLatin1Char('\n'))));
+        FrameReader reader(index);
+        const cv::Mat ours = reader.read(10).image, theirs = cv::imread(shown.toStdString());
+        QCOMPARE(ours.cols, theirs.cols);
+        QCOMPARE(ours.rows, theirs.rows);
+        const double difference = cv::norm(ours, theirs, cv::NORM_L1) / double(ours.total() * ours.channels());
+        QVERIFY2(difference < 3.0, qPrintable(QStringLiteral("mean difference %1 grey levels").arg(difference)));
+        QCOMPARE(reader.gray(10).cols, theirs.cols);
     }
 };
 
