@@ -626,6 +626,15 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
     if (!s.realtimeWarning.isEmpty())
         tip += QLatin1Char('\n') + s.realtimeWarning;
     statusLabel_->setToolTip(tip);
+    // The quit question follows what happens while it is open (an emergency stop ended the
+    // run and the motion it spoke of).
+    if (quitQuestion_ && quitQuestion_->isVisible()) {
+        const Permission quit = permission(Control::Quit, s.interlocks());
+        const QString text = quit.enabled ? tr("Nothing moves or records now. Quit?")
+                                          : tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason);
+        if (quitQuestion_->text() != text)
+            quitQuestion_->setText(text);
+    }
 }
 
 void MainWindow::onRunEnded(const devices::RunSummary& summary)

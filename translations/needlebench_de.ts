@@ -174,7 +174,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>kein Lauf</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <location line="+10"/>
         <source>Save figure</source>
         <translation>Abbildung speichern</translation>
@@ -1658,7 +1658,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+56"/>
+        <source>Nothing moves or records now. Quit?</source>
+        <translation>Nichts bewegt sich oder zeichnet jetzt auf. Beenden?</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
@@ -1668,14 +1673,15 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="-26"/>
+        <location line="+69"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-609"/>
+        <location line="-618"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
@@ -1696,12 +1702,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+77"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-395"/>
+        <location line="-404"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -7196,7 +7202,7 @@ Befehle:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-594"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-599"/>
         <location line="+397"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>

@@ -2,6 +2,7 @@
 
 #include <QDialog>
 #include <QMessageBox>
+#include <QRegularExpression>
 
 namespace nb {
 
@@ -22,6 +23,20 @@ QFileDialog* chooseFileModeless(QWidget* parent, const FileChoice& choice, std::
     dialog->setAcceptMode(choice.accept);
     if (choice.mode == QFileDialog::Directory)
         dialog->setOption(QFileDialog::ShowDirsOnly);
+    if (!choice.name.isEmpty())
+        dialog->selectFile(choice.name);
+    if (choice.accept == QFileDialog::AcceptSave && !choice.filter.isEmpty()) {
+        // A name typed without a suffix takes the chosen type's ("a1_by_motion" saved as
+        // "a1_by_motion.png"), as desktop programs do.
+        auto suffixOf = [](const QString& filter) {
+            static const QRegularExpression glob(QStringLiteral("\\*\\.(\\w+)"));
+            const QRegularExpressionMatch m = glob.match(filter);
+            return m.hasMatch() ? m.captured(1) : QString();
+        };
+        dialog->setDefaultSuffix(suffixOf(dialog->selectedNameFilter()));
+        QObject::connect(dialog, &QFileDialog::filterSelected, dialog,
+                         [dialog, suffixOf](const QString& filter) { dialog->setDefaultSuffix(suffixOf(filter)); });
+    }
     QObject::connect(dialog, &QFileDialog::fileSelected, dialog, [chosen = std::move(chosen)](const QString& path) {
         if (!path.isEmpty())
             chosen(path);

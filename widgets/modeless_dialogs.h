@@ -24,6 +24,7 @@ struct FileChoice {
     QString filter;  // empty: any file
     QFileDialog::FileMode mode = QFileDialog::ExistingFile;
     QFileDialog::AcceptMode accept = QFileDialog::AcceptOpen;
+    QString name;  // the file name offered (saving); without a suffix, the chosen type's is added
 };
 
 // Qt's own file chooser (never the desktop's: Esc must reach the emergency stop's filter),

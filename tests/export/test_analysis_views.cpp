@@ -19,6 +19,9 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QComboBox>
+#include <QFileDialog>
+#include <QPushButton>
+#include <QFileInfo>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -101,6 +104,36 @@ private slots:
             QVERIFY(shot.save(QStringLiteral(NB_BINARY_DIR "/screenshots/analysis_%1.png").arg(QLatin1String(names[t]))));
             QVERIFY(colourCount(shot) > 20);
         }
+
+        // Save figure offers the session's folder and a name; a name typed without a suffix
+        // is saved with the chosen type's (it was refused: "unknown figure format ''").
+        w.tabs()->setCurrentIndex(0);
+        QPushButton* save = nullptr;
+        for (QPushButton* b : w.tabs()->currentWidget()->findChildren<QPushButton*>())
+            if (b->text() == QStringLiteral("Save figure…"))
+                save = b;
+        QVERIFY(save);
+        save->click();
+        QFileDialog* chooser = nullptr;
+        QTRY_VERIFY((chooser = w.findChild<QFileDialog*>()) != nullptr);
+        QCOMPARE(QDir(chooser->directory()).canonicalPath(), QDir(dir_.path()).canonicalPath());
+        QCOMPARE(chooser->defaultSuffix(), QStringLiteral("png"));
+        QVERIFY2(QFileInfo(chooser->selectedFiles().value(0)).completeBaseName() == QStringLiteral("stiffness"), qPrintable(chooser->selectedFiles().value(0)));
+        auto* types = chooser->findChild<QComboBox*>(QStringLiteral("fileTypeCombo"));
+        QVERIFY(types);
+        auto chooseType = [types](int i) {  // as the operator picks it in the list
+            types->setCurrentIndex(i);
+            emit types->activated(i);
+            emit types->textActivated(types->itemText(i));
+        };
+        chooseType(1);
+        QCOMPARE(chooser->defaultSuffix(), QStringLiteral("svg"));
+        chooseType(0);
+        QCOMPARE(chooser->defaultSuffix(), QStringLiteral("png"));
+        const QString typed = QDir(dir_.path()).filePath(QStringLiteral("a1_by_motion"));
+        chooser->selectFile(typed);
+        static_cast<QDialog*>(chooser)->accept();  // as the Save button does
+        QTRY_VERIFY(QFileInfo(typed + QStringLiteral(".png")).size() > 1000);
     }
 
     // Runs that name no tissue (recorded in the window, say) are one group said so, not a

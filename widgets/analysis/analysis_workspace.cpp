@@ -662,8 +662,13 @@ void AnalysisWorkspace::exportCurrentFigure()
                                       : tab == 2 ? std::vector<QCustomPlot*>{validationPlot_}
                                                  : std::vector<QCustomPlot*>{factorPlot_};
     // Modeless: a run may be recording meanwhile (modeless_dialogs.h).
-    FileChoice choice{tr("Save figure"), QString(), tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
-                      QFileDialog::AnyFile, QFileDialog::AcceptSave};
+    // In the session's folder, named after what it shows.
+    const QString name = tab == 0 ? QStringLiteral("stiffness")
+                         : tab == 1 ? QStringLiteral("friction")
+                         : tab == 2 ? QStringLiteral("validation")
+                                    : QStringLiteral("by_factor_") + factorChoice_->currentText();
+    FileChoice choice{tr("Save figure"), dir_, tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
+                      QFileDialog::AnyFile, QFileDialog::AcceptSave, name};
     chooseFileModeless(this, choice, [this, plots](const QString& path) {
         try {
             const QFileInfo fi(path);
@@ -689,7 +694,7 @@ void AnalysisWorkspace::exportCurrentTables()
         tables = {{QStringLiteral("validation"), validationTable(analysis_)}};
     else
         tables = {{QStringLiteral("by_factor_") + factorChoice_->currentText(), factorTableFor(factorChoice_->currentText())}};
-    FileChoice choice{tr("Save tables (CSV and LaTeX) into"), QString(), QString(), QFileDialog::Directory};
+    FileChoice choice{tr("Save tables (CSV and LaTeX) into"), dir_, QString(), QFileDialog::Directory};
     chooseFileModeless(this, choice, [this, tables](const QString& dir) {
         try {
             for (const auto& [name, table] : tables) {
