@@ -24,6 +24,7 @@
 #include "widgets/session_info_dialog.h"
 #include "widgets/session_view.h"
 
+#include <QLocale>
 #include <QActionGroup>
 #include <QRegularExpression>
 #include <algorithm>
@@ -571,8 +572,8 @@ void MainWindow::useCalibration(const StoredCalibration& calibration)
         engine_->setCalibration(calibration.fit.slope_V_per_g, name);
         showMessage(tr("Calibration %1 saved in the session and used for every following run (d = %2 mV/g, r² = %3)")
                         .arg(name)
-                        .arg(calibration.fit.slope_V_per_g * 1000.0, 0, 'f', 4)
-                        .arg(calibration.fit.r2, 0, 'f', 6));
+                        .arg(QLocale().toString(calibration.fit.slope_V_per_g * 1000.0, 'f', 4))
+                        .arg(QLocale().toString(calibration.fit.r2, 'f', 6)));
     } catch (const SessionError& e) {
         QMessageBox::warning(this, tr("Calibration"), e.message());
     }

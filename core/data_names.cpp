@@ -47,6 +47,46 @@ QString trackDisplayName(const QString& track)
     return track;
 }
 
+QString factorDisplayName(const QString& factor)
+{
+    if (factor == QLatin1String("tissue"))
+        return nb::TrCore::tr("tissue");
+    if (factor == QLatin1String("tip"))
+        return nb::TrCore::tr("tip");
+    if (factor == QLatin1String("motion"))
+        return nb::TrCore::tr("motion");
+    if (factor == QLatin1String("site"))
+        return nb::TrCore::tr("site");
+    if (factor == QLatin1String("repeat"))
+        return nb::TrCore::tr("repeat");
+    if (factor == QLatin1String("cycles"))
+        return nb::TrCore::tr("cycles");
+    if (factor == QLatin1String("velocity_mm_s"))
+        return nb::TrCore::tr("velocity [mm/s]");
+    if (factor == QLatin1String("frequency_hz"))
+        return nb::TrCore::tr("frequency [Hz]");
+    if (factor == QLatin1String("amplitude_mm"))
+        return nb::TrCore::tr("amplitude [mm]");
+    if (factor == QLatin1String("depth_mm"))
+        return nb::TrCore::tr("depth [mm]");
+    if (factor == QLatin1String("thickness_mm"))
+        return nb::TrCore::tr("slab thickness [mm]");
+    return factor;
+}
+
+QString labelDisplayName(const QString& label)
+{
+    if (label == QLatin1String("contact"))
+        return nb::TrCore::tr("contact");
+    if (label == QLatin1String("puncture"))
+        return nb::TrCore::tr("puncture");
+    if (label == QLatin1String("relaxation"))
+        return nb::TrCore::tr("relaxation");
+    if (label == QLatin1String("internal puncture"))
+        return nb::TrCore::tr("internal puncture");
+    return label;
+}
+
 QString tableValueDisplayName(const QString& value)
 {
     static const QLatin1String peakSpeeds("peak speeds, ");

@@ -21,6 +21,12 @@ QString calibrationDisplayName(const QString& calibration);
 // A label track of the default label sets ("insertion" → "Einstich"); tracks the operator
 // named are shown as named.
 QString trackDisplayName(const QString& track);
+// A plan factor or run setting by which runs are grouped ("frequency_hz" → "frequency [Hz]",
+// "motion" → "motion" / "Bewegung"); a factor of the operator's naming as named.
+QString factorDisplayName(const QString& factor);
+// An event label of the default label sets ("contact" → "Kontakt"); phases (a, b1, b2, c) and
+// labels the operator named are shown as named.
+QString labelDisplayName(const QString& label);
 // A run's protocol as plans and run files store it ("stiffness", "internal", "friction",
 // "prostate"); others as stored.
 QString protocolDisplayName(const QString& protocol);

@@ -273,7 +273,7 @@ void AcquisitionEngine::setCalibration(double slope_V_per_g, const QString& name
         }
         state_->proc->setSlope(slope_V_per_g);
         state_->calibrationName = name;
-        emit message(tr("calibration '%1': %2 V/g").arg(name).arg(slope_V_per_g, 0, 'g', 6));
+        emit message(tr("calibration '%1': %2 V/g").arg(name, QLocale().toString(slope_V_per_g, 'g', 6)));
     });
 }
 
@@ -411,8 +411,8 @@ void AcquisitionEngine::withdraw(double velocity_mm_s, double target_mm)
         s.approach.reset();
         s.trip.reset();
         beginMove({std::fabs(velocity_mm_s), target}, false);
-        emit message(s.runOpen ? tr("withdrawing to %1 mm; this is recorded in the open run %2").arg(target, 0, 'f', 2).arg(s.runPath)
-                               : tr("withdrawing to %1 mm (not recorded: no run open)").arg(target, 0, 'f', 2));
+        emit message(s.runOpen ? tr("withdrawing to %1 mm; this is recorded in the open run %2").arg(QLocale().toString(target, 'f', 2), s.runPath)
+                               : tr("withdrawing to %1 mm (not recorded: no run open)").arg(QLocale().toString(target, 'f', 2)));
     });
 }
 

@@ -40,18 +40,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+386"/>
+        <location line="+396"/>
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-385"/>
-        <location line="+386"/>
+        <location line="-395"/>
+        <location line="+396"/>
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-350"/>
+        <location line="-360"/>
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -143,7 +143,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+90"/>
         <source>The factors of a plan&apos;s runs (their factor_… metadata)</source>
         <translation>Die Faktoren der Planläufe (ihre factor_…-Metadaten)</translation>
     </message>
@@ -363,7 +363,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+31"/>
+        <location filename="../widgets/control_panel.cpp" line="+33"/>
         <source>EMERGENCY STOP (Esc)</source>
         <translation>NOT-HALT (Esc)</translation>
     </message>
@@ -1360,7 +1360,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+67"/>
+        <location filename="../app/main_window.cpp" line="+68"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -4982,13 +4982,14 @@ Befehle:
         <translation>Lauf</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location filename="../core/data_names.cpp" line="+53"/>
+        <location filename="../core/export/session_analysis.cpp" line="-124"/>
         <location line="+26"/>
         <source>tissue</source>
         <translation>Gewebe</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location filename="../core/export/session_analysis.cpp" line="-23"/>
         <location line="+49"/>
         <source>rms</source>
         <translation>RMS</translation>
@@ -5025,7 +5026,7 @@ Befehle:
         <translation>Ausreißer</translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="+60"/>
+        <location filename="../core/data_names.cpp" line="+47"/>
         <source>not fitted</source>
         <translation>nicht gefittet</translation>
     </message>
@@ -5040,12 +5041,13 @@ Befehle:
         <translation>Gepoolte Fits vor dem Durchstich je Gewebe (Aufbau von Tabelle 2)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../core/data_names.cpp" line="-47"/>
+        <location filename="../core/export/session_analysis.cpp" line="+3"/>
         <source>tip</source>
         <translation>Spitze</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../core/export/session_analysis.cpp" line="+1"/>
         <source>fit</source>
         <translation>Fit</translation>
     </message>
@@ -5066,7 +5068,7 @@ Befehle:
         <translation>Läufe</translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="-6"/>
+        <location filename="../core/data_names.cpp" line="+41"/>
         <source>pooled</source>
         <translation>gepoolt</translation>
     </message>
@@ -6127,7 +6129,7 @@ Befehle:
         <translation>|Dn| &lt; |Cn|: Haftreibung unter der Gleitreibung</translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="-58"/>
+        <location filename="../core/data_names.cpp" line="-98"/>
         <source>beveled</source>
         <translation>abgeschrägt</translation>
     </message>
@@ -6175,6 +6177,71 @@ Befehle:
         <location line="+2"/>
         <source>events</source>
         <translation>Ereignisse</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>site</source>
+        <translation>Stelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>repeat</source>
+        <translation>Wiederholung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cycles</source>
+        <translation>Zyklen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>velocity [mm/s]</source>
+        <translation>Geschwindigkeit [mm/s]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>frequency [Hz]</source>
+        <translation>Frequenz [Hz]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>amplitude [mm]</source>
+        <translation>Amplitude [mm]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>depth [mm]</source>
+        <translation>Tiefe [mm]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>slab thickness [mm]</source>
+        <translation>Scheibendicke [mm]</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>contact</source>
+        <translation>Kontakt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>puncture</source>
+        <translation>Durchstich</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>relaxation</source>
+        <translation>Relaxation</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>internal puncture</source>
+        <translation>innerer Durchstich</translation>
     </message>
     <message>
         <location line="+30"/>
@@ -7159,7 +7226,7 @@ Befehle:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+109"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+111"/>
         <source>Stiffness before puncture: %1</source>
         <translation>Steifigkeit vor dem Durchstich: %1</translation>
     </message>
@@ -7202,7 +7269,7 @@ Befehle:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-599"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-609"/>
         <location line="+397"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>

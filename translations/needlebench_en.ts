@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+386"/>
+        <location line="+396"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-385"/>
-        <location line="+386"/>
+        <location line="-395"/>
+        <location line="+396"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-350"/>
+        <location line="-360"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -142,7 +142,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+90"/>
         <source>The factors of a plan&apos;s runs (their factor_… metadata)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -362,7 +362,7 @@ or without contact</source>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+31"/>
+        <location filename="../widgets/control_panel.cpp" line="+33"/>
         <source>EMERGENCY STOP (Esc)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1359,7 +1359,7 @@ or without contact</source>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+67"/>
+        <location filename="../app/main_window.cpp" line="+68"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4891,13 +4891,14 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location filename="../core/data_names.cpp" line="+53"/>
+        <location filename="../core/export/session_analysis.cpp" line="-124"/>
         <location line="+26"/>
         <source>tissue</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location filename="../core/export/session_analysis.cpp" line="-23"/>
         <location line="+49"/>
         <source>rms</source>
         <translation type="unfinished"></translation>
@@ -4934,7 +4935,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="+60"/>
+        <location filename="../core/data_names.cpp" line="+47"/>
         <source>not fitted</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4949,12 +4950,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../core/data_names.cpp" line="-47"/>
+        <location filename="../core/export/session_analysis.cpp" line="+3"/>
         <source>tip</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../core/export/session_analysis.cpp" line="+1"/>
         <source>fit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4975,7 +4977,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="-6"/>
+        <location filename="../core/data_names.cpp" line="+41"/>
         <source>pooled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6036,7 +6038,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/data_names.cpp" line="-58"/>
+        <location filename="../core/data_names.cpp" line="-98"/>
         <source>beveled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6083,6 +6085,71 @@ Commands:
     <message>
         <location line="+2"/>
         <source>events</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>site</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>repeat</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cycles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>velocity [mm/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>frequency [Hz]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>amplitude [mm]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>depth [mm]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>slab thickness [mm]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>puncture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>relaxation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>internal puncture</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -7068,7 +7135,7 @@ Commands:
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+109"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+111"/>
         <source>Stiffness before puncture: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7111,7 +7178,7 @@ Commands:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-599"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-609"/>
         <location line="+397"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>

@@ -428,10 +428,10 @@ void CalibrationWizard::refit()
     updating_ = false;
     if (hasFit_) {
         QString text = tr("d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points")
-                           .arg(fit_.slope_V_per_g * 1000.0, 0, 'f', 4)
-                           .arg(fit_.intercept_V, 0, 'f', 4)
-                           .arg(fit_.r2, 0, 'f', 6)
-                           .arg(fit_.rms_V * 1000.0, 0, 'f', 3)
+                           .arg(QLocale().toString(fit_.slope_V_per_g * 1000.0, 'f', 4))
+                           .arg(QLocale().toString(fit_.intercept_V, 'f', 4))
+                           .arg(QLocale().toString(fit_.r2, 'f', 6))
+                           .arg(QLocale().toString(fit_.rms_V * 1000.0, 'f', 3))
                            .arg(fitRows_.size());
         suspect_->clear();
         if (worst >= 0)

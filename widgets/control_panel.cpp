@@ -48,7 +48,9 @@ QString num(double value, int decimals)
 {
     QLocale locale;
     locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale.toString(value, 'f', decimals);
+    // Noise about zero reads "0.000", not "-0.000".
+    const double scale = std::pow(10.0, decimals);
+    return locale.toString(std::round(value * scale) == 0.0 ? 0.0 : value, 'f', decimals);
 }
 
 // The panel must fit a 1366x768 laptop without scrolling: group boxes with tight margins.
@@ -524,7 +526,7 @@ void ControlPanel::updateControls()
     set("position", tr("%1 mm").arg(num(s.position_mm, 3)));
     const double margin = state_.forceLimit_N - s.force_N;
     set("margin",
-        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(100.0 * margin / state_.forceLimit_N, 0))
+        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(std::min(100.0, 100.0 * margin / state_.forceLimit_N), 0))
                                 : tr("no limit set"),
         state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
     set("calibration", s.calibrationName.isEmpty() ? tr("none") : calibrationDisplayName(s.calibrationName),

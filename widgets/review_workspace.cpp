@@ -433,7 +433,7 @@ void ReviewWorkspace::updateKeysHelp()
 {
     QStringList keys;
     for (const LabelDef& d : model_->definitions())
-        keys << QStringLiteral("%1 %2/%3").arg(QKeySequence(d.key).toString(QKeySequence::NativeText), trackDisplayName(d.track), d.label);
+        keys << QStringLiteral("%1 %2/%3").arg(QKeySequence(d.key).toString(QKeySequence::NativeText), trackDisplayName(d.track), labelDisplayName(d.label));
     keysHelp_->setText(tr("Keys: %1 · S split · Del delete · Ctrl+Z undo").arg(keys.join(QStringLiteral(", "))));
 }
 

@@ -118,7 +118,7 @@ void Timeline::paintEvent(QPaintEvent*)
             const auto next = std::upper_bound(xs.begin(), xs.end(), x);
             const int room = (next == xs.end() ? axisLeft() + axisWidth() + 200 : *next) - x - 6;
             if (room >= fontMetrics().horizontalAdvance(QStringLiteral("ab…")))
-                p.drawText(x + 3, y + rowHeight() - 6, fontMetrics().elidedText(l.label, Qt::ElideRight, room));
+                p.drawText(x + 3, y + rowHeight() - 6, fontMetrics().elidedText(labelDisplayName(l.label), Qt::ElideRight, room));
         } else {
             const QRect r(QPoint(xOf(shown.start_s), y + 3), QPoint(xOf(shown.end_s), y + rowHeight() - 4));
             p.fillRect(r, c.lighter(130));

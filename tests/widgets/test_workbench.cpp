@@ -454,6 +454,11 @@ private slots:
             QVERIFY2(csv.contains(",pooled,") && csv.contains(",mean of runs,") && !csv.contains("gepoolt"), csv.constData());
             QVERIFY(nb::fitTableLatex(pooled).contains("gepoolt"));
             QCOMPARE(nb::tableValueDisplayName(QStringLiteral("pooled")), QStringLiteral("gepoolt"));
+            // Event labels and factors, stored in English, said in German (Review's keys, the
+            // timeline, Analysis ▸ By factor).
+            QCOMPARE(nb::labelDisplayName(QStringLiteral("puncture")), QStringLiteral("Durchstich"));
+            QCOMPARE(nb::labelDisplayName(QStringLiteral("b1")), QStringLiteral("b1"));
+            QCOMPARE(nb::factorDisplayName(QStringLiteral("frequency_hz")), QStringLiteral("Frequenz [Hz]"));
         }
         {
             // A template's plan that an English window wrote is said in German in the Plan

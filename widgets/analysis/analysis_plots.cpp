@@ -1,4 +1,5 @@
 #include "analysis_plots.h"
+#include "core/data_names.h"
 #include "core/tr.h"
 
 #include "core/models.h"
@@ -6,6 +7,7 @@
 #include "core/export/dataset.h"
 #include "core/labels.h"
 
+#include <QLocale>
 #include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
@@ -156,7 +158,7 @@ void plotStiffness(QCustomPlot* plot, const SessionAnalysis& a, const QString& g
     const StiffnessModel& m = g->summary.pooled.quadratic.model;
     line(plot, px, py, QPen(Qt::black, 2.0, Qt::DashLine),
          // On three lines: one long line is wider than a one-column figure.
-         nb::TrViews::tr("pooled fit:\nF = %1 x + %2 x²\n(F in N, x in mm)").arg(m.a1_N_per_mm, 0, 'f', 4).arg(m.a2_N_per_mm2, 0, 'f', 4));
+         nb::TrViews::tr("pooled fit:\nF = %1 x + %2 x²\n(F in N, x in mm)").arg(QLocale().toString(m.a1_N_per_mm, 'f', 4), QLocale().toString(m.a2_N_per_mm2, 'f', 4)));
     fitRanges(plot);
     plot->replot();
 }
@@ -309,7 +311,7 @@ void plotByFactor(QCustomPlot* plot, const std::vector<RunFactorValues>& runs, c
                   const QString& factor, const FactorQuantity& q)
 {
     const QString unit = q.unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(q.unit);
-    reset(plot, nb::TrViews::tr("%1 by %2: mean ± std, n per level").arg(q.title, factor), factor, q.title + unit);
+    reset(plot, nb::TrViews::tr("%1 by %2: mean ± std, n per level").arg(q.title, factorDisplayName(factor)), factorDisplayName(factor), q.title + unit);
     auto ticker = QSharedPointer<QCPAxisTickerText>::create();
     QVector<double> runX, runY, meanX, meanY, spread;
     for (std::size_t i = 0; i < cells.size(); ++i) {

@@ -474,7 +474,7 @@ QStringList AnalysisWorkspace::saveAllFigures(const QString& dir)
                                                       {QStringLiteral("friction_phases"), phasesPlot_},
                                                       {QStringLiteral("validation"), validationPlot_}};
     std::vector<std::pair<QString, QCustomPlot*>> all(std::begin(plots), std::end(plots));
-    if (!factorChoice_->currentText().isEmpty())
+    if (!factorChoice_->currentData().toString().isEmpty())
         all.emplace_back(QStringLiteral("by_factor"), factorPlot_);
     for (const auto& [name, plot] : all)
         for (const char* ext : {".png", ".pdf"}) {
@@ -522,7 +522,17 @@ void AnalysisWorkspace::refreshViews()
     if (factors.isEmpty())
         factors = datasetSettingFactors(dataset_);
     factorValues_ = runFactorValues(dataset_, analysis_, factors);
-    refill(factorChoice_, factors);
+    {
+        // The factor's key is the item's data (plans, tables and file names use it), its
+        // name in the operator's language the text.
+        const QString keep = factorChoice_->currentData().toString();
+        const QSignalBlocker block(factorChoice_);
+        factorChoice_->clear();
+        for (const QString& f : factors)
+            factorChoice_->addItem(factorDisplayName(f), f);
+        const int i = factorChoice_->findData(keep);
+        factorChoice_->setCurrentIndex(i >= 0 ? i : (factors.isEmpty() ? -1 : 0));
+    }
     {
         const QString keep = quantityChoice_->currentData().toString();
         const QSignalBlocker block(quantityChoice_);
@@ -591,7 +601,7 @@ FitTable AnalysisWorkspace::factorTableFor(const QString& factor) const
 
 void AnalysisWorkspace::showByFactor()
 {
-    const QString factor = factorChoice_->currentText();
+    const QString factor = factorChoice_->currentData().toString();
     const QString key = quantityChoice_->currentData().toString();
     const auto q = std::find_if(factorQuantities().begin(), factorQuantities().end(), [&](const FactorQuantity& x) { return x.key == key; });
     if (factor.isEmpty() || q == factorQuantities().end()) {
@@ -666,7 +676,7 @@ void AnalysisWorkspace::exportCurrentFigure()
     const QString name = tab == 0 ? QStringLiteral("stiffness")
                          : tab == 1 ? QStringLiteral("friction")
                          : tab == 2 ? QStringLiteral("validation")
-                                    : QStringLiteral("by_factor_") + factorChoice_->currentText();
+                                    : QStringLiteral("by_factor_") + factorChoice_->currentData().toString();
     FileChoice choice{tr("Save figure"), dir_, tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
                       QFileDialog::AnyFile, QFileDialog::AcceptSave, name};
     chooseFileModeless(this, choice, [this, plots](const QString& path) {
@@ -693,7 +703,7 @@ void AnalysisWorkspace::exportCurrentTables()
     else if (tab == 2)
         tables = {{QStringLiteral("validation"), validationTable(analysis_)}};
     else
-        tables = {{QStringLiteral("by_factor_") + factorChoice_->currentText(), factorTableFor(factorChoice_->currentText())}};
+        tables = {{QStringLiteral("by_factor_") + factorChoice_->currentData().toString(), factorTableFor(factorChoice_->currentData().toString())}};
     FileChoice choice{tr("Save tables (CSV and LaTeX) into"), dir_, QString(), QFileDialog::Directory};
     chooseFileModeless(this, choice, [this, tables](const QString& dir) {
         try {
