@@ -102,6 +102,11 @@ int cmdSync(const QStringList& args, Io io)
             options.maxOffset_s = std::min(options.maxOffset_s, index.duration_s() + (run.time_s.back() - run.time_s.front()) + 1.0);
         const video::VideoSync vs = video::syncVideoToRun(index, run, vso);
         const SyncResult& r = vs.result;
+        // Nothing in the picture moved with the recording: there is no offset to be sure of,
+        // and no uncertainty to give either (it read "0.00 frames").
+        const bool measured = r.correlation > 0.0;
+        // A limit shorter than the records leaves offsets beyond it untried.
+        const bool limited = options.maxOffset_s < index.duration_s() + (run.size() > 1 ? run.time_s.back() - run.time_s.front() : 0.0);
         if (parser.isSet(trace)) {
             QFile f(parser.value(trace));
             if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
@@ -123,8 +128,9 @@ int cmdSync(const QStringList& args, Io io)
                 o[QStringLiteral("onset_offset_s")] = *r.onsetOffset_s;
             o[QStringLiteral("frames")] = index.size();
             o[QStringLiteral("drift")] = r.drift;
-            o[QStringLiteral("uncertainty_s")] = r.uncertainty_s;
-            o[QStringLiteral("uncertainty_frames")] = r.uncertainty_s / index.frameDuration();
+            o[QStringLiteral("uncertainty_s")] = measured ? QJsonValue(r.uncertainty_s) : QJsonValue();
+            o[QStringLiteral("uncertainty_frames")] = measured ? QJsonValue(r.uncertainty_s / index.frameDuration()) : QJsonValue();
+            o[QStringLiteral("max_offset_s")] = options.maxOffset_s;
             o[QStringLiteral("scale_px_per_mm")] = r.scale_px_per_mm;
             o[QStringLiteral("picture_lag_s")] = r.pictureLag_s;
             o[QStringLiteral("picture_lag_frames")] = r.pictureLag_s / index.frameDuration();
@@ -148,7 +154,8 @@ int cmdSync(const QStringList& args, Io io)
             if (r.onsetOffset_s)
                 io.out << nb::TrCli::tr("onsets say:  %1 s\n").arg(*r.onsetOffset_s, 0, 'f', 4);
             io.out << nb::TrCli::tr("drift:       %1 %\n").arg(100.0 * r.drift, 0, 'f', 4)
-                   << nb::TrCli::tr("uncertainty: %1 frames\n").arg(r.uncertainty_s / index.frameDuration(), 0, 'f', 2);
+                   << (measured ? nb::TrCli::tr("uncertainty: %1 frames\n").arg(r.uncertainty_s / index.frameDuration(), 0, 'f', 2)
+                                : nb::TrCli::tr("uncertainty: unknown (nothing in the picture moved with the recording)\n"));
             if (r.pictureLag_s > 0.0)
                 io.out << nb::TrCli::tr("coded late:  %1 frames (taken off the offset)\n").arg(r.pictureLag_s / index.frameDuration(), 0, 'f', 2);
             if (!vs.track.time_s.empty()) {
@@ -158,9 +165,14 @@ int cmdSync(const QStringList& args, Io io)
                               .arg(vs.track.axisDetected ? nb::TrCli::tr("found in the picture") : nb::TrCli::tr("given"));
             }
             io.out << nb::TrCli::tr("method:      %1\n").arg(r.method);
-            if (!r.acceptable())
+            if (!r.acceptable()) {
                 io.out << nb::TrCli::tr("LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it\n")
                               .arg(kSyncAcceptConfidence, 0, 'f', 2);
+                if (limited)
+                    io.out << nb::TrCli::tr("offsets were tried within ±%1 s (--max-offset): if the video started further from the "
+                                            "recording than that, try a larger --max-offset\n")
+                                  .arg(options.maxOffset_s, 0, 'g', 4);
+            }
         }
         return Ok;
     } catch (const RunFileError& e) {

@@ -4429,12 +4429,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location filename="../app/cmd_labels.cpp" line="-23"/>
-        <location filename="../app/cmd_sync.cpp" line="+15"/>
+        <location filename="../app/cmd_sync.cpp" line="+20"/>
         <source>%1: cannot write the trace here</source>
         <translation>%1: die Spur kann hier nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="+37"/>
+        <location filename="../app/cmd_sync.cpp" line="+38"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4476,6 +4476,13 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>uncertainty: unknown (nothing in the picture moved with the recording)
+</source>
+        <translation>Unsicherheit: unbekannt (nichts im Bild bewegte sich mit der Aufzeichnung)
+</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>coded late:  %1 frames (taken off the offset)
 </source>
@@ -4513,8 +4520,15 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ (unter %1): den Versatz vor der Verwendung prüfen, indem ein Ereignis in beiden markiert wird
 </translation>
     </message>
+    <message>
+        <location line="+3"/>
+        <source>offsets were tried within ±%1 s (--max-offset): if the video started further from the recording than that, try a larger --max-offset
+</source>
+        <translation>Versätze wurden innerhalb ±%1 s versucht (--max-offset): begann das Video weiter von der Aufzeichnung entfernt, ein größeres --max-offset versuchen
+</translation>
+    </message>
     <message numerus="yes">
-        <location line="+10"/>
+        <location line="+12"/>
         <source>the video %1 has only %n frame(s)</source>
         <translation>
             <numerusform>das Video %1 hat nur %n Bild</numerusform>

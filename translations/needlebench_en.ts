@@ -4369,12 +4369,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location filename="../app/cmd_labels.cpp" line="-23"/>
-        <location filename="../app/cmd_sync.cpp" line="+15"/>
+        <location filename="../app/cmd_sync.cpp" line="+20"/>
         <source>%1: cannot write the trace here</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="+37"/>
+        <location filename="../app/cmd_sync.cpp" line="+38"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4406,6 +4406,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+1"/>
         <source>uncertainty: %1 frames
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uncertainty: unknown (nothing in the picture moved with the recording)
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -4443,8 +4449,14 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 </source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="+3"/>
+        <source>offsets were tried within ±%1 s (--max-offset): if the video started further from the recording than that, try a larger --max-offset
+</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
-        <location line="+10"/>
+        <location line="+12"/>
         <source>the video %1 has only %n frame(s)</source>
         <translation>
             <numerusform>the video %1 has only %n frame</numerusform>

@@ -301,6 +301,27 @@ private slots:
         QCOMPARE(code, 1);
     }
 
+    // A picture in which nothing moves (a grey screen): no uncertainty is claimed for the offset
+    // it cannot measure (it said "0.00 frames"), and a low answer names the offsets tried.
+    void aStillPictureMeasuresNothing()
+    {
+        const QString grey = dir_.filePath("grey.mp4");
+        QProcess ffmpeg;
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-f", "lavfi", "-i", "color=c=gray:size=320x240:rate=29.97:duration=6",
+                                               "-c:v", "libx264", "-pix_fmt", "yuv420p", grey});
+        if (!ffmpeg.waitForStarted(10000))
+            QSKIP("the ffmpeg tool is not installed");
+        QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
+        int code = -1;
+        const QJsonObject r = runJson({"sync", run_, grey, "--json", "--max-offset", "3"}, &code);
+        QCOMPARE(code, 0);
+        QVERIFY(!r["acceptable"].toBool());
+        QVERIFY2(r["uncertainty_frames"].isNull() && r["uncertainty_s"].isNull(), qPrintable(QJsonDocument(r).toJson()));
+        QCOMPARE(r["max_offset_s"].toDouble(), 3.0);
+        const nbtest::CliResult text = nbtest::runCli({"sync", run_, grey, "--max-offset", "3"}, 240000);
+        QVERIFY2(text.out.contains(QStringLiteral("uncertainty: unknown")) && text.out.contains(QStringLiteral("--max-offset")), qPrintable(text.out));
+    }
+
     // The operator may draw the needle's line from the tip to the shaft as well as the other
     // way: it is turned to point from the shaft to the tip (what the tracker assumes), shown so
     // in the answer, and the offset is the same either way.
