@@ -1077,6 +1077,12 @@ void ReviewWorkspace::updateTrace()
     QVector<double> t(s.time_s.begin(), s.time_s.end()), x(s.value.begin(), s.value.end());
     trackedGraph_->setData(t, x, true);
     trackedGraph_->setName(pending ? tr("needle tracked in the video (at the offset found)") : tr("needle tracked in the video"));
+    // The longer name of a pending sync does not fit two to a row beside the video ("recorded
+    // positio" was cut off in German): one a row while it waits.
+    if (plot_->legend->wrap() != (pending ? 1 : 2)) {
+        plot_->legend->setWrap(pending ? 1 : 2);
+        plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    }
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 

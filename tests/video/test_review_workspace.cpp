@@ -616,6 +616,13 @@ private slots:
         QVERIFY(finished.wait(120000));
         QVERIFY(ws.pendingSync());
         QCOMPARE(button->text(), QStringLiteral("Auto sync"));
+        // The trace's longer name while the sync waits: the legend one name a row, so that none
+        // is cut off beside the video; two a row again once it is decided.
+        auto* plot = ws.findChild<QCustomPlot*>(QStringLiteral("reviewForcePlot"));
+        QVERIFY(plot);
+        QCOMPARE(plot->legend->wrap(), 1);
+        ws.rejectSync();
+        QCOMPARE(plot->legend->wrap(), 2);
     }
 
     void badFilesAreReported()
