@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
+#include <QStyle>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -59,7 +60,14 @@ CalibrationWizard::CalibrationWizard(const QString& sensorName, QWidget* parent)
     table_->verticalHeader()->setVisible(false);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setMinimumWidth(360);
+    // Wide enough for every column's title with the scroll bar beside them: in German the
+    // last column ("Verwenden") went behind a horizontal scroll bar.
+    {
+        int titles = 0;
+        for (int c = 0; c < Columns; ++c)
+            titles += table_->horizontalHeader()->fontMetrics().horizontalAdvance(table_->horizontalHeaderItem(c)->text()) + 28;
+        table_->setMinimumWidth(std::max(360, titles + table_->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 2 * table_->frameWidth() + 8));
+    }
     connect(table_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
         if (updating_)
             return;
