@@ -119,6 +119,11 @@ int cmdLabels(const QStringList& args, Io io)
             }
             if (videoPath.isEmpty())
                 videoPath = videoBesideRun(runPath);
+            // A video clock given for no video: said, not silently dropped.
+            if (videoPath.isEmpty() && given)
+                io.err << nb::TrCli::tr("needlebench labels: no video for %1 (none linked, none beside it): "
+                                        "--video-offset-s and --video-drift are not used\n")
+                              .arg(QFileInfo(runPath).fileName());
             if (!mapping && link && !videoPath.isEmpty() && link->method != SyncMethod::None &&
                 QFileInfo(link->video).canonicalFilePath() == QFileInfo(videoPath).canonicalFilePath()) {
                 mapping = link->mapping;

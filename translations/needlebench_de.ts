@@ -198,7 +198,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+27"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+28"/>
         <source>Calibrate force sensor – %1</source>
         <translation>Kraftsensor kalibrieren – %1</translation>
     </message>
@@ -253,7 +253,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Verwenden</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+25"/>
         <location line="+5"/>
         <source>mass [g]</source>
         <translation>Masse [g]</translation>
@@ -2539,7 +2539,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>im Video verfolgte Nadel (beim gefundenen Versatz)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+34"/>
         <source>, drift %1 %</source>
         <translation>, Drift %1 %</translation>
     </message>
@@ -2554,7 +2554,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-761"/>
+        <location line="-767"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2689,7 +2689,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+122"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -3826,7 +3826,14 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+6"/>
+        <source>needlebench labels: no video for %1 (none linked, none beside it): --video-offset-s and --video-drift are not used
+</source>
+        <translation>needlebench labels: kein Video zu %1 (keines verknüpft, keines daneben): --video-offset-s und --video-drift werden nicht verwendet
+</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>needlebench labels: %1: the surface&apos;s motion could not be read (%2); no relaxation suggested
 </source>
         <translation>needlebench labels: %1: die Bewegung der Oberfläche ließ sich nicht lesen (%2); keine Relaxation vorgeschlagen
@@ -3840,12 +3847,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-125"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
     <message>
-        <location line="+127"/>
+        <location line="+132"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2

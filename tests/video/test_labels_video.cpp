@@ -150,6 +150,16 @@ private slots:
         QVERIFY2(r.err.contains(QStringLiteral("beside.avi")), qPrintable(r.err));
         QCOMPARE(r.json()["video"].toObject()["used"].toBool(), false);
         QVERIFY(!r.json()["labels"].toArray().isEmpty());
+        // A video clock given where there is no video is said to be unused.
+        {
+            QTemporaryDir alone;
+            const QString lone = alone.filePath(QStringLiteral("lone.csv"));
+            QVERIFY(QFile::copy(blind_, lone));
+            const nbtest::CliResult noVideo = nbtest::runCli({"labels", "suggest", lone, "--video-offset-s", "2.3"});
+            QCOMPARE(noVideo.code, 0);
+            QVERIFY2(noVideo.err.contains(QStringLiteral("--video-offset-s")) && noVideo.err.contains(QStringLiteral("lone.csv")),
+                     qPrintable(noVideo.err));
+        }
         // Offsets that are not numbers are usage errors.
         QCOMPARE(nbtest::runCli({"labels", "suggest", blind_, "--video", video_, "--video-offset-s", "soon"}).code, 2);
         QCOMPARE(nbtest::runCli({"labels", "suggest", blind_, "--video-drift", "0.5"}).code, 2);
