@@ -683,7 +683,8 @@ void MainWindow::showMessage(const QString& text, bool alarm)
     QFont font = statusBar()->font();
     font.setBold(alarm);
     const QFontMetrics metrics(font);
-    const int room = statusBar()->width() - statusLabel_->width() - 4 * metrics.averageCharWidth();
+    // Before the window is shown (a device that failed at start) the bar has no width yet.
+    const int room = statusBar()->isVisible() ? statusBar()->width() - statusLabel_->width() - 4 * metrics.averageCharWidth() : QWIDGETSIZE_MAX;
     statusBar()->showMessage(metrics.elidedText(text, Qt::ElideMiddle, std::max(room, 160)));
     statusBar()->setToolTip(text);  // whole, where the bar is too narrow for it
 }
