@@ -1674,14 +1674,14 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="-26"/>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-618"/>
+        <location line="-619"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
@@ -1702,12 +1702,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-404"/>
+        <location line="-405"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -6768,14 +6768,13 @@ Befehle:
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <location filename="../video/packet_index.cpp" line="+71"/>
+        <location filename="../video/orientation.cpp" line="+24"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
     <message>
-        <location line="+36"/>
-        <location filename="../video/packet_index.cpp" line="-5"/>
+        <location filename="../video/frame_index.cpp" line="+44"/>
+        <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
@@ -7184,7 +7183,7 @@ Befehle:
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location filename="../video/packet_index.cpp" line="+20"/>
+        <location filename="../video/packet_index.cpp" line="+16"/>
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation>aus den Paketen der Datei indiziert: wiederholte Bilder sind nicht als Duplikate markiert</translation>
     </message>

@@ -1672,13 +1672,13 @@ or without contact</source>
     </message>
     <message>
         <location line="-26"/>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-618"/>
+        <location line="-619"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1699,12 +1699,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-404"/>
+        <location line="-405"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6674,14 +6674,13 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
-        <location filename="../video/packet_index.cpp" line="+71"/>
+        <location filename="../video/orientation.cpp" line="+24"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+36"/>
-        <location filename="../video/packet_index.cpp" line="-5"/>
+        <location filename="../video/frame_index.cpp" line="+44"/>
+        <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7090,7 +7089,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/packet_index.cpp" line="+20"/>
+        <location filename="../video/packet_index.cpp" line="+16"/>
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation type="unfinished"></translation>
     </message>

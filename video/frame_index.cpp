@@ -186,10 +186,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     const int rotation = takeRotation(cap);
     index.width = int(cap.get(cv::CAP_PROP_FRAME_WIDTH));
     index.height = int(cap.get(cv::CAP_PROP_FRAME_HEIGHT));
-    if (quarterTurn(rotation))
-        std::swap(index.width, index.height);
-    if (rotation != 0)
-        index.warnings << nb::TrDevices::tr("the file says its picture is turned by %1°: shown turned, as players show it").arg(rotation);
+    turnIndexUpright(index, rotation);
     index.fpsNominal = cap.get(cv::CAP_PROP_FPS);
     index.containerFrames = std::max(0, int(cap.get(cv::CAP_PROP_FRAME_COUNT)));
     const int fourcc = int(cap.get(cv::CAP_PROP_FOURCC));

@@ -1,6 +1,9 @@
 #include "orientation.h"
+#include "core/tr.h"
+#include "frame_index.h"
 
 #include <cmath>
+#include <utility>
 
 namespace nb::video {
 
@@ -10,6 +13,15 @@ int takeRotation(cv::VideoCapture& cap)
     const int deg = int(std::lround(cap.get(cv::CAP_PROP_ORIENTATION_META)));
     const int turned = ((deg % 360) + 360) % 360;
     return turned == 90 || turned == 180 || turned == 270 ? turned : 0;
+}
+
+void turnIndexUpright(FrameIndex& index, int rotation_deg)
+{
+    if (rotation_deg == 0)
+        return;
+    if (rotation_deg == 90 || rotation_deg == 270)
+        std::swap(index.width, index.height);
+    index.warnings << nb::TrDevices::tr("the file says its picture is turned by %1°: shown turned, as players show it").arg(rotation_deg);
 }
 
 void turnUpright(cv::Mat& image, int rotation_deg)

@@ -12,7 +12,9 @@ namespace nb::video {
 int takeRotation(cv::VideoCapture& cap);
 // `image` as players show it for a tag of `rotation_deg`.
 void turnUpright(cv::Mat& image, int rotation_deg);
-// Width and height as shown: swapped for a quarter turn.
-inline bool quarterTurn(int rotation_deg) { return rotation_deg == 90 || rotation_deg == 270; }
+struct FrameIndex;
+// The index's width and height as shown (swapped for a quarter turn), and the tag said in its
+// warnings; nothing for 0.
+void turnIndexUpright(FrameIndex& index, int rotation_deg);
 
 }  // namespace nb::video

@@ -101,11 +101,7 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
     if (!cap.isOpened() || !cap.grab())
         throw VideoError(path, nb::TrDevices::tr("no frame could be decoded (truncated or corrupt file?)"));
     const double first = cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
-    if (const int rotation = takeRotation(cap); rotation != 0) {
-        if (quarterTurn(rotation))
-            std::swap(index.width, index.height);
-        index.warnings << nb::TrDevices::tr("the file says its picture is turned by %1°: shown turned, as players show it").arg(rotation);
-    }
+    turnIndexUpright(index, takeRotation(cap));
     index.containerFrames = int(list.size());
     index.frames.reserve(list.size());
     for (const Packet& p : list) {

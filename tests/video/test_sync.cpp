@@ -309,8 +309,7 @@ private slots:
         QProcess ffmpeg;
         ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-f", "lavfi", "-i", "color=c=gray:size=320x240:rate=29.97:duration=6",
                                                "-c:v", "libx264", "-pix_fmt", "yuv420p", grey});
-        if (!ffmpeg.waitForStarted(10000))
-            QSKIP("the ffmpeg tool is not installed");
+        QVERIFY2(ffmpeg.waitForStarted(10000), "the ffmpeg tool is missing (scripts/install-deps.sh installs it)");
         QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
         int code = -1;
         const QJsonObject r = runJson({"sync", run_, grey, "--json", "--max-offset", "3"}, &code);
