@@ -613,16 +613,20 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
         wizard_->setDeviceTime(s.deviceTime_s);
     // The devices' description (a simulated rig's tissue, tip and seed; a real device's serial
     // and port) is shortened here and whole in the tooltip: the messages beside it need room.
-    const QFontMetrics metrics = statusLabel_->fontMetrics();
     const QString devices = engine_->deviceDescription();
-    const QString shortDevices = metrics.elidedText(devices, Qt::ElideRight, 28 * metrics.averageCharWidth());
-    const auto summary = [this, &shortDevices](double rateHz, qint64 samples, qint64 dropped) {
-        return tr("%1 · %2 Hz · %3 samples · dropped %4").arg(shortDevices).arg(rateHz, 0, 'f', 0).arg(samples).arg(dropped);
+    const auto summary = [this](double rateHz, qint64 samples, qint64 dropped) {
+        return tr("%1 · %2 Hz · %3 samples · dropped %4").arg(summaryDevices_).arg(rateHz, 0, 'f', 0).arg(samples).arg(dropped);
     };
+    // Measured when the devices change, not at every status (25 a second).
+    if (devices != summaryDevicesWhole_) {
+        const QFontMetrics metrics = statusLabel_->fontMetrics();
+        summaryDevicesWhole_ = devices;
+        summaryDevices_ = metrics.elidedText(devices, Qt::ElideRight, 28 * metrics.averageCharWidth());
+        // As wide as a day's counts from the start, so that the summary does not grow under the
+        // message beside it (elided to the room left when it was shown) as the samples add up.
+        statusLabel_->setMinimumWidth(metrics.horizontalAdvance(summary(10000.0, 99999999, 99999)) + 2 * statusLabel_->margin() + 4);
+    }
     statusLabel_->setText(summary(s.rateHz, qint64(s.samples), qint64(s.dropped + s.overruns)));
-    // As wide as a day's counts from the start, so that the summary does not grow under the
-    // message beside it (elided to the room left when it was shown) as the samples add up.
-    statusLabel_->setMinimumWidth(metrics.horizontalAdvance(summary(std::max(s.rateHz, 10000.0), 99999999, 99999)) + 2 * statusLabel_->margin() + 4);
     QString tip = tr("%1\n%n plot frame(s) drawn", nullptr, plots_->framesDrawn()).arg(devices);
     if (!s.realtimeWarning.isEmpty())
         tip += QLatin1Char('\n') + s.realtimeWarning;

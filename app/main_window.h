@@ -191,6 +191,7 @@ private:
     bool quitConfirmed_ = false;
     QTimer* drainTimer_ = nullptr;
     QLabel* statusLabel_ = nullptr;
+    QString summaryDevicesWhole_, summaryDevices_;  // the devices' description, and as the summary shows it
     devices::LiveRun* liveRun_ = nullptr;  // what the plots and the calibration wizard observe
     bool runIsLinear_ = false;
     QString lastRunPath_, lastEndReason_;
