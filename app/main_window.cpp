@@ -174,6 +174,8 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     plots_->setForceLimit(panel_->forceLimit());
 
     openStartupSession();
+    if (options_.persistSettings)
+        restoreWorkspace();
 
     drainTimer_ = new QTimer(this);
     drainTimer_->setInterval(25);  // 40 frames/s at most
@@ -430,6 +432,28 @@ void MainWindow::openStartupSession()
         if (options_.welcome)
             QTimer::singleShot(0, this, &MainWindow::showWelcome);
     }
+}
+
+void MainWindow::saveWorkspace(QSettings& settings) const
+{
+    settings.setValue(QStringLiteral("workspace/tab"), tabs_->currentIndex());
+    settings.setValue(QStringLiteral("review/run"), review_->runPath());
+    settings.setValue(QStringLiteral("review/cursor_s"), review_->cursorTime());
+}
+
+void MainWindow::restoreWorkspace()
+{
+    const QSettings settings;
+    const QString run = settings.value(QStringLiteral("review/run")).toString();
+    // A run of another session is not this one's to show (reviewBelongsToTheOpenSession).
+    const bool ours = session_ && !run.isEmpty() && QFileInfo(run).absoluteDir() == QDir(session_->dir());
+    if (ours && QFileInfo::exists(run) && review_->openRun(run))
+        review_->setCursorTime(settings.value(QStringLiteral("review/cursor_s")).toDouble());
+    else if (ours)
+        showMessage(tr("The run in review when NeedleBench closed is gone: %1").arg(QDir::toNativeSeparators(run)));
+    const int tab = settings.value(QStringLiteral("workspace/tab"), 0).toInt();
+    if (tab > 0 && tab < tabs_->count() && (tabs_->widget(tab) != review_ || !review_->runPath().isEmpty()))
+        tabs_->setCurrentIndex(tab);
 }
 
 QStringList MainWindow::recentSessions() const
@@ -726,6 +750,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
         settings.setValue(QStringLiteral("window/state"), saveState());
         panel_->saveSettings(settings);
+        saveWorkspace(settings);
     }
     QMainWindow::closeEvent(event);
 }

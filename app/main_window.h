@@ -20,6 +20,7 @@ class QTimer;
 class QDockWidget;
 class QTabWidget;
 class QMenu;
+class QSettings;
 
 namespace nb {
 
@@ -132,6 +133,10 @@ private:
     void buildMenus();
     // Startup, welcome, recent sessions, video and export actions (issue 14).
     void openStartupSession();
+    // What the operator was looking at when the window closed: the tab, and Review's run and
+    // cursor (a run of the session opened at start only).
+    void saveWorkspace(QSettings& settings) const;
+    void restoreWorkspace();
     QStringList recentSessions() const;
     void rememberRecentSession(const QString& dir);
     void addDayActions(QMenu* sessionMenu);

@@ -1405,7 +1405,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+463"/>
+        <location filename="../app/main_window.cpp" line="+487"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1468,7 +1468,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-376"/>
+        <location filename="../app/main_window.cpp" line="-398"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1613,6 +1613,11 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Keine Sitzung offen: eine neue beginnen oder eine öffnen (Menü Sitzung).</translation>
     </message>
     <message>
+        <location line="+22"/>
+        <source>The run in review when NeedleBench closed is gone: %1</source>
+        <translation>Der beim Beenden von NeedleBench geprüfte Lauf ist nicht mehr da: %1</translation>
+    </message>
+    <message>
         <location line="+34"/>
         <source>Open &amp;video for the run in review…</source>
         <translation>&amp;Video zum Lauf in der Sichtung öffnen…</translation>
@@ -1658,7 +1663,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+60"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation>Nichts bewegt sich oder zeichnet jetzt auf. Beenden?</translation>
     </message>
@@ -1681,17 +1686,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-619"/>
+        <location line="-647"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+534"/>
+        <location line="+556"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="+12"/>
         <source>%1
 %n plot frame(s) drawn</source>
         <translation>
@@ -1707,7 +1712,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-405"/>
+        <location line="-431"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

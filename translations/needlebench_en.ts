@@ -1404,7 +1404,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+463"/>
+        <location filename="../app/main_window.cpp" line="+487"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1467,7 +1467,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-376"/>
+        <location filename="../app/main_window.cpp" line="-398"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1611,6 +1611,11 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+22"/>
+        <source>The run in review when NeedleBench closed is gone: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+34"/>
         <source>Open &amp;video for the run in review…</source>
         <translation type="unfinished"></translation>
@@ -1656,7 +1661,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+60"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1678,17 +1683,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-619"/>
+        <location line="-647"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+534"/>
+        <location line="+556"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="+12"/>
         <source>%1
 %n plot frame(s) drawn</source>
         <translation>
@@ -1704,7 +1709,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-405"/>
+        <location line="-431"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

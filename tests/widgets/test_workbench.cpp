@@ -34,6 +34,8 @@
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QSpinBox>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -99,6 +101,7 @@ class TestWorkbench : public QObject {
 private slots:
     void initTestCase()
     {
+        QStandardPaths::setTestModeEnabled(true);  // the settings of the restart test, not the user's
         QCoreApplication::setOrganizationName(QStringLiteral("NeedleBenchTest"));
         QCoreApplication::setApplicationName(QStringLiteral("test_workbench"));
     }
@@ -395,6 +398,65 @@ private slots:
         QVERIFY(w.createSession(b, {}));
         QVERIFY(w.reviewWorkspace()->runPath().isEmpty());
         QCOMPARE(w.reviewWorkspace()->labelModel()->labels().size(), std::size_t(0));
+    }
+
+    // What the operator looked at comes back after a restart: the session, the Review tab, its
+    // run and the place in it. A run deleted meanwhile is said to be gone, and Record shows.
+    void restartKeepsTheReview()
+    {
+        QTemporaryDir tmp;
+        const QString a = tmp.filePath(QStringLiteral("a"));
+        nb::Session::create(a, {});
+        const QString run = QDir(a).filePath(QStringLiteral("run_001_linear.csv"));
+        {
+            nb::RunFileWriter writer;
+            nb::Metadata meta;
+            meta.set(QStringLiteral("motion"), QStringLiteral("linear"));
+            writer.open(run, meta, {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")});
+            for (int i = 0; i < 500; ++i) {
+                const double row[] = {i * 0.002, i * 0.008, 0.001 * i};
+                writer.writeRow(row);
+            }
+            nb::Metadata footer;
+            footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
+            writer.close(footer);
+        }
+        auto persisted = [](const QString& dir) {
+            nb::WorkbenchOptions o = options(dir, false);
+            o.persistSettings = true;
+            return o;
+        };
+        {
+            nb::MainWindow w(persisted(a));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            w.reviewRun(run);
+            w.reviewWorkspace()->setCursorTime(0.5);
+            QVERIFY(w.close());
+        }
+        {
+            nb::MainWindow w(persisted(QString()));  // the last session, as a plain start opens it
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.session());
+            QCOMPARE(QDir(w.session()->dir()).canonicalPath(), QDir(a).canonicalPath());
+            QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.reviewWorkspace()));
+            QCOMPARE(w.reviewWorkspace()->runPath(), run);
+            QCOMPARE(w.reviewWorkspace()->cursorTime(), 0.5);
+            QVERIFY(w.close());
+        }
+        QVERIFY(QFile::remove(run));
+        {
+            nb::MainWindow w(persisted(QString()));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.plots()));
+            QVERIFY(w.reviewWorkspace()->runPath().isEmpty());
+            QVERIFY2(w.statusBar()->toolTip().contains(QStringLiteral("run_001_linear.csv")), qPrintable(w.statusBar()->toolTip()));
+            QVERIFY(w.close());
+        }
+        QSettings().remove(QStringLiteral("session/last"));
+        QSettings().remove(QStringLiteral("review/run"));
     }
 
     // Last: the German translation, chosen as in the Language menu, reaches the widgets.
