@@ -1,4 +1,6 @@
 #include "cli_support.h"
+#include "core/export/csv_text.h"
+#include "core/export/export_error.h"
 #include "core/tr.h"
 
 #include <QCoreApplication>
@@ -89,6 +91,16 @@ QString unwritableOutput(const QString& option, const QString& out)
     if (!probe.open())
         return nb::TrCli::tr("%1 %2: no file can be written in %3 (%4)").arg(option, out, folder, probe.errorString());
     return {};
+}
+
+QString writeOutput(const QString& option, const QString& out, const QByteArray& bytes)
+{
+    try {
+        writeFileAtomically(out, bytes);
+        return {};
+    } catch (const ExportError& e) {
+        return nb::TrCli::tr("%1 %2: %3").arg(option, out, e.reason());
+    }
 }
 
 QString notAnInsertionRun(const Run& run, const QString& path)

@@ -41,6 +41,10 @@ QString existingOutput(const QString& option, const QString& out, bool overwrite
 // run is not recorded (the needle inserted) only to fail on its outputs. Empty when writable.
 QString unwritableOutput(const QString& option, const QString& out);
 
+// Writes `bytes` to `out` (given with `option`) whole or not at all (a temporary renamed once
+// written). Empty when written, else what to tell the user: the file and why (a full disk by name).
+QString writeOutput(const QString& option, const QString& out, const QByteArray& bytes);
+
 // A warning for commands made for insertion runs (events, stiffness) given a friction run (a
 // sine on the platform, by its header): their contact and punctures are then meaningless.
 // Empty for any other run.

@@ -76,6 +76,14 @@ int cmdLabels(const QStringList& args, Io io)
             io.err << "needlebench labels: " << clash << '\n';
             return Usage;
         }
+        // Before the video is read, not after.
+        QString unwritable = unwritableOutput(parser.isSet(out) ? QStringLiteral("--out") : nb::TrCli::tr("the labels file"), outPath);
+        if (unwritable.isEmpty() && parser.isSet(tissueTrace))
+            unwritable = unwritableOutput(QStringLiteral("--tissue-trace"), parser.value(tissueTrace));
+        if (!unwritable.isEmpty()) {
+            io.err << "needlebench labels: " << unwritable << '\n';
+            return Failure;
+        }
     }
     // A video asked for by name that is not there is a mistake in the command, not a run
     // without a video: labels from force and position alone would pass for what was asked.
@@ -175,16 +183,15 @@ int cmdLabels(const QStringList& args, Io io)
             }
         }
         if (tissue && parser.isSet(tissueTrace)) {
-            QFile f(parser.value(tissueTrace));
-            if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
-                io.err << "needlebench labels: " << nb::TrCli::tr("%1: cannot write the trace here").arg(f.fileName()) << '\n';
+            QByteArray csv = "time_s,tissue_velocity_mm_s\n";
+            for (std::size_t i = 0; i < tissue->time_s.size(); ++i)
+                csv += QString::number(tissue->time_s[i], 'f', 6).toLatin1() + ','
+                       + (std::isfinite(tissue->velocity_mm_s[i]) ? QString::number(tissue->velocity_mm_s[i], 'f', 4).toLatin1() : QByteArray())
+                       + '\n';
+            if (const QString e = writeOutput(QStringLiteral("--tissue-trace"), parser.value(tissueTrace), csv); !e.isEmpty()) {
+                io.err << "needlebench labels: " << e << '\n';
                 return Failure;
             }
-            QTextStream ts(&f);
-            ts << "time_s,tissue_velocity_mm_s\n";
-            for (std::size_t i = 0; i < tissue->time_s.size(); ++i)
-                ts << QString::number(tissue->time_s[i], 'f', 6) << ','
-                   << (std::isfinite(tissue->velocity_mm_s[i]) ? QString::number(tissue->velocity_mm_s[i], 'f', 4) : QString()) << '\n';
         }
         writeLabelsFile(outPath, labels);
         if (parser.isSet(json)) {

@@ -6,6 +6,7 @@
 #include "interrupt_watcher.h"
 #include "plan_runner.h"
 #include "core/tr.h"
+#include "core/save_file.h"
 
 #include "core/export/dataset_loader.h"
 #include "core/export/export_error.h"
@@ -21,7 +22,6 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QRegularExpression>
-#include <QSaveFile>
 #include <QTextStream>
 #include <algorithm>
 #include <cmath>
@@ -474,7 +474,7 @@ int cmdRun(const QStringList& args, Io io)
 bool writeText(const QString& path, const QByteArray& bytes, QString* error)
 {
     QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) < 0 || !f.commit()) {
+    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) < 0 || !commitWhole(f)) {
         *error = nb::TrCli::tr("cannot write %1: %2").arg(path, f.errorString());
         return false;
     }

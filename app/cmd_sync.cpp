@@ -77,11 +77,17 @@ int cmdSync(const QStringList& args, Io io)
         return Usage;
     }
     const QString runPath = parser.positionalArguments()[0], videoPath = parser.positionalArguments()[1];
-    if (parser.isSet(trace))
+    if (parser.isSet(trace)) {
         if (const QString clash = overwritesInput(QStringLiteral("--trace"), parser.value(trace), {runPath, videoPath}); !clash.isEmpty()) {
             io.err << "needlebench sync: " << clash << '\n';
             return Usage;
         }
+        // Before the minutes of tracking, not after them.
+        if (const QString e = unwritableOutput(QStringLiteral("--trace"), parser.value(trace)); !e.isEmpty()) {
+            io.err << "needlebench sync: " << e << '\n';
+            return Failure;
+        }
+    }
     int videoFrames = -1;
     std::size_t runSamples = 0;
     try {
@@ -108,16 +114,15 @@ int cmdSync(const QStringList& args, Io io)
         // A limit shorter than the records leaves offsets beyond it untried.
         const bool limited = options.maxOffset_s < index.duration_s() + (run.size() > 1 ? run.time_s.back() - run.time_s.front() : 0.0);
         if (parser.isSet(trace)) {
-            QFile f(parser.value(trace));
-            if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
-                io.err << "needlebench sync: " << nb::TrCli::tr("%1: cannot write the trace here").arg(f.fileName()) << '\n';
+            QByteArray csv = "time_s,displacement_px\n";
+            for (std::size_t i = 0; i < vs.track.time_s.size(); ++i)
+                csv += QString::number(vs.track.time_s[i], 'f', 6).toLatin1() + ','
+                       + (std::isfinite(vs.track.displacement_px[i]) ? QString::number(vs.track.displacement_px[i], 'f', 3).toLatin1() : QByteArray())
+                       + '\n';
+            if (const QString e = writeOutput(QStringLiteral("--trace"), parser.value(trace), csv); !e.isEmpty()) {
+                io.err << "needlebench sync: " << e << '\n';
                 return Failure;
             }
-            QTextStream ts(&f);
-            ts << "time_s,displacement_px\n";
-            for (std::size_t i = 0; i < vs.track.time_s.size(); ++i)
-                ts << QString::number(vs.track.time_s[i], 'f', 6) << ','
-                   << (std::isfinite(vs.track.displacement_px[i]) ? QString::number(vs.track.displacement_px[i], 'f', 3) : QString()) << '\n';
         }
         if (parser.isSet(json)) {
             QJsonObject o;

@@ -16,7 +16,20 @@
 #include <QTextStream>
 #include <QTimer>
 #include <cstdio>
+#include <malloc.h>
 #include <memory>
+
+// OpenCV allocates its images and spectra afresh at every call (the tissue tracker's phase
+// correlation: hundreds of kB a frame, in several threads), and glibc gave each back to the
+// system when freed and faulted it in again at the next call: `labels suggest` on a video spent
+// half its time in the kernel (5.1 s against 2.7 s kept). Freed memory is kept for reuse. ctest
+// gives the test programs, which have their own main, the same through GLIBC_TUNABLES
+// (tests/CMakeLists.txt); both settings are needed (one alone was slower than neither).
+static void keepFreedMemory()
+{
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+}
 
 static bool isHeadless(int argc, char** argv)
 {
@@ -57,6 +70,7 @@ static int runWindow(QApplication& app)
 
 int main(int argc, char** argv)
 {
+    keepFreedMemory();
     nb::installTerminateHandler();
     // FFmpeg's own log lines ("[mov,mp4,… @ 0x…] moov atom not found") duplicate what NeedleBench
     // says about a video, by name; OPENCV_FFMPEG_LOGLEVEL=16 brings them back for a diagnosis.

@@ -2,10 +2,10 @@
 #include "simulated_run.h"
 #include "core/end_reason.h"
 #include "core/tr.h"
+#include "core/save_file.h"
 
 #include <QFile>
 #include <QJsonDocument>
-#include <QSaveFile>
 #include <QTextStream>
 
 namespace nb::cli {
@@ -84,7 +84,7 @@ QString addRunFileMetadata(const QString& path, const Metadata& metadata)
     }
     QSaveFile out(path);
     if (!out.open(QIODevice::WriteOnly) || out.write(bytes.left(at)) < 0 || out.write(lines) < 0 || out.write(bytes.mid(at)) < 0 ||
-        !out.commit())
+        !commitWhole(out))
         return nb::TrCli::tr("cannot write %1: %2").arg(path, out.errorString());
     return {};
 }

@@ -2,6 +2,7 @@
 
 #include "core/run_file.h"
 #include "core/run_keys.h"
+#include "core/save_file.h"
 #include "core/tr.h"
 #include "devices/acquisition_engine.h"
 #include "devices/sim/imaging_render.h"
@@ -11,7 +12,6 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 #include <opencv2/videoio.hpp>
 
 namespace nb::cli {
@@ -160,7 +160,7 @@ SimulatedRunResult simulateRun(const SimulatedRunRequest& s, const devices::RunO
     if (!s.truth.isEmpty()) {
         QSaveFile tf(s.truth);
         const QByteArray json = QJsonDocument(result.truth).toJson(QJsonDocument::Indented);
-        if (!tf.open(QIODevice::WriteOnly) || tf.write(json) != json.size() || !tf.commit() ||
+        if (!tf.open(QIODevice::WriteOnly) || tf.write(json) != json.size() || !commitWhole(tf) ||
             QFileInfo(s.truth).size() != json.size()) {
             result.error = nb::TrCli::tr("cannot write %1: %2").arg(s.truth, tf.errorString());
             return result;

@@ -5,9 +5,9 @@
 #include "core/tr.h"
 
 #include "run_file.h"
+#include "save_file.h"
 
 #include <QFile>
-#include <QSaveFile>
 #include <cmath>
 
 namespace nb {
@@ -120,7 +120,7 @@ void writeLabelsFile(const QString& path, const Labels& labels)
                    .arg(quoteIfNeeded(l.comment))
                    .toUtf8();
     file.write(out);
-    if (!file.commit())
+    if (!commitWhole(file))
         throw RunFileError(path, 0, nb::TrCore::tr("cannot write: %1").arg(file.errorString()));
 }
 

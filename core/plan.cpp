@@ -1,13 +1,13 @@
 #include "plan.h"
 #include "core/data_names.h"
 #include "core/tr.h"
+#include "core/save_file.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLocale>
 #include <QRegularExpression>
-#include <QSaveFile>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -979,7 +979,7 @@ Plan readPlanFile(const QString& path)
 void writePlanFile(const QString& path, const Plan& plan)
 {
     QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(planJsonText(plan)) < 0 || !f.commit())
+    if (!f.open(QIODevice::WriteOnly) || f.write(planJsonText(plan)) < 0 || !commitWhole(f))
         throw PlanError(path, {}, nb::TrCore::tr("cannot write: %1").arg(f.errorString()));
 }
 

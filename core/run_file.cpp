@@ -2,8 +2,8 @@
 #include "core/disk_space.h"
 #include "core/excerpt.h"
 #include "core/tr.h"
+#include "core/save_file.h"
 
-#include <QSaveFile>
 #include <QSet>
 #include <cerrno>
 #include <cstring>
@@ -334,7 +334,7 @@ void writeRunFile(const QString& path, const Run& run)
     }
     out += metadataBlock(run.footer);
     file.write(out);
-    if (!file.commit()) {
+    if (!commitWhole(file)) {
         // QSaveFile says "Unknown error" for a failed flush; a full disk is the usual cause.
         const auto free = freeBytes(path);
         throw RunFileError(path, 0, free && *free < 64 * 1024 ? nb::TrCore::tr("cannot write: no space left on the disk")

@@ -1,6 +1,7 @@
 #include "run_video_link.h"
 
 #include "core/run_keys.h"
+#include "core/save_file.h"
 #include "core/session.h"
 #include "core/tr.h"
 
@@ -9,7 +10,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <cmath>
 
 namespace nb {
@@ -147,7 +147,7 @@ void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>
     if (!f.open(QIODevice::WriteOnly))
         throw SessionError(path, nb::TrCore::tr("cannot write (%1)").arg(f.errorString()));
     f.write(QJsonDocument(store).toJson());
-    if (!f.commit())
+    if (!commitWhole(f))
         throw SessionError(path, nb::TrCore::tr("cannot write (%1)").arg(f.errorString()));
 }
 

@@ -1,6 +1,7 @@
 #include "session.h"
 #include "core/run_keys.h"
 #include "core/tr.h"
+#include "core/save_file.h"
 
 #include "core/end_reason.h"
 #include "core/run_file.h"
@@ -13,7 +14,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
-#include <QSaveFile>
 #include <algorithm>
 
 namespace nb {
@@ -29,7 +29,7 @@ void writeJson(const QString& path, const QJsonObject& object)
     if (!file.open(QIODevice::WriteOnly))
         throw SessionError(path, file.errorString());
     file.write(QJsonDocument(object).toJson(QJsonDocument::Indented));
-    if (!file.commit())
+    if (!commitWhole(file))
         throw SessionError(path, file.errorString());
 }
 

@@ -3803,11 +3803,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+14"/>
+        <location line="+6"/>
         <source>the labels file</source>
         <translation>die Label-Datei</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>%1: a folder, not a video</source>
         <translation>%1: ein Ordner, kein Video</translation>
     </message>
@@ -3852,19 +3853,19 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-133"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+140"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
 </translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation>%1 Labels vorgeschlagen, nach %2 geschrieben
@@ -4433,20 +4434,14 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+23"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation>needlebench sync: --roi %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="-23"/>
-        <location filename="../app/cmd_sync.cpp" line="+20"/>
-        <source>%1: cannot write the trace here</source>
-        <translation>%1: die Spur kann hier nicht geschrieben werden</translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_sync.cpp" line="+38"/>
+        <location line="+57"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4683,7 +4678,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cli_support.cpp" line="+16"/>
+        <location filename="../app/cli_support.cpp" line="+18"/>
         <source>show this help</source>
         <translation>diese Hilfe anzeigen</translation>
     </message>
@@ -4721,6 +4716,11 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location line="+3"/>
         <source>%1 %2: no file can be written in %3 (%4)</source>
         <translation>%1 %2: in %3 kann keine Datei geschrieben werden (%4)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -4859,7 +4859,7 @@ Befehle:
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+105"/>
+        <location filename="../app/main.cpp" line="+119"/>
         <source>Run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
         <translation>Führen Sie einen Befehl ohne Fenster aus, etwa &apos;needlebench demo&apos;; &apos;needlebench --help&apos; listet sie auf.</translation>
     </message>

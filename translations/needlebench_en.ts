@@ -3763,11 +3763,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+14"/>
+        <location line="+6"/>
         <source>the labels file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>%1: a folder, not a video</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3807,18 +3808,18 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-133"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+140"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation type="unfinished"></translation>
@@ -4373,19 +4374,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+23"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="-23"/>
-        <location filename="../app/cmd_sync.cpp" line="+20"/>
-        <source>%1: cannot write the trace here</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/cmd_sync.cpp" line="+38"/>
+        <location line="+57"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4597,7 +4592,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cli_support.cpp" line="+16"/>
+        <location filename="../app/cli_support.cpp" line="+18"/>
         <source>show this help</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4634,6 +4629,11 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+3"/>
         <source>%1 %2: no file can be written in %3 (%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 %2: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4765,7 +4765,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+105"/>
+        <location filename="../app/main.cpp" line="+119"/>
         <source>Run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1,13 +1,13 @@
 #include "frame_index_store.h"
 #include "packet_index.h"
 #include "video_error.h"
+#include "core/save_file.h"
 
 #include <QCryptographicHash>
 #include <QDataStream>
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 namespace nb::video {
@@ -111,7 +111,7 @@ bool storeFrameIndex(const FrameIndex& index, const QString& storeDir)
         << quint32(index.frames.size());
     for (const FrameInfo& fr : index.frames)
         out << fr.time_s << quint8((fr.keyframe ? 1 : 0) | (fr.duplicate ? 2 : 0) | (fr.timeEstimated ? 4 : 0));
-    if (out.status() != QDataStream::Ok || !f.commit())
+    if (out.status() != QDataStream::Ok || !commitWhole(f))
         return false;
     QDir store(storeDir);
     const QFileInfoList all = store.entryInfoList({QStringLiteral("*.nbindex")}, QDir::Files, QDir::Time);  // newest first

@@ -1,10 +1,10 @@
 #include "csv_text.h"
 #include "core/tr.h"
+#include "core/save_file.h"
 
 #include "export_error.h"
 
 #include <QCoreApplication>
-#include <QSaveFile>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -45,7 +45,7 @@ void writeFileAtomically(const QString& path, const QByteArray& bytes)
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         throw ExportError(path, writeFailure(file, path));
-    if (file.write(bytes) != bytes.size() || !file.commit())
+    if (file.write(bytes) != bytes.size() || !commitWhole(file))
         throw ExportError(path, writeFailure(file, path));
 }
 

@@ -1,5 +1,6 @@
 #include "run_csv_export.h"
 #include "core/tr.h"
+#include "core/save_file.h"
 
 #include "csv_text.h"
 #include "label_intervals.h"
@@ -10,7 +11,6 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 namespace nb {
 
@@ -153,7 +153,7 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
     const QString jsonPath = sidecarPath(csvPath);
     writeFileAtomically(jsonPath,
                         QJsonDocument(runSidecar(r, QFileInfo(csvPath).fileName(), jsonPath)).toJson(QJsonDocument::Indented));
-    if (!csv.commit()) {
+    if (!commitWhole(csv)) {
         QFile::remove(jsonPath);
         throw ExportError(csvPath, writeFailure(csv, csvPath));
     }

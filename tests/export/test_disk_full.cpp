@@ -5,6 +5,7 @@
 
 #include "support/needlebench_cli.h"
 
+#include "core/labels.h"
 #include "core/run_file.h"
 
 #include <QDir>
@@ -152,6 +153,70 @@ private slots:
             QVERIFY(!QFileInfo::exists(QDir(tiny).filePath(QStringLiteral("s.h5"))));
             emptyFolder(tiny);
         }
+    }
+
+    // Review saves the labels after every change. On a full disk the save fails and the labels
+    // saved before stay whole: Qt's QSaveFile replaced them with an empty file and said it had
+    // written them.
+    void labelsOnAFullDiskKeepTheLastSaved()
+    {
+        const QString path = QDir(tiny).filePath(QStringLiteral("run.labels.csv"));
+        nb::Labels labels;
+        for (int i = 0; i < 20; ++i)
+            labels.push_back({QStringLiteral("insertion"), QStringLiteral("a"), i * 1.0, i + 0.5, QStringLiteral("by hand")});
+        nb::writeLabelsFile(path, labels);
+        QCOMPARE(nb::readLabelsFile(path), labels);
+        QFile filler(QDir(tiny).filePath(QStringLiteral("filler")));
+        QVERIFY(filler.open(QIODevice::WriteOnly));
+        const QByteArray block(4096, 'x');
+        while (filler.write(block) == block.size() && filler.flush()) {
+        }
+        filler.close();
+        nb::Labels more = labels;
+        more.push_back({QStringLiteral("events"), QStringLiteral("puncture"), 30.0, 30.0, QString()});
+        bool refused = false;
+        try {
+            nb::writeLabelsFile(path, more);
+        } catch (const nb::Error& e) {
+            refused = true;
+            QVERIFY2(e.message().contains(QLatin1String("space"), Qt::CaseInsensitive), qPrintable(e.message()));
+        }
+        QVERIFY(refused);
+        QCOMPARE(nb::readLabelsFile(path), labels);
+    }
+
+    // The traces `sync` and `labels suggest` write after minutes of tracking: a full disk gets a
+    // message that says so and leaves no half-written trace (it said "cannot write the trace
+    // here" and wrote no reason). Nothing but the trace is written to the full disk.
+    void tracesOntoAFullDiskFailCleanly()
+    {
+        QTemporaryDir work;
+        const QString run = QDir(work.path()).filePath(QStringLiteral("fr.csv")), video = QDir(work.path()).filePath(QStringLiteral("fr.avi"));
+        const auto sim = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"), QStringLiteral("--cycles"),
+                                 QStringLiteral("2"), QStringLiteral("--frequency-hz"), QStringLiteral("0.8"), QStringLiteral("--out"), run,
+                                 QStringLiteral("--video"), video, QStringLiteral("--video-offset-s"), QStringLiteral("0.5")});
+        QCOMPARE(sim.code, 0);
+        QFile filler(QDir(tiny).filePath(QStringLiteral("filler")));
+        QVERIFY(filler.open(QIODevice::WriteOnly));
+        const QByteArray block(4096, 'x');
+        while (filler.write(block) == block.size() && filler.flush()) {
+        }
+        filler.close();
+        const QString syncTrace = QDir(tiny).filePath(QStringLiteral("track.csv"));
+        const auto s = runCli({QStringLiteral("sync"), run, video, QStringLiteral("--trace"), syncTrace});
+        checkClean(s);
+        QCOMPARE(s.code, 1);
+        QVERIFY2(s.err.contains(QLatin1String("--trace")) && s.err.contains(QLatin1String("space"), Qt::CaseInsensitive), qPrintable(s.err));
+        QVERIFY(!QFileInfo::exists(syncTrace));
+        const QString tissueTrace = QDir(tiny).filePath(QStringLiteral("tissue.csv"));
+        const auto l = runCli({QStringLiteral("labels"), QStringLiteral("suggest"), run, QStringLiteral("--video"), video,
+                               QStringLiteral("--video-offset-s"), QStringLiteral("0.5"), QStringLiteral("--tissue-trace"), tissueTrace});
+        checkClean(l);
+        QCOMPARE(l.code, 1);
+        QVERIFY2(l.err.contains(QLatin1String("--tissue-trace")) && l.err.contains(QLatin1String("space"), Qt::CaseInsensitive), qPrintable(l.err));
+        QVERIFY(!QFileInfo::exists(tissueTrace));
+        // The labels were not written either: the command failed as a whole.
+        QVERIFY(!QFileInfo::exists(QDir(work.path()).filePath(QStringLiteral("fr.labels.csv"))));
     }
 };
 
