@@ -52,7 +52,7 @@ ExportDialog::ExportDialog(const QString& sessionDir, AnalysisWorkspace* analysi
     target_->setObjectName(QStringLiteral("exportTarget"));
     auto* browse = new QPushButton(tr("Choose…"), this);
     connect(browse, &QPushButton::clicked, this, [this] {
-        chooseFileModeless(this, {tr("Export into"), target_->text(), QString(), QFileDialog::Directory},
+        chooseFileModeless(this, FileChoice::folder(tr("Export into"), target_->text()),
                            [this](const QString& d) { target_->setText(d); });
     });
     auto* where = new QHBoxLayout;
@@ -200,7 +200,7 @@ ExportDialog::Outcome ExportDialog::run(const Choice& c, const QString& target, 
                 out.written << csv << sidecarPath(csv);
                 if (eaf) {
                     const QString path = dir.filePath(r.name + QStringLiteral(".eaf"));
-                    writeEaf(path, r, {csv, videoOf(r)});
+                    writeEaf(path, r, {csv, videoOf(r), QString()});
                     out.written << path;
                 } else {
                     const QString intervals = dir.filePath(r.name + QStringLiteral(".intervals.csv"));

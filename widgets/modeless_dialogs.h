@@ -25,6 +25,16 @@ struct FileChoice {
     QFileDialog::FileMode mode = QFileDialog::ExistingFile;
     QFileDialog::AcceptMode accept = QFileDialog::AcceptOpen;
     QString name;  // the file name offered (saving); without a suffix, the chosen type's is added
+
+    // A folder to choose, starting in `dir`.
+    static FileChoice folder(const QString& title, const QString& dir)
+    {
+        FileChoice c;
+        c.title = title;
+        c.dir = dir;
+        c.mode = QFileDialog::Directory;
+        return c;
+    }
 };
 
 // Qt's own file chooser (never the desktop's: Esc must reach the emergency stop's filter),

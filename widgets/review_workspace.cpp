@@ -593,8 +593,10 @@ void ReviewWorkspace::chooseVideo()
     }
     // Modeless: a run may be recording meanwhile (modeless_dialogs.h). The video goes to the
     // run the chooser was opened for, even if another is opened in Review before it closes.
-    const FileChoice choice{tr("Open the video of %1").arg(QFileInfo(runPath_).fileName()), QFileInfo(runPath_).absolutePath(),
-                            tr("Videos (%1);;All files (*)").arg(QStringLiteral("*.") + videoSuffixes().join(QStringLiteral(" *.")))};
+    FileChoice choice;
+    choice.title = tr("Open the video of %1").arg(QFileInfo(runPath_).fileName());
+    choice.dir = QFileInfo(runPath_).absolutePath();
+    choice.filter = tr("Videos (%1);;All files (*)").arg(QStringLiteral("*.") + videoSuffixes().join(QStringLiteral(" *.")));
     chooseFileModeless(this, choice, [this, run = runPath_](const QString& path) {
         if (run == runPath_)
             attachVideo(path);

@@ -108,7 +108,7 @@ QStringList datasetFactors(const Dataset& dataset)
 QStringList datasetSettingFactors(const Dataset& dataset)
 {
     QStringList out;
-    for (const QString key : {QStringLiteral("tissue"), QStringLiteral("sim_tissue"), QStringLiteral("tip"), QStringLiteral("sim_tip"),
+    for (const QString& key : {QStringLiteral("tissue"), QStringLiteral("sim_tissue"), QStringLiteral("tip"), QStringLiteral("sim_tip"),
                               QStringLiteral("motion"), QStringLiteral("velocity_mm_s"), QStringLiteral("frequency_hz"),
                               QStringLiteral("amplitude_mm")}) {
         QStringList levels;

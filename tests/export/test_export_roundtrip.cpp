@@ -454,7 +454,7 @@ private slots:
         r.run.metadata.set(QStringLiteral("factor_site"), QStringLiteral("3"));
         r.run.metadata.set(QStringLiteral("plan_run"), QStringLiteral("7"));
         const QString path = dir.filePath(QStringLiteral("run01.eaf"));
-        writeEaf(path, r, {dir.filePath(QStringLiteral("run01.csv")), dir.filePath(QStringLiteral("run01.mp4"))});
+        writeEaf(path, r, {dir.filePath(QStringLiteral("run01.csv")), dir.filePath(QStringLiteral("run01.mp4")), QString()});
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
         QXmlStreamReader x(&f);

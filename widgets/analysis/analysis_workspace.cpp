@@ -639,7 +639,9 @@ void AnalysisWorkspace::showFriction()
                                   [&](const FrictionRunResult& f) { return f.run == name; });
     const auto run = std::find_if(dataset_.runs.begin(), dataset_.runs.end(), [&](const DatasetRun& r) { return r.name == name; });
     if (fit == analysis_.friction.end() || run == dataset_.runs.end()) {
-        plotFrictionVelocity(frictionPlot_, DatasetRun{}, FrictionRunResult{{}, tr("no run"), {}, {}});
+        FrictionRunResult none;
+        none.error = tr("no run");
+        plotFrictionVelocity(frictionPlot_, DatasetRun{}, none);
         plotPhases(phasesPlot_, DatasetRun{});
         return;
     }
@@ -704,7 +706,7 @@ void AnalysisWorkspace::exportCurrentTables()
         tables = {{QStringLiteral("validation"), validationTable(analysis_)}};
     else
         tables = {{QStringLiteral("by_factor_") + factorChoice_->currentData().toString(), factorTableFor(factorChoice_->currentData().toString())}};
-    FileChoice choice{tr("Save tables (CSV and LaTeX) into"), dir_, QString(), QFileDialog::Directory};
+    const FileChoice choice = FileChoice::folder(tr("Save tables (CSV and LaTeX) into"), dir_);
     chooseFileModeless(this, choice, [this, tables](const QString& dir) {
         try {
             for (const auto& [name, table] : tables) {
