@@ -101,6 +101,21 @@ int cmdSync(const QStringList& args, Io io)
                           .arg(index.width).arg(index.height);
             return Usage;
         }
+        if (vso.axis) {
+            // A line drawn for another video, or with its numbers mistyped, tracks nothing and
+            // only gave "confidence 0.00".
+            const QLineF& a = *vso.axis;
+            const QRectF picture(0, 0, index.width, index.height);
+            const int steps = int(std::ceil(a.length()));
+            int inside = 0;
+            for (int k = 0; k <= steps; ++k)
+                inside += picture.contains(a.pointAt(double(k) / steps));
+            if (inside < 8) {
+                io.err << nb::TrCli::tr("needlebench sync: --needle %1,%2,%3,%4 lies outside the %5x%6 picture\n")
+                              .arg(a.x1()).arg(a.y1()).arg(a.x2()).arg(a.y2()).arg(index.width).arg(index.height);
+                return Usage;
+            }
+        }
         vso.roi = region;
         // No offset beyond the two records' lengths lets them overlap: a larger limit only
         // made the search take minutes and gigabytes.

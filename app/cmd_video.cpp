@@ -85,7 +85,7 @@ int cmdFrame(const QStringList& args, Io io)
     if (!parseArgs(parser, QStringLiteral("frame"), args, io, 1, 1, &code))
         return code;
     bool ok = false;
-    const int n = parser.value(indexOpt).toInt(&ok);
+    const qlonglong n = parser.value(indexOpt).toLongLong(&ok);
     if (!parser.isSet(indexOpt) || !ok || n < 0 || !parser.isSet(outOpt)) {
         io.err << nb::TrCli::tr("needlebench frame: --index N (a whole number >= 0) and --out IMAGE are required\n\n")
                << commandHelp(parser, QStringLiteral("frame"));
@@ -107,8 +107,14 @@ int cmdFrame(const QStringList& args, Io io)
         return Usage;
     }
     try {
-        nb::video::FrameReader reader(nb::video::loadOrBuildFrameIndex(path), 4);
-        const auto frame = reader.read(n);
+        nb::video::FrameIndex index = nb::video::loadOrBuildFrameIndex(path);
+        // Checked here for a number beyond int as well (it read "--index N is required").
+        if (n >= index.size()) {
+            io.err << nb::TrCli::tr("needlebench frame: %1: frame %2 does not exist (the video has %3 frames)\n").arg(path).arg(n).arg(index.size());
+            return Failure;
+        }
+        nb::video::FrameReader reader(std::move(index), 4);
+        const auto frame = reader.read(int(n));
         bool written = false;
         try {
             written = cv::imwrite(out.toStdString(), frame.image);

@@ -168,8 +168,8 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>keine angepasste Größe</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <location line="+22"/>
+        <location line="+33"/>
+        <location line="+23"/>
         <source>no run</source>
         <translation>kein Lauf</translation>
     </message>
@@ -2231,12 +2231,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+886"/>
+        <location line="+888"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-883"/>
+        <location line="-885"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2262,12 +2262,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+464"/>
+        <location line="+466"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-464"/>
+        <location line="-466"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2375,7 +2375,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+680"/>
+        <location line="+682"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
@@ -2400,7 +2400,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
-        <location line="-669"/>
+        <location line="-671"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2439,12 +2439,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 an %2 angehängt; jetzt synchronisieren (automatisch, oder ein Ereignis in beiden markieren)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Open the video of %1</source>
         <translation>Video zu %1 öffnen</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Video not attached: %1 is no longer the run in review</source>
         <translation>Video nicht zugeordnet: %1 ist nicht mehr der Lauf in der Sichtung</translation>
     </message>
@@ -2559,7 +2559,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-767"/>
+        <location line="-769"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2634,7 +2634,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Videos (%1);;All files (*)</source>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
@@ -4441,6 +4441,13 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
+        <location line="+15"/>
+        <source>needlebench sync: --needle %1,%2,%3,%4 lies outside the %5x%6 picture
+</source>
+        <translation>needlebench sync: --needle %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6
+</translation>
+    </message>
+    <message>
         <location line="+57"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
@@ -4657,7 +4664,14 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
+        <source>needlebench frame: %1: frame %2 does not exist (the video has %3 frames)
+</source>
+        <translation>needlebench frame: %1: Bild %2 gibt es nicht (das Video hat %3 Bilder)
+</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>needlebench frame: %1: %2
 </source>
         <translation>needlebench frame: %1: %2
@@ -7294,7 +7308,7 @@ Befehle:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-609"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-611"/>
         <location line="+397"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>

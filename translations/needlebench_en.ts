@@ -167,8 +167,8 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
-        <location line="+22"/>
+        <location line="+33"/>
+        <location line="+23"/>
         <source>no run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2228,12 +2228,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+886"/>
+        <location line="+888"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-883"/>
+        <location line="-885"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2259,12 +2259,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+464"/>
+        <location line="+466"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-464"/>
+        <location line="-466"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2372,7 +2372,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+680"/>
+        <location line="+682"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2397,7 +2397,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-669"/>
+        <location line="-671"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2436,12 +2436,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Open the video of %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Video not attached: %1 is no longer the run in review</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2554,7 +2554,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-767"/>
+        <location line="-769"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2629,7 +2629,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Videos (%1);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4380,6 +4380,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+15"/>
+        <source>needlebench sync: --needle %1,%2,%3,%4 lies outside the %5x%6 picture
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+57"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
@@ -4574,7 +4580,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
+        <source>needlebench frame: %1: frame %2 does not exist (the video has %3 frames)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>needlebench frame: %1: %2
 </source>
         <translation type="unfinished"></translation>
@@ -7200,7 +7212,7 @@ Commands:
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-609"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-611"/>
         <location line="+397"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>

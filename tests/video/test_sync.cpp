@@ -350,6 +350,14 @@ private slots:
             QVERIFY2(std::abs(r["offset_s"].toDouble() - offset) < 1.0 / 29.97,
                      qPrintable(QStringLiteral("drawn %1: found %2 s, truth %3 s").arg(coordinates(drawn)).arg(r["offset_s"].toDouble()).arg(offset)));
         }
+        // A line off the picture (drawn for another video, numbers mistyped) is refused, named;
+        // it tracked nothing and answered "confidence 0.00". One that runs off an edge is taken.
+        const nbtest::CliResult off = nbtest::runCli({"sync", run_, video_, "--needle", "900,900,1000,1000"}, 240000);
+        QCOMPARE(off.code, 2);
+        QVERIFY2(off.err.contains(QStringLiteral("--needle 900,900,1000,1000 lies outside the")), qPrintable(off.err));
+        const QJsonArray past{a[0], a[1], a[2].toDouble() + 3.0 * (a[2].toDouble() - a[0].toDouble()), a[3].toDouble() + 3.0 * (a[3].toDouble() - a[1].toDouble())};
+        runJson({"sync", run_, video_, "--needle", coordinates(past), "--json"}, &code);
+        QCOMPARE(code, 0);
     }
 
     // A short fast stroke (8 mm at 10 mm/s) in an H.264 video begun 14 s before it: the needle

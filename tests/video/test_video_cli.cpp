@@ -77,6 +77,10 @@ private slots:
         const nbtest::CliResult beyond = run({"frame", vfr_, "--index", "90", "--out", dir_.filePath("x.png")});
         QCOMPARE(beyond.code, 1);
         QVERIFY(beyond.err.contains("frame 90 does not exist"));
+        // Beyond an int: the same answer with the number given (it read "--index N is required").
+        const nbtest::CliResult huge = run({"frame", vfr_, "--index", "99999999999", "--out", dir_.filePath("x.png")});
+        QCOMPARE(huge.code, 1);
+        QVERIFY2(huge.err.contains("frame 99999999999 does not exist"), qPrintable(huge.err));
         const nbtest::CliResult missing = run({"video-info", dir_.filePath("none.mp4")});
         QCOMPARE(missing.code, 1);
         QVERIFY(missing.err.contains("none.mp4"));
