@@ -2814,7 +2814,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::SessionView</name>
     <message>
-        <location filename="../widgets/session_view.cpp" line="+50"/>
+        <location filename="../widgets/session_view.cpp" line="+64"/>
         <source>No session open (Session ▸ New or Open).</source>
         <translation>Keine Sitzung geöffnet (Sitzung ▸ Neu oder Öffnen).</translation>
     </message>

@@ -2809,7 +2809,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::SessionView</name>
     <message>
-        <location filename="../widgets/session_view.cpp" line="+50"/>
+        <location filename="../widgets/session_view.cpp" line="+64"/>
         <source>No session open (Session ▸ New or Open).</source>
         <translation type="unfinished"></translation>
     </message>

@@ -87,6 +87,7 @@ SessionView::SessionView(QWidget* parent) : QWidget(parent)
 {
     setObjectName(QStringLiteral("sessionView"));
     header_ = new QLabel(this);
+    header_->setObjectName(QStringLiteral("sessionHeader"));
     header_->setWordWrap(true);
     header_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     model_ = new RunListModel(this);
@@ -94,6 +95,9 @@ SessionView::SessionView(QWidget* parent) : QWidget(parent)
     view_->setModel(model_);
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
     view_->verticalHeader()->setVisible(false);
+    // Rows as high as their text: at 1366x768 the dock shows two and a half runs, where the
+    // style's own height showed two at most.
+    view_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
     view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     view_->horizontalHeader()->setStretchLastSection(true);
     connect(view_, &QTableView::activated, this,
@@ -113,6 +117,16 @@ void SessionView::setSession(const Session* session)
 
 void SessionView::setBusyPath(const QString& path) { model_->setBusyPath(path); }
 
+// A session's free text that names several file values ("beveled/diamond", "stiffness +
+// friction", as the demo writes them), each known one said in the operator's language.
+static QString eachPartNamed(const QString& text, const QString& separator, QString (*displayName)(const QString&))
+{
+    QStringList parts = text.split(separator.trimmed());
+    for (QString& p : parts)
+        p = displayName(p.trimmed());
+    return parts.join(separator);
+}
+
 // The tip as stored (beveled, diamond, blunt: file values) said in the operator's language.
 static QString tipName(const QString& tip)
 {
@@ -122,7 +136,7 @@ static QString tipName(const QString& tip)
         return SessionView::tr("diamond tip");
     if (tip == QLatin1String("blunt"))
         return SessionView::tr("blunt tip");
-    return SessionView::tr("%1 tip").arg(tip);
+    return SessionView::tr("%1 tip").arg(eachPartNamed(tip, QStringLiteral("/"), tipDisplayName));
 }
 
 void SessionView::refresh()
@@ -139,7 +153,7 @@ void SessionView::refresh()
                                 i.tip.isEmpty() ? QString() : tipName(i.tip),
                                 i.thickness_mm > 0 ? tr("%1 mm thick").arg(i.thickness_mm) : QString(),
                                 i.operatorName.isEmpty() ? QString() : tr("operator %1").arg(i.operatorName),
-                                i.protocol})
+                                eachPartNamed(i.protocol, QStringLiteral(" + "), protocolDisplayName)})
         if (!part.isEmpty())
             specimen << part.toHtmlEscaped();
     header_->setText(tr("<b>%1</b> – %2<br>active calibration: %3")

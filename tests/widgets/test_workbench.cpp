@@ -487,6 +487,14 @@ private slots:
             QCOMPARE(w.engine()->status().calibrationName, QStringLiteral("nominal (device)"));
             QTRY_COMPARE(w.controlPanel()->findChild<QLabel*>(QStringLiteral("status_calibration"))->text(), QStringLiteral("nominal (Gerät)"));
             QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("Spitze: abgeschrägt")), qPrintable(w.engine()->deviceDescription()));
+            // A session's tip and protocol as the demo writes them, several file values in one.
+            nb::SessionInfo info = w.session()->info();
+            info.tip = QStringLiteral("beveled/diamond");
+            info.protocol = QStringLiteral("stiffness + friction");
+            QVERIFY(w.setSessionInfo(info));
+            const QString header = w.sessionView()->findChild<QLabel*>(QStringLiteral("sessionHeader"))->text();
+            QVERIFY2(header.contains(QStringLiteral("Spitze abgeschrägt/Diamantschliff")) && header.contains(QStringLiteral("Steifigkeit + Reibung")),
+                     qPrintable(header));
             QVERIFY(w.grab().save(screenshotDir() + QStringLiteral("/main_window_de.png")));
             // A run recorded in German is written in the files' one language: a dataset of
             // several operators mixes none.
