@@ -153,6 +153,10 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
 
     QSettings settings;
     const bool restored = options_.persistSettings && restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    // A window closed maximised comes back so, whatever the window manager made of the
+    // geometry's own flag (it came back at its minimum size after the first session).
+    if (restored && settings.value(QStringLiteral("window/maximized")).toBool())
+        setWindowState(windowState() | Qt::WindowMaximized);
     if (options_.persistSettings) {
         restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
         panel_->restoreSettings(settings);
@@ -164,10 +168,11 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
         // the whole screen, where Qt's own guess cut off the panel's controls.
         const QScreen* screen = QGuiApplication::primaryScreen();
         const QSize room = screen ? screen->availableGeometry().size() : QSize(1400, 860);
+        // The size it takes when the operator leaves maximised: without one, a window that was
+        // only ever maximised came back at its minimum size (1087x598).
+        resize(std::min(room.width(), 1400), std::min(room.height(), 860));
         if (room.width() < 1400 || room.height() < 860)
             setWindowState(windowState() | Qt::WindowMaximized);
-        else
-            resize(1400, 860);
     }
     engine_->setForceLimit(panel_->forceLimit());
     engine_->setWithdrawForceLimit(panel_->withdrawForceLimit());
@@ -748,6 +753,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
     if (options_.persistSettings) {
         QSettings settings;
         settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+        settings.setValue(QStringLiteral("window/maximized"), isMaximized());
         settings.setValue(QStringLiteral("window/state"), saveState());
         panel_->saveSettings(settings);
         saveWorkspace(settings);

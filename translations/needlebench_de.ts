@@ -1405,7 +1405,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+487"/>
+        <location filename="../app/main_window.cpp" line="+492"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1686,12 +1686,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-647"/>
+        <location line="-652"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+556"/>
+        <location line="+561"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -2231,12 +2231,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+888"/>
+        <location line="+913"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-885"/>
+        <location line="-910"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2262,12 +2262,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+466"/>
+        <location line="+494"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-466"/>
+        <location line="-494"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2375,12 +2375,32 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+682"/>
+        <location line="+707"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-536"/>
+        <source>labels taken from %1 (not yet saved beside the run)</source>
+        <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>labels kept in %1 are saved beside the run again</source>
+        <translation>die in %1 aufbewahrten Markierungen sind wieder neben dem Lauf gespeichert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>labels kept in %1 cannot be read: %2</source>
+        <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
+    </message>
+    <message>
+        <location line="+424"/>
+        <source>They are kept in %1, and saved beside the run when it is opened again and its folder can be written.</source>
+        <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
+    </message>
+    <message>
+        <location line="+101"/>
         <source>Automatic sync stopped</source>
         <translation>Automatische Synchronisation abgebrochen</translation>
     </message>
@@ -2400,7 +2420,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
-        <location line="-671"/>
+        <location line="-696"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2410,7 +2430,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+179"/>
         <source>No run open: double-click one in the session list</source>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
@@ -2469,12 +2489,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 auf %2 nicht geschlossen (wäre leer oder überlappte eine andere Phase): nicht hinzugefügt</translation>
     </message>
     <message>
-        <location line="+98"/>
-        <source>They are kept in %1; copy that file beside the run when its folder can be written.</source>
-        <translation>Sie sind in %1 aufbewahrt; kopieren Sie diese Datei neben den Lauf, sobald sein Ordner beschreibbar ist.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+97"/>
         <source>They could not be kept elsewhere either (%1): they are lost when another run is opened.</source>
         <translation>Sie ließen sich auch anderswo nicht aufbewahren (%1): Sie gehen verloren, wenn ein anderer Lauf geöffnet wird.</translation>
     </message>
@@ -2559,7 +2574,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-769"/>
+        <location line="-794"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2624,12 +2639,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+68"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -2674,7 +2689,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+86"/>
         <source>Labels not saved: %1</source>
         <translation>Labels nicht gespeichert: %1</translation>
     </message>

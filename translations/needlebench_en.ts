@@ -1404,7 +1404,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+487"/>
+        <location filename="../app/main_window.cpp" line="+492"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1683,12 +1683,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-647"/>
+        <location line="-652"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+556"/>
+        <location line="+561"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2228,12 +2228,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+888"/>
+        <location line="+913"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-885"/>
+        <location line="-910"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2259,12 +2259,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+466"/>
+        <location line="+494"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-466"/>
+        <location line="-494"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2372,12 +2372,32 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+682"/>
+        <location line="+707"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-536"/>
+        <source>labels taken from %1 (not yet saved beside the run)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>labels kept in %1 are saved beside the run again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>labels kept in %1 cannot be read: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+424"/>
+        <source>They are kept in %1, and saved beside the run when it is opened again and its folder can be written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+101"/>
         <source>Automatic sync stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2397,7 +2417,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-671"/>
+        <location line="-696"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2407,7 +2427,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+179"/>
         <source>No run open: double-click one in the session list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2466,12 +2486,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+98"/>
-        <source>They are kept in %1; copy that file beside the run when its folder can be written.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+97"/>
         <source>They could not be kept elsewhere either (%1): they are lost when another run is opened.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2554,7 +2569,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-769"/>
+        <location line="-794"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2619,12 +2634,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+68"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2669,7 +2684,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+86"/>
         <source>Labels not saved: %1</source>
         <translation type="unfinished"></translation>
     </message>

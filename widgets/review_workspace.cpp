@@ -459,6 +459,17 @@ LabelSetDialog* ReviewWorkspace::editLabelSet()
 void ReviewWorkspace::showStatus(const QString& text) { status_->setText(text); }
 QString ReviewWorkspace::status() const { return status_->text(); }
 
+// Where the labels of `runPath` go when they cannot be written beside it: the user's own data
+// folder, by the session's folder name and the labels file's name.
+static QString keptLabelsPath(const QString& runPath)
+{
+    QString name = QFileInfo(labelsPathFor(runPath)).fileName();
+    if (name.size() > 200)  // a name the run's own disk refused for its length
+        name = name.left(189) + QStringLiteral(".labels.csv");
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+        .filePath(QStringLiteral("unsaved-labels/%1/%2").arg(QFileInfo(runPath).absoluteDir().dirName(), name));
+}
+
 bool ReviewWorkspace::openRun(const QString& path)
 {
     markRecording_.reset();
@@ -479,6 +490,22 @@ bool ReviewWorkspace::openRun(const QString& path)
         model_->setLabels(labels);
         runPath_ = path;
         undo_->clear();
+        // Labels made while they could not be written beside the run (a full disk) are the
+        // operator's latest: taken back, and saved beside the run when it can be written. The
+        // next label replaced them, and what was kept was lost.
+        const QString kept = keptLabelsPath(path);
+        QString keptNote;
+        if (QFileInfo::exists(kept)) {
+            try {
+                labels = readLabelsFile(kept);
+                model_->setLabels(labels);
+                saveLabels();
+                keptNote = QFileInfo::exists(kept) ? tr("labels taken from %1 (not yet saved beside the run)").arg(QDir::toNativeSeparators(kept))
+                                                   : tr("labels kept in %1 are saved beside the run again").arg(QDir::toNativeSeparators(kept));
+            } catch (const RunFileError& e) {
+                keptNote = tr("labels kept in %1 cannot be read: %2").arg(QDir::toNativeSeparators(kept), e.message());
+            }
+        }
         pending_.clear();
         QVector<double> t(run_.time_s.begin(), run_.time_s.end()), f(run_.force_N.begin(), run_.force_N.end());
         plot_->graph(0)->setData(t, f, true);
@@ -491,7 +518,8 @@ bool ReviewWorkspace::openRun(const QString& path)
         updateKeysHelp();
         updateShading();
         setCursorTime(run_.time_s.front());
-        showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size()));
+        showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size())
+                   + (keptNote.isEmpty() ? QString() : QStringLiteral("; ") + keptNote));
         restoreVideoLink();
         return true;
     } catch (const RunFileError& e) {
@@ -887,22 +915,19 @@ void ReviewWorkspace::saveLabels()
 {
     if (runPath_.isEmpty())
         return;
+    const QString kept = keptLabelsPath(runPath_);
     try {
         writeLabelsFile(labelsPathFor(runPath_), model_->labels());
+        QFile::remove(kept);  // beside the run at last: the copy kept meanwhile is done with
     } catch (const RunFileError& e) {
         // Beside the run they cannot be written (a read-only or full disk): kept in the user's
         // own data folder instead, and said in a box once, where only a status line said it and
-        // the labels were gone with the next run opened.
-        QString name = QFileInfo(labelsPathFor(runPath_)).fileName();
-        if (name.size() > 200)  // a name the run's own disk refused for its length
-            name = name.left(189) + QStringLiteral(".labels.csv");
-        const QString kept = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-                                 .filePath(QStringLiteral("unsaved-labels/%1/%2").arg(QFileInfo(runPath_).absoluteDir().dirName(), name));
+        // the labels were gone with the next run opened. Opening the run again takes them back.
         QString where;
         try {
             QDir().mkpath(QFileInfo(kept).absolutePath());
             writeLabelsFile(kept, model_->labels());
-            where = tr("They are kept in %1; copy that file beside the run when its folder can be written.").arg(QDir::toNativeSeparators(kept));
+            where = tr("They are kept in %1, and saved beside the run when it is opened again and its folder can be written.").arg(QDir::toNativeSeparators(kept));
         } catch (const RunFileError& e2) {
             where = tr("They could not be kept elsewhere either (%1): they are lost when another run is opened.").arg(e2.message());
         }

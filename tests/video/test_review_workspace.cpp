@@ -534,6 +534,14 @@ private slots:
         QCOMPARE(back.size(), std::size_t(1));
         QCOMPARE(back.front().label, QStringLiteral("contact"));
         box->accept();
+        // Another run, then this one again: the labels kept are shown, and the next label adds
+        // to them (it replaced them: the contact was lost).
+        QVERIFY(ws.openRun(run_));
+        QVERIFY(ws.openRun(run));
+        QCOMPARE(ws.labelModel()->labels().size(), std::size_t(1));
+        QVERIFY2(ws.status().contains(QDir::toNativeSeparators(kept)), qPrintable(ws.status()));
+        QVERIFY(ws.labelModel()->insertLabel({QStringLiteral("events"), QStringLiteral("puncture"), 0.8, 0.8, {}}));
+        QCOMPARE(nb::readLabelsFile(kept).size(), std::size_t(2));
         QFile::remove(kept);
     }
 
