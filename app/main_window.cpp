@@ -224,6 +224,9 @@ void MainWindow::attachEngine()
     connect(e, &devices::AcquisitionEngine::runEnded, this, &MainWindow::onRunEnded);
     connect(e, &devices::AcquisitionEngine::runRefused, this, [this](const QString& why) {
         showMessage(withinSession(why), true);
+        // Start was pressed and nothing moved: the reason in a box (modeless: the E-stop stays
+        // at hand), where a status line alone went by unread in a few seconds.
+        sayInABox(QStringLiteral("runNotStarted"), tr("Run not started"), withinSession(why));
         if (!engine_->status().recording)
             endPlanRun(QStringLiteral("not started"));
     });
@@ -682,7 +685,8 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
     // end reason out of the status bar at 1366 px.
     const QString file = QFileInfo(summary.path).fileName();
     const bool normal = endedNormally(summary.endReason);
-    QString text = tr("Run saved: %1 (%2, %3 samples, %4 dropped)")
+    const bool unwritten = summary.endReason == EndReason::WriteError;
+    QString text = (unwritten ? tr("Run stopped, file incomplete: %1 (%2, %3 samples, %4 dropped)") : tr("Run saved: %1 (%2, %3 samples, %4 dropped)"))
                        .arg(file, displayName(summary.endReason))
                        .arg(summary.samples)
                        .arg(summary.dropped);
@@ -690,6 +694,13 @@ void MainWindow::onRunEnded(const devices::RunSummary& summary)
         text += QStringLiteral(" – ") + withinSession(summary.fault);
     // Red is for what cut the run short; a few dropped samples are a note, not an alarm.
     showMessage(text, !normal);
+    // A disk that filled (or media removed) mid-run is said in a box: one status line, cut in
+    // the middle and beginning "Run saved", was all the operator got.
+    if (unwritten)
+        sayInABox(QStringLiteral("runNotWritten"), tr("Run file incomplete"),
+                  tr("%1 could not be written to the end, and the stage was stopped: %2\n\nThe rows written before are kept in the "
+                     "file. Free space on the disk (or choose another session folder) before the next run.")
+                      .arg(file, withinSession(summary.fault)));
     if (const QString problem = liveRun_->endRun(summary.path); !problem.isEmpty())
         showMessage(tr("Could not read the run back to mark its events: %1").arg(problem), true);
     sessionView_->refresh();
@@ -706,6 +717,17 @@ QString MainWindow::withinSession(QString text) const
         text.replace(dir + QLatin1Char('/'), QString()).replace(QDir::toNativeSeparators(dir) + QDir::separator(), QString());
     }
     return text;
+}
+
+void MainWindow::sayInABox(const QString& name, const QString& title, const QString& text)
+{
+    // One box of a kind: a second refusal replaces the first's text.
+    if (auto* box = findChild<QMessageBox*>(name); box && box->isVisible()) {
+        box->setText(text);
+        box->raise();
+        return;
+    }
+    warnModeless(this, title, text)->setObjectName(name);
 }
 
 void MainWindow::showMessage(const QString& text, bool alarm)

@@ -1405,7 +1405,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+492"/>
+        <location filename="../app/main_window.cpp" line="+495"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1468,12 +1468,17 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-398"/>
+        <location filename="../app/main_window.cpp" line="-401"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>Run not started</source>
+        <translation>Lauf nicht gestartet</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Fault: %1: %2</source>
         <translation>Fehler: %1: %2</translation>
     </message>
@@ -1668,30 +1673,49 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Nichts bewegt sich oder zeichnet jetzt auf. Beenden?</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+0"/>
+        <source>Run stopped, file incomplete: %1 (%2, %3 samples, %4 dropped)</source>
+        <translation>Lauf angehalten, Datei unvollständig: %1 (%2, %3 Messwerte, %4 verloren)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Run file incomplete</source>
+        <translation>Laufdatei unvollständig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 could not be written to the end, and the stage was stopped: %2
+
+The rows written before are kept in the file. Free space on the disk (or choose another session folder) before the next run.</source>
+        <translation>%1 konnte nicht bis zum Ende geschrieben werden, und die Achse wurde angehalten: %2
+
+Die zuvor geschriebenen Zeilen bleiben in der Datei. Vor dem nächsten Lauf Platz auf dem Datenträger schaffen (oder einen anderen Sitzungsordner wählen).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Could not read the run back to mark its events: %1</source>
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="-26"/>
-        <location line="+70"/>
+        <location line="-34"/>
+        <location line="+89"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-652"/>
+        <location line="-674"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+561"/>
+        <location line="+564"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1707,12 +1731,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+97"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-450"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -1404,7 +1404,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+492"/>
+        <location filename="../app/main_window.cpp" line="+495"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1467,12 +1467,17 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-398"/>
+        <location filename="../app/main_window.cpp" line="-401"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>Run not started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Fault: %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1666,29 +1671,46 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+0"/>
+        <source>Run stopped, file incomplete: %1 (%2, %3 samples, %4 dropped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Run file incomplete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 could not be written to the end, and the stage was stopped: %2
+
+The rows written before are kept in the file. Free space on the disk (or choose another session folder) before the next run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Could not read the run back to mark its events: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-26"/>
-        <location line="+70"/>
+        <location line="-34"/>
+        <location line="+89"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-652"/>
+        <location line="-674"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+561"/>
+        <location line="+564"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1704,12 +1726,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+97"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-450"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

@@ -400,6 +400,27 @@ private slots:
         QCOMPARE(w.reviewWorkspace()->labelModel()->labels().size(), std::size_t(0));
     }
 
+    // Start pressed and refused by the engine (here the session folder was deleted meanwhile):
+    // the reason in a box, not only in a status line gone in a few seconds.
+    void refusedStartIsSaidInABox()
+    {
+        QTemporaryDir tmp;
+        const QString dir = tmp.filePath(QStringLiteral("gone"));
+        nb::MainWindow w(options(dir, false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setMotion(w, 10.0, 5.0);
+        nbtest::prepareToRecord(w);
+        QVERIFY(QDir(dir).removeRecursively());
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QMessageBox* box = nullptr;
+        QTRY_VERIFY_WITH_TIMEOUT((box = w.findChild<QMessageBox*>(QStringLiteral("runNotStarted"))) && box->isVisible(), 20000);
+        QVERIFY2(box->text().contains(QStringLiteral("run_001_linear.csv")), qPrintable(box->text()));
+        QVERIFY(!box->isModal());
+        QCOMPARE(w.runsEnded(), 0);
+        box->accept();
+    }
+
     // What the operator looked at comes back after a restart: the session, the Review tab, its
     // run and the place in it. A run deleted meanwhile is said to be gone, and Record shows.
     void restartKeepsTheReview()
