@@ -37,6 +37,7 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
+#include <QLockFile>
 #include <QMessageBox>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -359,11 +360,29 @@ void MainWindow::buildMenus()
 
 bool MainWindow::openSession(const QString& dir)
 {
+    // One window a session: a second one "recovered" the run the first was recording (closed
+    // its file with a footer under it) and both recorded into the folder. A session on a disk
+    // that takes no lock file (read-only media) opens all the same: nothing records there.
+    auto lock = std::make_unique<QLockFile>(QDir(dir).filePath(QStringLiteral(".needlebench.lock")));
+    lock->setStaleLockTime(0);  // held as long as its window lives; a crashed one's is taken over
+    if (!(session_ && QDir(session_->dir()) == QDir(dir)) && !lock->tryLock(0) && lock->error() == QLockFile::LockFailedError) {
+        qint64 pid = 0;
+        QString host, app;
+        lock->getLockInfo(&pid, &host, &app);
+        sayInABox(QStringLiteral("sessionInUse"), tr("Open session"),
+                  tr("%1 is open in another NeedleBench window (process %2 on %3). Close it there first, or open another session.")
+                      .arg(QDir::toNativeSeparators(dir))
+                      .arg(pid)
+                      .arg(host));
+        return false;
+    }
     try {
         Session s = Session::open(dir);
         QStringList problems;
         recovered_ = s.recoverInterrupted(engine_->status().runPath, &problems);
         session_ = std::move(s);
+        if (lock->isLocked())
+            sessionLock_ = std::move(lock);  // the last session's is released
         // Said in a box, not only in the status bar, which the devices' first messages overwrote
         // at once: a run cut short by a crash is news the operator must not miss. Modeless, and
         // shown once: the recovered files are closed now.
@@ -430,16 +449,14 @@ void MainWindow::openStartupSession()
     QString dir = options_.sessionDir;
     if (dir.isEmpty() && options_.persistSettings && Session::isSession(QSettings().value(QStringLiteral("session/last")).toString()))
         dir = QSettings().value(QStringLiteral("session/last")).toString();
-    if (!dir.isEmpty() && Session::isSession(dir))
-        openSession(dir);
-    else if (!dir.isEmpty())
-        createSession(dir, {});
-    else {
-        panel_->setSessionOpen(false);
-        showMessage(tr("No session open: start a new one or open one (Session menu)."));
-        if (options_.welcome)
-            QTimer::singleShot(0, this, &MainWindow::showWelcome);
-    }
+    // One that cannot be opened (another window has it) leaves the operator at the welcome.
+    if (!dir.isEmpty() && (Session::isSession(dir) ? openSession(dir) : createSession(dir, {})))
+        return;
+    panel_->setSessionOpen(false);
+    showMessage(tr("No session open: start a new one or open one (Session menu)."));
+    // The welcome would hide the box that says why the last session did not open, and block it.
+    if (options_.welcome && !findChild<QMessageBox*>(QStringLiteral("sessionInUse")))
+        QTimer::singleShot(0, this, &MainWindow::showWelcome);
 }
 
 void MainWindow::saveWorkspace(QSettings& settings) const
@@ -727,7 +744,16 @@ void MainWindow::sayInABox(const QString& name, const QString& title, const QStr
         box->raise();
         return;
     }
-    warnModeless(this, title, text)->setObjectName(name);
+    QMessageBox* box = warnModeless(this, title, text);
+    box->setObjectName(name);
+    if (!isVisible()) {
+        // Said at start (another window has the last session): over the window once it shows.
+        box->hide();
+        QTimer::singleShot(0, box, [box] {
+            box->show();
+            box->raise();
+        });
+    }
 }
 
 void MainWindow::showMessage(const QString& text, bool alarm)

@@ -20,6 +20,7 @@ class QTimer;
 class QDockWidget;
 class QTabWidget;
 class QMenu;
+class QLockFile;
 class QSettings;
 
 namespace nb {
@@ -185,6 +186,7 @@ private:
     WorkbenchOptions options_;
     std::unique_ptr<devices::AcquisitionEngine> engine_;
     std::optional<Session> session_;
+    std::unique_ptr<QLockFile> sessionLock_;  // the open session's, while this window has it
     ControlPanel* panel_ = nullptr;
     ForcePlots* plots_ = nullptr;
     QTabWidget* tabs_ = nullptr;

@@ -1360,7 +1360,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+68"/>
+        <location filename="../app/main_window.cpp" line="+69"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1405,7 +1405,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+495"/>
+        <location filename="../app/main_window.cpp" line="+510"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1468,7 +1468,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-401"/>
+        <location filename="../app/main_window.cpp" line="-416"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1578,7 +1578,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Sprache wechselt beim nächsten Start von NeedleBench.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+17"/>
+        <source>%1 is open in another NeedleBench window (process %2 on %3). Close it there first, or open another session.</source>
+        <translation>%1 ist in einem anderen NeedleBench-Fenster offen (Prozess %2 auf %3). Dort zuerst schließen oder eine andere Sitzung öffnen.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Interrupted runs</source>
         <translation>Unterbrochene Läufe</translation>
     </message>
@@ -1598,7 +1603,8 @@ oder ohne Kontakt einbeziehen</translation>
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-19"/>
+        <location line="+29"/>
         <source>Open session</source>
         <translation>Sitzung öffnen</translation>
     </message>
@@ -1613,12 +1619,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Neue Sitzung</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+19"/>
         <source>No session open: start a new one or open one (Session menu).</source>
         <translation>Keine Sitzung offen: eine neue beginnen oder eine öffnen (Menü Sitzung).</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation>Der beim Beenden von NeedleBench geprüfte Lauf ist nicht mehr da: %1</translation>
     </message>
@@ -1710,12 +1716,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-674"/>
+        <location line="-689"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+564"/>
+        <location line="+579"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1736,7 +1742,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-450"/>
+        <location line="-465"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -1359,7 +1359,7 @@ or without contact</source>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+68"/>
+        <location filename="../app/main_window.cpp" line="+69"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1404,7 +1404,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+495"/>
+        <location filename="../app/main_window.cpp" line="+510"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1467,7 +1467,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-401"/>
+        <location filename="../app/main_window.cpp" line="-416"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1577,7 +1577,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+17"/>
+        <source>%1 is open in another NeedleBench window (process %2 on %3). Close it there first, or open another session.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Interrupted runs</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1596,7 +1601,8 @@ or without contact</source>
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-19"/>
+        <location line="+29"/>
         <source>Open session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1611,12 +1617,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+19"/>
         <source>No session open: start a new one or open one (Session menu).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1705,12 +1711,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-674"/>
+        <location line="-689"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+564"/>
+        <location line="+579"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1731,7 +1737,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-450"/>
+        <location line="-465"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

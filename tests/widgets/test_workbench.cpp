@@ -400,6 +400,32 @@ private slots:
         QCOMPARE(w.reviewWorkspace()->labelModel()->labels().size(), std::size_t(0));
     }
 
+    // A second window on a session already open in one is refused, named in a box: it closed
+    // the first's recording as "recovered" and both recorded into the folder. Free again once
+    // the first window goes.
+    void oneWindowASession()
+    {
+        QTemporaryDir tmp;
+        const QString dir = tmp.filePath(QStringLiteral("s"));
+        auto first = std::make_unique<nb::MainWindow>(options(dir, false));
+        QVERIFY(first->session());
+        {
+            nb::MainWindow second(options(QString(), false));
+            QVERIFY(!second.openSession(dir));
+            QVERIFY(!second.session());
+            auto* box = second.findChild<QMessageBox*>(QStringLiteral("sessionInUse"));
+            QVERIFY(box);
+            QVERIFY2(box->text().contains(QDir::toNativeSeparators(dir)) && box->text().contains(QString::number(QCoreApplication::applicationPid())),
+                     qPrintable(box->text()));
+            // The first window opens its own session again without a word.
+            QVERIFY(first->openSession(dir));
+        }
+        first.reset();
+        nb::MainWindow third(options(QString(), false));
+        QVERIFY(third.openSession(dir));
+        QVERIFY(third.session());
+    }
+
     // Start pressed and refused by the engine (here the session folder was deleted meanwhile):
     // the reason in a box, not only in a status line gone in a few seconds.
     void refusedStartIsSaidInABox()
