@@ -19,6 +19,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QLockFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QRegularExpression>
@@ -332,6 +333,7 @@ int cmdRun(const QStringList& args, Io io)
     Plan plan;
     QString planPath;
     std::optional<Session> s;
+    SessionLock held;  // the session, while the plan runs (lockSession)
     try {
         plan = readPlanFile(planArg);
         if (!Session::isSession(dir)) {
@@ -354,6 +356,9 @@ int cmdRun(const QStringList& args, Io io)
                                 .arg(planPath, dir));
             plan = stored;
         }
+        held = lockSession(s->dir());
+        if (held.refused())
+            return fail(io, sub, nb::TrCli::tr("%1 is open in another NeedleBench (%2); close it there first").arg(s->dir(), held.heldBy));
         QStringList problems;
         for (const QString& line : s->recoverInterrupted({}, &problems))
             io.out << nb::TrCli::tr("recovered %1").arg(line) << '\n';

@@ -360,20 +360,13 @@ void MainWindow::buildMenus()
 
 bool MainWindow::openSession(const QString& dir)
 {
-    // One window a session: a second one "recovered" the run the first was recording (closed
-    // its file with a footer under it) and both recorded into the folder. A session on a disk
-    // that takes no lock file (read-only media) opens all the same: nothing records there.
-    auto lock = std::make_unique<QLockFile>(QDir(dir).filePath(QStringLiteral(".needlebench.lock")));
-    lock->setStaleLockTime(0);  // held as long as its window lives; a crashed one's is taken over
-    if (!(session_ && QDir(session_->dir()) == QDir(dir)) && !lock->tryLock(0) && lock->error() == QLockFile::LockFailedError) {
-        qint64 pid = 0;
-        QString host, app;
-        lock->getLockInfo(&pid, &host, &app);
+    // One program a session (lockSession says why).
+    const bool same = session_ && QDir(session_->dir()) == QDir(dir);  // this window has it already
+    SessionLock lock = same ? SessionLock{} : lockSession(dir);
+    if (lock.refused()) {
         sayInABox(QStringLiteral("sessionInUse"), tr("Open session"),
-                  tr("%1 is open in another NeedleBench window (process %2 on %3). Close it there first, or open another session.")
-                      .arg(QDir::toNativeSeparators(dir))
-                      .arg(pid)
-                      .arg(host));
+                  tr("%1 is open in another NeedleBench (%2). Close it there first, or open another session.")
+                      .arg(QDir::toNativeSeparators(dir), lock.heldBy));
         return false;
     }
     try {
@@ -381,8 +374,8 @@ bool MainWindow::openSession(const QString& dir)
         QStringList problems;
         recovered_ = s.recoverInterrupted(engine_->status().runPath, &problems);
         session_ = std::move(s);
-        if (lock->isLocked())
-            sessionLock_ = std::move(lock);  // the last session's is released
+        if (!same)
+            sessionLock_ = std::move(lock.file);  // the last session's is released
         // Said in a box, not only in the status bar, which the devices' first messages overwrote
         // at once: a run cut short by a crash is news the operator must not miss. Modeless, and
         // shown once: the recovered files are closed now.

@@ -13,6 +13,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLockFile>
 #include <QRegularExpression>
 #include <algorithm>
 
@@ -412,6 +413,22 @@ void Session::setActiveCalibration(const QString& name)
 {
     activeCalibration_ = name;
     save();
+}
+
+SessionLock lockSession(const QString& dir)
+{
+    SessionLock lock;
+    auto file = std::make_unique<QLockFile>(QDir(dir).filePath(QStringLiteral(".needlebench.lock")));
+    file->setStaleLockTime(0);  // held as long as its program lives, however long
+    if (file->tryLock(0)) {
+        lock.file = std::move(file);
+    } else if (file->error() == QLockFile::LockFailedError) {
+        qint64 pid = 0;
+        QString host, app;
+        file->getLockInfo(&pid, &host, &app);
+        lock.heldBy = nb::TrCore::tr("process %1 on %2").arg(pid).arg(host);
+    }
+    return lock;
 }
 
 }  // namespace nb

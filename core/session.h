@@ -20,8 +20,11 @@
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
+#include <memory>
 #include <optional>
 #include <vector>
+
+class QLockFile;
 
 namespace nb {
 
@@ -134,5 +137,17 @@ private:
     QString activeCalibration_;
     QJsonObject simulatedRig_;
 };
+
+// A session held by one program (a window, `plan run`) while the lock lives: a second one
+// "recovered" the run the first was recording (its file closed with a footer under it), and
+// both recorded into the folder. `heldBy` says who has it when another program does ("process
+// 4711 on lab-pc"); a folder that takes no lock file (read-only media) is not refused, as
+// nothing records there. A crashed program's lock is taken over.
+struct SessionLock {
+    std::unique_ptr<QLockFile> file;  // null when refused or not lockable
+    QString heldBy;
+    bool refused() const { return !heldBy.isEmpty(); }
+};
+SessionLock lockSession(const QString& dir);
 
 }  // namespace nb

@@ -1405,7 +1405,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+510"/>
+        <location filename="../app/main_window.cpp" line="+504"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1468,7 +1468,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-416"/>
+        <location filename="../app/main_window.cpp" line="-410"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1578,12 +1578,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die Sprache wechselt beim nächsten Start von NeedleBench.</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>%1 is open in another NeedleBench window (process %2 on %3). Close it there first, or open another session.</source>
-        <translation>%1 ist in einem anderen NeedleBench-Fenster offen (Prozess %2 auf %3). Dort zuerst schließen oder eine andere Sitzung öffnen.</translation>
-    </message>
-    <message>
-        <location line="+25"/>
+        <location line="+35"/>
         <source>Interrupted runs</source>
         <translation>Unterbrochene Läufe</translation>
     </message>
@@ -1603,13 +1598,18 @@ oder ohne Kontakt einbeziehen</translation>
         </translation>
     </message>
     <message>
-        <location line="-19"/>
-        <location line="+29"/>
+        <location line="-17"/>
+        <location line="+27"/>
         <source>Open session</source>
         <translation>Sitzung öffnen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-26"/>
+        <source>%1 is open in another NeedleBench (%2). Close it there first, or open another session.</source>
+        <translation>%1 ist in einem anderen NeedleBench offen (%2). Dort zuerst schließen oder eine andere Sitzung öffnen.</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>NeedleBench – %1</source>
         <translation>NeedleBench – %1</translation>
     </message>
@@ -1624,7 +1624,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Keine Sitzung offen: eine neue beginnen oder eine öffnen (Menü Sitzung).</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation>Der beim Beenden von NeedleBench geprüfte Lauf ist nicht mehr da: %1</translation>
     </message>
@@ -1709,19 +1709,19 @@ Die zuvor geschriebenen Zeilen bleiben in der Datei. Vor dem nächsten Lauf Plat
     </message>
     <message>
         <location line="-34"/>
-        <location line="+89"/>
+        <location line="+98"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-689"/>
+        <location line="-692"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+579"/>
+        <location line="+573"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1737,12 +1737,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+106"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-465"/>
+        <location line="-468"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -3093,9 +3093,9 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location filename="../app/cmd_fit.cpp" line="+86"/>
         <location line="+49"/>
         <location line="+133"/>
-        <location filename="../app/cmd_plan.cpp" line="+77"/>
+        <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
-        <location line="+286"/>
+        <location line="+290"/>
         <location filename="../app/cmd_sync.cpp" line="+36"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -4104,7 +4104,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>&apos;needlebench simulate --help&apos; zeigt die Optionen.</translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-466"/>
+        <location filename="../app/cmd_plan.cpp" line="-470"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation>&apos;needlebench plan %1 --help&apos; zeigt die Optionen.</translation>
     </message>
@@ -4257,12 +4257,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+6"/>
-        <location line="+152"/>
+        <location line="+156"/>
         <source>run %1: %2</source>
         <translation>Lauf %1: %2</translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-145"/>
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation>der Sitzungsordner (wird angelegt, wenn er fehlt; enthält plan.json und die Läufe)</translation>
     </message>
@@ -4292,12 +4292,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--session ORDNER ist erforderlich</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>%1 holds a different plan; to resume it run &apos;needlebench plan run %1 --session %2&apos;, or use another session folder</source>
         <translation>%1 enthält einen anderen Plan; zum Fortsetzen &apos;needlebench plan run %1 --session %2&apos; ausführen oder einen anderen Sitzungsordner wählen</translation>
     </message>
     <message>
         <location line="+6"/>
+        <source>%1 is open in another NeedleBench (%2); close it there first</source>
+        <translation>%1 ist in einem anderen NeedleBench offen (%2); dort zuerst schließen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>recovered %1</source>
         <translation>wiederhergestellt: %1</translation>
     </message>
@@ -5509,7 +5514,7 @@ Befehle:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+193"/>
+        <location filename="../core/session.cpp" line="+194"/>
         <source>no header row</source>
         <translation>keine Kopfzeile</translation>
     </message>
@@ -5616,12 +5621,17 @@ Befehle:
         <translation>kein Sitzungsordner (kein %1)</translation>
     </message>
     <message>
+        <location line="+176"/>
+        <source>process %1 on %2</source>
+        <translation>Prozess %1 auf %2</translation>
+    </message>
+    <message>
         <location filename="../core/end_reason.cpp" line="+1"/>
         <source>recovered</source>
         <translation>wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-96"/>
+        <location filename="../core/session.cpp" line="-272"/>
         <source>unreadable</source>
         <translation>unlesbar</translation>
     </message>

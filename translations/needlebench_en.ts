@@ -1404,7 +1404,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+510"/>
+        <location filename="../app/main_window.cpp" line="+504"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1467,7 +1467,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-416"/>
+        <location filename="../app/main_window.cpp" line="-410"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1577,12 +1577,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>%1 is open in another NeedleBench window (process %2 on %3). Close it there first, or open another session.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+25"/>
+        <location line="+35"/>
         <source>Interrupted runs</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1601,13 +1596,18 @@ or without contact</source>
         </translation>
     </message>
     <message>
-        <location line="-19"/>
-        <location line="+29"/>
+        <location line="-17"/>
+        <location line="+27"/>
         <source>Open session</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-26"/>
+        <source>%1 is open in another NeedleBench (%2). Close it there first, or open another session.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>NeedleBench – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1622,7 +1622,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1705,18 +1705,18 @@ The rows written before are kept in the file. Free space on the disk (or choose 
     </message>
     <message>
         <location line="-34"/>
-        <location line="+89"/>
+        <location line="+98"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-689"/>
+        <location line="-692"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+579"/>
+        <location line="+573"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1732,12 +1732,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+106"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-465"/>
+        <location line="-468"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3086,9 +3086,9 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <location filename="../app/cmd_fit.cpp" line="+86"/>
         <location line="+49"/>
         <location line="+133"/>
-        <location filename="../app/cmd_plan.cpp" line="+77"/>
+        <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
-        <location line="+286"/>
+        <location line="+290"/>
         <location filename="../app/cmd_sync.cpp" line="+36"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
@@ -4055,7 +4055,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-466"/>
+        <location filename="../app/cmd_plan.cpp" line="-470"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4200,12 +4200,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+152"/>
+        <location line="+156"/>
         <source>run %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-145"/>
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4235,12 +4235,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>%1 holds a different plan; to resume it run &apos;needlebench plan run %1 --session %2&apos;, or use another session folder</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+6"/>
+        <source>%1 is open in another NeedleBench (%2); close it there first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>recovered %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5411,7 +5416,7 @@ Commands:
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+193"/>
+        <location filename="../core/session.cpp" line="+194"/>
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5518,12 +5523,17 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+176"/>
+        <source>process %1 on %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../core/end_reason.cpp" line="+1"/>
         <source>recovered</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-96"/>
+        <location filename="../core/session.cpp" line="-272"/>
         <source>unreadable</source>
         <translation type="unfinished"></translation>
     </message>

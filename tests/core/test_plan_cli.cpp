@@ -4,6 +4,7 @@
 // layout. And a plan killed mid-run resumes at the run it was killed in.
 #include "core/plan.h"
 #include "core/run_file.h"
+#include "core/session.h"
 #include "support/needlebench_cli.h"
 
 #include <QDir>
@@ -85,6 +86,24 @@ private slots:
         const nbtest::CliResult r = plan({"run", p, "--session", path(QStringLiteral("s-broken"))});
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains(p + QStringLiteral(": defaults.velocity_mm_s: ")), qPrintable(r.err));
+    }
+
+    // A session another NeedleBench holds (a window recording into it) is not run into: the
+    // plan "recovered" the window's run in progress. Free again once the holder lets go.
+    void aSessionInUseIsNotRunInto()
+    {
+        const QString planFile = path(QStringLiteral("held.json")), session = path(QStringLiteral("held"));
+        QCOMPARE(plan({"new", "--template", "prostate", "--out", planFile}).code, 0);
+        nb::Session::create(session, {});
+        {
+            const nb::SessionLock held = nb::lockSession(session);
+            QVERIFY(held.file && !held.refused());
+            const nbtest::CliResult r = plan({"run", planFile, "--session", session});
+            QCOMPARE(r.code, 1);
+            QVERIFY2(r.err.contains(QStringLiteral("open in another NeedleBench (process %1").arg(QCoreApplication::applicationPid())), qPrintable(r.err));
+            QVERIFY(!QFileInfo::exists(QDir(session).filePath(QStringLiteral("plan.json"))));
+        }
+        QVERIFY(!nb::lockSession(session).refused());
     }
 
     void frictionUnderImagingEndToEnd()
