@@ -67,6 +67,22 @@ QString screenshotDir()
 }
 
 
+// A completed linear run of one second (500 samples) at `path`, as the recorder writes it.
+void writeCompletedRun(const QString& path)
+{
+    nb::RunFileWriter writer;
+    nb::Metadata meta;
+    meta.set(QStringLiteral("motion"), QStringLiteral("linear"));
+    writer.open(path, meta, {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")});
+    for (int i = 0; i < 500; ++i) {
+        const double row[] = {i * 0.002, i * 0.008, 0.001 * i};
+        writer.writeRow(row);
+    }
+    nb::Metadata footer;
+    footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
+    writer.close(footer);
+}
+
 // Enable, bias and zero through the panel's buttons, checking the start stays locked until all are done.
 void prepare(nb::MainWindow& w)
 {
@@ -374,19 +390,7 @@ private slots:
         const QString a = tmp.filePath(QStringLiteral("a")), b = tmp.filePath(QStringLiteral("b"));
         nb::Session::create(a, {});
         const QString run = QDir(a).filePath(QStringLiteral("run_001_linear.csv"));
-        {
-            nb::RunFileWriter writer;
-            nb::Metadata meta;
-            meta.set(QStringLiteral("motion"), QStringLiteral("linear"));
-            writer.open(run, meta, {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")});
-            for (int i = 0; i < 500; ++i) {
-                const double row[] = {i * 0.002, i * 0.008, 0.001 * i};
-                writer.writeRow(row);
-            }
-            nb::Metadata footer;
-            footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
-            writer.close(footer);
-        }
+        writeCompletedRun(run);
         nb::MainWindow w(options(a, false));
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
@@ -455,19 +459,7 @@ private slots:
         const QString a = tmp.filePath(QStringLiteral("a"));
         nb::Session::create(a, {});
         const QString run = QDir(a).filePath(QStringLiteral("run_001_linear.csv"));
-        {
-            nb::RunFileWriter writer;
-            nb::Metadata meta;
-            meta.set(QStringLiteral("motion"), QStringLiteral("linear"));
-            writer.open(run, meta, {QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("force_N")});
-            for (int i = 0; i < 500; ++i) {
-                const double row[] = {i * 0.002, i * 0.008, 0.001 * i};
-                writer.writeRow(row);
-            }
-            nb::Metadata footer;
-            footer.set(QStringLiteral("end_reason"), QStringLiteral("completed"));
-            writer.close(footer);
-        }
+        writeCompletedRun(run);
         auto persisted = [](const QString& dir) {
             nb::WorkbenchOptions o = options(dir, false);
             o.persistSettings = true;
