@@ -676,9 +676,9 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
     // The quit question follows what happens while it is open (an emergency stop ended the
     // run and the motion it spoke of).
     if (quitQuestion_ && quitQuestion_->isVisible()) {
-        const Permission quit = permission(Control::Quit, s.interlocks());
-        const QString text = quit.enabled ? tr("Nothing moves or records now. Quit?")
-                                          : tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason);
+        QString text = quitQuestionText(s.interlocks());
+        if (text.isEmpty())
+            text = tr("Nothing moves or records now. Quit?");
         if (quitQuestion_->text() != text)
             quitQuestion_->setText(text);
     }
@@ -763,10 +763,23 @@ void MainWindow::showMessage(const QString& text, bool alarm)
     statusBar()->setToolTip(text);  // whole, where the bar is too narrow for it
 }
 
+QString MainWindow::quitQuestionText(const InterlockState& st)
+{
+    const Permission quit = permission(Control::Quit, st);
+    if (!quit.enabled)
+        return tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason);
+    // Nothing moves, but the needle was left in the tissue (a run ended at depth, an emergency
+    // stop): the window went at once and the operator lost the panel that withdraws it.
+    if (st.inTissue)
+        return tr("The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?");
+    return {};
+}
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     const Permission quit = permission(Control::Quit, engine_->status().interlocks());
-    if (!quit.enabled && !quitConfirmed_) {
+    const QString question = quitQuestionText(engine_->status().interlocks());
+    if (!question.isEmpty() && !quitConfirmed_) {
         // The offer to end the run first, modeless: the stage moves while it is asked, and the
         // EMERGENCY STOP button must stay clickable (Esc in the question stops it as well).
         event->ignore();
@@ -775,9 +788,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
             quitQuestion_->activateWindow();
             return;
         }
-        quitQuestion_ = new QMessageBox(QMessageBox::Question, tr("Quit"),
-                                        tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason),
-                                        QMessageBox::Yes | QMessageBox::No, this);
+        quitQuestion_ = new QMessageBox(QMessageBox::Question, tr("Quit"), question, QMessageBox::Yes | QMessageBox::No, this);
         quitQuestion_->setObjectName(QStringLiteral("quitQuestion"));
         quitQuestion_->setDefaultButton(QMessageBox::No);
         connect(quitQuestion_, &QMessageBox::finished, this, [this](int answer) {

@@ -135,6 +135,9 @@ private:
     // Startup, welcome, recent sessions, video and export actions (issue 14).
     // A warning box named `name` (modeless: the E-stop stays at hand), or that box again with `text`.
     void sayInABox(const QString& name, const QString& title, const QString& text);
+    // What the quit question asks in state `st` (a run to stop, a needle left in tissue); empty
+    // when quitting needs no question.
+    static QString quitQuestionText(const InterlockState& st);
     void openStartupSession();
     // What the operator was looking at when the window closed: the tab, and Review's run and
     // cursor (a run of the session opened at start only).

@@ -1674,12 +1674,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation>Nichts bewegt sich oder zeichnet jetzt auf. Beenden?</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+18"/>
         <source>Run saved: %1 (%2, %3 samples, %4 dropped)</source>
         <translation>Lauf gespeichert: %1 (%2, %3 Messwerte, %4 verloren)</translation>
     </message>
@@ -1708,15 +1708,14 @@ Die zuvor geschriebenen Zeilen bleiben in der Datei. Vor dem nächsten Lauf Plat
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="-34"/>
-        <location line="+98"/>
+        <location line="+55"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-692"/>
+        <location line="-683"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
@@ -1737,12 +1736,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+102"/>
+        <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
+        <translation>Die Nadel steckt noch im Gewebe. Zuerst zurückziehen (Zum Start) oder beenden und sie dort lassen?</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-468"/>
+        <location line="-481"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -404,6 +404,28 @@ private slots:
         QCOMPARE(w.reviewWorkspace()->labelModel()->labels().size(), std::size_t(0));
     }
 
+    // A run that ended at depth leaves the needle in the tissue: quitting asks (it went at once,
+    // and with it the panel that withdraws the needle); after To start it does not.
+    void quitAsksWhileTheNeedleIsInTissue()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setMotion(w, 10.0, 30.0);
+        nbtest::prepareToRecord(w);
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().inTissue, 10000);
+        QVERIFY(!w.close());
+        auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
+        QVERIFY(question && question->isVisible());
+        QVERIFY2(question->text().contains(QStringLiteral("still in the tissue")), qPrintable(question->text()));
+        question->button(QMessageBox::No)->click();
+        QVERIFY(w.isVisible());
+        QVERIFY(w.controlPanel()->button(Control::Withdraw)->isEnabled());
+    }
+
     // A second window on a session already open in one is refused, named in a box: it closed
     // the first's recording as "recovered" and both recorded into the folder. Free again once
     // the first window goes.
