@@ -419,6 +419,7 @@ void MainWindow::reviewRun(const QString& path)
     // The workspace restores the run's video and sync kept in the session (or clears them).
     if (!review_->openRun(path))
         return;
+    sessionView_->selectRun(path);
     tabs_->setCurrentWidget(review_);
 }
 
@@ -465,8 +466,10 @@ void MainWindow::restoreWorkspace()
     const QString run = settings.value(QStringLiteral("review/run")).toString();
     // A run of another session is not this one's to show (reviewBelongsToTheOpenSession).
     const bool ours = session_ && !run.isEmpty() && QFileInfo(run).absoluteDir() == QDir(session_->dir());
-    if (ours && QFileInfo::exists(run) && review_->openRun(run))
+    if (ours && QFileInfo::exists(run) && review_->openRun(run)) {
         review_->setCursorTime(settings.value(QStringLiteral("review/cursor_s")).toDouble());
+        sessionView_->selectRun(run);
+    }
     else if (ours)
         showMessage(tr("The run in review when NeedleBench closed is gone: %1").arg(QDir::toNativeSeparators(run)));
     const int tab = settings.value(QStringLiteral("workspace/tab"), 0).toInt();

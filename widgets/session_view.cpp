@@ -117,6 +117,16 @@ void SessionView::setSession(const Session* session)
 
 void SessionView::setBusyPath(const QString& path) { model_->setBusyPath(path); }
 
+void SessionView::selectRun(const QString& path)
+{
+    for (int row = 0; row < model_->rowCount(); ++row)
+        if (model_->index(row, 0).data(Qt::UserRole).toString() == path) {
+            view_->selectRow(row);
+            view_->scrollTo(model_->index(row, 0));
+            return;
+        }
+}
+
 // A session's free text that names several file values ("beveled/diamond", "stiffness +
 // friction", as the demo writes them), each known one said in the operator's language.
 static QString eachPartNamed(const QString& text, const QString& separator, QString (*displayName)(const QString&))

@@ -43,6 +43,8 @@ public:
     void setSession(const Session* session);
     void refresh();
     void setBusyPath(const QString& path);
+    // Selects (and scrolls to) the run at `path`: the one in review.
+    void selectRun(const QString& path);
     RunListModel* model() const { return model_; }
     QTableView* view() const { return view_; }
 

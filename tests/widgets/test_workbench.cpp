@@ -504,6 +504,10 @@ private slots:
             QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.reviewWorkspace()));
             QCOMPARE(w.reviewWorkspace()->runPath(), run);
             QCOMPARE(w.reviewWorkspace()->cursorTime(), 0.5);
+            // and it is the run selected in the session's list
+            const QModelIndexList selected = w.sessionView()->view()->selectionModel()->selectedRows();
+            QCOMPARE(selected.size(), 1);
+            QCOMPARE(selected.first().data(Qt::UserRole).toString(), run);
             QVERIFY(w.close());
         }
         QVERIFY(QFile::remove(run));
