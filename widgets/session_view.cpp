@@ -119,6 +119,7 @@ void SessionView::setBusyPath(const QString& path) { model_->setBusyPath(path); 
 
 void SessionView::selectRun(const QString& path)
 {
+    selected_ = path;
     for (int row = 0; row < model_->rowCount(); ++row)
         if (model_->index(row, 0).data(Qt::UserRole).toString() == path) {
             view_->selectRow(row);
@@ -171,6 +172,8 @@ void SessionView::refresh()
                               specimen.isEmpty() ? tr("no specimen details") : specimen.join(QStringLiteral(", ")),
                               cal ? cal->name.toHtmlEscaped() : tr("none saved in this session (the sensor's nominal one is used)")));
     model_->setRuns(session_->runs());
+    if (!selected_.isEmpty())
+        selectRun(selected_);
 }
 
 }  // namespace nb

@@ -43,7 +43,7 @@ public:
     void setSession(const Session* session);
     void refresh();
     void setBusyPath(const QString& path);
-    // Selects (and scrolls to) the run at `path`: the one in review.
+    // Selects (and scrolls to) the run at `path`, the one in review, now and after each refresh.
     void selectRun(const QString& path);
     RunListModel* model() const { return model_; }
     QTableView* view() const { return view_; }
@@ -56,6 +56,7 @@ private:
     QLabel* header_ = nullptr;
     RunListModel* model_ = nullptr;
     QTableView* view_ = nullptr;
+    QString selected_;  // the run in review, selected again when the list is read again
 };
 
 }  // namespace nb
