@@ -93,6 +93,14 @@ QString unwritableOutput(const QString& option, const QString& out)
     return {};
 }
 
+QByteArray traceCsv(const char* header, const std::vector<double>& time_s, const std::vector<double>& value, int decimals)
+{
+    QByteArray csv = QByteArray(header) + '\n';
+    for (std::size_t i = 0; i < time_s.size() && i < value.size(); ++i)
+        csv += csvNumber(time_s[i], 6) + ',' + csvNumber(value[i], decimals) + '\n';
+    return csv;
+}
+
 QString writeOutput(const QString& option, const QString& out, const QByteArray& bytes)
 {
     try {

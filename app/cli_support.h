@@ -8,6 +8,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <optional>
+#include <vector>
 
 namespace nb::cli {
 
@@ -40,6 +41,10 @@ QString existingOutput(const QString& option, const QString& out, bool overwrite
 // that does not exist, or where no file can be made. Checked before a run records, so that a
 // run is not recorded (the needle inserted) only to fail on its outputs. Empty when writable.
 QString unwritableOutput(const QString& option, const QString& out);
+
+// A trace as CSV: `header`, then a row per sample, the time to the microsecond and the value to
+// `decimals` places (empty where it is NaN: no reading).
+QByteArray traceCsv(const char* header, const std::vector<double>& time_s, const std::vector<double>& value, int decimals);
 
 // Writes `bytes` to `out` (given with `option`) whole or not at all (a temporary renamed once
 // written). Empty when written, else what to tell the user: the file and why (a full disk by name).

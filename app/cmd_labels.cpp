@@ -183,11 +183,7 @@ int cmdLabels(const QStringList& args, Io io)
             }
         }
         if (tissue && parser.isSet(tissueTrace)) {
-            QByteArray csv = "time_s,tissue_velocity_mm_s\n";
-            for (std::size_t i = 0; i < tissue->time_s.size(); ++i)
-                csv += QString::number(tissue->time_s[i], 'f', 6).toLatin1() + ','
-                       + (std::isfinite(tissue->velocity_mm_s[i]) ? QString::number(tissue->velocity_mm_s[i], 'f', 4).toLatin1() : QByteArray())
-                       + '\n';
+            const QByteArray csv = traceCsv("time_s,tissue_velocity_mm_s", tissue->time_s, tissue->velocity_mm_s, 4);
             if (const QString e = writeOutput(QStringLiteral("--tissue-trace"), parser.value(tissueTrace), csv); !e.isEmpty()) {
                 io.err << "needlebench labels: " << e << '\n';
                 return Failure;

@@ -129,11 +129,7 @@ int cmdSync(const QStringList& args, Io io)
         // A limit shorter than the records leaves offsets beyond it untried.
         const bool limited = options.maxOffset_s < index.duration_s() + (run.size() > 1 ? run.time_s.back() - run.time_s.front() : 0.0);
         if (parser.isSet(trace)) {
-            QByteArray csv = "time_s,displacement_px\n";
-            for (std::size_t i = 0; i < vs.track.time_s.size(); ++i)
-                csv += QString::number(vs.track.time_s[i], 'f', 6).toLatin1() + ','
-                       + (std::isfinite(vs.track.displacement_px[i]) ? QString::number(vs.track.displacement_px[i], 'f', 3).toLatin1() : QByteArray())
-                       + '\n';
+            const QByteArray csv = traceCsv("time_s,displacement_px", vs.track.time_s, vs.track.displacement_px, 3);
             if (const QString e = writeOutput(QStringLiteral("--trace"), parser.value(trace), csv); !e.isEmpty()) {
                 io.err << "needlebench sync: " << e << '\n';
                 return Failure;
