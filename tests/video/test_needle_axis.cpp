@@ -3,10 +3,12 @@
 // A line found in the picture used to point left to right or downwards: a needle entering from
 // the right or from below then had its shaft ahead of the tip, the tip was lost in most frames
 // and the sync went by what was left (probe seed 187716, case 10: 116 frames off).
+#include "support/sanitizer_share.h"
 #include "needle_video.h"
 
 #include <QtTest>
 
+#include <array>
 #include <cmath>
 
 namespace {
@@ -73,6 +75,7 @@ private slots:
 
     void pointsFromShaftToTip()
     {
+        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
         QFETCH(double, towardsTip_deg);
         QFETCH(bool, clockOnShaft);
         QFETCH(bool, tissueCarried);
@@ -138,9 +141,14 @@ private slots:
     // the needle's line was found at 2 of these 8 angles before, and must be at 6.
     void findsAFaintShaftOnGrainAsFine()
     {
-        int found = 0;
+        const std::array angles{10.0, 35.0, 80.0, 122.0, 160.0, 205.0, 250.0, 300.0};
+        int found = 0, ran = 0;
         QStringList missed;
-        for (double angle : {10.0, 35.0, 80.0, 122.0, 160.0, 205.0, 250.0, 300.0}) {
+        for (std::size_t i = 0; i < angles.size(); ++i) {
+            if (!nb::test::caseInShare(i))
+                continue;
+            ++ran;
+            const double angle = angles[i];
             NeedleVideo v{angle};
             v.contrast = 16.0;
             v.grain = 25.0;
@@ -162,8 +170,10 @@ private slots:
             if (!needle)
                 missed << QString::number(angle);
         }
-        qInfo("the needle's line found at %d of 8 angles; not at %s deg", found, qPrintable(missed.join(QStringLiteral(", "))));
-        QVERIFY2(found >= 6, qPrintable(QStringLiteral("the needle's line found at only %1 of 8 angles").arg(found)));
+        qInfo("the needle's line found at %d of %d angles; not at %s deg", found, ran, qPrintable(missed.join(QStringLiteral(", "))));
+        // A share of the angles (under the sanitizers) says nothing of the whole's count.
+        if (ran == int(angles.size()))
+            QVERIFY2(found >= 6, qPrintable(QStringLiteral("the needle's line found at only %1 of 8 angles").arg(found)));
     }
 
     // The edge response needs 8 px beyond a sample: a tip closer than that to the picture's
@@ -224,6 +234,7 @@ private slots:
 
     void turnsALineTheClockLeavesUndecided()
     {
+        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
         QFETCH(double, towardsTip_deg);
         QFETCH(double, clockScale);
         NeedleVideo v{towardsTip_deg, true, false};
