@@ -281,9 +281,7 @@ void ForcePlots::addEvent(double time_s, const QString& label)
         if (!label.isEmpty()) {
             auto* text = new QCPItemText(forcePosition_);
             text->position->setCoords(data_->position_mm[i], data_->force_N[i]);
-            // Text on the side away from the nearer edge: the newest point sits at the right edge.
-            const Qt::Alignment side = data_->position_mm[i] > 0.5 * (xMin_ + xMax_) ? Qt::AlignRight : Qt::AlignLeft;
-            text->setPositionAlignment(side | (slot % 2 ? Qt::AlignTop : Qt::AlignBottom));
+            text->setPositionAlignment(Qt::AlignLeft | (slot % 2 ? Qt::AlignTop : Qt::AlignBottom));
             text->setText(label);
             text->setColor(QColor(180, 100, 0));
             event.items.push_back(text);
@@ -387,9 +385,26 @@ void ForcePlots::refresh()
                                  .arg(above ? tr(" (above the plot)") : QString())
                                  .arg(locale.toString(limit_N_ - latest, 'f', 2)));
     }
+    keepEventLabelsInside();
     for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_})
         plot->replot();
     ++frames_;
+}
+
+// An event's label reads away from the nearer edge of the plot as it is now: the newest
+// samples sit at the right edge, and a label written rightwards from there was cut ("E-ST").
+void ForcePlots::keepEventLabelsInside()
+{
+    for (const Event& e : events_)
+        for (QCPAbstractItem* item : e.items) {
+            auto* text = qobject_cast<QCPItemText*>(item);
+            if (!text)
+                continue;
+            const double x = text->position->coords().x();
+            const bool rightHalf = x > item->parentPlot()->xAxis->range().center();
+            const Qt::Alignment vertical = text->positionAlignment() & Qt::AlignVertical_Mask;
+            text->setPositionAlignment((rightHalf ? Qt::AlignRight : Qt::AlignLeft) | vertical);
+        }
 }
 
 void ForcePlots::applyFollowRanges()

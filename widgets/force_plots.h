@@ -91,6 +91,7 @@ private:
     void forgetShown();
     void showMarks();
     void applyFollowRanges();
+    void keepEventLabelsInside();
     void userMovedView();
 
     QCustomPlot* forceTime_ = nullptr;

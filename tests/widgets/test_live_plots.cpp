@@ -4,6 +4,8 @@
 #include "devices/live_run.h"
 #include "widgets/force_plots.h"
 
+#include <qcustomplot.h>
+
 #include <QtTest>
 
 using namespace nb::devices;
@@ -63,6 +65,45 @@ private slots:
         pushRamp(ring, seq, 50);
         live.pull();
         QCOMPARE(plots.sampleCount(), std::size_t(50));
+    }
+
+    // The newest samples are drawn at the plots' right edge: a mark made there (an emergency
+    // stop) has its label inside each plot, read leftwards, not cut off at the edge ("E-ST").
+    void aMarkAtTheNewestSampleIsReadInFull()
+    {
+        SpscRing<Sample> ring(1 << 14);
+        std::uint64_t seq = 0;
+        LiveRun live;
+        live.setSource(&ring);
+        nb::ForcePlots plots;
+        plots.resize(900, 600);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        plots.observe(&live);
+        for (int i = 0; i < 6; ++i) {  // 30 s: the time plots follow their last seconds
+            pushRamp(ring, seq, 5000);
+            live.pull();
+        }
+        live.mark(LiveMarkKind::EmergencyStop);
+        pushRamp(ring, seq, 1);
+        live.pull();
+        int labels = 0;
+        for (QCustomPlot* plot : {plots.forceTimePlot(), plots.positionTimePlot(), plots.forcePositionPlot()}) {
+            const QRect inside = plot->axisRect()->rect();
+            for (int i = 0; i < plot->itemCount(); ++i) {
+                auto* text = qobject_cast<QCPItemText*>(plot->item(i));
+                if (!text || text->text() != nb::ForcePlots::markLabel(LiveMarkKind::EmergencyStop))
+                    continue;
+                ++labels;
+                const QPointF right = text->position->pixelPosition();
+                const double width = QFontMetricsF(text->font()).horizontalAdvance(text->text());
+                const double from = text->positionAlignment() & Qt::AlignRight ? right.x() - width : right.x();
+                QVERIFY2(from >= inside.left() && from + width <= inside.right() + 1,
+                         qPrintable(QStringLiteral("label from %1 to %2 px, plot %3 to %4 px")
+                                        .arg(from).arg(from + width).arg(inside.left()).arg(inside.right())));
+            }
+        }
+        QCOMPARE(labels, 3);
     }
 
     void pausedPlotsCatchUpWithoutLoss()
