@@ -535,11 +535,31 @@ void MainWindow::newSessionDialog()
 {
     if (refused(Control::ChangeSetup))
         return;
-    SessionInfoDialog dialog(SessionInfoDialog::Mode::New, {}, defaultSessionRoot(), this);
+    // A day of specimens: the next session starts from the open one's details, in the folder
+    // beside it; only the specimen and the notes are new. With none open, the last session made
+    // gives its operator and folder.
+    SessionInfo start;
+    QString parent = defaultSessionRoot();
+    if (session_) {
+        start = session_->info();
+        parent = QFileInfo(session_->dir()).absolutePath();
+    } else if (options_.persistSettings) {
+        start.operatorName = QSettings().value(QStringLiteral("session/operator")).toString();
+        parent = QSettings().value(QStringLiteral("session/parent"), parent).toString();
+    }
+    start.specimen.clear();
+    start.notes.clear();
+    start.created = {};
+    SessionInfoDialog dialog(SessionInfoDialog::Mode::New, start, parent, this);
     if (dialog.exec() != QDialog::Accepted || refused(Control::ChangeSetup))
         return;
     const SessionInfo info = dialog.info();
-    createSession(QDir(dialog.parentFolder()).filePath(sessionFolderName(info, QDateTime::currentDateTime())), info);
+    if (!createSession(QDir(dialog.parentFolder()).filePath(sessionFolderName(info, QDateTime::currentDateTime())), info))
+        return;
+    if (options_.persistSettings) {
+        QSettings().setValue(QStringLiteral("session/operator"), info.operatorName);
+        QSettings().setValue(QStringLiteral("session/parent"), dialog.parentFolder());
+    }
 }
 
 void MainWindow::editSessionDetails()

@@ -56,7 +56,9 @@ SessionInfoDialog::SessionInfoDialog(Mode mode, const SessionInfo& info, const Q
         folder_->setObjectName(QStringLiteral("parentFolder"));
         auto* browse = new QPushButton(tr("Browse…"), this);
         connect(browse, &QPushButton::clicked, this, [this] {
-            const QString d = QFileDialog::getExistingDirectory(this, tr("Parent folder"), folder_->text());
+            // Qt's own chooser, never the desktop's: Esc must reach the emergency stop's filter.
+            const QString d = QFileDialog::getExistingDirectory(this, tr("Parent folder"), folder_->text(),
+                                                                QFileDialog::ShowDirsOnly | QFileDialog::DontUseNativeDialog);
             if (!d.isEmpty())
                 folder_->setText(d);
         });

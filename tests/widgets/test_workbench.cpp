@@ -785,6 +785,58 @@ private slots:
         QCOMPARE(r.run.meta(QStringLiteral("tip")).value_or(QString()), QStringLiteral("diamond"));
     }
 
+    // The next specimen of the day: New session… starts from the open session's details and
+    // folder, the specimen and notes blank, and the session made carries what was kept.
+    void newSessionStartsFromTheOpenOne()
+    {
+        QTemporaryDir tmp;
+        const QString first = tmp.filePath(QStringLiteral("first"));
+        nb::SessionInfo info;
+        info.organ = QStringLiteral("bovine liver");
+        info.specimen = QStringLiteral("3");
+        info.tip = QStringLiteral("diamond");
+        info.thickness_mm = 20.0;
+        info.operatorName = QStringLiteral("Ada");
+        info.protocol = QStringLiteral("friction");
+        info.notes = QStringLiteral("left lobe");
+        nb::Session::create(first, info);
+        nb::MainWindow w(options(first, false));
+        QVERIFY(w.session());
+        QAction* newSession = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->shortcut() == QKeySequence(QKeySequence::New))
+                newSession = a;
+        QVERIFY(newSession);
+        bool seen = false;
+        QTimer::singleShot(0, &w, [&] {
+            auto* d = qobject_cast<nb::SessionInfoDialog*>(QApplication::activeModalWidget());
+            if (!d)
+                return;
+            seen = true;
+            QCOMPARE(d->findChild<QLineEdit*>(QStringLiteral("organ"))->text(), info.organ);
+            QCOMPARE(d->findChild<QLineEdit*>(QStringLiteral("operator"))->text(), info.operatorName);
+            QCOMPARE(d->findChild<QLineEdit*>(QStringLiteral("protocol"))->text(), info.protocol);
+            QCOMPARE(d->findChild<QDoubleSpinBox*>(QStringLiteral("thickness"))->value(), 20.0);
+            QVERIFY(d->findChild<QLineEdit*>(QStringLiteral("specimen"))->text().isEmpty());
+            QVERIFY(d->findChild<QPlainTextEdit*>(QStringLiteral("notes"))->toPlainText().isEmpty());
+            QCOMPARE(QDir(d->findChild<QLineEdit*>(QStringLiteral("parentFolder"))->text()).canonicalPath(), QDir(tmp.path()).canonicalPath());
+            d->findChild<QLineEdit*>(QStringLiteral("specimen"))->setText(QStringLiteral("4"));
+            d->accept();
+        });
+        newSession->trigger();
+        QVERIFY2(seen, "no New session dialog");
+        QVERIFY(w.session());
+        QVERIFY(QDir(w.session()->dir()) != QDir(first));
+        QCOMPARE(QDir(QFileInfo(w.session()->dir()).absolutePath()).canonicalPath(), QDir(tmp.path()).canonicalPath());
+        const nb::SessionInfo made = nb::Session::open(w.session()->dir()).info();
+        QCOMPARE(made.specimen, QStringLiteral("4"));
+        QCOMPARE(made.organ, info.organ);
+        QCOMPARE(made.tip, info.tip);
+        QCOMPARE(made.operatorName, info.operatorName);
+        QVERIFY(made.notes.isEmpty());
+        QVERIFY(made.created.isValid());
+    }
+
     // Contact and puncture are marked while the needle still moves, and the marks give way to
     // the whole run's when it ends: one of each.
     void liveEventsMarkedDuringTheRun()
