@@ -447,7 +447,12 @@ void MainWindow::openStartupSession()
     if (!dir.isEmpty() && (Session::isSession(dir) ? openSession(dir) : createSession(dir, {})))
         return;
     panel_->setSessionOpen(false);
-    showMessage(tr("No session open: start a new one or open one (Session menu)."));
+    const QString last = options_.persistSettings ? QSettings().value(QStringLiteral("session/last")).toString() : QString();
+    if (options_.sessionDir.isEmpty() && !last.isEmpty() && !Session::isSession(last))
+        showMessage(tr("The last session, %1, is not there any more (moved or renamed?): open it where it is now, or start a new one.")
+                        .arg(QDir::toNativeSeparators(last)));
+    else
+        showMessage(tr("No session open: start a new one or open one (Session menu)."));
     // The welcome would hide the box that says why the last session did not open, and block it.
     if (options_.welcome && !findChild<QMessageBox*>(QStringLiteral("sessionInUse")))
         QTimer::singleShot(0, this, &MainWindow::showWelcome);

@@ -26,11 +26,19 @@ WelcomeDialog::WelcomeDialog(const QStringList& recent, QWidget* parent) : QDial
     recent_ = new QListWidget(this);
     recent_->setObjectName(QStringLiteral("welcomeRecent"));
     for (const QString& dir : recent) {
-        if (!Session::isSession(dir))
-            continue;
-        auto* item = new QListWidgetItem(QStringLiteral("%1\n%2").arg(QFileInfo(dir).fileName(), QDir::toNativeSeparators(dir)), recent_);
+        auto* item = new QListWidgetItem(recent_);
         item->setData(Qt::UserRole, dir);
-        item->setToolTip(QDir::toNativeSeparators(dir));
+        if (Session::isSession(dir)) {
+            item->setText(QStringLiteral("%1\n%2").arg(QFileInfo(dir).fileName(), QDir::toNativeSeparators(dir)));
+            item->setToolTip(QDir::toNativeSeparators(dir));
+            continue;
+        }
+        // A session moved or renamed since is said to be gone, not silently left out: the
+        // operator then knows to look for it.
+        item->setText(tr("%1 (not found)\n%2").arg(QFileInfo(dir).fileName(), QDir::toNativeSeparators(dir)));
+        item->setToolTip(tr("No session is in this folder any more: moved, renamed, or on a drive not connected. "
+                            "Open it where it is now with Open session folder…"));
+        item->setFlags(Qt::NoItemFlags);
     }
     auto* recentLabel = new QLabel(recent_->count() ? tr("Recent sessions (double-click to open):") : tr("No recent sessions."), this);
     recent_->setVisible(recent_->count() > 0);

@@ -25,6 +25,7 @@
 #include "widgets/force_plots.h"
 #include "widgets/session_info_dialog.h"
 #include "widgets/session_view.h"
+#include "widgets/welcome_dialog.h"
 #include "widgets/simulated_rig_dialog.h"
 
 #include <QAbstractButton>
@@ -32,6 +33,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QPlainTextEdit>
 #include <QSpinBox>
 #include <QSettings>
@@ -522,6 +524,41 @@ private slots:
         }
         QSettings().remove(QStringLiteral("session/last"));
         QSettings().remove(QStringLiteral("review/run"));
+    }
+
+    // A session folder renamed between two starts: the window says the last session is not
+    // there any more, and the welcome lists it as not found (not a silent "No recent sessions").
+    void aSessionRenamedBetweenStartsIsSaidToBeGone()
+    {
+        QTemporaryDir tmp;
+        const QString a = tmp.filePath(QStringLiteral("liver_3"));
+        nb::Session::create(a, {});
+        nb::WorkbenchOptions o = options(a, false);
+        o.persistSettings = true;
+        {
+            nb::MainWindow w(o);
+            QVERIFY(w.session());
+            QVERIFY(w.close());
+        }
+        QVERIFY(QDir().rename(a, tmp.filePath(QStringLiteral("liver_3_done"))));
+        o.sessionDir.clear();
+        o.welcome = true;
+        nb::MainWindow w(o);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(!w.session());
+        QVERIFY2(w.statusBar()->toolTip().contains(QStringLiteral("liver_3")) && w.statusBar()->toolTip().contains(QStringLiteral("not there")),
+                 qPrintable(w.statusBar()->toolTip()));
+        nb::WelcomeDialog* welcome = nullptr;
+        QTRY_VERIFY((welcome = w.findChild<nb::WelcomeDialog*>()) && welcome->isVisible());
+        auto* recent = welcome->findChild<QListWidget*>(QStringLiteral("welcomeRecent"));
+        QVERIFY(recent && recent->isVisible());
+        QList<QListWidgetItem*> gone = recent->findItems(QStringLiteral("liver_3 (not found)"), Qt::MatchStartsWith);
+        QCOMPARE(gone.size(), 1);
+        QVERIFY(!(gone.first()->flags() & Qt::ItemIsEnabled));  // nothing there to open
+        welcome->reject();
+        QSettings().remove(QStringLiteral("session/last"));
+        QSettings().remove(QStringLiteral("session/recent"));
     }
 
     // Last: the German translation, chosen as in the Language menu, reaches the widgets.
