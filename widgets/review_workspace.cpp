@@ -544,6 +544,7 @@ void ReviewWorkspace::closeRun()
     plot_->replot();
     pendingSync_.reset();
     clearVideo();  // the marks and what was tracked go with it
+    setCursorTime(0.0);
     setMapping({}, SyncMethod::None);
     updateSyncUi();
     updateShading();

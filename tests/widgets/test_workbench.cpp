@@ -401,9 +401,11 @@ private slots:
         QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.reviewWorkspace()));
         QTRY_VERIFY(w.reviewWorkspace()->hasFocus());
         QCOMPARE(w.reviewWorkspace()->runPath(), run);
+        w.reviewWorkspace()->setCursorTime(0.7);
         QVERIFY(w.createSession(b, {}));
         QVERIFY(w.reviewWorkspace()->runPath().isEmpty());
         QCOMPARE(w.reviewWorkspace()->labelModel()->labels().size(), std::size_t(0));
+        QCOMPARE(w.reviewWorkspace()->cursorTime(), 0.0);  // the old run's place goes with it
     }
 
     // A run that ended at depth leaves the needle in the tissue: quitting asks (it went at once,
