@@ -1211,7 +1211,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kraftgrenze</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+165"/>
         <source>limit %1 N%2 · margin %3 N</source>
         <translation>Grenze %1 N%2 · Abstand %3 N</translation>
     </message>
@@ -1405,7 +1405,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+507"/>
+        <location filename="../app/main_window.cpp" line="+532"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1468,7 +1468,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-413"/>
+        <location filename="../app/main_window.cpp" line="-438"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1619,7 +1619,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Neue Sitzung</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
+        <source>The last session, %1, is not there any more (moved or renamed?): open it where it is now, or start a new one.</source>
+        <translation>Die letzte Sitzung, %1, ist nicht mehr da (verschoben oder umbenannt?): öffnen Sie sie dort, wo sie jetzt liegt, oder beginnen Sie eine neue.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>No session open: start a new one or open one (Session menu).</source>
         <translation>Keine Sitzung offen: eine neue beginnen oder eine öffnen (Menü Sitzung).</translation>
     </message>
@@ -1649,7 +1654,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzung nach %1 exportiert</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+53"/>
         <source>Session details</source>
         <translation>Sitzungsdetails</translation>
     </message>
@@ -1715,12 +1720,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-686"/>
+        <location line="-711"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+576"/>
+        <location line="+601"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1746,7 +1751,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-484"/>
+        <location line="-509"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2265,12 +2270,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+913"/>
+        <location line="+914"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-910"/>
+        <location line="-911"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2296,12 +2301,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+494"/>
+        <location line="+495"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-494"/>
+        <location line="-495"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2409,12 +2414,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+707"/>
+        <location line="+708"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-536"/>
+        <location line="-537"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2429,7 +2434,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+424"/>
+        <location line="+425"/>
         <source>They are kept in %1, and saved beside the run when it is opened again and its folder can be written.</source>
         <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
     </message>
@@ -2454,7 +2459,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
-        <location line="-696"/>
+        <location line="-697"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2464,7 +2469,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
     <message>
-        <location line="+179"/>
+        <location line="+180"/>
         <source>No run open: double-click one in the session list</source>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
@@ -2608,7 +2613,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-794"/>
+        <location line="-795"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2678,7 +2683,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -2854,8 +2859,8 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Durchsuchen…</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+7"/>
+        <location line="+3"/>
+        <location line="+8"/>
         <source>Parent folder</source>
         <translation>Übergeordneter Ordner</translation>
     </message>
@@ -2863,7 +2868,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::SessionView</name>
     <message>
-        <location filename="../widgets/session_view.cpp" line="+74"/>
+        <location filename="../widgets/session_view.cpp" line="+75"/>
         <source>No session open (Session ▸ New or Open).</source>
         <translation>Keine Sitzung geöffnet (Sitzung ▸ Neu oder Öffnen).</translation>
     </message>
@@ -3914,7 +3919,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+25"/>
         <source>%1 labels suggested, written to %2
 </source>
         <translation>%1 Labels vorgeschlagen, nach %2 geschrieben
@@ -4502,7 +4507,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+53"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4786,7 +4791,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 %2: in %3 kann keine Datei geschrieben werden (%4)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+18"/>
         <source>%1 %2: %3</source>
         <translation>%1 %2: %3</translation>
     </message>
@@ -7529,12 +7534,12 @@ F = %1 x + %2 x²
     <name>nb::WelcomeDialog</name>
     <message>
         <location filename="../widgets/welcome_dialog.cpp" line="+17"/>
-        <location line="+23"/>
+        <location line="+31"/>
         <source>Welcome to NeedleBench</source>
         <translation>Willkommen bei NeedleBench</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-30"/>
         <source>A session is a folder for one specimen: its calibration, its runs, their videos and labels. Start a new one or continue one.</source>
         <translation>Eine Sitzung ist ein Ordner für eine Probe: ihre Kalibrierung, ihre Läufe, deren Videos und Labels. Eine neue beginnen oder eine fortsetzen.</translation>
     </message>
@@ -7549,7 +7554,19 @@ F = %1 x + %2 x²
         <translation>Sitzungsordner ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
+        <source>%1 (not found)
+%2</source>
+        <translation>%1 (nicht gefunden)
+%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No session is in this folder any more: moved, renamed, or on a drive not connected. Open it where it is now with Open session folder…</source>
+        <translation>In diesem Ordner ist keine Sitzung mehr: verschoben, umbenannt oder auf einem nicht angeschlossenen Laufwerk. Öffnen Sie sie dort, wo sie jetzt liegt, mit „Sitzungsordner öffnen…“.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Recent sessions (double-click to open):</source>
         <translation>Zuletzt benutzte Sitzungen (Doppelklick öffnet):</translation>
     </message>
