@@ -8,6 +8,7 @@
 #include "core/export/dataset_loader.h"
 #include "core/export/eaf_export.h"
 #include "core/export/label_intervals.h"
+#include "core/export/made_folders.h"
 #include "core/export/run_csv_export.h"
 #include "core/export/session_hdf5.h"
 #include "core/export/stale_parts.h"
@@ -116,12 +117,21 @@ int cmdExport(const QStringList& args, Io io)
     auto restore = qScopeGuard([&] { std::signal(SIGINT, previous); });
     const ExportProgress progress = [](qint64, qint64) { return interrupted == 0; };
     QStringList written;
+    // Folders made for an export that then fails are taken away when left empty.
+    QStringList made;
+    bool finished = false;
+    auto tidy = qScopeGuard([&] {
+        if (!finished)
+            removeEmptyFolders(made);
+    });
+    bool madeOk = true;
     try {
         const QString outFolder = fmt == QLatin1String("hdf5") ? QFileInfo(target).absolutePath() : target;
         for (const QString& p : removeStaleParts(outFolder))
             io.err << nb::TrCli::tr("warning: removed %1, left by an export that did not finish").arg(p) << '\n';
         if (parser.isSet(copyVideo)) {
-            if (!QDir().mkpath(outFolder)) {
+            made << makeFolders(outFolder, &madeOk);
+            if (!madeOk) {
                 io.err << "needlebench export: " << nb::TrCli::tr("%1: cannot create the folder").arg(outFolder) << '\n';
                 return Failure;
             }
@@ -143,7 +153,8 @@ int cmdExport(const QStringList& args, Io io)
             }
             written << target;
         } else {
-            if (!QDir().mkpath(target)) {
+            made << makeFolders(target, &madeOk);
+            if (!madeOk) {
                 io.err << "needlebench export: " << nb::TrCli::tr("%1: cannot create the folder").arg(target) << '\n';
                 return Failure;
             }
@@ -174,6 +185,7 @@ int cmdExport(const QStringList& args, Io io)
         io.err << "needlebench export: " << e.message() << '\n';
         return Failure;
     }
+    finished = true;
     io.out << nb::TrCli::tr("exported %1 runs from %2 as %3: %4 files").arg(d.runs.size()).arg(dir, fmt).arg(written.size()) << '\n';
     return Ok;
 }

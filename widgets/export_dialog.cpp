@@ -8,6 +8,7 @@
 #include "core/export/eaf_export.h"
 #include "core/export/export_error.h"
 #include "core/export/label_intervals.h"
+#include "core/export/made_folders.h"
 #include "core/export/run_csv_export.h"
 #include "core/export/session_hdf5.h"
 #include "core/run_video_link.h"
@@ -144,7 +145,9 @@ void ExportDialog::start()
         status_->setText(tr("Choose a folder to export into."));
         return;
     }
-    if (!QDir().mkpath(target)) {
+    bool made = false;
+    made_ = makeFolders(target, &made);
+    if (!made) {
         status_->setText(tr("%1: cannot create the folder").arg(QDir::toNativeSeparators(target)));
         return;
     }
@@ -192,7 +195,8 @@ ExportDialog::Outcome ExportDialog::run(const Choice& c, const QString& target, 
         const QDir outDir(target);
         const auto perRun = [&](const QString& sub, bool eaf) {
             const QDir dir(outDir.filePath(sub));
-            QDir().mkpath(dir.path());
+            bool made = false;
+            out.made << makeFolders(dir.path(), &made);  // one not made fails at its first file, saying why
             for (const DatasetRun& r : d.runs) {
                 const QString csv = dir.filePath(r.name + QStringLiteral(".csv"));
                 if (!writeRunCsv(csv, r, [&](qint64, qint64) { return !cancel->load(); }))
@@ -259,6 +263,8 @@ void ExportDialog::finish()
         }
     }
     written_ = out.written;
+    if (!out.ok || out.cancelled)
+        removeEmptyFolders(made_ + out.made);
     progress_->setRange(0, 1);
     progress_->setValue(out.ok && !out.cancelled ? 1 : 0);
     QString text;

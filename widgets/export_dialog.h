@@ -52,6 +52,7 @@ private:
         bool ok = true;
         bool cancelled = false;
         QStringList written, warnings;
+        QStringList made;  // folders made for the export, taken away if left empty
         QString error;
     };
     Outcome run(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
@@ -70,6 +71,7 @@ private:
     std::shared_ptr<std::atomic<bool>> cancel_;
     QFutureWatcher<Outcome> watcher_;
     QStringList written_;
+    QStringList made_;  // the target folders start() made
     QString result_;
 };
 

@@ -151,6 +151,7 @@ private slots:
             QVERIFY2(!r.err.contains(QLatin1String("Unknown error")), qPrintable(r.err));
             QVERIFY(!QFileInfo::exists(out + QStringLiteral(".part")));
             QVERIFY(!QFileInfo::exists(QDir(tiny).filePath(QStringLiteral("s.h5"))));
+            QVERIFY2(!QFileInfo::exists(QDir(tiny).filePath(QStringLiteral("out"))), "the folder made for the export, left empty");
             emptyFolder(tiny);
         }
     }

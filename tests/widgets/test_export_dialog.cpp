@@ -85,6 +85,35 @@ private slots:
         while (it.hasNext())
             left << it.next();
         QVERIFY2(left.isEmpty(), qPrintable(left.join(QLatin1Char(' '))));
+        QVERIFY2(!QFileInfo::exists(out), "the folder made for the export, left empty");
+    }
+
+    // An export that fails takes away the folders it made and left empty (on a full disk an
+    // empty csv/ folder was all there was), and keeps a folder that was there before.
+    void failureLeavesNoEmptyFolder()
+    {
+        const QString empty = tmp_.filePath(QStringLiteral("no_runs"));
+        nb::Session::create(empty, {});
+        nb::ExportDialog dialog(empty, nullptr);
+        const QString out = tmp_.filePath(QStringLiteral("nothing/to/export"));
+        dialog.setTargetDir(out);
+        dialog.setChoice({.csv = true, .hdf5 = false, .eaf = true, .figures = false, .tables = false});
+        QSignalSpy done(&dialog, &nb::ExportDialog::exportFinished);
+        dialog.start();
+        QVERIFY(done.wait(60000));
+        QCOMPARE(done.first().first().toBool(), false);
+        QVERIFY2(dialog.resultText().contains(QStringLiteral("no runs")), qPrintable(dialog.resultText()));
+        QVERIFY(!QFileInfo::exists(tmp_.filePath(QStringLiteral("nothing"))));
+
+        // A folder that was there stays, even empty.
+        const QString before = tmp_.filePath(QStringLiteral("was_there"));
+        QVERIFY(QDir().mkpath(before));
+        dialog.setTargetDir(before);
+        done.clear();
+        dialog.start();
+        QVERIFY(done.wait(60000));
+        QVERIFY(QFileInfo(before).isDir());
+        QVERIFY(!QFileInfo::exists(QDir(before).filePath(QStringLiteral("csv"))));
     }
 };
 
