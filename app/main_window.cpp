@@ -475,8 +475,13 @@ void MainWindow::restoreWorkspace()
         review_->setCursorTime(settings.value(QStringLiteral("review/cursor_s")).toDouble());
         sessionView_->selectRun(run);
     }
-    else if (ours)
-        showMessage(tr("The run in review when NeedleBench closed is gone: %1").arg(QDir::toNativeSeparators(run)));
+    else if (ours) {
+        // Said in Review too, where it stays until a run is opened: the status line's next
+        // message took it away before the operator looked.
+        const QString gone = tr("The run in review when NeedleBench closed is gone: %1").arg(QDir::toNativeSeparators(run));
+        showMessage(gone);
+        review_->showStatus(gone);
+    }
     const int tab = settings.value(QStringLiteral("workspace/tab"), 0).toInt();
     if (tab > 0 && tab < tabs_->count() && (tabs_->widget(tab) != review_ || !review_->runPath().isEmpty()))
         tabs_->setCurrentIndex(tab);

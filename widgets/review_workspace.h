@@ -81,6 +81,8 @@ public:
     void markEventInVideo();      // the frame shown
     int currentFrame() const { return frame_; }
     QString status() const;
+    // Review's own status line, kept until the next thing Review says.
+    void showStatus(const QString& text);
 
     LabelModel* labelModel() const { return model_; }
     QUndoStack* undoStack() const { return undo_; }
@@ -147,7 +149,6 @@ private:
     void buildUi();
     void handleLabelKey(int key);
     void updateShading();
-    void showStatus(const QString& text);
     void saveLabels();
     void requestFrameForCursor();
     void updateSyncUi();

@@ -522,6 +522,7 @@ private slots:
             QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.plots()));
             QVERIFY(w.reviewWorkspace()->runPath().isEmpty());
             QVERIFY2(w.statusBar()->toolTip().contains(QStringLiteral("run_001_linear.csv")), qPrintable(w.statusBar()->toolTip()));
+            QVERIFY2(w.reviewWorkspace()->status().contains(QStringLiteral("run_001_linear.csv")), qPrintable(w.reviewWorkspace()->status()));
             QVERIFY(w.close());
         }
         QSettings().remove(QStringLiteral("session/last"));
