@@ -175,8 +175,8 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
         if (room.width() < 1400 || room.height() < 860)
             setWindowState(windowState() | Qt::WindowMaximized);
     }
-    engine_->setForceLimit(panel_->forceLimit());
-    engine_->setWithdrawForceLimit(panel_->withdrawForceLimit());
+    engine_->setForceLimit(panel_->forceLimit(), true);
+    engine_->setWithdrawForceLimit(panel_->withdrawForceLimit(), true);
     plots_->setForceLimit(panel_->forceLimit());
 
     openStartupSession();
@@ -275,7 +275,7 @@ bool MainWindow::switchDevices(const devices::DeviceSpec& spec)
     QString problem;
     engine_ = makeEngine(spec, &problem, panel_->forceLimit());
     attachEngine();
-    engine_->setWithdrawForceLimit(panel_->withdrawForceLimit());
+    engine_->setWithdrawForceLimit(panel_->withdrawForceLimit(), true);
     if (const auto centre = devices::suggestedSineCentre_mm(currentSpec()))
         panel_->setSineCentre(*centre);
     if (session_)
@@ -534,8 +534,9 @@ ExportDialog* MainWindow::exportSession()
     auto* dialog = new ExportDialog(session_->dir(), analysis_, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &ExportDialog::exportFinished, this, [this, dialog](bool ok) {
-        if (ok)
-            showMessage(tr("Session exported into %1").arg(QDir::toNativeSeparators(dialog->targetDir())));
+        // A failure replaces an earlier export's "exported", which stood beside it.
+        showMessage(ok ? tr("Session exported into %1").arg(QDir::toNativeSeparators(dialog->targetDir()))
+                       : tr("Export not finished: %1").arg(dialog->resultText().section(QLatin1Char('\n'), 0, 0)));
     });
     showModeless(dialog);  // the stage may be moving meanwhile (modeless_dialogs.h)
     return dialog;
@@ -709,7 +710,7 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
     // The quit question follows what happens while it is open (an emergency stop ended the
     // run and the motion it spoke of).
     if (quitQuestion_ && quitQuestion_->isVisible()) {
-        QString text = quitQuestionText(s.interlocks());
+        QString text = quitQuestionText(s);
         if (text.isEmpty())
             text = tr("Nothing moves or records now. Quit?");
         if (quitQuestion_->text() != text)
@@ -796,8 +797,9 @@ void MainWindow::showMessage(const QString& text, bool alarm)
     statusBar()->setToolTip(text);  // whole, where the bar is too narrow for it
 }
 
-QString MainWindow::quitQuestionText(const InterlockState& st)
+QString MainWindow::quitQuestionText(const devices::EngineStatus& s)
 {
+    const InterlockState st = s.interlocks();
     const Permission quit = permission(Control::Quit, st);
     if (!quit.enabled)
         return tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason);
@@ -805,13 +807,18 @@ QString MainWindow::quitQuestionText(const InterlockState& st)
     // stop): the window went at once and the operator lost the panel that withdraws it.
     if (st.inTissue)
         return tr("The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?");
+    // Jogged in (never recorded, so no contact was marked) or stopped short of the start: the
+    // needle may be in tissue all the same.
+    if (st.startKnown && s.position_mm > kAwayFromStart_mm)
+        return tr("The needle is %1 mm from its start. Withdraw it first (To start), or quit and leave it there?")
+            .arg(QLocale().toString(s.position_mm, 'f', 1));
     return {};
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     const Permission quit = permission(Control::Quit, engine_->status().interlocks());
-    const QString question = quitQuestionText(engine_->status().interlocks());
+    const QString question = quitQuestionText(engine_->status());
     if (!question.isEmpty() && !quitConfirmed_) {
         // The offer to end the run first, modeless: the stage moves while it is asked, and the
         // EMERGENCY STOP button must stay clickable (Esc in the question stops it as well).

@@ -137,7 +137,10 @@ private:
     void sayInABox(const QString& name, const QString& title, const QString& text);
     // What the quit question asks in state `st` (a run to stop, a needle left in tissue); empty
     // when quitting needs no question.
-    static QString quitQuestionText(const InterlockState& st);
+    static QString quitQuestionText(const devices::EngineStatus& s);
+    // Deeper than this past the start, quitting asks first (1 mm: a needle at its start rests
+    // clear of the tissue; the stage's own settling is far less).
+    static constexpr double kAwayFromStart_mm = 1.0;
     void openStartupSession();
     // What the operator was looking at when the window closed: the tab, and Review's run and
     // cursor (a run of the session opened at start only).

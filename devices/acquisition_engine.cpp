@@ -238,29 +238,31 @@ void AcquisitionEngine::zeroStage(bool insist)
     });
 }
 
-void AcquisitionEngine::setForceLimit(double newtons)
+void AcquisitionEngine::setForceLimit(double newtons, bool quietly)
 {
-    post([this, newtons] {
+    post([this, newtons, quietly] {
         State& s = *state_;
         if (!(newtons > 0.0) || !std::isfinite(newtons)) {
             emit message(tr("force limit must be positive (got %1 N)").arg(newtons));
             return;
         }
         s.proc->setLimits(newtons, std::max(s.proc->withdrawalLimit(), newtons));
-        emit message(tr("force limit %1 N").arg(newtons));
+        if (!quietly)
+            emit message(tr("force limit %1 N").arg(newtons));
     });
 }
 
-void AcquisitionEngine::setWithdrawForceLimit(double newtons)
+void AcquisitionEngine::setWithdrawForceLimit(double newtons, bool quietly)
 {
-    post([this, newtons] {
+    post([this, newtons, quietly] {
         State& s = *state_;
         if (!(newtons > 0.0) || !std::isfinite(newtons)) {
             emit message(tr("withdrawal force limit must be positive (got %1 N)").arg(newtons));
             return;
         }
         s.proc->setLimits(s.proc->insertionLimit(), newtons);
-        emit message(tr("withdrawal force limit %1 N").arg(QLocale().toString(s.proc->withdrawalLimit())));
+        if (!quietly)
+            emit message(tr("withdrawal force limit %1 N").arg(QLocale().toString(s.proc->withdrawalLimit())));
     });
 }
 

@@ -138,8 +138,10 @@ public slots:
     // `insist`: the operator confirmed a bias or zero the interlocks advised against.
     void biasSensor(bool insist = false);
     void zeroStage(bool insist = false);
-    void setForceLimit(double newtons);
-    void setWithdrawForceLimit(double newtons);
+    // Each change is said (message()) unless `quietly`: the window's own settings at start are
+    // no news, and their echo replaced what the status line had to say.
+    void setForceLimit(double newtons, bool quietly = false);
+    void setWithdrawForceLimit(double newtons, bool quietly = false);
     void setCalibration(double slope_V_per_g, const QString& name);
     // Back to the device's nominal calibration (none when it has none): a session without a
     // calibration of its own must not inherit the last session's.

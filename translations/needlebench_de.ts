@@ -1007,7 +1007,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+50"/>
+        <location filename="../widgets/export_dialog.cpp" line="+51"/>
         <source>Export session</source>
         <translation>Sitzung exportieren</translation>
     </message>
@@ -1062,17 +1062,17 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>In den Ordner</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>Choose a folder to export into.</source>
         <translation>Einen Zielordner für den Export wählen.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Exporting…</source>
         <translation>Exportiere…</translation>
     </message>
@@ -1087,7 +1087,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1: keine Läufe zum Exportieren</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>Cancelled: the files finished before (%1) are kept; none is half written.</source>
         <translation>Abgebrochen: die zuvor fertigen Dateien (%1) bleiben; keine ist halb geschrieben.</translation>
     </message>
@@ -1405,7 +1405,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+532"/>
+        <location filename="../app/main_window.cpp" line="+538"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1468,7 +1468,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-438"/>
+        <location filename="../app/main_window.cpp" line="-444"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1629,12 +1629,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Keine Sitzung offen: eine neue beginnen oder eine öffnen (Menü Sitzung).</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation>Der beim Beenden von NeedleBench geprüfte Lauf ist nicht mehr da: %1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>Open &amp;video for the run in review…</source>
         <translation>&amp;Video zum Lauf in der Sichtung öffnen…</translation>
     </message>
@@ -1652,6 +1652,11 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+7"/>
         <source>Session exported into %1</source>
         <translation>Sitzung nach %1 exportiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export not finished: %1</source>
+        <translation>Export nicht abgeschlossen: %1</translation>
     </message>
     <message>
         <location line="+53"/>
@@ -1713,19 +1718,19 @@ Die zuvor geschriebenen Zeilen bleiben in der Datei. Vor dem nächsten Lauf Plat
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+56"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-711"/>
+        <location line="-718"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+601"/>
+        <location line="+607"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1741,17 +1746,22 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+103"/>
         <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
         <translation>Die Nadel steckt noch im Gewebe. Zuerst zurückziehen (Zum Start) oder beenden und sie dort lassen?</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+4"/>
+        <source>The needle is %1 mm from its start. Withdraw it first (To start), or quit and leave it there?</source>
+        <translation>Die Nadel steht %1 mm von ihrem Start entfernt. Zuerst zurückziehen (Zum Start) oder beenden und sie dort lassen?</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-509"/>
+        <location line="-521"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -3192,7 +3202,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+42"/>
+        <location filename="../app/cmd_export.cpp" line="+43"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation>Warnung: %1: das Video konnte nicht neben den Export kopiert werden; es wird an seinem Ort verknüpft</translation>
     </message>
@@ -3441,12 +3451,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: keine Laufdateien (*.csv mit time_s,position_mm,force_N)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation>Warnung: %1 entfernt, von einem nicht beendeten Export zurückgelassen</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>writing %1 runs to %2</source>
         <translation>schreibe %1 Läufe nach %2</translation>
     </message>
@@ -3458,7 +3468,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location filename="../app/cmd_demo.cpp" line="-258"/>
         <location filename="../app/cmd_export.cpp" line="-16"/>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: Ordner kann nicht angelegt werden</translation>
     </message>
@@ -3468,7 +3478,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>abgebrochen nach %1 von %2 Läufen; %3 wurde nicht geschrieben</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>exported %1 runs from %2 as %3: %4 files</source>
         <translation>%1 Läufe aus %2 als %3 exportiert: %4 Dateien</translation>
     </message>
@@ -7624,7 +7634,7 @@ F = %1 x + %2 x²
         <translation>die Kraftgrenze muss positiv sein (erhalten: %1 N)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>force limit %1 N</source>
         <translation>Kraftgrenze %1 N</translation>
     </message>
@@ -7634,7 +7644,7 @@ F = %1 x + %2 x²
         <translation>die Kraftgrenze beim Zurückziehen muss positiv sein (erhalten: %1 N)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>withdrawal force limit %1 N</source>
         <translation>Kraftgrenze beim Zurückziehen %1 N</translation>
     </message>
@@ -7657,7 +7667,7 @@ F = %1 x + %2 x²
     <message>
         <location line="+25"/>
         <source>recording to %1</source>
-        <translation>Aufzeichnung nach %1</translation>
+        <translation>Aufzeichnung in %1</translation>
     </message>
     <message>
         <location line="+82"/>
@@ -7716,7 +7726,7 @@ F = %1 x + %2 x²
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-432"/>
+        <location line="-434"/>
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -7726,7 +7736,7 @@ F = %1 x + %2 x²
         <translation>Nullen abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>a run is already on its way to its start position</source>
         <translation>eine Messung fährt bereits ihre Startposition an</translation>
     </message>

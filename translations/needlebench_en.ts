@@ -1006,7 +1006,7 @@ or without contact</source>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+50"/>
+        <location filename="../widgets/export_dialog.cpp" line="+51"/>
         <source>Export session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1061,17 +1061,17 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>Choose a folder to export into.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>%1: cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Exporting…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1086,7 +1086,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>Cancelled: the files finished before (%1) are kept; none is half written.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1404,7 +1404,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+532"/>
+        <location filename="../app/main_window.cpp" line="+538"/>
         <location filename="../app/main_window_safety.cpp" line="+11"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1467,7 +1467,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-438"/>
+        <location filename="../app/main_window.cpp" line="-444"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1627,12 +1627,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>Open &amp;video for the run in review…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1649,6 +1649,11 @@ or without contact</source>
     <message>
         <location line="+7"/>
         <source>Session exported into %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export not finished: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1709,18 +1714,18 @@ The rows written before are kept in the file. Free space on the disk (or choose 
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+56"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-711"/>
+        <location line="-718"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+601"/>
+        <location line="+607"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1736,17 +1741,22 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+103"/>
         <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+4"/>
+        <source>The needle is %1 mm from its start. Withdraw it first (To start), or quit and leave it there?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-509"/>
+        <location line="-521"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3179,7 +3189,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+42"/>
+        <location filename="../app/cmd_export.cpp" line="+43"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3428,12 +3438,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>writing %1 runs to %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3445,7 +3455,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location filename="../app/cmd_demo.cpp" line="-258"/>
         <location filename="../app/cmd_export.cpp" line="-16"/>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>%1: cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3455,7 +3465,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>exported %1 runs from %2 as %3: %4 files</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7523,7 +7533,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>force limit %1 N</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7533,7 +7543,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>withdrawal force limit %1 N</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7615,7 +7625,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-432"/>
+        <location line="-434"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7625,7 +7635,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>a run is already on its way to its start position</source>
         <translation type="unfinished"></translation>
     </message>

@@ -142,13 +142,16 @@ void ExportDialog::start()
     const Choice c = choice();
     const QString target = targetDir();
     if (target.isEmpty()) {
+        progress_->setValue(0);
         status_->setText(tr("Choose a folder to export into."));
         return;
     }
     bool made = false;
     made_ = makeFolders(target, &made);
     if (!made) {
+        progress_->setValue(0);  // not the last export's full bar beside this failure
         status_->setText(tr("%1: cannot create the folder").arg(QDir::toNativeSeparators(target)));
+        emit exportFinished(false);
         return;
     }
     cancel_->store(false);

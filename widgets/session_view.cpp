@@ -171,9 +171,13 @@ void SessionView::refresh()
                          .arg(session_->dir().section(QLatin1Char('/'), -1).toHtmlEscaped(),
                               specimen.isEmpty() ? tr("no specimen details") : specimen.join(QStringLiteral(", ")),
                               cal ? cal->name.toHtmlEscaped() : tr("none saved in this session (the sensor's nominal one is used)")));
+    const int before = model_->rowCount();
     model_->setRuns(session_->runs());
     if (!selected_.isEmpty())
         selectRun(selected_);
+    // A run just saved comes into view: it was half hidden below the list's edge.
+    if (before > 0 && model_->rowCount() > before)
+        view_->scrollToBottom();
 }
 
 }  // namespace nb

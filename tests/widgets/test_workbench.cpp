@@ -430,6 +430,51 @@ private slots:
         QVERIFY(w.controlPanel()->button(Control::Withdraw)->isEnabled());
     }
 
+    // A run just saved comes into view in the session's list, below the runs before it (run 6
+    // was half hidden, run 10 out of sight).
+    void aRunJustSavedIsInView()
+    {
+        QTemporaryDir tmp;
+        const QString dir = tmp.filePath(QStringLiteral("s"));
+        nb::Session::create(dir, {});
+        for (int i = 1; i <= 12; ++i)
+            writeCompletedRun(QDir(dir).filePath(QStringLiteral("run_%1_linear.csv").arg(i, 3, 10, QLatin1Char('0'))));
+        nb::Session session = nb::Session::open(dir);
+        nb::SessionView view;
+        view.resize(700, 220);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.setSession(&session);
+        writeCompletedRun(QDir(dir).filePath(QStringLiteral("run_013_linear.csv")));
+        view.refresh();
+        QCOMPARE(view.model()->rowCount(), 13);
+        const QModelIndex newest = view.model()->index(12, 0);
+        QCOMPARE(newest.data(Qt::UserRole).toString(), QDir(dir).filePath(QStringLiteral("run_013_linear.csv")));
+        QTRY_VERIFY(view.view()->viewport()->rect().contains(view.view()->visualRect(newest)));
+    }
+
+    // Jogged in (never recorded, so no contact is marked) and stopped there by the emergency
+    // stop: quitting asks all the same; it went at once with the needle 7 mm deep.
+    void quitAsksWhenJoggedAwayFromTheStart()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        nbtest::prepareToRecord(w);
+        w.engine()->jog(7.0, 10.0);
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().position_mm > 3.0, 10000);
+        w.engine()->emergencyStop();
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().latched && !w.engine()->status().moving, 10000);
+        QVERIFY(!w.controlPanel()->interlockState().inTissue);
+        QVERIFY(!w.close());
+        auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
+        QVERIFY(question && question->isVisible());
+        QVERIFY2(question->text().contains(QStringLiteral("mm from its start")), qPrintable(question->text()));
+        question->button(QMessageBox::Yes)->click();
+        QTRY_VERIFY(!w.isVisible());
+    }
+
     // A second window on a session already open in one is refused, named in a box: it closed
     // the first's recording as "recovered" and both recorded into the folder. Free again once
     // the first window goes.
@@ -538,6 +583,7 @@ private slots:
         nb::Session::create(a, {});
         nb::WorkbenchOptions o = options(a, false);
         o.persistSettings = true;
+        QSettings().remove(QStringLiteral("session/recent"));  // what the tests before left there
         {
             nb::MainWindow w(o);
             QVERIFY(w.session());
@@ -558,8 +604,13 @@ private slots:
         QVERIFY(recent && recent->isVisible());
         QList<QListWidgetItem*> gone = recent->findItems(QStringLiteral("liver_3 (not found)"), Qt::MatchStartsWith);
         QCOMPARE(gone.size(), 1);
+        QCOMPARE(gone.first()->data(Qt::UserRole).toString(), a);
         QVERIFY(!(gone.first()->flags() & Qt::ItemIsEnabled));  // nothing there to open
         welcome->reject();
+        // The engine's echo of the window's own settings ("withdrawal force limit 9.5 N") came
+        // later and replaced what the status line said at start.
+        QTest::qWait(500);
+        QVERIFY2(w.statusBar()->toolTip().contains(QStringLiteral("not there")), qPrintable(w.statusBar()->toolTip()));
         QSettings().remove(QStringLiteral("session/last"));
         QSettings().remove(QStringLiteral("session/recent"));
     }
