@@ -8,6 +8,10 @@
 #include <QFileInfo>
 #include <QTemporaryFile>
 
+#ifdef Q_OS_UNIX
+#include <sys/stat.h>
+#endif
+
 namespace nb::cli {
 
 bool parseArgs(QCommandLineParser& parser, const QString& command, const QStringList& args, Io io,
@@ -59,8 +63,14 @@ void printJson(Io io, const QJsonObject& object)
 bool samePath(const QString& a, const QString& b)
 {
     const QFileInfo x(a), y(b);
-    if (x.exists() && y.exists())
+    if (x.exists() && y.exists()) {
+#ifdef Q_OS_UNIX
+        struct stat sa {}, sb {};
+        if (::stat(QFile::encodeName(a).constData(), &sa) == 0 && ::stat(QFile::encodeName(b).constData(), &sb) == 0)
+            return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+#endif
         return x.canonicalFilePath() == y.canonicalFilePath();
+    }
     return QDir::cleanPath(x.absoluteFilePath()) == QDir::cleanPath(y.absoluteFilePath());
 }
 
@@ -77,6 +87,17 @@ QString existingOutput(const QString& option, const QString& out, bool overwrite
     if (overwrite || !QFileInfo(out).isFile())
         return {};
     return nb::TrCli::tr("%1 %2 already exists; it is kept. Name another file, or add --overwrite to replace it.").arg(option, out);
+}
+
+QString replacesOtherThanTrace(const QString& option, const QString& out, const char* header, bool overwrite)
+{
+    QFile existing(out);
+    if (overwrite || !QFileInfo(out).isFile() || !existing.open(QIODevice::ReadOnly))
+        return {};
+    if (existing.readLine(256).trimmed() == QByteArray(header))
+        return {};
+    return nb::TrCli::tr("%1 %2 already exists and is not a trace this command wrote; it is kept. Name another file, or add "
+                         "--overwrite to replace it.").arg(option, out);
 }
 
 QString unwritableOutput(const QString& option, const QString& out)

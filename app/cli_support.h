@@ -25,7 +25,8 @@ void printJson(Io io, const QJsonObject& object);
 // own names the program by the path it was started from).
 QString commandHelp(const QCommandLineParser& parser, const QString& command);
 
-// Whether `a` and `b` name the same file, whether or not it exists yet (links resolved).
+// Whether `a` and `b` name the same file, whether or not it exists yet (links resolved; hard
+// links too: `export --copy-video` makes them).
 bool samePath(const QString& a, const QString& b);
 
 // What to tell the user when the output `out` (given with `option`) is one of the command's
@@ -36,6 +37,11 @@ QString overwritesInput(const QString& option, const QString& out, const QString
 // would not want to lose (a recording, labels made by hand), unless `overwrite` (--overwrite)
 // says so. Empty when it may be written.
 QString existingOutput(const QString& option, const QString& out, bool overwrite);
+
+// What to tell the user when a trace `out` (given with `option`, its first line `header`) would
+// replace a file that is not such a trace (a run, labels, a video), unless `overwrite` says so.
+// An earlier trace is replaced, as a script run again expects. Empty when it may be written.
+QString replacesOtherThanTrace(const QString& option, const QString& out, const char* header, bool overwrite);
 
 // What to tell the user when `out` (given with `option`) cannot be written: a folder, in a folder
 // that does not exist, or where no file can be made. Checked before a run records, so that a

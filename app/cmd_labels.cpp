@@ -28,6 +28,8 @@
 
 namespace nb::cli {
 
+static constexpr char kTissueTraceHeader[] = "time_s,tissue_velocity_mm_s";
+
 int cmdLabels(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
@@ -51,7 +53,7 @@ int cmdLabels(const QStringList& args, Io io)
                                          nb::TrCli::tr("write the tissue's velocity read off the video as CSV (time_s,tissue_velocity_mm_s)"),
                                          QStringLiteral("FILE.csv"));
     const QCommandLineOption overwrite(QStringLiteral("overwrite"),
-                                       nb::TrCli::tr("replace an existing labels file (it may hold labels made by hand)"));
+                                       nb::TrCli::tr("replace an existing labels file (it may hold labels made by hand), and let --tissue-trace replace a file that is not a trace"));
     parser.addOptions({out, json, video, videoOffset, videoDrift, tissueTrace, overwrite});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("labels"), args, io, 2, 2, &code))
@@ -70,6 +72,9 @@ int cmdLabels(const QStringList& args, Io io)
         QString clash = overwritesInput(QStringLiteral("--out"), outPath, inputs);
         if (clash.isEmpty() && parser.isSet(tissueTrace))
             clash = overwritesInput(QStringLiteral("--tissue-trace"), parser.value(tissueTrace), inputs + QStringList{outPath});
+        if (clash.isEmpty() && parser.isSet(tissueTrace))
+            clash = replacesOtherThanTrace(QStringLiteral("--tissue-trace"), parser.value(tissueTrace), kTissueTraceHeader,
+                                           parser.isSet(overwrite));
         if (clash.isEmpty())
             clash = existingOutput(parser.isSet(out) ? QStringLiteral("--out") : nb::TrCli::tr("the labels file"), outPath, parser.isSet(overwrite));
         if (!clash.isEmpty()) {
@@ -183,7 +188,7 @@ int cmdLabels(const QStringList& args, Io io)
             }
         }
         if (tissue && parser.isSet(tissueTrace)) {
-            const QByteArray csv = traceCsv("time_s,tissue_velocity_mm_s", tissue->time_s, tissue->velocity_mm_s, 4);
+            const QByteArray csv = traceCsv(kTissueTraceHeader, tissue->time_s, tissue->velocity_mm_s, 4);
             if (const QString e = writeOutput(QStringLiteral("--tissue-trace"), parser.value(tissueTrace), csv); !e.isEmpty()) {
                 io.err << "needlebench labels: " << e << '\n';
                 return Failure;

@@ -20,6 +20,8 @@
 
 namespace nb::cli {
 
+static constexpr char kTraceHeader[] = "time_s,displacement_px";
+
 int cmdSync(const QStringList& args, Io io)
 {
     QCommandLineParser parser;
@@ -37,7 +39,9 @@ int cmdSync(const QStringList& args, Io io)
     const QCommandLineOption trace(QStringLiteral("trace"),
                                    nb::TrCli::tr("also write the needle's tracked displacement per frame (time_s,displacement_px) to FILE"),
                                    QStringLiteral("FILE.csv"));
-    parser.addOptions({roi, maxOffset, needle, trace, json});
+    const QCommandLineOption overwrite(QStringLiteral("overwrite"),
+                                       nb::TrCli::tr("let --trace replace a file that is not a trace (an earlier trace is replaced without it)"));
+    parser.addOptions({roi, maxOffset, needle, trace, json, overwrite});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("sync"), args, io, 2, 2, &code))
         return code;
@@ -78,7 +82,10 @@ int cmdSync(const QStringList& args, Io io)
     }
     const QString runPath = parser.positionalArguments()[0], videoPath = parser.positionalArguments()[1];
     if (parser.isSet(trace)) {
-        if (const QString clash = overwritesInput(QStringLiteral("--trace"), parser.value(trace), {runPath, videoPath}); !clash.isEmpty()) {
+        QString clash = overwritesInput(QStringLiteral("--trace"), parser.value(trace), {runPath, videoPath});
+        if (clash.isEmpty())
+            clash = replacesOtherThanTrace(QStringLiteral("--trace"), parser.value(trace), kTraceHeader, parser.isSet(overwrite));
+        if (!clash.isEmpty()) {
             io.err << "needlebench sync: " << clash << '\n';
             return Usage;
         }
@@ -129,7 +136,7 @@ int cmdSync(const QStringList& args, Io io)
         // A limit shorter than the records leaves offsets beyond it untried.
         const bool limited = options.maxOffset_s < index.duration_s() + (run.size() > 1 ? run.time_s.back() - run.time_s.front() : 0.0);
         if (parser.isSet(trace)) {
-            const QByteArray csv = traceCsv("time_s,displacement_px", vs.track.time_s, vs.track.displacement_px, 3);
+            const QByteArray csv = traceCsv(kTraceHeader, vs.track.time_s, vs.track.displacement_px, 3);
             if (const QString e = writeOutput(QStringLiteral("--trace"), parser.value(trace), csv); !e.isEmpty()) {
                 io.err << "needlebench sync: " << e << '\n';
                 return Failure;

@@ -3115,7 +3115,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
         <location line="+290"/>
-        <location filename="../app/cmd_sync.cpp" line="+36"/>
+        <location filename="../app/cmd_sync.cpp" line="+38"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -3811,7 +3811,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+34"/>
+        <location filename="../app/cmd_labels.cpp" line="+36"/>
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation>Labels eines Laufs. Aktionen: suggest (Phasen oder Ereignisse aus den Daten).</translation>
     </message>
@@ -3852,12 +3852,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die aus dem Video gelesene Geschwindigkeit des Gewebes als CSV schreiben (time_s,tissue_velocity_mm_s)</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>replace an existing labels file (it may hold labels made by hand)</source>
-        <translation>eine vorhandene Label-Datei ersetzen (sie kann von Hand gesetzte Labels enthalten)</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
 
 </source>
@@ -3866,7 +3861,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <location line="+6"/>
         <source>the labels file</source>
         <translation>die Label-Datei</translation>
@@ -3917,12 +3912,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-136"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="+13"/>
+        <source>replace an existing labels file (it may hold labels made by hand), and let --tissue-trace replace a file that is not a trace</source>
+        <translation>eine vorhandene Label-Datei ersetzen (sie kann von Hand gesetzte Labels enthalten) und --tissue-trace eine Datei ersetzen lassen, die kein Verlauf ist</translation>
+    </message>
+    <message>
+        <location line="+130"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
@@ -4478,7 +4478,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>zusätzlich die verfolgte Verschiebung der Nadel je Bild (time_s,displacement_px) in DATEI schreiben</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+3"/>
+        <source>let --trace replace a file that is not a trace (an earlier trace is replaced without it)</source>
+        <translation>--trace eine Datei ersetzen lassen, die kein Verlauf ist (ein früherer Verlauf wird auch ohne dies ersetzt)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
 
 </source>
@@ -4503,7 +4508,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+26"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation>needlebench sync: --roi %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6
@@ -4761,7 +4766,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cli_support.cpp" line="+18"/>
+        <location filename="../app/cli_support.cpp" line="+22"/>
         <source>show this help</source>
         <translation>diese Hilfe anzeigen</translation>
     </message>
@@ -4776,7 +4781,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>zu viele Argumente</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+42"/>
         <source>%1 %2 is a file this command reads; writing it would destroy it. Name another file.</source>
         <translation>%1 %2 ist eine Datei, die dieser Befehl liest; sie zu schreiben würde sie zerstören. Geben Sie eine andere Datei an.</translation>
     </message>
@@ -4786,7 +4791,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 %2 existiert bereits; sie bleibt erhalten. Geben Sie eine andere Datei an oder fügen Sie --overwrite hinzu, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>%1 %2 already exists and is not a trace this command wrote; it is kept. Name another file, or add --overwrite to replace it.</source>
+        <translation>%1 %2 existiert bereits und ist kein Verlauf, den dieser Befehl geschrieben hat; sie bleibt erhalten. Geben Sie eine andere Datei an oder fügen Sie --overwrite hinzu, um sie zu ersetzen.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>%1 %2 is a folder; name a file</source>
         <translation>%1 %2 ist ein Ordner; geben Sie eine Datei an</translation>
     </message>

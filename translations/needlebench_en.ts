@@ -3108,7 +3108,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
         <location line="+290"/>
-        <location filename="../app/cmd_sync.cpp" line="+36"/>
+        <location filename="../app/cmd_sync.cpp" line="+38"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -3771,7 +3771,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+34"/>
+        <location filename="../app/cmd_labels.cpp" line="+36"/>
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3812,19 +3812,14 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>replace an existing labels file (it may hold labels made by hand)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>needlebench labels: unknown action &apos;%1&apos; (suggest)
 
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <location line="+6"/>
         <source>the labels file</source>
         <translation type="unfinished"></translation>
@@ -3870,12 +3865,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-136"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="+13"/>
+        <source>replace an existing labels file (it may hold labels made by hand), and let --tissue-trace replace a file that is not a trace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+130"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
@@ -4421,7 +4421,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+3"/>
+        <source>let --trace replace a file that is not a trace (an earlier trace is replaced without it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>needlebench sync: --roi wants x,y,w,h in whole pixels, w and h &gt; 0
 
 </source>
@@ -4441,7 +4446,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+26"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation type="unfinished"></translation>
@@ -4671,7 +4676,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cli_support.cpp" line="+18"/>
+        <location filename="../app/cli_support.cpp" line="+22"/>
         <source>show this help</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4686,7 +4691,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+42"/>
         <source>%1 %2 is a file this command reads; writing it would destroy it. Name another file.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4696,7 +4701,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>%1 %2 already exists and is not a trace this command wrote; it is kept. Name another file, or add --overwrite to replace it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>%1 %2 is a folder; name a file</source>
         <translation type="unfinished"></translation>
     </message>

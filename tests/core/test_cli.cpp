@@ -7,6 +7,8 @@
 
 #include <QtTest>
 
+#include <unistd.h>
+
 class TestCli : public QObject {
     Q_OBJECT
 
@@ -93,6 +95,26 @@ private slots:
         refused({"export", dir.path(), "--format", "hdf5", "--out", run}, QStringLiteral("not an HDF5 file"));
         refused({"simulate", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
         refused({"acquire", "--daq", "sim", "--stage", "sim", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
+        // A trace replaces an earlier trace only, not a run of another name, nor the run read
+        // through a hard link (`export --copy-video` makes them); each replaced it, exit 0.
+        const QString other = dir.filePath(QStringLiteral("run_002_sine.csv")), hard = dir.filePath(QStringLiteral("linked.csv"));
+        QVERIFY(QFile::copy(run, other));
+        QCOMPARE(::link(QFile::encodeName(run).constData(), QFile::encodeName(hard).constData()), 0);
+        refused({"sync", run, video, "--trace", other}, QStringLiteral("not a trace"));
+        refused({"labels", "suggest", run, "--tissue-trace", other, "--out", dir.filePath(QStringLiteral("x.labels.csv"))},
+                QStringLiteral("not a trace"));
+        refused({"sync", hard, video, "--trace", run, "--overwrite"}, QStringLiteral("a file this command reads"));
+        refused({"labels", "suggest", hard, "--out", run, "--overwrite"}, QStringLiteral("a file this command reads"));
+        QCOMPARE(bytes(other), recorded);
+        {
+            const QString earlier = dir.filePath(QStringLiteral("trace.csv"));
+            QFile f(earlier);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("time_s,displacement_px\n0.000000,1.000\n");
+            f.close();
+            const nbtest::CliResult r = TestCli::run({"sync", run, video, "--trace", earlier});
+            QVERIFY2(!r.err.contains(QStringLiteral("--trace")), qPrintable(r.err));  // fails on the missing video, not on the trace
+        }
 
         // Labels made by hand are kept unless --overwrite says otherwise.
         const QString labels = dir.filePath(QStringLiteral("run_001_sine.labels.csv"));
