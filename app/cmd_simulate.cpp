@@ -308,12 +308,15 @@ int cmdSimulate(const QStringList& args, Io io)
             io.err << "needlebench simulate: "
                    << nb::TrCli::tr("recording failed: %1; the run file keeps %2 whole rows").arg(r.summary->fault).arg(r.summary->samples)
                    << '\n';
+        if (!s.video.isEmpty() || !s.truth.isEmpty())
+            io.err << "needlebench simulate: " << nb::TrCli::tr("the run did not end by itself: no truth or video is written for it")
+                   << '\n';
         printJson(io, r.json);
         return signalled ? signalled : Failure;
     }
-    if (!r.error.isEmpty()) {  // recorded, but what follows the run failed (truth, video)
+    if (!r.error.isEmpty()) {  // recorded, but what follows the run failed (truth, video), or was interrupted
         io.err << "needlebench simulate: " << r.error << '\n';
-        return Failure;
+        return signalled ? signalled : Failure;
     }
     printJson(io, r.json);
     if (signalled)

@@ -94,8 +94,10 @@ void InterruptWatcher::readPipe()
     }
 }
 
-devices::RunOnceOptions::Interruption InterruptWatcher::interruption() const
+devices::RunOnceOptions::Interruption InterruptWatcher::interruption()
 {
+    if (g_pipe[0] >= 0)
+        readPipe();
     devices::RunOnceOptions::Interruption i;
     i.count = count_;
     if (count_)

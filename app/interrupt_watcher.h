@@ -32,7 +32,9 @@ public:
     // Hands the signals to a headless run (devices/run_once.h): the first ends the run as
     // `interrupted` with `signal: NAME` in its footer, a second does not wait. Each one is
     // told on `err` as `needlebench COMMAND: SIGTERM received: ...`.
-    devices::RunOnceOptions::Interruption interruption() const;
+    // Reads what the signals left first, so that a loop without an event loop (the rendering
+    // of a video) hears them too.
+    devices::RunOnceOptions::Interruption interruption();
     void announceOn(QTextStream& err, const QString& command);
     // "SIGTERM", "SIGINT", "SIGHUP", else "signal N".
     static QString signalName(int signo);

@@ -133,7 +133,14 @@ SimulatedRunResult simulateRun(const SimulatedRunRequest& s, const devices::RunO
             io.width = s.videoWidth;
             io.height = s.videoHeight;
             io.seed = s.videoSeed;
+            if (options.interruption)
+                io.cancelled = [&options] { return options.interruption().count > 0; };
             const devices::sim::ImagingTruth vt = devices::sim::renderImagingVideo(readRunFile(s.out).run, s.video, io);
+            if (vt.frames == 0) {
+                result.error = nb::TrCli::tr("interrupted while the video was rendered: %1 and the truth are not written; the run "
+                                             "file %2 is whole").arg(s.video, s.out);
+                return result;
+            }
             // An encoder on a full disk fails silently: count what can be read back.
             cv::VideoCapture check(QFile::encodeName(s.video).toStdString());
             const double readable = check.isOpened() ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0.0;

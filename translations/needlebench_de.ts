@@ -3096,7 +3096,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
     <message>
-        <location filename="../app/interrupt_watcher.cpp" line="+110"/>
+        <location filename="../app/interrupt_watcher.cpp" line="+112"/>
         <source>%1 received: stopping the stage and closing the run</source>
         <translation>%1 empfangen: Verfahrtisch wird gestoppt und der Lauf abgeschlossen</translation>
     </message>
@@ -4083,7 +4083,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>--cycles muss eine ganze Zahl in [1, 1000] sein</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="+133"/>
+        <source>the run did not end by itself: no truth or video is written for it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-138"/>
         <source>--thickness-mm must be positive</source>
         <translation>--thickness-mm muss positiv sein</translation>
     </message>
@@ -4388,7 +4393,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+165"/>
+        <location filename="../app/simulated_run.cpp" line="+172"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -4947,7 +4952,12 @@ Befehle:
         <translation>interner Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/simulated_run.cpp" line="-23"/>
+        <location filename="../app/simulated_run.cpp" line="-32"/>
+        <source>interrupted while the video was rendered: %1 and the truth are not written; the run file %2 is whole</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>
@@ -6764,7 +6774,7 @@ Befehle:
         <translation>Speicher konnte nicht gesperrt werden (mlockall: %1); Seitenfehler können Messwerte verzögern</translation>
     </message>
     <message>
-        <location filename="../devices/sim/imaging_render.cpp" line="+144"/>
+        <location filename="../devices/sim/imaging_render.cpp" line="+145"/>
         <source>the run has too few samples to render</source>
         <translation>der Lauf hat zu wenige Messwerte zum Zeichnen</translation>
     </message>
@@ -6779,7 +6789,7 @@ Befehle:
         <translation>hier kann kein Video geschrieben werden (Ordner fehlt oder ist nicht beschreibbar, oder kein Encoder)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+21"/>
         <source>the video could not be written</source>
         <translation>das Video konnte nicht geschrieben werden</translation>
     </message>

@@ -3089,7 +3089,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/interrupt_watcher.cpp" line="+110"/>
+        <location filename="../app/interrupt_watcher.cpp" line="+112"/>
         <source>%1 received: stopping the stage and closing the run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4034,7 +4034,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="+133"/>
+        <source>the run did not end by itself: no truth or video is written for it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-138"/>
         <source>--thickness-mm must be positive</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4331,7 +4336,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+165"/>
+        <location filename="../app/simulated_run.cpp" line="+172"/>
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4849,7 +4854,12 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/simulated_run.cpp" line="-23"/>
+        <location filename="../app/simulated_run.cpp" line="-32"/>
+        <source>interrupted while the video was rendered: %1 and the truth are not written; the run file %2 is whole</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6666,7 +6676,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/sim/imaging_render.cpp" line="+144"/>
+        <location filename="../devices/sim/imaging_render.cpp" line="+145"/>
         <source>the run has too few samples to render</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6681,7 +6691,7 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+21"/>
         <source>the video could not be written</source>
         <translation type="unfinished"></translation>
     </message>

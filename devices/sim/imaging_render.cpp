@@ -4,6 +4,7 @@
 #include "video/video_error.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QFileInfo>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -170,6 +171,11 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
     const int frames = int(std::ceil(end * options.fps));
     cv::Mat image;
     for (int k = 0; k < frames; ++k) {
+        if (options.cancelled && options.cancelled()) {
+            writer.release();
+            QFile::remove(path);
+            return truth;  // frames 0
+        }
         const double recordingTime = run.time_s.front() + k / options.fps - options.leadIn_s;
         renderer.render(recordingTime, k, image);
         writer.write(image);

@@ -7,6 +7,8 @@
 #include "core/run.h"
 
 #include <QString>
+
+#include <functional>
 #include <vector>
 
 namespace cv {
@@ -23,11 +25,14 @@ struct ImagingOptions {
     int height = 480;
     double noise = 10.0;    // grey levels, standard deviation per pixel and frame
     unsigned seed = 1;
+    // Asked before each frame: true stops the rendering, and the part written is removed
+    // (Ctrl+C during a long video went unheard and the command ended 0).
+    std::function<bool()> cancelled;
 };
 
 struct ImagingTruth {
     double offset_s = 0.0;  // video time minus recording time
-    int frames = 0;
+    int frames = 0;         // 0 when cancelled: nothing is left of the video
     double fps = 0.0;
 };
 

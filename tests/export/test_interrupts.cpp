@@ -127,6 +127,31 @@ private slots:
         QCOMPARE(run.footer.value(QStringLiteral("signal"), QString()), QStringLiteral("SIGINT"));
     }
 
+    // Ctrl+C while the imaging video is rendered, after the run: it went unheard, the video was
+    // finished and the command ended 0. Now it stops: no video, no truth, the run file whole.
+    void simulateStopsRenderingOnSigint()
+    {
+        QTemporaryDir dir, config;
+        const QString out = dir.filePath(QStringLiteral("fr.csv")), video = dir.filePath(QStringLiteral("fr.avi")),
+                      truth = dir.filePath(QStringLiteral("fr.json"));
+        QProcess p;
+        QVERIFY2(startUntilWritten(p, {QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"),
+                                       QStringLiteral("--cycles"), QStringLiteral("20"), QStringLiteral("--out"), out,
+                                       QStringLiteral("--video"), video, QStringLiteral("--truth"), truth},
+                                   config.path(), video, 200000),
+                 "simulate did not start rendering the video");
+        ::kill(pid_t(p.processId()), SIGINT);
+        QVERIFY(p.waitForFinished(20000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 128 + SIGINT);
+        const QString said = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(said.contains(QStringLiteral("not written")) && said.contains(video), qPrintable(said));
+        QVERIFY(!QFileInfo::exists(video));
+        QVERIFY(!QFileInfo::exists(truth));
+        const nb::Run run = nb::readRunFile(out).run;
+        QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("completed"));
+    }
+
     // `plan run` on the simulated rig: the run being recorded is closed as interrupted, the
     // plan keeps it as an interrupted attempt and stops (it used to die with the signal, the
     // run file without its footer and the plan's run left "running").
