@@ -4085,7 +4085,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+133"/>
         <source>the run did not end by itself: no truth or video is written for it</source>
-        <translation type="unfinished"></translation>
+        <translation>der Lauf endete nicht von selbst: für ihn werden keine Referenzwerte und kein Video geschrieben</translation>
     </message>
     <message>
         <location line="-138"/>
@@ -4954,7 +4954,7 @@ Befehle:
     <message>
         <location filename="../app/simulated_run.cpp" line="-32"/>
         <source>interrupted while the video was rendered: %1 and the truth are not written; the run file %2 is whole</source>
-        <translation type="unfinished"></translation>
+        <translation>beim Rendern des Videos unterbrochen: %1 und die Referenzwerte werden nicht geschrieben; die Laufdatei %2 ist vollständig</translation>
     </message>
     <message>
         <location line="+9"/>
