@@ -5,6 +5,7 @@
 #include "core/run_file.h"
 #include "core/sync.h"
 #include "support/needlebench_cli.h"
+#include "support/sanitizer_share.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -366,6 +367,7 @@ private slots:
     // No needle was found; the weaker motion comparison said 14.016 s at confidence 0.45.
     void shortStrokeLongAfterTheVideoStarts()
     {
+        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
         const QString run = dir_.filePath("late.csv"), video = dir_.filePath("late.mp4"), truth = dir_.filePath("late.json");
         int code = -1;
         runJson({"simulate", "--protocol", "stiffness", "--tissue", "liver2", "--velocity-mm-s", "10", "--depth-mm", "8", "--seed", "95",
@@ -387,6 +389,7 @@ private slots:
     // needle's own line never tried). A check outside the probe's matrix, drawn at random.
     void simulatorsViewCodedAlmostStill()
     {
+        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
         const QString run = dir_.filePath("held.csv"), rendered = dir_.filePath("held.avi"), coded = dir_.filePath("held.mp4");
         int code = -1;
         runJson({"simulate", "--protocol", "friction", "--tissue", "liver7", "--seed", "822", "--cycles", "4", "--frequency-hz",
