@@ -112,9 +112,16 @@ int cmdExport(const QStringList& args, Io io)
         return Failure;
     }
 
+    // Ctrl+C, `kill` and a closed terminal alike cancel between files and say so: SIGTERM ended
+    // the export silently, half of it looking complete.
     interrupted = 0;
-    const auto previous = std::signal(SIGINT, onInterrupt);
-    auto restore = qScopeGuard([&] { std::signal(SIGINT, previous); });
+    const auto previousInt = std::signal(SIGINT, onInterrupt), previousTerm = std::signal(SIGTERM, onInterrupt),
+               previousHup = std::signal(SIGHUP, onInterrupt);
+    auto restore = qScopeGuard([&] {
+        std::signal(SIGINT, previousInt);
+        std::signal(SIGTERM, previousTerm);
+        std::signal(SIGHUP, previousHup);
+    });
     const ExportProgress progress = [](qint64, qint64) { return interrupted == 0; };
     QStringList written;
     // Folders made for an export that then fails are taken away when left empty.

@@ -18,6 +18,8 @@
 #include <cstdio>
 #include <malloc.h>
 #include <memory>
+#include <cstring>
+#include <cerrno>
 
 // OpenCV allocates its images and spectra afresh at every call (the tissue tracker's phase
 // correlation: hundreds of kB a frame, in several threads), and glibc gave each back to the
@@ -103,8 +105,17 @@ int main(int argc, char** argv)
             QStringList arguments = app.arguments().mid(1);
             if (!arguments.isEmpty())
                 arguments[0] = words.value(0);  // --version asked as the command it is
-            const int code = nb::runGuarded(what, [&] { return nb::cli::run(arguments, {out, err}); }, err);
+            int code = nb::runGuarded(what, [&] { return nb::cli::run(arguments, {out, err}); }, err);
             out.flush();
+            // What a script reads from the output is the result: an output that could not be
+            // written (a full disk behind `> out.json`) is a failure, not exit 0 and an empty file.
+            errno = 0;
+            if ((out.status() == QTextStream::WriteFailed || std::fflush(stdout) != 0 || std::ferror(stdout)) && code == 0) {
+                err << nb::TrCli::tr("needlebench %1: the output could not be written (%2)")
+                           .arg(what, errno ? QString::fromLocal8Bit(std::strerror(errno)) : nb::TrCli::tr("write error"))
+                    << '\n';
+                code = 1;
+            }
             err.flush();
             return code;
         }, err);

@@ -3451,7 +3451,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1: keine Laufdateien (*.csv mit time_s,position_mm,force_N)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation>Warnung: %1 entfernt, von einem nicht beendeten Export zurückgelassen</translation>
     </message>
@@ -4962,7 +4962,17 @@ Befehle:
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+119"/>
+        <location filename="../app/main.cpp" line="+114"/>
+        <source>needlebench %1: the output could not be written (%2)</source>
+        <translation>needlebench %1: die Ausgabe konnte nicht geschrieben werden (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write error</source>
+        <translation>Schreibfehler</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Run a command without the window, such as &apos;needlebench demo&apos;; &apos;needlebench --help&apos; lists them.</source>
         <translation>Führen Sie einen Befehl ohne Fenster aus, etwa &apos;needlebench demo&apos;; &apos;needlebench --help&apos; listet sie auf.</translation>
     </message>

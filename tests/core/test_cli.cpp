@@ -68,6 +68,25 @@ private slots:
         QCOMPARE(p.exitCode(), 0);
         QVERIFY(p.readAllStandardOutput().startsWith("needlebench "));
     }
+    // What a script reads from the standard output is the result: one that cannot be written
+    // (a full disk behind `> out.json`) fails the command, saying so; it exited 0.
+    void anOutputThatCannotBeWrittenFails()
+    {
+        if (!QFileInfo::exists(QStringLiteral("/dev/full")))
+            QSKIP("no /dev/full here");
+        QTemporaryDir dir;
+        const QString run = dir.filePath(QStringLiteral("run.csv"));
+        QCOMPARE(TestCli::run({"simulate", "--protocol", "stiffness", "--out", run}).code, 0);
+        QProcess p;
+        p.setProcessEnvironment(withoutDisplay());
+        p.setStandardOutputFile(QStringLiteral("/dev/full"));
+        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("events"), run, QStringLiteral("--json")});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 1);
+        const QString said = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(said.contains(QStringLiteral("could not be written")), qPrintable(said));
+    }
+
     // An output named like one of the command's inputs, an existing recording or labels file,
     // an output that cannot be written: refused before anything is read or recorded, and the
     // files stay as they were (each of these once replaced a run file or hand-made labels).

@@ -152,6 +152,42 @@ private slots:
         QCOMPARE(run.footer.value(QStringLiteral("end_reason"), QString()), QStringLiteral("completed"));
     }
 
+    // `kill` (SIGTERM) during an export cancels it between rows and says so, as Ctrl+C does: it
+    // ended silently, half the export looking complete.
+    void exportSaysItWasCancelledOnSigterm()
+    {
+        QTemporaryDir dir, config;
+        const QString session = dir.filePath(QStringLiteral("session")), out = dir.filePath(QStringLiteral("out"));
+        QVERIFY(QDir().mkpath(session));
+        for (const char* name : {"run_001_linear.csv", "run_002_linear.csv"})
+            QCOMPARE(runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"), QStringLiteral("--rate-hz"),
+                             QStringLiteral("10000"), QStringLiteral("--velocity-mm-s"), QStringLiteral("1"), QStringLiteral("--out"),
+                             QDir(session).filePath(QLatin1String(name))})
+                         .code,
+                     0);
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("export"), session, QStringLiteral("--format"), QStringLiteral("csv"),
+                                                QStringLiteral("--out"), out});
+        QByteArray seen;
+        QElapsedTimer t;
+        t.start();
+        while (!seen.contains("[1/2]") && t.elapsed() < 60000 && p.state() != QProcess::NotRunning) {
+            p.waitForReadyRead(50);
+            seen += p.readAllStandardOutput();
+        }
+        QVERIFY2(seen.contains("[1/2]"), seen.constData());
+        ::kill(pid_t(p.processId()), SIGTERM);
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 1);
+        const QString said = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(said.contains(QStringLiteral("cancelled")), qPrintable(said));
+    }
+
     // `plan run` on the simulated rig: the run being recorded is closed as interrupted, the
     // plan keeps it as an interrupted attempt and stops (it used to die with the signal, the
     // run file without its footer and the plan's run left "running").
