@@ -668,7 +668,12 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         bent("Cn", "bn", fit.bendShiftCn);
     undetermined("Cp", "bp", fit.model.bp_Ns_per_m, fit.seBp_Ns_per_m, slowest[0], fastest[0]);
     undetermined("Cn", "bn", fit.model.bn_Ns_per_m, fit.seBn_Ns_per_m, slowest[1], fastest[1]);
-    if (fit.staticSource != QLatin1String("none")) {
+    if (fit.staticSource == QLatin1String("none")) {
+        // No stretch at rest to read the static limits from: D = 0 was printed as a result.
+        flag("Dp", nb::TrCore::tr("Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to "
+                                  "read the static limits from"));
+        flag("Dn", QString());
+    } else {
         if (fit.model.Dp_N <= 0.0)
             flag("Dp", nb::TrCore::tr("Dp is not positive: the static limit in + motion has the wrong sign"));
         if (fit.model.Dn_N >= 0.0)

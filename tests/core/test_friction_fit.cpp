@@ -177,6 +177,22 @@ private slots:
         QVERIFY(rel(band.model.Dp_N, p.model.Dp_N) < 0.05 && rel(band.model.Dn_N, p.model.Dn_N) < 0.05);
         QVERIFY2(std::fabs(band.frequency_hz - 0.2) < 0.004, qPrintable(QString::number(band.frequency_hz)));
         QVERIFY(band.perLength.Dn_N_per_m < 0.0);
+
+        // Phases without an 'a' (written "A" by hand): nothing to read D from. It came out as
+        // D = 0, a result in the table and the JSON; now not determined, and left out of means.
+        nb::Run noA = synthetic::makeFriction(p = synthetic::Friction{});
+        for (auto& [name, values] : noA.text)
+            if (name == QLatin1String("phase"))
+                for (QString& v : values)
+                    if (v == QLatin1String("a"))
+                        v = QStringLiteral("A");
+        const auto none = fitFriction(noA, o);
+        QCOMPARE(none.staticSource, QStringLiteral("none"));
+        QVERIFY2(none.notPhysicalValues.contains(QStringLiteral("Dp")) && none.notPhysicalValues.contains(QStringLiteral("Dn")),
+                 qPrintable(none.notPhysicalValues.join(QLatin1Char(' '))));
+        QVERIFY(!none.notPhysicalValues.contains(QStringLiteral("Cp")));  // C and b still come from phase c
+        const std::vector<FrictionFit> one{none};
+        QVERIFY(std::isnan(groupByFrequency(one).front().mean.Dp_N_per_m));
     }
     void staticFrictionPerDirection()
     {
