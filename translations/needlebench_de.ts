@@ -198,7 +198,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+28"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+29"/>
         <source>Calibrate force sensor – %1</source>
         <translation>Kraftsensor kalibrieren – %1</translation>
     </message>
@@ -270,12 +270,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+347"/>
+        <location line="+365"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation>Noch kein Fit: mindestens zwei Massen messen.</translation>
     </message>
     <message>
-        <location line="-334"/>
+        <location line="-352"/>
         <source>Measure</source>
         <translation>Messen</translation>
     </message>
@@ -304,8 +304,16 @@ oder ohne Kontakt einbeziehen</translation>
         <source>%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. Calibrate only up to the masses the sensor can read.</source>
         <translation>%1 g übersteuert den Eingang (%2 V, der Bereich endet bei ±%3 V): der Punkt wird abgelehnt. Nur bis zu Massen kalibrieren, die der Sensor lesen kann.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+63"/>
+        <source>Discard the %n point(s) measured? They are not saved.</source>
+        <translation>
+            <numerusform>Den %n gemessenen Punkt verwerfen? Er ist nicht gespeichert.</numerusform>
+            <numerusform>Die %n gemessenen Punkte verwerfen? Sie sind nicht gespeichert.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+108"/>
+        <location line="+63"/>
         <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
         <translation>Schritt %1 von %2: %3 g – warte, bis sich der Messwert beruhigt, dann %4 s mitteln; die Masse ruhig halten…</translation>
     </message>
@@ -320,7 +328,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Alle Massen gemessen, aber noch keine Anpassung.</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-297"/>
         <source>Measure all</source>
         <translation>Alle messen</translation>
     </message>
@@ -350,7 +358,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+308"/>
+        <location line="+326"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation>d = %1 mV/g,  c = %2 V,  r² = %3,  RMS-Residuum = %4 mV,  %5 Punkte</translation>
     </message>

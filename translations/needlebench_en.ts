@@ -197,7 +197,7 @@ or without contact</source>
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+28"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+29"/>
         <source>Calibrate force sensor – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -269,12 +269,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+347"/>
+        <location line="+365"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-334"/>
+        <location line="-352"/>
         <source>Measure</source>
         <translation type="unfinished"></translation>
     </message>
@@ -303,8 +303,16 @@ or without contact</source>
         <source>%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. Calibrate only up to the masses the sensor can read.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+63"/>
+        <source>Discard the %n point(s) measured? They are not saved.</source>
+        <translation>
+            <numerusform>Discard the %n point measured? It is not saved.</numerusform>
+            <numerusform>Discard the %n points measured? They are not saved.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+108"/>
+        <location line="+63"/>
         <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -319,7 +327,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-297"/>
         <source>Measure all</source>
         <translation type="unfinished"></translation>
     </message>
@@ -349,7 +357,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+308"/>
+        <location line="+326"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation type="unfinished"></translation>
     </message>

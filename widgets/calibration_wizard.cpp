@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QLocale>
 #include <QPushButton>
 #include <QSplitter>
@@ -260,6 +261,24 @@ double CalibrationWizard::massAt(int row) const
 }
 bool CalibrationWizard::usedAt(int row) const { return table_->item(row, Use)->checkState() == Qt::Checked; }
 bool CalibrationWizard::measuredAt(int row) const { return table_->item(row, Voltage)->data(Qt::UserRole).isValid(); }
+
+void CalibrationWizard::reject()
+{
+    int measured = 0;
+    for (int row = 0; row < table_->rowCount(); ++row)
+        measured += measuredAt(row);
+    if (measured > 0 || isMeasuring()) {
+        QMessageBox question(QMessageBox::Question, windowTitle(),
+                             tr("Discard the %n point(s) measured? They are not saved.", nullptr, measured),
+                             QMessageBox::Discard | QMessageBox::Cancel, this);
+        question.setObjectName(QStringLiteral("discardPoints"));
+        question.setDefaultButton(QMessageBox::Cancel);
+        if (question.exec() != QMessageBox::Discard)
+            return;
+    }
+    stopMeasuring();
+    QDialog::reject();
+}
 
 void CalibrationWizard::setPointUsed(int row, bool used)
 {

@@ -66,6 +66,8 @@ public slots:
     void measureCurrent();
     void measureAll();
     void stopMeasuring();
+    // Esc or Cancel with points measured and not saved asks first: it threw them away at once.
+    void reject() override;
 
 signals:
     void calibrationAccepted(const nb::StoredCalibration& calibration);
