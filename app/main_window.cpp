@@ -701,6 +701,8 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
         // As wide as a day's counts from the start, so that the summary does not grow under the
         // message beside it (elided to the room left when it was shown) as the samples add up.
         statusLabel_->setMinimumWidth(metrics.horizontalAdvance(summary(10000.0, 99999999, 99999)) + 2 * statusLabel_->margin() + 4);
+        if (!statusBar()->currentMessage().isEmpty() && !shownMessage_.isEmpty())
+            showMessage(shownMessage_, shownAlarm_);  // shortened to the room the summary leaves now
     }
     statusLabel_->setText(summary(s.rateHz, qint64(s.samples), qint64(s.dropped + s.overruns)));
     QString tip = tr("%1\n%n plot frame(s) drawn", nullptr, plots_->framesDrawn()).arg(devices);
@@ -792,9 +794,25 @@ void MainWindow::showMessage(const QString& text, bool alarm)
     font.setBold(alarm);
     const QFontMetrics metrics(font);
     // Before the window is shown (a device that failed at start) the bar has no width yet.
-    const int room = statusBar()->isVisible() ? statusBar()->width() - statusLabel_->width() - 4 * metrics.averageCharWidth() : QWIDGETSIZE_MAX;
+    const int room = statusBar()->isVisible()
+                         ? statusBar()->width() - std::max(statusLabel_->width(), statusLabel_->minimumWidth()) - 4 * metrics.averageCharWidth()
+                         : QWIDGETSIZE_MAX;
     statusBar()->showMessage(metrics.elidedText(text, Qt::ElideMiddle, std::max(room, 160)));
     statusBar()->setToolTip(text);  // whole, where the bar is too narrow for it
+    shownMessage_ = text;
+    shownAlarm_ = alarm;
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event)
+{
+    QMainWindow::resizeEvent(event);
+    // A message said before the window had its width (at start) ran under the summary on the
+    // right, cut off: it is shortened again to the room there is now.
+    if (!statusBar()->currentMessage().isEmpty() && !shownMessage_.isEmpty())
+        QTimer::singleShot(0, this, [this] {
+            if (!statusBar()->currentMessage().isEmpty())
+                showMessage(shownMessage_, shownAlarm_);
+        });
 }
 
 QString MainWindow::quitQuestionText(const devices::EngineStatus& s)

@@ -129,6 +129,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void buildMenus();
@@ -161,6 +162,8 @@ private:
     void newSessionDialog();
     void openSessionDialog();
     void showMessage(const QString& text, bool alarm = false);
+    QString shownMessage_;  // the status line's text whole, shortened again when the window is resized
+    bool shownAlarm_ = false;
     // `text` with the open session's folder left out of the paths it names.
     QString withinSession(QString text) const;
 

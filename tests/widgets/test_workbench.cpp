@@ -626,6 +626,11 @@ private slots:
         // later and replaced what the status line said at start.
         QTest::qWait(500);
         QVERIFY2(w.statusBar()->toolTip().contains(QStringLiteral("not there")), qPrintable(w.statusBar()->toolTip()));
+        // Said before the window had its width, it is shortened to the room beside the summary.
+        w.resize(700, 600);
+        QTRY_VERIFY2(QFontMetrics(w.statusBar()->font()).horizontalAdvance(w.statusBar()->currentMessage()) < w.statusBar()->width() - 200,
+                     qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY(w.statusBar()->currentMessage().contains(QChar(0x2026)));
         QSettings().remove(QStringLiteral("session/last"));
         QSettings().remove(QStringLiteral("session/recent"));
     }
