@@ -60,6 +60,9 @@ static void printUsage(QTextStream& s)
     for (const Command& c : commands())
         s << "  " << c.name.leftJustified(16) << ' ' << c.summary << '\n';
     s << nb::TrCli::tr("\n'needlebench COMMAND --help' describes a command.\n");
+    // What scripts test for: the numbers are promises, as the commands' options are.
+    s << nb::TrCli::tr("\nExit status: 0 done; 1 failed (the message says why, naming the file or device); 2 the command "
+                       "was given wrongly; 128+N ended by signal N (130 Ctrl+C, 143 SIGTERM), what was recorded closed.\n");
 }
 
 int run(const QStringList& arguments, Io io)

@@ -1692,7 +1692,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+63"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation>Nichts bewegt sich oder zeichnet jetzt auf. Beenden?</translation>
     </message>
@@ -1726,14 +1726,14 @@ Die zuvor geschriebenen Zeilen bleiben in der Datei. Vor dem nächsten Lauf Plat
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+72"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-718"/>
+        <location line="-736"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
@@ -1743,7 +1743,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
     <message numerus="yes">
-        <location line="+12"/>
+        <location line="+14"/>
         <source>%1
 %n plot frame(s) drawn</source>
         <translation>
@@ -1754,7 +1754,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+119"/>
         <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
         <translation>Die Nadel steckt noch im Gewebe. Zuerst zurückziehen (Zum Start) oder beenden und sie dort lassen?</translation>
     </message>
@@ -1769,7 +1769,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-521"/>
+        <location line="-539"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -4921,7 +4921,16 @@ Befehle:
 </translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+2"/>
+        <source>
+Exit status: 0 done; 1 failed (the message says why, naming the file or device); 2 the command was given wrongly; 128+N ended by signal N (130 Ctrl+C, 143 SIGTERM), what was recorded closed.
+</source>
+        <translation>
+Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die Datei oder das Gerät); 2 der Befehl war falsch angegeben; 128+N durch Signal N beendet (130 Strg+C, 143 SIGTERM), das Aufgezeichnete geschlossen.
+</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>needlebench: unknown command &apos;%1&apos;
 
 </source>

@@ -1690,7 +1690,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+63"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1722,13 +1722,13 @@ The rows written before are kept in the file. Free space on the disk (or choose 
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+72"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-718"/>
+        <location line="-736"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1738,7 +1738,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+12"/>
+        <location line="+14"/>
         <source>%1
 %n plot frame(s) drawn</source>
         <translation>
@@ -1749,7 +1749,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+119"/>
         <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1764,7 +1764,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-521"/>
+        <location line="-539"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4825,7 +4825,14 @@ Commands:
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+2"/>
+        <source>
+Exit status: 0 done; 1 failed (the message says why, naming the file or device); 2 the command was given wrongly; 128+N ended by signal N (130 Ctrl+C, 143 SIGTERM), what was recorded closed.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>needlebench: unknown command &apos;%1&apos;
 
 </source>

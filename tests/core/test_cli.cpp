@@ -41,6 +41,7 @@ private slots:
         const auto r = run({QStringLiteral("help")});
         QCOMPARE(r.code, 0);
         QVERIFY(r.out.contains(QStringLiteral("version")));
+        QVERIFY(r.out.contains(QStringLiteral("Exit status: 0 done; 1 failed")));  // what scripts test for
     }
     void badOptionFails()
     {
