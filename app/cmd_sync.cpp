@@ -21,6 +21,7 @@
 namespace nb::cli {
 
 static constexpr char kTraceHeader[] = "time_s,displacement_px";
+static constexpr int kSmallestPicture_px = 32;
 
 int cmdSync(const QStringList& args, Io io)
 {
@@ -102,6 +103,13 @@ int cmdSync(const QStringList& args, Io io)
         runSamples = run.size();
         const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
         videoFrames = index.size();
+        // A picture too small to show a needle gave an offset all the same (the search's edge,
+        // -max_offset) with exit 0; the smallest picture the tracker reads is 32 px a side.
+        if (index.width < kSmallestPicture_px || index.height < kSmallestPicture_px) {
+            io.err << nb::TrCli::tr("needlebench sync: %1: the picture is %2x%3 px, too small to show a needle (%4 px a side "
+                                    "at least)\n").arg(videoPath).arg(index.width).arg(index.height).arg(kSmallestPicture_px);
+            return Failure;
+        }
         if (!region.isEmpty() && !QRect(0, 0, index.width, index.height).contains(region)) {
             io.err << nb::TrCli::tr("needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture\n")
                           .arg(region.x()).arg(region.y()).arg(region.width()).arg(region.height())

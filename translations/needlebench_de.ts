@@ -3123,7 +3123,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
         <location line="+290"/>
-        <location filename="../app/cmd_sync.cpp" line="+38"/>
+        <location filename="../app/cmd_sync.cpp" line="+39"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -4521,7 +4521,14 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
+        <source>needlebench sync: %1: the picture is %2x%3 px, too small to show a needle (%4 px a side at least)
+</source>
+        <translation>needlebench sync: %1: das Bild hat %2x%3 px, zu klein, um eine Nadel zu zeigen (mindestens %4 px je Seite)
+</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation>needlebench sync: --roi %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6

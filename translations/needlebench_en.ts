@@ -3116,7 +3116,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
         <location line="+290"/>
-        <location filename="../app/cmd_sync.cpp" line="+38"/>
+        <location filename="../app/cmd_sync.cpp" line="+39"/>
         <location filename="../app/cmd_video.cpp" line="+46"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -4459,7 +4459,13 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
+        <source>needlebench sync: %1: the picture is %2x%3 px, too small to show a needle (%4 px a side at least)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>needlebench sync: --roi %1,%2,%3,%4 lies outside the %5x%6 picture
 </source>
         <translation type="unfinished"></translation>

@@ -320,6 +320,15 @@ private slots:
         QCOMPARE(r["max_offset_s"].toDouble(), 3.0);
         const nbtest::CliResult text = nbtest::runCli({"sync", run_, grey, "--max-offset", "3"}, 240000);
         QVERIFY2(text.out.contains(QStringLiteral("uncertainty: unknown")) && text.out.contains(QStringLiteral("--max-offset")), qPrintable(text.out));
+
+        // A picture too small to show a needle is refused, naming it: it answered -max_offset, exit 0.
+        const QString tiny = dir_.filePath("tiny.avi");
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-f", "lavfi", "-i", "color=c=gray:size=16x16:rate=25:duration=2",
+                                               "-c:v", "mjpeg", tiny});
+        QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
+        const nbtest::CliResult small = nbtest::runCli({"sync", run_, tiny, "--json"}, 240000);
+        QCOMPARE(small.code, 1);
+        QVERIFY2(small.err.contains(tiny) && small.err.contains(QStringLiteral("too small")), qPrintable(small.err));
     }
 
     // The operator may draw the needle's line from the tip to the shaft as well as the other
