@@ -701,8 +701,7 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
         // As wide as a day's counts from the start, so that the summary does not grow under the
         // message beside it (elided to the room left when it was shown) as the samples add up.
         statusLabel_->setMinimumWidth(metrics.horizontalAdvance(summary(10000.0, 99999999, 99999)) + 2 * statusLabel_->margin() + 4);
-        if (!statusBar()->currentMessage().isEmpty() && !shownMessage_.isEmpty())
-            showMessage(shownMessage_, shownAlarm_);  // shortened to the room the summary leaves now
+        refitMessage();  // to the room the summary leaves now
     }
     statusLabel_->setText(summary(s.rateHz, qint64(s.samples), qint64(s.dropped + s.overruns)));
     QString tip = tr("%1\n%n plot frame(s) drawn", nullptr, plots_->framesDrawn()).arg(devices);
@@ -803,16 +802,18 @@ void MainWindow::showMessage(const QString& text, bool alarm)
     shownAlarm_ = alarm;
 }
 
+// A message said before the window had its width (at start) ran under the summary on the right,
+// cut off: it is shortened again to the room there is now.
+void MainWindow::refitMessage()
+{
+    if (!statusBar()->currentMessage().isEmpty() && !shownMessage_.isEmpty())
+        showMessage(shownMessage_, shownAlarm_);
+}
+
 void MainWindow::resizeEvent(QResizeEvent* event)
 {
     QMainWindow::resizeEvent(event);
-    // A message said before the window had its width (at start) ran under the summary on the
-    // right, cut off: it is shortened again to the room there is now.
-    if (!statusBar()->currentMessage().isEmpty() && !shownMessage_.isEmpty())
-        QTimer::singleShot(0, this, [this] {
-            if (!statusBar()->currentMessage().isEmpty())
-                showMessage(shownMessage_, shownAlarm_);
-        });
+    QTimer::singleShot(0, this, &MainWindow::refitMessage);  // once the status bar has its new width
 }
 
 QString MainWindow::quitQuestionText(const devices::EngineStatus& s)

@@ -162,6 +162,7 @@ private:
     void newSessionDialog();
     void openSessionDialog();
     void showMessage(const QString& text, bool alarm = false);
+    void refitMessage();
     QString shownMessage_;  // the status line's text whole, shortened again when the window is resized
     bool shownAlarm_ = false;
     // `text` with the open session's folder left out of the paths it names.
