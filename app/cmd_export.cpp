@@ -7,6 +7,7 @@
 
 #include "core/export/dataset_loader.h"
 #include "core/export/eaf_export.h"
+#include "core/export/earlier_export.h"
 #include "core/export/label_intervals.h"
 #include "core/export/made_folders.h"
 #include "core/export/run_csv_export.h"
@@ -65,7 +66,11 @@ int cmdExport(const QStringList& args, Io io)
                                                      "that, so the export folder can be moved or shared on its own"));
     parser.addOption(format);
     parser.addOption(out);
+    const QCommandLineOption overwrite(QStringLiteral("overwrite"),
+                                       nb::TrCli::tr("replace files in OUT that are not an earlier export's (a run file, a table "
+                                                     "made by hand); an earlier export's files are replaced without it"));
     parser.addOption(copyVideo);
+    parser.addOption(overwrite);
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("export"), args, io, 1, 1, &code))
         return code;
@@ -111,6 +116,25 @@ int cmdExport(const QStringList& args, Io io)
         io.err << "needlebench export: " << nb::TrCli::tr("%1: no run files (*.csv with time_s,position_mm,force_N)").arg(dir) << '\n';
         return Failure;
     }
+
+    // An earlier export's files are the export's to replace; a recorded run or a hand-made table
+    // of the same name in OUT (another session's folder, say) is kept unless --overwrite.
+    QStringList names;
+    for (const DatasetRun& r : d.runs)
+        names << r.name;
+    const FilesInTheWay inTheWay = filesInTheWay(fmt == QLatin1String("hdf5") ? QStringList{target}
+                                                                               : runExportPaths(target, names, fmt == QLatin1String("eaf")));
+    if (!inTheWay.other.isEmpty() && !parser.isSet(overwrite)) {
+        io.err << "needlebench export: "
+               << nb::TrCli::tr("%n file(s) in %1 would be replaced that are not an earlier export's (%2); they are kept. "
+                                "Name another folder, or give --overwrite.", nullptr, int(inTheWay.other.size()))
+                      .arg(target, QStringList(inTheWay.other.mid(0, 3)).join(QStringLiteral(", ")) + (inTheWay.other.size() > 3 ? QStringLiteral(", …") : QString()))
+               << '\n';
+        return Usage;
+    }
+    if (!inTheWay.earlierExport.isEmpty())
+        io.err << nb::TrCli::tr("note: replacing %n file(s) of an earlier export in %1", nullptr, int(inTheWay.earlierExport.size())).arg(target)
+               << '\n';
 
     // Ctrl+C, `kill` and a closed terminal alike cancel between files and say so: SIGTERM ended
     // the export silently, half of it looking complete.

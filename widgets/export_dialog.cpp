@@ -6,6 +6,7 @@
 
 #include "core/export/dataset_loader.h"
 #include "core/export/eaf_export.h"
+#include "core/export/earlier_export.h"
 #include "core/export/export_error.h"
 #include "core/export/label_intervals.h"
 #include "core/export/made_folders.h"
@@ -22,6 +23,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
@@ -146,6 +148,57 @@ void ExportDialog::start()
         status_->setText(tr("Choose a folder to export into."));
         return;
     }
+    const QStringList names = runNamesIn(sessionDir_);
+    QStringList paths;
+    if (c.csv)
+        paths << runExportPaths(QDir(target).filePath(QStringLiteral("csv")), names, false);
+    if (c.eaf)
+        paths << runExportPaths(QDir(target).filePath(QStringLiteral("eaf")), names, true);
+    if (c.hdf5)
+        paths << hdf5Path();
+    if (const FilesInTheWay way = filesInTheWay(paths); !way.empty()) {
+        askToReplace(way, c, target);
+        return;
+    }
+    begin(c, target);
+}
+
+void ExportDialog::askToReplace(const FilesInTheWay& way, const Choice& c, const QString& target)
+{
+    const QDir dir(target);
+    QStringList listed;
+    for (const QString& f : way.other + way.earlierExport)
+        listed << QDir::toNativeSeparators(dir.relativeFilePath(f));
+    auto* question = new QMessageBox(QMessageBox::Warning, windowTitle(), {}, QMessageBox::Cancel, this);
+    question->setObjectName(QStringLiteral("replaceExport"));
+    question->setAttribute(Qt::WA_DeleteOnClose);
+    question->setWindowModality(Qt::NonModal);
+    if (way.other.isEmpty()) {
+        question->setIcon(QMessageBox::Question);
+        question->setText(tr("%1 already holds an earlier export: %n file(s) will be replaced.", nullptr, int(way.earlierExport.size()))
+                              .arg(QDir::toNativeSeparators(target)));
+    } else {
+        question->setText(tr("%n file(s) in %1 are not an earlier export's (a recorded run, a table made by hand?) and "
+                             "would be replaced and lost.", nullptr, int(way.other.size()))
+                              .arg(QDir::toNativeSeparators(target)));
+        question->setInformativeText(tr("Choose another folder unless you are sure."));
+    }
+    question->setDetailedText(listed.join(QLatin1Char('\n')));
+    QPushButton* replace = question->addButton(tr("Replace"), QMessageBox::DestructiveRole);
+    question->setDefaultButton(way.other.isEmpty() ? replace : qobject_cast<QPushButton*>(question->button(QMessageBox::Cancel)));
+    exportButton_->setEnabled(false);
+    connect(question, &QMessageBox::finished, this, [this, question, replace, c, target] {
+        exportButton_->setEnabled(true);
+        if (question->clickedButton() == replace)
+            begin(c, target);
+        else
+            status_->setText(tr("Not exported: the files in %1 are kept.").arg(QDir::toNativeSeparators(target)));
+    });
+    question->show();
+}
+
+void ExportDialog::begin(const Choice& c, const QString& target)
+{
     bool made = false;
     made_ = makeFolders(target, &made);
     if (!made) {

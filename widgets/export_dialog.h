@@ -22,6 +22,7 @@ class QPushButton;
 namespace nb {
 
 class AnalysisWorkspace;
+struct FilesInTheWay;
 
 class ExportDialog : public QDialog {
     Q_OBJECT
@@ -37,7 +38,9 @@ public:
     void setTargetDir(const QString& dir);
     QString targetDir() const;
     QString hdf5Path() const;  // where the HDF5 file goes: TARGET/SESSION.h5
-    // Starts the export (as the Export button does); finished() is emitted at the end.
+    // Starts the export (as the Export button does); finished() is emitted at the end. When
+    // files are in the way, it first asks (a question named "replaceExport", not modal: the
+    // window's emergency stop stays in reach) and exports only when told to replace them.
     void start();
     void cancel();
     bool isRunning() const { return watcher_.isRunning(); }
@@ -55,6 +58,8 @@ private:
         QStringList made;  // folders made for the export, taken away if left empty
         QString error;
     };
+    void begin(const Choice& c, const QString& target);
+    void askToReplace(const FilesInTheWay& way, const Choice& c, const QString& target);
     Outcome run(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
     void finish();
     Choice choice() const;

@@ -115,6 +115,23 @@ private slots:
         refused({"export", dir.path(), "--format", "hdf5", "--out", run}, QStringLiteral("not an HDF5 file"));
         refused({"simulate", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
         refused({"acquire", "--daq", "sim", "--stage", "sim", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
+        // An export into a folder of recorded runs (another session's) replaced them, the
+        // calibration header and raw columns gone, with exit 0. An earlier export's own files are
+        // replaced, saying so; anything else only with --overwrite.
+        {
+            QTemporaryDir otherSession;
+            const QString theirs = QDir(otherSession.path()).filePath(QStringLiteral("run_001_sine.csv"));
+            QVERIFY(QFile::copy(run, theirs));
+            refused({"export", dir.path(), "--format", "csv", "--out", otherSession.path()}, QStringLiteral("not an earlier export"));
+            QCOMPARE(bytes(theirs), recorded);
+            const QString out = dir.filePath(QStringLiteral("exported"));
+            QCOMPARE(TestCli::run({"export", dir.path(), "--format", "csv", "--out", out}).code, 0);
+            const nbtest::CliResult again = TestCli::run({"export", dir.path(), "--format", "csv", "--out", out});
+            QVERIFY2(again.code == 0 && again.err.contains(QStringLiteral("earlier export")), qPrintable(again.err));
+            QCOMPARE(TestCli::run({"export", dir.path(), "--format", "csv", "--out", otherSession.path(), "--overwrite"}).code, 0);
+            QVERIFY(!bytes(theirs).startsWith(recorded.left(200)));
+            QVERIFY(QDir(out).removeRecursively());
+        }
         // A trace replaces an earlier trace only, not a run of another name, nor the run read
         // through a hard link (`export --copy-video` makes them); each replaced it, exit 0.
         const QString other = dir.filePath(QStringLiteral("run_002_sine.csv")), hard = dir.filePath(QStringLiteral("linked.csv"));

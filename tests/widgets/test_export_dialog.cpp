@@ -6,6 +6,8 @@
 
 #include <QDir>
 #include <QDirIterator>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QProcess>
 #include <QProgressBar>
 #include <QTemporaryDir>
@@ -114,6 +116,87 @@ private slots:
         QVERIFY(done.wait(60000));
         QVERIFY(QFileInfo(before).isDir());
         QVERIFY(!QFileInfo::exists(QDir(before).filePath(QStringLiteral("csv"))));
+    }
+
+    // An export into a folder that holds one asks first (it replaced the files without a word):
+    // an earlier export is replaced when the operator says so, Replace offered; a recorded run
+    // of the same name (another session's folder) is named as such, Cancel offered, and kept.
+    void replacingAsksFirst()
+    {
+        const QString small = tmp_.filePath(QStringLiteral("small"));
+        nb::Session::create(small, {});
+        QProcess p;
+        p.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"),
+                                                QStringLiteral("--cycles"), QStringLiteral("1"), QStringLiteral("--frequency-hz"),
+                                                QStringLiteral("1"), QStringLiteral("--out"), QDir(small).filePath(QStringLiteral("run_001_sine.csv"))});
+        QVERIFY(p.waitForFinished(120000));
+        QCOMPARE(p.exitCode(), 0);
+        const auto bytes = [](const QString& path) {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        const auto question = [](QWidget* dialog) -> QMessageBox* {
+            for (QMessageBox* q : dialog->findChildren<QMessageBox*>(QStringLiteral("replaceExport")))
+                if (q->isVisible())
+                    return q;
+            return nullptr;
+        };
+        const auto click = [](QMessageBox* q, const QString& text) {
+            for (QAbstractButton* b : q->buttons())
+                if (b->text().remove(QLatin1Char('&')) == text)
+                    b->click();
+        };
+
+        nb::ExportDialog dialog(small, nullptr);
+        const QString out = tmp_.filePath(QStringLiteral("replace"));
+        dialog.setTargetDir(out);
+        dialog.setChoice({.csv = true, .hdf5 = false, .eaf = false, .figures = false, .tables = false});
+        QSignalSpy done(&dialog, &nb::ExportDialog::exportFinished);
+        dialog.start();
+        QVERIFY(!question(&dialog));  // nothing there: no question
+        QVERIFY(done.wait(60000));
+        QCOMPARE(done.first().first().toBool(), true);
+        const QString csv = QDir(out).filePath(QStringLiteral("csv/run_001_sine.csv"));
+        {
+            QFile f(csv);
+            QVERIFY(f.open(QIODevice::Append));
+            f.write("edited after the export\n");
+        }
+
+        done.clear();
+        dialog.start();
+        QMessageBox* q = question(&dialog);
+        QVERIFY(q);
+        QVERIFY2(q->text().contains(QStringLiteral("earlier export")), qPrintable(q->text()));
+        QCOMPARE(q->defaultButton()->text().remove(QLatin1Char('&')), QStringLiteral("Replace"));
+        QVERIFY(!q->isModal());  // the window's emergency stop stays in reach
+        q->button(QMessageBox::Cancel)->click();
+        QVERIFY(!dialog.isRunning());
+        QCOMPARE(done.count(), 0);
+        QVERIFY(bytes(csv).contains("edited after the export"));
+        QVERIFY(dialog.resultText().contains(QStringLiteral("kept")));
+
+        dialog.start();
+        q = question(&dialog);
+        QVERIFY(q);
+        click(q, QStringLiteral("Replace"));
+        QVERIFY(done.wait(60000));
+        QCOMPARE(done.first().first().toBool(), true);
+        QVERIFY(!bytes(csv).contains("edited after the export"));
+
+        // Not an export's: its sidecar gone, the CSV is a file of somebody's.
+        QVERIFY(QFile::remove(QDir(out).filePath(QStringLiteral("csv/run_001_sine.json"))));
+        const QByteArray theirs = bytes(csv);
+        done.clear();
+        dialog.start();
+        q = question(&dialog);
+        QVERIFY(q);
+        QVERIFY2(q->text().contains(QStringLiteral("not an earlier export")), qPrintable(q->text()));
+        QCOMPARE(q->defaultButton(), q->button(QMessageBox::Cancel));
+        QVERIFY(q->detailedText().contains(QStringLiteral("run_001_sine.csv")));
+        QTest::keyClick(q, Qt::Key_Return);  // the default: nothing replaced
+        QCOMPARE(done.count(), 0);
+        QCOMPARE(bytes(csv), theirs);
     }
 };
 
