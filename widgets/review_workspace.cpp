@@ -31,15 +31,46 @@
 #include <QPushButton>
 #include <QSplitter>
 #include <QTimer>
+#include <QUndoCommand>
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 
 namespace nb {
+
+namespace {
+
+// One change of the sync (ReviewWorkspace::changeSync); `apply` sets a state on the workspace.
+template <typename State>
+class SyncCommand : public QUndoCommand {
+public:
+    SyncCommand(State before, State after, std::function<void(const State&)> apply, const QString& text, int mergeId)
+        : QUndoCommand(text), before_(std::move(before)), after_(std::move(after)), apply_(std::move(apply)), mergeId_(mergeId)
+    {
+    }
+    void redo() override { apply_(after_); }
+    void undo() override { apply_(before_); }
+    int id() const override { return mergeId_; }
+    bool mergeWith(const QUndoCommand* other) override
+    {
+        after_ = static_cast<const SyncCommand*>(other)->after_;
+        return true;
+    }
+
+private:
+    State before_, after_;
+    std::function<void(const State&)> apply_;
+    int mergeId_;
+};
+
+enum SyncMergeId { OffsetTyped = 0x5e01, DriftTyped };
+
+}  // namespace
 
 ReviewWorkspace::ReviewWorkspace(QWidget* parent)
     : QWidget(parent), model_(new LabelModel(this)), undo_(new QUndoStack(this)), decoder_(new video::VideoDecoder(this))
@@ -281,12 +312,11 @@ void ReviewWorkspace::buildUi()
     offsetBox_->setToolTip(tr("video time = recording time + offset"));
     connect(offsetBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         if (std::abs(v - mapping_.offset_s) > 1e-7) {
-            mapping_.offset_s = v;
-            syncMethod_ = SyncMethod::Manual;
-            syncConfidence_.reset();
-            storeVideoLink();
-            requestFrameForCursor();
-            updateTrace();
+            SyncState after = syncState();
+            after.mapping.offset_s = v;
+            after.method = SyncMethod::Manual;
+            after.confidence.reset();
+            changeSync(after, tr("set the video offset"), OffsetTyped);
         }
     });
     sync->addWidget(offsetBox_);
@@ -297,13 +327,11 @@ void ReviewWorkspace::buildUi()
     driftBox_->setSuffix(tr(" ppm"));
     driftBox_->setToolTip(tr("clock drift of the video against the force record (video runs fast: positive)"));
     connect(driftBox_, &QDoubleSpinBox::valueChanged, this, [this](double ppm) {
-        mapping_.drift = ppm * 1e-6;
-        syncMethod_ = SyncMethod::Manual;
-        syncConfidence_.reset();
-        storeVideoLink();
-        requested_ = -1;
-        requestFrameForCursor();
-        updateTrace();
+        SyncState after = syncState();
+        after.mapping.drift = ppm * 1e-6;
+        after.method = SyncMethod::Manual;
+        after.confidence.reset();
+        changeSync(after, tr("set the drift"), DriftTyped);
     });
     sync->addWidget(new QLabel(tr("drift"), this));
     sync->addWidget(driftBox_);
@@ -317,14 +345,18 @@ void ReviewWorkspace::buildUi()
     };
     auto frameDuration = [this] { return index_ ? index_->frameDuration() : 1.0 / 29.97; };
     syncButton(tr("−1 frame"), tr("nudge the offset by one frame"), [this, frameDuration] {
-        TimelineMapping m = mapping_;
-        m.nudge(-1, frameDuration());
-        setMapping(m);
+        SyncState after = syncState();
+        after.mapping.nudge(-1, frameDuration());
+        after.method = SyncMethod::Manual;
+        after.confidence.reset();
+        changeSync(after, tr("nudge the offset by a frame"));
     });
     syncButton(tr("+1 frame"), tr("nudge the offset by one frame"), [this, frameDuration] {
-        TimelineMapping m = mapping_;
-        m.nudge(1, frameDuration());
-        setMapping(m);
+        SyncState after = syncState();
+        after.mapping.nudge(1, frameDuration());
+        after.method = SyncMethod::Manual;
+        after.confidence.reset();
+        changeSync(after, tr("nudge the offset by a frame"));
     });
     syncRow = syncFind;
     syncButton(tr("Mark event in force"), tr("the event is at the cursor in the force record"), [this] { markEventInRecording(); });
@@ -774,23 +806,41 @@ void ReviewWorkspace::applyMarkedEvent()
     // Two events at least a second apart give the drift as well; a drift over 1 % is no
     // clock's, but a mark on the wrong frame.
     constexpr double kMinApart_s = 1.0, kMaxDrift = 0.01;
-    const auto both = markedEvent_ && std::abs(r - markedEvent_->first) >= kMinApart_s
-                          ? TimelineMapping::fromEvents(markedEvent_->first, markedEvent_->second, r, v)
-                          : std::nullopt;
+    SyncState after = syncState();
+    after.method = SyncMethod::EventMarks;
+    after.confidence.reset();
+    after.markedEvent = std::pair{r, v};
+    const double apart_s = markedEvent_ ? std::abs(r - markedEvent_->first) : 0.0;
+    const auto both = markedEvent_ && apart_s >= kMinApart_s ? TimelineMapping::fromEvents(markedEvent_->first, markedEvent_->second, r, v)
+                                                            : std::nullopt;
     if (both && std::abs(both->drift) <= kMaxDrift) {
-        setMapping(*both, SyncMethod::EventMarks);
+        after.mapping = *both;
+        changeSync(after, tr("set the offset and drift from two events"));
         showStatus(tr("Offset and drift set from two events (%1 s apart): drift %2 ppm")
-                       .arg(std::abs(r - markedEvent_->first), 0, 'f', 2)
+                       .arg(apart_s, 0, 'f', 2)
                        .arg(both->drift * 1e6, 0, 'f', 0));
     } else {
-        setMapping(TimelineMapping::fromEvent(r, v, mapping_.drift), SyncMethod::EventMarks);
+        after.mapping = TimelineMapping::fromEvent(r, v, mapping_.drift);
+        changeSync(after, tr("set the offset from an event"));
         if (both)
             showStatus(tr("Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: "
                           "check both marks; the drift was kept").arg(both->drift * 1e6, 0, 'f', 0));
         else
             showStatus(tr("Offset set; mark a second event, a second or more away, in both to set the drift too"));
     }
-    markedEvent_ = {r, v};
+}
+
+ReviewWorkspace::SyncState ReviewWorkspace::syncState() const { return {mapping_, syncMethod_, syncConfidence_, markedEvent_}; }
+
+void ReviewWorkspace::applySyncState(const SyncState& s)
+{
+    markedEvent_ = s.markedEvent;
+    setMapping(s.mapping, s.method, s.confidence);
+}
+
+void ReviewWorkspace::changeSync(const SyncState& after, const QString& text, int mergeId)
+{
+    undo_->push(new SyncCommand<SyncState>(syncState(), after, [this](const SyncState& s) { applySyncState(s); }, text, mergeId));
 }
 
 void ReviewWorkspace::setMapping(const TimelineMapping& m, SyncMethod method, std::optional<double> confidence)
@@ -799,9 +849,13 @@ void ReviewWorkspace::setMapping(const TimelineMapping& m, SyncMethod method, st
     syncMethod_ = method;
     syncConfidence_ = confidence;
     storeVideoLink();
+    // Not over what the operator is typing (the change may be theirs): the box's text would
+    // be written anew under the cursor.
     const QSignalBlocker block(offsetBox_), blockDrift(driftBox_);
-    offsetBox_->setValue(m.offset_s);
-    driftBox_->setValue(m.drift * 1e6);
+    if (std::abs(offsetBox_->value() - m.offset_s) > 1e-9)
+        offsetBox_->setValue(m.offset_s);
+    if (std::abs(driftBox_->value() - m.drift * 1e6) > 1e-6)
+        driftBox_->setValue(m.drift * 1e6);
     requested_ = -1;
     requestFrameForCursor();
     updateTrace();
@@ -1165,8 +1219,11 @@ void ReviewWorkspace::acceptSync()
         return;
     // The displacement sync measures the drift too; the speed fallback leaves it alone.
     const bool measuredDrift = pendingSync_->scale_px_per_mm != 0.0;
-    setMapping({pendingSync_->offset_s, measuredDrift ? pendingSync_->drift : mapping_.drift}, SyncMethod::Automatic,
-               pendingSync_->confidence);
+    SyncState after = syncState();
+    after.mapping = {pendingSync_->offset_s, measuredDrift ? pendingSync_->drift : mapping_.drift};
+    after.method = SyncMethod::Automatic;
+    after.confidence = pendingSync_->confidence;
+    changeSync(after, tr("accept the sync found"));
     pendingSync_.reset();
     updateSyncUi();
 }

@@ -177,6 +177,18 @@ private:
     std::optional<double> markRecording_, markVideo_;
     std::optional<std::pair<double, double>> markedEvent_;  // the last event marked in both (recording, video)
     void applyMarkedEvent();
+    // What the operator changes of the sync, undoable with the labels (Ctrl+Z): a mark on the
+    // wrong frame or a nudge too many took the offset before it away for good. Edits of one
+    // box in a row (`mergeId`, the spin boxes' typing) are one step.
+    struct SyncState {
+        TimelineMapping mapping;
+        SyncMethod method = SyncMethod::None;
+        std::optional<double> confidence;
+        std::optional<std::pair<double, double>> markedEvent;
+    };
+    SyncState syncState() const;
+    void applySyncState(const SyncState& s);
+    void changeSync(const SyncState& after, const QString& text, int mergeId = -1);
     std::optional<SyncResult> pendingSync_;
     double speed_ = 1.0;
     double playStartCursor_ = 0.0;

@@ -487,6 +487,20 @@ private slots:
         ws.markEventInVideo();
         QCOMPARE(ws.mapping().drift, before);
         QVERIFY2(ws.status().contains(QStringLiteral("no clock has")), qPrintable(ws.status()));
+
+        // Each mark is one step of Ctrl+Z, with the labels': the wrong mark took the two
+        // events' offset away for good. Undone, the offset and drift are the two events' again,
+        // and so is the event a next mark pairs with; undone to the start, offset 0.
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY2(std::abs(ws.mapping().toVideo(0.5) - 30 / fps) < 1e-6 && std::abs(ws.mapping().drift - drift) < 1e-6,
+                 qPrintable(QStringLiteral("offset %1 drift %2").arg(ws.mapping().offset_s).arg(ws.mapping().drift)));
+        QCOMPARE(ws.syncMethod(), nb::SyncMethod::EventMarks);
+        ws.undoStack()->undo();
+        ws.undoStack()->undo();
+        QCOMPARE(ws.mapping(), nb::TimelineMapping{});
+        ws.undoStack()->redo();
+        ws.undoStack()->redo();
+        QVERIFY(std::abs(ws.mapping().drift - drift) < 1e-6);
     }
 
     // A run file that carries its own sync (as the demo's and exported runs do) opens at that
