@@ -46,7 +46,7 @@ int cmdEvents(const QStringList& args, Io io)
     const QString path = parser.positionalArguments().first();
     InsertionEvents ev;
     try {
-        const RunReadResult r = readRunFile(path);
+        const RunReadResult r = readRunFile(path, {.dropTruncatedLastRow = true});
         for (const QString& w : r.warnings)
             io.err << nb::TrCli::tr("warning: %1\n").arg(w);
         if (const QString w = notAnInsertionRun(r.run, path); !w.isEmpty())

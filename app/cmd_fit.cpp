@@ -32,7 +32,7 @@ struct FileFailure {
 Run loadRun(const QString& path, Io io)
 {
     try {
-        RunReadResult r = readRunFile(path);
+        RunReadResult r = readRunFile(path, {.dropTruncatedLastRow = true});
         for (const QString& w : r.warnings)
             io.err << nb::TrCli::tr("warning: %1\n").arg(w);
         return std::move(r.run);

@@ -114,7 +114,10 @@ int cmdLabels(const QStringList& args, Io io)
         given = m;
     }
     try {
-        const Run run = readRunFile(runPath).run;
+        RunReadResult read = readRunFile(runPath, {.dropTruncatedLastRow = true});
+        for (const QString& w : read.warnings)
+            io.err << nb::TrCli::tr("warning: %1\n").arg(w);
+        const Run run = std::move(read.run);
         Labels labels = suggestLabels(run);
         QJsonObject videoReport;
         std::optional<TissueMotion> tissue;

@@ -99,7 +99,10 @@ int cmdSync(const QStringList& args, Io io)
     int videoFrames = -1;
     std::size_t runSamples = 0;
     try {
-        const Run run = readRunFile(runPath).run;
+        RunReadResult read = readRunFile(runPath, {.dropTruncatedLastRow = true});
+        for (const QString& w : read.warnings)
+            io.err << nb::TrCli::tr("warning: %1\n").arg(w);
+        const Run run = std::move(read.run);
         runSamples = run.size();
         const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
         videoFrames = index.size();

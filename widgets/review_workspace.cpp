@@ -508,7 +508,9 @@ bool ReviewWorkspace::openRun(const QString& path)
     markVideo_.reset();
     markedEvent_.reset();
     try {
-        Run run = readRunFile(path).run;
+        // A run cut off mid-row (a crash) is read up to its last whole row, saying so.
+        RunReadResult read = readRunFile(path, {.dropTruncatedLastRow = true});
+        Run run = std::move(read.run);
         resetTrack();
         Labels labels;
         const QString lp = labelsPathFor(path);
@@ -551,7 +553,8 @@ bool ReviewWorkspace::openRun(const QString& path)
         updateShading();
         setCursorTime(run_.time_s.front());
         showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size())
-                   + (keptNote.isEmpty() ? QString() : QStringLiteral("; ") + keptNote));
+                   + (keptNote.isEmpty() ? QString() : QStringLiteral("; ") + keptNote)
+                   + (read.warnings.isEmpty() ? QString() : QStringLiteral("; ") + read.warnings.join(QStringLiteral("; "))));
         restoreVideoLink();
         return true;
     } catch (const RunFileError& e) {

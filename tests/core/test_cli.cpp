@@ -195,6 +195,30 @@ private slots:
         QVERIFY(!QFileInfo::exists(fresh));
     }
     // Inputs a command was not made for are named as such, before anything is read.
+    // A run cut off mid-row (the recorder's process died) is read up to its last whole row by
+    // every command, saying so: events, fit, labels and sync refused it whole, and only the
+    // window could recover it.
+    void aRunCutOffMidRowIsReadToItsLastRow()
+    {
+        QTemporaryDir dir;
+        const QString run = dir.filePath(QStringLiteral("run_001_linear.csv"));
+        QCOMPARE(TestCli::run({"simulate", "--protocol", "stiffness", "--out", run}).code, 0);
+        QFile f(run);
+        QVERIFY(f.open(QIODevice::ReadWrite));
+        const QByteArray whole = f.readAll();
+        // Cut inside a row well after the puncture, as a crash leaves it.
+        const qsizetype cut = whole.indexOf('\n', whole.size() * 9 / 10) + 12;
+        QVERIFY(f.resize(cut));
+        f.close();
+        const nbtest::CliResult events = TestCli::run({"events", run, "--json"});
+        QVERIFY2(events.code == 0 && events.err.contains(QStringLiteral("partial last row")), qPrintable(events.err));
+        QVERIFY(events.out.contains("puncture"));
+        const nbtest::CliResult fit = TestCli::run({"fit", "stiffness", run});
+        QVERIFY2(fit.code == 0 && fit.err.contains(QStringLiteral("partial last row")), qPrintable(fit.err));
+        const nbtest::CliResult labels = TestCli::run({"labels", "suggest", run});
+        QVERIFY2(labels.code == 0 && labels.err.contains(QStringLiteral("partial last row")), qPrintable(labels.err));
+    }
+
     void misdirectedInputsAreNamed()
     {
         QTemporaryDir dir;
