@@ -536,6 +536,8 @@ EngineStatus AcquisitionEngine::snapshot() const
     st.runTime_s = s.runOpen ? s.proc->lastTime_s() - s.runStart : 0.0;
     st.forceLimit_N = s.proc->insertionLimit();
     st.withdrawForceLimit_N = s.proc->withdrawalLimit();
+    st.forceMargin_N = s.proc->margin_N(last.force_N);
+    st.forceMarginOf_N = s.proc->guard() == ForceGuard::Withdrawal ? s.proc->withdrawalLimit() : s.proc->insertionLimit();
     st.loaded = s.proc->biased() && s.proc->slope() > 0 && std::fabs(last.force_N) > s.noiseBand_N;
     st.contactDepth_mm = s.contactDepth_mm;
     st.lastRunStart_mm = s.lastRunStart_mm;

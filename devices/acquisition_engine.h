@@ -69,6 +69,8 @@ struct EngineStatus {
     double runTime_s = 0.0;
     double forceLimit_N = 0.0;
     double withdrawForceLimit_N = 0.0;
+    double forceMargin_N = 0.0;       // left before the limit in force now stops the stage
+    double forceMarginOf_N = 0.0;     // that limit
     std::optional<double> contactDepth_mm;  // where the last insertion met tissue, since the last zero
     std::optional<double> lastRunStart_mm;  // where the last run began: "withdraw to the start"
     double bias_V = 0.0, slope_V_per_g = 0.0;

@@ -59,6 +59,17 @@ double SampleProcessor::positionAt(double t, const StageState& stage) const
     return stage.position_mm;
 }
 
+double SampleProcessor::margin_N(double force_N) const
+{
+    switch (guard_) {
+    case ForceGuard::Insertion: return insertLimit_ - force_N;
+    case ForceGuard::Withdrawal: return withdrawLimit_ - std::fabs(force_N);
+    case ForceGuard::Both:
+    case ForceGuard::Off: break;
+    }
+    return insertLimit_ - std::fabs(force_N);
+}
+
 bool SampleProcessor::overLimit(double force_N, double* limit) const
 {
     switch (guard_) {

@@ -68,6 +68,11 @@ public:
     double withdrawalLimit() const { return withdrawLimit_; }
     void setGuard(ForceGuard guard) { guard_ = guard; }
     ForceGuard guard() const { return guard_; }
+    // The force left before the guard now in force stops the stage: the insertion limit less F
+    // while going in, the limit less |F| otherwise; with no guard (at rest, not recording) the
+    // insertion limit less |F|, the next move's. A pull on the needle read as more margin than
+    // the limit itself ("11 N (100 %)" against 8 N).
+    double margin_N(double force_N) const;
     // After a trip the limit stays quiet until re-armed (the stop itself is over the limit).
     bool tripped() const { return tripped_; }
     void rearm() { tripped_ = false; }

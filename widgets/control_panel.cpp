@@ -524,11 +524,12 @@ void ControlPanel::updateControls()
     set("dropped", tr("%1 (overruns %2)").arg(s.dropped).arg(s.overruns), s.dropped + s.overruns > 0);
     set("force", tr("%1 N").arg(num(s.force_N, 3)));
     set("position", tr("%1 mm").arg(num(s.position_mm, 3)));
-    const double margin = state_.forceLimit_N - s.force_N;
+    // Against the limit the engine applies now (the withdrawal one while the needle comes out).
+    const double limit = s.running ? s.forceMarginOf_N : state_.forceLimit_N;
+    const double margin = s.running ? s.forceMargin_N : state_.forceLimit_N - std::abs(s.force_N);
     set("margin",
-        state_.forceLimit_N > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(std::min(100.0, 100.0 * margin / state_.forceLimit_N), 0))
-                                : tr("no limit set"),
-        state_.forceLimit_N <= 0 || margin < 0.2 * state_.forceLimit_N || s.forceLimitTripped);
+        limit > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(std::clamp(100.0 * margin / limit, 0.0, 100.0), 0)) : tr("no limit set"),
+        limit <= 0 || margin < 0.2 * limit || s.forceLimitTripped);
     set("calibration", s.calibrationName.isEmpty() ? tr("none") : calibrationDisplayName(s.calibrationName),
         s.calibrationName.isEmpty());
     updateSafetyControls();

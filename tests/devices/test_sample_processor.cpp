@@ -152,6 +152,23 @@ private slots:
         QVERIFY(push(q, batch(next, 20, [](double) { return 5.0; }), {}).events.empty());
     }
 
+    // The margin the panel shows is against the guard in force: a pull on the needle (negative
+    // force) read as more margin than the limit itself while a sine or a withdrawal runs.
+    void marginIsAgainstTheGuardInForce()
+    {
+        SampleProcessor p(kRate, false);
+        p.setLimits(8.0, 9.5);
+        p.setGuard(ForceGuard::Insertion);
+        QCOMPARE(p.margin_N(3.0), 5.0);
+        QCOMPARE(p.margin_N(-3.0), 11.0);  // going in, a pull is far from the push limit
+        p.setGuard(ForceGuard::Both);
+        QCOMPARE(p.margin_N(-3.0), 5.0);
+        p.setGuard(ForceGuard::Withdrawal);
+        QCOMPARE(p.margin_N(-3.0), 6.5);
+        p.setGuard(ForceGuard::Off);
+        QCOMPARE(p.margin_N(-3.0), 5.0);  // the next move's
+    }
+
     void withdrawalLimitIsNeverBelowTheInsertionLimit()
     {
         SampleProcessor p(kRate, false);

@@ -205,6 +205,8 @@ private slots:
 
         s.recording = s.moving = true;
         s.force_N = 4.5;
+        s.forceMargin_N = 0.5;  // the engine's, against the limit in force
+        s.forceMarginOf_N = 5.0;
         panel.setStatus(s);
         QVERIFY(!startButton->isEnabled());
         QVERIFY(panel.button(Control::StopMotion)->isEnabled());
