@@ -13,6 +13,7 @@
 #include "core/export/run_csv_export.h"
 #include "core/export/session_hdf5.h"
 #include "core/export/stale_parts.h"
+#include "video/frame_index_store.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -109,9 +110,10 @@ int cmdExport(const QStringList& args, Io io)
         io.err << "needlebench export: " << e.message() << '\n';
         return Failure;
     }
+    Dataset& d = loaded.dataset;
+    addVideoFrameTimes(d, video::frameTimesOf, &loaded.warnings);
     for (const QString& w : loaded.warnings)
         io.err << nb::TrCli::tr("warning: %1").arg(w) << '\n';
-    Dataset& d = loaded.dataset;
     if (d.runs.empty()) {
         io.err << "needlebench export: " << nb::TrCli::tr("%1: no run files (*.csv with time_s,position_mm,force_N)").arg(dir) << '\n';
         return Failure;

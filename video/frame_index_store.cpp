@@ -151,4 +151,19 @@ FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progr
     return index;
 }
 
+std::vector<double> frameTimesOf(const QString& videoPath, QString* problem)
+{
+    try {
+        const FrameIndex index = loadOrBuildFrameIndex(videoPath);
+        std::vector<double> times;
+        times.reserve(index.frames.size());
+        for (const FrameInfo& f : index.frames)
+            times.push_back(f.time_s);
+        return times;
+    } catch (const VideoError& e) {
+        *problem = e.message();
+        return {};
+    }
+}
+
 }  // namespace nb::video

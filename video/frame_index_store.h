@@ -8,6 +8,7 @@
 #include "video/frame_index.h"
 
 #include <optional>
+#include <vector>
 
 namespace nb::video {
 
@@ -25,5 +26,9 @@ bool storeFrameIndex(const FrameIndex& index, const QString& storeDir);
 FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progress = {},
                                  const std::atomic_bool* cancel = nullptr, bool* fromStore = nullptr,
                                  const QString& storeDir = {});
+
+// Each frame's time (video time), from the stored or built index: what exports number frames
+// by. Empty, with the reason in `problem`, when the video cannot be read.
+std::vector<double> frameTimesOf(const QString& videoPath, QString* problem);
 
 }  // namespace nb::video

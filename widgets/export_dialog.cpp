@@ -13,6 +13,7 @@
 #include "core/export/run_csv_export.h"
 #include "core/export/session_hdf5.h"
 #include "core/run_video_link.h"
+#include "video/frame_index_store.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
@@ -238,7 +239,8 @@ ExportDialog::Outcome ExportDialog::run(const Choice& c, const QString& target, 
         }, Qt::QueuedConnection);
     };
     try {
-        const LoadedDataset loaded = loadDataset(sessionDir_);
+        LoadedDataset loaded = loadDataset(sessionDir_);
+        addVideoFrameTimes(loaded.dataset, video::frameTimesOf, &loaded.warnings);
         out.warnings = loaded.warnings;
         const Dataset& d = loaded.dataset;
         if (d.runs.empty()) {

@@ -150,6 +150,14 @@ double syncOffset(const Run& run)
     return 0.0;
 }
 
+double syncDrift(const Run& run)
+{
+    bool ok = false;
+    const auto v = run.meta(QStringLiteral("sync_drift"));
+    const double d = v ? v->trimmed().toDouble(&ok) : 0.0;
+    return ok && std::isfinite(d) && std::abs(d) < 0.1 ? d : 0.0;  // a larger one is no clock's
+}
+
 double videoFps(const Run& run)
 {
     for (const char* key : {"video_fps", "fps"}) {
@@ -160,6 +168,20 @@ double videoFps(const Run& run)
             return d;
     }
     return kDefaultVideoFps;
+}
+
+void addVideoFrameTimes(Dataset& d, const std::function<std::vector<double>(const QString&, QString*)>& frameTimesOf,
+                        QStringList* warnings)
+{
+    for (DatasetRun& r : d.runs) {
+        if (r.videoPath.isEmpty())
+            continue;
+        QString problem;
+        r.videoFrameTimes_s = frameTimesOf(r.videoPath, &problem);
+        if (r.videoFrameTimes_s.empty())
+            *warnings << nb::TrCore::tr("%1: frames numbered from the run's frame rate, the video could not be indexed (%2)")
+                             .arg(r.videoPath, problem.isEmpty() ? nb::TrCore::tr("no frames") : problem);
+    }
 }
 
 }  // namespace nb

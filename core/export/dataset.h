@@ -7,6 +7,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <vector>
 
 namespace nb {
@@ -18,6 +19,9 @@ struct DatasetRun {
     Labels labels;
     // The run's video (absolute), empty when it has none: frames are given only with one.
     QString videoPath;
+    // Its frames' times (video time, from its index) when it was indexed: exported frame
+    // numbers follow dropped and repeated frames and end with the video. Empty: its frame rate.
+    std::vector<double> videoFrameTimes_s;
 };
 
 struct Dataset {
@@ -78,6 +82,13 @@ constexpr double kDefaultVideoFps = 29.97;
 // Video time minus run time [s]: read from the run's metadata (`sync_offset_s`, or
 // `video_offset_s`), 0 when absent.
 double syncOffset(const Run& run);
+// The video clock's rate error the sync found (sync_drift), 0 when unsaid.
+double syncDrift(const Run& run);
 double videoFps(const Run& run);
+
+// Gives each run with a video its frames' times, from `frameTimesOf` (video/'s index, which
+// core does not reach); a video that cannot be read keeps its frame rate, with a warning.
+void addVideoFrameTimes(Dataset& d, const std::function<std::vector<double>(const QString&, QString*)>& frameTimesOf,
+                        QStringList* warnings);
 
 }  // namespace nb

@@ -7,18 +7,36 @@
 #include <QCoreApplication>
 #include <QSaveFile>
 #include <algorithm>
+#include <cmath>
 
 namespace nb {
 
 long long FrameClock::frameAt(double t_s) const
 {
+    const double video_s = (1.0 + drift) * t_s + offset_s;
     if (!frameTimes_s.empty()) {
-        // The frame on screen at t is the last one shown at or before t.
-        const auto it = std::upper_bound(frameTimes_s.begin(), frameTimes_s.end(), t_s);
-        return it == frameTimes_s.begin() ? 0 : (it - frameTimes_s.begin()) - 1;
+        // The frame on screen at t is the last one shown at or before t (to rounding, as the
+        // window's index finds it); the last one is shown for a median frame's time.
+        const auto it = std::upper_bound(frameTimes_s.begin(), frameTimes_s.end(), video_s + 1e-9);
+        if (it == frameTimes_s.begin() || !std::isfinite(video_s))
+            return -1;
+        const auto k = (it - frameTimes_s.begin()) - 1;
+        if (it == frameTimes_s.end()) {
+            std::vector<double> steps;
+            for (std::size_t i = 1; i < frameTimes_s.size(); ++i)
+                steps.push_back(frameTimes_s[i] - frameTimes_s[i - 1]);
+            double step = 1.0 / fps;
+            if (!steps.empty()) {
+                std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
+                step = steps[steps.size() / 2];
+            }
+            if (video_s >= frameTimes_s.back() + step - 1e-9)
+                return -1;
+        }
+        return k;
     }
     // A small epsilon keeps a time exactly on a frame boundary in that frame despite rounding.
-    const double frame = std::floor((t_s + offset_s) * fps + 1e-9);
+    const double frame = std::floor(video_s * fps + 1e-9);
     // No frame for a time before the video or beyond any video (not a wrapped-around integer).
     if (!std::isfinite(frame) || frame < 0.0 || frame > 1e12)
         return -1;
@@ -30,6 +48,7 @@ FrameClock frameClockFor(const Run& run)
     FrameClock c;
     c.fps = videoFps(run);
     c.offset_s = syncOffset(run);
+    c.drift = syncDrift(run);
     c.hasVideo = false;
     for (const char* key : {"video", "video_file", "video_path", "sync_offset_s", "video_offset_s", "video_fps"})
         if (run.meta(QString::fromLatin1(key)))
@@ -42,6 +61,8 @@ FrameClock frameClockFor(const DatasetRun& r)
     FrameClock c = frameClockFor(r.run);
     if (!r.sourcePath.isEmpty())
         c.hasVideo = !r.videoPath.isEmpty();
+    if (c.hasVideo)
+        c.frameTimes_s = r.videoFrameTimes_s;
     return c;
 }
 

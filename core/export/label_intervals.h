@@ -34,15 +34,20 @@ struct LabelInterval {
 struct FrameClock {
     double fps = 29.97;
     double offset_s = 0.0;
-    std::vector<double> frameTimes_s;  // when not empty, wins over fps/offset
-    bool hasVideo = true;              // false: no frames are given
+    double drift = 0.0;  // video time = (1 + drift) · recording time + offset (core/sync.h)
+    // The video's own frame times (its index, video time), when known: they win over `fps`
+    // (dropped and repeated frames), and the video ends one frame after the last.
+    std::vector<double> frameTimes_s;
+    bool hasVideo = true;  // false: no frames are given
 
+    // The frame on screen at recording time t; -1 before the video or after its end.
     long long frameAt(double t_s) const;
 };
 
-// The clock a run's metadata describes (sync offset, frame rate; 29.97 fps when unsaid);
-// without a video it has hasVideo false. From a Run: a video is assumed when its metadata
-// names one or a sync offset; from a DatasetRun: when a video file was found.
+// The clock a run's metadata describes (sync offset and drift, frame rate; 29.97 fps when
+// unsaid); without a video it has hasVideo false. From a Run: a video is assumed when its
+// metadata names one or a sync offset; from a DatasetRun: when a video file was found, with its
+// frame times when it was indexed.
 FrameClock frameClockFor(const Run& run);
 struct DatasetRun;
 FrameClock frameClockFor(const DatasetRun& run);

@@ -219,6 +219,40 @@ private slots:
         QVERIFY2(labels.code == 0 && labels.err.contains(QStringLiteral("partial last row")), qPrintable(labels.err));
     }
 
+    // Exported frame numbers come from the video's own index: a label past the end of a video
+    // cut short names no frame (it named frame 53 of a 30-frame video).
+    void exportedFramesEndWithTheVideo()
+    {
+        QTemporaryDir dir;
+        const QString full = dir.filePath(QStringLiteral("full.csv")), fullVideo = dir.filePath(QStringLiteral("full.avi"));
+        QCOMPARE(TestCli::run({"simulate", "--protocol", "friction", "--cycles", "2", "--frequency-hz", "1", "--out", full, "--video", fullVideo}).code, 0);
+        const QString session = dir.filePath(QStringLiteral("cut"));
+        QVERIFY(QDir().mkpath(session));
+        QVERIFY(QFile::copy(full, QDir(session).filePath(QStringLiteral("run.csv"))));
+        QProcess ffmpeg;
+        ffmpeg.start(QStringLiteral("ffmpeg"), {QStringLiteral("-loglevel"), QStringLiteral("error"), QStringLiteral("-i"), fullVideo,
+                                                QStringLiteral("-frames:v"), QStringLiteral("30"), QStringLiteral("-c"), QStringLiteral("copy"),
+                                                QDir(session).filePath(QStringLiteral("run.avi"))});
+        QVERIFY2(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0, "ffmpeg (Debian: ffmpeg) cuts the video");
+        {
+            QFile labels(QDir(session).filePath(QStringLiteral("run.labels.csv")));
+            QVERIFY(labels.open(QIODevice::WriteOnly));
+            labels.write("track,label,start_s,end_s,comment\nphases,a,0.2,0.5,\nphases,b1,0.9,1.8,\n");
+        }
+        const QString out = dir.filePath(QStringLiteral("out"));
+        const nbtest::CliResult r = TestCli::run({"export", session, "--format", "csv", "--out", out});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QFile intervals(QDir(out).filePath(QStringLiteral("run.intervals.csv")));
+        QVERIFY(intervals.open(QIODevice::ReadOnly));
+        const QList<QByteArray> rows = intervals.readAll().trimmed().split('\n');
+        QCOMPARE(rows.size(), 3);
+        const QList<QByteArray> a = rows[1].split(','), b1 = rows[2].split(',');
+        QCOMPARE(a[5].toInt(), 5);    // 0.2 s at 29.97 frames/s
+        QCOMPARE(a[6].toInt(), 14);   // 0.5 s
+        QCOMPARE(b1[5].toInt(), 26);  // 0.9 s
+        QVERIFY2(b1[6].isEmpty(), rows[2].constData());  // 1.8 s: after the 30th frame (1.0 s)
+    }
+
     void misdirectedInputsAreNamed()
     {
         QTemporaryDir dir;

@@ -278,12 +278,23 @@ private slots:
         QCOMPARE(rows[2].duration_s, 0.0);
         QVERIFY(std::abs(rows[2].peak_force_N - 1.498) < 1e-9);
 
-        // A video index wins over the frame rate.
+        // A video index wins over the frame rate, and the video ends with it: a frame number
+        // past a truncated video's last frame named a frame it does not have.
         FrameClock indexed;
         indexed.frameTimes_s = {0.0, 0.1, 0.25, 0.5, 0.7};
         QCOMPARE(indexed.frameAt(0.2), 1LL);
         QCOMPARE(indexed.frameAt(0.25), 2LL);
-        QCOMPARE(indexed.frameAt(9.0), 4LL);
+        QCOMPARE(indexed.frameAt(0.8), 4LL);   // the last is shown for a median frame's time (0.175 s)
+        QCOMPARE(indexed.frameAt(9.0), -1LL);
+        QCOMPARE(indexed.frameAt(-0.1), -1LL);
+        // With the sync's offset and drift (video = 1.001 · t + 0.5): t = 0.2 is video 0.7002.
+        indexed.offset_s = 0.5;
+        indexed.drift = 1e-3;
+        QCOMPARE(indexed.frameAt(0.2), 4LL);
+        QCOMPARE(indexed.frameAt(-0.45), 0LL);
+        FrameClock drifting;
+        drifting.drift = 1e-3;
+        QCOMPARE(drifting.frameAt(100.0), (long long)std::floor(100.1 * 29.97));
 
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("labels.csv"));
