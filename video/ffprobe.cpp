@@ -1,5 +1,6 @@
 #include "ffprobe.h"
 
+#include <QFileInfo>
 #include <QProcess>
 #include <QStandardPaths>
 
@@ -23,5 +24,7 @@ std::optional<QByteArray> runFfprobe(const QStringList& args, int timeout_ms)
         return std::nullopt;
     return p.readAllStandardOutput();
 }
+
+QString ffprobeInput(const QString& path) { return QStringLiteral("file:") + QFileInfo(path).absoluteFilePath(); }
 
 }  // namespace nb::video

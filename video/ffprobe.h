@@ -10,4 +10,8 @@ namespace nb::video {
 
 std::optional<QByteArray> runFfprobe(const QStringList& args, int timeout_ms = 300000);
 
+// `path` as ffprobe's input, never read as an option or a protocol: a video named "-x.avi"
+// was taken for an option, and its index lost its codec and keyframes.
+QString ffprobeInput(const QString& path);
+
 }  // namespace nb::video

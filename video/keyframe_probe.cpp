@@ -8,7 +8,7 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
     const auto stream = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
                                        QStringLiteral("v:0"), QStringLiteral("-show_entries"),
                                        QStringLiteral("stream=codec_name,start_time"), QStringLiteral("-of"),
-                                       QStringLiteral("default=noprint_wrappers=1"), path});
+                                       QStringLiteral("default=noprint_wrappers=1"), ffprobeInput(path)});
     if (!stream)
         return std::nullopt;
     ProbeResult r;
@@ -26,7 +26,7 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
     const auto packets = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
                                         QStringLiteral("v:0"), QStringLiteral("-show_entries"),
                                         QStringLiteral("packet=pts_time,flags"), QStringLiteral("-of"),
-                                        QStringLiteral("csv=p=0"), path});
+                                        QStringLiteral("csv=p=0"), ffprobeInput(path)});
     if (!packets)
         return std::nullopt;
     for (const QByteArray& line : packets->split('\n')) {

@@ -37,7 +37,7 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
     const auto stream = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
                                QStringLiteral("-show_entries"),
                                QStringLiteral("stream=codec_name,width,height,avg_frame_rate,r_frame_rate,start_time"),
-                               QStringLiteral("-of"), QStringLiteral("default=noprint_wrappers=1"), path});
+                               QStringLiteral("-of"), QStringLiteral("default=noprint_wrappers=1"), ffprobeInput(path)});
     if (!stream)
         return std::nullopt;
     FrameIndex index;
@@ -66,7 +66,7 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
         return std::nullopt;
     const auto packets = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
                                 QStringLiteral("-show_entries"), QStringLiteral("packet=pts_time,flags"), QStringLiteral("-of"),
-                                QStringLiteral("csv=p=0"), path});
+                                QStringLiteral("csv=p=0"), ffprobeInput(path)});
     if (!packets)
         return std::nullopt;
     struct Packet {

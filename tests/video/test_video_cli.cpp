@@ -52,6 +52,18 @@ private slots:
         QCOMPARE(o["duplicate_frames"].toInt(), 10);  // frames 8, 17, ..., 89
         QCOMPARE(o["codec"].toString(), QStringLiteral("h264"));
         QVERIFY(std::abs(o["duration_s"].toDouble() - 100 / 30.0) < 0.002);
+
+        // A video named with a leading dash (given after --) is indexed as any other: ffprobe
+        // took the name for an option, and the index went without its codec.
+        QVERIFY(QFile::copy(vfr_, dir_.filePath(QStringLiteral("-dash.mp4"))));
+        const QString cwd = QDir::currentPath();
+        QVERIFY(QDir::setCurrent(dir_.path()));
+        const nbtest::CliResult dash = run({"video-info", "--json", "--", "-dash.mp4"});
+        QDir::setCurrent(cwd);
+        QVERIFY2(dash.code == 0, qPrintable(dash.err));
+        QCOMPARE(dash.json()["codec"].toString(), QStringLiteral("h264"));
+        QCOMPARE(dash.json()["frames"].toInt(), 90);
+        QCOMPARE(dash.json()["variable_frame_rate"].toBool(), true);
     }
 
     void frameWritesTheExactFrame()
