@@ -435,12 +435,12 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+431"/>
+        <location line="+432"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="-449"/>
+        <location line="-450"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -475,12 +475,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>3. Lauf</translation>
     </message>
     <message>
-        <location line="+429"/>
+        <location line="+430"/>
         <source>To start (%1 mm)</source>
         <translation>Zum Start (%1 mm)</translation>
     </message>
     <message>
-        <location line="-517"/>
+        <location line="-518"/>
         <location line="+408"/>
         <source>&amp;Enable stage</source>
         <translation>Achse &amp;einschalten</translation>
@@ -633,13 +633,13 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+109"/>
+        <location line="+110"/>
         <location line="+9"/>
         <source>Not now: %1</source>
         <translation>Jetzt nicht: %1</translation>
     </message>
     <message>
-        <location line="-111"/>
+        <location line="-112"/>
         <source>Disable stage</source>
         <translation>Achse ausschalten</translation>
     </message>
@@ -702,18 +702,18 @@ oder ohne Kontakt einbeziehen</translation>
     <message>
         <location line="-239"/>
         <location line="+240"/>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="-283"/>
-        <location line="+242"/>
+        <location line="-284"/>
+        <location line="+244"/>
         <source>%1 N (%2 %)</source>
         <translation>%1 N (%2 %)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>no limit set</source>
         <translation>keine Grenze gesetzt</translation>
     </message>
@@ -739,7 +739,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt zurücksetzen (Achse einschalten)</translation>
     </message>
     <message>
-        <location line="-250"/>
+        <location line="-251"/>
         <source>Jog (never recorded)</source>
         <translation>Tippbetrieb (nie aufgezeichnet)</translation>
     </message>
@@ -761,12 +761,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+382"/>
+        <location line="+383"/>
         <source>To start</source>
         <translation>Zum Start</translation>
     </message>
     <message>
-        <location line="-360"/>
+        <location line="-361"/>
         <source>Sampling</source>
         <translation>Abtastung</translation>
     </message>
@@ -822,7 +822,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>AUFZEICHNUNG %1, %2 s</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Step of one jog</source>
         <translation>Weg eines Tippschritts</translation>
     </message>
@@ -1015,7 +1015,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+51"/>
+        <location filename="../widgets/export_dialog.cpp" line="+54"/>
         <source>Export session</source>
         <translation>Sitzung exportieren</translation>
     </message>
@@ -1074,8 +1074,39 @@ oder ohne Kontakt einbeziehen</translation>
         <source>Choose a folder to export into.</source>
         <translation>Einen Zielordner für den Export wählen.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+30"/>
+        <source>%1 already holds an earlier export: %n file(s) will be replaced.</source>
+        <translation>
+            <numerusform>%1 enthält bereits einen früheren Export: %n Datei wird ersetzt.</numerusform>
+            <numerusform>%1 enthält bereits einen früheren Export: %n Dateien werden ersetzt.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n file(s) in %1 are not an earlier export&apos;s (a recorded run, a table made by hand?) and would be replaced and lost.</source>
+        <translation>
+            <numerusform>%n Datei in %1 stammt nicht aus einem früheren Export (eine aufgezeichnete Messung, eine von Hand erstellte Tabelle?) und würde ersetzt und ginge verloren.</numerusform>
+            <numerusform>%n Dateien in %1 stammen nicht aus einem früheren Export (aufgezeichnete Messungen, von Hand erstellte Tabellen?) und würden ersetzt und gingen verloren.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
+        <source>Choose another folder unless you are sure.</source>
+        <translation>Wählen Sie einen anderen Ordner, wenn Sie nicht sicher sind.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace</source>
+        <translation>Ersetzen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Not exported: the files in %1 are kept.</source>
+        <translation>Nicht exportiert: die Dateien in %1 bleiben erhalten.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: der Ordner kann nicht angelegt werden</translation>
     </message>
@@ -1090,7 +1121,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>%1: no runs to export</source>
         <translation>%1: keine Läufe zum Exportieren</translation>
     </message>
@@ -1692,7 +1723,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+62"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation>Nichts bewegt sich oder zeichnet jetzt auf. Beenden?</translation>
     </message>
@@ -1726,14 +1757,14 @@ Die zuvor geschriebenen Zeilen bleiben in der Datei. Vor dem nächsten Lauf Plat
         <translation>Die Messung konnte zum Markieren ihrer Ereignisse nicht gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+74"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation>%1
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-736"/>
+        <location line="-737"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
@@ -1743,7 +1774,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
     <message numerus="yes">
-        <location line="+14"/>
+        <location line="+13"/>
         <source>%1
 %n plot frame(s) drawn</source>
         <translation>
@@ -1754,7 +1785,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+121"/>
         <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
         <translation>Die Nadel steckt noch im Gewebe. Zuerst zurückziehen (Zum Start) oder beenden und sie dort lassen?</translation>
     </message>
@@ -1769,7 +1800,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-539"/>
+        <location line="-540"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2212,7 +2243,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+50"/>
+        <location filename="../widgets/review_workspace.cpp" line="+81"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2288,12 +2319,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+914"/>
+        <location line="+940"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-911"/>
+        <location line="-937"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2319,12 +2350,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+495"/>
+        <location line="+499"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-495"/>
+        <location line="-499"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2380,7 +2411,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Videozeit = Aufzeichnungszeit + Versatz</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+7"/>
+        <source>set the video offset</source>
+        <translation>Video-Versatz setzen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source> ppm</source>
         <translation> ppm</translation>
     </message>
@@ -2390,7 +2426,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Taktdrift des Videos gegenüber der Kraftaufzeichnung (Video läuft schneller: positiv)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>set the drift</source>
+        <translation>Drift setzen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>drift</source>
         <translation>Drift</translation>
     </message>
@@ -2401,17 +2442,23 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+0"/>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>nudge the offset by one frame</source>
         <translation>den Versatz um ein Bild verschieben</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-2"/>
+        <location line="+7"/>
+        <source>nudge the offset by a frame</source>
+        <translation>Versatz um ein Bild verschieben</translation>
+    </message>
+    <message>
+        <location line="-5"/>
         <source>+1 frame</source>
         <translation>+1 Bild</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Mark event in force</source>
         <translation>Ereignis in der Kraft markieren</translation>
     </message>
@@ -2432,12 +2479,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+708"/>
+        <location line="+733"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-537"/>
+        <location line="-560"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2452,7 +2499,17 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+425"/>
+        <location line="+281"/>
+        <source>set the offset and drift from two events</source>
+        <translation>Versatz und Drift aus zwei Ereignissen setzen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>set the offset from an event</source>
+        <translation>Versatz aus einem Ereignis setzen</translation>
+    </message>
+    <message>
+        <location line="+161"/>
         <source>They are kept in %1, and saved beside the run when it is opened again and its folder can be written.</source>
         <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
     </message>
@@ -2477,7 +2534,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
-        <location line="-697"/>
+        <location line="+130"/>
+        <source>accept the sync found</source>
+        <translation>gefundene Synchronisation übernehmen</translation>
+    </message>
+    <message>
+        <location line="-852"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2487,7 +2549,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
     <message>
-        <location line="+180"/>
+        <location line="+183"/>
         <source>No run open: double-click one in the session list</source>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
@@ -2536,7 +2598,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+173"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation>%1 auf %2 bei %3 s geschlossen</translation>
     </message>
@@ -2631,7 +2693,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-795"/>
+        <location line="-820"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2696,12 +2758,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -2726,12 +2788,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Ereignis im Video bei %1 s markiert; nun in der Kraftaufzeichnung markieren</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+21"/>
         <source>Offset and drift set from two events (%1 s apart): drift %2 ppm</source>
         <translation>Versatz und Drift aus zwei Ereignissen gesetzt (%1 s auseinander): Drift %2 ppm</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: check both marks; the drift was kept</source>
         <translation>Versatz gesetzt. Mit dem vorigen Ereignis ergäbe sich eine Drift von %1 ppm, die keine Uhr hat: bitte beide Markierungen prüfen; die Drift wurde beibehalten</translation>
     </message>
@@ -2741,7 +2803,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Versatz gesetzt; ein zweites Ereignis, mindestens eine Sekunde entfernt, in beiden markieren, um auch die Drift zu setzen</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+74"/>
         <source>%1 overlaps another phase on %2: not added</source>
         <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
     </message>
@@ -3163,6 +3225,8 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+9"/>
         <location filename="../app/cmd_fit.cpp" line="-231"/>
+        <location filename="../app/cmd_labels.cpp" line="+119"/>
+        <location filename="../app/cmd_sync.cpp" line="+65"/>
         <source>warning: %1
 </source>
         <translation>Warnung: %1
@@ -3210,7 +3274,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+43"/>
+        <location filename="../app/cmd_export.cpp" line="+45"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation>Warnung: %1: das Video konnte nicht neben den Export kopiert werden; es wird an seinem Ort verknüpft</translation>
     </message>
@@ -3241,7 +3305,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>das Video jedes Laufs neben den Export legen (harter Link, sonst Kopie) und dorthin verweisen, damit der Exportordner allein verschoben oder weitergegeben werden kann</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
+        <source>replace files in OUT that are not an earlier export&apos;s (a run file, a table made by hand); an earlier export&apos;s files are replaced without it</source>
+        <translation>Dateien in OUT ersetzen, die nicht aus einem früheren Export stammen (eine Messdatei, eine von Hand erstellte Tabelle); Dateien eines früheren Exports werden auch ohne diese Option ersetzt</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>--format is required (csv|hdf5|eaf)</source>
         <translation>--format ist erforderlich (csv|hdf5|eaf)</translation>
     </message>
@@ -3369,7 +3438,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     <message>
         <location line="+15"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="+13"/>
+        <location filename="../app/cmd_export.cpp" line="+15"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -3454,12 +3523,28 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>  Reibung gesamt: Cp = %1 N/m, Cn = %2 N/m, bp = %3 N s/m², bn = %4 N s/m²</translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+3"/>
+        <location filename="../app/cmd_export.cpp" line="+2"/>
         <source>%1: no run files (*.csv with time_s,position_mm,force_N)</source>
         <translation>%1: keine Laufdateien (*.csv mit time_s,position_mm,force_N)</translation>
     </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>%n file(s) in %1 would be replaced that are not an earlier export&apos;s (%2); they are kept. Name another folder, or give --overwrite.</source>
+        <translation>
+            <numerusform>%n Datei in %1, die nicht aus einem früheren Export stammt, würde ersetzt (%2); sie bleibt erhalten. Geben Sie einen anderen Ordner an oder --overwrite.</numerusform>
+            <numerusform>%n Dateien in %1, die nicht aus einem früheren Export stammen, würden ersetzt (%2); sie bleiben erhalten. Geben Sie einen anderen Ordner an oder --overwrite.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>note: replacing %n file(s) of an earlier export in %1</source>
+        <translation>
+            <numerusform>Hinweis: %n Datei eines früheren Exports in %1 wird ersetzt</numerusform>
+            <numerusform>Hinweis: %n Dateien eines früheren Exports in %1 werden ersetzt</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation>Warnung: %1 entfernt, von einem nicht beendeten Export zurückgelassen</translation>
     </message>
@@ -3819,7 +3904,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+36"/>
+        <location filename="../app/cmd_labels.cpp" line="-83"/>
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation>Labels eines Laufs. Aktionen: suggest (Phasen oder Ereignisse aus den Daten).</translation>
     </message>
@@ -3830,7 +3915,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_sync.cpp" line="-9"/>
+        <location filename="../app/cmd_sync.cpp" line="-74"/>
         <source>the run file</source>
         <translation>die Laufdatei</translation>
     </message>
@@ -3892,7 +3977,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>needlebench labels: the run&apos;s video %1 is missing; looking beside the run
 </source>
         <translation>needlebench labels: das Video des Laufs, %1, fehlt; es wird neben dem Lauf gesucht
@@ -3920,7 +4005,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-139"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
@@ -3930,7 +4015,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>eine vorhandene Label-Datei ersetzen (sie kann von Hand gesetzte Labels enthalten) und --tissue-trace eine Datei ersetzen lassen, die kein Verlauf ist</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+133"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
@@ -4521,7 +4606,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
 </translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>needlebench sync: %1: the picture is %2x%3 px, too small to show a needle (%4 px a side at least)
 </source>
         <translation>needlebench sync: %1: das Bild hat %2x%3 px, zu klein, um eine Nadel zu zeigen (mindestens %4 px je Seite)
@@ -5052,6 +5137,16 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <location line="+7"/>
         <source>the sensor&apos;s sample counter (a gap is a lost sample)</source>
         <translation>Messwertzähler des Sensors (eine Lücke ist ein verlorener Messwert)</translation>
+    </message>
+    <message>
+        <location line="+144"/>
+        <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
+        <translation>%1: Bilder nach der Bildrate der Messung nummeriert, das Video ließ sich nicht indizieren (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no frames</source>
+        <translation>keine Bilder</translation>
     </message>
     <message>
         <location filename="../core/export/dataset_loader.cpp" line="+28"/>
@@ -7739,7 +7834,7 @@ F = %1 x + %2 x²
         <translation>Bewegung gestoppt</translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+145"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation>Lauf beendet (%1): %2 Messwerte, %3 verloren, %4</translation>
     </message>
@@ -7785,7 +7880,7 @@ F = %1 x + %2 x²
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-436"/>
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -7850,7 +7945,7 @@ F = %1 x + %2 x²
         <translation>Not-Halt: die Achse bleibt aus, bis Sie sie wieder einschalten</translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+161"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation>Kraftgrenze: %1 N &gt; %2 N bei %3 mm; Achse angehalten</translation>
     </message>

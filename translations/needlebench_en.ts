@@ -434,12 +434,12 @@ or without contact</source>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+431"/>
+        <location line="+432"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-449"/>
+        <location line="-450"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -474,12 +474,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+429"/>
+        <location line="+430"/>
         <source>To start (%1 mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-517"/>
+        <location line="-518"/>
         <location line="+408"/>
         <source>&amp;Enable stage</source>
         <translation type="unfinished"></translation>
@@ -632,13 +632,13 @@ or without contact</source>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+109"/>
+        <location line="+110"/>
         <location line="+9"/>
         <source>Not now: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-111"/>
+        <location line="-112"/>
         <source>Disable stage</source>
         <translation type="unfinished"></translation>
     </message>
@@ -701,18 +701,18 @@ or without contact</source>
     <message>
         <location line="-239"/>
         <location line="+240"/>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>%1 mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-283"/>
-        <location line="+242"/>
+        <location line="-284"/>
+        <location line="+244"/>
         <source>%1 N (%2 %)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>no limit set</source>
         <translation type="unfinished"></translation>
     </message>
@@ -738,7 +738,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-250"/>
+        <location line="-251"/>
         <source>Jog (never recorded)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -760,12 +760,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+382"/>
+        <location line="+383"/>
         <source>To start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-360"/>
+        <location line="-361"/>
         <source>Sampling</source>
         <translation type="unfinished"></translation>
     </message>
@@ -821,7 +821,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Step of one jog</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1014,7 +1014,7 @@ or without contact</source>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+51"/>
+        <location filename="../widgets/export_dialog.cpp" line="+54"/>
         <source>Export session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1073,8 +1073,39 @@ or without contact</source>
         <source>Choose a folder to export into.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+30"/>
+        <source>%1 already holds an earlier export: %n file(s) will be replaced.</source>
+        <translation>
+            <numerusform>%1 already holds an earlier export: %n file will be replaced.</numerusform>
+            <numerusform>%1 already holds an earlier export: %n files will be replaced.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n file(s) in %1 are not an earlier export&apos;s (a recorded run, a table made by hand?) and would be replaced and lost.</source>
+        <translation>
+            <numerusform>%n file in %1 is not an earlier export&apos;s (a recorded run, a table made by hand?) and would be replaced and lost.</numerusform>
+            <numerusform>%n files in %1 are not an earlier export&apos;s (a recorded run, a table made by hand?) and would be replaced and lost.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
+        <source>Choose another folder unless you are sure.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Not exported: the files in %1 are kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1: cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1089,7 +1120,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>%1: no runs to export</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1690,7 +1721,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+62"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1722,13 +1753,13 @@ The rows written before are kept in the file. Free space on the disk (or choose 
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+74"/>
         <source>%1
 Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-736"/>
+        <location line="-737"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1738,7 +1769,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+14"/>
+        <location line="+13"/>
         <source>%1
 %n plot frame(s) drawn</source>
         <translation>
@@ -1749,7 +1780,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+121"/>
         <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1764,7 +1795,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-539"/>
+        <location line="-540"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2207,7 +2238,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+50"/>
+        <location filename="../widgets/review_workspace.cpp" line="+81"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2283,12 +2314,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+914"/>
+        <location line="+940"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-911"/>
+        <location line="-937"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2314,12 +2345,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+495"/>
+        <location line="+499"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-495"/>
+        <location line="-499"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2375,7 +2406,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+7"/>
+        <source>set the video offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source> ppm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2385,7 +2421,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>set the drift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>drift</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2396,17 +2437,23 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>nudge the offset by one frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-2"/>
+        <location line="+7"/>
+        <source>nudge the offset by a frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-5"/>
         <source>+1 frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Mark event in force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2427,12 +2474,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+708"/>
+        <location line="+733"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-537"/>
+        <location line="-560"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2447,7 +2494,17 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+425"/>
+        <location line="+281"/>
+        <source>set the offset and drift from two events</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>set the offset from an event</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+161"/>
         <source>They are kept in %1, and saved beside the run when it is opened again and its folder can be written.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2472,7 +2529,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-697"/>
+        <location line="+130"/>
+        <source>accept the sync found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-852"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2482,7 +2544,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+180"/>
+        <location line="+183"/>
         <source>No run open: double-click one in the session list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2531,7 +2593,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+173"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2624,7 +2686,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-795"/>
+        <location line="-820"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2689,12 +2751,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2719,12 +2781,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+21"/>
         <source>Offset and drift set from two events (%1 s apart): drift %2 ppm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: check both marks; the drift was kept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2734,7 +2796,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+74"/>
         <source>%1 overlaps another phase on %2: not added</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3154,6 +3216,8 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+9"/>
         <location filename="../app/cmd_fit.cpp" line="-231"/>
+        <location filename="../app/cmd_labels.cpp" line="+119"/>
+        <location filename="../app/cmd_sync.cpp" line="+65"/>
         <source>warning: %1
 </source>
         <translation type="unfinished"></translation>
@@ -3197,7 +3261,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+43"/>
+        <location filename="../app/cmd_export.cpp" line="+45"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3228,7 +3292,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
+        <source>replace files in OUT that are not an earlier export&apos;s (a run file, a table made by hand); an earlier export&apos;s files are replaced without it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>--format is required (csv|hdf5|eaf)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3356,7 +3425,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     <message>
         <location line="+15"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="+13"/>
+        <location filename="../app/cmd_export.cpp" line="+15"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3441,12 +3510,28 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+3"/>
+        <location filename="../app/cmd_export.cpp" line="+2"/>
         <source>%1: no run files (*.csv with time_s,position_mm,force_N)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>%n file(s) in %1 would be replaced that are not an earlier export&apos;s (%2); they are kept. Name another folder, or give --overwrite.</source>
+        <translation>
+            <numerusform>%n file in %1 would be replaced that is not an earlier export&apos;s (%2); it is kept. Name another folder, or give --overwrite.</numerusform>
+            <numerusform>%n files in %1 would be replaced that are not an earlier export&apos;s (%2); they are kept. Name another folder, or give --overwrite.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>note: replacing %n file(s) of an earlier export in %1</source>
+        <translation>
+            <numerusform>note: replacing %n file of an earlier export in %1</numerusform>
+            <numerusform>note: replacing %n files of an earlier export in %1</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3779,7 +3864,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_labels.cpp" line="+36"/>
+        <location filename="../app/cmd_labels.cpp" line="-83"/>
         <source>Labels of a run. Actions: suggest (phases or events from the data).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3790,7 +3875,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_sync.cpp" line="-9"/>
+        <location filename="../app/cmd_sync.cpp" line="-74"/>
         <source>the run file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3849,7 +3934,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>needlebench labels: the run&apos;s video %1 is missing; looking beside the run
 </source>
         <translation type="unfinished"></translation>
@@ -3873,7 +3958,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-139"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3883,7 +3968,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+133"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
@@ -4459,7 +4544,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>needlebench sync: %1: the picture is %2x%3 px, too small to show a needle (%4 px a side at least)
 </source>
         <translation type="unfinished"></translation>
@@ -4950,6 +5035,16 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     <message>
         <location line="+7"/>
         <source>the sensor&apos;s sample counter (a gap is a lost sample)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+144"/>
+        <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no frames</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -7635,7 +7730,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+145"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7681,7 +7776,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-436"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7746,7 +7841,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+161"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation type="unfinished"></translation>
     </message>
