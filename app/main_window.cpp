@@ -316,6 +316,8 @@ void MainWindow::buildMenus()
     auto* calibration = menuBar()->addMenu(tr("&Calibration"));
     calibration->addAction(tr("&Calibrate force sensor…"), this, &MainWindow::openCalibrationWizard);
     calibration->addAction(tr("Use the sensor's &nominal calibration"), this, [this] {
+        if (refused(Control::Calibrate))  // not while a run records: its forces would change scale
+            return;
         StoredCalibration c;
         c.sensor = nominalSensor_;
         c.nominal = true;
@@ -821,16 +823,24 @@ QString MainWindow::quitQuestionText(const devices::EngineStatus& s)
     const InterlockState st = s.interlocks();
     const Permission quit = permission(Control::Quit, st);
     if (!quit.enabled)
-        return tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?").arg(quit.reason);
+        return (s.recording ? tr("%1\nStop the stage now (emergency stop; the run is saved as such) and quit?")
+                            : tr("%1\nStop the stage now (emergency stop) and quit?"))
+            .arg(quit.reason);
+    // Withdraw, not To start: in a sine "the start" is its centre, inside the tissue, and the
+    // question pointed at a button that was off or would leave the needle in.
     // Nothing moves, but the needle was left in the tissue (a run ended at depth, an emergency
     // stop): the window went at once and the operator lost the panel that withdraws it.
     if (st.inTissue)
-        return tr("The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?");
+        return tr("The needle is still in the tissue. Withdraw it first, or quit and leave it there?");
     // Jogged in (never recorded, so no contact was marked) or stopped short of the start: the
     // needle may be in tissue all the same.
     if (st.startKnown && s.position_mm > kAwayFromStart_mm)
-        return tr("The needle is %1 mm from its start. Withdraw it first (To start), or quit and leave it there?")
+        return tr("The needle is %1 mm from its start. Withdraw it first, or quit and leave it there?")
             .arg(QLocale().toString(s.position_mm, 'f', 1));
+    // The force says so where the position cannot (zeroed in the tissue: "Zero anyway").
+    if (s.loaded)
+        return tr("A force of %1 N is on the needle: it may be in the tissue. Withdraw it first, or quit and leave it there?")
+            .arg(QLocale().toString(s.force_N, 'f', 2));
     return {};
 }
 

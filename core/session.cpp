@@ -132,7 +132,9 @@ RunState runStateForEndReason(const QString& r)
     case EndReason::Puncture: return RunState::Puncture;
     case EndReason::Fault: return RunState::Fault;
     case EndReason::WriteError: return RunState::WriteError;
-    case EndReason::Interrupted: return RunState::Interrupted;
+    // Closed whole, its footer written: nothing to recover (a start rewrote it as "recovered",
+    // and the signal that ended it was lost from the list).
+    case EndReason::Interrupted: return RunState::ClosedOnSignal;
     case EndReason::Aborted: return RunState::Aborted;
     case EndReason::Recovered: return RunState::Recovered;
     }
@@ -144,6 +146,7 @@ QString runStateName(RunState state)
     // The same words as the footer's reason everywhere else (core/end_reason.h).
     switch (state) {
     case RunState::Interrupted: return displayName(EndReason::Interrupted);
+    case RunState::ClosedOnSignal: return displayName(EndReason::Interrupted);
     case RunState::Complete: return displayName(EndReason::Completed);
     case RunState::Stopped: return displayName(EndReason::Stopped);
     case RunState::StoppedByLimit: return displayName(EndReason::ForceLimit);

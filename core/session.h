@@ -65,7 +65,7 @@ struct StoredCalibration {
 };
 
 enum class RunState {
-    Interrupted,     // no footer: cut off by a crash (or still recording)
+    Interrupted,     // no footer: cut off by a crash (or still recording); recovered at a start
     Complete,
     Stopped,         // ended by the operator before the motion finished
     StoppedByLimit,  // the force limit stopped it
@@ -78,6 +78,7 @@ enum class RunState {
     Puncture,        // stopped at a puncture, as the run asked
     WriteError,
     Aborted,
+    ClosedOnSignal,  // closed whole when a signal (SIGTERM, SIGHUP, Ctrl+C) ended the program
 };
 
 struct RunEntry {

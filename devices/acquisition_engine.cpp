@@ -273,6 +273,12 @@ void AcquisitionEngine::setCalibration(double slope_V_per_g, const QString& name
             emit message(tr("calibration refused: slope must be positive (got %1 V/g)").arg(slope_V_per_g));
             return;
         }
+        // A run's forces are on one scale, the one its header names: a calibration changed
+        // mid-run halved them from one sample to the next, and the limit with them.
+        if (state_->runOpen) {
+            emit message(tr("calibration refused: a run is recording; end the run first"));
+            return;
+        }
         state_->proc->setSlope(slope_V_per_g);
         state_->calibrationName = name;
         emit message(tr("calibration '%1': %2 V/g").arg(name, QLocale().toString(slope_V_per_g, 'g', 6)));
@@ -282,6 +288,10 @@ void AcquisitionEngine::setCalibration(double slope_V_per_g, const QString& name
 void AcquisitionEngine::useNominalCalibration()
 {
     post([this] {
+        if (state_->runOpen) {
+            emit message(tr("calibration refused: a run is recording; end the run first"));
+            return;
+        }
         state_->proc->setSlope(nominalSlope_);
         state_->calibrationName = nominalSlope_ > 0 ? QString::fromLatin1(kNominalCalibration) : QString();
     });

@@ -528,7 +528,7 @@ void ControlPanel::updateControls()
     const double limit = s.running ? s.forceMarginOf_N : state_.forceLimit_N;
     const double margin = s.running ? s.forceMargin_N : state_.forceLimit_N - std::abs(s.force_N);
     set("margin",
-        limit > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(std::clamp(100.0 * margin / limit, 0.0, 100.0), 0)) : tr("no limit set"),
+        limit > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(std::clamp(100.0 * margin / limit, 0.0, 100.0), 0)) : tr("no limit"),
         limit <= 0 || margin < 0.2 * limit || s.forceLimitTripped);
     set("calibration", s.calibrationName.isEmpty() ? tr("none") : calibrationDisplayName(s.calibrationName),
         s.calibrationName.isEmpty());

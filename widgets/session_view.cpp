@@ -57,6 +57,7 @@ QVariant RunListModel::data(const QModelIndex& index, int role) const
         case RunState::Fault:
         case RunState::Unreadable: return QBrush(QColor(190, 30, 30));
         case RunState::Interrupted:
+        case RunState::ClosedOnSignal:
         case RunState::Recovered:
         case RunState::Stopped:
         case RunState::MotionStopped:

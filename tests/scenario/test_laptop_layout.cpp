@@ -277,6 +277,8 @@ private slots:
                 busy.running = busy.stageEnabled = busy.biased = busy.zeroed = busy.moving = true;
                 busy.rateHz = 10000.0;
                 busy.force_N = -1.234;
+                busy.forceMargin_N = 8.234;
+                busy.forceMarginOf_N = 9.5;
                 busy.position_mm = 123.456;
                 busy.velocity_mm_s = 12.5;
                 busy.bias_V = -1.2345;

@@ -123,6 +123,21 @@ private slots:
         QCOMPARE(nb::inspectRun(crashed).state, nb::RunState::Recovered);
         QCOMPARE(nb::inspectRun(busy).state, nb::RunState::Interrupted);  // left alone
         QVERIFY(s.recoverInterrupted(busy).isEmpty());                    // nothing twice
+
+        // A run closed whole when a signal ended the program (its footer written, end reason
+        // "interrupted") is not recovered: a start rewrote it as "recovered", the signal lost.
+        const QString signalled = tmp.filePath(QStringLiteral("run_003_linear.csv"));
+        writeRun(signalled, 20, QStringLiteral("interrupted"));
+        const QByteArray before = [&] {
+            QFile f(signalled);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        }();
+        QCOMPARE(nb::inspectRun(signalled).state, nb::RunState::ClosedOnSignal);
+        QCOMPARE(nb::runStateName(nb::RunState::ClosedOnSignal), QStringLiteral("interrupted"));
+        QVERIFY(s.recoverInterrupted(busy).isEmpty());
+        QFile after(signalled);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), before);
     }
 
     void calibrations()

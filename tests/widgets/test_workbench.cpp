@@ -490,6 +490,61 @@ private slots:
         QTRY_VERIFY(!w.isVisible());
     }
 
+    // Zeroed with the needle in the tissue ("Zero anyway"): neither the position nor a contact
+    // says it is in, but the force does, and quitting asks (it went at once at 0.6 N).
+    void quitAsksWhileAForceIsOnTheNeedle()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        nbtest::prepareToRecord(w);
+        w.engine()->moveTo(14.0, 10.0);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.engine()->status().moving && w.engine()->status().position_mm > 13.0, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().loaded, 10000);
+        w.engine()->zeroStage(true);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(w.engine()->status().position_mm) < 0.1, 10000);
+        QVERIFY(!w.controlPanel()->interlockState().inTissue);
+        QVERIFY(w.engine()->status().loaded);
+        QVERIFY(!w.close());
+        auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
+        QVERIFY(question && question->isVisible());
+        QVERIFY2(question->text().contains(QStringLiteral("N is on the needle")), qPrintable(question->text()));
+        question->button(QMessageBox::No)->click();
+        QVERIFY(w.isVisible());
+    }
+
+    // The sensor's nominal calibration is refused while a run records, as the wizard is: taken,
+    // it changed the run's force scale from one sample to the next, under a header naming the
+    // calibration before.
+    void noCalibrationChangeWhileRecording()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));  // in real time: the run lasts
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        setMotion(w, 0.5, 30.0);  // a minute's run: recording throughout
+        nbtest::prepareToRecord(w);
+        const QString before = w.engine()->status().calibrationName;
+        QTest::mouseClick(w.controlPanel()->button(Control::StartInsertion), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().recording, 20000);
+        QAction* nominal = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text().remove(QLatin1Char('&')) == QStringLiteral("Use the sensor's nominal calibration"))
+                nominal = a;
+        QVERIFY(nominal);
+        nominal->trigger();
+        QVERIFY2(w.statusBar()->currentMessage().startsWith(QStringLiteral("Not now")), qPrintable(w.statusBar()->currentMessage()));
+        QTest::qWait(300);  // what the engine would have taken by now
+        QCOMPARE(w.engine()->status().calibrationName, before);
+        // The engine refuses it too, whoever asks.
+        w.engine()->setCalibration(w.engine()->status().slope_V_per_g / 2, QStringLiteral("half"));
+        QTest::qWait(300);
+        QVERIFY(w.engine()->status().recording);
+        QCOMPARE(w.engine()->status().calibrationName, before);
+        w.engine()->emergencyStop();
+    }
+
     // A second window on a session already open in one is refused, named in a box: it closed
     // the first's recording as "recovered" and both recorded into the folder. Free again once
     // the first window goes.
