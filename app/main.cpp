@@ -54,17 +54,23 @@ static int runWindow(QApplication& app)
 {
     nb::MainWindow window;
     nb::InterruptWatcher interrupts;
+    // Quitting goes without the quit question (QCoreApplication::quit() asked the window, whose
+    // question then waited for an operator who was not there), with status 128 + the signal.
+    const auto leave = [&window](int signo) {
+        window.closeWithoutAsking();
+        QCoreApplication::exit(128 + signo);
+    };
     QObject::connect(&interrupts, &nb::InterruptWatcher::interrupted, &app, [&](int signo) {
         nb::devices::AcquisitionEngine* engine = window.engine();
         if (interrupts.signalNumber() != signo || !engine || !engine->status().recording) {
-            QCoreApplication::quit();  // nothing to close, or a second signal: go now
+            leave(signo);  // nothing to close, or a second signal: go now
             return;
         }
-        QObject::connect(engine, &nb::devices::AcquisitionEngine::runEnded, &app, [] { QCoreApplication::quit(); });
+        QObject::connect(engine, &nb::devices::AcquisitionEngine::runEnded, &app, [leave, signo] { leave(signo); });
         nb::Metadata extra;
         extra.set(QStringLiteral("signal"), nb::InterruptWatcher::signalName(signo));
         engine->interrupt(extra);
-        QTimer::singleShot(5000, &app, [] { QCoreApplication::quit(); });
+        QTimer::singleShot(5000, &app, [leave, signo] { leave(signo); });
     });
     window.show();
     return app.exec();

@@ -844,6 +844,12 @@ QString MainWindow::quitQuestionText(const devices::EngineStatus& s)
     return {};
 }
 
+void MainWindow::closeWithoutAsking()
+{
+    quitConfirmed_ = true;
+    close();
+}
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     const Permission quit = permission(Control::Quit, engine_->status().interlocks());

@@ -72,6 +72,11 @@ public:
     explicit MainWindow(const WorkbenchOptions& options, QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    // Closes without the quit question (a signal: the system is going down, or the operator's
+    // kill): what moves is stopped and what records is saved, as on a confirmed quit. After a
+    // SIGTERM the question stood unanswered and the process never went.
+    void closeWithoutAsking();
+
     ControlPanel* controlPanel() const { return panel_; }
     ForcePlots* plots() const { return plots_; }
     SessionView* sessionView() const { return sessionView_; }

@@ -490,6 +490,23 @@ private slots:
         QTRY_VERIFY(!w.isVisible());
     }
 
+    // A signal closes the window without the question (nobody is there to answer it: after a
+    // SIGTERM the process waited for ever), the needle away from its start all the same.
+    void aSignalClosesWithoutAsking()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        nbtest::prepareToRecord(w);
+        w.engine()->moveTo(5.0, 10.0);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.engine()->status().moving && w.engine()->status().position_mm > 4.0, 20000);
+        QVERIFY(!w.close());  // the operator's quit asks
+        QVERIFY(w.findChild<QMessageBox*>(QStringLiteral("quitQuestion")));
+        w.closeWithoutAsking();  // a signal's does not wait for the answer
+        QVERIFY(!w.isVisible());
+    }
+
     // Zeroed with the needle in the tissue ("Zero anyway"): neither the position nor a contact
     // says it is in, but the force does, and quitting asks (it went at once at 0.6 N).
     void quitAsksWhileAForceIsOnTheNeedle()
