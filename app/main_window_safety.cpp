@@ -11,6 +11,7 @@
 #include "widgets/force_plots.h"
 #include "widgets/simulated_rig_dialog.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QMessageBox>
 #include <QPushButton>
@@ -102,6 +103,10 @@ void MainWindow::emergencyStopNow()
     motionCommand_.invalidate();
     liveRun_->mark(devices::LiveMarkKind::EmergencyStop);
     showMessage(tr("Emergency stop: the stage is disabled until you reset it in the control panel."), true);
+    // A menu or list open when Esc stopped the stage covered the latched panel that says what
+    // happened: the operator sees the stop, not the menu.
+    for (int guard = 0; QApplication::activePopupWidget() && guard < 8; ++guard)
+        QApplication::activePopupWidget()->close();
 }
 
 bool MainWindow::refused(Control control)

@@ -239,8 +239,12 @@ private slots:
         // The figure is printed above (about 0.1 s on a quiet machine); the bound only catches a
         // stop that waited for something, with room for a machine busy with other work.
         QVERIFY2(r.stopDelay_s >= 0.0 && r.stopDelay_s <= 0.5, qPrintable(QString::number(r.stopDelay_s)));
-        // Esc stopped; it closed nothing the operator was working in.
-        QVERIFY(r.dialogStayedOpen);
+        // Esc stopped; it closed nothing the operator was working in. A menu it closes: left
+        // open, it covered the latched panel that says what happened.
+        if (which == QLatin1String("menu"))
+            QVERIFY(!r.dialogStayedOpen);
+        else
+            QVERIFY(r.dialogStayedOpen);
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 10000);
         QCOMPARE(w.lastEndReason(), QStringLiteral("emergency_stop"));
         const nb::RunReadResult file = nb::readRunFile(w.lastRunPath());
