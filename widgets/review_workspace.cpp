@@ -244,7 +244,7 @@ void ReviewWorkspace::buildUi()
     plotCursor_->setPen(QPen(QColor(220, 0, 0), 1.5));
     plotCursor_->point1->setCoords(0, 0);
     plotCursor_->point2->setCoords(0, 1);
-    plot_->setMinimumHeight(160);
+    plot_->setMinimumHeight(200);  // the legend's two rows and a force axis that reads
     connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) {
         setCursorTime(plot_->xAxis->pixelToCoord(e->position().x()));
     });
@@ -389,11 +389,17 @@ void ReviewWorkspace::buildUi()
     sync->addStretch();
     syncPlot_ = new QCustomPlot(this);
     syncPlot_->setFocusPolicy(Qt::NoFocus);
-    syncPlot_->setFixedHeight(130);
+    syncPlot_->setFixedHeight(100);
     syncPlot_->addGraph();
     syncPlot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
     syncPlot_->xAxis->setLabel(tr("video offset [s]"));
     syncPlot_->yAxis->setLabel(tr("correlation r"));
+    {
+        // 0, 0.5 and 1 read in its 100 px; ticks every 0.2 ran into each other.
+        QSharedPointer<QCPAxisTickerFixed> ticker(new QCPAxisTickerFixed);
+        ticker->setTickStep(0.5);
+        syncPlot_->yAxis->setTicker(ticker);
+    }
     syncMarker_ = new QCPItemStraightLine(syncPlot_);
     syncMarker_->setPen(QPen(QColor(220, 0, 0), 1.5, Qt::DashLine));
 
@@ -1161,13 +1167,9 @@ void ReviewWorkspace::updateTrace()
                             pending ? pendingSync_->mapping() : mapping_);
     QVector<double> t(s.time_s.begin(), s.time_s.end()), x(s.value.begin(), s.value.end());
     trackedGraph_->setData(t, x, true);
-    trackedGraph_->setName(pending ? tr("needle tracked in the video (at the offset found)") : tr("needle tracked in the video"));
-    // The longer name of a pending sync does not fit two to a row beside the video ("recorded
-    // positio" was cut off in German): one a row while it waits.
-    if (plot_->legend->wrap() != (pending ? 1 : 2)) {
-        plot_->legend->setWrap(pending ? 1 : 2);
-        plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
-    }
+    // Two names a row, pending or not: one a row took a third of the plot's height on a laptop
+    // while the sync's curve took its place below, and the force was left 60 px.
+    trackedGraph_->setName(pending ? tr("needle tracked (offset found)") : tr("needle tracked in the video"));
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 

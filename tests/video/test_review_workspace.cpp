@@ -611,6 +611,7 @@ private slots:
         QVERIFY(QFile::copy(run_, run));
         QVERIFY(QFile::copy(video_, video));
         nb::ReviewWorkspace ws;
+        ws.resize(970, 520);  // what a 1366x768 laptop leaves it beside the panel and the session
         ws.show();
         QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
         QSignalSpy finished(&ws, &nb::ReviewWorkspace::syncFinished);
@@ -638,11 +639,19 @@ private slots:
         QVERIFY(finished.wait(120000));
         QVERIFY(ws.pendingSync());
         QCOMPARE(button->text(), QStringLiteral("Auto sync"));
-        // The trace's longer name while the sync waits: the legend one name a row, so that none
-        // is cut off beside the video; two a row again once it is decided.
+        // While the sync waits the legend keeps two names a row (one a row took a third of the
+        // force plot on a laptop, beside the sync's curve), none of them cut off.
         auto* plot = ws.findChild<QCustomPlot*>(QStringLiteral("reviewForcePlot"));
         QVERIFY(plot);
-        QCOMPARE(plot->legend->wrap(), 1);
+        plot->replot();
+        QCOMPARE(plot->legend->wrap(), 2);
+        for (int i = 0; i < plot->legend->itemCount(); ++i) {
+            QCPAbstractLegendItem* item = plot->legend->item(i);
+            if (!item)
+                continue;  // an empty cell of the grid
+            QVERIFY2(item->outerRect().width() >= item->minimumOuterSizeHint().width(),
+                     qPrintable(QStringLiteral("legend item %1: %2 px for %3").arg(i).arg(item->outerRect().width()).arg(item->minimumOuterSizeHint().width())));
+        }
         ws.rejectSync();
         QCOMPARE(plot->legend->wrap(), 2);
     }
