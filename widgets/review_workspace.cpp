@@ -389,13 +389,13 @@ void ReviewWorkspace::buildUi()
     sync->addStretch();
     syncPlot_ = new QCustomPlot(this);
     syncPlot_->setFocusPolicy(Qt::NoFocus);
-    syncPlot_->setFixedHeight(100);
+    syncPlot_->setFixedHeight(86);
     syncPlot_->addGraph();
     syncPlot_->graph(0)->setPen(QPen(QColor(30, 30, 30), 1.2));
     syncPlot_->xAxis->setLabel(tr("video offset [s]"));
-    syncPlot_->yAxis->setLabel(tr("correlation r"));
+    syncPlot_->yAxis->setLabel(QStringLiteral("r"));  // as the result beside it says; "correlation r" ran past the 86 px
     {
-        // 0, 0.5 and 1 read in its 100 px; ticks every 0.2 ran into each other.
+        // 0, 0.5 and 1 read in its 86 px; ticks every 0.2 ran into each other.
         QSharedPointer<QCPAxisTickerFixed> ticker(new QCPAxisTickerFixed);
         ticker->setTickStep(0.5);
         syncPlot_->yAxis->setTicker(ticker);
