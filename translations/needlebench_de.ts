@@ -713,11 +713,6 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1 N (%2 %)</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>no limit set</source>
-        <translation>keine Grenze gesetzt</translation>
-    </message>
-    <message>
         <location line="+2"/>
         <location line="+3"/>
         <source>none</source>
@@ -822,7 +817,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>AUFZEICHNUNG %1, %2 s</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+9"/>
+        <source>no limit</source>
+        <translation>keine Grenze</translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>Step of one jog</source>
         <translation>Weg eines Tippschritts</translation>
     </message>
@@ -1429,7 +1429,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die eingestellten Geräte konnten nicht geöffnet werden (%1); der simulierte Versuchsstand wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../app/main_window_safety.cpp" line="+47"/>
+        <location filename="../app/main_window_safety.cpp" line="+48"/>
         <source>Emergency stop reset: the stage is enabled again.</source>
         <translation>Not-Halt zurückgesetzt: Die Achse ist wieder eingeschaltet.</translation>
     </message>
@@ -1444,8 +1444,8 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+538"/>
-        <location filename="../app/main_window_safety.cpp" line="+11"/>
+        <location filename="../app/main_window.cpp" line="+540"/>
+        <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
         <source>Not now: %1</source>
@@ -1507,7 +1507,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-444"/>
+        <location filename="../app/main_window.cpp" line="-446"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1592,7 +1592,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>&amp;Nennkalibrierung des Sensors verwenden</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>These devices do not state a nominal calibration: calibrate the sensor.</source>
         <translation>Diese Geräte nennen keine Nennkalibrierung: Kalibrieren Sie den Sensor.</translation>
     </message>
@@ -1764,12 +1764,34 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
 Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</translation>
     </message>
     <message>
-        <location line="-737"/>
+        <location line="+1"/>
+        <source>%1
+Stop the stage now (emergency stop) and quit?</source>
+        <translation>%1
+Achse jetzt anhalten (Not-Halt) und beenden?</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The needle is still in the tissue. Withdraw it first, or quit and leave it there?</source>
+        <translation>Die Nadel steckt noch im Gewebe. Zuerst zurückziehen oder beenden und sie dort lassen?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The needle is %1 mm from its start. Withdraw it first, or quit and leave it there?</source>
+        <translation>Die Nadel steht %1 mm von ihrem Start entfernt. Zuerst zurückziehen oder beenden und sie dort lassen?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A force of %1 N is on the needle: it may be in the tissue. Withdraw it first, or quit and leave it there?</source>
+        <translation>Auf der Nadel liegt eine Kraft von %1 N: sie steckt vielleicht im Gewebe. Zuerst zurückziehen oder beenden und sie dort lassen?</translation>
+    </message>
+    <message>
+        <location line="-755"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+607"/>
+        <location line="+609"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1785,22 +1807,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         </translation>
     </message>
     <message>
-        <location line="+121"/>
-        <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
-        <translation>Die Nadel steckt noch im Gewebe. Zuerst zurückziehen (Zum Start) oder beenden und sie dort lassen?</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The needle is %1 mm from its start. Withdraw it first (To start), or quit and leave it there?</source>
-        <translation>Die Nadel steht %1 mm von ihrem Start entfernt. Zuerst zurückziehen (Zum Start) oder beenden und sie dort lassen?</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="+157"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-540"/>
+        <location line="-556"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2319,12 +2331,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+3"/>
-        <location line="+940"/>
+        <location line="+948"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-937"/>
+        <location line="-945"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2350,12 +2362,12 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+499"/>
+        <location line="+505"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-499"/>
+        <location line="-505"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2479,7 +2491,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
     </message>
     <message>
         <location line="+1"/>
-        <location line="+733"/>
+        <location line="+739"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
@@ -2534,17 +2546,22 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+67"/>
+        <source>needle tracked (offset found)</source>
+        <translation>verfolgte Nadel (gefundener Versatz)</translation>
+    </message>
+    <message>
+        <location line="+59"/>
         <source>accept the sync found</source>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-852"/>
+        <location line="-854"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+33"/>
         <source>phases or events from force and position, and from the synchronised video when there is one</source>
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
@@ -2673,12 +2690,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>korreliere: Bild %1 von %2…</translation>
     </message>
     <message>
-        <location line="+42"/>
-        <source>needle tracked in the video (at the offset found)</source>
-        <translation>im Video verfolgte Nadel (beim gefundenen Versatz)</translation>
-    </message>
-    <message>
-        <location line="+34"/>
+        <location line="+72"/>
         <source>, drift %1 %</source>
         <translation>, Drift %1 %</translation>
     </message>
@@ -2693,7 +2705,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-820"/>
+        <location line="-822"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2728,12 +2740,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Videoversatz [s]</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>correlation r</source>
-        <translation>Korrelation r</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Suggest labels</source>
         <translation>Labels vorschlagen</translation>
     </message>
@@ -2828,7 +2835,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+118"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -2841,7 +2848,7 @@ Achse jetzt anhalten (Not-Halt; der Lauf wird so gespeichert) und beenden?</tran
         <translation>Aufzeichnung läuft</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>#</source>
         <translation>Nr.</translation>
     </message>
@@ -5071,7 +5078,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+114"/>
+        <location filename="../app/main.cpp" line="+120"/>
         <source>needlebench %1: the output could not be written (%2)</source>
         <translation>needlebench %1: die Ausgabe konnte nicht geschrieben werden (%2)</translation>
     </message>
@@ -5682,7 +5689,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+194"/>
+        <location filename="../core/session.cpp" line="+197"/>
         <source>no header row</source>
         <translation>keine Kopfzeile</translation>
     </message>
@@ -5713,7 +5720,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Schreiben nach %1 Zeilen fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-149"/>
+        <location filename="../core/session.cpp" line="-152"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation>ungültiges JSON bei Byte %1: %2</translation>
     </message>
@@ -5773,7 +5780,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+186"/>
+        <location filename="../core/session.cpp" line="+189"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation>Ordner kann nicht angelegt werden</translation>
@@ -7808,12 +7815,18 @@ F = %1 x + %2 x²
         <translation>Kalibrierung abgelehnt: die Steigung muss positiv sein (erhalten: %1 V/g)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
+        <location line="+13"/>
+        <source>calibration refused: a run is recording; end the run first</source>
+        <translation>Kalibrierung abgelehnt: ein Lauf wird aufgezeichnet; beenden Sie zuerst den Lauf</translation>
+    </message>
+    <message>
+        <location line="-8"/>
         <source>calibration &apos;%1&apos;: %2 V/g</source>
         <translation>Kalibrierung &apos;%1&apos;: %2 V/g</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+26"/>
         <location line="+49"/>
         <source>run not started: %1</source>
         <translation>Lauf nicht gestartet: %1</translation>
@@ -7880,7 +7893,7 @@ F = %1 x + %2 x²
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-436"/>
+        <location line="-446"/>
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -7890,7 +7903,7 @@ F = %1 x + %2 x²
         <translation>Nullen abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+80"/>
         <source>a run is already on its way to its start position</source>
         <translation>eine Messung fährt bereits ihre Startposition an</translation>
     </message>

@@ -712,11 +712,6 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>no limit set</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location line="+2"/>
         <location line="+3"/>
         <source>none</source>
@@ -821,7 +816,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+9"/>
+        <source>no limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>Step of one jog</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1428,7 +1428,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window_safety.cpp" line="+47"/>
+        <location filename="../app/main_window_safety.cpp" line="+48"/>
         <source>Emergency stop reset: the stage is enabled again.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1443,8 +1443,8 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+538"/>
-        <location filename="../app/main_window_safety.cpp" line="+11"/>
+        <location filename="../app/main_window.cpp" line="+540"/>
+        <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
         <source>Not now: %1</source>
@@ -1506,7 +1506,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-444"/>
+        <location filename="../app/main_window.cpp" line="-446"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1591,7 +1591,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>These devices do not state a nominal calibration: calibrate the sensor.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1759,12 +1759,33 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-737"/>
+        <location line="+1"/>
+        <source>%1
+Stop the stage now (emergency stop) and quit?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The needle is still in the tissue. Withdraw it first, or quit and leave it there?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The needle is %1 mm from its start. Withdraw it first, or quit and leave it there?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A force of %1 N is on the needle: it may be in the tissue. Withdraw it first, or quit and leave it there?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-755"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+607"/>
+        <location line="+609"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1780,22 +1801,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+121"/>
-        <source>The needle is still in the tissue. Withdraw it first (To start), or quit and leave it there?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The needle is %1 mm from its start. Withdraw it first (To start), or quit and leave it there?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="+157"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-540"/>
+        <location line="-556"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2314,12 +2325,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+940"/>
+        <location line="+948"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-937"/>
+        <location line="-945"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2345,12 +2356,12 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+499"/>
+        <location line="+505"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-499"/>
+        <location line="-505"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2474,7 +2485,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+733"/>
+        <location line="+739"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2529,17 +2540,22 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+67"/>
+        <source>needle tracked (offset found)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+59"/>
         <source>accept the sync found</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-852"/>
+        <location line="-854"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+33"/>
         <source>phases or events from force and position, and from the synchronised video when there is one</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2666,12 +2682,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
-        <source>needle tracked in the video (at the offset found)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+34"/>
+        <location line="+72"/>
         <source>, drift %1 %</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2686,7 +2697,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-820"/>
+        <location line="-822"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2721,12 +2732,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>correlation r</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Suggest labels</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2821,7 +2827,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+118"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2834,7 +2840,7 @@ Stop the stage now (emergency stop; the run is saved as such) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>#</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4970,7 +4976,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+114"/>
+        <location filename="../app/main.cpp" line="+120"/>
         <source>needlebench %1: the output could not be written (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5581,7 +5587,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+194"/>
+        <location filename="../core/session.cpp" line="+197"/>
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5612,7 +5618,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-149"/>
+        <location filename="../core/session.cpp" line="-152"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5672,7 +5678,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+186"/>
+        <location filename="../core/session.cpp" line="+189"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>
@@ -7704,12 +7710,18 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
+        <location line="+13"/>
+        <source>calibration refused: a run is recording; end the run first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-8"/>
         <source>calibration &apos;%1&apos;: %2 V/g</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+26"/>
         <location line="+49"/>
         <source>run not started: %1</source>
         <translation type="unfinished"></translation>
@@ -7776,7 +7788,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-436"/>
+        <location line="-446"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7786,7 +7798,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+80"/>
         <source>a run is already on its way to its start position</source>
         <translation type="unfinished"></translation>
     </message>
