@@ -161,6 +161,12 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     if (options_.persistSettings) {
         restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
         panel_->restoreSettings(settings);
+        // Written as they change, not only at quit: a crash brought back an older, higher force
+        // limit (and the mode, cycles and jog step were not kept at all).
+        connect(panel_, &ControlPanel::settingsChanged, this, [this] {
+            QSettings settings;
+            panel_->saveSettings(settings);
+        });
     }
     if (!options_.persistSettings) {
         resize(1400, 860);

@@ -314,6 +314,12 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
 
     state_.forceLimit_N = limit_->value();
     updateControls();
+
+    for (QDoubleSpinBox* box : findChildren<QDoubleSpinBox*>())
+        connect(box, &QDoubleSpinBox::valueChanged, this, &ControlPanel::settingsChanged);
+    connect(cycles_, &QSpinBox::valueChanged, this, &ControlPanel::settingsChanged);
+    connect(sine_, &QRadioButton::toggled, this, &ControlPanel::settingsChanged);
+    connect(jogStep_, &QComboBox::currentIndexChanged, this, &ControlPanel::settingsChanged);
 }
 
 QPushButton* ControlPanel::addButton(Control control, const QString& text, const QString& help)
@@ -373,11 +379,13 @@ QString ControlPanel::lockMotion(const devices::RunPlan& plan, const QString& wh
                 .arg(std::pow(10.0, -box->decimals()));
     if (plan.sine.cycles < cycles_->minimum() || plan.sine.cycles > cycles_->maximum())
         return tr("%1 cycles cannot be set here (%2 to %3)").arg(plan.sine.cycles).arg(cycles_->minimum()).arg(cycles_->maximum());
+    if (!locked_)
+        operatorMotion_ = motionFields();
+    locked_ = plan;  // first: the fields' changes below are the plan's, not the operator's
     (sine ? sine_ : linear_)->setChecked(true);
     for (const auto& [box, v] : values)
         box->setValue(v);
     cycles_->setValue(plan.sine.cycles);
-    locked_ = plan;
     lockReason_ = why;
     motionBox_->setTitle(tr("2. Motion (set by the plan)"));
     updateControls();
@@ -387,6 +395,9 @@ QString ControlPanel::lockMotion(const devices::RunPlan& plan, const QString& wh
 void ControlPanel::unlockMotion()
 {
     locked_.reset();
+    if (operatorMotion_)
+        setMotionFields(*operatorMotion_);
+    operatorMotion_.reset();
     lockReason_.clear();
     motionBox_->setTitle(tr("2. Motion"));
     updateControls();
@@ -418,6 +429,14 @@ void ControlPanel::saveSettings(QSettings& settings) const
     for (const QDoubleSpinBox* box : findChildren<QDoubleSpinBox*>())
         if (box->objectName() != QLatin1String("forceLimit") && !box->objectName().isEmpty())
             settings.setValue(QStringLiteral("motion/") + box->objectName(), box->value());
+    const MotionFields m = operatorMotion_ ? *operatorMotion_ : motionFields();
+    settings.setValue(QStringLiteral("motion/sine"), m.sine);
+    settings.setValue(QStringLiteral("motion/velocity"), m.velocity);
+    settings.setValue(QStringLiteral("motion/depth"), m.depth);
+    settings.setValue(QStringLiteral("motion/amplitude"), m.amplitude);
+    settings.setValue(QStringLiteral("motion/frequency"), m.frequency);
+    settings.setValue(QStringLiteral("motion/cycles"), m.cycles);
+    settings.setValue(QStringLiteral("motion/jogStep_mm"), jogStep_->currentData().toDouble());
 }
 
 void ControlPanel::restoreSettings(const QSettings& settings)
@@ -429,7 +448,30 @@ void ControlPanel::restoreSettings(const QSettings& settings)
         if (box->objectName() != QLatin1String("forceLimit") && !box->objectName().isEmpty() && settings.contains(key))
             box->setValue(settings.value(key).toDouble());
     }
+    if (settings.contains(QStringLiteral("motion/sine")))
+        (settings.value(QStringLiteral("motion/sine")).toBool() ? sine_ : linear_)->setChecked(true);
+    if (settings.contains(QStringLiteral("motion/cycles")))
+        cycles_->setValue(settings.value(QStringLiteral("motion/cycles")).toInt());
+    if (settings.contains(QStringLiteral("motion/jogStep_mm")))
+        if (const int i = jogStep_->findData(settings.value(QStringLiteral("motion/jogStep_mm")).toDouble()); i >= 0)
+            jogStep_->setCurrentIndex(i);
 }
+
+ControlPanel::MotionFields ControlPanel::motionFields() const
+{
+    return {sine_->isChecked(), velocity_->value(), depth_->value(), amplitude_->value(), frequency_->value(), cycles_->value()};
+}
+
+void ControlPanel::setMotionFields(const MotionFields& m)
+{
+    (m.sine ? sine_ : linear_)->setChecked(true);
+    velocity_->setValue(m.velocity);
+    depth_->setValue(m.depth);
+    amplitude_->setValue(m.amplitude);
+    frequency_->setValue(m.frequency);
+    cycles_->setValue(m.cycles);
+}
+
 void ControlPanel::setWithdrawForceLimit(double newtons) { withdrawLimit_->setValue(newtons); }
 double ControlPanel::sineCentre() const { return centre_->value(); }
 void ControlPanel::setSineCentre(double mm) { centre_->setValue(mm); }

@@ -39,7 +39,11 @@ public:
     double forceLimit() const;
     void setForceLimit(double newtons);
     // The operator's fields kept between sessions: the force limit under run/forceLimit_N, the
-    // motion and jog fields under motion/NAME. The panel knows its fields; callers don't.
+    // motion and jog fields under motion/NAME (the mode as motion/sine, the cycles, the jog
+    // step). The panel knows its fields; callers don't. While a plan holds the motion, the
+    // operator's own motion is what is kept. settingsChanged() says when one of them changed,
+    // so that they can be written at once: written only at quit, a crash brought back an older,
+    // higher force limit.
     void saveSettings(QSettings& settings) const;
     void restoreSettings(const QSettings& settings);
     double withdrawForceLimit() const;
@@ -51,6 +55,8 @@ public:
     // A plan sets the next run's motion: the fields show `plan`'s and stay locked, with `why` in
     // their tooltip, until unlockMotion(); motionPlan() then carries its stop at puncture too.
     // Returns what the fields cannot hold (a value out of their range; nothing is locked then).
+    // Leaving the plan gives the operator back the motion the panel had before it (the plan's
+    // 4 mm/s and 40 mm stayed, deeper than the specimen, and were kept over a restart).
     QString lockMotion(const devices::RunPlan& plan, const QString& why);
     void unlockMotion();
     bool motionLocked() const { return locked_.has_value(); }
@@ -87,6 +93,8 @@ signals:
     void moveToRequested(double position_mm, double velocity_mm_s);
     // The emergency stop latch's reset: enables the stage again on purpose.
     void resetEmergencyStopRequested();
+    // A field saveSettings() keeps changed.
+    void settingsChanged();
 
 private:
     void updateControls();
@@ -123,6 +131,15 @@ private:
     std::map<QString, QLabel*> status_labels_;
     QString calibrationName_;
     std::optional<devices::RunPlan> locked_;
+    // The operator's motion fields, as they were before a plan set its own.
+    struct MotionFields {
+        bool sine = false;
+        double velocity = 0, depth = 0, amplitude = 0, frequency = 0;
+        int cycles = 1;
+    };
+    MotionFields motionFields() const;
+    void setMotionFields(const MotionFields& m);
+    std::optional<MotionFields> operatorMotion_;
     QString lockReason_, startHold_;
     bool calibrating_ = false;
 };

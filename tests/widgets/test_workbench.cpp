@@ -31,6 +31,7 @@
 #include <QAbstractButton>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QRadioButton>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -104,6 +105,12 @@ void prepare(nb::MainWindow& w)
     QTest::mouseClick(p->button(Control::Zero), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().zeroed, 20000);
     QTRY_VERIFY_WITH_TIMEOUT(start->isEnabled(), 20000);
+}
+
+void setVelocityAndDepth(nb::ControlPanel& p, double velocity, double depth)
+{
+    p.findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->setValue(velocity);
+    p.findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->setValue(depth);
 }
 
 void setMotion(nb::MainWindow& w, double velocity, double depth)
@@ -659,6 +666,71 @@ private slots:
         }
         QSettings().remove(QStringLiteral("session/last"));
         QSettings().remove(QStringLiteral("review/run"));
+    }
+
+    // The panel's fields come back after a restart, and after a crash too: they were written
+    // only at quit, so a kill -9 brought back an older, higher force limit; the mode, cycles and
+    // jog step were not kept at all.
+    void restartKeepsThePanel()
+    {
+        QTemporaryDir tmp;
+        const QString a = tmp.filePath(QStringLiteral("a"));
+        nb::Session::create(a, {});
+        nb::WorkbenchOptions o = options(a, false);
+        o.persistSettings = true;
+        {
+            nb::MainWindow w(o);
+            nb::ControlPanel* p = w.controlPanel();
+            p->findChild<QRadioButton*>(QStringLiteral("sine"))->setChecked(true);
+            p->findChild<QSpinBox*>(QStringLiteral("cycles"))->setValue(4);
+            auto* jog = p->findChild<QComboBox*>(QStringLiteral("jogStep"));
+            jog->setCurrentIndex(jog->findData(0.1));
+            QVERIFY(jog->currentIndex() >= 0);
+            p->setForceLimit(2.0);
+            // No close(): the window goes as a crash takes it, without its closeEvent.
+        }
+        {
+            nb::MainWindow w(o);
+            nb::ControlPanel* p = w.controlPanel();
+            QVERIFY(p->findChild<QRadioButton*>(QStringLiteral("sine"))->isChecked());
+            QCOMPARE(p->findChild<QSpinBox*>(QStringLiteral("cycles"))->value(), 4);
+            QCOMPARE(p->findChild<QComboBox*>(QStringLiteral("jogStep"))->currentData().toDouble(), 0.1);
+            QCOMPARE(p->forceLimit(), 2.0);
+            p->findChild<QRadioButton*>(QStringLiteral("linear"))->setChecked(true);
+            p->setForceLimit(8.0);
+            QVERIFY(w.close());
+        }
+        for (const char* key : {"motion/sine", "motion/cycles", "motion/jogStep_mm"})
+            QSettings().remove(QLatin1String(key));
+    }
+
+    // A plan sets the panel's motion; leaving it gives the operator's own back, and the
+    // operator's are what is kept meanwhile (the plan's 4 mm/s and 40 mm stayed, deeper than the
+    // specimen, and came back after a restart).
+    void leavingAPlanGivesTheMotionBack()
+    {
+        nb::ControlPanel panel;
+        setVelocityAndDepth(panel, 2.5, 22.0);
+        nb::devices::RunPlan plan;
+        plan.motion = nb::devices::RunPlan::Motion::Sine;
+        plan.linear = {4.0, 40.0};
+        plan.sine = {5.0, 0.5, 3};
+        QVERIFY(panel.lockMotion(plan, QStringLiteral("the plan's")).isEmpty());
+        QVERIFY(panel.findChild<QRadioButton*>(QStringLiteral("sine"))->isChecked());
+        QCOMPARE(panel.findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->value(), 40.0);
+        QTemporaryDir tmp;
+        {
+            QSettings kept(tmp.filePath(QStringLiteral("kept.ini")), QSettings::IniFormat);
+            panel.saveSettings(kept);
+        }
+        QSettings kept(tmp.filePath(QStringLiteral("kept.ini")), QSettings::IniFormat);
+        QCOMPARE(kept.value(QStringLiteral("motion/depth")).toDouble(), 22.0);
+        QCOMPARE(kept.value(QStringLiteral("motion/velocity")).toDouble(), 2.5);
+        QCOMPARE(kept.value(QStringLiteral("motion/sine")).toBool(), false);
+        panel.unlockMotion();
+        QVERIFY(panel.findChild<QRadioButton*>(QStringLiteral("linear"))->isChecked());
+        QCOMPARE(panel.findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->value(), 2.5);
+        QCOMPARE(panel.findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->value(), 22.0);
     }
 
     // A session folder renamed between two starts: the window says the last session is not
