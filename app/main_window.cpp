@@ -881,8 +881,13 @@ void MainWindow::closeEvent(QCloseEvent* event)
         showModeless(quitQuestion_);
         return;
     }
-    if (!quit.enabled)
+    if (!quit.enabled) {
         engine_->emergencyStop();
+        // The run's end comes back from the engine after the window has gone: a plan's run would
+        // stay "running" in plan.json, and be called interrupted at the next start while its
+        // file says emergency stop.
+        endPlanRun(fileName(EndReason::EmergencyStop));
+    }
     if (options_.persistSettings) {
         QSettings settings;
         settings.setValue(QStringLiteral("window/geometry"), saveGeometry());

@@ -18,6 +18,7 @@
 #include "widgets/control_panel.h"
 #include "widgets/plan_panel.h"
 
+#include <QMessageBox>
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
@@ -403,6 +404,43 @@ private slots:
         QCOMPARE(stoppedRun.meta(QStringLiteral("plan_attempt")).value_or(QString()), QStringLiteral("2"));
         QCOMPARE(stoppedRun.meta(QStringLiteral("sim_seed")).value_or(QString()), QStringLiteral("7003"));
         QVERIFY(!w.planPanel()->checkBox(nb::PlanPanel::Item::Bias)->isChecked());  // again before the next attempt
+    }
+
+    // Quitting during a plan run (Yes to "stop the stage now and quit?") records the attempt as
+    // the emergency stop its file says: plan.json kept it "running", and the next start called
+    // it interrupted.
+    void quitDuringAPlanRunRecordsIt()
+    {
+        QTemporaryDir tmp;
+        QVERIFY(tmp.isValid());
+        const QString sessionDir = tmp.filePath(QStringLiteral("quit"));
+        {
+            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QAction* nominal = menuAction(w, QStringLiteral("Use the sensor's &nominal calibration"));
+            QVERIFY(nominal);
+            nominal->trigger();
+            QVERIFY(waitFor([&] {
+                const nb::devices::EngineStatus s = w.engine()->status();
+                return s.running && !s.moving && !s.approaching && !s.recording;
+            }));
+            nb::Plan plan = testPlan();
+            plan.runs[0].settings.insert(QStringLiteral("velocity_mm_s"), kSlowVelocity_mm_s);
+            const nb::devices::AcquisitionEngine* before = w.engine();
+            QVERIFY(w.startPlan(plan));
+            QCOMPARE(childStartRun(w, before), 0);
+            QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().recording, 20000);
+            QVERIFY(!w.close());
+            auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
+            QVERIFY(question && question->isVisible());
+            question->button(QMessageBox::Yes)->click();
+            QTRY_VERIFY(!w.isVisible());
+        }
+        const nb::Plan after = readPlan(sessionDir);
+        QCOMPARE(int(after.runs[0].attempts.size()), 1);
+        QCOMPARE(after.runs[0].attempts[0].result, QStringLiteral("emergency_stop"));
+        QCOMPARE(after.runs[0].status, nb::PlanRunStatus::Pending);
     }
 
     void planFromTemplateThroughTheMenu()
