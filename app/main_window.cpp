@@ -541,6 +541,25 @@ ExportDialog* MainWindow::exportSession()
     }
     auto* dialog = new ExportDialog(session_->dir(), analysis_, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
+    // The last export's folder (of this session) and formats: the dialog went back to
+    // SESSION/export and its defaults, and Export again wrote elsewhere than the operator had.
+    if (options_.persistSettings) {
+        const QSettings settings;
+        if (settings.value(QStringLiteral("export/session")).toString() == session_->dir()
+            && !settings.value(QStringLiteral("export/target")).toString().isEmpty())
+            dialog->setTargetDir(settings.value(QStringLiteral("export/target")).toString());
+        if (const QVariantList c = settings.value(QStringLiteral("export/choice")).toList(); c.size() == 5)
+            dialog->setChoice({c[0].toBool(), c[1].toBool(), c[2].toBool(), c[3].toBool(), c[4].toBool()});
+        connect(dialog, &ExportDialog::exportFinished, this, [this, dialog](bool ok) {
+            if (!ok || !session_)
+                return;
+            QSettings settings;
+            settings.setValue(QStringLiteral("export/session"), session_->dir());
+            settings.setValue(QStringLiteral("export/target"), dialog->targetDir());
+            const ExportDialog::Choice c = dialog->choice();
+            settings.setValue(QStringLiteral("export/choice"), QVariantList{c.csv, c.hdf5, c.eaf, c.figures, c.tables});
+        });
+    }
     connect(dialog, &ExportDialog::exportFinished, this, [this, dialog](bool ok) {
         // A failure replaces an earlier export's "exported", which stood beside it.
         showMessage(ok ? tr("Session exported into %1").arg(QDir::toNativeSeparators(dialog->targetDir()))

@@ -35,6 +35,7 @@ public:
         bool csv = true, hdf5 = true, eaf = false, figures = false, tables = true;
     };
     void setChoice(const Choice& c);
+    Choice choice() const;
     void setTargetDir(const QString& dir);
     QString targetDir() const;
     QString hdf5Path() const;  // where the HDF5 file goes: TARGET/SESSION.h5
@@ -62,7 +63,6 @@ private:
     void askToReplace(const FilesInTheWay& way, const Choice& c, const QString& target);
     Outcome run(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
     void finish();
-    Choice choice() const;
 
     QString sessionDir_;
     AnalysisWorkspace* analysis_;

@@ -5,6 +5,7 @@
 #include "main_window.h"
 #include "support/needlebench_cli.h"
 #include "support/simulated_window.h"
+#include "widgets/export_dialog.h"
 #include "widgets/label_model.h"
 #include "widgets/review_workspace.h"
 #include "translation.h"
@@ -701,6 +702,43 @@ private slots:
             QVERIFY(w.close());
         }
         for (const char* key : {"motion/sine", "motion/cycles", "motion/jogStep_mm"})
+            QSettings().remove(QLatin1String(key));
+    }
+
+    // Export session… opens where the last export of this session went, with its formats: it
+    // went back to SESSION/export and the defaults, and Export again wrote elsewhere.
+    void exportRemembersItsFolderAndFormats()
+    {
+        QTemporaryDir tmp;
+        const QString a = tmp.filePath(QStringLiteral("a"));
+        nb::Session::create(a, {});
+        writeCompletedRun(QDir(a).filePath(QStringLiteral("run_001_linear.csv")));
+        nb::WorkbenchOptions o = options(a, false);
+        o.persistSettings = true;
+        const QString out = tmp.filePath(QStringLiteral("elsewhere"));
+        {
+            nb::MainWindow w(o);
+            nb::ExportDialog* dialog = w.exportSession();
+            QVERIFY(dialog);
+            dialog->setTargetDir(out);
+            dialog->setChoice({.csv = false, .hdf5 = false, .eaf = true, .figures = false, .tables = false});
+            QSignalSpy done(dialog, &nb::ExportDialog::exportFinished);
+            dialog->start();
+            QVERIFY(done.wait(60000));
+            QCOMPARE(done.first().first().toBool(), true);
+            dialog->close();
+        }
+        {
+            nb::MainWindow w(o);
+            nb::ExportDialog* dialog = w.exportSession();
+            QVERIFY(dialog);
+            QCOMPARE(dialog->targetDir(), out);
+            QCOMPARE(dialog->choice().eaf, true);
+            QCOMPARE(dialog->choice().hdf5, false);
+            QCOMPARE(dialog->choice().csv, false);
+            dialog->close();
+        }
+        for (const char* key : {"export/session", "export/target", "export/choice"})
             QSettings().remove(QLatin1String(key));
     }
 
