@@ -628,8 +628,15 @@ void MainWindow::openSessionDialog()
 {
     if (refused(Control::ChangeSetup))
         return;
+    // Beside the open session, else where the last one was made (it opened in the working
+    // folder when the default one did not exist).
+    QString start = session_ ? QFileInfo(session_->dir()).absolutePath() : QString();
+    if (start.isEmpty() && options_.persistSettings)
+        start = QSettings().value(QStringLiteral("session/parent")).toString();
+    if (start.isEmpty() || !QFileInfo(start).isDir())
+        start = defaultSessionRoot();
     // Qt's own chooser, never the desktop's: Esc must reach the emergency stop's filter.
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open session folder"), defaultSessionRoot(),
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open session folder"), start,
                                                           QFileDialog::ShowDirsOnly | QFileDialog::DontUseNativeDialog);
     if (!dir.isEmpty() && !refused(Control::ChangeSetup))
         openSession(dir);

@@ -32,6 +32,7 @@
 #include <QAbstractButton>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFileDialog>
 #include <QRadioButton>
 #include <QLabel>
 #include <QLineEdit>
@@ -703,6 +704,31 @@ private slots:
         }
         for (const char* key : {"motion/sine", "motion/cycles", "motion/jogStep_mm"})
             QSettings().remove(QLatin1String(key));
+    }
+
+    // Open session… starts beside the open session (it started in the working folder).
+    void openSessionStartsBesideTheOpenOne()
+    {
+        QTemporaryDir tmp;
+        const QString a = tmp.filePath(QStringLiteral("a"));
+        nb::Session::create(a, {});
+        nb::MainWindow w(options(a, false));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QAction* open = nullptr;
+        for (QAction* action : w.findChildren<QAction*>())
+            if (action->text() == QStringLiteral("&Open session…"))
+                open = action;
+        QVERIFY(open);
+        QString shown;
+        QTimer::singleShot(200, &w, [&] {
+            if (auto* chooser = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())) {
+                shown = chooser->directory().absolutePath();
+                chooser->reject();
+            }
+        });
+        open->trigger();
+        QCOMPARE(QDir(shown).canonicalPath(), QDir(tmp.path()).canonicalPath());
     }
 
     // Export session… opens where the last export of this session went, with its formats: it
