@@ -133,7 +133,7 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     connect(panel_, &ControlPanel::enableRequested, this, [this](bool on) { engine_->enableStage(on); });
     connect(panel_, &ControlPanel::biasRequested, this, &MainWindow::biasOrInsist);
     connect(panel_, &ControlPanel::zeroRequested, this, &MainWindow::zeroOrInsist);
-    connect(panel_, &ControlPanel::forceLimitChanged, this, [this](double limit) { engine_->setForceLimit(limit); });
+    connect(panel_, &ControlPanel::forceLimitChanged, this, [this](double limit) { engine_->setForceLimit(limit, !isVisible()); });
     connect(panel_, &ControlPanel::forceLimitChanged, plots_, &ForcePlots::setForceLimit);
     connect(panel_, &ControlPanel::startRequested, this, &MainWindow::startRun);
     connect(panel_, &ControlPanel::withdrawRequested, this, [this](double v) {

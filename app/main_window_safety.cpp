@@ -47,7 +47,9 @@ void MainWindow::installSafety()
         engine_->enableStage(true);
         showMessage(tr("Emergency stop reset: the stage is enabled again."));
     });
-    connect(panel_, &ControlPanel::withdrawForceLimitChanged, this, [this](double n) { engine_->setWithdrawForceLimit(n); });
+    // Before the window shows, a change is the settings' being restored, not the operator's: no
+    // echo ("withdrawal force limit 6 N" stood in the status line at start).
+    connect(panel_, &ControlPanel::withdrawForceLimitChanged, this, [this](double n) { engine_->setWithdrawForceLimit(n, !isVisible()); });
     connect(panel_, &ControlPanel::withdrawToRequested, this, [this](double v, double target_mm) {
         if (refused(Control::Withdraw))
             return;

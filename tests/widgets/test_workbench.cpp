@@ -689,17 +689,25 @@ private slots:
             jog->setCurrentIndex(jog->findData(0.1));
             QVERIFY(jog->currentIndex() >= 0);
             p->setForceLimit(2.0);
+            p->setWithdrawForceLimit(6.0);
             // No close(): the window goes as a crash takes it, without its closeEvent.
         }
         {
             nb::MainWindow w(o);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
             nb::ControlPanel* p = w.controlPanel();
+            // The limits restored are no news for the status line ("withdrawal force limit 6 N").
+            QTest::qWait(500);
+            QVERIFY2(!w.statusBar()->currentMessage().contains(QStringLiteral("force limit")), qPrintable(w.statusBar()->currentMessage()));
+            QCOMPARE(p->withdrawForceLimit(), 6.0);
             QVERIFY(p->findChild<QRadioButton*>(QStringLiteral("sine"))->isChecked());
             QCOMPARE(p->findChild<QSpinBox*>(QStringLiteral("cycles"))->value(), 4);
             QCOMPARE(p->findChild<QComboBox*>(QStringLiteral("jogStep"))->currentData().toDouble(), 0.1);
             QCOMPARE(p->forceLimit(), 2.0);
             p->findChild<QRadioButton*>(QStringLiteral("linear"))->setChecked(true);
             p->setForceLimit(8.0);
+            p->setWithdrawForceLimit(9.5);
             QVERIFY(w.close());
         }
         for (const char* key : {"motion/sine", "motion/cycles", "motion/jogStep_mm"})
