@@ -397,6 +397,9 @@ bool MainWindow::openSession(const QString& dir)
         if (!news.isEmpty()) {
             showMessage(news.join(QLatin1Char(' ')), true);
             warnModeless(this, tr("Interrupted runs"), news.join(QStringLiteral("\n\n")))->setObjectName(QStringLiteral("interruptedRuns"));
+        } else {
+            // "No session open" stood below the session opened from the welcome.
+            showMessage(tr("Session %1 open").arg(QDir::toNativeSeparators(session_->dir())));
         }
     } catch (const SessionError& e) {
         QMessageBox::warning(this, tr("Open session"), e.message());

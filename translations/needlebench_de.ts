@@ -412,12 +412,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+284"/>
+        <location line="+295"/>
         <source>2. Motion</source>
         <translation>2. Bewegung</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-292"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
@@ -435,12 +435,12 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+432"/>
+        <location line="+474"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="-450"/>
+        <location line="-492"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -475,18 +475,18 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>3. Lauf</translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+472"/>
         <source>To start (%1 mm)</source>
         <translation>Zum Start (%1 mm)</translation>
     </message>
     <message>
-        <location line="-518"/>
-        <location line="+408"/>
+        <location line="-560"/>
+        <location line="+450"/>
         <source>&amp;Enable stage</source>
         <translation>Achse &amp;einschalten</translation>
     </message>
     <message>
-        <location line="-405"/>
+        <location line="-447"/>
         <source>&amp;Bias force sensor</source>
         <translation>Kraftsensor &amp;tarieren</translation>
     </message>
@@ -617,7 +617,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location line="+194"/>
+        <location line="+236"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
         <translation>Der Sinus würde %1 mm erreichen, jenseits des Verfahrwegs der Achse.</translation>
     </message>
@@ -654,26 +654,26 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>angehalten</translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+231"/>
+        <location line="-272"/>
+        <location line="+273"/>
         <source>enabled</source>
         <translation>eingeschaltet</translation>
     </message>
     <message>
-        <location line="-231"/>
-        <location line="+231"/>
+        <location line="-273"/>
+        <location line="+273"/>
         <source>disabled</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+234"/>
+        <location line="-275"/>
+        <location line="+276"/>
         <source>yes (%1 V)</source>
         <translation>ja (%1 V)</translation>
     </message>
     <message>
-        <location line="-232"/>
-        <location line="+234"/>
+        <location line="-274"/>
+        <location line="+276"/>
         <source>at rest</source>
         <translation>in Ruhe</translation>
     </message>
@@ -683,8 +683,8 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>keine Aufzeichnung</translation>
     </message>
     <message>
-        <location line="-238"/>
-        <location line="+232"/>
+        <location line="-280"/>
+        <location line="+274"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
@@ -694,21 +694,21 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1 (Überläufe %2)</translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-281"/>
+        <location line="+282"/>
         <source>%1 N</source>
         <translation>%1 N</translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-281"/>
+        <location line="+282"/>
         <location line="+45"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location line="-284"/>
-        <location line="+244"/>
+        <location line="-326"/>
+        <location line="+286"/>
         <source>%1 N (%2 %)</source>
         <translation>%1 N (%2 %)</translation>
     </message>
@@ -734,18 +734,18 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt zurücksetzen (Achse einschalten)</translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-293"/>
         <source>Jog (never recorded)</source>
         <translation>Tippbetrieb (nie aufgezeichnet)</translation>
     </message>
     <message>
         <location line="-109"/>
-        <location line="+309"/>
+        <location line="+351"/>
         <source>Stop (keeps recording)</source>
         <translation>Stopp (zeichnet weiter)</translation>
     </message>
     <message>
-        <location line="-305"/>
+        <location line="-347"/>
         <source>End run (closes file)</source>
         <translation>Lauf beenden (Datei zu)</translation>
     </message>
@@ -756,12 +756,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+383"/>
+        <location line="+425"/>
         <source>To start</source>
         <translation>Zum Start</translation>
     </message>
     <message>
-        <location line="-361"/>
+        <location line="-403"/>
         <source>Sampling</source>
         <translation>Abtastung</translation>
     </message>
@@ -777,17 +777,17 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+235"/>
+        <location line="+277"/>
         <source>%1 mm/s</source>
         <translation>%1 mm/s</translation>
     </message>
     <message>
-        <location line="-215"/>
+        <location line="-257"/>
         <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
         <translation>Bewegungen der Nadel ohne Aufzeichnung: Schritte hinein und heraus oder zu einer Position</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+68"/>
         <source>%1 %2 cannot be set here (%3 to %4 in steps of %5)</source>
         <translation>%1 %2 lässt sich hier nicht einstellen (%3 bis %4 in Schritten von %5)</translation>
     </message>
@@ -797,12 +797,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1 Zyklen lassen sich hier nicht einstellen (%2 bis %3)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>2. Motion (set by the plan)</source>
         <translation>2. Bewegung (vom Plan gesetzt)</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+151"/>
         <source>Withdraw (recorded)</source>
         <translation>Rückzug (aufgezeichnet)</translation>
     </message>
@@ -1434,7 +1434,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt zurückgesetzt: Die Achse ist wieder eingeschaltet.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Withdrawing to the start position, %1 mm (not recorded)</source>
         <translation>Zurückziehen zur Startposition, %1 mm (nicht aufgezeichnet)</translation>
     </message>
@@ -1444,7 +1444,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+540"/>
+        <location filename="../app/main_window.cpp" line="+575"/>
         <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1507,7 +1507,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-446"/>
+        <location filename="../app/main_window.cpp" line="-475"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1638,17 +1638,22 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="-17"/>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Open session</source>
         <translation>Sitzung öffnen</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-29"/>
         <source>%1 is open in another NeedleBench (%2). Close it there first, or open another session.</source>
         <translation>%1 ist in einem anderen NeedleBench offen (%2). Dort zuerst schließen oder eine andere Sitzung öffnen.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+26"/>
+        <source>Session %1 open</source>
+        <translation>Sitzung %1 geöffnet</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>NeedleBench – %1</source>
         <translation>NeedleBench – %1</translation>
     </message>
@@ -1688,7 +1693,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Zum Exportieren eine Sitzung öffnen.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+26"/>
         <source>Session exported into %1</source>
         <translation>Sitzung nach %1 exportiert</translation>
     </message>
@@ -1708,7 +1713,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzungsdetails gespeichert; die nächsten Läufe tragen sie.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+17"/>
         <source>Open session folder</source>
         <translation>Sitzungsordner öffnen</translation>
     </message>
@@ -1786,12 +1791,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Auf der Nadel liegt eine Kraft von %1 N: sie steckt vielleicht im Gewebe. Zuerst zurückziehen oder beenden und sie dort lassen?</translation>
     </message>
     <message>
-        <location line="-755"/>
+        <location line="-790"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+609"/>
+        <location line="+644"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1812,7 +1817,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-556"/>
+        <location line="-585"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -411,12 +411,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+284"/>
+        <location line="+295"/>
         <source>2. Motion</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-292"/>
         <source>Linear</source>
         <translation type="unfinished"></translation>
     </message>
@@ -434,12 +434,12 @@ or without contact</source>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+432"/>
+        <location line="+474"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-450"/>
+        <location line="-492"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -474,18 +474,18 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+472"/>
         <source>To start (%1 mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-518"/>
-        <location line="+408"/>
+        <location line="-560"/>
+        <location line="+450"/>
         <source>&amp;Enable stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-405"/>
+        <location line="-447"/>
         <source>&amp;Bias force sensor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -616,7 +616,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+194"/>
+        <location line="+236"/>
         <source>The sine would reach %1 mm, past the stage&apos;s travel.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -653,26 +653,26 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-230"/>
-        <location line="+231"/>
+        <location line="-272"/>
+        <location line="+273"/>
         <source>enabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-231"/>
-        <location line="+231"/>
+        <location line="-273"/>
+        <location line="+273"/>
         <source>disabled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+234"/>
+        <location line="-275"/>
+        <location line="+276"/>
         <source>yes (%1 V)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-232"/>
-        <location line="+234"/>
+        <location line="-274"/>
+        <location line="+276"/>
         <source>at rest</source>
         <translation type="unfinished"></translation>
     </message>
@@ -682,8 +682,8 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-238"/>
-        <location line="+232"/>
+        <location line="-280"/>
+        <location line="+274"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
     </message>
@@ -693,21 +693,21 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-281"/>
+        <location line="+282"/>
         <source>%1 N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-281"/>
+        <location line="+282"/>
         <location line="+45"/>
         <source>%1 mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-284"/>
-        <location line="+244"/>
+        <location line="-326"/>
+        <location line="+286"/>
         <source>%1 N (%2 %)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -733,18 +733,18 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-293"/>
         <source>Jog (never recorded)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="-109"/>
-        <location line="+309"/>
+        <location line="+351"/>
         <source>Stop (keeps recording)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-305"/>
+        <location line="-347"/>
         <source>End run (closes file)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -755,12 +755,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+383"/>
+        <location line="+425"/>
         <source>To start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-361"/>
+        <location line="-403"/>
         <source>Sampling</source>
         <translation type="unfinished"></translation>
     </message>
@@ -776,17 +776,17 @@ or without contact</source>
     </message>
     <message>
         <location line="+26"/>
-        <location line="+235"/>
+        <location line="+277"/>
         <source>%1 mm/s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-215"/>
+        <location line="-257"/>
         <source>Unrecorded moves of the needle: steps in and out, or to a position</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+68"/>
         <source>%1 %2 cannot be set here (%3 to %4 in steps of %5)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -796,12 +796,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>2. Motion (set by the plan)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+151"/>
         <source>Withdraw (recorded)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1433,7 +1433,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Withdrawing to the start position, %1 mm (not recorded)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1443,7 +1443,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+540"/>
+        <location filename="../app/main_window.cpp" line="+575"/>
         <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1506,7 +1506,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-446"/>
+        <location filename="../app/main_window.cpp" line="-475"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1636,17 +1636,22 @@ or without contact</source>
     </message>
     <message>
         <location line="-17"/>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Open session</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-29"/>
         <source>%1 is open in another NeedleBench (%2). Close it there first, or open another session.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+26"/>
+        <source>Session %1 open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>NeedleBench – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1686,7 +1691,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+26"/>
         <source>Session exported into %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1706,7 +1711,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+17"/>
         <source>Open session folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1780,12 +1785,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-755"/>
+        <location line="-790"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+609"/>
+        <location line="+644"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1806,7 +1811,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-556"/>
+        <location line="-585"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

@@ -737,6 +737,16 @@ private slots:
         });
         open->trigger();
         QCOMPARE(QDir(shown).canonicalPath(), QDir(tmp.path()).canonicalPath());
+
+        // Opened from a window that had none, the status line no longer says there is none.
+        nb::WorkbenchOptions none = options(QString(), false);
+        none.welcome = false;
+        nb::MainWindow bare(none);
+        QVERIFY(bare.statusBar()->currentMessage().startsWith(QStringLiteral("No session open")));
+        const QString b = tmp.filePath(QStringLiteral("b"));
+        nb::Session::create(b, {});
+        QVERIFY(bare.openSession(b));
+        QVERIFY2(!bare.statusBar()->currentMessage().startsWith(QStringLiteral("No session open")), qPrintable(bare.statusBar()->currentMessage()));
     }
 
     // Export session… opens where the last export of this session went, with its formats: it
