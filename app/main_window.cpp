@@ -24,6 +24,7 @@
 #include "widgets/session_info_dialog.h"
 #include "widgets/session_view.h"
 
+#include <QAbstractButton>
 #include <QLocale>
 #include <QActionGroup>
 #include <QRegularExpression>
@@ -900,6 +901,9 @@ void MainWindow::closeEvent(QCloseEvent* event)
         }
         quitQuestion_ = new QMessageBox(QMessageBox::Question, tr("Quit"), question, QMessageBox::Yes | QMessageBox::No, this);
         quitQuestion_->setObjectName(QStringLiteral("quitQuestion"));
+        // Said, not Yes and No: "Withdraw it first, or quit and leave it there?" has no yes.
+        quitQuestion_->button(QMessageBox::Yes)->setText(tr("Quit"));
+        quitQuestion_->button(QMessageBox::No)->setText(tr("Don't quit"));
         quitQuestion_->setDefaultButton(QMessageBox::No);
         connect(quitQuestion_, &QMessageBox::finished, this, [this](int answer) {
             if (answer != QMessageBox::Yes)

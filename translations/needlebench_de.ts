@@ -1399,7 +1399,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+69"/>
+        <location filename="../app/main_window.cpp" line="+70"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1791,7 +1791,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Auf der Nadel liegt eine Kraft von %1 N: sie steckt vielleicht im Gewebe. Zuerst zurückziehen oder beenden und sie dort lassen?</translation>
     </message>
     <message>
-        <location line="-790"/>
+        <location line="+28"/>
+        <source>Don&apos;t quit</source>
+        <translation>Nicht beenden</translation>
+    </message>
+    <message>
+        <location line="-818"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
@@ -1813,11 +1818,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+157"/>
+        <location line="+3"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-585"/>
+        <location line="-588"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>

@@ -1398,7 +1398,7 @@ or without contact</source>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+69"/>
+        <location filename="../app/main_window.cpp" line="+70"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1785,7 +1785,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-790"/>
+        <location line="+28"/>
+        <source>Don&apos;t quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-818"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1807,11 +1812,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+157"/>
+        <location line="+3"/>
         <source>Quit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-585"/>
+        <location line="-588"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>

@@ -536,6 +536,9 @@ private slots:
         auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
         QVERIFY(question && question->isVisible());
         QVERIFY2(question->text().contains(QStringLiteral("N is on the needle")), qPrintable(question->text()));
+        // Its answers are said: the question asks "withdraw first, or quit?", which no Yes answers.
+        QCOMPARE(question->button(QMessageBox::Yes)->text(), QStringLiteral("Quit"));
+        QCOMPARE(question->button(QMessageBox::No)->text(), QStringLiteral("Don't quit"));
         question->button(QMessageBox::No)->click();
         QVERIFY(w.isVisible());
     }
