@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "core/local_number.h"
 
 #include "widgets/modeless_dialogs.h"
 #include "core/run_file.h"
@@ -243,7 +244,7 @@ void MainWindow::attachEngine()
         liveRun_->mark(devices::LiveMarkKind::Fault);
     });
     connect(e, &devices::AcquisitionEngine::forceLimitTripped, this, [this](double force, double position) {
-        showMessage(tr("Force limit tripped at %1 N, %2 mm: the stage was stopped").arg(force, 0, 'f', 2).arg(position, 0, 'f', 2), true);
+        showMessage(tr("Force limit tripped at %1 N, %2 mm: the stage was stopped").arg(localNumber(force, 2)).arg(localNumber(position, 2)), true);
         liveRun_->mark(devices::LiveMarkKind::ForceLimit);
     });
     connect(e, &devices::AcquisitionEngine::message, this, [this](const QString& text) {
@@ -729,7 +730,7 @@ void MainWindow::onStatus(const devices::EngineStatus& s)
     // and port) is shortened here and whole in the tooltip: the messages beside it need room.
     const QString devices = engine_->deviceDescription();
     const auto summary = [this](double rateHz, qint64 samples, qint64 dropped) {
-        return tr("%1 · %2 Hz · %3 samples · dropped %4").arg(summaryDevices_).arg(rateHz, 0, 'f', 0).arg(samples).arg(dropped);
+        return tr("%1 · %2 Hz · %3 samples · dropped %4").arg(summaryDevices_).arg(localNumber(rateHz, 0)).arg(samples).arg(dropped);
     };
     // Measured when the devices change, not at every status (25 a second).
     if (devices != summaryDevicesWhole_) {

@@ -2,6 +2,7 @@
 // one mode at a time, bias and zero only on purpose under load, jog, and the simulated rig's
 // settings. Kept apart from main_window.cpp so the rules stay in one place.
 #include "main_window.h"
+#include "core/local_number.h"
 
 #include "emergency_stop_filter.h"
 
@@ -55,7 +56,7 @@ void MainWindow::installSafety()
             return;
         noteMotionCommand();
         engine_->withdraw(v, target_mm);
-        showMessage(tr("Withdrawing to the start position, %1 mm (not recorded)").arg(target_mm, 0, 'f', 2));
+        showMessage(tr("Withdrawing to the start position, %1 mm (not recorded)").arg(localNumber(target_mm, 2)));
     });
     connect(panel_, &ControlPanel::jogRequested, this, [this](double delta_mm, double v) {
         if (refused(Control::Jog))
@@ -227,7 +228,7 @@ void MainWindow::chooseSimulatedRig()
         showMessage(tr("Simulated rig: %1, seed %2, %3 Hz")
                         .arg(spec.simulated.tissue)
                         .arg(spec.simulated.seed)
-                        .arg(options_.rateHz, 0, 'f', 0));
+                        .arg(localNumber(options_.rateHz, 0)));
 }
 
 }  // namespace nb

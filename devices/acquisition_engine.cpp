@@ -1,4 +1,5 @@
 #include "acquisition_engine.h"
+#include "core/local_number.h"
 
 #include <QLocale>
 
@@ -324,7 +325,7 @@ void AcquisitionEngine::startRun(const RunPlan& plan)
             s.approach = plan;
             s.sawApproachMoving = false;
             beginMove({std::max(0.1, plan.approachVelocity_mm_s), *plan.startAt_mm}, false);
-            emit message(tr("moving to the start position %1 mm (not recorded)").arg(*plan.startAt_mm, 0, 'f', 2));
+            emit message(tr("moving to the start position %1 mm (not recorded)").arg(localNumber(*plan.startAt_mm, 2)));
             return;
         }
         openRun(plan);
@@ -451,7 +452,7 @@ void AcquisitionEngine::moveTo(double position_mm, double velocity_mm_s)
             return;
         }
         beginMove({std::clamp(std::fabs(velocity_mm_s), 0.01, 50.0), position_mm}, false);
-        emit message(tr("moving to %1 mm (not recorded)").arg(position_mm, 0, 'f', 2));
+        emit message(tr("moving to %1 mm (not recorded)").arg(localNumber(position_mm, 2)));
     });
 }
 
@@ -657,7 +658,7 @@ void AcquisitionEngine::handle(const ProcessorEvent& e)
     case ProcessorEvent::Kind::BiasDone:
         s.statusDirty = true;
         ++s.biasCount;
-        emit message(tr("force sensor biased: V0 = %1 V (%2 samples)").arg(e.bias_V, 0, 'f', 5).arg(e.count));
+        emit message(tr("force sensor biased: V0 = %1 V (%2 samples)").arg(localNumber(e.bias_V, 5)).arg(e.count));
         break;
     case ProcessorEvent::Kind::ForceLimit:
         s.statusDirty = true;
@@ -671,9 +672,9 @@ void AcquisitionEngine::handle(const ProcessorEvent& e)
         }
         emit forceLimitTripped(e.force_N, e.position_mm);
         emit message(tr("force limit: %1 N > %2 N at %3 mm; stage stopped")
-                         .arg(e.force_N, 0, 'f', 3)
+                         .arg(localNumber(e.force_N, 3))
                          .arg(e.limit_N)
-                         .arg(e.position_mm, 0, 'f', 3));
+                         .arg(localNumber(e.position_mm, 3)));
         if (s.runOpen && !s.trip) {
             s.trip = e;
             s.pendingEndAt = e.time_s + config_.forceLimitRecord_s;
@@ -694,12 +695,12 @@ void AcquisitionEngine::handle(const ProcessorEvent& e)
             s.punctureStop = e;
             s.pendingEndAt = e.time_s + kStopRecord_s;
             s.pendingEndReason = EndReason::Puncture;
-            emit message(tr("puncture %1 at %2 mm: stage stopped").arg(e.count).arg(e.position_mm, 0, 'f', 3));
+            emit message(tr("puncture %1 at %2 mm: stage stopped").arg(e.count).arg(localNumber(e.position_mm, 3)));
         } else if (s.slowAfterPuncture > 0 && e.count == 1) {
             LinearMotion slow = s.runLinear;
             slow.velocity_mm_s = s.slowAfterPuncture;
             s.dev.stage->moveLinear(slow);
-            emit message(tr("puncture at %1 mm: slowing to %2 mm/s").arg(e.position_mm, 0, 'f', 3).arg(s.slowAfterPuncture));
+            emit message(tr("puncture at %1 mm: slowing to %2 mm/s").arg(localNumber(e.position_mm, 3)).arg(s.slowAfterPuncture));
         }
         emit punctureDetected(e.position_mm, e.force_N, static_cast<int>(e.count), stop);
         s.statusDirty = true;

@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+44"/>
+        <location filename="../widgets/control_panel.cpp" line="+46"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
@@ -198,7 +198,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+29"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+30"/>
         <source>Calibrate force sensor – %1</source>
         <translation>Kraftsensor kalibrieren – %1</translation>
     </message>
@@ -371,7 +371,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+33"/>
+        <location filename="../widgets/control_panel.cpp" line="+26"/>
         <source>EMERGENCY STOP (Esc)</source>
         <translation>NOT-HALT (Esc)</translation>
     </message>
@@ -1399,7 +1399,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+70"/>
+        <location filename="../app/main_window.cpp" line="+71"/>
         <source>NeedleBench</source>
         <translation>NeedleBench</translation>
     </message>
@@ -1429,7 +1429,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Die eingestellten Geräte konnten nicht geöffnet werden (%1); der simulierte Versuchsstand wird verwendet.</translation>
     </message>
     <message>
-        <location filename="../app/main_window_safety.cpp" line="+48"/>
+        <location filename="../app/main_window_safety.cpp" line="+49"/>
         <source>Emergency stop reset: the stage is enabled again.</source>
         <translation>Not-Halt zurückgesetzt: Die Achse ist wieder eingeschaltet.</translation>
     </message>
@@ -2266,7 +2266,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+81"/>
+        <location filename="../widgets/review_workspace.cpp" line="+82"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -7511,7 +7511,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+111"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+112"/>
         <source>Stiffness before puncture: %1</source>
         <translation>Steifigkeit vor dem Durchstich: %1</translation>
     </message>
@@ -7771,7 +7771,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+199"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+200"/>
         <source>stage enabled; fault cleared</source>
         <translation>Achse eingeschaltet; Fehler zurückgesetzt</translation>
     </message>

@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+44"/>
+        <location filename="../widgets/control_panel.cpp" line="+46"/>
         <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -197,7 +197,7 @@ or without contact</source>
 <context>
     <name>nb::CalibrationWizard</name>
     <message>
-        <location filename="../widgets/calibration_wizard.cpp" line="+29"/>
+        <location filename="../widgets/calibration_wizard.cpp" line="+30"/>
         <source>Calibrate force sensor – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -370,7 +370,7 @@ or without contact</source>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+33"/>
+        <location filename="../widgets/control_panel.cpp" line="+26"/>
         <source>EMERGENCY STOP (Esc)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1398,7 +1398,7 @@ or without contact</source>
 <context>
     <name>nb::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="+70"/>
+        <location filename="../app/main_window.cpp" line="+71"/>
         <source>NeedleBench</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1428,7 +1428,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window_safety.cpp" line="+48"/>
+        <location filename="../app/main_window_safety.cpp" line="+49"/>
         <source>Emergency stop reset: the stage is enabled again.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2260,7 +2260,7 @@ Stop the stage now (emergency stop) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+81"/>
+        <location filename="../widgets/review_workspace.cpp" line="+82"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7409,7 +7409,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
 <context>
     <name>nb::TrViews</name>
     <message>
-        <location filename="../widgets/analysis/analysis_plots.cpp" line="+111"/>
+        <location filename="../widgets/analysis/analysis_plots.cpp" line="+112"/>
         <source>Stiffness before puncture: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7666,7 +7666,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::devices::AcquisitionEngine</name>
     <message>
-        <location filename="../devices/acquisition_engine.cpp" line="+199"/>
+        <location filename="../devices/acquisition_engine.cpp" line="+200"/>
         <source>stage enabled; fault cleared</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1,4 +1,5 @@
 #include "calibration_wizard.h"
+#include "core/local_number.h"
 
 #include "core/fit_error.h"
 
@@ -209,8 +210,8 @@ void CalibrationWizard::refuseSaturated(int row, double volts)
     saturationNote_ = tr("%1 g saturates the input (%2 V, the range ends at ±%3 V): the point is refused. "
                          "Calibrate only up to the masses the sensor can read.")
                           .arg(massAt(row))
-                          .arg(volts, 0, 'f', 4)
-                          .arg(fullScale_V_, 0, 'f', 1);
+                          .arg(localNumber(volts, 4))
+                          .arg(localNumber(fullScale_V_, 1));
     suspect_->setText(saturationNote_);
 }
 
@@ -464,7 +465,7 @@ void CalibrationWizard::refit()
         if (worst >= 0)
             suspect_->setText(tr("Suspect point: %1 g lies %2× the scatter of the other points off their line. Untick it to leave it out.")
                                                 .arg(massAt(worst))
-                                                .arg(worstSigmas_, 0, 'f', 0));
+                                                .arg(localNumber(worstSigmas_, 0)));
         fitLabel_->setText(text);
     } else if (points.size() < 2) {
         suspect_->clear();

@@ -1,5 +1,7 @@
 #include "control_panel.h"
 
+#include "core/local_number.h"
+
 #include "core/data_names.h"
 
 #include <QSettings>
@@ -44,14 +46,7 @@ QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int de
 QString yesNo(bool on) { return on ? QObject::tr("yes") : QObject::tr("no"); }
 
 // Numbers as the spin boxes beside them write them (4,00 in German), without group separators.
-QString num(double value, int decimals)
-{
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    // Noise about zero reads "0.000", not "-0.000".
-    const double scale = std::pow(10.0, decimals);
-    return locale.toString(std::round(value * scale) == 0.0 ? 0.0 : value, 'f', decimals);
-}
+QString num(double value, int decimals) { return localNumber(value, decimals); }
 
 // The panel must fit a 1366x768 laptop without scrolling: group boxes with tight margins.
 template <typename Layout>

@@ -1,4 +1,5 @@
 #include "review_workspace.h"
+#include "core/local_number.h"
 
 #include "widgets/modeless_dialogs.h"
 
@@ -793,7 +794,7 @@ void ReviewWorkspace::markEventInRecording()
     if (markVideo_)
         applyMarkedEvent();
     else
-        showStatus(tr("Event marked in the force record at %1 s; now step the video to it and mark it there").arg(cursor_, 0, 'f', 3));
+        showStatus(tr("Event marked in the force record at %1 s; now step the video to it and mark it there").arg(localNumber(cursor_, 3)));
 }
 
 void ReviewWorkspace::markEventInVideo()
@@ -804,7 +805,7 @@ void ReviewWorkspace::markEventInVideo()
     if (markRecording_)
         applyMarkedEvent();
     else
-        showStatus(tr("Event marked in the video at %1 s; now mark it in the force record").arg(*markVideo_, 0, 'f', 3));
+        showStatus(tr("Event marked in the video at %1 s; now mark it in the force record").arg(localNumber(*markVideo_, 3)));
 }
 
 void ReviewWorkspace::applyMarkedEvent()
@@ -826,14 +827,14 @@ void ReviewWorkspace::applyMarkedEvent()
         after.mapping = *both;
         changeSync(after, tr("set the offset and drift from two events"));
         showStatus(tr("Offset and drift set from two events (%1 s apart): drift %2 ppm")
-                       .arg(apart_s, 0, 'f', 2)
-                       .arg(both->drift * 1e6, 0, 'f', 0));
+                       .arg(localNumber(apart_s, 2))
+                       .arg(localNumber(both->drift * 1e6, 0)));
     } else {
         after.mapping = TimelineMapping::fromEvent(r, v, mapping_.drift);
         changeSync(after, tr("set the offset from an event"));
         if (both)
             showStatus(tr("Offset set. With the event before, it would mean a drift of %1 ppm, which no clock has: "
-                          "check both marks; the drift was kept").arg(both->drift * 1e6, 0, 'f', 0));
+                          "check both marks; the drift was kept").arg(localNumber(both->drift * 1e6, 0)));
         else
             showStatus(tr("Offset set; mark a second event, a second or more away, in both to set the drift too"));
     }
@@ -894,7 +895,7 @@ void ReviewWorkspace::handleLabelKey(int key)
         const Label l{track, label, std::min(start, cursor_), std::max(start, cursor_), {}};
         if (l.end_s > l.start_s && model_->canPlace(l)) {
             undo_->push(new AddLabelCommand(model_, l));
-            showStatus(tr("%1 on %2 closed at %3 s").arg(label, trackDisplayName(track)).arg(cursor_, 0, 'f', 3));
+            showStatus(tr("%1 on %2 closed at %3 s").arg(label, trackDisplayName(track)).arg(localNumber(cursor_, 3)));
         } else {
             showStatus(tr("%1 on %2 was not closed (it would be empty or overlap another phase): not added").arg(label, trackDisplayName(track)));
         }
@@ -1193,13 +1194,13 @@ void ReviewWorkspace::updateSyncUi()
         return;
     }
     QString text = tr("found %1 s (confidence %2, r = %3)")
-                       .arg(pendingSync_->offset_s, 0, 'f', 3)
-                       .arg(pendingSync_->confidence, 0, 'f', 2)
-                       .arg(std::abs(pendingSync_->correlation), 0, 'f', 2);
+                       .arg(localNumber(pendingSync_->offset_s, 3))
+                       .arg(localNumber(pendingSync_->confidence, 2))
+                       .arg(localNumber(std::abs(pendingSync_->correlation), 2));
     if (pendingSync_->drift != 0.0)
-        text += tr(", drift %1 %").arg(100.0 * pendingSync_->drift, 0, 'f', 3);
+        text += tr(", drift %1 %").arg(localNumber(100.0 * pendingSync_->drift, 3));
     if (pendingSync_->pictureLag_s >= 0.0005)
-        text += tr(", coded pictures %1 ms late (allowed for)").arg(1000.0 * pendingSync_->pictureLag_s, 0, 'f', 0);
+        text += tr(", coded pictures %1 ms late (allowed for)").arg(localNumber(1000.0 * pendingSync_->pictureLag_s, 0));
     if (low)
         text = tr("LOW CONFIDENCE: %1; check it on an event before accepting").arg(text);
     syncLabel_->setText(text);

@@ -1,6 +1,7 @@
 // The operator's sequence: each control enabled only when its prerequisites hold, with the
 // reason in its tooltip; the pure rules first, then the real panel driven with QTest.
 #include "widgets/control_panel.h"
+#include "core/local_number.h"
 #include "devices/interlocks.h"
 
 #include <QAbstractButton>
@@ -19,6 +20,20 @@ using nb::permission;
 class TestInterlocks : public QObject {
     Q_OBJECT
 private slots:
+    // What the window says writes numbers as the operator's language does: "fahre auf 14.00 mm"
+    // stood in the German status line. No group separator ("1001 ppm"), no "-0,000".
+    void numbersAreWrittenInTheOperatorsLanguage()
+    {
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        QCOMPARE(nb::localNumber(14.0, 2), QStringLiteral("14,00"));
+        QCOMPARE(nb::localNumber(1001.0, 0), QStringLiteral("1001"));
+        QCOMPARE(nb::localNumber(-0.0004, 3), QStringLiteral("0,000"));
+        QLocale::setDefault(QLocale::c());
+        QCOMPARE(nb::localNumber(14.0, 2), QStringLiteral("14.00"));
+        QLocale::setDefault(before);
+    }
+
     void escapeStopsOnlyWhileBusy()
     {
         InterlockState s;

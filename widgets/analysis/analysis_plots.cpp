@@ -1,4 +1,5 @@
 #include "analysis_plots.h"
+#include "core/local_number.h"
 #include "core/data_names.h"
 #include "core/tr.h"
 
@@ -217,7 +218,7 @@ void plotFrictionVelocity(QCustomPlot* plot, const DatasetRun& run, const Fricti
     QCPCurve* curve = new QCPCurve(plot->xAxis, plot->yAxis);
     curve->setData(mx, my);
     curve->setPen(QPen(QColor(213, 94, 0), 2.5));
-    curve->setName(nb::TrViews::tr("Karnopp fit (%1 Hz)").arg(f.fit.frequency_hz, 0, 'f', 2));
+    curve->setName(nb::TrViews::tr("Karnopp fit (%1 Hz)").arg(localNumber(f.fit.frequency_hz, 2)));
     // Slow withdrawal with little friction is where the data leave room for the legend.
     alignLegend(plot, Qt::AlignBottom | Qt::AlignRight);
     fitRanges(plot);
@@ -282,7 +283,7 @@ void plotPhases(QCustomPlot* plot, const DatasetRun& run)
 void plotValidation(QCustomPlot* plot, const ValidationResult& v)
 {
     reset(plot,
-          v.ok() ? nb::TrViews::tr("Model against recording: %1 (rms %2 N)").arg(v.run).arg(v.rms_N, 0, 'f', 3)
+          v.ok() ? nb::TrViews::tr("Model against recording: %1 (rms %2 N)").arg(v.run).arg(localNumber(v.rms_N, 3))
                  : nb::TrViews::tr("Model against recording: %1 (%2)").arg(v.run, v.error),
           nb::TrViews::tr("needle position [mm]"), nb::TrViews::tr("force [N]"));
     QVector<double> x(v.recorded.position_mm.begin(), v.recorded.position_mm.end());
