@@ -49,20 +49,22 @@ double estimatedPlanTimeLeft_s(const Plan& plan)
             if (a.started.isValid())
                 starts.push_back(a.started);
     std::sort(starts.begin(), starts.end());
-    double sum_s = 0.0;
-    int gaps = 0;
+    std::vector<double> gaps;
     for (std::size_t i = 1; i < starts.size(); ++i) {
         const double gap_s = starts[i - 1].msecsTo(starts[i]) / 1000.0;
-        if (gap_s > 0.0 && gap_s < 3600.0) {
-            sum_s += gap_s;
-            ++gaps;
-        }
+        if (gap_s > 0.0 && gap_s < 3600.0)
+            gaps.push_back(gap_s);
     }
     const double motion_s = remainingPlanDuration_s(plan);
-    if (gaps == 0)
+    if (gaps.empty())
         return motion_s;
+    // The median gap: a crash and its restart, or a short break, is one long gap and not the
+    // pace (the mean went from 7 to 54 min left over two runs of 30 s).
+    std::sort(gaps.begin(), gaps.end());
+    const std::size_t n = gaps.size();
+    const double pace_s = n % 2 ? gaps[n / 2] : 0.5 * (gaps[n / 2 - 1] + gaps[n / 2]);
     const int left = int(std::count_if(plan.runs.begin(), plan.runs.end(), [](const PlannedRun& r) { return !r.completed(); }));
-    return std::max(motion_s, left * sum_s / gaps);
+    return std::max(motion_s, left * pace_s);
 }
 
 }  // namespace nb

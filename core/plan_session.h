@@ -33,8 +33,8 @@ PlanResumption resumePlan(Plan& plan, const QString& sessionDir);
 namespace nb {
 
 // Time left in a plan, for the operator: the runs not completed times the time one run took
-// from start to start in this plan so far (so the operator's own steps count), or the motion
-// time alone (remainingPlanDuration_s) before two runs have been made.
+// from start to start in this plan so far (the median, so the operator's own steps count and a
+// restart does not), or the motion time alone (remainingPlanDuration_s) before two runs.
 double estimatedPlanTimeLeft_s(const Plan& plan);
 
 }  // namespace nb

@@ -456,6 +456,12 @@ private slots:
         beginAttempt(p, 3, QStringLiteral("run_4_linear.csv"), {}, t0.addSecs(120 + 7200));
         finishAttempt(p, 3, QStringLiteral("completed"), t0.addSecs(120 + 7210));
         QCOMPARE(estimatedPlanTimeLeft_s(p), 17 * 60.0);
+        // A crash and its restart (20 min) is one long gap, not the pace: the mean made it 345 s.
+        beginAttempt(p, 4, QStringLiteral("run_5_linear.csv"), {}, t0.addSecs(120 + 7200 + 1200));
+        finishAttempt(p, 4, QStringLiteral("completed"), t0.addSecs(120 + 7200 + 1210));
+        beginAttempt(p, 5, QStringLiteral("run_6_linear.csv"), {}, t0.addSecs(120 + 7200 + 1260));
+        finishAttempt(p, 5, QStringLiteral("completed"), t0.addSecs(120 + 7200 + 1270));
+        QCOMPARE(estimatedPlanTimeLeft_s(p), 15 * 60.0);
         // Never below the motion still to come.
         Plan fast = generatePlan(tmpl("overall-stiffness"), PlanOrder::Listed, 1);
         beginAttempt(fast, 0, QStringLiteral("a.csv"), {}, t0);
