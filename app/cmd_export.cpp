@@ -96,8 +96,7 @@ int cmdExport(const QStringList& args, Io io)
         return Usage;
     }
     if (fmt == QLatin1String("hdf5") && QFileInfo(target).isFile()) {
-        QFile existing(target);
-        if (!existing.open(QIODevice::ReadOnly) || !existing.read(8).startsWith("\x89HDF\r\n\x1a\n")) {
+        if (!isHdf5File(target)) {
             io.err << "needlebench export: " << nb::TrCli::tr("--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.").arg(target) << '\n';
             return Usage;
         }

@@ -371,7 +371,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+26"/>
+        <location filename="../widgets/control_panel.cpp" line="+23"/>
         <source>EMERGENCY STOP (Esc)</source>
         <translation>NOT-HALT (Esc)</translation>
     </message>
@@ -3354,7 +3354,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--out %1 ist der Sitzungsordner selbst; seine Laufdateien würden ersetzt. Geben Sie einen anderen Ordner an.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.</source>
         <translation>--out %1 existiert und ist keine HDF5-Datei (eine Laufdatei?); sie bleibt erhalten. Geben Sie eine andere Datei an.</translation>
     </message>

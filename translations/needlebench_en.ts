@@ -370,7 +370,7 @@ or without contact</source>
 <context>
     <name>nb::ControlPanel</name>
     <message>
-        <location filename="../widgets/control_panel.cpp" line="+26"/>
+        <location filename="../widgets/control_panel.cpp" line="+23"/>
         <source>EMERGENCY STOP (Esc)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3340,7 +3340,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.</source>
         <translation type="unfinished"></translation>
     </message>

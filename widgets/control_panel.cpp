@@ -45,9 +45,6 @@ QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int de
 
 QString yesNo(bool on) { return on ? QObject::tr("yes") : QObject::tr("no"); }
 
-// Numbers as the spin boxes beside them write them (4,00 in German), without group separators.
-QString num(double value, int decimals) { return localNumber(value, decimals); }
-
 // The panel must fit a 1366x768 laptop without scrolling: group boxes with tight margins.
 template <typename Layout>
 Layout* compact(Layout* l)
@@ -277,9 +274,9 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
     grid->setColumnStretch(3, 1);
     // Room for what a busy rig shows (values never widen the panel by themselves).
     int valueWidth = 0;
-    for (const QString& busy : {tr("%1 Hz").arg(10000), tr("yes (%1 V)").arg(num(-1.2345, 4)), tr("%1 N").arg(num(-12.345, 3)),
-                                tr("%1 mm").arg(num(123.456, 3)), tr("%1 mm/s").arg(num(12.5, 2)),
-                                tr("%1 N (%2 %)").arg(num(-0.25, 2)).arg(-3), tr("enabled"), tr("disabled"), tr("at rest")})
+    for (const QString& busy : {tr("%1 Hz").arg(10000), tr("yes (%1 V)").arg(localNumber(-1.2345, 4)), tr("%1 N").arg(localNumber(-12.345, 3)),
+                                tr("%1 mm").arg(localNumber(123.456, 3)), tr("%1 mm/s").arg(localNumber(12.5, 2)),
+                                tr("%1 N (%2 %)").arg(localNumber(-0.25, 2)).arg(-3), tr("enabled"), tr("disabled"), tr("at rest")})
         valueWidth = std::max(valueWidth, statusBox->fontMetrics().horizontalAdvance(busy) + 2);
     grid->setColumnMinimumWidth(1, valueWidth);
     grid->setColumnMinimumWidth(3, valueWidth);
@@ -478,15 +475,15 @@ QString ControlPanel::motionProblem() const
     if (sine_->isChecked()) {
         const double peak = centre_->value() + amplitude_->value();
         if (peak > 150.0)
-            return tr("The sine would reach %1 mm, past the stage's travel.").arg(num(peak, 1));
+            return tr("The sine would reach %1 mm, past the stage's travel.").arg(localNumber(peak, 1));
         if (centre_->value() - amplitude_->value() < 0.0)
             return tr("The sine would go above 0 mm: make the centre at least the amplitude.");
         return {};
     }
     if (depth_->value() <= status_.position_mm + 0.01)
         return tr("The depth (%1 mm) is not deeper than the needle is now (%2 mm).")
-            .arg(num(depth_->value(), 1))
-            .arg(num(status_.position_mm, 1));
+            .arg(localNumber(depth_->value(), 1))
+            .arg(localNumber(status_.position_mm, 1));
     return {};
 }
 
@@ -551,21 +548,21 @@ void ControlPanel::updateControls()
         }
     };
     const devices::EngineStatus& s = status_;
-    set("devices", s.running ? tr("%1 Hz").arg(num(s.rateHz, 0)) : tr("stopped"), !s.running);
+    set("devices", s.running ? tr("%1 Hz").arg(localNumber(s.rateHz, 0)) : tr("stopped"), !s.running);
     set("stage", s.stageEnabled ? tr("enabled") : tr("disabled"));
-    set("bias", s.biased ? tr("yes (%1 V)").arg(num(s.bias_V, 4)) : yesNo(false), !s.biased);
+    set("bias", s.biased ? tr("yes (%1 V)").arg(localNumber(s.bias_V, 4)) : yesNo(false), !s.biased);
     set("zero", yesNo(s.zeroed), !s.zeroed);
-    set("motion", s.moving ? tr("%1 mm/s").arg(num(s.velocity_mm_s, 2)) : tr("at rest"));
-    set("recording", s.recording ? tr("RECORDING %1, %2 s").arg(s.runPath.section(QLatin1Char('/'), -1)).arg(num(s.runTime_s, 1))
+    set("motion", s.moving ? tr("%1 mm/s").arg(localNumber(s.velocity_mm_s, 2)) : tr("at rest"));
+    set("recording", s.recording ? tr("RECORDING %1, %2 s").arg(s.runPath.section(QLatin1Char('/'), -1)).arg(localNumber(s.runTime_s, 1))
                                  : tr("not recording"));
     set("dropped", tr("%1 (overruns %2)").arg(s.dropped).arg(s.overruns), s.dropped + s.overruns > 0);
-    set("force", tr("%1 N").arg(num(s.force_N, 3)));
-    set("position", tr("%1 mm").arg(num(s.position_mm, 3)));
+    set("force", tr("%1 N").arg(localNumber(s.force_N, 3)));
+    set("position", tr("%1 mm").arg(localNumber(s.position_mm, 3)));
     // Against the limit the engine applies now (the withdrawal one while the needle comes out).
     const double limit = s.running ? s.forceMarginOf_N : state_.forceLimit_N;
     const double margin = s.running ? s.forceMargin_N : state_.forceLimit_N - std::abs(s.force_N);
     set("margin",
-        limit > 0 ? tr("%1 N (%2 %)").arg(num(margin, 2)).arg(num(std::clamp(100.0 * margin / limit, 0.0, 100.0), 0)) : tr("no limit"),
+        limit > 0 ? tr("%1 N (%2 %)").arg(localNumber(margin, 2)).arg(localNumber(std::clamp(100.0 * margin / limit, 0.0, 100.0), 0)) : tr("no limit"),
         limit <= 0 || margin < 0.2 * limit || s.forceLimitTripped);
     set("calibration", s.calibrationName.isEmpty() ? tr("none") : calibrationDisplayName(s.calibrationName),
         s.calibrationName.isEmpty());
@@ -641,7 +638,7 @@ void ControlPanel::updateSafetyControls()
     const bool deeper = status_.lastRunStart_mm && status_.position_mm > *status_.lastRunStart_mm + 0.05;
     withdrawToStart_->setEnabled(out.enabled && deeper);
     withdrawToStart_->setText(status_.lastRunStart_mm
-                                  ? tr("To start (%1 mm)").arg(num(*status_.lastRunStart_mm, 1))
+                                  ? tr("To start (%1 mm)").arg(localNumber(*status_.lastRunStart_mm, 1))
                                   : tr("To start"));
     withdrawToStart_->setToolTip(!out.enabled ? tr("Not now: %1").arg(out.reason)
                                  : deeper     ? tr("Moves the needle out to where the last run began (not recorded)")

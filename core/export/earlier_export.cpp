@@ -3,6 +3,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -31,13 +32,13 @@ bool isExportSidecar(const QString& path, const QString& runName)
         && o.value(QStringLiteral("csv")).toString() == runName + QStringLiteral(".csv");
 }
 
-bool isHdf5(const QString& path)
+}  // namespace
+
+bool isHdf5File(const QString& path)
 {
     QFile f(path);
     return f.open(QIODevice::ReadOnly) && f.read(8).startsWith("\x89HDF\r\n\x1a\n");
 }
-
-}  // namespace
 
 QStringList runExportPaths(const QString& folder, const QStringList& runNames, bool eaf)
 {
@@ -52,15 +53,20 @@ QStringList runExportPaths(const QString& folder, const QStringList& runNames, b
 FilesInTheWay filesInTheWay(const QStringList& paths)
 {
     FilesInTheWay way;
+    QHash<QString, bool> sidecars;  // a run's sidecar, read once for its CSV, itself and its table
     for (const QString& path : paths) {
         const QFileInfo info(path);
         if (!info.exists())
             continue;
         const QString name = runNameOf(info.fileName());
+        const QString sidecar = info.dir().filePath(name + QStringLiteral(".json"));
+        const auto knownSidecar = [&] {
+            if (!sidecars.contains(sidecar))
+                sidecars.insert(sidecar, isExportSidecar(sidecar, name));
+            return sidecars.value(sidecar);
+        };
         const bool exported = info.isFile()
-                              && (info.suffix() == QLatin1String("h5")
-                                      ? isHdf5(path)
-                                      : !name.isEmpty() && isExportSidecar(info.dir().filePath(name + QStringLiteral(".json")), name));
+                              && (info.suffix() == QLatin1String("h5") ? isHdf5File(path) : !name.isEmpty() && knownSidecar());
         (exported ? way.earlierExport : way.other) << path;
     }
     return way;

@@ -23,6 +23,9 @@ QStringList runExportPaths(const QString& folder, const QStringList& runNames, b
 // Those of `paths` that exist, sorted into an earlier export's and others.
 FilesInTheWay filesInTheWay(const QStringList& paths);
 
+// Whether `path` begins as an HDF5 file does (its signature).
+bool isHdf5File(const QString& path);
+
 // The names a session folder's runs are exported under (the run files' base names), read from
 // the folder alone: what the export dialog asks about before it loads the runs.
 QStringList runNamesIn(const QString& sessionDir);
