@@ -1,6 +1,7 @@
 #include "tissue_tracker.h"
 #include "core/tr.h"
 
+#include "phase_correlation.h"
 #include "video_error.h"
 
 #include <QFileInfo>
@@ -125,7 +126,8 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     // within a few tenths of a pixel (the median disagreement: 0.1-0.2 px on clear pictures,
     // 0.4 px under heavy noise), and the reference keeps the slow tissue's motion whole.
     constexpr double kDisagree_px = 1.5;
-    cv::Mat previous, window, reference, lastShown;
+    cv::Mat window, lastShown;
+    Spectrum previous, reference;
     double previousTime = 0.0, clip = 0.0;
     cv::Point2d referencePosition(0, 0), previousPosition(0, 0);
     for (int i = 0; i < n; ++i) {
@@ -168,8 +170,9 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             window = window.mul(window);
         }
         cv::multiply(image, window, image);
+        const Spectrum spectrum = spectrumOf(image);
         if (reference.empty()) {
-            reference = image;
+            reference = spectrum;
         } else if (t > previousTime) {
             // Only for the first pair is the reference the picture before.
             const bool referenceIsPrevious = out.time_s.empty();
@@ -180,10 +183,10 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             std::future<void> matchingPrevious;
             if (!referenceIsPrevious)
                 matchingPrevious = std::async(std::launch::async, [&] {
-                    fromPrevious = previousPosition + cv::phaseCorrelate(previous, image, cv::noArray(), &previousResponse);
+                    fromPrevious = previousPosition + phaseShift(previous, spectrum, &previousResponse);
                 });
             double response = 0.0;
-            cv::Point2d position = referencePosition + cv::phaseCorrelate(reference, image, cv::noArray(), &response);
+            cv::Point2d position = referencePosition + phaseShift(reference, spectrum, &response);
             if (matchingPrevious.valid())
                 matchingPrevious.get();
             const bool farOrWeak =
@@ -208,7 +211,7 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         } else {
             continue;  // no time between them: keep the earlier picture
         }
-        previous = image;
+        previous = spectrum;
         previousTime = t;
     }
     if (progress)
