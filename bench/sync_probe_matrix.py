@@ -80,7 +80,11 @@ def draw_video(c, t, x, path):
         tip = -40 + pos * c['px_per_mm']
         ending = 1.0 / (1.0 + np.exp(np.clip(along - tip, -50, 50)))
         img = background + shaft * ending + rng.normal(0, c['noise'], (H, W))
-        p.stdin.write(np.clip(img, 0, 255).astype(np.uint8).tobytes())
+        raw = np.clip(img, 0, 255).astype(np.uint8)
+        if k == 0 and raw.tobytes()[:3] == b'ID3':
+            # ffmpeg would read the frames as an ID3 tag and skip as many bytes as it says
+            raw.flat[0] += 1
+        p.stdin.write(raw.tobytes())
     p.stdin.close()
     if p.wait() != 0:
         raise RuntimeError('ffmpeg failed')

@@ -11,7 +11,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <opencv2/videoio.hpp>
+
 #include <chrono>
+#include <cstring>
 
 using namespace nb::accuracy;
 
@@ -270,6 +273,30 @@ private slots:
         expectSynchronised(c);
         c.look = Look::Plain;
         expectSynchronised(c);
+    }
+
+    // The matrix's encoder keeps every frame of a picture whose first grey values read "ID3"
+    // and a tag's size: ffmpeg skipped that many bytes of frames (seed 546418, sync case 2).
+    void encoderKeepsFramesThatBeginLikeAnId3Tag()
+    {
+        if (!nb::test::haveFfmpeg())
+            QSKIP("the ffmpeg tool is not installed");
+        std::vector<cv::Mat> frames;
+        for (int k = 0; k < 40; ++k)
+            frames.emplace_back(48, 64, CV_8UC1, cv::Scalar(100 + k));
+        const unsigned char tag[10] = {'I', 'D', '3', 4, 0, 0, 0, 0, 0x60, 0};  // version 4, no flags, a size of 12288 bytes (syncsafe)
+        std::memcpy(frames.front().data, tag, sizeof tag);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("id3.avi"));
+        const QString problem = encodeConstantRate(frames, Codec::Mjpeg, 25.0, path);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        cv::VideoCapture video(path.toStdString());
+        QVERIFY(video.isOpened());
+        int read = 0;
+        cv::Mat frame;
+        while (video.read(frame))
+            ++read;
+        QCOMPARE(read, 40);
     }
 
     void frictionFindsItsBand()

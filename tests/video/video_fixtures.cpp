@@ -4,6 +4,8 @@
 #include <QStandardPaths>
 #include <opencv2/imgproc.hpp>
 
+#include <cstring>
+
 namespace nb::test {
 
 bool haveFfmpeg() { return !QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty(); }
@@ -27,6 +29,13 @@ static QByteArray frameBytes(int w, int h, int code)
                 gray[y * w + x] = char(on ? 235 : 16);
     }
     return gray;
+}
+
+void keepFromReadingAsId3(cv::Mat& firstFrame)
+{
+    CV_Assert(firstFrame.type() == CV_8UC1 && firstFrame.isContinuous());
+    if (firstFrame.total() >= 3 && std::memcmp(firstFrame.data, "ID3", 3) == 0)
+        firstFrame.data[0] += 1;
 }
 
 QString writeVideo(const QString& path, const VideoSpec& spec)
