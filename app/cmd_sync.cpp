@@ -143,7 +143,9 @@ int cmdSync(const QStringList& args, Io io)
         const SyncResult& r = vs.result;
         // Nothing in the picture moved with the recording: there is no offset to be sure of,
         // and no uncertainty to give either (it read "0.00 frames").
-        const bool measured = r.correlation > 0.0;
+        const bool moved = r.correlation > 0.0;
+        // Something moved, but nothing in its motion times the offset (a noise video).
+        const bool measured = moved && std::isfinite(r.uncertainty_s);
         // A limit shorter than the records leaves offsets beyond it untried.
         const bool limited = options.maxOffset_s < index.duration_s() + (run.size() > 1 ? run.time_s.back() - run.time_s.front() : 0.0);
         if (parser.isSet(trace)) {
@@ -155,7 +157,8 @@ int cmdSync(const QStringList& args, Io io)
         }
         if (parser.isSet(json)) {
             QJsonObject o;
-            o[QStringLiteral("offset_s")] = r.offset_s;
+            // Where nothing moved, the search's edge was no offset (it gave -20, the limit).
+            o[QStringLiteral("offset_s")] = moved ? QJsonValue(r.offset_s) : QJsonValue();
             o[QStringLiteral("confidence")] = r.confidence;
             o[QStringLiteral("correlation")] = r.correlation;
             if (r.onsetOffset_s)
@@ -182,13 +185,15 @@ int cmdSync(const QStringList& args, Io io)
             }
             printJson(io, o);
         } else {
-            io.out << nb::TrCli::tr("offset:      %1 s (video time minus recording time)\n").arg(r.offset_s, 0, 'f', 4)
+            io.out << (moved ? nb::TrCli::tr("offset:      %1 s (video time minus recording time)\n").arg(r.offset_s, 0, 'f', 4)
+                             : nb::TrCli::tr("offset:      none (nothing in the picture moved with the recording)\n"))
                    << nb::TrCli::tr("confidence:  %1\n").arg(r.confidence, 0, 'f', 2)
                    << nb::TrCli::tr("correlation: %1\n").arg(r.correlation, 0, 'f', 3);
             if (r.onsetOffset_s)
                 io.out << nb::TrCli::tr("onsets say:  %1 s\n").arg(*r.onsetOffset_s, 0, 'f', 4);
             io.out << nb::TrCli::tr("drift:       %1 %\n").arg(100.0 * r.drift, 0, 'f', 4)
                    << (measured ? nb::TrCli::tr("uncertainty: %1 frames\n").arg(r.uncertainty_s / index.frameDuration(), 0, 'f', 2)
+                       : moved  ? nb::TrCli::tr("uncertainty: unknown (what moved in the picture does not time the offset)\n")
                                 : nb::TrCli::tr("uncertainty: unknown (nothing in the picture moved with the recording)\n"));
             if (r.pictureLag_s > 0.0)
                 io.out << nb::TrCli::tr("coded late:  %1 frames (taken off the offset)\n").arg(r.pictureLag_s / index.frameDuration(), 0, 'f', 2);

@@ -76,7 +76,7 @@ struct SyncResult {
     double drift = 0.0;            // video clock rate error (TimelineMapping::drift)
     double scale_px_per_mm = 0.0;  // tracked displacement per recorded millimetre (signed)
     double intercept_px = 0.0;     // tracked displacement where the recorded position is 0 mm
-    double uncertainty_s = 0.0;    // how far the offset could be off (split halves, fit noise)
+    double uncertainty_s = 0.0;    // how far the offset could be off (split halves, fit noise); infinite: unknown
     double pictureLag_s = 0.0;     // how late the coded pictures show the motion (taken off offset_s)
     QString method;                // what was compared, for the run's metadata
 

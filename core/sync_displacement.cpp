@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace nb {
@@ -500,6 +501,11 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         qOnset = std::exp(-d * d);
     }
     r.confidence = std::clamp(qFit * qUnique * qPrecise * qOnset, 0.0, 1.0);
+    // Where nothing times the offset (no onset, stop or turn seen, or no halves to compare),
+    // its uncertainty is unknown, not the placeholder above: `sync` printed it as 15000000000
+    // frames (video probe, a noise video).
+    if (!(r.uncertainty_s < 1e8))
+        r.uncertainty_s = std::numeric_limits<double>::infinity();
     return r;
 }
 

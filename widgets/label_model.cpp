@@ -3,6 +3,7 @@
 #include <QSettings>
 
 #include <algorithm>
+#include <cmath>
 
 namespace nb {
 
@@ -147,8 +148,13 @@ bool LabelModel::canPlace(const Label& l, const Label* ignore) const
 {
     if (l.end_s < l.start_s || l.label.isEmpty())
         return false;
+    // The same event again on its track (within a millisecond): Suggest pressed twice placed
+    // every event twice, then three times, and saved them so (video probe).
     if (l.isPoint())
-        return true;
+        return std::none_of(labels_.begin(), labels_.end(), [&](const Label& o) {
+            return o.isPoint() && o.track == l.track && o.label == l.label && std::abs(o.start_s - l.start_s) < 1e-3
+                   && !(ignore && o == *ignore);
+        });
     for (const Label& o : labels_) {
         if (o.isPoint() || o.track != l.track || (ignore && o == *ignore))
             continue;

@@ -1041,14 +1041,16 @@ void ReviewWorkspace::suggestLabels()
 
 void ReviewWorkspace::applySuggestion(const Labels& suggested, const QString& from)
 {
-    undo_->beginMacro(tr("suggest labels"));
+    // One undo step for what was placed, and none where nothing was.
     int placed = 0;
     for (const Label& l : suggested)
         if (model_->canPlace(l)) {
+            if (placed++ == 0)
+                undo_->beginMacro(tr("suggest labels"));
             undo_->push(new AddLabelCommand(model_, l));
-            ++placed;
         }
-    undo_->endMacro();
+    if (placed > 0)
+        undo_->endMacro();
     // What was added, not what was found: on a run already labelled it said "45 labels
     // suggested" and added none.
     QString text = tr("%n label(s) suggested from %1: check and correct them", nullptr, placed).arg(from);

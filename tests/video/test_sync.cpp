@@ -317,9 +317,24 @@ private slots:
         QCOMPARE(code, 0);
         QVERIFY(!r["acceptable"].toBool());
         QVERIFY2(r["uncertainty_frames"].isNull() && r["uncertainty_s"].isNull(), qPrintable(QJsonDocument(r).toJson()));
+        // Nor an offset: it gave the search's edge, -3 s here.
+        QVERIFY2(r["offset_s"].isNull(), qPrintable(QJsonDocument(r).toJson()));
         QCOMPARE(r["max_offset_s"].toDouble(), 3.0);
         const nbtest::CliResult text = nbtest::runCli({"sync", run_, grey, "--max-offset", "3"}, 240000);
-        QVERIFY2(text.out.contains(QStringLiteral("uncertainty: unknown")) && text.out.contains(QStringLiteral("--max-offset")), qPrintable(text.out));
+        QVERIFY2(text.out.contains(QStringLiteral("uncertainty: unknown")) && text.out.contains(QStringLiteral("--max-offset"))
+                     && text.out.contains(QStringLiteral("offset:      none")),
+                 qPrintable(text.out));
+
+        // Noise that changes every frame: whatever the fit takes from it, the uncertainty is a
+        // figure or unknown, never the search's placeholder (it printed 15000000000 frames).
+        const QString noise = dir_.filePath("noise.mp4");
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-f", "lavfi", "-i", "color=c=gray:size=320x240:rate=29.97:duration=6",
+                                               "-vf", "noise=alls=40:allf=t", "-c:v", "libx264", "-pix_fmt", "yuv420p", noise});
+        QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
+        const QJsonObject n = runJson({"sync", run_, noise, "--json", "--max-offset", "3"}, &code);
+        QCOMPARE(code, 0);
+        QVERIFY(!n["acceptable"].toBool());
+        QVERIFY2(n["uncertainty_frames"].isNull() || n["uncertainty_frames"].toDouble() < 1e4, qPrintable(QJsonDocument(n).toJson()));
 
         // A picture too small to show a needle is refused, naming it: it answered -max_offset, exit 0.
         const QString tiny = dir_.filePath("tiny.avi");
