@@ -56,6 +56,23 @@ bool FrameIndex::variableFrameRate() const
     return false;
 }
 
+QStringList indexWarnings(const FrameIndex& index)
+{
+    QStringList w;
+    if (index.cutShort) {
+        const double picturesPerNominal = index.fpsNominal * index.frameDuration();
+        const int expected = picturesPerNominal > 2.0 ? int(std::lround(index.containerFrames / picturesPerNominal)) : index.containerFrames;
+        w << nb::TrDevices::tr("only %1 of %2 frames are readable: the file is cut off, or damaged after that frame").arg(index.size()).arg(expected);
+    }
+    if (!index.timestampsMonotonic)
+        w << nb::TrDevices::tr("frame timestamps are not increasing: frames are reached by decoding from the start");
+    if (index.rotation_deg != 0)
+        w << nb::TrDevices::tr("the file says its picture is turned by %1°: shown turned, as players show it").arg(index.rotation_deg);
+    if (index.fromPackets)
+        w << nb::TrDevices::tr("indexed from the file's packets: repeated pictures are not flagged as duplicates");
+    return w;
+}
+
 bool samePicture(const cv::Mat& a, const cv::Mat& b)
 {
     return !a.empty() && a.size == b.size && a.type() == b.type() &&
@@ -235,21 +252,22 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     // Frames missing in the middle (a capture that dropped them: the timestamps jump) are no
     // sign of a cut file; only a file whose readable frames end short of its duration is.
     const double readSpan_s = index.frames.back().time_s - index.frames.front().time_s + index.frameDuration();
-    const double containerSpan_s = index.fpsNominal > 0.0 ? index.containerFrames / index.fpsNominal : 0.0;
+    // A stream that starts later than 0 (an MKV written with a start time of 5 s) may count its
+    // frames to its end time: its readable frames end there, not 5 s short of it (it was called
+    // cut off: "only 120 of 270 frames").
+    const auto probe = probeKeyframes(path);
+    const double start_s = probe ? std::max(0.0, probe->start_s) : 0.0;
+    const double containerSpan_s = index.fpsNominal > 0.0 ? std::max(0.0, index.containerFrames / index.fpsNominal - start_s) : 0.0;
     const bool endsShort = !index.timestampsMonotonic || readSpan_s < containerSpan_s * (timeBase ? 0.9 : 0.98) - index.frameDuration();
-    if (!(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1 && endsShort)
-        index.warnings << nb::TrDevices::tr("only %1 of %2 frames are readable: the file is cut off, or damaged after that frame")
-                              .arg(index.size())
-                              .arg(expected);
-    if (!index.timestampsMonotonic)
-        index.warnings << nb::TrDevices::tr("frame timestamps are not increasing: frames are reached by decoding from the start");
+    index.cutShort = !(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1 && endsShort;
 
     index.timeOrigin_s = index.frames.front().time_s;
     for (FrameInfo& f : index.frames)
         f.time_s -= index.timeOrigin_s;
     index.updateStats();
+    index.warnings = indexWarnings(index);
     index.frames.front().keyframe = true;
-    if (const auto probe = probeKeyframes(path)) {
+    if (probe) {
         if (!probe->codec.isEmpty())
             index.codec = probe->codec;
         for (double k : probe->keyframes_s)

@@ -31,7 +31,12 @@ struct FrameIndex {
     int containerFrames = 0;      // what the container claims (0 when unknown)
     bool keyframesKnown = false;  // false: only frame 0 is flagged (no ffprobe)
     bool timestampsMonotonic = true;
-    QStringList warnings;         // e.g. a truncated file: what was readable
+    int rotation_deg = 0;         // the file's rotation tag (0, 90, 180, 270): width and height as shown
+    bool fromPackets = false;     // indexed from the container's packets, without decoding
+    bool cutShort = false;        // the readable frames end short of what the container says
+    // What a user should know, in the language of the program reading the index (a stored
+    // index says it in the reader's language, not the indexer's): see indexWarnings().
+    QStringList warnings;
     std::vector<FrameInfo> frames;
     // Decoder time of frame 0: AVI with B-frames reports every frame late by the decoder's
     // delay; times in `frames` start at 0 for the first frame.
@@ -53,6 +58,10 @@ struct FrameIndex {
     // The last keyframe at or before frame n.
     int keyframeAtOrBefore(int n) const;
 };
+
+// The index's warnings, from its facts: a cut-off file, timestamps out of order, a rotation
+// tag, an index from packets.
+QStringList indexWarnings(const FrameIndex& index);
 
 // Whether two decoded pictures are the same picture shown again. Lossy codecs re-encode a
 // repeated picture with a little coding noise (mean change ~0.1 grey level); a real picture

@@ -38,6 +38,7 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
         if (ok)  // "N/A" (AVI without timestamps) is skipped: no usable keyframe time
             r.keyframes_s.push_back(t - start);
     }
+    r.start_s = start;
     return r;
 }
 

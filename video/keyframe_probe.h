@@ -12,6 +12,7 @@ namespace nb::video {
 struct ProbeResult {
     QString codec;                    // e.g. "h264"
     std::vector<double> keyframes_s;  // relative to the stream start, as OpenCV reports time
+    double start_s = 0.0;             // the stream's start time in the file
 };
 
 std::optional<ProbeResult> probeKeyframes(const QString& path);

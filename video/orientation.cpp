@@ -21,7 +21,7 @@ void turnIndexUpright(FrameIndex& index, int rotation_deg)
         return;
     if (rotation_deg == 90 || rotation_deg == 270)
         std::swap(index.width, index.height);
-    index.warnings << nb::TrDevices::tr("the file says its picture is turned by %1°: shown turned, as players show it").arg(rotation_deg);
+    index.rotation_deg = rotation_deg;
 }
 
 void turnUpright(cv::Mat& image, int rotation_deg)

@@ -115,8 +115,9 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
     index.timeOrigin_s = first;
     index.frames.front().keyframe = true;
     index.keyframesKnown = true;
-    index.warnings << nb::TrDevices::tr("indexed from the file's packets: repeated pictures are not flagged as duplicates");
+    index.fromPackets = true;
     index.updateStats();
+    index.warnings = indexWarnings(index);
     return index;
 }
 

@@ -7,7 +7,9 @@
 
 #include <QDir>
 #include <QFile>
+#include <QProcess>
 #include <QTemporaryDir>
+#include <QTranslator>
 #include <QtTest>
 
 using namespace nb::video;
@@ -76,6 +78,42 @@ private slots:
         FrameReader reader(again, 8);
         for (int n : {59, 0, 31, 30, 29})
             QCOMPARE(readCode(reader.read(n).image), n);
+    }
+
+    // A stored index speaks the language of the program reading it, not of the one that made
+    // it (a video indexed by the command line in English showed its warnings in English in the
+    // German window); and a file that starts at 5 s is not taken for a cut one.
+    void warningsInTheReadersLanguage()
+    {
+        const QString plain = dir_.filePath(QStringLiteral("plain.mp4")), rotated = dir_.filePath(QStringLiteral("rotated.mp4")),
+                      late = dir_.filePath(QStringLiteral("late.mkv"));
+        const QStringList lavfi{"-f", "lavfi", "-i", "testsrc2=size=320x240:rate=30", "-t", "4", "-c:v", "libx264", "-pix_fmt", "yuv420p"};
+        // The rotation tag as a phone writes it, put on by a copy (ffmpeg 5.1 drops it on encoding).
+        for (const QStringList& args : {lavfi + QStringList{plain}, QStringList{"-i", plain, "-c", "copy", "-metadata:s:v:0", "rotate=90", rotated},
+                                        lavfi + QStringList{"-output_ts_offset", "5", late}}) {
+            QProcess ffmpeg;
+            ffmpeg.start(QStringLiteral("ffmpeg"), QStringList{"-v", "error", "-y"} + args);
+            QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
+        }
+        const QString store = dir_.filePath(QStringLiteral("store-language"));
+        bool fromStore = true;
+        const FrameIndex english = loadOrBuildFrameIndex(rotated, {}, nullptr, &fromStore, store);
+        QVERIFY(!fromStore);
+        QCOMPARE(english.warnings.size(), 1);
+        QVERIFY2(english.warnings.first().contains(QStringLiteral("turned by 90")), qPrintable(english.warnings.join('\n')));
+        QTranslator german;
+        QVERIFY(german.load(QStringLiteral(NB_BINARY_DIR "/app/needlebench_de.qm")));
+        QCoreApplication::installTranslator(&german);
+        const FrameIndex stored = loadOrBuildFrameIndex(rotated, {}, nullptr, &fromStore, store);
+        QCoreApplication::removeTranslator(&german);
+        QVERIFY(fromStore);
+        QCOMPARE(stored.warnings.size(), 1);
+        QVERIFY2(stored.warnings.first().contains(QStringLiteral("gedreht")), qPrintable(stored.warnings.join('\n')));
+        QCOMPARE(stored.width, english.width);
+
+        const FrameIndex later = loadOrBuildFrameIndex(late, {}, nullptr, &fromStore, store);
+        QCOMPARE(later.size(), 120);
+        QVERIFY2(later.warnings.isEmpty(), qPrintable(later.warnings.join('\n')));
     }
 
     void aChangedVideoIsIndexedAgain()
