@@ -1263,7 +1263,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::LabelModel</name>
     <message>
-        <location filename="../widgets/label_model.cpp" line="+89"/>
+        <location filename="../widgets/label_model.cpp" line="+90"/>
         <source>track</source>
         <translation>Spur</translation>
     </message>
@@ -2342,12 +2342,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+948"/>
+        <location line="+950"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-945"/>
+        <location line="-947"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2502,12 +2502,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+739"/>
+        <location line="+741"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-560"/>
+        <location line="-562"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2537,7 +2537,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+103"/>
         <source>Automatic sync stopped</source>
         <translation>Automatische Synchronisation abgebrochen</translation>
     </message>
@@ -2567,7 +2567,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-854"/>
+        <location line="-856"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2680,7 +2680,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Lese die Bewegung in %1 für den Vorschlag: Bild %2 von %3</translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+22"/>
         <source>%n label(s) suggested from %1: check and correct them</source>
         <translation>
             <numerusform>%n Label vorgeschlagen aus %1: prüfen und korrigieren</numerusform>
@@ -2716,7 +2716,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-822"/>
+        <location line="-824"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2831,12 +2831,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Labels nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+50"/>
         <source>suggest labels</source>
         <translation>Labels vorschlagen</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+17"/>
         <source>Open a run and a video first</source>
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>
@@ -4645,10 +4645,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+56"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
+</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>offset:      none (nothing in the picture moved with the recording)
+</source>
+        <translation>Versatz:     keiner (nichts im Bild bewegte sich mit der Aufzeichnung)
 </translation>
     </message>
     <message>
@@ -4684,6 +4691,13 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <source>uncertainty: %1 frames
 </source>
         <translation>Unsicherheit: %1 Bilder
+</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uncertainty: unknown (what moved in the picture does not time the offset)
+</source>
+        <translation>Unsicherheit: unbekannt (was sich im Bild bewegte, bestimmt den Versatz nicht)
 </translation>
     </message>
     <message>
@@ -6997,7 +7011,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+154"/>
+        <location filename="../video/frame_index.cpp" line="+171"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7033,23 +7047,23 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location filename="../video/orientation.cpp" line="+24"/>
+        <location line="-128"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+44"/>
+        <location line="+172"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-177"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>
@@ -7448,7 +7462,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location filename="../video/packet_index.cpp" line="+16"/>
+        <location filename="../video/frame_index.cpp" line="+4"/>
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation>aus den Paketen der Datei indiziert: wiederholte Bilder sind nicht als Duplikate markiert</translation>
     </message>
@@ -7468,12 +7482,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>der Datenträger mit %1 ist in etwa %2 s voll (%3 kB frei)</translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+95"/>
+        <location filename="../video/tissue_tracker.cpp" line="+96"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+147"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
     </message>

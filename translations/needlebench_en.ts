@@ -1262,7 +1262,7 @@ or without contact</source>
 <context>
     <name>nb::LabelModel</name>
     <message>
-        <location filename="../widgets/label_model.cpp" line="+89"/>
+        <location filename="../widgets/label_model.cpp" line="+90"/>
         <source>track</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2336,12 +2336,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+948"/>
+        <location line="+950"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-945"/>
+        <location line="-947"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2496,12 +2496,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+739"/>
+        <location line="+741"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-560"/>
+        <location line="-562"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2531,7 +2531,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+103"/>
         <source>Automatic sync stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2561,7 +2561,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-854"/>
+        <location line="-856"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2672,7 +2672,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+22"/>
         <source>%n label(s) suggested from %1: check and correct them</source>
         <translation>
             <numerusform>%n label suggested from %1: check and correct them</numerusform>
@@ -2708,7 +2708,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-822"/>
+        <location line="-824"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2823,12 +2823,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+50"/>
         <source>suggest labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+17"/>
         <source>Open a run and a video first</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4579,8 +4579,14 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+56"/>
         <source>offset:      %1 s (video time minus recording time)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>offset:      none (nothing in the picture moved with the recording)
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -4611,6 +4617,12 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location line="+1"/>
         <source>uncertainty: %1 frames
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uncertainty: unknown (what moved in the picture does not time the offset)
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -6895,7 +6907,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+154"/>
+        <location filename="../video/frame_index.cpp" line="+171"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -6931,23 +6943,23 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/orientation.cpp" line="+24"/>
+        <location line="-128"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+44"/>
+        <location line="+172"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-177"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7346,7 +7358,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/packet_index.cpp" line="+16"/>
+        <location filename="../video/frame_index.cpp" line="+4"/>
         <source>indexed from the file&apos;s packets: repeated pictures are not flagged as duplicates</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7366,12 +7378,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/tissue_tracker.cpp" line="+95"/>
+        <location filename="../video/tissue_tracker.cpp" line="+96"/>
         <source>the region for the tissue&apos;s motion is too small or outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+147"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation type="unfinished"></translation>
     </message>
