@@ -41,6 +41,7 @@
 #include <algorithm>
 #include <functional>
 #include <cmath>
+#include <utility>
 
 namespace nb {
 
@@ -92,6 +93,8 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         }
         for (const QString& w : index->warnings)
             showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
+        if (!notAttached_.isEmpty())
+            showStatus(std::exchange(notAttached_, QString()));
         if (run_.size() == 0)
             timeline_->setRange(0.0, index->duration_s());
         requested_ = -1;
@@ -105,7 +108,10 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
             // Back to the video the run had (or none), which the session still names.
             attachPending_ = false;
             restoreVideoLink();
-            showStatus(tr("%1 (not attached: the run keeps the video it had)").arg(message));
+            notAttached_ = tr("%1 (not attached: the run keeps the video it had)").arg(message);
+            showStatus(notAttached_);
+            if (!videoPath_.isEmpty() && index_)
+                notAttached_.clear();  // the run's video is on screen already: nothing comes to cover it
             return;
         }
         showStatus(message);
@@ -511,6 +517,7 @@ static QString keptLabelsPath(const QString& runPath)
 
 bool ReviewWorkspace::openRun(const QString& path)
 {
+    notAttached_.clear();
     markRecording_.reset();
     markVideo_.reset();
     markedEvent_.reset();

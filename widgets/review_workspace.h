@@ -172,6 +172,9 @@ private:
     // A video the operator chose, not yet opened: the run's link keeps the one before until
     // it opens (a file that fails to open replaced it).
     bool attachPending_ = false;
+    // Why the video last chosen was not attached: said again once the run's own video is back,
+    // whose warnings (a rotation tag) took its place in the status line.
+    QString notAttached_;
     QString labelsWarnedFor_;  // the run whose labels could not be saved beside it, said once
     std::map<QString, std::pair<QString, double>> pending_;  // track -> (label, start)
     std::optional<double> markRecording_, markVideo_;

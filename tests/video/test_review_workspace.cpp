@@ -703,6 +703,21 @@ private slots:
         QCOMPARE(linked(), QFileInfo(video_).absoluteFilePath());
         QTRY_COMPARE(ws.videoPath(), QFileInfo(video_).absoluteFilePath());
         QVERIFY(opened.wait(60000));  // the run's own video, shown again
+
+        // The same where the run's own video has a warning of its own (a phone's rotation tag):
+        // shown again, its warning took the place of why the other was not attached.
+        const QString turned = dir_.filePath("turned.mov");
+        QProcess ffmpeg;
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-i", video_, "-c", "copy", "-metadata:s:v:0", "rotate=90", turned});
+        QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
+        QVERIFY(ws.attachVideo(turned));
+        QVERIFY(opened.wait(60000));
+        QTRY_VERIFY2(ws.status().contains(QStringLiteral("turned by 90")), qPrintable(ws.status()));
+        QVERIFY(ws.attachVideo(broken));
+        QVERIFY(failed.wait(20000));
+        QVERIFY(opened.wait(60000));  // turned.mov again, with its warning
+        QCoreApplication::processEvents();
+        QVERIFY2(ws.status().contains(QStringLiteral("not attached")), qPrintable(ws.status()));
     }
 };
 
