@@ -157,7 +157,6 @@ def run_case(c, exe, root):
         return c, dict(refused=True, moving=moving), r.stderr.strip()[:300]
     if j['offset_s'] is None:  # nothing in the picture moved with the recording
         return c, dict(refused=True, moving=moving), 'no offset: nothing in the picture moved with the recording'
-
     # video time = (1 + drift)·t + offset (the tool's mapping) against the truth
     tr = np.linspace(0.0, t[-1], 100)
     truth = (tr + c['offset']) / (1 + c['drift'])
