@@ -68,6 +68,11 @@ QStringList indexWarnings(const FrameIndex& index)
         w << nb::TrDevices::tr("frame timestamps are not increasing: frames are reached by decoding from the start");
     if (index.rotation_deg != 0)
         w << nb::TrDevices::tr("the file says its picture is turned by %1°: shown turned, as players show it").arg(index.rotation_deg);
+    if (index.videoStreams > 1)
+        w << nb::TrDevices::tr("the file holds %1 video streams: only the first (%2x%3) is shown and measured")
+                 .arg(index.videoStreams)
+                 .arg(index.width)
+                 .arg(index.height);
     if (index.fromPackets)
         w << nb::TrDevices::tr("indexed from the file's packets: repeated pictures are not flagged as duplicates");
     return w;
@@ -257,6 +262,8 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     // cut off: "only 120 of 270 frames").
     const auto probe = probeKeyframes(path);
     const double start_s = probe ? std::max(0.0, probe->start_s) : 0.0;
+    if (probe)
+        index.videoStreams = std::max(1, probe->videoStreams);
     const double containerSpan_s = index.fpsNominal > 0.0 ? std::max(0.0, index.containerFrames / index.fpsNominal - start_s) : 0.0;
     const bool endsShort = !index.timestampsMonotonic || readSpan_s < containerSpan_s * (timeBase ? 0.9 : 0.98) - index.frameDuration();
     index.cutShort = !(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1 && endsShort;

@@ -34,6 +34,7 @@ struct FrameIndex {
     int rotation_deg = 0;         // the file's rotation tag (0, 90, 180, 270): width and height as shown
     bool fromPackets = false;     // indexed from the container's packets, without decoding
     bool cutShort = false;        // the readable frames end short of what the container says
+    int videoStreams = 1;         // video streams in the file (the first is the one read)
     // What a user should know, in the language of the program reading the index (a stored
     // index says it in the reader's language, not the indexer's): see indexWarnings().
     QStringList warnings;

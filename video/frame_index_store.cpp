@@ -16,8 +16,9 @@ namespace {
 constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
 // Bump whenever buildFrameIndex() would index a file differently.
 // 2: width and height as shown, turned by the rotation tag; 3: the facts behind the warnings, not
-// their text (a stored index spoke the language of the program that made it)
-constexpr quint32 kVersion = 3;
+// their text (a stored index spoke the language of the program that made it); 4: the count of
+// video streams
+constexpr quint32 kVersion = 4;
 // Indexes kept at most; the least recently stored go first.
 constexpr int kMaxStored = 300;
 
@@ -75,7 +76,7 @@ std::optional<FrameIndex> loadStoredFrameIndex(const QString& videoPath, const Q
     qint32 width = 0, height = 0, containerFrames = 0;
     quint32 count = 0;
     in >> index.codec >> width >> height >> index.fpsNominal >> containerFrames >> index.keyframesKnown >>
-        index.timestampsMonotonic >> index.rotation_deg >> index.fromPackets >> index.cutShort >> index.timeOrigin_s >> count;
+        index.timestampsMonotonic >> index.rotation_deg >> index.fromPackets >> index.cutShort >> index.videoStreams >> index.timeOrigin_s >> count;
     if (in.status() != QDataStream::Ok || count == 0 || count > 100'000'000u)
         return std::nullopt;
     index.path = videoPath;
@@ -110,7 +111,7 @@ bool storeFrameIndex(const FrameIndex& index, const QString& storeDir)
     out.setVersion(QDataStream::Qt_6_0);
     out << kMagic << kVersion << stamp->path << stamp->size << stamp->modified_ms;
     out << index.codec << qint32(index.width) << qint32(index.height) << index.fpsNominal << qint32(index.containerFrames)
-        << index.keyframesKnown << index.timestampsMonotonic << qint32(index.rotation_deg) << index.fromPackets << index.cutShort
+        << index.keyframesKnown << index.timestampsMonotonic << qint32(index.rotation_deg) << index.fromPackets << index.cutShort << qint32(index.videoStreams)
         << index.timeOrigin_s
         << quint32(index.frames.size());
     for (const FrameInfo& fr : index.frames)

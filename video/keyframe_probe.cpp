@@ -5,22 +5,31 @@ namespace nb::video {
 
 std::optional<ProbeResult> probeKeyframes(const QString& path)
 {
+    // Every video stream, to count them (a cover picture is none); the first is the one OpenCV
+    // decodes.
     const auto stream = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
-                                       QStringLiteral("v:0"), QStringLiteral("-show_entries"),
-                                       QStringLiteral("stream=codec_name,start_time"), QStringLiteral("-of"),
-                                       QStringLiteral("default=noprint_wrappers=1"), ffprobeInput(path)});
+                                       QStringLiteral("v"), QStringLiteral("-show_entries"),
+                                       QStringLiteral("stream=codec_name,start_time:stream_disposition=attached_pic"),
+                                       QStringLiteral("-of"), QStringLiteral("default"), ffprobeInput(path)});
     if (!stream)
         return std::nullopt;
     ProbeResult r;
+    r.videoStreams = 0;
     double start = 0.0;
-    for (const QByteArray& line : stream->split('\n')) {
-        if (line.startsWith("codec_name="))
-            r.codec = QString::fromUtf8(line.mid(11)).trimmed();
-        else if (line.startsWith("start_time=")) {
-            bool ok = false;
-            const double s = line.mid(11).trimmed().toDouble(&ok);
-            if (ok)
-                start = s;  // OpenCV reports time relative to the stream's start
+    for (const QByteArray& block : stream->split('[')) {
+        if (!block.startsWith("STREAM]") || block.contains("attached_pic=1"))
+            continue;
+        if (r.videoStreams++ > 0)
+            continue;
+        for (const QByteArray& line : block.split('\n')) {
+            if (line.startsWith("codec_name="))
+                r.codec = QString::fromUtf8(line.mid(11)).trimmed();
+            else if (line.startsWith("start_time=")) {
+                bool ok = false;
+                const double s = line.mid(11).trimmed().toDouble(&ok);
+                if (ok)
+                    start = s;  // OpenCV reports time relative to the stream's start
+            }
         }
     }
     const auto packets = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),

@@ -13,6 +13,7 @@ struct ProbeResult {
     QString codec;                    // e.g. "h264"
     std::vector<double> keyframes_s;  // relative to the stream start, as OpenCV reports time
     double start_s = 0.0;             // the stream's start time in the file
+    int videoStreams = 1;             // video streams in the file, cover pictures aside
 };
 
 std::optional<ProbeResult> probeKeyframes(const QString& path);

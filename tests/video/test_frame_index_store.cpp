@@ -116,6 +116,39 @@ private slots:
         QVERIFY2(later.warnings.isEmpty(), qPrintable(later.warnings.join('\n')));
     }
 
+    // A file with a second video stream says that only the first is read (a capture's small
+    // preview stream first and the imaging second was read as the video without a word); a
+    // cover picture is no stream of pictures.
+    void aSecondVideoStreamIsSaid()
+    {
+        const QString two = dir_.filePath(QStringLiteral("two.mp4")), cover = dir_.filePath(QStringLiteral("cover.mp4")),
+                      png = dir_.filePath(QStringLiteral("cover.png"));
+        const QStringList small{"-f", "lavfi", "-t", "2", "-i", "testsrc2=size=160x120:rate=25"};
+        const QStringList large{"-f", "lavfi", "-t", "2", "-i", "testsrc2=size=320x240:rate=25"};
+        for (const QStringList& args : {small + large + QStringList{"-map", "0", "-map", "1", "-c:v", "libx264", "-pix_fmt", "yuv420p", two},
+                                        QStringList{"-f", "lavfi", "-i", "color=c=red:size=64x64", "-frames:v", "1", png},
+                                        large + QStringList{"-i", png, "-map", "0", "-map", "1", "-c:v:0", "libx264", "-pix_fmt", "yuv420p",
+                                                            "-c:v:1", "png", "-disposition:v:1", "attached_pic", cover}}) {
+            QProcess ffmpeg;
+            ffmpeg.start(QStringLiteral("ffmpeg"), QStringList{"-v", "error", "-y"} + args);
+            QVERIFY(ffmpeg.waitForFinished(60000));
+            QVERIFY2(ffmpeg.exitCode() == 0, qPrintable(QString::fromUtf8(ffmpeg.readAllStandardError())));
+        }
+        const QString store = dir_.filePath(QStringLiteral("store-streams"));
+        bool fromStore = true;
+        const FrameIndex built = loadOrBuildFrameIndex(two, {}, nullptr, &fromStore, store);
+        QCOMPARE(built.width, 160);
+        QCOMPARE(built.warnings.size(), 1);
+        QVERIFY2(built.warnings.first().contains(QStringLiteral("2 video streams")), qPrintable(built.warnings.join('\n')));
+        QVERIFY(built.keyframesKnown);
+        const FrameIndex stored = loadOrBuildFrameIndex(two, {}, nullptr, &fromStore, store);
+        QVERIFY(fromStore);
+        QCOMPARE(stored.warnings, built.warnings);
+        const FrameIndex withCover = loadOrBuildFrameIndex(cover, {}, nullptr, &fromStore, store);
+        QCOMPARE(withCover.width, 320);
+        QVERIFY2(withCover.warnings.isEmpty(), qPrintable(withCover.warnings.join('\n')));
+    }
+
     void aChangedVideoIsIndexedAgain()
     {
         QVERIFY(loadStoredFrameIndex(video_, store_));
