@@ -56,12 +56,20 @@ bool FrameIndex::variableFrameRate() const
     return false;
 }
 
+// The pictures the container's count stands for: the count itself, or, where the nominal rate
+// is a time base (a variable-rate MKV says 1000 frames/s for 30 pictures a second), the count
+// over as many time-base ticks as one picture takes.
+static int containerPictures(const FrameIndex& index)
+{
+    const double picturesPerNominal = index.fpsNominal * index.frameDuration();
+    return picturesPerNominal > 2.0 ? int(std::lround(index.containerFrames / picturesPerNominal)) : index.containerFrames;
+}
+
 QStringList indexWarnings(const FrameIndex& index)
 {
     QStringList w;
     if (index.cutShort) {
-        const double picturesPerNominal = index.fpsNominal * index.frameDuration();
-        const int expected = picturesPerNominal > 2.0 ? int(std::lround(index.containerFrames / picturesPerNominal)) : index.containerFrames;
+        const int expected = containerPictures(index);
         w << nb::TrDevices::tr("only %1 of %2 frames are readable: the file is cut off, or damaged after that frame").arg(index.size()).arg(expected);
     }
     if (!index.timestampsMonotonic)
@@ -251,9 +259,8 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     // a time base (a variable-rate MKV says 1000 frames/s for 30 pictures a second) the
     // count is as many times too high. What it stands for is then only an estimate (the
     // duration over the usual interval counts dropped frames too), taken with more slack.
-    const double picturesPerNominal = index.fpsNominal * index.frameDuration();
-    const bool timeBase = picturesPerNominal > 2.0;
-    const int expected = timeBase ? int(std::lround(index.containerFrames / picturesPerNominal)) : index.containerFrames;
+    const bool timeBase = index.fpsNominal * index.frameDuration() > 2.0;
+    const int expected = containerPictures(index);
     // Frames missing in the middle (a capture that dropped them: the timestamps jump) are no
     // sign of a cut file; only a file whose readable frames end short of its duration is.
     const double readSpan_s = index.frames.back().time_s - index.frames.front().time_s + index.frameDuration();
