@@ -106,6 +106,10 @@ int cmdSync(const QStringList& args, Io io)
         runSamples = run.size();
         const video::FrameIndex index = video::loadOrBuildFrameIndex(videoPath);
         videoFrames = index.size();
+        // As video-info says them: a file cut off, a rotation, a second stream (video probe: a
+        // cut-off video was synced without a word).
+        for (const QString& w : index.warnings)
+            io.err << nb::TrCli::tr("warning: %1: %2").arg(videoPath, w) << '\n';
         // A picture too small to show a needle gave an offset all the same (the search's edge,
         // -max_offset) with exit 0; the smallest picture the tracker reads is 32 px a side.
         if (index.width < kSmallestPicture_px || index.height < kSmallestPicture_px) {
@@ -141,6 +145,10 @@ int cmdSync(const QStringList& args, Io io)
             options.maxOffset_s = std::min(options.maxOffset_s, index.duration_s() + (run.time_s.back() - run.time_s.front()) + 1.0);
         const video::VideoSync vs = video::syncVideoToRun(index, run, vso);
         const SyncResult& r = vs.result;
+        // Only the frames the offsets tried can put beside the recording are tracked.
+        const video::FrameSpan tracked = vs.track.time_s.empty()
+                                             ? video::FrameSpan{0, index.size() - 1}
+                                             : video::FrameSpan{index.frameAt(vs.track.time_s.front()), index.frameAt(vs.track.time_s.back())};
         // Nothing in the picture moved with the recording: there is no offset to be sure of,
         // and no uncertainty to give either (it read "0.00 frames").
         const bool moved = r.correlation > 0.0;
@@ -164,6 +172,7 @@ int cmdSync(const QStringList& args, Io io)
             if (r.onsetOffset_s)
                 o[QStringLiteral("onset_offset_s")] = *r.onsetOffset_s;
             o[QStringLiteral("frames")] = index.size();
+            o[QStringLiteral("frames_tracked")] = tracked.size();
             o[QStringLiteral("drift")] = r.drift;
             o[QStringLiteral("uncertainty_s")] = measured ? QJsonValue(r.uncertainty_s) : QJsonValue();
             o[QStringLiteral("uncertainty_frames")] = measured ? QJsonValue(r.uncertainty_s / index.frameDuration()) : QJsonValue();
@@ -204,6 +213,10 @@ int cmdSync(const QStringList& args, Io io)
                               .arg(vs.track.axisDetected ? nb::TrCli::tr("found in the picture") : nb::TrCli::tr("given"));
             }
             io.out << nb::TrCli::tr("method:      %1\n").arg(r.method);
+            if (tracked.size() < index.size())
+                io.out << nb::TrCli::tr("tracked:     %1 to %2 s of %3 s (as far as the offsets tried reach)\n")
+                              .arg(vs.track.time_s.front(), 0, 'f', 2).arg(vs.track.time_s.back(), 0, 'f', 2)
+                              .arg(index.duration_s(), 0, 'f', 2);
             if (!r.acceptable()) {
                 io.out << nb::TrCli::tr("LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it\n")
                               .arg(kSyncAcceptConfidence, 0, 'f', 2);

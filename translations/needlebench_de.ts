@@ -2342,12 +2342,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+951"/>
+        <location line="+955"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-948"/>
+        <location line="-952"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2373,12 +2373,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+506"/>
+        <location line="+510"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-506"/>
+        <location line="-510"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2502,12 +2502,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+742"/>
+        <location line="+746"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-562"/>
+        <location line="-566"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2522,7 +2522,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+281"/>
+        <location line="+285"/>
         <source>set the offset and drift from two events</source>
         <translation>Versatz und Drift aus zwei Ereignissen setzen</translation>
     </message>
@@ -2567,7 +2567,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-857"/>
+        <location line="-861"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2590,7 +2590,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+30"/>
         <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation>Zuerst einen Lauf öffnen (Doppelklick in der Sitzungsliste), dann sein Video anhängen</translation>
@@ -2716,7 +2716,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-825"/>
+        <location line="-829"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2786,7 +2786,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+66"/>
         <source>Videos (%1);;All files (*)</source>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
@@ -4624,7 +4624,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+35"/>
         <source>needlebench sync: %1: the picture is %2x%3 px, too small to show a needle (%4 px a side at least)
 </source>
         <translation>needlebench sync: %1: das Bild hat %2x%3 px, zu klein, um eine Nadel zu zeigen (mindestens %4 px je Seite)
@@ -4645,7 +4645,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+61"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4740,6 +4740,13 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>tracked:     %1 to %2 s of %3 s (as far as the offsets tried reach)
+</source>
+        <translation>verfolgt:    %1 bis %2 s von %3 s (so weit die versuchten Versätze reichen)
+</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it
 </source>
         <translation>GERINGE KONFIDENZ (unter %1): den Versatz vor der Verwendung prüfen, indem ein Ereignis in beiden markiert wird
@@ -4785,12 +4792,13 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Videodatei</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location filename="../app/cmd_sync.cpp" line="-127"/>
+        <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation>Warnung: %1: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../app/cmd_video.cpp" line="+4"/>
         <source>file:        %1
 </source>
         <translation>Datei:       %1
@@ -7011,7 +7019,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+176"/>
+        <location filename="../video/frame_index.cpp" line="+184"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7462,7 +7470,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+2054"/>
+        <location filename="../video/needle_tracker.cpp" line="+2055"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>

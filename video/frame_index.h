@@ -8,8 +8,10 @@
 #include <QStringList>
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -20,6 +22,19 @@ struct FrameInfo {
     bool keyframe = false;   // a safe point to start decoding from
     bool duplicate = false;  // the previous picture again (identical up to coding noise)
     bool timeEstimated = false;  // decoder gave no timestamp (frames drained at the end)
+};
+
+// Frames first to last of a video, both included; all of them by default.
+struct FrameSpan {
+    int first = 0;
+    int last = std::numeric_limits<int>::max();
+
+    // This span within a video of `frames` frames (empty: last < first).
+    FrameSpan within(int frames) const
+    {
+        return {std::clamp(first, 0, std::max(0, frames)), std::clamp(last, -1, std::max(-1, frames - 1))};
+    }
+    int size() const { return std::max(0, last - first + 1); }
 };
 
 struct FrameIndex {

@@ -66,8 +66,8 @@ int FrameReader::grabNext()
 bool FrameReader::forwardIsCheaper(int from, int to) const
 {
     // Decoding on keeps every frame on the way, which the next pass then need not decode; a
-    // seek would skip them, to decode them later.
-    if (!gray_.empty())
+    // seek would skip them, to decode them later. Frames outside the kept span are not kept.
+    if (!gray_.empty() && from + 1 >= grayKept_.first && to <= grayKept_.last)
         return true;
     // Without a usable seek the alternative is decoding from the start.
     if (!seekable_ || to - from <= 12)
@@ -151,19 +151,20 @@ cv::Mat grayOf(const cv::Mat& image)
 }
 }  // namespace
 
-bool FrameReader::keepGrayFrames(std::size_t budget_bytes)
+bool FrameReader::keepGrayFrames(std::size_t budget_bytes, FrameSpan span)
 {
-    const std::size_t bytes = std::size_t(std::max(0, index_.width)) * std::size_t(std::max(0, index_.height)) * index_.frames.size();
+    grayKept_ = span.within(index_.size());
+    const std::size_t bytes = std::size_t(std::max(0, index_.width)) * std::size_t(std::max(0, index_.height))
+                              * std::size_t(grayKept_.size());
+    gray_.clear();
     if (bytes > 0 && bytes <= budget_bytes)
         gray_.resize(index_.frames.size());
-    else
-        gray_.clear();
     return !gray_.empty();
 }
 
 void FrameReader::keepGrabbedGray(int j)
 {
-    if (j < 0 || std::size_t(j) >= gray_.size() || !gray_[std::size_t(j)].empty())
+    if (j < grayKept_.first || j > grayKept_.last || std::size_t(j) >= gray_.size() || !gray_[std::size_t(j)].empty())
         return;
     cv::Mat image;
     if (cap_.retrieve(image) && !image.empty()) {
@@ -174,7 +175,7 @@ void FrameReader::keepGrabbedGray(int j)
 
 cv::Mat FrameReader::gray(int n)
 {
-    const bool keeping = n >= 0 && std::size_t(n) < gray_.size();
+    const bool keeping = n >= grayKept_.first && n <= grayKept_.last && n >= 0 && std::size_t(n) < gray_.size();
     if (keeping && !gray_[std::size_t(n)].empty())
         return gray_[std::size_t(n)];
     const cv::Mat g = grayOf(read(n).image);

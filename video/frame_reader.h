@@ -47,12 +47,12 @@ public:
     FrameCache& cache() { return cache_; }
     const ReaderStats& stats() const { return stats_; }
 
-    // Keeps every frame's grey picture once it is decoded (frames decoded on the way to
-    // another included), when the whole video's fit in `budget_bytes`; else keeps none.
+    // Keeps the grey picture of every frame in `span` once it is decoded (frames decoded on
+    // the way to another included), when the span's fit in `budget_bytes`; else keeps none.
     // For callers that pass over a short video several times (the sync samples it, tracks
     // every frame and may track again): a noisy H.264 picture costs more to decode than to
     // track, and each pass decoded it again. Returns whether the frames are kept.
-    bool keepGrayFrames(std::size_t budget_bytes);
+    bool keepGrayFrames(std::size_t budget_bytes, FrameSpan span = {});
     // Frame n in grey, 8 bit (shared with the store when kept: read-only). Throws as read().
     cv::Mat gray(int n);
 
@@ -73,6 +73,7 @@ private:
     bool seekable_ = true;  // OpenCV's frame seek can land near a frame (see the constructor)
     ReaderStats stats_;
     std::vector<cv::Mat> gray_;  // one per frame when grey frames are kept, else empty
+    FrameSpan grayKept_;         // of those, the frames whose grey picture is kept
 };
 
 }  // namespace nb::video

@@ -683,14 +683,15 @@ std::optional<std::pair<std::size_t, std::size_t>> movingStretch(const std::vect
 // shows the needle at rest in most evenly spread frames: its tip at rest then counts as
 // what is always there (staticPart) and its motion as a few stray frames (14 s of rest
 // before a 3 s sine: the needle's line was passed over and the sync missed by 12 frames).
-FrameSamples sampleFrames(FrameReader& reader, int count)
+FrameSamples sampleFrames(FrameReader& reader, int count, FrameSpan span)
 {
     FrameSamples s;
     const FrameIndex& index = reader.index();
     s.width = index.width;
     s.height = index.height;
-    const int n = index.size();
-    if (n == 0)
+    s.span = span.within(index.size());
+    const int first = s.span.first, n = s.span.last + 1;
+    if (n <= first)
         return s;
     std::vector<int> taken;
     auto take = [&](int i) {
@@ -701,9 +702,9 @@ FrameSamples sampleFrames(FrameReader& reader, int count)
         taken.push_back(i);
         s.gray.push_back(reader.gray(i).clone());
     };
-    count = std::clamp(count, 1, n);
+    count = std::clamp(count, 1, n - first);
     for (int k = 0; k < count; ++k)
-        take(count == 1 ? 0 : int(std::lround(double(k) * (n - 1) / (count - 1))));
+        take(first + (count == 1 ? 0 : int(std::lround(double(k) * (n - 1 - first) / (count - 1)))));
     const auto stretch = movingStretch(s.gray);
     if (!stretch)
         return s;
@@ -2059,9 +2060,9 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         out[a].displacement_px.push_back(tip.found + trackers[a].strip.origin);
         measured[a].push_back(tip.measured + trackers[a].strip.origin);
     };
-    const int n = index.size();
+    const int first = s.span.first, n = s.span.last + 1;
     PictureMemoryMeter memory;
-    for (int i = 0; i < n && !(cancel && cancel->load()); ++i) {
+    for (int i = first; i < n && !(cancel && cancel->load()); ++i) {
         // Frames the index calls duplicates are tracked too, at their own time: a slow
         // needle in a clean, smoothly coded picture changes too little between frames to
         // tell from a repeat (whole runs of frames get flagged), and a real repeat only shows
@@ -2074,8 +2075,8 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
             if (const std::optional<AxisTracker::Sighting> tip = trackers[a].next(gray, info.time_s, info.duplicate))
                 record(a, *tip);
         }
-        if (progress && i % 50 == 0)
-            progress(i, n);
+        if (progress && (i - first) % 50 == 0)
+            progress(i - first, n - first);
     }
     for (std::size_t a = 0; a < axes.size(); ++a) {
         for (const AxisTracker::Sighting& tip : trackers[a].rest())

@@ -52,11 +52,13 @@ struct NeedleTrack {
 struct FrameSamples {
     std::vector<cv::Mat> gray;
     int width = 0, height = 0;
+    FrameSpan span;  // the frames sampled from, which trackNeedles tracks
 };
 
-// `count` frames spread evenly over the video, and as many again over the stretch in which
-// the picture changes, when that is a small part of it. Throws VideoError.
-FrameSamples sampleFrames(FrameReader& reader, int count = 40);
+// `count` frames spread evenly over `span` of the video (all of it by default), and as many
+// again over the stretch in which the picture changes, when that is a small part of it.
+// Throws VideoError.
+FrameSamples sampleFrames(FrameReader& reader, int count = 40, FrameSpan span = {});
 
 // Finds the needle's axis in `reader`'s video from `sampleFrames` frames spread over it,
 // inside `roi` when it is not empty. nullopt when nothing moves along a line. Throws VideoError.

@@ -35,7 +35,7 @@ public:
         path_ = path;
         try {
             FrameIndex index = loadOrBuildFrameIndex(
-                path, [this](int done, int expected) { emit indexProgress(done, expected); }, cancel.get());
+                path, [this, path](int done, int expected) { emit indexProgress(path, done, expected); }, cancel.get());
             if (cancel->load())
                 return;
             auto shared = std::make_shared<const FrameIndex>(index);
@@ -44,6 +44,14 @@ public:
         } catch (const VideoError& e) {
             emit failed(path, e.message());
         }
+    }
+
+    void close()
+    {
+        reader_.reset();
+        path_.clear();
+        cursor_ = -1;
+        pending = -1;
     }
 
     void serve()
@@ -80,7 +88,7 @@ public:
 
 signals:
     // Each names the file it is about: what the window hears is only the file it opened last.
-    void indexProgress(int done, int expected);
+    void indexProgress(const QString& path, int done, int expected);
     void opened(const QString& path, nb::video::FrameIndexPtr index);
     void failed(const QString& path, const QString& message);
     void frameReady(const QString& path, int index, double time_s, const QImage& image);
@@ -105,10 +113,13 @@ VideoDecoder::VideoDecoder(QObject* parent) : QObject(parent), cancel_(std::make
     worker_ = new DecoderWorker;
     worker_->moveToThread(&thread_);
     connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
-    connect(worker_, &DecoderWorker::indexProgress, this, &VideoDecoder::indexProgress);
     // A file opened before the last one may still report (its index was built, or a frame of it
     // decoded, before open() was asked again): the run in review showed another run's video
     // and its needle trace, or "no frame could be decoded" of a file no longer shown.
+    connect(worker_, &DecoderWorker::indexProgress, this, [this](const QString& path, int done, int expected) {
+        if (path == path_)
+            emit indexProgress(done, expected);
+    });
     connect(worker_, &DecoderWorker::opened, this, [this](const QString& path, FrameIndexPtr index) {
         if (path != path_)
             return;
@@ -141,6 +152,15 @@ void VideoDecoder::open(const QString& path)
     index_.reset();
     path_ = path;
     QMetaObject::invokeMethod(worker_, [w = worker_, path, c = cancel_] { w->open(path, c); }, Qt::QueuedConnection);
+}
+
+void VideoDecoder::close()
+{
+    cancel_->store(true);
+    cancel_ = std::make_shared<std::atomic_bool>(false);
+    index_.reset();
+    path_.clear();
+    QMetaObject::invokeMethod(worker_, &DecoderWorker::close, Qt::QueuedConnection);
 }
 
 void VideoDecoder::requestFrame(int n)

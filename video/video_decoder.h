@@ -31,6 +31,8 @@ public:
 
     // Starts indexing `path`; ends in opened() or failed().
     void open(const QString& path);
+    // Lets the file opened last go: its indexing stops, and nothing more is said of it.
+    void close();
     // Asks for frame n; only the newest pending request is served.
     void requestFrame(int n);
     FrameIndexPtr index() const { return index_; }

@@ -38,6 +38,22 @@ std::optional<AxisStretch> heldStretch(const NeedleTrack& track)
     return AxisStretch{at[best], at[best + k - 1]};
 }
 
+// The frames that any offset searched can put beside the recording: its span moved by every
+// offset (and stretched by the largest drift), with a few seconds either side for the rest
+// before the onset and after the stop. A half-hour video synced to a minute's run was tracked
+// whole, five minutes for the 100 s that can matter (video probe).
+FrameSpan framesInReach(const FrameIndex& index, const Run& run, const SyncOptions& o)
+{
+    if (run.time_s.size() < 2 || index.frames.empty() || !index.timestampsMonotonic)
+        return {};
+    constexpr double kMargin_s = 3.0;
+    const double drift = std::abs(o.maxDrift);
+    const double from_s = std::min((1.0 - drift) * run.time_s.front(), (1.0 + drift) * run.time_s.front()) - o.maxOffset_s - kMargin_s;
+    const double to_s = std::max((1.0 - drift) * run.time_s.back(), (1.0 + drift) * run.time_s.back()) + o.maxOffset_s + kMargin_s;
+    // Frame times count from the first frame (FrameIndex::timeOrigin_s), as the sync's do.
+    return FrameSpan{index.frameAt(from_s), index.frameAt(to_s)}.within(index.size());
+}
+
 }  // namespace
 
 VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyncOptions& options,
@@ -46,7 +62,8 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     VideoSync out;
     out.frames = index.size();
     FrameReader reader(index, 8);
-    reader.keepGrayFrames(kPassesGrayBudget_bytes);  // sampled, tracked, maybe tracked again
+    const FrameSpan reach = framesInReach(index, run, options.sync);
+    reader.keepGrayFrames(kPassesGrayBudget_bytes, reach);  // sampled, tracked, maybe tracked again
     const bool detected = !options.axis;
     std::vector<double> scores;
     // Every line that looks at all like a needle is tracked, not the few that look most like
@@ -55,7 +72,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     // more like a moving tip than the needle itself (seed 461476: the needle's line ranked
     // seventh behind six of them). Which one is the needle, the fit to the recording decides.
     // One sampling serves the line finder and both passes of the tracker.
-    const FrameSamples samples = sampleFrames(reader, 40);
+    const FrameSamples samples = sampleFrames(reader, 40, reach);
     std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(samples, options.roi, 16, &scores)
                                             : std::vector<NeedleAxis>{*options.axis};
     if (!axes.empty()) {

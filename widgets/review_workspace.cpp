@@ -639,6 +639,10 @@ void ReviewWorkspace::clearVideo()
     frame_ = -1;
     requested_ = -1;
     video_->clearVideo();
+    // What the decoder still does for the video gone (indexing it, reading a frame of a file
+    // since deleted) is no longer this run's: it said "cannot reopen the video" or "Indexing
+    // the video" over a run without one (video probe).
+    decoder_->close();
 }
 
 bool ReviewWorkspace::attachVideo(const QString& path)

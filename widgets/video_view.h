@@ -16,6 +16,7 @@ public:
     explicit VideoView(QWidget* parent = nullptr);
     void setFrame(const QImage& image, int index, double time_s);
     void setMessage(const QString& text);  // shown instead of a frame (no video, indexing...)
+    QString message() const { return message_; }
     QRect roi() const { return roi_; }     // in video pixels; empty = whole frame
     void setRoi(const QRect& roi);
     int frameIndex() const { return index_; }

@@ -675,6 +675,42 @@ private slots:
 
     // A file that does not open as video (here the head of an H.264 MP4 whose index was never
     // written) is not attached: the run keeps the video it had, in the session and on screen.
+    // A run whose video fails to open (or is still being indexed), left for a run without one
+    // before the decoder answers: its answer is not this run's. "cannot reopen the video" of the
+    // video gone, or "Indexing the video", stood over a run without video (video probe).
+    void aRunWithoutVideoHearsNothingOfTheLastOne()
+    {
+        const QString broken = dir_.filePath("gone.mp4"), withVideo = dir_.filePath("with.csv"), without = dir_.filePath("without.csv");
+        QFile cut(broken);
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(QByteArray::fromHex("0000001c667479706973736f6d0000020069736f6d69736f32617663310000000866726565"));
+        cut.write(QByteArray(40000, '\x5a'));
+        cut.close();
+        QFile::remove(withVideo);
+        QFile::remove(without);
+        QVERIFY(QFile::copy(run_, withVideo) && QFile::copy(run_, without));
+        nb::writeRunVideoLink(withVideo, nb::RunVideoLink{broken, {}, nb::SyncMethod::None, std::nullopt});
+        nb::writeRunVideoLink(without, std::nullopt);
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QSignalSpy failed(ws.decoder(), &nb::video::VideoDecoder::failed);
+        QVERIFY(ws.openRun(withVideo));
+        QCOMPARE(ws.videoPath(), broken);
+        QVERIFY(ws.openRun(without));  // before the decoder has answered
+        QVERIFY(ws.videoPath().isEmpty());
+        QTest::qWait(2000);
+        QCOMPARE(failed.count(), 0);
+        QVERIFY2(!ws.status().contains(QStringLiteral("gone.mp4")), qPrintable(ws.status()));
+        QVERIFY2(!ws.videoView()->message().contains(QStringLiteral("gone.mp4")) && !ws.videoView()->message().contains(QStringLiteral("Indexing")),
+                 qPrintable(ws.videoView()->message()));
+        // The run with the video, opened again, still says why it cannot be shown.
+        QVERIFY(ws.openRun(withVideo));
+        QVERIFY(failed.wait(20000));
+        QTRY_VERIFY2(ws.videoView()->message().contains(QStringLiteral("gone.mp4")) || ws.status().contains(QStringLiteral("gone.mp4")),
+                     qPrintable(ws.status() + " / " + ws.videoView()->message()));
+    }
+
     void aVideoThatFailsToOpenIsNotAttached()
     {
         const QString broken = dir_.filePath("broken.mp4");

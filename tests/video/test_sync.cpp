@@ -4,6 +4,7 @@
 #include "core/labels.h"
 #include "core/run_file.h"
 #include "core/sync.h"
+#include "needle_video.h"
 #include "support/needlebench_cli.h"
 #include "support/sanitizer_share.h"
 
@@ -18,6 +19,13 @@
 #include <cmath>
 #include <functional>
 #include <random>
+
+// A stroke of 60 px in 3 s after 10 s at rest (30 frames/s); a minute later, the needle drawn
+// back (another run in the same video).
+static double strokeThenAnotherLater(int frame)
+{
+    return -30.0 + 60.0 * std::clamp(frame - 300, 0, 90) / 90.0 - 60.0 * std::clamp(frame - 2100, 0, 90) / 90.0;
+}
 
 static QJsonObject runJson(const QStringList& args, int* code = nullptr)
 {
@@ -344,6 +352,49 @@ private slots:
         const nbtest::CliResult small = nbtest::runCli({"sync", run_, tiny, "--json"}, 240000);
         QCOMPARE(small.code, 1);
         QVERIFY2(small.err.contains(tiny) && small.err.contains(QStringLiteral("too small")), qPrintable(small.err));
+    }
+
+    // A long video of which a run can lie only in a short stretch (the offsets tried, ±20 s by
+    // default): that stretch is tracked, not the whole video, which took five minutes for a
+    // half-hour video and a minute's run (video probe). The offset is found all the same, and
+    // the answer says what was tracked.
+    void aLongVideoIsTrackedWhereTheRunCanLie()
+    {
+        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        nb::needle_video::NeedleVideo v;
+        v.width = 320;
+        v.height = 240;
+        v.contrast = 60.0;
+        v.frames = 2400;  // 80 s
+        v.tip = strokeThenAnotherLater;
+        const QString video = dir_.filePath("long.avi"), run = dir_.filePath("stroke.csv"), trace = dir_.filePath("long-trace.csv");
+        const QString problem = nb::needle_video::writeNeedleVideo(video, v);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        // Recorded: 0.5 s at rest, the stroke of 15 mm in 3 s, 0.5 s at rest. The video shows
+        // the stroke from 10 s: the offset is 9.5 s.
+        QFile f(run);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray csv = "time_s,position_mm,force_N\n";
+        for (int i = 0; i <= 2000; ++i) {
+            const double t = i * 0.002;
+            csv += QByteArray::number(t, 'f', 4) + ',' + QByteArray::number(15.0 * std::clamp((t - 0.5) / 3.0, 0.0, 1.0), 'f', 6) + ",0\n";
+        }
+        f.write(csv);
+        f.close();
+        int code = -1;
+        const QJsonObject r = runJson({"sync", run, video, "--json", "--trace", trace}, &code);
+        QCOMPARE(code, 0);
+        QVERIFY2(std::abs(r["offset_s"].toDouble() - 9.5) < 1.0 / 30.0, qPrintable(QJsonDocument(r).toJson()));
+        QCOMPARE(r["frames"].toInt(), 2400);
+        // From the video's start (9.5 - 20 s is before it) to 4 + 20 s and a few seconds more.
+        QVERIFY2(r["frames_tracked"].toInt() > 700 && r["frames_tracked"].toInt() < 900, qPrintable(QJsonDocument(r).toJson()));
+        QFile t(trace);
+        QVERIFY(t.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = t.readAll().trimmed().split('\n');
+        QCOMPARE(lines.size(), r["frames_tracked"].toInt() + 1);
+        QVERIFY2(lines.last().split(',').first().toDouble() < 28.0, lines.last().constData());
+        const nbtest::CliResult text = nbtest::runCli({"sync", run, video}, 240000);
+        QVERIFY2(text.out.contains(QStringLiteral("tracked:")) && text.out.contains(QStringLiteral("of 80.00 s")), qPrintable(text.out));
     }
 
     // The operator may draw the needle's line from the tip to the shaft as well as the other
