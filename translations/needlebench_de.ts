@@ -2266,7 +2266,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+83"/>
+        <location filename="../widgets/review_workspace.cpp" line="+84"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2342,12 +2342,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+955"/>
+        <location line="+975"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-952"/>
+        <location line="-972"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2373,12 +2373,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+510"/>
+        <location line="+530"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-510"/>
+        <location line="-530"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2502,12 +2502,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+746"/>
+        <location line="+766"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-566"/>
+        <location line="-588"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2522,7 +2522,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+285"/>
+        <location line="+307"/>
         <source>set the offset and drift from two events</source>
         <translation>Versatz und Drift aus zwei Ereignissen setzen</translation>
     </message>
@@ -2567,7 +2567,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-861"/>
+        <location line="-881"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2577,7 +2577,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
     <message>
-        <location line="+184"/>
+        <location line="+182"/>
         <source>No run open: double-click one in the session list</source>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
@@ -2626,7 +2626,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+173"/>
+        <location line="+195"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation>%1 auf %2 bei %3 s geschlossen</translation>
     </message>
@@ -2716,7 +2716,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-829"/>
+        <location line="-849"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2766,7 +2766,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Labels dieses Protokolls und ihre Tasten hinzufügen, umbenennen oder entfernen</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+58"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation>Tasten: %1 · S teilen · Entf löschen · Strg+Z rückgängig</translation>
     </message>
@@ -2791,7 +2791,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+131"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>

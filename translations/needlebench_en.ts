@@ -2260,7 +2260,7 @@ Stop the stage now (emergency stop) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+83"/>
+        <location filename="../widgets/review_workspace.cpp" line="+84"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2336,12 +2336,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+955"/>
+        <location line="+975"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-952"/>
+        <location line="-972"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2367,12 +2367,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+510"/>
+        <location line="+530"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-510"/>
+        <location line="-530"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2496,12 +2496,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+746"/>
+        <location line="+766"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-566"/>
+        <location line="-588"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2516,7 +2516,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+285"/>
+        <location line="+307"/>
         <source>set the offset and drift from two events</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2561,7 +2561,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-861"/>
+        <location line="-881"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2571,7 +2571,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+184"/>
+        <location line="+182"/>
         <source>No run open: double-click one in the session list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2620,7 +2620,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+173"/>
+        <location line="+195"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2708,7 +2708,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-829"/>
+        <location line="-849"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2758,7 +2758,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+58"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2783,7 +2783,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+131"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>

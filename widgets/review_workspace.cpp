@@ -39,6 +39,7 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <limits>
 #include <functional>
 #include <cmath>
 #include <utility>
@@ -462,9 +463,7 @@ void ReviewWorkspace::buildUi()
     playTimer_->setInterval(15);
     connect(playTimer_, &QTimer::timeout, this, [this] {
         setCursorTime(playStartCursor_ + playClock_.elapsed() / 1000.0 * speed_);
-        const double end = run_.size() ? run_.time_s.back()
-                                       : (index_ ? mapping_.toRecording(index_->frames.back().time_s) : 0.0);
-        if (cursor_ >= end)
+        if (cursor_ >= cursorSpan().second)
             setPlaying(false);
     });
     updateSyncUi();
@@ -737,11 +736,33 @@ void ReviewWorkspace::storeVideoLink()
     }
 }
 
+std::pair<double, double> ReviewWorkspace::cursorSpan() const
+{
+    double from = std::numeric_limits<double>::infinity(), to = -from;
+    if (run_.size()) {
+        from = run_.time_s.front();
+        to = run_.time_s.back();
+    }
+    if (index_ && !index_->frames.empty()) {
+        from = std::min(from, mapping_.toRecording(index_->frames.front().time_s));
+        to = std::max(to, mapping_.toRecording(index_->frames.back().time_s));
+    }
+    return {from, to};
+}
+
 void ReviewWorkspace::setCursorTime(double t)
 {
-    if (run_.size())
-        t = std::clamp(t, run_.time_s.front(), run_.time_s.back());
+    // Only the run's span at offset 0 was reachable: a video that starts long before the
+    // recording showed only its first frames, and the event to mark in it could not be reached
+    // (video probe).
+    if (const auto [from, to] = cursorSpan(); from <= to)
+        t = std::clamp(t, from, to);
     cursor_ = t;
+    // The plot follows a cursor that leaves it, as far as the cursor went.
+    if (const QCPRange shown = plot_->xAxis->range(); run_.size() && (t < shown.lower || t > shown.upper)) {
+        const double shift = t < shown.lower ? t - shown.lower : t - shown.upper;
+        plot_->xAxis->setRange(shown.lower + shift, shown.upper + shift);
+    }
     timeline_->setCursorTime(t);
     {
         const QSignalBlocker block(jumpBox_);

@@ -151,6 +151,9 @@ private:
     void updateShading();
     void saveLabels();
     void requestFrameForCursor();
+    // Where the cursor can go (recording time): the run, and the whole video through the
+    // mapping, so that a frame outside the run can be reached to mark an event in it.
+    std::pair<double, double> cursorSpan() const;
     void updateSyncUi();
     void updateKeysHelp();
     // The one background job that tracks the needle and fits it (video::syncVideoToRun);

@@ -675,6 +675,43 @@ private slots:
 
     // A file that does not open as video (here the head of an H.264 MP4 whose index was never
     // written) is not attached: the run keeps the video it had, in the session and on screen.
+    // At offset 0 only the run's span could be reached: the video's frames after the recording's
+    // end (or all of them, for a video that starts long before it) could not be shown, and an
+    // event in them could not be marked to set the offset (video probe). The cursor now goes
+    // over the whole video, and the plot follows it.
+    void theWholeVideoCanBeReached()
+    {
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QVERIFY(ws.openRun(run_));
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        QVERIFY(ws.attachVideo(video_));  // the offset starts from 0
+        QVERIFY(opened.wait(60000));
+        QCOMPARE(ws.mapping().offset_s, 0.0);
+        const nb::video::FrameIndexPtr index = ws.decoder()->index();
+        QVERIFY(index);
+        const nb::Run run = nb::readRunFile(run_).run;
+        const double runEnd = run.time_s.back();
+        QVERIFY2(index->frames.back().time_s > runEnd + 0.5, "the simulated video ends with the run");
+        ws.stepFrames(index->size());
+        QTRY_COMPARE(ws.currentFrame(), index->size() - 1);
+        QVERIFY(ws.cursorTime() > runEnd + 0.5);
+        QCustomPlot* plot = nullptr;
+        for (QCustomPlot* p : ws.findChildren<QCustomPlot*>())
+            if (p->xAxis->label().startsWith(QStringLiteral("recording time")))
+                plot = p;
+        QVERIFY(plot);
+        const QCPRange shown = plot->xAxis->range();
+        QVERIFY2(shown.lower <= ws.cursorTime() && ws.cursorTime() <= shown.upper,
+                 qPrintable(QStringLiteral("cursor %1 s outside the plot's %2 to %3 s").arg(ws.cursorTime()).arg(shown.lower).arg(shown.upper)));
+        ws.stepFrames(-index->size());
+        QTRY_COMPARE(ws.currentFrame(), 0);
+        // Beyond both, the cursor stops at their ends.
+        ws.setCursorTime(1e6);
+        QCOMPARE(ws.cursorTime(), std::max(runEnd, index->frames.back().time_s));
+    }
+
     // A run whose video fails to open (or is still being indexed), left for a run without one
     // before the decoder answers: its answer is not this run's. "cannot reopen the video" of the
     // video gone, or "Indexing the video", stood over a run without video (video probe).
