@@ -7,6 +7,7 @@
 #include <QSet>
 #include <cerrno>
 #include <cstring>
+#include <new>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -14,6 +15,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <new>
 
 namespace nb {
 
@@ -96,7 +98,13 @@ RunReadResult readRunFile(const QString& path, const RunReadOptions& options)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         throw RunFileError(path, 0, nb::TrCore::tr("cannot open: %1").arg(file.errorString()));
-    return parseRunText(file.readAll(), path, options);
+    try {
+        return parseRunText(file.readAll(), path, options);
+    } catch (const std::bad_alloc&) {
+        // What was read is freed by now. A file too large for memory was said as "internal
+        // error: out of memory", without its name.
+        throw RunFileError(path, 0, nb::TrCore::tr("too large to read into memory (%1 MB)").arg(double(file.size()) / 1e6, 0, 'f', 0));
+    }
 }
 
 RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const RunReadOptions& options)

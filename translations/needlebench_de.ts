@@ -5239,7 +5239,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+301"/>
+        <location filename="../core/run_file.cpp" line="+309"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5615,7 +5615,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     <message>
         <location line="+11"/>
         <location filename="../core/labels.cpp" line="-61"/>
-        <location filename="../core/run_file.cpp" line="-296"/>
+        <location filename="../core/run_file.cpp" line="-302"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
@@ -5665,7 +5665,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>keine Kopfzeile (erwartet: track,label,start_s,end_s,comment)</translation>
     </message>
     <message>
-        <location filename="../core/run_file.cpp" line="+12"/>
+        <location filename="../core/run_file.cpp" line="+6"/>
+        <source>too large to read into memory (%1 MB)</source>
+        <translation>zu groß, um in den Speicher gelesen zu werden (%1 MB)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>binary data, not a text run file</source>
         <translation>Binärdaten, keine Text-Laufdatei</translation>
     </message>

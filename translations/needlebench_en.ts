@@ -5134,7 +5134,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <location filename="../core/labels.cpp" line="+113"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+301"/>
+        <location filename="../core/run_file.cpp" line="+309"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5510,7 +5510,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     <message>
         <location line="+11"/>
         <location filename="../core/labels.cpp" line="-61"/>
-        <location filename="../core/run_file.cpp" line="-296"/>
+        <location filename="../core/run_file.cpp" line="-302"/>
         <source>cannot open: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5560,7 +5560,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/run_file.cpp" line="+12"/>
+        <location filename="../core/run_file.cpp" line="+6"/>
+        <source>too large to read into memory (%1 MB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>binary data, not a text run file</source>
         <translation type="unfinished"></translation>
     </message>

@@ -7,6 +7,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
+#include <utility>
+#include <new>
+#include <sys/resource.h>
 
 using namespace nb;
 
@@ -184,6 +187,58 @@ private slots:
         const RunFileError e = refused(path);
         QVERIFY(e.message().contains(QStringLiteral("nope.csv")));
         QVERIFY(e.reason().contains(QStringLiteral("cannot open")));
+    }
+
+    // A file too large for the memory at hand is refused by name: it was said as "internal
+    // error: out of memory" (a 1 GB file). The process's data limit is lowered to what it uses
+    // and 150 MB more, and a file that needs more than that to read is given.
+    void aFileTooLargeForMemoryIsNamed()
+    {
+#if defined(__SANITIZE_ADDRESS__)
+        QSKIP("AddressSanitizer's shadow memory counts against the data limit this test lowers");
+#else
+        const QString path = dir_.filePath(QStringLiteral("huge.csv"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("time_s,position_mm,force_N\n");
+            QByteArray rows;
+            for (int i = 1; i <= 8'000'000; ++i) {
+                rows += QByteArray::number(i) + ",0,0\n";
+                if (rows.size() > (1 << 20))
+                    f.write(std::exchange(rows, QByteArray()));
+            }
+            f.write(rows);
+        }
+        // 8 M rows of three numbers (90 MB): 190 MB more as vectors of doubles.
+        QFile status(QStringLiteral("/proc/self/status"));
+        QVERIFY(status.open(QIODevice::ReadOnly));
+        long dataKb = -1;
+        for (const QByteArray& line : status.readAll().split('\n'))
+            if (line.startsWith("VmData:"))
+                dataKb = line.mid(7).trimmed().split(' ').first().toLong();
+        QVERIFY(dataKb > 0);
+        rlimit before{};
+        QCOMPARE(getrlimit(RLIMIT_DATA, &before), 0);
+        rlimit lowered = before;
+        lowered.rlim_cur = rlim_t(dataKb + 150 * 1024) * 1024;
+        QCOMPARE(setrlimit(RLIMIT_DATA, &lowered), 0);
+        QString message;
+        bool threw = false;
+        try {
+            readRunFile(path);
+        } catch (const RunFileError& e) {
+            threw = true;
+            message = e.message();
+        } catch (const std::bad_alloc&) {
+            message = QStringLiteral("std::bad_alloc escaped");
+        }
+        setrlimit(RLIMIT_DATA, &before);
+        QVERIFY2(threw, qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("huge.csv")) && message.contains(QStringLiteral("too large to read into memory")),
+                 qPrintable(message));
+        QFile::remove(path);
+#endif
     }
 
     // Issue 15: a second writer of the same file is refused, by name, and leaves it untouched.
