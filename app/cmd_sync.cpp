@@ -146,9 +146,7 @@ int cmdSync(const QStringList& args, Io io)
         const video::VideoSync vs = video::syncVideoToRun(index, run, vso);
         const SyncResult& r = vs.result;
         // Only the frames the offsets tried can put beside the recording are tracked.
-        const video::FrameSpan tracked = vs.track.time_s.empty()
-                                             ? video::FrameSpan{0, index.size() - 1}
-                                             : video::FrameSpan{index.frameAt(vs.track.time_s.front()), index.frameAt(vs.track.time_s.back())};
+        const video::FrameSpan& tracked = vs.tracked;
         // Nothing in the picture moved with the recording: there is no offset to be sure of,
         // and no uncertainty to give either (it read "0.00 frames").
         const bool moved = r.correlation > 0.0;
@@ -213,9 +211,10 @@ int cmdSync(const QStringList& args, Io io)
                               .arg(vs.track.axisDetected ? nb::TrCli::tr("found in the picture") : nb::TrCli::tr("given"));
             }
             io.out << nb::TrCli::tr("method:      %1\n").arg(r.method);
-            if (tracked.size() < index.size())
+            if (tracked.size() > 0 && tracked.size() < index.size())
                 io.out << nb::TrCli::tr("tracked:     %1 to %2 s of %3 s (as far as the offsets tried reach)\n")
-                              .arg(vs.track.time_s.front(), 0, 'f', 2).arg(vs.track.time_s.back(), 0, 'f', 2)
+                              .arg(index.frames[std::size_t(tracked.first)].time_s, 0, 'f', 2)
+                              .arg(index.frames[std::size_t(tracked.last)].time_s, 0, 'f', 2)
                               .arg(index.duration_s(), 0, 'f', 2);
             if (!r.acceptable()) {
                 io.out << nb::TrCli::tr("LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it\n")

@@ -2342,12 +2342,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+975"/>
+        <location line="+995"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-972"/>
+        <location line="-992"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2373,12 +2373,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+530"/>
+        <location line="+532"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-530"/>
+        <location line="-532"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2502,12 +2502,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+766"/>
+        <location line="+786"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-588"/>
+        <location line="-608"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2522,7 +2522,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+307"/>
+        <location line="+279"/>
+        <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
+        <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
+    </message>
+    <message>
+        <location line="+48"/>
         <source>set the offset and drift from two events</source>
         <translation>Versatz und Drift aus zwei Ereignissen setzen</translation>
     </message>
@@ -2567,7 +2572,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-881"/>
+        <location line="-901"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2626,7 +2631,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+195"/>
+        <location line="+215"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation>%1 auf %2 bei %3 s geschlossen</translation>
     </message>
@@ -2716,7 +2721,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-849"/>
+        <location line="-869"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2791,17 +2796,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+131"/>
+        <location line="+133"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+32"/>
         <source>Event marked in the force record at %1 s; now step the video to it and mark it there</source>
         <translation>Ereignis in der Kraftaufzeichnung bei %1 s markiert; nun das Video dorthin schalten und es dort markieren</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>Event marked in the video at %1 s; now mark it in the force record</source>
         <translation>Ereignis im Video bei %1 s markiert; nun in der Kraftaufzeichnung markieren</translation>
     </message>
@@ -4645,7 +4650,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4746,7 +4751,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it
 </source>
         <translation>GERINGE KONFIDENZ (unter %1): den Versatz vor der Verwendung prüfen, indem ein Ereignis in beiden markiert wird
@@ -4792,7 +4797,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Videodatei</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-127"/>
+        <location filename="../app/cmd_sync.cpp" line="-126"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation>Warnung: %1: %2</translation>

@@ -2336,12 +2336,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+975"/>
+        <location line="+995"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-972"/>
+        <location line="-992"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2367,12 +2367,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+530"/>
+        <location line="+532"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-530"/>
+        <location line="-532"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2496,12 +2496,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+766"/>
+        <location line="+786"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-588"/>
+        <location line="-608"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2516,7 +2516,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+307"/>
+        <location line="+279"/>
+        <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+48"/>
         <source>set the offset and drift from two events</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2561,7 +2566,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-881"/>
+        <location line="-901"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2620,7 +2625,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+195"/>
+        <location line="+215"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2708,7 +2713,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-849"/>
+        <location line="-869"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2783,17 +2788,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+131"/>
+        <location line="+133"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+32"/>
         <source>Event marked in the force record at %1 s; now step the video to it and mark it there</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>Event marked in the video at %1 s; now mark it in the force record</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4579,7 +4584,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4667,7 +4672,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it
 </source>
         <translation type="unfinished"></translation>
@@ -4711,7 +4716,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-127"/>
+        <location filename="../app/cmd_sync.cpp" line="-126"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation type="unfinished"></translation>

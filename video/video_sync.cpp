@@ -63,6 +63,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     out.frames = index.size();
     FrameReader reader(index, 8);
     const FrameSpan reach = framesInReach(index, run, options.sync);
+    out.tracked = reach.within(index.size());
     reader.keepGrayFrames(kPassesGrayBudget_bytes, reach);  // sampled, tracked, maybe tracked again
     const bool detected = !options.axis;
     std::vector<double> scores;
@@ -154,6 +155,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
         return out;
     }
     // No needle to follow: the old, weaker comparison, never confident enough to accept.
+    out.tracked = FrameSpan{}.within(index.size());
     const MotionSignal m = computeMotionSignal(reader, options.roi, progress, cancel);
     out.result = synchronise({m.time_s, m.value}, needleSpeed(run), options.sync);
     out.result.method = QStringLiteral("picture motion vs needle speed (no needle found)");

@@ -27,6 +27,7 @@ struct VideoSync {
     SyncResult result;
     NeedleTrack track;                // empty when the fallback was used
     int frames = 0;
+    FrameSpan tracked;                // the frames looked at (those the offsets tried can reach)
 };
 
 // Throws VideoError (the file) and std::invalid_argument (nothing to compare).

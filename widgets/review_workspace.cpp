@@ -758,9 +758,11 @@ void ReviewWorkspace::setCursorTime(double t)
     if (const auto [from, to] = cursorSpan(); from <= to)
         t = std::clamp(t, from, to);
     cursor_ = t;
-    // The plot follows a cursor that leaves it, as far as the cursor went.
+    // The plot follows a cursor that leaves it, to a tenth of its width inside (on its edge
+    // the cursor hid under the axis).
     if (const QCPRange shown = plot_->xAxis->range(); run_.size() && (t < shown.lower || t > shown.upper)) {
-        const double shift = t < shown.lower ? t - shown.lower : t - shown.upper;
+        const double margin = 0.1 * shown.size();
+        const double shift = t < shown.lower ? t - shown.lower - margin : t - shown.upper + margin;
         plot_->xAxis->setRange(shown.lower + shift, shown.upper + shift);
     }
     timeline_->setCursorTime(t);
@@ -820,8 +822,22 @@ void ReviewWorkspace::setSpeed(double factor)
     playClock_.restart();
 }
 
+bool ReviewWorkspace::cursorInRecording()
+{
+    // The cursor also goes over the video before and after the recording, where there is no
+    // force to mark or label: a label at -20 s and a force mark before the first sample were
+    // taken without a word (probe).
+    if (run_.size() == 0 || (cursor_ >= run_.time_s.front() && cursor_ <= run_.time_s.back()))
+        return true;
+    showStatus(tr("The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording")
+                   .arg(localNumber(cursor_, 3), localNumber(run_.time_s.front(), 3), localNumber(run_.time_s.back(), 3)));
+    return false;
+}
+
 void ReviewWorkspace::markEventInRecording()
 {
+    if (!cursorInRecording())
+        return;
     markRecording_ = cursor_;
     if (markVideo_)
         applyMarkedEvent();
@@ -831,9 +847,13 @@ void ReviewWorkspace::markEventInRecording()
 
 void ReviewWorkspace::markEventInVideo()
 {
-    if (!index_ || frame_ < 0)
+    if (!index_ || index_->frames.empty())
         return;
-    markVideo_ = index_->frames[std::size_t(frame_)].time_s;
+    // The frame at the cursor, not the frame last shown: after a far step the frame on screen
+    // may still be the one before while the cursor's is decoded, and the mark took that one
+    // (probe: 11 frames off, while the status named the old frame's time).
+    const int n = index_->frameAt(mapping_.toVideo(cursor_));
+    markVideo_ = index_->frames[std::size_t(n)].time_s;
     if (markRecording_)
         applyMarkedEvent();
     else
@@ -906,7 +926,7 @@ void ReviewWorkspace::setMapping(const TimelineMapping& m, SyncMethod method, st
 void ReviewWorkspace::handleLabelKey(int key)
 {
     const LabelDef* def = model_->definitionForKey(key);
-    if (!def)
+    if (!def || !cursorInRecording())
         return;
     timeline_->setCurrentTrack(def->track);
     if (def->point) {

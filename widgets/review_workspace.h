@@ -154,6 +154,8 @@ private:
     // Where the cursor can go (recording time): the run, and the whole video through the
     // mapping, so that a frame outside the run can be reached to mark an event in it.
     std::pair<double, double> cursorSpan() const;
+    // Whether the cursor lies in the recording; says so in the status line when it does not.
+    bool cursorInRecording();
     void updateSyncUi();
     void updateKeysHelp();
     // The one background job that tracks the needle and fits it (video::syncVideoToRun);

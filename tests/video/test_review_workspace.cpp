@@ -710,6 +710,26 @@ private slots:
         // Beyond both, the cursor stops at their ends.
         ws.setCursorTime(1e6);
         QCOMPARE(ws.cursorTime(), std::max(runEnd, index->frames.back().time_s));
+
+        // After the recording there is no force to label or mark: said, and nothing placed (a
+        // label at -20 s and a force mark before the first sample were taken without a word).
+        const std::size_t labels = ws.labelModel()->labels().size();
+        QTest::keyClick(&ws, Qt::Key_1);
+        QCOMPARE(ws.labelModel()->labels().size(), labels);
+        QVERIFY2(ws.status().contains(QStringLiteral("outside the recording")), qPrintable(ws.status()));
+        ws.markEventInRecording();
+        QVERIFY2(ws.status().contains(QStringLiteral("outside the recording")), qPrintable(ws.status()));
+
+        // The event marked in the video is the frame at the cursor, not the one still on screen
+        // while the cursor's frame is decoded: a far step and a quick mark took the frame before
+        // (probe: 11 frames off, the status naming the old frame's time).
+        ws.setCursorTime(0.5);
+        QTRY_COMPARE(ws.currentFrame(), index->frameAt(0.5));
+        ws.setCursorTime(3.0);
+        ws.markEventInVideo();  // before the frame at 3 s is shown
+        ws.setCursorTime(1.0);
+        ws.markEventInRecording();
+        QCOMPARE(ws.mapping().offset_s, index->frames[std::size_t(index->frameAt(3.0))].time_s - 1.0);
     }
 
     // A run whose video fails to open (or is still being indexed), left for a run without one

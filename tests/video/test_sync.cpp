@@ -395,6 +395,29 @@ private slots:
         QVERIFY2(lines.last().split(',').first().toDouble() < 28.0, lines.last().constData());
         const nbtest::CliResult text = nbtest::runCli({"sync", run, video}, 240000);
         QVERIFY2(text.out.contains(QStringLiteral("tracked:")) && text.out.contains(QStringLiteral("of 80.00 s")), qPrintable(text.out));
+
+        // Timestamps that go back (two MPEG-TS files joined): no span can be read off them, the
+        // whole video is tracked, and the answer says so (it gave half the frames, and a
+        // "tracked:" line for the whole file).
+        const QString ts = dir_.filePath("once.ts"), twice = dir_.filePath("twice.ts"), twiceTrace = dir_.filePath("twice-trace.csv");
+        QProcess ffmpeg;
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-i", video_, "-c:v", "libx264", "-preset", "ultrafast", "-pix_fmt",
+                                               "yuv420p", "-f", "mpegts", ts});
+        QVERIFY2(ffmpeg.waitForStarted(10000), "the ffmpeg tool is missing (scripts/install-deps.sh installs it)");
+        QVERIFY(ffmpeg.waitForFinished(120000) && ffmpeg.exitCode() == 0);
+        QFile a(ts), joined(twice);
+        QVERIFY(a.open(QIODevice::ReadOnly) && joined.open(QIODevice::WriteOnly));
+        const QByteArray bytes = a.readAll();
+        joined.write(bytes);
+        joined.write(bytes);
+        joined.close();
+        const QJsonObject j = runJson({"sync", run_, twice, "--json", "--trace", twiceTrace}, &code);
+        QCOMPARE(code, 0);
+        QCOMPARE(j["frames_tracked"].toInt(), j["frames"].toInt());
+        QFile tt(twiceTrace);
+        QVERIFY(tt.open(QIODevice::ReadOnly));
+        QCOMPARE(int(tt.readAll().trimmed().split('\n').size()) - 1, j["frames"].toInt());
+        QVERIFY(!nbtest::runCli({"sync", run_, twice}, 240000).out.contains(QStringLiteral("tracked:")));
     }
 
     // The operator may draw the needle's line from the tip to the shaft as well as the other
