@@ -17,8 +17,8 @@ constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
 // Bump whenever buildFrameIndex() would index a file differently.
 // 2: width and height as shown, turned by the rotation tag; 3: the facts behind the warnings, not
 // their text (a stored index spoke the language of the program that made it); 4: the count of
-// video streams
-constexpr quint32 kVersion = 4;
+// video streams; 5: an MPEG-TS file's stream counted once (4 counted it in its program too)
+constexpr quint32 kVersion = 5;
 // Indexes kept at most; the least recently stored go first.
 constexpr int kMaxStored = 300;
 

@@ -16,8 +16,15 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
     ProbeResult r;
     r.videoStreams = 0;
     double start = 0.0;
+    // A stream listed inside a program ([PROGRAM] … [/PROGRAM]: MPEG-TS) is listed again on its
+    // own; counted twice, every TS file was said to hold two video streams.
+    bool inProgram = false;
     for (const QByteArray& block : stream->split('[')) {
-        if (!block.startsWith("STREAM]") || block.contains("attached_pic=1"))
+        if (block.startsWith("PROGRAM]"))
+            inProgram = true;
+        else if (block.startsWith("/PROGRAM]"))
+            inProgram = false;
+        if (inProgram || !block.startsWith("STREAM]") || block.contains("attached_pic=1"))
             continue;
         if (r.videoStreams++ > 0)
             continue;

@@ -122,13 +122,14 @@ private slots:
     void aSecondVideoStreamIsSaid()
     {
         const QString two = dir_.filePath(QStringLiteral("two.mp4")), cover = dir_.filePath(QStringLiteral("cover.mp4")),
-                      png = dir_.filePath(QStringLiteral("cover.png"));
+                      png = dir_.filePath(QStringLiteral("cover.png")), ts = dir_.filePath(QStringLiteral("one.ts"));
         const QStringList small{"-f", "lavfi", "-t", "2", "-i", "testsrc2=size=160x120:rate=25"};
         const QStringList large{"-f", "lavfi", "-t", "2", "-i", "testsrc2=size=320x240:rate=25"};
         for (const QStringList& args : {small + large + QStringList{"-map", "0", "-map", "1", "-c:v", "libx264", "-pix_fmt", "yuv420p", two},
                                         QStringList{"-f", "lavfi", "-i", "color=c=red:size=64x64", "-frames:v", "1", png},
                                         large + QStringList{"-i", png, "-map", "0", "-map", "1", "-c:v:0", "libx264", "-pix_fmt", "yuv420p",
-                                                            "-c:v:1", "png", "-disposition:v:1", "attached_pic", cover}}) {
+                                                            "-c:v:1", "png", "-disposition:v:1", "attached_pic", cover},
+                                        large + QStringList{"-c:v", "libx264", "-pix_fmt", "yuv420p", "-f", "mpegts", ts}}) {
             QProcess ffmpeg;
             ffmpeg.start(QStringLiteral("ffmpeg"), QStringList{"-v", "error", "-y"} + args);
             QVERIFY(ffmpeg.waitForFinished(60000));
@@ -147,6 +148,11 @@ private slots:
         const FrameIndex withCover = loadOrBuildFrameIndex(cover, {}, nullptr, &fromStore, store);
         QCOMPARE(withCover.width, 320);
         QVERIFY2(withCover.warnings.isEmpty(), qPrintable(withCover.warnings.join('\n')));
+        // ffprobe lists an MPEG-TS file's stream twice, in its program and on its own: one stream
+        // (every TS file was said to hold two).
+        const FrameIndex transport = loadOrBuildFrameIndex(ts, {}, nullptr, &fromStore, store);
+        QCOMPARE(transport.videoStreams, 1);
+        QVERIFY2(transport.warnings.isEmpty(), qPrintable(transport.warnings.join('\n')));
     }
 
     void aChangedVideoIsIndexedAgain()
