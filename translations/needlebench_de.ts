@@ -2342,12 +2342,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+995"/>
+        <location line="+1004"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-992"/>
+        <location line="-1001"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2502,12 +2502,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+786"/>
+        <location line="+795"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-608"/>
+        <location line="-617"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2537,7 +2537,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Versatz aus einem Ereignis setzen</translation>
     </message>
     <message>
-        <location line="+161"/>
+        <location line="+99"/>
+        <source>Redone: %1</source>
+        <translation>Wiederhergestellt: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Undone: %1</source>
+        <translation>Rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <location line="+71"/>
         <source>They are kept in %1, and saved beside the run when it is opened again and its folder can be written.</source>
         <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
     </message>
@@ -2572,7 +2582,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-901"/>
+        <location line="-910"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2641,7 +2651,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1 auf %2 nicht geschlossen (wäre leer oder überlappte eine andere Phase): nicht hinzugefügt</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+106"/>
         <source>They could not be kept elsewhere either (%1): they are lost when another run is opened.</source>
         <translation>Sie ließen sich auch anderswo nicht aufbewahren (%1): Sie gehen verloren, wenn ein anderer Lauf geöffnet wird.</translation>
     </message>
@@ -2721,7 +2731,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-869"/>
+        <location line="-878"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2831,7 +2841,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1 überlappt eine andere Phase auf %2: nicht hinzugefügt</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+95"/>
         <source>Labels not saved: %1</source>
         <translation>Labels nicht gespeichert: %1</translation>
     </message>

@@ -2336,12 +2336,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+995"/>
+        <location line="+1004"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-992"/>
+        <location line="-1001"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2496,12 +2496,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+786"/>
+        <location line="+795"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-608"/>
+        <location line="-617"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2531,7 +2531,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+161"/>
+        <location line="+99"/>
+        <source>Redone: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Undone: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+71"/>
         <source>They are kept in %1, and saved beside the run when it is opened again and its folder can be written.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2566,7 +2576,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-901"/>
+        <location line="-910"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2635,7 +2645,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+106"/>
         <source>They could not be kept elsewhere either (%1): they are lost when another run is opened.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2713,7 +2723,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-869"/>
+        <location line="-878"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2823,7 +2833,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+95"/>
         <source>Labels not saved: %1</source>
         <translation type="unfinished"></translation>
     </message>

@@ -975,10 +975,19 @@ void ReviewWorkspace::keyPressEvent(QKeyEvent* e)
 {
     const bool ctrl = e->modifiers() & Qt::ControlModifier;
     const bool shift = e->modifiers() & Qt::ShiftModifier;
+    // The status line says what was undone or redone: it kept what the undone step had said
+    // ("Offset set; mark a second event…" after the offset went back to 0, probe).
+    auto step = [this](bool forward) {
+        if (!(forward ? undo_->canRedo() : undo_->canUndo()))
+            return;
+        const QString what = forward ? undo_->redoText() : undo_->undoText();
+        forward ? undo_->redo() : undo_->undo();
+        showStatus(forward ? tr("Redone: %1").arg(what) : tr("Undone: %1").arg(what));
+    };
     if (ctrl && e->key() == Qt::Key_Z) {
-        shift ? undo_->redo() : undo_->undo();
+        step(shift);
     } else if (ctrl && e->key() == Qt::Key_Y) {
-        undo_->redo();
+        step(true);
     } else if (e->key() == Qt::Key_Left || e->key() == Qt::Key_Right) {
         stepFrames((e->key() == Qt::Key_Left ? -1 : 1) * (shift ? 10 : 1));
     } else if (e->key() == Qt::Key_Space) {

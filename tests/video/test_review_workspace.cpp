@@ -501,6 +501,11 @@ private slots:
         QVERIFY2(std::abs(ws.mapping().toVideo(0.5) - 30 / fps) < 1e-6 && std::abs(ws.mapping().drift - drift) < 1e-6,
                  qPrintable(QStringLiteral("offset %1 drift %2").arg(ws.mapping().offset_s).arg(ws.mapping().drift)));
         QCOMPARE(ws.syncMethod(), nb::SyncMethod::EventMarks);
+        // The status line says what was undone, not what the undone mark had said.
+        QVERIFY2(ws.status().startsWith(QStringLiteral("Undone: set the offset from an event")), qPrintable(ws.status()));
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY2(ws.status().startsWith(QStringLiteral("Redone: set the offset from an event")), qPrintable(ws.status()));
+        QTest::keyClick(&ws, Qt::Key_Z, Qt::ControlModifier);
         ws.undoStack()->undo();
         ws.undoStack()->undo();
         QCOMPARE(ws.mapping(), nb::TimelineMapping{});
