@@ -175,7 +175,7 @@ void FrameReader::keepGrabbedGray(int j)
 
 cv::Mat FrameReader::gray(int n)
 {
-    const bool keeping = n >= grayKept_.first && n <= grayKept_.last && n >= 0 && std::size_t(n) < gray_.size();
+    const bool keeping = n >= grayKept_.first && n <= grayKept_.last && std::size_t(n) < gray_.size();
     if (keeping && !gray_[std::size_t(n)].empty())
         return gray_[std::size_t(n)];
     const cv::Mat g = grayOf(read(n).image);

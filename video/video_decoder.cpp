@@ -145,21 +145,24 @@ VideoDecoder::~VideoDecoder()
     thread_.wait();
 }
 
-void VideoDecoder::open(const QString& path)
+void VideoDecoder::forgetCurrent()
 {
     cancel_->store(true);  // an index still being built for the previous file stops
     cancel_ = std::make_shared<std::atomic_bool>(false);
     index_.reset();
+    path_.clear();
+}
+
+void VideoDecoder::open(const QString& path)
+{
+    forgetCurrent();
     path_ = path;
     QMetaObject::invokeMethod(worker_, [w = worker_, path, c = cancel_] { w->open(path, c); }, Qt::QueuedConnection);
 }
 
 void VideoDecoder::close()
 {
-    cancel_->store(true);
-    cancel_ = std::make_shared<std::atomic_bool>(false);
-    index_.reset();
-    path_.clear();
+    forgetCurrent();
     QMetaObject::invokeMethod(worker_, &DecoderWorker::close, Qt::QueuedConnection);
 }
 

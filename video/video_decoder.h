@@ -46,6 +46,7 @@ signals:
     void frameReady(int index, double time_s, const QImage& image);
 
 private:
+    void forgetCurrent();  // the file opened last: its indexing stopped, its answers no longer heard
     QThread thread_;
     DecoderWorker* worker_ = nullptr;
     FrameIndexPtr index_;
