@@ -149,7 +149,10 @@ int cmdSync(const QStringList& args, Io io)
         const video::FrameSpan& tracked = vs.tracked;
         // Nothing in the picture moved with the recording: there is no offset to be sure of,
         // and no uncertainty to give either (it read "0.00 frames").
-        const bool moved = r.correlation > 0.0;
+        // The tracked needle moving against the recorded position (a mirrored picture, the
+        // position's sign reversed) moved all the same: it said "none" for a correlation of -0.96.
+        const bool reversed = r.scale_px_per_mm < 0.0;
+        const bool moved = r.correlation > 0.0 || reversed;
         // Something moved, but nothing in its motion times the offset (a noise video).
         const bool measured = moved && std::isfinite(r.uncertainty_s);
         // A limit shorter than the records leaves offsets beyond it untried.
@@ -167,6 +170,7 @@ int cmdSync(const QStringList& args, Io io)
             o[QStringLiteral("offset_s")] = moved ? QJsonValue(r.offset_s) : QJsonValue();
             o[QStringLiteral("confidence")] = r.confidence;
             o[QStringLiteral("correlation")] = r.correlation;
+            o[QStringLiteral("reversed")] = reversed;
             if (r.onsetOffset_s)
                 o[QStringLiteral("onset_offset_s")] = *r.onsetOffset_s;
             o[QStringLiteral("frames")] = index.size();
@@ -196,6 +200,9 @@ int cmdSync(const QStringList& args, Io io)
                              : nb::TrCli::tr("offset:      none (nothing in the picture moved with the recording)\n"))
                    << nb::TrCli::tr("confidence:  %1\n").arg(r.confidence, 0, 'f', 2)
                    << nb::TrCli::tr("correlation: %1\n").arg(r.correlation, 0, 'f', 3);
+            if (reversed)
+                io.out << nb::TrCli::tr("reversed:    the needle in the picture moves against the recorded position "
+                                        "(a mirrored picture, or the position's sign)\n");
             if (r.onsetOffset_s)
                 io.out << nb::TrCli::tr("onsets say:  %1 s\n").arg(*r.onsetOffset_s, 0, 'f', 4);
             io.out << nb::TrCli::tr("drift:       %1 %\n").arg(100.0 * r.drift, 0, 'f', 4)

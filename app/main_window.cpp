@@ -434,6 +434,9 @@ void MainWindow::reviewRun(const QString& path)
         return;
     sessionView_->selectRun(path);
     tabs_->setCurrentWidget(review_);
+    // Also when Review was already the tab: a run opened from the session list left the keyboard
+    // there, and the arrows moved through the list instead of the frames.
+    review_->setFocus(Qt::OtherFocusReason);
 }
 
 bool MainWindow::createSession(const QString& dir, const SessionInfo& info)

@@ -169,8 +169,11 @@ std::optional<RunVideoLink> runVideoLinkFromRun(const Run& run, const QString& r
     const QString video = run.metadata.value(key::video_file, QString());
     if (!video.isEmpty())
         link.video = QFileInfo(video).isAbsolute() ? video : QFileInfo(runPath).absoluteDir().filePath(video);
+    // A video beside the run stands in for the one named when that has moved; with none there
+    // the named one stays, so that Review says it is missing (it said "No video").
     if (link.video.isEmpty() || !QFileInfo::exists(link.video))
-        link.video = videoBesideRun(runPath);
+        if (const QString beside = videoBesideRun(runPath); !beside.isEmpty() || link.video.isEmpty())
+            link.video = beside;
     return link;
 }
 

@@ -1444,7 +1444,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+575"/>
+        <location filename="../app/main_window.cpp" line="+578"/>
         <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1507,7 +1507,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-475"/>
+        <location filename="../app/main_window.cpp" line="-478"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1658,7 +1658,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>NeedleBench – %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+26"/>
         <source>New session</source>
         <translation>Neue Sitzung</translation>
     </message>
@@ -1796,12 +1796,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Nicht beenden</translation>
     </message>
     <message>
-        <location line="-818"/>
+        <location line="-821"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+644"/>
+        <location line="+647"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1823,7 +1823,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-588"/>
+        <location line="-591"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2281,7 +2281,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
@@ -2342,12 +2342,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1004"/>
+        <location line="+1011"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1001"/>
+        <location line="-1008"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2373,12 +2373,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+532"/>
+        <location line="+539"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-532"/>
+        <location line="-539"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2502,12 +2502,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+795"/>
+        <location line="+802"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-617"/>
+        <location line="-624"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2522,7 +2522,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+279"/>
+        <location line="+286"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2582,7 +2582,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-910"/>
+        <location line="-917"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2641,7 +2641,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+215"/>
+        <location line="+222"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation>%1 auf %2 bei %3 s geschlossen</translation>
     </message>
@@ -2731,7 +2731,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-878"/>
+        <location line="-885"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2806,7 +2806,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+140"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -4660,7 +4660,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+63"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4689,6 +4689,13 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>reversed:    the needle in the picture moves against the recorded position (a mirrored picture, or the position&apos;s sign)
+</source>
+        <translation>umgekehrt:   die Nadel im Bild bewegt sich gegen die aufgezeichnete Position (ein gespiegeltes Bild oder das Vorzeichen der Position)
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>onsets say:  %1 s
 </source>
         <translation>Bewegungsanfänge: %1 s
@@ -4807,7 +4814,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Videodatei</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-126"/>
+        <location filename="../app/cmd_sync.cpp" line="-133"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation>Warnung: %1: %2</translation>

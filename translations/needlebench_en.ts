@@ -1443,7 +1443,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+575"/>
+        <location filename="../app/main_window.cpp" line="+578"/>
         <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1506,7 +1506,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-475"/>
+        <location filename="../app/main_window.cpp" line="-478"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1656,7 +1656,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+26"/>
         <source>New session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1790,12 +1790,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-818"/>
+        <location line="-821"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+644"/>
+        <location line="+647"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1817,7 +1817,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-588"/>
+        <location line="-591"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2275,7 +2275,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2336,12 +2336,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1004"/>
+        <location line="+1011"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1001"/>
+        <location line="-1008"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2367,12 +2367,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+532"/>
+        <location line="+539"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-532"/>
+        <location line="-539"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2496,12 +2496,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+795"/>
+        <location line="+802"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-617"/>
+        <location line="-624"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2516,7 +2516,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+279"/>
+        <location line="+286"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2576,7 +2576,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-910"/>
+        <location line="-917"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2635,7 +2635,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+215"/>
+        <location line="+222"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2723,7 +2723,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-878"/>
+        <location line="-885"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2798,7 +2798,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+140"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4594,7 +4594,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+63"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4619,6 +4619,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>reversed:    the needle in the picture moves against the recorded position (a mirrored picture, or the position&apos;s sign)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>onsets say:  %1 s
 </source>
         <translation type="unfinished"></translation>
@@ -4726,7 +4732,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-126"/>
+        <location filename="../app/cmd_sync.cpp" line="-133"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation type="unfinished"></translation>

@@ -98,6 +98,8 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
             showStatus(std::exchange(notAttached_, QString()));
         if (run_.size() == 0)
             timeline_->setRange(0.0, index->duration_s());
+        if (cursorAwaitingVideo_)
+            setCursorTime(*cursorAwaitingVideo_);
         requested_ = -1;
         requestFrameForCursor();
         emit videoOpened();
@@ -755,8 +757,15 @@ void ReviewWorkspace::setCursorTime(double t)
     // Only the run's span at offset 0 was reachable: a video that starts long before the
     // recording showed only its first frames, and the event to mark in it could not be reached
     // (video probe).
-    if (const auto [from, to] = cursorSpan(); from <= to)
+    // A place in the video beyond the run asked for while the video is still indexed (a
+    // restart's restore) is taken when the index says how far the video reaches: it was clamped
+    // to the run.
+    cursorAwaitingVideo_.reset();
+    if (const auto [from, to] = cursorSpan(); from <= to) {
+        if ((t < from || t > to) && !index_ && !videoPath_.isEmpty())
+            cursorAwaitingVideo_ = t;
         t = std::clamp(t, from, to);
+    }
     cursor_ = t;
     // The plot follows a cursor that leaves it, to a tenth of its width inside (on its edge
     // the cursor hid under the axis).

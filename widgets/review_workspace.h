@@ -171,6 +171,7 @@ private:
     QString protocol_ = QStringLiteral("friction");
     TimelineMapping mapping_;
     double cursor_ = 0.0;
+    std::optional<double> cursorAwaitingVideo_;  // beyond the run, until the video's index says how far it reaches
     int frame_ = -1, requested_ = -1;
     video::FrameIndexPtr index_;
     QString videoPath_;

@@ -532,6 +532,14 @@ private slots:
         QCOMPARE(ws.mapping().offset_s, 1.2);
         QVERIFY(opened.wait(60000));
         QCOMPARE(ws.videoPath(), QFileInfo(video).absoluteFilePath());
+
+        // Its video moved away: said missing, by name, at the offset kept (it said "No video").
+        QVERIFY(QFile::rename(video, own.filePath("elsewhere.avi")));
+        QVERIFY(ws.openRun(run_));
+        QVERIFY(ws.openRun(run));
+        QCOMPARE(ws.mapping().offset_s, 1.2);
+        QVERIFY2(ws.videoView()->message().contains(QStringLiteral("missing")) && ws.videoView()->message().contains(QStringLiteral("carried.avi")),
+                 qPrintable(ws.videoView()->message()));
     }
 
     // Labels that cannot be written beside the run (its folder read-only, the disk full: here a

@@ -20,6 +20,13 @@
 #include <functional>
 #include <random>
 
+// The needle drawn back 60 px in 3 s after 10 s at rest (30 frames/s): against a recorded
+// insertion, a picture that moves the other way (mirrored, or the position's sign reversed).
+static double strokeBackwards(int frame)
+{
+    return 30.0 - 60.0 * std::clamp(frame - 300, 0, 90) / 90.0;
+}
+
 // A stroke of 60 px in 3 s after 10 s at rest (30 frames/s); a minute later, the needle drawn
 // back (another run in the same video).
 static double strokeThenAnotherLater(int frame)
@@ -395,6 +402,41 @@ private slots:
         QVERIFY2(lines.last().split(',').first().toDouble() < 28.0, lines.last().constData());
         const nbtest::CliResult text = nbtest::runCli({"sync", run, video}, 240000);
         QVERIFY2(text.out.contains(QStringLiteral("tracked:")) && text.out.contains(QStringLiteral("of 80.00 s")), qPrintable(text.out));
+    }
+
+    // A needle that moves in the picture against the recorded position still times the offset;
+    // the answer gives it and says the motion is reversed. It said "offset: none (nothing in the
+    // picture moved with the recording)" for a correlation of -0.96 (probe).
+    void aPictureMovingAgainstTheRecording()
+    {
+        nb::needle_video::NeedleVideo v;
+        v.width = 320;
+        v.height = 240;
+        v.contrast = 60.0;
+        v.frames = 480;  // 16 s
+        v.tip = strokeBackwards;
+        const QString video = dir_.filePath("backwards.avi"), run = dir_.filePath("forwards.csv");
+        const QString problem = nb::needle_video::writeNeedleVideo(video, v);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        // Recorded: 0.5 s at rest, an insertion of 15 mm in 3 s, 0.5 s at rest; the offset is 9.5 s.
+        QFile f(run);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray csv = "time_s,position_mm,force_N\n";
+        for (int i = 0; i <= 2000; ++i) {
+            const double t = i * 0.002;
+            csv += QByteArray::number(t, 'f', 4) + ',' + QByteArray::number(15.0 * std::clamp((t - 0.5) / 3.0, 0.0, 1.0), 'f', 6) + ",0\n";
+        }
+        f.write(csv);
+        f.close();
+        int code = -1;
+        const QJsonObject r = runJson({"sync", run, video, "--json"}, &code);
+        QCOMPARE(code, 0);
+        QVERIFY2(r["correlation"].toDouble() < -0.5, qPrintable(QJsonDocument(r).toJson()));
+        QVERIFY2(!r["offset_s"].isNull() && std::abs(r["offset_s"].toDouble() - 9.5) < 1.0 / 30.0, qPrintable(QJsonDocument(r).toJson()));
+        QVERIFY2(r["reversed"].toBool(), qPrintable(QJsonDocument(r).toJson()));
+        const nbtest::CliResult text = nbtest::runCli({"sync", run, video}, 240000);
+        QVERIFY2(!text.out.contains(QStringLiteral("offset:      none")) && text.out.contains(QStringLiteral("against the recorded position")),
+                 qPrintable(text.out));
     }
 
     // Timestamps that go back (two MPEG-TS files joined): no span can be read off them, the

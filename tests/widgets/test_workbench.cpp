@@ -33,6 +33,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFileDialog>
+#include <QProcess>
 #include <QRadioButton>
 #include <QLabel>
 #include <QLineEdit>
@@ -426,6 +427,17 @@ private slots:
         QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.reviewWorkspace()));
         QTRY_VERIFY(w.reviewWorkspace()->hasFocus());
         QCOMPARE(w.reviewWorkspace()->runPath(), run);
+        // Opened again from the session list, with Review already the tab: the keyboard leaves the list.
+        QAbstractItemView* list = w.sessionView()->findChild<QTableView*>();
+        QVERIFY(list);
+        list->setFocus();
+        QTRY_VERIFY(list->hasFocus());
+        const QRect row = list->visualRect(list->model()->index(0, 0));
+        QSignalSpy activated(w.sessionView(), &nb::SessionView::runActivated);
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, row.center());  // as a double-click begins
+        QTest::mouseDClick(list->viewport(), Qt::LeftButton, {}, row.center());
+        QCOMPARE(activated.size(), 1);
+        QTRY_VERIFY2(w.reviewWorkspace()->hasFocus(), qPrintable(QApplication::focusWidget() ? QApplication::focusWidget()->metaObject()->className() : QStringLiteral("none")));
         w.reviewWorkspace()->setCursorTime(0.7);
         QVERIFY(w.createSession(b, {}));
         QVERIFY(w.reviewWorkspace()->runPath().isEmpty());
@@ -657,6 +669,30 @@ private slots:
             const QModelIndexList selected = w.sessionView()->view()->selectionModel()->selectedRows();
             QCOMPARE(selected.size(), 1);
             QCOMPARE(selected.first().data(Qt::UserRole).toString(), run);
+            QVERIFY(w.close());
+        }
+        // With the run's own video, 3 s long against the run's 1 s: a place in the video past the
+        // recording comes back too (it was clamped to the run's end, the video not yet indexed).
+        QProcess ffmpeg;
+        ffmpeg.start(QStringLiteral("ffmpeg"), {"-v", "error", "-y", "-f", "lavfi", "-i", "testsrc=size=160x120:rate=30:duration=3",
+                                               "-c:v", "mjpeg", QDir(a).filePath(QStringLiteral("run_001_linear.avi"))});
+        QVERIFY2(ffmpeg.waitForStarted(10000), "the ffmpeg tool is missing (scripts/install-deps.sh installs it)");
+        QVERIFY(ffmpeg.waitForFinished(60000) && ffmpeg.exitCode() == 0);
+        {
+            nb::MainWindow w(persisted(QString()));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QTRY_VERIFY_WITH_TIMEOUT(w.reviewWorkspace()->currentFrame() >= 0, 30000);
+            w.reviewWorkspace()->setCursorTime(2.5);
+            QCOMPARE(w.reviewWorkspace()->cursorTime(), 2.5);
+            QVERIFY(w.close());
+        }
+        {
+            nb::MainWindow w(persisted(QString()));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QTRY_VERIFY_WITH_TIMEOUT(w.reviewWorkspace()->currentFrame() >= 0, 30000);
+            QTRY_COMPARE(w.reviewWorkspace()->cursorTime(), 2.5);
             QVERIFY(w.close());
         }
         QVERIFY(QFile::remove(run));
