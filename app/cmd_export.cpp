@@ -8,6 +8,7 @@
 #include "core/export/dataset_loader.h"
 #include "core/export/eaf_export.h"
 #include "core/export/earlier_export.h"
+#include "core/export/kept_export.h"
 #include "core/export/label_intervals.h"
 #include "core/export/made_folders.h"
 #include "core/export/run_csv_export.h"
@@ -21,6 +22,7 @@
 #include <QFileInfo>
 #include <QScopeGuard>
 #include <csignal>
+#include <optional>
 #include <unistd.h>
 
 namespace nb::cli {
@@ -152,7 +154,22 @@ int cmdExport(const QStringList& args, Io io)
     // Folders made for an export that then fails are taken away when left empty.
     QStringList made;
     bool finished = false;
+    // The earlier export's files stay whole until this one is: a failure half-way puts them
+    // back, where it left half of each export (probe, a full disk).
+    std::optional<KeptExport> kept;
+    if (!inTheWay.earlierExport.isEmpty()) {
+        try {
+            kept.emplace(inTheWay.earlierExport);
+        } catch (const ExportError& e) {
+            io.err << "needlebench export: " << e.message() << '\n';
+            return Failure;
+        }
+    }
     auto tidy = qScopeGuard([&] {
+        if (kept && finished)
+            kept->release();
+        else if (kept && kept->restore(written))
+            io.err << nb::TrCli::tr("the earlier export in %1 is as it was").arg(target) << '\n';
         if (!finished)
             removeEmptyFolders(made);
     });
@@ -171,6 +188,13 @@ int cmdExport(const QStringList& args, Io io)
                 r.videoPath = placeVideo(r.videoPath, QDir(outFolder), &written, io.err);
         }
         if (fmt == QLatin1String("hdf5")) {
+            // Its folder made as the CSV export makes its own (it said "cannot create the file
+            // (is the folder writable?)" of a folder not there).
+            made << makeFolders(outFolder, &madeOk);
+            if (!madeOk) {
+                io.err << "needlebench export: " << nb::TrCli::tr("%1: cannot create the folder").arg(outFolder) << '\n';
+                return Failure;
+            }
             io.out << nb::TrCli::tr("writing %1 runs to %2").arg(d.runs.size()).arg(target) << '\n';
             io.out.flush();
             if (!writeSessionHdf5(target, d, [&](qint64 done, qint64 total) {

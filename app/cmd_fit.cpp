@@ -357,19 +357,27 @@ int fitFrictionCommand(const QStringList& args, Io io)
         QJsonArray runs;
         for (std::size_t i = 0; i < fits.size(); ++i) {
             const FrictionFit& f = fits[i];
+            // No phase a and no band to read the static friction from: not determined, null as
+            // per_length has it (it said 0).
+            const bool staticRead = f.staticSource != QLatin1String("none");
+            QJsonObject perLength = toJson(f.perLength);
+            if (!staticRead) {
+                perLength[QStringLiteral("Dp_N_per_m")] = QJsonValue();
+                perLength[QStringLiteral("Dn_N_per_m")] = QJsonValue();
+            }
             QJsonObject o{{QStringLiteral("file"), files[qsizetype(i)]},
                           {QStringLiteral("frequency_hz"), f.frequency_hz},
                           {QStringLiteral("Cp_N"), f.model.Cp_N},
                           {QStringLiteral("Cn_N"), f.model.Cn_N},
                           {QStringLiteral("bp_Ns_per_m"), f.model.bp_Ns_per_m},
                           {QStringLiteral("bn_Ns_per_m"), f.model.bn_Ns_per_m},
-                          {QStringLiteral("Dp_N"), f.model.Dp_N},
-                          {QStringLiteral("Dn_N"), f.model.Dn_N},
+                          {QStringLiteral("Dp_N"), staticRead ? QJsonValue(f.model.Dp_N) : QJsonValue()},
+                          {QStringLiteral("Dn_N"), staticRead ? QJsonValue(f.model.Dn_N) : QJsonValue()},
                           {QStringLiteral("rms_N"), f.rms_N},
                           {QStringLiteral("static_source"), f.staticSource},
                           {QStringLiteral("samples_positive"), qint64(f.positiveSamples)},
                           {QStringLiteral("samples_negative"), qint64(f.negativeSamples)},
-                          {QStringLiteral("per_length"), toJson(f.perLength)},
+                          {QStringLiteral("per_length"), perLength},
                           {QStringLiteral("band_m_s"), f.band_m_s},
                           {QStringLiteral("band_estimated"), f.bandEstimated},
                           {QStringLiteral("band_slowing_down_m_s"), f.bandEstimated ? f.bandSlowingDown_m_s : f.band_m_s},

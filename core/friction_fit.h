@@ -16,8 +16,11 @@ namespace nb {
 
 struct FrictionOptions {
     double thickness_mm = 0.0;                  // length of needle in tissue; > 0
-    double band_m_s = 0.005;                    // zero-velocity band (±band/2)...
-    bool estimateBand = false;                  // ...or found in the data (estimateBand_m_s)
+    // The zero-velocity band is found in the data (estimateBand_m_s) unless one is given
+    // (estimateBand false, band_m_s): every fit of a run, the command's, a session's analysis
+    // and the plan report, gives the same numbers (the analysis kept a fixed ±2.5 mm/s).
+    double band_m_s = 0.005;                    // zero-velocity band (±band/2), when given
+    bool estimateBand = true;
     double mass_kg = kNeedleHolderMass_kg;      // removed from the force (eq. 21)...
     bool estimateMass = false;                  // ...or estimated with the friction (eq. 19)
     double smoothing_s = 0.02;                  // moving-average window

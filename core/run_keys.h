@@ -54,6 +54,8 @@ inline const QString emergency_stop = QStringLiteral("emergency_stop");
 inline const QString force_limit_tripped_s = QStringLiteral("force_limit_tripped_s");
 inline const QString force_limit_force_N = QStringLiteral("force_limit_force_N");
 inline const QString force_limit_position_mm = QStringLiteral("force_limit_position_mm");
+// "true" when the limit tripped on a reading at the end of the sensor's input range.
+inline const QString force_over_range = QStringLiteral("force_over_range");
 inline const QString write_error = QStringLiteral("write_error");
 inline const QString recovered_rows = QStringLiteral("recovered_rows");
 inline const QString recovered_at = QStringLiteral("recovered_at");

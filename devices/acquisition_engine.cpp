@@ -250,7 +250,23 @@ void AcquisitionEngine::setForceLimit(double newtons, bool quietly)
         s.proc->setLimits(newtons, std::max(s.proc->withdrawalLimit(), newtons));
         if (!quietly)
             emit message(tr("force limit %1 N").arg(newtons));
+        if (s.proc->biased())
+            warnOfUnreadableLimit();
     });
+}
+
+// The limit set beyond what the load cell can read: said, as the stage stops at the end of the
+// sensor's range instead (SampleProcessor::setInputRange).
+void AcquisitionEngine::warnOfUnreadableLimit()
+{
+    const SampleProcessor& p = *state_->proc;
+    const double readable = p.readableForce_N(+1);
+    if (std::isfinite(readable) && readable > 0.0 && p.insertionLimit() > readable)
+        emit message(tr("warning: the force limit, %1 N, is beyond what the load cell reads (%2 N at the end of its ±%3 V "
+                        "input): the stage stops at the end of the range")
+                         .arg(QLocale().toString(p.insertionLimit()))
+                         .arg(localNumber(readable, 2))
+                         .arg(QLocale().toString(state_->dev.sensor->inputRange_V())));
 }
 
 void AcquisitionEngine::setWithdrawForceLimit(double newtons, bool quietly)
@@ -584,6 +600,9 @@ void AcquisitionEngine::finishRun(EndReason reason, const QString& fault, const 
         footer.set(key::force_limit_tripped_s, QString::number(s.trip->time_s - s.runStart, 'f', 6));
         footer.set(key::force_limit_force_N, QString::number(s.trip->force_N, 'f', 4));
         footer.set(key::force_limit_position_mm, QString::number(s.trip->position_mm, 'f', 4));
+        // The force was at least the reading there, and may have been any higher.
+        if (s.trip->overRange)
+            footer.set(key::force_over_range, QStringLiteral("true"));
     }
     if (s.punctureStop) {
         footer.set(QStringLiteral("puncture_stop_s"), QString::number(s.punctureStop->time_s - s.runStart, 'f', 6));
@@ -659,6 +678,7 @@ void AcquisitionEngine::handle(const ProcessorEvent& e)
         s.statusDirty = true;
         ++s.biasCount;
         emit message(tr("force sensor biased: V0 = %1 V (%2 samples)").arg(localNumber(e.bias_V, 5)).arg(e.count));
+        warnOfUnreadableLimit();
         break;
     case ProcessorEvent::Kind::ForceLimit:
         s.statusDirty = true;
@@ -671,10 +691,16 @@ void AcquisitionEngine::handle(const ProcessorEvent& e)
             raiseFault(err.device(), err.reason(), false);
         }
         emit forceLimitTripped(e.force_N, e.position_mm);
-        emit message(tr("force limit: %1 N > %2 N at %3 mm; stage stopped")
-                         .arg(localNumber(e.force_N, 3))
-                         .arg(e.limit_N)
-                         .arg(localNumber(e.position_mm, 3)));
+        if (e.overRange)
+            emit message(tr("force limit: the load cell's reading reached the end of its input range at %1 N (%2 mm): "
+                            "the force may be higher; stage stopped")
+                             .arg(localNumber(e.force_N, 3))
+                             .arg(localNumber(e.position_mm, 3)));
+        else
+            emit message(tr("force limit: %1 N > %2 N at %3 mm; stage stopped")
+                             .arg(localNumber(e.force_N, 3))
+                             .arg(e.limit_N)
+                             .arg(localNumber(e.position_mm, 3)));
         if (s.runOpen && !s.trip) {
             s.trip = e;
             s.pendingEndAt = e.time_s + config_.forceLimitRecord_s;
@@ -776,6 +802,7 @@ void AcquisitionEngine::threadMain()
     auto startSensor = [&] {
         try {
             s.proc->setRate(s.dev.sensor->start(config_.rateHz));
+            s.proc->setInputRange(s.dev.sensor->inputRange_V());
             s.sensorOk = true;
             s.proc->restartStream();
             // A standing fault stays until the operator enables the stage again.

@@ -183,6 +183,7 @@ private:
     void openRun(const RunPlan& plan);
     void beginMove(const LinearMotion& motion, bool recordedInsertion);
     void handle(const ProcessorEvent& e);
+    void warnOfUnreadableLimit();
     void endRunOnMotion(bool batchHadSamples);
     void publishStatus();
     EngineStatus snapshot() const;

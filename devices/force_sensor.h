@@ -27,6 +27,9 @@ public:
     virtual void read(std::vector<VoltageSample>& out, std::chrono::milliseconds timeout) = 0;
     // Samples the device itself reports lost (buffer overflow), cumulative since start().
     virtual std::uint64_t deviceLostSamples() const { return 0; }
+    // The input's range, ±volts (0: not known). A reading at its end is no measure of the force:
+    // the force may be any higher (SampleProcessor stops the stage there).
+    virtual double inputRange_V() const { return 0.0; }
 };
 
 }  // namespace nb::devices

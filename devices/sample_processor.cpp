@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace nb::devices {
 
@@ -81,6 +82,22 @@ bool SampleProcessor::overLimit(double force_N, double* limit) const
     return false;
 }
 
+// Within a thousandth of the range of its end: the ADC's last codes (the simulated U6 stops one
+// step short of +10 V) and a reading that noise keeps off the very end are both there.
+bool SampleProcessor::atRangeEnd(double volts) const
+{
+    return range_V_ > 0.0 && std::fabs(volts) >= 0.999 * range_V_;
+}
+
+double SampleProcessor::readableForce_N(int sign) const
+{
+    if (range_V_ <= 0.0)
+        return std::numeric_limits<double>::infinity();
+    if (slope_ <= 0.0)
+        return 0.0;
+    return std::fabs(forceFromVolts(sign > 0 ? 0.999 * range_V_ : -0.999 * range_V_, v0_, slope_));
+}
+
 void SampleProcessor::process(std::span<const VoltageSample> batch, const StageState& stage, double arrival_s,
                               std::vector<Sample>& samples, std::vector<ProcessorEvent>& events)
 {
@@ -134,13 +151,20 @@ void SampleProcessor::process(std::span<const VoltageSample> batch, const StageS
 
         // The first sample over the guarded limit: before anything else sees it.
         double limit = 0.0;
-        if (biased_ && !tripped_ && overLimit(out.force_N, &limit)) {
+        // Going deeper, the top of the range; in a sine or at rest, either end. Not while the
+        // needle comes out: a reading stuck at the end would stop every withdrawal again.
+        const bool overRange = (guard_ == ForceGuard::Insertion && v.volts > 0.0 && atRangeEnd(v.volts))
+                               || (guard_ == ForceGuard::Both && atRangeEnd(v.volts));
+        if (biased_ && !tripped_ && (overLimit(out.force_N, &limit) || overRange)) {
             tripped_ = true;
             ProcessorEvent e{ProcessorEvent::Kind::ForceLimit};
             e.time_s = v.deviceTime_s;
             e.force_N = out.force_N;
             e.position_mm = out.position_mm;
             e.limit_N = limit;
+            e.overRange = overRange && !overLimit(out.force_N, &limit);
+            if (e.overRange)
+                e.limit_N = out.force_N;
             events.push_back(e);
         }
 

@@ -1015,7 +1015,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+54"/>
+        <location filename="../widgets/export_dialog.cpp" line="+56"/>
         <source>Export session</source>
         <translation>Sitzung exportieren</translation>
     </message>
@@ -1070,12 +1070,12 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>In den Ordner</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+61"/>
         <source>Choose a folder to export into.</source>
         <translation>Einen Zielordner für den Export wählen.</translation>
     </message>
     <message numerus="yes">
-        <location line="+30"/>
+        <location line="+22"/>
         <source>%1 already holds an earlier export: %n file(s) will be replaced.</source>
         <translation>
             <numerusform>%1 enthält bereits einen früheren Export: %n Datei wird ersetzt.</numerusform>
@@ -1121,14 +1121,24 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+47"/>
         <source>%1: no runs to export</source>
         <translation>%1: keine Läufe zum Exportieren</translation>
     </message>
     <message>
         <location line="+82"/>
+        <source>Cancelled: the earlier export in %1 is as it was.</source>
+        <translation>Abgebrochen: der frühere Export in %1 ist unverändert.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Cancelled: the files finished before (%1) are kept; none is half written.</source>
         <translation>Abgebrochen: die zuvor fertigen Dateien (%1) bleiben; keine ist halb geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export failed: %1. The earlier export in %2 is as it was.</source>
+        <translation>Export fehlgeschlagen: %1. Der frühere Export in %2 ist unverändert.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3307,7 +3317,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+45"/>
+        <location filename="../app/cmd_export.cpp" line="+47"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation>Warnung: %1: das Video konnte nicht neben den Export kopiert werden; es wird an seinem Ort verknüpft</translation>
     </message>
@@ -3577,12 +3587,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+33"/>
+        <source>the earlier export in %1 is as it was</source>
+        <translation>der frühere Export in %1 ist unverändert</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation>Warnung: %1 entfernt, von einem nicht beendeten Export zurückgelassen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>writing %1 runs to %2</source>
         <translation>schreibe %1 Läufe nach %2</translation>
     </message>
@@ -3593,8 +3608,9 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location filename="../app/cmd_demo.cpp" line="-258"/>
-        <location filename="../app/cmd_export.cpp" line="-16"/>
-        <location line="+23"/>
+        <location filename="../app/cmd_export.cpp" line="-23"/>
+        <location line="+11"/>
+        <location line="+19"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: Ordner kann nicht angelegt werden</translation>
     </message>
@@ -3767,7 +3783,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+118"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -6696,6 +6712,16 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <source>the surface springs back further (%1 px) than it was carried since the contact (%2 px): the picture lost the surface</source>
         <translation>die Oberfläche federt weiter zurück (%1 px), als sie seit dem Kontakt mitgenommen wurde (%2 px): das Bild hat die Oberfläche verloren</translation>
     </message>
+    <message>
+        <location filename="../core/export/kept_export.cpp" line="+33"/>
+        <source>cannot keep the earlier export aside while the new one is written (cannot create %1): nothing was written</source>
+        <translation>der frühere Export kann nicht beiseitegelegt werden, während der neue geschrieben wird (%1 kann nicht angelegt werden): nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>cannot keep the earlier export aside while the new one is written (%1): nothing was written</source>
+        <translation>der frühere Export kann nicht beiseitegelegt werden, während der neue geschrieben wird (%1): nichts wurde geschrieben</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrDevices</name>
@@ -6757,7 +6783,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>USB</translation>
     </message>
     <message>
-        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="+26"/>
+        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="+29"/>
         <source>cannot start libusb: %1</source>
         <translation>libusb kann nicht gestartet werden: %1</translation>
     </message>
@@ -7041,7 +7067,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Ziel %1 mm liegt außerhalb des Verfahrwegs (%2 bis %3 mm)</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>unknown tissue &apos;%1&apos; (known: %2)</source>
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -7865,7 +7891,12 @@ F = %1 x + %2 x²
         <translation>Kraftgrenze %1 N</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
+        <source>warning: the force limit, %1 N, is beyond what the load cell reads (%2 N at the end of its ±%3 V input): the stage stops at the end of the range</source>
+        <translation>Warnung: die Kraftgrenze, %1 N, liegt jenseits dessen, was der Kraftsensor misst (%2 N am Ende seines Eingangs von ±%3 V): die Achse hält am Ende des Messbereichs</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>withdrawal force limit must be positive (got %1 N)</source>
         <translation>die Kraftgrenze beim Zurückziehen muss positiv sein (erhalten: %1 N)</translation>
     </message>
@@ -7912,7 +7943,7 @@ F = %1 x + %2 x²
         <translation>Bewegung gestoppt</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+148"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation>Lauf beendet (%1): %2 Messwerte, %3 verloren, %4</translation>
     </message>
@@ -7927,7 +7958,12 @@ F = %1 x + %2 x²
         <translation>Fehler: %1</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+28"/>
+        <source>force limit: the load cell&apos;s reading reached the end of its input range at %1 N (%2 mm): the force may be higher; stage stopped</source>
+        <translation>Kraftgrenze: die Messung des Kraftsensors erreichte das Ende seines Eingangsbereichs bei %1 N (%2 mm): die Kraft kann höher sein; Achse angehalten</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>puncture %1 at %2 mm: stage stopped</source>
         <translation>Punktion %1 bei %2 mm: Achse angehalten</translation>
     </message>
@@ -7938,27 +7974,27 @@ F = %1 x + %2 x²
     </message>
     <message>
         <location line="+69"/>
-        <location line="+104"/>
+        <location line="+105"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
     <message>
-        <location line="-102"/>
+        <location line="-103"/>
         <source>real-time scheduling not requested</source>
         <translation>Echtzeit-Scheduling nicht angefordert</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+99"/>
         <source>recording failed, stage stopped: %1</source>
         <translation>Aufzeichnung fehlgeschlagen, Verfahrtisch gestoppt: %1</translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-219"/>
         <source>force sensor biased: V0 = %1 V (%2 samples)</source>
         <translation>Kraftsensor tariert: V0 = %1 V (%2 Messwerte)</translation>
     </message>
     <message>
-        <location line="-446"/>
+        <location line="-465"/>
         <source>bias refused: %1</source>
         <translation>Tarieren abgelehnt: %1</translation>
     </message>
@@ -7968,7 +8004,7 @@ F = %1 x + %2 x²
         <translation>Nullen abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+96"/>
         <source>a run is already on its way to its start position</source>
         <translation>eine Messung fährt bereits ihre Startposition an</translation>
     </message>
@@ -8023,7 +8059,7 @@ F = %1 x + %2 x²
         <translation>Not-Halt: die Achse bleibt aus, bis Sie sie wieder einschalten</translation>
     </message>
     <message>
-        <location line="+161"/>
+        <location line="+171"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation>Kraftgrenze: %1 N &gt; %2 N bei %3 mm; Achse angehalten</translation>
     </message>

@@ -1014,7 +1014,7 @@ or without contact</source>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+54"/>
+        <location filename="../widgets/export_dialog.cpp" line="+56"/>
         <source>Export session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1069,12 +1069,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+61"/>
         <source>Choose a folder to export into.</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+30"/>
+        <location line="+22"/>
         <source>%1 already holds an earlier export: %n file(s) will be replaced.</source>
         <translation>
             <numerusform>%1 already holds an earlier export: %n file will be replaced.</numerusform>
@@ -1120,13 +1120,23 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+47"/>
         <source>%1: no runs to export</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+82"/>
+        <source>Cancelled: the earlier export in %1 is as it was.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Cancelled: the files finished before (%1) are kept; none is half written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export failed: %1. The earlier export in %2 is as it was.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3293,7 +3303,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+45"/>
+        <location filename="../app/cmd_export.cpp" line="+47"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3563,12 +3573,17 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+33"/>
+        <source>the earlier export in %1 is as it was</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>writing %1 runs to %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3579,8 +3594,9 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location filename="../app/cmd_demo.cpp" line="-258"/>
-        <location filename="../app/cmd_export.cpp" line="-16"/>
-        <location line="+23"/>
+        <location filename="../app/cmd_export.cpp" line="-23"/>
+        <location line="+11"/>
+        <location line="+19"/>
         <source>%1: cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3744,7 +3760,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+118"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -6590,6 +6606,16 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <source>the surface springs back further (%1 px) than it was carried since the contact (%2 px): the picture lost the surface</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../core/export/kept_export.cpp" line="+33"/>
+        <source>cannot keep the earlier export aside while the new one is written (cannot create %1): nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>cannot keep the earlier export aside while the new one is written (%1): nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrDevices</name>
@@ -6651,7 +6677,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="+26"/>
+        <location filename="../devices/labjack_u6/u6_force_sensor.cpp" line="+29"/>
         <source>cannot start libusb: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6935,7 +6961,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>unknown tissue &apos;%1&apos; (known: %2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7756,7 +7782,12 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
+        <source>warning: the force limit, %1 N, is beyond what the load cell reads (%2 N at the end of its ±%3 V input): the stage stops at the end of the range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>withdrawal force limit must be positive (got %1 N)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7803,7 +7834,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+148"/>
         <source>run ended (%1): %2 samples, %3 dropped, %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7818,7 +7849,12 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+28"/>
+        <source>force limit: the load cell&apos;s reading reached the end of its input range at %1 N (%2 mm): the force may be higher; stage stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>puncture %1 at %2 mm: stage stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7829,27 +7865,27 @@ F = %1 x + %2 x²
     </message>
     <message>
         <location line="+69"/>
-        <location line="+104"/>
+        <location line="+105"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-102"/>
+        <location line="-103"/>
         <source>real-time scheduling not requested</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+99"/>
         <source>recording failed, stage stopped: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-219"/>
         <source>force sensor biased: V0 = %1 V (%2 samples)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-446"/>
+        <location line="-465"/>
         <source>bias refused: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7859,7 +7895,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+96"/>
         <source>a run is already on its way to its start position</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7914,7 +7950,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+161"/>
+        <location line="+171"/>
         <source>force limit: %1 N &gt; %2 N at %3 mm; stage stopped</source>
         <translation type="unfinished"></translation>
     </message>

@@ -8,6 +8,7 @@
 #include "core/export/eaf_export.h"
 #include "core/export/earlier_export.h"
 #include "core/export/export_error.h"
+#include "core/export/kept_export.h"
 #include "core/export/label_intervals.h"
 #include "core/export/made_folders.h"
 #include "core/export/run_csv_export.h"
@@ -30,6 +31,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
+#include <optional>
 
 namespace nb {
 
@@ -138,6 +140,19 @@ QString ExportDialog::hdf5Path() const
 }
 QString ExportDialog::resultText() const { return status_->text(); }
 
+QStringList ExportDialog::exportPaths(const Choice& c, const QString& target) const
+{
+    const QStringList names = runNamesIn(sessionDir_);
+    QStringList paths;
+    if (c.csv)
+        paths << runExportPaths(QDir(target).filePath(QStringLiteral("csv")), names, false);
+    if (c.eaf)
+        paths << runExportPaths(QDir(target).filePath(QStringLiteral("eaf")), names, true);
+    if (c.hdf5)
+        paths << QDir(target).filePath(QDir(sessionDir_).dirName() + QStringLiteral(".h5"));
+    return paths;
+}
+
 void ExportDialog::start()
 {
     if (isRunning())
@@ -149,15 +164,7 @@ void ExportDialog::start()
         status_->setText(tr("Choose a folder to export into."));
         return;
     }
-    const QStringList names = runNamesIn(sessionDir_);
-    QStringList paths;
-    if (c.csv)
-        paths << runExportPaths(QDir(target).filePath(QStringLiteral("csv")), names, false);
-    if (c.eaf)
-        paths << runExportPaths(QDir(target).filePath(QStringLiteral("eaf")), names, true);
-    if (c.hdf5)
-        paths << hdf5Path();
-    if (const FilesInTheWay way = filesInTheWay(paths); !way.empty()) {
+    if (const FilesInTheWay way = filesInTheWay(exportPaths(c, target)); !way.empty()) {
         askToReplace(way, c, target);
         return;
     }
@@ -225,8 +232,32 @@ void ExportDialog::cancel()
     status_->setText(tr("Cancelling…"));
 }
 
-// In a worker thread: only the core exporters, no widgets.
+// In a worker thread. The earlier export's files stay whole until this one is (kept_export.h):
+// a failure or a cancel half-way left half of each export.
 ExportDialog::Outcome ExportDialog::run(const Choice& c, const QString& target, QPointer<QProgressBar> bar)
+{
+    std::optional<KeptExport> kept;
+    try {
+        if (const QStringList earlier = filesInTheWay(exportPaths(c, target)).earlierExport; !earlier.isEmpty())
+            kept.emplace(earlier);
+    } catch (const Error& e) {
+        Outcome refused;
+        refused.ok = false;
+        refused.error = e.message();
+        return refused;
+    }
+    Outcome out = write(c, target, bar);
+    if (kept && out.ok && !out.cancelled) {
+        kept->release();
+    } else if (kept && kept->restore(out.written)) {
+        out.earlierRestored = true;
+        out.written.clear();
+    }
+    return out;
+}
+
+// Only the core exporters, no widgets.
+ExportDialog::Outcome ExportDialog::write(const Choice& c, const QString& target, QPointer<QProgressBar> bar)
 {
     Outcome out;
     const auto cancel = cancel_;
@@ -326,8 +357,12 @@ void ExportDialog::finish()
     progress_->setRange(0, 1);
     progress_->setValue(out.ok && !out.cancelled ? 1 : 0);
     QString text;
-    if (out.cancelled)
+    if (out.cancelled && out.earlierRestored)
+        text = tr("Cancelled: the earlier export in %1 is as it was.").arg(QDir::toNativeSeparators(targetDir()));
+    else if (out.cancelled)
         text = tr("Cancelled: the files finished before (%1) are kept; none is half written.").arg(out.written.size());
+    else if (!out.ok && out.earlierRestored)
+        text = tr("Export failed: %1. The earlier export in %2 is as it was.").arg(out.error, QDir::toNativeSeparators(targetDir()));
     else if (!out.ok)
         text = tr("Export failed: %1").arg(out.error);
     else

@@ -58,10 +58,14 @@ private:
         QStringList written, warnings;
         QStringList made;  // folders made for the export, taken away if left empty
         QString error;
+        bool earlierRestored = false;  // failed or cancelled over an earlier export, which is back as it was
     };
+    // The files an export of `c` into `target` writes (those of an earlier one are replaced).
+    QStringList exportPaths(const Choice& c, const QString& target) const;
     void begin(const Choice& c, const QString& target);
     void askToReplace(const FilesInTheWay& way, const Choice& c, const QString& target);
     Outcome run(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
+    Outcome write(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
     void finish();
 
     QString sessionDir_;

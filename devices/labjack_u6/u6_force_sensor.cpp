@@ -7,6 +7,9 @@
 #include <QDebug>
 #include <libusb.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace nb::devices {
 
 using namespace u6;
@@ -361,6 +364,11 @@ void U6ForceSensor::consume(const std::uint8_t* data, int length, std::vector<Vo
             out.push_back({index, double(index) / rate, cal_.volts(p->samples[std::size_t(i)], settings_.channels[0].gainIndex)});
         }
     }
+}
+
+double U6ForceSensor::inputRange_V() const
+{
+    return 10.0 / std::pow(10.0, std::clamp(config_.gainIndex, 0, 3));
 }
 
 }  // namespace nb::devices

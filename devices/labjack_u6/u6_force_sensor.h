@@ -46,6 +46,7 @@ public:
     void stop() override;
     void read(std::vector<VoltageSample>& out, std::chrono::milliseconds timeout) override;
     std::uint64_t deviceLostSamples() const override { return lostSamples_; }
+    double inputRange_V() const override;  // by the gain: ±10 V at x1 to ±10 mV at x1000
 
     const u6::DeviceInfo& info() const { return info_; }
     const u6::Calibration& calibration() const { return cal_; }

@@ -333,6 +333,7 @@ public:
     double start(double rateHz) override { return w_.sensorStart(rateHz); }
     void stop() override { w_.sensorStop(); }
     void read(std::vector<VoltageSample>& out, std::chrono::milliseconds timeout) override { w_.sensorRead(out, timeout); }
+    double inputRange_V() const override { return rig_->config().sensor.adcRange_V; }
 
 private:
     std::shared_ptr<SimulatedRig> rig_;

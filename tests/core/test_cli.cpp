@@ -131,6 +131,11 @@ private slots:
             QCOMPARE(TestCli::run({"export", dir.path(), "--format", "csv", "--out", otherSession.path(), "--overwrite"}).code, 0);
             QVERIFY(!bytes(theirs).startsWith(recorded.left(200)));
             QVERIFY(QDir(out).removeRecursively());
+            // HDF5 into folders not there yet: made, as for CSV (it blamed the folder's permissions).
+            QTemporaryDir elsewhere;
+            const QString deeper = QDir(elsewhere.path()).filePath(QStringLiteral("nope/deeper/s.h5"));
+            const nbtest::CliResult h5 = TestCli::run({"export", dir.path(), "--format", "hdf5", "--out", deeper});
+            QVERIFY2(h5.code == 0 && QFileInfo(deeper).size() > 0, qPrintable(h5.err));
         }
         // A trace replaces an earlier trace only, not a run of another name, nor the run read
         // through a hard link (`export --copy-video` makes them); each replaced it, exit 0.

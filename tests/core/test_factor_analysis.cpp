@@ -130,6 +130,28 @@ private slots:
         QVERIFY(cells[2].stats.at(QStringLiteral("bp_Ns_per_m2")).mean > cells[0].stats.at(QStringLiteral("bp_Ns_per_m2")).mean);
     }
 
+    // A session's analysis (the Analysis tab, plan report, the demo's tables) fits each run as
+    // `fit friction` does, the zero-velocity band found in its data: it kept a fixed ±2.5 mm/s,
+    // and the same runs had another Cp and b there than from the command (probe).
+    void theAnalysisFitsAsTheCommandDoes()
+    {
+        int compared = 0;
+        for (const FrictionRunResult& f : analysis_.friction) {
+            const auto r = std::find_if(dataset_.runs.begin(), dataset_.runs.end(), [&](const DatasetRun& d) { return d.name == f.run; });
+            QVERIFY(r != dataset_.runs.end());
+            FrictionOptions o;  // as the command sets them without --band-m-s
+            o.thickness_mm = kThickness_mm;
+            o.estimateBand = true;
+            const FrictionFit alone = fitFriction(r->run, o);
+            QVERIFY(f.fit.bandEstimated);
+            QCOMPARE(f.fit.band_m_s, alone.band_m_s);
+            QCOMPARE(f.fit.model.Cp_N, alone.model.Cp_N);
+            QCOMPARE(f.fit.model.bn_Ns_per_m, alone.model.bn_Ns_per_m);
+            ++compared;
+        }
+        QCOMPARE(compared, 9);
+    }
+
     void twoFactorsMakeOneCellPerCombination()
     {
         const QStringList by{QStringLiteral("site"), QStringLiteral("frequency_hz")};

@@ -206,6 +206,19 @@ private slots:
         const QJsonObject ro = r.json()[QStringLiteral("runs")].toArray()[0].toObject();
         QCOMPARE(ro[QStringLiteral("static_source")].toString(), QStringLiteral("phase a"));
         QVERIFY(std::fabs(ro[QStringLiteral("Dp_N")].toDouble() / 0.3 - 1.0) < 0.1);
+        // Phases without an 'a': the static friction is not determined, null as per length (it was 0).
+        nb::Labels noA;
+        for (const nb::Label& l : nb::readLabelsFile(path("fr_labels.csv")))
+            if (l.label != QLatin1String("a"))
+                noA.push_back(l);
+        nb::writeLabelsFile(path("fr_labels_no_a.csv"), noA);
+        const auto none = run({QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"), QStringLiteral("--thickness-mm"),
+                               QStringLiteral("20"), QStringLiteral("--labels"), path("fr_labels_no_a.csv"), QStringLiteral("--json")});
+        QCOMPARE(none.code, 0);
+        const QJsonObject no = none.json()[QStringLiteral("runs")].toArray()[0].toObject();
+        QCOMPARE(no[QStringLiteral("static_source")].toString(), QStringLiteral("none"));
+        QVERIFY2(no[QStringLiteral("Dp_N")].isNull() && no[QStringLiteral("Dn_N")].isNull(), qPrintable(QJsonDocument(no).toJson()));
+        QVERIFY(no[QStringLiteral("per_length")].toObject()[QStringLiteral("Dp_N_per_m")].isNull());
         const auto band = run({QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"),
                                QStringLiteral("--thickness-mm"), QStringLiteral("20"), QStringLiteral("--band-m-s"),
                                QStringLiteral("0.004"), QStringLiteral("--json")});

@@ -212,6 +212,7 @@ private slots:
             bare.text.clear();
             FrictionOptions wide = o;
             wide.band_m_s = 0.021;
+            wide.estimateBand = false;
             const auto band = fitFriction(bare, wide);
             QCOMPARE(band.staticSource, QStringLiteral("velocity band"));
             QVERIFY2(rel(band.model.Dp_N, k.Dp_N) < 0.06 && rel(band.model.Dn_N, k.Dn_N) < 0.06, qPrintable(describe(band)));

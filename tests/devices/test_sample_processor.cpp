@@ -152,6 +152,57 @@ private slots:
         QVERIFY(push(q, batch(next, 20, [](double) { return 5.0; }), {}).events.empty());
     }
 
+    // A reading at the end of the sensor's input range trips the limit, said so: the force is at
+    // least that and may be any higher. With the nominal chain +10 V read 7.79 N, under the
+    // default 8 N limit, and a needle driven 20 mm into bone was saved as completed (probe).
+    void aReadingAtTheEndOfTheRangeTrips()
+    {
+        std::uint64_t next = 0;
+        SampleProcessor p = biased(&next);
+        p.setInputRange(10.0);
+        p.setLimits(100.0, 100.0);  // far beyond what the load cell reads
+        const double top = p.readableForce_N(+1);
+        QVERIFY2(top > 7.0 && top < 8.0, qPrintable(QString::number(top)));
+        p.setGuard(ForceGuard::Insertion);
+        // Up to just short of the end: no trip; at the ADC's last code (one step short of +10 V): a trip.
+        const double lsb = 20.0 / 65536.0;
+        std::vector<VoltageSample> b = batch(next, 20, [](double) { return 1.0; });
+        for (std::size_t i = 0; i < b.size(); ++i)
+            b[i].volts = i < 10 ? 9.95 : 10.0 - lsb;
+        Pushed r = push(p, b, {});
+        QCOMPARE(r.events.size(), std::size_t(1));
+        QCOMPARE(r.events[0].kind, ProcessorEvent::Kind::ForceLimit);
+        QVERIFY(r.events[0].overRange);
+        QCOMPARE(r.events[0].time_s, b[10].deviceTime_s);
+        QVERIFY(std::abs(r.events[0].force_N - top) < 0.01);
+
+        // Coming out, a reading stuck at the other end does not stop the withdrawal again.
+        p.rearm();
+        p.setGuard(ForceGuard::Withdrawal);
+        b = batch(next + 20, 20, [](double) { return 1.0; });
+        for (VoltageSample& v : b)
+            v.volts = -10.0;
+        QVERIFY(push(p, b, {}).events.empty());
+        // In a sine either end trips.
+        p.setGuard(ForceGuard::Both);
+        b = batch(next + 40, 5, [](double) { return 1.0; });
+        for (VoltageSample& v : b)
+            v.volts = -10.0;
+        r = push(p, b, {});
+        QCOMPARE(r.events.size(), std::size_t(1));
+        QVERIFY(r.events[0].overRange);
+
+        // A range not known (0): nothing is read into the end of it.
+        SampleProcessor q = biased(&next);
+        q.setLimits(100.0, 100.0);
+        q.setGuard(ForceGuard::Insertion);
+        b = batch(next, 5, [](double) { return 1.0; });
+        for (VoltageSample& v : b)
+            v.volts = 10.0;
+        QVERIFY(push(q, b, {}).events.empty());
+        QVERIFY(std::isinf(q.readableForce_N(+1)));
+    }
+
     // The margin the panel shows is against the guard in force: a pull on the needle (negative
     // force) read as more margin than the limit itself while a sine or a withdrawal runs.
     void marginIsAgainstTheGuardInForce()

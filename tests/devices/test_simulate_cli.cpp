@@ -128,6 +128,18 @@ private slots:
         const auto file = nb::readRunFile(out);
         QCOMPARE(*file.run.meta(QStringLiteral("end_reason")), QStringLiteral("force_limit"));
         QVERIFY(file.run.meta(QStringLiteral("force_limit_tripped_s")).has_value());
+        QVERIFY(!file.run.meta(QStringLiteral("force_over_range")).has_value());
+
+        // At the default 8 N limit, beyond the 7.79 N the nominal chain reads at +10 V: the
+        // reading's end stops the stage (it drove 20 mm into bone and saved "completed").
+        const QString over = path(QStringLiteral("bone-default-limit.csv"));
+        const nbtest::CliResult o = run({"--protocol", "stiffness", "--tissue", "liver1", "--bone-depth-mm", "15", "--out", over});
+        QVERIFY2(o.code == 0, qPrintable(o.err));
+        QCOMPARE(o.json().value(QStringLiteral("end_reason")).toString(), QStringLiteral("force_limit"));
+        const auto stopped = nb::readRunFile(over);
+        QCOMPARE(stopped.run.meta(QStringLiteral("force_over_range")).value_or(QString()), QStringLiteral("true"));
+        const double deepest = *std::max_element(stopped.run.position_mm.begin(), stopped.run.position_mm.end());
+        QVERIFY2(deepest < 25.0, qPrintable(QString::number(deepest)));  // it went on to 40 mm
     }
 
     void killedRecordingKeepsAllButTheLast100ms()

@@ -156,6 +156,42 @@ private slots:
         }
     }
 
+    // An export over an earlier one that fails half-way leaves the earlier one as it was: it left
+    // the first run new and the rest old, naming only the file that failed (probe).
+    void anExportThatFailsLeavesTheEarlierOne()
+    {
+        QTemporaryDir first, second;
+        auto simulate = [](const QString& dir, const QString& name, const QStringList& more) {
+            return runCli(QStringList{QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"),
+                                      QStringLiteral("--out"), QDir(dir).filePath(name)} + more).code;
+        };
+        const QStringList small{QStringLiteral("--depth-mm"), QStringLiteral("8"), QStringLiteral("--rate-hz"), QStringLiteral("100")};
+        QCOMPARE(simulate(first.path(), QStringLiteral("run1.csv"), small), 0);
+        const QString out = QDir(tiny).filePath(QStringLiteral("out"));
+        const auto earlier = runCli({QStringLiteral("export"), first.path(), QStringLiteral("--format"), QStringLiteral("csv"),
+                                     QStringLiteral("--out"), out});
+        QVERIFY2(earlier.code == 0, qPrintable(earlier.err));
+        auto contents = [&out] {
+            QStringList all;
+            for (const QString& f : QDir(out).entryList(QDir::Files | QDir::Dirs | QDir::NoDotAndDotDot | QDir::Hidden)) {
+                QFile file(QDir(out).filePath(f));
+                all << f + QLatin1Char(' ') + (file.open(QIODevice::ReadOnly) ? QString::number(qHash(file.readAll())) : QStringLiteral("dir"));
+            }
+            return all;
+        };
+        const QStringList before = contents();
+        QCOMPARE(before.size(), 3);  // run1.csv, .json, .intervals.csv
+        // Another session: its run1 fits, its run2 (a whole run at 1 kHz) does not.
+        QCOMPARE(simulate(second.path(), QStringLiteral("run1.csv"), small + QStringList{QStringLiteral("--tissue"), QStringLiteral("liver2")}), 0);
+        QCOMPARE(simulate(second.path(), QStringLiteral("run2.csv"), {}), 0);
+        const auto r = runCli({QStringLiteral("export"), second.path(), QStringLiteral("--format"), QStringLiteral("csv"),
+                               QStringLiteral("--out"), out});
+        checkClean(r);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QLatin1String("space"), Qt::CaseInsensitive) && r.err.contains(QLatin1String("is as it was")), qPrintable(r.err));
+        QCOMPARE(contents(), before);
+    }
+
     // Review saves the labels after every change. On a full disk the save fails and the labels
     // saved before stay whole: Qt's QSaveFile replaced them with an empty file and said it had
     // written them.

@@ -90,6 +90,53 @@ private slots:
         QVERIFY2(!QFileInfo::exists(out), "the folder made for the export, left empty");
     }
 
+    // An export over an earlier one that fails half-way (the second run cannot be written) leaves
+    // the earlier one as it was: it left the first run new and the second old (probe, a full disk).
+    void aFailedExportLeavesTheEarlierOne()
+    {
+        const QString out = tmp_.filePath(QStringLiteral("earlier"));
+        nb::ExportDialog dialog(session_, nullptr);
+        dialog.setTargetDir(out);
+        dialog.setChoice({.csv = true, .hdf5 = false, .eaf = false, .figures = false, .tables = false});
+        QSignalSpy done(&dialog, &nb::ExportDialog::exportFinished);
+        dialog.start();
+        QVERIFY(done.wait(240000));
+        QCOMPARE(done.first().first().toBool(), true);
+        const QDir csv(QDir(out).filePath(QStringLiteral("csv")));
+        {
+            QFile f(csv.filePath(QStringLiteral("run_001_linear.csv")));
+            QVERIFY(f.open(QIODevice::Append));
+            f.write("# the earlier export's\n");
+        }
+        auto contents = [&csv] {
+            QStringList all;
+            for (const QString& name : csv.entryList(QDir::Files | QDir::Hidden | QDir::Dirs | QDir::NoDotAndDotDot)) {
+                QFile f(csv.filePath(name));
+                all << name + QLatin1Char(' ') + (f.open(QIODevice::ReadOnly) ? QString::number(qHash(f.readAll())) : QStringLiteral("-"));
+            }
+            return all;
+        };
+        // The second run's interval table cannot be written: a folder stands in its place.
+        QVERIFY(QFile::remove(csv.filePath(QStringLiteral("run_002_linear.intervals.csv"))));
+        QVERIFY(csv.mkdir(QStringLiteral("run_002_linear.intervals.csv")));
+        const QStringList before = contents();
+        QCOMPARE(before.size(), 6);
+        done.clear();
+        dialog.start();
+        QMessageBox* q = nullptr;
+        for (QMessageBox* m : dialog.findChildren<QMessageBox*>(QStringLiteral("replaceExport")))
+            if (m->isVisible())
+                q = m;
+        QVERIFY(q);
+        for (QAbstractButton* b : q->buttons())
+            if (b->text().remove(QLatin1Char('&')) == QStringLiteral("Replace"))
+                b->click();
+        QVERIFY(done.wait(240000));
+        QCOMPARE(done.first().first().toBool(), false);
+        QVERIFY2(dialog.resultText().contains(QStringLiteral("is as it was")), qPrintable(dialog.resultText()));
+        QCOMPARE(contents(), before);
+    }
+
     // An export that fails takes away the folders it made and left empty (on a full disk an
     // empty csv/ folder was all there was), and keeps a folder that was there before.
     void failureLeavesNoEmptyFolder()
