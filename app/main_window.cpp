@@ -726,6 +726,7 @@ void MainWindow::startRun()
 void MainWindow::onStatus(const devices::EngineStatus& s)
 {
     panel_->setStatus(s);
+    plots_->setForceMargin(s.running ? std::optional(s.forceMargin_N) : std::nullopt);
     planStatus(s);
     if (wizard_)
         wizard_->setDeviceTime(s.deviceTime_s);

@@ -262,11 +262,11 @@ void AcquisitionEngine::warnOfUnreadableLimit()
     const SampleProcessor& p = *state_->proc;
     const double readable = p.readableForce_N(+1);
     if (std::isfinite(readable) && readable > 0.0 && p.insertionLimit() > readable)
-        emit message(tr("warning: the force limit, %1 N, is beyond what the load cell reads (%2 N at the end of its ±%3 V "
-                        "input): the stage stops at the end of the range")
-                         .arg(QLocale().toString(p.insertionLimit()))
+        emit message(tr("warning: the load cell reads up to %1 N (its ±%2 V input), less than the force limit of %3 N: "
+                        "the stage stops there")
                          .arg(localNumber(readable, 2))
-                         .arg(QLocale().toString(state_->dev.sensor->inputRange_V())));
+                         .arg(QLocale().toString(state_->dev.sensor->inputRange_V()))
+                         .arg(QLocale().toString(p.insertionLimit())));
 }
 
 void AcquisitionEngine::setWithdrawForceLimit(double newtons, bool quietly)

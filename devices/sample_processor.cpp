@@ -62,13 +62,16 @@ double SampleProcessor::positionAt(double t, const StageState& stage) const
 
 double SampleProcessor::margin_N(double force_N) const
 {
+    // Going in, the stage stops at the limit or where the load cell's reading ends, whichever
+    // comes first (it showed 8 N of margin where 7.79 N could be read).
+    const double stop = slope_ > 0.0 ? std::min(insertLimit_, readableForce_N(+1)) : insertLimit_;
     switch (guard_) {
-    case ForceGuard::Insertion: return insertLimit_ - force_N;
+    case ForceGuard::Insertion: return stop - force_N;
     case ForceGuard::Withdrawal: return withdrawLimit_ - std::fabs(force_N);
     case ForceGuard::Both:
     case ForceGuard::Off: break;
     }
-    return insertLimit_ - std::fabs(force_N);
+    return stop - std::fabs(force_N);
 }
 
 bool SampleProcessor::overLimit(double force_N, double* limit) const

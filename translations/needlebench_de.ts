@@ -3783,7 +3783,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+123"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -7891,12 +7891,7 @@ F = %1 x + %2 x²
         <translation>Kraftgrenze %1 N</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>warning: the force limit, %1 N, is beyond what the load cell reads (%2 N at the end of its ±%3 V input): the stage stops at the end of the range</source>
-        <translation>Warnung: die Kraftgrenze, %1 N, liegt jenseits dessen, was der Kraftsensor misst (%2 N am Ende seines Eingangs von ±%3 V): die Achse hält am Ende des Messbereichs</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+25"/>
         <source>withdrawal force limit must be positive (got %1 N)</source>
         <translation>die Kraftgrenze beim Zurückziehen muss positiv sein (erhalten: %1 N)</translation>
     </message>
@@ -8004,7 +7999,12 @@ F = %1 x + %2 x²
         <translation>Nullen abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+36"/>
+        <source>warning: the load cell reads up to %1 N (its ±%2 V input), less than the force limit of %3 N: the stage stops there</source>
+        <translation>Warnung: der Kraftsensor misst bis %1 N (sein Eingang von ±%2 V), weniger als die Kraftgrenze von %3 N: die Achse hält dort an</translation>
+    </message>
+    <message>
+        <location line="+60"/>
         <source>a run is already on its way to its start position</source>
         <translation>eine Messung fährt bereits ihre Startposition an</translation>
     </message>

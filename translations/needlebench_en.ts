@@ -3760,7 +3760,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+123"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -7782,12 +7782,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>warning: the force limit, %1 N, is beyond what the load cell reads (%2 N at the end of its ±%3 V input): the stage stops at the end of the range</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+25"/>
         <source>withdrawal force limit must be positive (got %1 N)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7895,7 +7890,12 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+36"/>
+        <source>warning: the load cell reads up to %1 N (its ±%2 V input), less than the force limit of %3 N: the stage stops there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+60"/>
         <source>a run is already on its way to its start position</source>
         <translation type="unfinished"></translation>
     </message>

@@ -383,7 +383,7 @@ void ForcePlots::refresh()
         limitLabel_->setText(tr("limit %1 N%2 · margin %3 N")
                                  .arg(locale.toString(limit_N_, 'f', 2))
                                  .arg(above ? tr(" (above the plot)") : QString())
-                                 .arg(locale.toString(limit_N_ - latest, 'f', 2)));
+                                 .arg(locale.toString(margin_N_.value_or(limit_N_ - latest), 'f', 2)));
     }
     keepEventLabelsInside();
     for (QCustomPlot* plot : {forceTime_, positionTime_, forcePosition_})

@@ -10,6 +10,7 @@
 #include <QString>
 #include <QStringList>
 #include <QWidget>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -42,6 +43,10 @@ public:
     static QString markLabel(devices::LiveMarkKind kind);
     // Draws the maximum-force limit as a line on both force plots; <= 0 hides it.
     void setForceLimit(double force_N);
+    // The engine's margin to where the stage stops (the limit, or the end of what the load cell
+    // reads, whichever comes first); without one, the limit less the latest force. The plot
+    // said 8.00 N of margin where the panel said 7.78 N.
+    void setForceMargin(std::optional<double> margin_N) { margin_N_ = margin_N; }
     // Marks a detected event (puncture, contact, ...) at a time; an empty label marks it
     // without text (minor events that would clutter the plot).
     void addEvent(double time_s, const QString& label);
@@ -118,6 +123,7 @@ private:
     };
     std::vector<Event> events_;
     double limit_N_ = 0.0;
+    std::optional<double> margin_N_;
     double window_s_ = 10.0;
     bool follow_ = true;
     bool paused_ = false;

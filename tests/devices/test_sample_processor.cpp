@@ -164,6 +164,8 @@ private slots:
         const double top = p.readableForce_N(+1);
         QVERIFY2(top > 7.0 && top < 8.0, qPrintable(QString::number(top)));
         p.setGuard(ForceGuard::Insertion);
+        // The margin shown is to where the stage stops: the reading's end, not the 100 N limit.
+        QVERIFY(std::abs(p.margin_N(1.0) - (top - 1.0)) < 1e-9);
         // Up to just short of the end: no trip; at the ADC's last code (one step short of +10 V): a trip.
         const double lsb = 20.0 / 65536.0;
         std::vector<VoltageSample> b = batch(next, 20, [](double) { return 1.0; });

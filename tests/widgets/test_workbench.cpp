@@ -249,6 +249,27 @@ private slots:
         QVERIFY(w.plots()->eventCount() >= 1);  // the trip is marked on the plots
     }
 
+    // The default 8 N limit is beyond the 7.79 N the nominal chain reads at +10 V: the margin
+    // the panel and the plot show is to where the stage stops, the reading's end (the plot said
+    // 8.00 N, the limit less the force).
+    void theMarginIsToWhereTheStageStops()
+    {
+        QTemporaryDir tmp;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        prepare(w);
+        auto plotMargin = [&w] {
+            for (QCustomPlot* p : w.plots()->findChildren<QCustomPlot*>())
+                for (int i = 0; i < p->itemCount(); ++i)
+                    if (auto* t = qobject_cast<QCPItemText*>(p->item(i)); t && t->text().contains(QStringLiteral("margin")))
+                        return t->text();
+            return QString();
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(plotMargin().contains(QStringLiteral("margin 7.7")), qPrintable(plotMargin()), 10000);
+        QVERIFY(w.engine()->status().forceMargin_N < 7.8);
+    }
+
     void sensorUnpluggedDuringARun()
     {
         QTemporaryDir tmp;
