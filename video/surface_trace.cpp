@@ -36,7 +36,7 @@ namespace nb::video {
 
 namespace {
 
-constexpr int kWorkingSize_px = 480;  // longer side the picture is reduced to
+constexpr int kSurfaceWorkingSize_px = 480;  // longer side the picture is reduced to
 constexpr double kRekey_bins = 6.0;   // the reference moves on beyond this (as in tissue_tracker)
 constexpr double kSmooth_bins = 1.5;  // profile smoothing before the gradient
 
@@ -87,7 +87,7 @@ SurfaceTrace trackSurfaceEdges(FrameReader& reader, const QLineF& axis, const Ti
     const int n = index.size();
     if (n < 2 || axis.length() <= 0.0)
         return out;
-    const double scale = std::min(1.0, double(kWorkingSize_px) / std::max(index.width, index.height));
+    const double scale = std::min(1.0, double(kSurfaceWorkingSize_px) / std::max(index.width, index.height));
     const double ux = (axis.p2().x() - axis.p1().x()) / axis.length(), uy = (axis.p2().y() - axis.p1().y()) / axis.length();
     // Each working pixel's place along the axis, shared between two bins.
     const int w = std::max(1, int(std::lround(index.width * scale))), h = std::max(1, int(std::lround(index.height * scale)));
