@@ -34,6 +34,20 @@ static double strokeThenAnotherLater(int frame)
     return -30.0 + 60.0 * std::clamp(frame - 300, 0, 90) / 90.0 - 60.0 * std::clamp(frame - 2100, 0, 90) / 90.0;
 }
 
+// Recorded at 500 Hz: 0.5 s at rest, an insertion of 15 mm in 3 s, 0.5 s at rest.
+static bool writeStrokeRun(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly))
+        return false;
+    QByteArray csv = "time_s,position_mm,force_N\n";
+    for (int i = 0; i <= 2000; ++i) {
+        const double t = i * 0.002;
+        csv += QByteArray::number(t, 'f', 4) + ',' + QByteArray::number(15.0 * std::clamp((t - 0.5) / 3.0, 0.0, 1.0), 'f', 6) + ",0\n";
+    }
+    return f.write(csv) == csv.size();
+}
+
 static QJsonObject runJson(const QStringList& args, int* code = nullptr)
 {
     const nbtest::CliResult r = nbtest::runCli(args, 240000);
@@ -377,17 +391,8 @@ private slots:
         const QString video = dir_.filePath("long.avi"), run = dir_.filePath("stroke.csv"), trace = dir_.filePath("long-trace.csv");
         const QString problem = nb::needle_video::writeNeedleVideo(video, v);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
-        // Recorded: 0.5 s at rest, the stroke of 15 mm in 3 s, 0.5 s at rest. The video shows
-        // the stroke from 10 s: the offset is 9.5 s.
-        QFile f(run);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        QByteArray csv = "time_s,position_mm,force_N\n";
-        for (int i = 0; i <= 2000; ++i) {
-            const double t = i * 0.002;
-            csv += QByteArray::number(t, 'f', 4) + ',' + QByteArray::number(15.0 * std::clamp((t - 0.5) / 3.0, 0.0, 1.0), 'f', 6) + ",0\n";
-        }
-        f.write(csv);
-        f.close();
+        // The video shows the stroke from 10 s: the offset is 9.5 s.
+        QVERIFY(writeStrokeRun(run));
         int code = -1;
         const QJsonObject r = runJson({"sync", run, video, "--json", "--trace", trace}, &code);
         QCOMPARE(code, 0);
@@ -418,16 +423,8 @@ private slots:
         const QString video = dir_.filePath("backwards.avi"), run = dir_.filePath("forwards.csv");
         const QString problem = nb::needle_video::writeNeedleVideo(video, v);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
-        // Recorded: 0.5 s at rest, an insertion of 15 mm in 3 s, 0.5 s at rest; the offset is 9.5 s.
-        QFile f(run);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        QByteArray csv = "time_s,position_mm,force_N\n";
-        for (int i = 0; i <= 2000; ++i) {
-            const double t = i * 0.002;
-            csv += QByteArray::number(t, 'f', 4) + ',' + QByteArray::number(15.0 * std::clamp((t - 0.5) / 3.0, 0.0, 1.0), 'f', 6) + ",0\n";
-        }
-        f.write(csv);
-        f.close();
+        // The offset is 9.5 s.
+        QVERIFY(writeStrokeRun(run));
         int code = -1;
         const QJsonObject r = runJson({"sync", run, video, "--json"}, &code);
         QCOMPARE(code, 0);
