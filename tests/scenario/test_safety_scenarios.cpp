@@ -620,6 +620,34 @@ private slots:
         QVERIFY2(again.engine()->deviceDescription().contains(QStringLiteral("seed 7")), qPrintable(again.engine()->deviceDescription()));
     }
 
+    // A force the load cell cannot read (a kilogram on the needle: 9.8 N against the 7.79 N the
+    // nominal chain reads at +10 V, under the default 8 N limit) stops the stage in the window as
+    // a force over the limit does, and the run says so. The reading stayed at 7.79 N and the
+    // stage drove on (data probe: 20 mm into bone, saved "completed").
+    void aForceBeyondTheSensorsRangeStopsTheStage()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.controlPanel()->forceLimit(), 8.0);
+        setLinear(w, 2.0, 30.0);
+        nbtest::prepareToRecord(w);
+        w.controlPanel()->button(Control::StartInsertion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().moving, 20000);
+        rig->setLoadMass_g(1000.0);
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
+        QCOMPARE(w.lastEndReason(), QStringLiteral("force_limit"));
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controlPanel()->interlockState().moving, 20000);
+        const nb::RunReadResult r = nb::readRunFile(w.lastRunPath());
+        QCOMPARE(r.run.footer.value(QStringLiteral("force_over_range"), QString()), QStringLiteral("true"));
+        const double highest = *std::max_element(r.run.force_N.begin(), r.run.force_N.end());
+        QVERIFY2(highest < 8.0, qPrintable(QString::number(highest)));  // never read over the limit itself
+        QVERIFY(*std::max_element(r.run.position_mm.begin(), r.run.position_mm.end()) < 30.0);
+        rig->setLoadMass_g(0.0);
+    }
+
     void sineWithDefaultsTouchesTissue()
     {
         QTemporaryDir tmp;
