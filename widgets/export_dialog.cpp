@@ -136,7 +136,11 @@ void ExportDialog::setTargetDir(const QString& dir) { target_->setText(dir); }
 QString ExportDialog::targetDir() const { return target_->text().trimmed(); }
 QString ExportDialog::hdf5Path() const
 {
-    return QDir(targetDir()).filePath(QDir(sessionDir_).dirName() + QStringLiteral(".h5"));
+    return hdf5PathIn(targetDir());
+}
+QString ExportDialog::hdf5PathIn(const QString& target) const
+{
+    return QDir(target).filePath(QDir(sessionDir_).dirName() + QStringLiteral(".h5"));
 }
 QString ExportDialog::resultText() const { return status_->text(); }
 
@@ -149,7 +153,7 @@ QStringList ExportDialog::exportPaths(const Choice& c, const QString& target) co
     if (c.eaf)
         paths << runExportPaths(QDir(target).filePath(QStringLiteral("eaf")), names, true);
     if (c.hdf5)
-        paths << QDir(target).filePath(QDir(sessionDir_).dirName() + QStringLiteral(".h5"));
+        paths << hdf5PathIn(target);
     return paths;
 }
 
@@ -311,7 +315,7 @@ ExportDialog::Outcome ExportDialog::write(const Choice& c, const QString& target
             return out;
         }
         if (c.hdf5) {
-            const QString h5 = outDir.filePath(QDir(sessionDir_).dirName() + QStringLiteral(".h5"));
+            const QString h5 = hdf5PathIn(target);
             const qint64 base = done;
             if (!writeSessionHdf5(h5, d, [&](qint64 k, qint64) {
                     report(base + k, steps);

@@ -39,6 +39,7 @@ public:
     void setTargetDir(const QString& dir);
     QString targetDir() const;
     QString hdf5Path() const;  // where the HDF5 file goes: TARGET/SESSION.h5
+    QString hdf5PathIn(const QString& target) const;
     // Starts the export (as the Export button does); finished() is emitted at the end. When
     // files are in the way, it first asks (a question named "replaceExport", not modal: the
     // window's emergency stop stays in reach) and exports only when told to replace them.

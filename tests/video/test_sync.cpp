@@ -34,6 +34,18 @@ static double strokeThenAnotherLater(int frame)
     return -30.0 + 60.0 * std::clamp(frame - 300, 0, 90) / 90.0 - 60.0 * std::clamp(frame - 2100, 0, 90) / 90.0;
 }
 
+// A clear needle (60 grey levels) in a 320x240 picture, `frames` frames at 30 frames/s.
+static nb::needle_video::NeedleVideo plainNeedle(int frames, double (*tip)(int))
+{
+    nb::needle_video::NeedleVideo v;
+    v.width = 320;
+    v.height = 240;
+    v.contrast = 60.0;
+    v.frames = frames;
+    v.tip = tip;
+    return v;
+}
+
 // Recorded at 500 Hz: 0.5 s at rest, an insertion of 15 mm in 3 s, 0.5 s at rest.
 static bool writeStrokeRun(const QString& path)
 {
@@ -382,12 +394,7 @@ private slots:
     void aLongVideoIsTrackedWhereTheRunCanLie()
     {
         NB_SKIP_OUTSIDE_SANITIZER_SHARE();
-        nb::needle_video::NeedleVideo v;
-        v.width = 320;
-        v.height = 240;
-        v.contrast = 60.0;
-        v.frames = 2400;  // 80 s
-        v.tip = strokeThenAnotherLater;
+        const nb::needle_video::NeedleVideo v = plainNeedle(2400, strokeThenAnotherLater);  // 80 s
         const QString video = dir_.filePath("long.avi"), run = dir_.filePath("stroke.csv"), trace = dir_.filePath("long-trace.csv");
         const QString problem = nb::needle_video::writeNeedleVideo(video, v);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
@@ -414,12 +421,7 @@ private slots:
     // picture moved with the recording)" for a correlation of -0.96 (probe).
     void aPictureMovingAgainstTheRecording()
     {
-        nb::needle_video::NeedleVideo v;
-        v.width = 320;
-        v.height = 240;
-        v.contrast = 60.0;
-        v.frames = 480;  // 16 s
-        v.tip = strokeBackwards;
+        const nb::needle_video::NeedleVideo v = plainNeedle(480, strokeBackwards);  // 16 s
         const QString video = dir_.filePath("backwards.avi"), run = dir_.filePath("forwards.csv");
         const QString problem = nb::needle_video::writeNeedleVideo(video, v);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
