@@ -41,6 +41,32 @@ Run loadRun(const QString& path, Io io)
     }
 }
 
+// A labels file given to a fit: a row it cannot take, labels that overlap, and a label of the
+// fit's kind (intervals or points) that is none of the names it knows are said on stderr, so
+// that a typo ("C", "punct") is seen instead of silently fitted around. `reads` are the names
+// the fit uses, `known` every name of that kind the window labels with.
+Labels readLabelsForFit(const QString& path, const QStringList& reads, const QStringList& known, bool intervals, Io io)
+{
+    LabelsRead read;
+    try {
+        read = readLabels(path);
+    } catch (const RunFileError& e) {
+        throw FileFailure{e.message()};
+    }
+    for (const QString& p : read.problems())
+        io.err << nb::TrCli::tr("warning: %1\n").arg(p);
+    for (const QString& o : overlappingLabels(read.labels))
+        io.err << nb::TrCli::tr("warning: %1: %2\n").arg(path, o);
+    QStringList unknown;
+    for (const Label& l : read.labels)
+        if (l.isPoint() != intervals && !known.contains(l.label, intervals ? Qt::CaseSensitive : Qt::CaseInsensitive) && !unknown.contains(l.label))
+            unknown << l.label;
+    if (!unknown.isEmpty())
+        io.err << nb::TrCli::tr("warning: %1: %2 not used by this fit (it reads %3)\n")
+                      .arg(path, QLatin1Char('\'') + unknown.join(QStringLiteral("', '")) + QLatin1Char('\''), reads.join(QStringLiteral(", ")));
+    return std::move(read.labels);
+}
+
 template <typename F>
 auto onFile(const QString& path, F&& f)
 {
@@ -163,12 +189,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
             io.err << w << '\n';
         events.push_back(onFile(path, [&] { return detectEvents(run); }));
         if (!labelFiles.isEmpty()) {
-            Labels marks;
-            try {
-                marks = readLabelsFile(labelFiles[f]);
-            } catch (const RunFileError& e) {
-                throw FileFailure{e.message()};
-            }
+            const QStringList reads{QStringLiteral("contact"), QStringLiteral("puncture")};
+            const Labels marks = readLabelsForFit(labelFiles[f], reads, reads + QStringList{QStringLiteral("relaxation"), QStringLiteral("internal puncture")}, false, io);
             onFile(labelFiles[f], [&] {
                 applyEventLabels(events.back(), run, marks);
                 return 0;
@@ -323,11 +345,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
         const Run run = loadRun(path, io);
         QStringList phases;
         if (parser.isSet(labels)) {
-            try {
-                phases = phasePerSample(readLabelsFile(parser.value(labels)), run.time_s);
-            } catch (const RunFileError& e) {
-                throw FileFailure{e.message()};
-            }
+            const QStringList friction{QStringLiteral("a"), QStringLiteral("b1"), QStringLiteral("b2"), QStringLiteral("c")};
+            phases = phasePerSample(readLabelsForFit(parser.value(labels), friction, friction, true, io), run.time_s);
             // A labels file without phases (an insertion run's, say) would silently set the
             // run's own phase column aside.
             if (std::all_of(phases.begin(), phases.end(), [](const QString& p) { return p.isEmpty(); })) {

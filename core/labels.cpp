@@ -56,7 +56,7 @@ QString quoteIfNeeded(QString s)
 
 }  // namespace
 
-Labels readLabelsFile(const QString& path)
+LabelsRead readLabels(const QString& path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
@@ -65,7 +65,7 @@ Labels readLabelsFile(const QString& path)
     if (text.startsWith(QChar(0xFEFF)))
         text.remove(0, 1);
     const QStringList lines = text.split(QLatin1Char('\n'));
-    Labels labels;
+    LabelsRead read;
     bool haveHeader = false;
     int col[5] = {-1, -1, -1, -1, -1};
     static const char* names[5] = {"track", "label", "start_s", "end_s", "comment"};
@@ -94,16 +94,33 @@ Labels readLabelsFile(const QString& path)
         l.end_s = field(3).toDouble(&ok2);
         l.comment = field(4);
         if (!ok1 || !ok2 || !std::isfinite(l.start_s) || !std::isfinite(l.end_s))
-            throw RunFileError(path, i + 1, nb::TrCore::tr("start_s and end_s must be numbers"));
-        if (l.end_s < l.start_s)
-            throw RunFileError(path, i + 1, nb::TrCore::tr("end_s %1 is before start_s %2").arg(l.end_s).arg(l.start_s));
-        if (l.label.isEmpty())
-            throw RunFileError(path, i + 1, nb::TrCore::tr("empty label"));
-        labels.push_back(std::move(l));
+            read.skipped.emplace_back(path, i + 1, nb::TrCore::tr("start_s and end_s must be numbers"));
+        else if (l.end_s < l.start_s)
+            read.skipped.emplace_back(path, i + 1, nb::TrCore::tr("end_s %1 is before start_s %2").arg(l.end_s).arg(l.start_s));
+        else if (l.label.isEmpty())
+            read.skipped.emplace_back(path, i + 1, nb::TrCore::tr("empty label"));
+        else
+            read.labels.push_back(std::move(l));
     }
     if (!haveHeader)
         throw RunFileError(path, 0, nb::TrCore::tr("no header row (expected track,label,start_s,end_s,comment)"));
-    return labels;
+    return read;
+}
+
+Labels readLabelsFile(const QString& path)
+{
+    LabelsRead read = readLabels(path);
+    if (!read.skipped.empty())
+        throw read.skipped.front();
+    return std::move(read.labels);
+}
+
+QStringList LabelsRead::problems() const
+{
+    QStringList out;
+    for (const RunFileError& e : skipped)
+        out << nb::TrCore::tr("%1: row skipped").arg(e.message());
+    return out;
 }
 
 void writeLabelsFile(const QString& path, const Labels& labels)
@@ -137,6 +154,30 @@ QStringList phasePerSample(const Labels& labels, const std::vector<double>& time
             }
         }
         out << name;
+    }
+    return out;
+}
+
+QStringList overlappingLabels(const Labels& labels)
+{
+    QStringList out;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const Label& a = labels[i];
+        if (a.isPoint())
+            continue;
+        for (std::size_t j = i + 1; j < labels.size(); ++j) {
+            const Label& b = labels[j];
+            if (b.isPoint() || b.track != a.track || b.start_s >= a.end_s || a.start_s >= b.end_s)
+                continue;
+            out << nb::TrCore::tr("labels '%1' (%2 s to %3 s) and '%4' (%5 s to %6 s) overlap on track '%7'; '%1' is taken where they do")
+                       .arg(a.label)
+                       .arg(a.start_s, 0, 'f', 3)
+                       .arg(a.end_s, 0, 'f', 3)
+                       .arg(b.label)
+                       .arg(b.start_s, 0, 'f', 3)
+                       .arg(b.end_s, 0, 'f', 3)
+                       .arg(a.track);
+        }
     }
     return out;
 }

@@ -516,6 +516,31 @@ static QString keptLabelsPath(const QString& runPath)
         .filePath(QStringLiteral("unsaved-labels/%1/%2").arg(QFileInfo(runPath).absoluteDir().dirName(), name));
 }
 
+// A labels file with rows that could not be read is copied aside before the next label saved
+// over it drops them: what the operator typed stays on disk, beside the run, to mend by hand.
+// An identical copy made at an earlier opening is reused.
+static QString setLabelsFileAside(const QString& labelsPath)
+{
+    const QFileInfo fi(labelsPath);
+    QString base = fi.fileName();
+    base.chop(int(qstrlen(".labels.csv")));
+    QFile original(labelsPath);
+    if (!original.open(QIODevice::ReadOnly))
+        return {};
+    const QByteArray bytes = original.readAll();
+    for (int k = 1; k < 100; ++k) {
+        const QString copy = fi.dir().filePath(base + (k == 1 ? QStringLiteral(".unread") : QStringLiteral(".unread-%1").arg(k)) + QStringLiteral(".labels.csv"));
+        QFile existing(copy);
+        if (existing.exists()) {
+            if (existing.open(QIODevice::ReadOnly) && existing.readAll() == bytes)
+                return copy;
+            continue;
+        }
+        return QFile::copy(labelsPath, copy) ? copy : QString();
+    }
+    return {};
+}
+
 bool ReviewWorkspace::openRun(const QString& path)
 {
     notAttached_.clear();
@@ -528,9 +553,24 @@ bool ReviewWorkspace::openRun(const QString& path)
         Run run = std::move(read.run);
         resetTrack();
         Labels labels;
+        QStringList labelsNotes;
         const QString lp = labelsPathFor(path);
-        if (QFileInfo::exists(lp))
-            labels = readLabelsFile(lp);
+        if (QFileInfo::exists(lp)) {
+            // A labels file with a bad row (edited by hand) or none readable at all does not keep
+            // the run from Review; its rows that can be read are shown.
+            try {
+                LabelsRead read = readLabels(lp);
+                labels = std::move(read.labels);
+                labelsNotes = read.problems();
+            } catch (const RunFileError& e) {
+                labelsNotes << e.message();
+            }
+            if (!labelsNotes.isEmpty()) {
+                const QString copy = setLabelsFileAside(lp);
+                labelsNotes << (copy.isEmpty() ? tr("the labels file could not be copied aside: the next label saved replaces it")
+                                               : tr("the labels file as it was is kept in %1").arg(QDir::toNativeSeparators(copy)));
+            }
+        }
         run_ = std::move(run);
         runPath_.clear();  // no saving while loading
         const QString protocol = run_.metadata.value(QStringLiteral("protocol"), QString());
@@ -569,6 +609,7 @@ bool ReviewWorkspace::openRun(const QString& path)
         setCursorTime(run_.time_s.front());
         showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size())
                    + (keptNote.isEmpty() ? QString() : QStringLiteral("; ") + keptNote)
+                   + (labelsNotes.isEmpty() ? QString() : QStringLiteral("; ") + labelsNotes.join(QStringLiteral("; ")))
                    + (read.warnings.isEmpty() ? QString() : QStringLiteral("; ") + read.warnings.join(QStringLiteral("; "))));
         restoreVideoLink();
         return true;

@@ -11,6 +11,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <algorithm>
 #include <cmath>
 
 namespace nb {
@@ -18,6 +19,42 @@ namespace nb {
 namespace {
 
 bool isLabelsFile(const QString& fileName) { return fileName.endsWith(QLatin1String(".labels.csv")); }
+
+// A label outside the recording (a typo, 1e300 s) describes nothing in it and is set aside; one
+// that reaches past either end (drawn from before the first sample) keeps the part inside.
+Labels labelsWithinRun(Labels labels, const Run& run, const QString& labelsPath, QStringList& warnings)
+{
+    const double t0 = run.time_s.front(), t1 = run.time_s.back();
+    const double slack = 1.0;  // a label may end just after the last sample
+    Labels kept;
+    for (Label& l : labels) {
+        const bool outside = l.isPoint() ? (l.start_s < t0 - slack || l.start_s > t1 + slack) : (l.end_s <= t0 || l.start_s >= t1);
+        if (outside) {
+            warnings << nb::TrCore::tr("%1: label '%2' (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored")
+                            .arg(labelsPath, excerpt(l.label))
+                            .arg(l.start_s, 0, 'g', 6)
+                            .arg(l.end_s, 0, 'g', 6)
+                            .arg(t0, 0, 'f', 3)
+                            .arg(t1, 0, 'f', 3);
+            continue;
+        }
+        if (!l.isPoint() && (l.start_s < t0 - slack || l.end_s > t1 + slack)) {
+            const double from = std::max(l.start_s, t0), to = std::min(l.end_s, t1);
+            warnings << nb::TrCore::tr("%1: label '%2' (%3 s to %4 s) reaches beyond the run (%5 s to %6 s); its part from %7 s to %8 s is used")
+                            .arg(labelsPath, excerpt(l.label))
+                            .arg(l.start_s, 0, 'g', 6)
+                            .arg(l.end_s, 0, 'g', 6)
+                            .arg(t0, 0, 'f', 3)
+                            .arg(t1, 0, 'f', 3)
+                            .arg(from, 0, 'f', 3)
+                            .arg(to, 0, 'f', 3);
+            l.start_s = from;
+            l.end_s = to;
+        }
+        kept.push_back(std::move(l));
+    }
+    return kept;
+}
 
 }  // namespace
 
@@ -94,28 +131,16 @@ LoadedDataset loadDataset(const QString& dirPath)
         const QString labelsPath = labelsPathFor(path);
         if (QFileInfo::exists(labelsPath)) {
             try {
-                r.labels = readLabelsFile(labelsPath);
+                LabelsRead read = readLabels(labelsPath);
+                r.labels = std::move(read.labels);
+                out.warnings << read.problems();
             } catch (const RunFileError& e) {
                 out.warnings << nb::TrCore::tr("%1: labels ignored (%2)").arg(labelsPath, e.message());
             }
-            // A label outside the recording (a typo, 1e300 s) describes nothing in it.
-            if (!r.run.time_s.empty()) {
-                const double t0 = r.run.time_s.front(), t1 = r.run.time_s.back();
-                const double slack = 1.0;  // a label may end just after the last sample
-                Labels kept;
-                for (const Label& l : r.labels) {
-                    if (std::isfinite(l.start_s) && std::isfinite(l.end_s) && l.start_s >= t0 - slack && l.end_s <= t1 + slack)
-                        kept.push_back(l);
-                    else
-                        out.warnings << nb::TrCore::tr("%1: label '%2' (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored")
-                                            .arg(labelsPath, excerpt(l.label))
-                                            .arg(l.start_s, 0, 'g', 6)
-                                            .arg(l.end_s, 0, 'g', 6)
-                                            .arg(t0, 0, 'f', 3)
-                                            .arg(t1, 0, 'f', 3);
-                }
-                r.labels = std::move(kept);
-            }
+            if (!r.run.time_s.empty())
+                r.labels = labelsWithinRun(std::move(r.labels), r.run, labelsPath, out.warnings);
+            for (const QString& overlap : overlappingLabels(r.labels))
+                out.warnings << QStringLiteral("%1: %2").arg(labelsPath, overlap);
         }
         // Names become file and group names: keep them unique.
         QString name = QFileInfo(path).completeBaseName();

@@ -231,6 +231,31 @@ private slots:
         QCOMPARE(table.code, 0);
         QVERIFY(table.out.contains(QStringLiteral("Cp")) && table.out.contains(QStringLiteral("std")));
     }
+    // A hand-edited labels file: a row typed backwards costs that row, with the file and line
+    // said; a phase named 'C' (the fit reads 'c') is said too instead of fitted around.
+    void handEditedLabelsAreSaid()
+    {
+        const nb::Labels good = nb::readLabelsFile(path("fr_labels.csv"));
+        QByteArray text = "track,label,start_s,end_s,comment\n";
+        for (const nb::Label& l : good)
+            text += QStringLiteral("%1,%2,%3,%4,\n").arg(l.track, l.label).arg(l.start_s, 0, 'f', 6).arg(l.end_s, 0, 'f', 6).toUtf8();
+        text += "insertion,b1,3.5,3.25,typed backwards\n";
+        text += QStringLiteral("withdrawal,C,0,%1,\n").arg(good.back().end_s, 0, 'f', 6).toUtf8();
+        write(path("fr_hand.labels.csv"), text);
+        const auto fit = [&](const char* labels) {
+            return run({QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"), QStringLiteral("--thickness-mm"),
+                        QStringLiteral("20"), QStringLiteral("--labels"), path(labels), QStringLiteral("--json")});
+        };
+        const auto hand = fit("fr_hand.labels.csv"), clean = fit("fr_labels.csv");
+        QCOMPARE(hand.code, 0);
+        const QString line = QStringLiteral("fr_hand.labels.csv:%1").arg(good.size() + 2);
+        QVERIFY2(hand.err.contains(line) && hand.err.contains(QStringLiteral("end_s 3.25 is before start_s 3.5")), qPrintable(hand.err));
+        QVERIFY2(hand.err.contains(QStringLiteral("'C' not used by this fit (it reads a, b1, b2, c)")), qPrintable(hand.err));
+        QVERIFY2(hand.err.contains(QStringLiteral("overlap")), qPrintable(hand.err));  // 'C' lies over the withdrawal's phases
+        QVERIFY2(!clean.err.contains(QStringLiteral("warning")), qPrintable(clean.err));
+        const auto cp = [](const nbtest::CliResult& r) { return r.json()[QStringLiteral("runs")].toArray()[0].toObject()[QStringLiteral("Cp_N")].toDouble(); };
+        QCOMPARE(cp(hand), cp(clean));
+    }
     void eventsJson()
     {
         const auto r = run({QStringLiteral("events"), path("ins1.csv"), QStringLiteral("--json")});

@@ -367,6 +367,44 @@ private slots:
         QCOMPARE(int(nb::loadDataset(sessionDir).dataset.runs.size()), 2);
     }
 
+    // A hand-edited labels file: a typo costs its row, not the run's other labels; a phase drawn
+    // from before the first sample keeps its part in the run; overlapping phases are said.
+    void handEditedLabelsKeepWhatTheyCan()
+    {
+        QTemporaryDir dir;
+        QFile f(dir.filePath(QStringLiteral("run.csv")));
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+        f.write("# format: needlebench-run 1\n# motion: linear\ntime_s,position_mm,force_N\n");
+        for (int i = 0; i <= 1000; ++i)
+            f.write(QStringLiteral("%1,%2,%3\n").arg(i * 0.01).arg(i * 0.01).arg(i * 0.002).toUtf8());
+        f.write("# end_reason: completed\n");
+        f.close();
+        QFile l(dir.filePath(QStringLiteral("run.labels.csv")));
+        QVERIFY(l.open(QIODevice::WriteOnly | QIODevice::Text));
+        l.write("track,label,start_s,end_s,comment\n"
+                "insertion,a,-2.5,1.5,drawn from before the start\n"
+                "insertion,b1,3,2,typed backwards\n"
+                "insertion,b2,4,6,\n"
+                "insertion,c,5.5,7,overlaps b2\n"
+                "events,puncture,8,8,\n");
+        l.close();
+        const nb::LoadedDataset loaded = nb::loadDataset(dir.path());
+        QCOMPARE(int(loaded.dataset.runs.size()), 1);
+        const nb::Labels& got = loaded.dataset.runs[0].labels;
+        const QString warnings = loaded.warnings.join(QLatin1Char('\n'));
+        QCOMPARE(int(got.size()), 4);
+        QCOMPARE(got[0].label, QStringLiteral("a"));
+        QCOMPARE(got[0].start_s, 0.0);
+        QCOMPARE(got[0].end_s, 1.5);
+        QCOMPARE(got[1].label, QStringLiteral("b2"));
+        QCOMPARE(got[3].label, QStringLiteral("puncture"));
+        QVERIFY2(warnings.contains(QStringLiteral("run.labels.csv:3")) && warnings.contains(QStringLiteral("end_s 2 is before start_s 3")),
+                 qPrintable(warnings));
+        QVERIFY2(warnings.contains(QStringLiteral("its part from 0.000 s to 1.500 s is used")), qPrintable(warnings));
+        QVERIFY2(warnings.contains(QStringLiteral("'b2' (4.000 s to 6.000 s) and 'c' (5.500 s to 7.000 s) overlap on track 'insertion'")),
+                 qPrintable(warnings));
+    }
+
     void sessionHdf5RoundTrip()
     {
         QTemporaryDir dir;

@@ -578,6 +578,44 @@ private slots:
         QFile::remove(kept);
     }
 
+    // A labels file edited by hand with one row typed backwards: the run opens with the other
+    // labels, the row is named by line, and the file as typed is copied aside before the next
+    // label saved over it drops the row. It kept the run out of Review ("end_s ... before").
+    void aBadLabelsRowDoesNotKeepTheRunOut()
+    {
+        QTemporaryDir own;
+        const QString run = own.filePath(QStringLiteral("hand.csv"));
+        QVERIFY(QFile::copy(run_, run));
+        const QByteArray typed = "track,label,start_s,end_s,comment\n"
+                                 "insertion,a,0.2,0.6,\n"
+                                 "insertion,b1,0.9,0.7,typed backwards\n"
+                                 "events,puncture,1.5,1.5,\n";
+        QFile f(own.filePath(QStringLiteral("hand.labels.csv")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(typed);
+        f.close();
+        nb::ReviewWorkspace ws;
+        ws.show();
+        QVERIFY2(ws.openRun(run), qPrintable(ws.status()));
+        QCOMPARE(ws.labelModel()->labels().size(), std::size_t(2));
+        QVERIFY2(ws.status().contains(QStringLiteral("hand.labels.csv:3")) && ws.status().contains(QStringLiteral("before start_s")),
+                 qPrintable(ws.status()));
+        const QString copy = own.filePath(QStringLiteral("hand.unread.labels.csv"));
+        QVERIFY2(ws.status().contains(QDir::toNativeSeparators(copy)), qPrintable(ws.status()));
+        QVERIFY(ws.labelModel()->insertLabel({QStringLiteral("events"), QStringLiteral("contact"), 0.1, 0.1, {}}));
+        QCOMPARE(nb::readLabelsFile(f.fileName()).size(), std::size_t(3));
+        QFile kept(copy);
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), typed);
+        // A file that cannot be read at all (no header) leaves the run open without labels.
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write("insertion;a;0.2;0.6\n");
+        f.close();
+        QVERIFY2(ws.openRun(run), qPrintable(ws.status()));
+        QCOMPARE(ws.labelModel()->labels().size(), std::size_t(0));
+        QVERIFY2(ws.status().contains(QStringLiteral("hand.unread-2.labels.csv")), qPrintable(ws.status()));
+    }
+
     // What the decoder reports of a file opened before the last one is not passed on: an index
     // (or a frame) of the run shown before, arriving after another video was asked for, gave
     // the run in review that video's needle trace and its errors.

@@ -343,7 +343,9 @@ void AnalysisWorkspace::reloadLabels()
             continue;
         }
         try {
-            r.labels = readLabelsFile(path);
+            LabelsRead read = readLabels(path);
+            r.labels = std::move(read.labels);
+            problems << read.problems();
         } catch (const RunFileError& e) {
             // A labels file caught mid-save or broken: keep the last good labels and say so.
             problems << e.message();
