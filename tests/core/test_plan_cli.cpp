@@ -259,6 +259,16 @@ private slots:
         r = plan({"report", session, "--json"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QCOMPARE(r.json().value(QStringLiteral("runs")).toInt(), 4);
+        // ... and says it left the interrupted one out, by name (a table of fewer runs than the
+        // folder holds passed for all of them).
+        const QString interrupted = QFileInfo(s.runs[1].attempts[0].runFile).fileName();
+        const QJsonArray warnings = r.json().value(QStringLiteral("warnings")).toArray();
+        QVERIFY2(std::any_of(warnings.begin(), warnings.end(),
+                             [&](const QJsonValue& w) {
+                                 return w.toString().contains(QStringLiteral("left out: ") + interrupted) && w.toString().contains(QStringLiteral("--all-runs"));
+                             }),
+                 qPrintable(QJsonDocument(warnings).toJson()));
+        QCOMPARE(plan({"report", session, "--json", "--all-runs"}).json().value(QStringLiteral("runs")).toInt(), 5);
 
         // Killed after run 4 had ended and been tagged but before plan.json said so: kept.
         {

@@ -154,6 +154,9 @@ private slots:
                                         << "interrupted";
         QTest::newRow("duplicate column") << QByteArray("time_s,force_N,position_mm,force_N\n") << 1 << "twice";
         QTest::newRow("binary") << QByteArray("time_s,position_mm,force_N\n\0\0\0", 30) << 0 << "binary";
+        QTest::newRow("semicolons") << QByteArray("# format: needlebench-run 1\ntime_s;position_mm;force_N\n0;0;0\n0,002;0,008;0\n") << 2
+                                    << "separated by ';', not by commas";
+        QTest::newRow("tabs") << QByteArray("time_s\tposition_mm\tforce_N\n0\t0\t0\n") << 1 << "separated by 'tab'";
         QTest::newRow("row after footer") << QByteArray("time_s,position_mm,force_N\n0,0,0\n# end: x\n1,1,1\n") << 4
                                           << "after the closing metadata";
     }
