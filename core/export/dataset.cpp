@@ -42,6 +42,25 @@ std::vector<SignalColumn> exportSignals(const Run& run)
     return cols;
 }
 
+std::vector<TextColumn> exportTextColumns(const Run& run, const Labels& labels)
+{
+    QStringList taken{QStringLiteral("labels")};
+    for (const SignalColumn& c : exportSignals(run))
+        taken << c.name;
+    for (const QString& t : labelTracks(labels))
+        taken << QStringLiteral("label_") + t;
+    std::vector<TextColumn> out;
+    for (const auto& [name, values] : run.text) {
+        if (values.size() != run.size() || taken.contains(name))
+            continue;
+        const QString description = name == QLatin1String("phase") ? nb::TrCore::tr("friction phase recorded with the run (the simulated rig's own)")
+                                    : name == QLatin1String("event") ? nb::TrCore::tr("event recorded with the run at the sample")
+                                                                     : nb::TrCore::tr("text recorded with the run");
+        out.push_back({name, description, QStringList(values.begin(), values.end())});
+    }
+    return out;
+}
+
 QStringList labelTracks(const Labels& labels)
 {
     QStringList tracks;

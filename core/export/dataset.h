@@ -44,6 +44,15 @@ struct SignalColumn {
 // differences of position (np.gradient-like, so no sample is lost at the ends).
 std::vector<SignalColumn> exportSignals(const Run& run);
 
+// The run's own text columns (the simulated rig's `phase`, its `event`), as recorded, for the
+// exports; a name an export already uses (a signal, `label_*`, `labels`) is left out.
+struct TextColumn {
+    QString name;
+    QString description;
+    QStringList values;
+};
+std::vector<TextColumn> exportTextColumns(const Run& run, const Labels& labels);
+
 // Label tracks in order of first appearance.
 QStringList labelTracks(const Labels& labels);
 

@@ -76,6 +76,8 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName, const QS
         columns.append(QJsonObject{{QStringLiteral("name"), QStringLiteral("label_") + track},
                                    {QStringLiteral("unit"), QString()},
                                    {QStringLiteral("description"), nb::TrCore::tr("label of track '%1' active at the sample").arg(track)}});
+    for (const TextColumn& c : exportTextColumns(r.run, r.labels))
+        columns.append(QJsonObject{{QStringLiteral("name"), c.name}, {QStringLiteral("unit"), QString()}, {QStringLiteral("description"), c.description}});
     QJsonArray labels;
     for (const Label& l : r.labels)
         labels.append(QJsonObject{{QStringLiteral("track"), l.track},
@@ -124,6 +126,9 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
         buf += (c ? "," : "") + csvField(cols[c].name);
     for (const QString& t : tracks)
         buf += ',' + csvField(QStringLiteral("label_") + t);
+    const std::vector<TextColumn> texts = exportTextColumns(r.run, r.labels);
+    for (const TextColumn& c : texts)
+        buf += ',' + csvField(c.name);
     buf += '\n';
     const std::size_t n = r.run.size();
     // Time and position keep micro-resolution; other signals a fixed 6 decimals too, which is
@@ -136,6 +141,8 @@ bool writeRunCsv(const QString& csvPath, const DatasetRun& r, const ExportProgre
         }
         for (const QStringList& tv : trackValues)
             buf += ',' + csvField(tv[qsizetype(i)]);
+        for (const TextColumn& c : texts)
+            buf += ',' + csvField(c.values[qsizetype(i)]);
         buf += '\n';
         if (buf.size() > (1 << 20) || i + 1 == n) {
             if (csv.write(buf) != buf.size())

@@ -232,6 +232,9 @@ public:
             }
         }
 
+        for (const TextColumn& c : exportTextColumns(r.run, r.labels))
+            strings(g, c.name, c.values, c.description);
+
         const auto rows = labelIntervals(r.run, r.labels, clock);
         const Handle lg = group(g, QStringLiteral("labels"));
         attribute(lg, QStringLiteral("description"),

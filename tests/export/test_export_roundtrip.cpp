@@ -223,6 +223,42 @@ private slots:
         QCOMPARE(rows[10][5].toDouble(), 0.25);
     }
 
+    // The simulated rig's true phase (a text column) goes into both exports, as recorded: it
+    // was left out, and the truth a suggestion is measured against with it.
+    void recordedTextColumnsAreKept()
+    {
+        QTemporaryDir dir;
+        Dataset d;
+        d.runs.push_back(makeRun(QStringLiteral("p")));
+        DatasetRun& r = d.runs.back();
+        auto& phase = r.run.addTextColumn(QStringLiteral("phase"));
+        for (std::size_t i = 0; i < r.run.size(); ++i)
+            phase.push_back(i < 300 ? QStringLiteral("a") : i < 600 ? QStringLiteral("b1") : QStringLiteral("c"));
+        const QString csv = dir.filePath(QStringLiteral("p.csv"));
+        QVERIFY(writeRunCsv(csv, r));
+        const auto rows = readCsv(csv);
+        QCOMPARE(rows[0].last(), QStringLiteral("phase"));
+        QCOMPARE(rows[1].last(), QStringLiteral("a"));
+        QCOMPARE(rows[451].last(), QStringLiteral("b1"));
+        QCOMPARE(rows[1000].last(), QStringLiteral("c"));
+        QFile jf(sidecarPath(csv));
+        QVERIFY(jf.open(QIODevice::ReadOnly));
+        const QJsonArray cols = QJsonDocument::fromJson(jf.readAll()).object().value("columns").toArray();
+        QCOMPARE(cols.last().toObject().value("name").toString(), QStringLiteral("phase"));
+        QCOMPARE(cols.size(), rows[0].size());
+
+        const QString h5 = dir.filePath(QStringLiteral("s.h5"));
+        QVERIFY(writeSessionHdf5(h5, d));
+        const hid_t f = H5Fopen(QFile::encodeName(h5).constData(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        QVERIFY(f >= 0);
+        const QStringList back = readStrings(f, "/runs/p/phase");
+        H5Fclose(f);
+        QCOMPARE(back.size(), qsizetype(1000));
+        QCOMPARE(back[0], QStringLiteral("a"));
+        QCOMPARE(back[450], QStringLiteral("b1"));
+        QCOMPARE(back[999], QStringLiteral("c"));
+    }
+
     void cancelledCsvLeavesNothing()
     {
         QTemporaryDir dir;
