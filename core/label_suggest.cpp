@@ -217,6 +217,62 @@ double smoothedForceNoise(const Run& run, int smoothedSamples)
     return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0) / std::sqrt(double(smoothedSamples));
 }
 
+// Whether the force shows sliding friction at all: sliding adds C·sgn(ẋ) (models.md 5), so at
+// one depth the force going in stands above the force coming out by about Cp + |Cn|, while a
+// slab carried the whole time (a stroke shorter than the plate's gap) pushes back only with
+// its inertia and the plate's spring, the same both ways at a depth. Over bins of depth along
+// the moving samples (`v_mm_s`), the force in minus the force out: the slab was carried
+// throughout when that difference is within the raw force's noise in the middle bin (twice
+// σ) and in every bin (six σ, and 20 mN: a tenth of the least sliding friction a slab of a few
+// millimetres gives). False when too few samples fill both directions of a bin.
+bool carriedThroughout(const Run& run, const std::vector<double>& v_mm_s)
+{
+    const std::size_t n = run.size();
+    std::vector<double> speeds;
+    for (double x : v_mm_s)
+        speeds.push_back(std::abs(x));
+    if (speeds.size() < 100)
+        return false;
+    std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() * 95 / 100), speeds.end());
+    const double moving = 0.1 * speeds[speeds.size() * 95 / 100];
+    std::vector<double> depth;
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::abs(v_mm_s[i]) > moving)
+            depth.push_back(run.position_mm[i]);
+    if (depth.size() < 100)
+        return false;
+    std::sort(depth.begin(), depth.end());
+    const double lo = depth[depth.size() / 100], hi = depth[depth.size() - 1 - depth.size() / 100];
+    const int bins = std::clamp(int(depth.size() / 100), 5, 20);
+    if (!(hi > lo))
+        return false;
+    std::vector<double> sum[2], count[2];
+    for (int d : {0, 1}) {
+        sum[d].assign(std::size_t(bins), 0.0);
+        count[d].assign(std::size_t(bins), 0.0);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::abs(v_mm_s[i]) <= moving || run.position_mm[i] < lo || run.position_mm[i] >= hi)
+            continue;
+        const auto b = std::size_t(std::clamp(int((run.position_mm[i] - lo) / (hi - lo) * bins), 0, bins - 1));
+        const int d = v_mm_s[i] > 0 ? 0 : 1;
+        sum[d][b] += run.force_N[i];
+        count[d][b] += 1.0;
+    }
+    std::vector<double> difference;
+    for (std::size_t b = 0; b < std::size_t(bins); ++b)
+        if (count[0][b] >= 10 && count[1][b] >= 10)
+            difference.push_back(sum[0][b] / count[0][b] - sum[1][b] / count[1][b]);
+    if (difference.size() < std::size_t(bins) / 2 + 1)
+        return false;
+    const double sigma = smoothedForceNoise(run, 1);
+    double largest = 0.0;
+    for (double x : difference)
+        largest = std::max(largest, std::abs(x));
+    std::nth_element(difference.begin(), difference.begin() + std::ptrdiff_t(difference.size() / 2), difference.end());
+    return std::abs(difference[difference.size() / 2]) < 2.0 * sigma && largest < std::max(6.0 * sigma, 0.02);
+}
+
 // The needle's position at the first sample at or after `t` (the last sample after the run).
 double positionAtTime(const Run& run, double t)
 {
@@ -374,6 +430,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     if (run.size() < 10)
         return out;
     const std::vector<double> v = velocity(run);
+    double fastest = 0.0;
+    for (double x : v)
+        fastest = std::max(fastest, std::abs(x));
     // The picture's velocity noise: most of the time the tissue rests (c), so a low
     // quantile of its measured speed is the noise the picture adds. Where it is carried most
     // of the time (a plate gap nearly as wide as the stroke) that quantile is a speed, so the
@@ -463,9 +522,6 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             heldLevel_N[d] = c[d] + b[d] * top[d];
             held[d] = heldLevel_N[d] > 0.0 && std::abs(b[d]) * top[d] <= 0.05 * heldLevel_N[d];
         }
-        double fastest = 0.0;
-        for (double x : v)
-            fastest = std::max(fastest, std::abs(x));
         const double minSpeed = std::max(1000.0 * lines->bandSlowingDown_m_s / 2.0, 0.2 * fastest);
         const std::size_t window = std::max<std::size_t>(10, std::size_t(0.05 * rate));  // 50 ms
         noise_N = smoothedForceNoise(run, 2 * half + 1);
@@ -490,7 +546,13 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
     }
     const QString forceSource = lines ? QStringLiteral("suggested from force and position")
                                       : QStringLiteral("suggested from position (velocity band)");
-    const std::vector<HalfCycle> cycles = halfCycles(v, o.zeroBand_mm_s);
+    // A stroke slower than the thesis's band (±1 mm at 0.4 Hz tops at 2.5 mm/s) still turns:
+    // its turning points are found within half its top speed, not lost in one long label.
+    const std::vector<HalfCycle> cycles = halfCycles(v, std::min(o.zeroBand_mm_s, 0.5 * fastest));
+    // No sliding anywhere (the force the same going in and out at each depth): the slab was
+    // carried by the needle all along, whatever lines the force's noise lets be drawn.
+    const bool carried = carriedThroughout(run, v);
+    const QString carriedSource = QStringLiteral("suggested from force and position (no friction between directions: the tissue moved with the needle)");
     // A stroke far shorter than the run's usual one is the stage settling (an overshoot when it
     // stops), not a stroke: the tissue cannot break away in it and stays carried (a).
     auto travel_mm = [&](const HalfCycle& h) { return std::abs(run.position_mm[h.end - 1] - run.position_mm[h.start]); };
@@ -513,8 +575,8 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
         // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
         const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
-        if (travel_mm(h) < 0.1 * usualTravel_mm) {
-            out.push_back({track, QStringLiteral("a"), t0, t1, forceSource});
+        if (travel_mm(h) < 0.1 * usualTravel_mm || carried) {
+            out.push_back({track, QStringLiteral("a"), t0, t1, carried ? carriedSource : forceSource});
             continue;
         }
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
