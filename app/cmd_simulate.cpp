@@ -8,6 +8,8 @@
 #include "core/disk_space.h"
 #include "core/tr.h"
 
+#include <cmath>
+
 #include "devices/acquisition_engine.h"
 #include "devices/run_once.h"
 #include "core/run_file.h"
@@ -36,7 +38,7 @@ struct OptionSet {
     QCommandLineOption rate{QStringLiteral("rate-hz"), nb::TrCli::tr("sampling rate, 100..10000 (default 500)"), QStringLiteral("R"), QStringLiteral("500")};
     QCommandLineOption velocity{QStringLiteral("velocity-mm-s"), nb::TrCli::tr("insertion velocity (default 4, internal 2.5)"), QStringLiteral("V")};
     QCommandLineOption depth{QStringLiteral("depth-mm"), nb::TrCli::tr("insertion depth from the start position (default 40)"), QStringLiteral("D")};
-    QCommandLineOption amplitude{QStringLiteral("amplitude-mm"), nb::TrCli::tr("sine amplitude (default 10)"), QStringLiteral("A"), QStringLiteral("10")};
+    QCommandLineOption amplitude{QStringLiteral("amplitude-mm"), nb::TrCli::tr("sine amplitude, at most the stage's 10 mm travel (default 10)"), QStringLiteral("A"), QStringLiteral("10")};
     QCommandLineOption frequency{QStringLiteral("frequency-hz"), nb::TrCli::tr("sine frequency (default 0.5)"), QStringLiteral("F"), QStringLiteral("0.5")};
     QCommandLineOption cycles{QStringLiteral("cycles"), nb::TrCli::tr("sine cycles (default 7)"), QStringLiteral("N"), QStringLiteral("7")};
     QCommandLineOption thickness{QStringLiteral("thickness-mm"), nb::TrCli::tr("tissue slab thickness on the friction platform (default 30)"), QStringLiteral("T"), QStringLiteral("30")};
@@ -51,7 +53,7 @@ struct OptionSet {
     QCommandLineOption stickBand{QStringLiteral("stick-band-mm-s"), nb::TrCli::tr("friction platform: the tissue sticks while the relative velocity is within ±V (default 2.5)"), QStringLiteral("V"), QStringLiteral("2.5")};
     QCommandLineOption plateGap{QStringLiteral("plate-gap-mm"), nb::TrCli::tr("friction platform: free travel of the slab before it meets a plate (default 1.5)"), QStringLiteral("MM"), QStringLiteral("1.5")};
     QCommandLineOption forceNoise{QStringLiteral("force-noise-n"), nb::TrCli::tr("rms noise of the force sensor in newtons (default about 0.0012)"), QStringLiteral("N")};
-    QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), nb::TrCli::tr("the video starts this long before the recording (default 0)"), QStringLiteral("S"), QStringLiteral("0")};
+    QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), nb::TrCli::tr("the video starts this long before the recording; negative: after it began (-600 to 600, default 0)"), QStringLiteral("S"), QStringLiteral("0")};
     QCommandLineOption overwrite{QStringLiteral("overwrite"), nb::TrCli::tr("replace an existing run file")};
 
     void addTo(QCommandLineParser& p) const
@@ -108,8 +110,8 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
     {
         bool ok = false;
         s.videoOffset_s = p.value(o.videoOffset).toDouble(&ok);
-        if (!ok || s.videoOffset_s < 0 || s.videoOffset_s > 600)
-            return nb::TrCli::tr("--video-offset-s wants seconds between 0 and 600");
+        if (!ok || !(std::abs(s.videoOffset_s) <= 600))
+            return nb::TrCli::tr("--video-offset-s wants seconds between -600 and 600");
     }
 
     const bool internal = s.protocol == QLatin1String("internal");

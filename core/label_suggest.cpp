@@ -940,6 +940,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             const std::pair<double, double> aMid = aWindow ? std::make_pair(aWindow->first, *firstBehind) : std::make_pair(t0, t0);
             if (!videoTrusted) {
                 source = forceSource + QStringLiteral(" (the tissue's motion in %1 too unclear to judge)").arg(tissue->source);
+            } else if (tissue->time_s.empty() || t1 <= tissue->time_s.front() || t0 >= tissue->time_s.back()) {
+                // A video started after the recording (or ended before it) has no frame of it.
+                source = forceSource + QStringLiteral(" (%1 does not cover this stroke)").arg(tissue->source);
             } else if (!anyClear) {
                 // The picture moved less than a pixel or two a frame all through: what it
                 // measures reads short and cannot overrule the force.

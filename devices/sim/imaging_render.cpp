@@ -169,6 +169,15 @@ ImagingTruth renderImagingVideo(const Run& run, const QString& path, const Imagi
     truth.fps = options.fps;
     const double end = run.time_s.back() - run.time_s.front() + options.leadIn_s + options.tail_s;
     const int frames = int(std::ceil(end * options.fps));
+    // A video that starts after the recording began (a negative lead-in) has frames only while
+    // the run is still there to show.
+    if (frames <= 0) {
+        writer.release();
+        QFile::remove(path);
+        throw nb::video::VideoError(path, nb::TrDevices::tr("the video would start %1 s after the recording began, after its end (%2 s)")
+                                              .arg(-options.leadIn_s)
+                                              .arg(run.time_s.back() - run.time_s.front()));
+    }
     cv::Mat image;
     for (int k = 0; k < frames; ++k) {
         if (options.cancelled && options.cancelled()) {

@@ -19,7 +19,7 @@ namespace nb::devices::sim {
 
 struct ImagingOptions {
     double fps = 30000.0 / 1001.0;
-    double leadIn_s = 0.0;  // the video starts this long before the recording
+    double leadIn_s = 0.0;  // the video starts this long before the recording (negative: after it began)
     double tail_s = 0.5;    // and runs on this long after it
     int width = 720;
     int height = 480;

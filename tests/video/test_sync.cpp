@@ -526,6 +526,40 @@ private slots:
         QVERIFY(r["acceptable"].toBool());
     }
 
+    // A video started after the recording (the imaging console switched on late): the simulator
+    // renders it (--video-offset-s negative; it refused one), and sync finds the negative offset.
+    void aVideoStartedAfterTheRecording()
+    {
+        const QString run = dir_.filePath("after.csv"), video = dir_.filePath("after.avi"), truth = dir_.filePath("after.json");
+        int code = -1;
+        runJson({"simulate", "--protocol", "friction", "--tissue", "liver5", "--cycles", "3", "--seed", "31", "--out", run, "--truth", truth,
+                 "--video", video, "--video-offset-s", "-2.7"},
+                &code);
+        QCOMPARE(code, 0);
+        QFile tf(truth);
+        QVERIFY(tf.open(QIODevice::ReadOnly));
+        QCOMPARE(QJsonDocument::fromJson(tf.readAll()).object()["video_offset_s"].toDouble(), -2.7);
+        const QJsonObject r = runJson({"sync", run, video, "--json"}, &code);
+        QCOMPARE(code, 0);
+        QVERIFY2(std::abs(r["offset_s"].toDouble() + 2.7) < 1.0 / 29.97, qPrintable(QStringLiteral("found %1 s, truth -2.7 s").arg(r["offset_s"].toDouble())));
+        QVERIFY(r["acceptable"].toBool());
+        // Strokes before the video's first frame are said to be outside it, not "too little
+        // motion per frame" (a helper's probe, seed 507056 case 3).
+        runJson({"labels", "suggest", run, "--video", video, "--overwrite"}, &code);
+        QCOMPARE(code, 0);
+        const nb::Labels labels = nb::readLabelsFile(nb::labelsPathFor(run));
+        QVERIFY(!labels.empty());
+        QVERIFY2(labels.front().comment.contains(QStringLiteral("after.avi does not cover this stroke")), qPrintable(labels.front().comment));
+        QVERIFY(std::any_of(labels.begin(), labels.end(), [](const nb::Label& l) { return l.comment.contains(QStringLiteral("tissue's motion in after.avi")); }));
+        // One that would start after the run ended is refused, by name; the run file stays whole.
+        runJson({"simulate", "--protocol", "friction", "--cycles", "1", "--out", dir_.filePath("never.csv"), "--video", dir_.filePath("never.avi"),
+                 "--video-offset-s", "-100", "--overwrite"},
+                &code);
+        QCOMPARE(code, 1);
+        QVERIFY(!QFile::exists(dir_.filePath("never.avi")));
+        QVERIFY(nb::readRunFile(dir_.filePath("never.csv")).run.size() > 100);
+    }
+
     // The simulator's imaging view made faint and re-coded as H.264 at -crf 30 (26 KB for 318
     // frames): the coder holds the still parts of the picture from frame to frame, so along a line
     // beside the needle nothing but the tip's edge changed, its noise measured as nothing, and a
