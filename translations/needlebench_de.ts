@@ -40,18 +40,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+396"/>
+        <location line="+398"/>
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-395"/>
-        <location line="+396"/>
+        <location line="-397"/>
+        <location line="+398"/>
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-360"/>
+        <location line="-362"/>
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -98,7 +98,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Nach Faktor</translation>
     </message>
     <message numerus="yes">
-        <location line="+160"/>
+        <location line="+162"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n Lauf ausgewertet</numerusform>
@@ -1070,7 +1070,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>In den Ordner</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+65"/>
         <source>Choose a folder to export into.</source>
         <translation>Einen Zielordner für den Export wählen.</translation>
     </message>
@@ -1738,7 +1738,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation>Nichts bewegt sich oder zeichnet jetzt auf. Beenden?</translation>
     </message>
@@ -1806,12 +1806,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Nicht beenden</translation>
     </message>
     <message>
-        <location line="-821"/>
+        <location line="-822"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+647"/>
+        <location line="+648"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1833,7 +1833,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-591"/>
+        <location line="-592"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2352,12 +2352,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1011"/>
+        <location line="+1052"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1008"/>
+        <location line="-1049"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2383,12 +2383,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+539"/>
+        <location line="+580"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-539"/>
+        <location line="-580"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2512,12 +2512,22 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+802"/>
+        <location line="+843"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-624"/>
+        <location line="-647"/>
+        <source>the labels file could not be copied aside: the next label saved replaces it</source>
+        <translation>die Label-Datei konnte nicht beiseitegelegt werden: das nächste gespeicherte Label ersetzt sie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the labels file as it was is kept in %1</source>
+        <translation>die Label-Datei, wie sie war, ist in %1 aufbewahrt</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation>Markierungen aus %1 übernommen (noch nicht neben dem Lauf gespeichert)</translation>
     </message>
@@ -2532,7 +2542,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+286"/>
+        <location line="+287"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2592,7 +2602,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-917"/>
+        <location line="-958"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2602,7 +2612,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
     <message>
-        <location line="+182"/>
+        <location line="+223"/>
         <source>No run open: double-click one in the session list</source>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
@@ -2741,7 +2751,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-885"/>
+        <location line="-926"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2801,12 +2811,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+111"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -3108,7 +3118,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+47"/>
+        <location filename="../app/cmd_simulate.cpp" line="+49"/>
         <source>the run file to write</source>
         <translation>die zu schreibende Laufdatei</translation>
     </message>
@@ -3131,13 +3141,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+1"/>
         <source>sine amplitude (default 10)</source>
         <translation>Sinusamplitude (Standard 10)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+2"/>
         <source>sine frequency (default 0.5)</source>
         <translation>Sinusfrequenz (Standard 0,5)</translation>
     </message>
@@ -3222,9 +3231,9 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+86"/>
+        <location filename="../app/cmd_fit.cpp" line="+112"/>
         <location line="+49"/>
-        <location line="+133"/>
+        <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
         <location line="+290"/>
@@ -3267,7 +3276,8 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-231"/>
+        <location filename="../app/cmd_fit.cpp" line="-253"/>
+        <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+119"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
         <source>warning: %1
@@ -3625,7 +3635,21 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1 Läufe aus %2 als %3 exportiert: %4 Dateien</translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="+24"/>
+        <location filename="../app/cmd_fit.cpp" line="+2"/>
+        <source>warning: %1: %2
+</source>
+        <translation>Warnung: %1: %2
+</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>warning: %1: %2 not used by this fit (it reads %3)
+</source>
+        <translation>Warnung: %1: %2 wird von dieser Anpassung nicht verwendet (sie liest %3)
+</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>%1: the fit gave no finite result (forces or positions out of any measurable range?)</source>
         <translation>%1: die Anpassung ergab kein endliches Ergebnis (Kräfte oder Positionen außerhalb jedes messbaren Bereichs?)</translation>
     </message>
@@ -3678,7 +3702,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+55"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation>Steifigkeit f = a1*x + a2*x^2, x = Tiefe nach dem Kontakt [mm]
@@ -3778,7 +3802,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+12"/>
         <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
         <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
     </message>
@@ -4103,7 +4127,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Einstichgeschwindigkeit (Standard 4, intern 2,5)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source>sine amplitude, at most the stage&apos;s 10 mm travel (default 10)</source>
+        <translation>Sinus-Amplitude, höchstens der Verfahrweg der Achse von 10 mm (Standard 10)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>tissue slab thickness on the friction platform (default 30)</source>
         <translation>Dicke der Gewebescheibe auf der Reibungsplattform (Standard 30)</translation>
     </message>
@@ -4143,12 +4172,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Effektivwert des Rauschens des Kraftsensors in Newton (Standard etwa 0,0012)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>the video starts this long before the recording (default 0)</source>
-        <translation>das Video beginnt so lange vor der Aufzeichnung (Standard 0)</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation>--%1: &apos;%2&apos; ist keine Zahl</translation>
     </message>
@@ -4173,12 +4197,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--video nennt dieselbe Datei wie --out oder --truth: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>--video-offset-s wants seconds between 0 and 600</source>
-        <translation>--video-offset-s erwartet Sekunden zwischen 0 und 600</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+19"/>
         <location filename="../app/plan_runner.cpp" line="+109"/>
         <source>unknown tissue &apos;%1&apos; (%2)</source>
         <translation>unbekanntes Gewebe &apos;%1&apos; (%2)</translation>
@@ -4235,7 +4254,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--thickness-mm muss positiv sein</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-120"/>
+        <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
+        <translation>das Video beginnt so lange vor der Aufnahme; negativ: nach ihrem Beginn (-600 bis 600, Standard 0)</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>--video-offset-s wants seconds between -600 and 600</source>
+        <translation>--video-offset-s erwartet Sekunden zwischen -600 und 600</translation>
+    </message>
+    <message>
+        <location line="+64"/>
         <source>--max-force-n must be positive</source>
         <translation>--max-force-n muss positiv sein</translation>
     </message>
@@ -4569,8 +4598,16 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <source>--by FACTOR,... is required when the folder has no plan.json</source>
         <translation>--by FAKTOR,... ist erforderlich, wenn der Ordner keine plan.json enthält</translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+24"/>
+        <source>%n run(s) the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes them</source>
+        <translation>
+            <numerusform>%n Lauf, den der Plan nicht zählt (abgebrochen, fehlgeschlagen oder verworfen), ausgelassen: %1; --all-runs nimmt ihn auf</numerusform>
+            <numerusform>%n Läufe, die der Plan nicht zählt (abgebrochen, fehlgeschlagen oder verworfen), ausgelassen: %1; --all-runs nimmt sie auf</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>--by %1: no run in %2 records a level of it (factors recorded: %3)</source>
         <translation>--by %1: kein Lauf in %2 verzeichnet eine Stufe davon (verzeichnete Faktoren: %3)</translation>
     </message>
@@ -5217,7 +5254,22 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Messwertzähler des Sensors (eine Lücke ist ein verlorener Messwert)</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+18"/>
+        <source>friction phase recorded with the run (the simulated rig&apos;s own)</source>
+        <translation>mit dem Lauf aufgezeichnete Reibungsphase (die des simulierten Prüfstands)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>event recorded with the run at the sample</source>
+        <translation>mit dem Lauf beim Messpunkt aufgezeichnetes Ereignis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>text recorded with the run</source>
+        <translation>mit dem Lauf aufgezeichneter Text</translation>
+    </message>
+    <message>
+        <location line="+143"/>
         <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
         <translation>%1: Bilder nach der Bildrate der Messung nummeriert, das Video ließ sich nicht indizieren (%2)</translation>
     </message>
@@ -5227,7 +5279,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>keine Bilder</translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+28"/>
+        <location filename="../core/export/dataset_loader.cpp" line="+43"/>
+        <source>%1: label &apos;%2&apos; (%3 s to %4 s) reaches beyond the run (%5 s to %6 s); its part from %7 s to %8 s is used</source>
+        <translation>%1: Label &apos;%2&apos; (%3 s bis %4 s) reicht über den Lauf hinaus (%5 s bis %6 s); sein Teil von %7 s bis %8 s wird verwendet</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>not a folder</source>
         <translation>kein Ordner</translation>
     </message>
@@ -5252,12 +5309,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1: übersprungen, keine Laufdatei (%2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: labels ignored (%2)</source>
         <translation>%1: Labels ignoriert (%2)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-105"/>
         <source>%1: label &apos;%2&apos; (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored</source>
         <translation>%1: Label &apos;%2&apos; (%3 s bis %4 s) liegt außerhalb des Laufs (%5 s bis %6 s); ignoriert</translation>
     </message>
@@ -5273,11 +5330,11 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../core/export/session_hdf5.cpp" line="+303"/>
-        <location filename="../core/labels.cpp" line="+113"/>
+        <location filename="../core/export/session_hdf5.cpp" line="+306"/>
+        <location filename="../core/labels.cpp" line="+130"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+309"/>
+        <location filename="../core/run_file.cpp" line="+333"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5529,7 +5586,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>RMS-Fehler</translation>
     </message>
     <message>
-        <location filename="../core/export/session_hdf5.cpp" line="-250"/>
+        <location filename="../core/export/session_hdf5.cpp" line="-253"/>
         <source>HDF5 could not %1</source>
         <translation>HDF5 konnte nicht: %1</translation>
     </message>
@@ -5570,7 +5627,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Gruppe &apos;%1&apos; anlegen</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+47"/>
         <source>one row per label; frames from the sync offset and frame rate of the run</source>
         <translation>eine Zeile je Label; Bilder aus Sync-Versatz und Bildrate des Laufs</translation>
     </message>
@@ -5652,8 +5709,8 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../core/labels.cpp" line="-61"/>
-        <location filename="../core/run_file.cpp" line="-302"/>
+        <location filename="../core/labels.cpp" line="-78"/>
+        <location filename="../core/run_file.cpp" line="-325"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
@@ -5698,9 +5755,19 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>leeres Label</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>no header row (expected track,label,start_s,end_s,comment)</source>
         <translation>keine Kopfzeile (erwartet: track,label,start_s,end_s,comment)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: row skipped</source>
+        <translation>%1: Zeile übersprungen</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>labels &apos;%1&apos; (%2 s to %3 s) and &apos;%4&apos; (%5 s to %6 s) overlap on track &apos;%7&apos;; &apos;%1&apos; is taken where they do</source>
+        <translation>Labels &apos;%1&apos; (%2 s bis %3 s) und &apos;%4&apos; (%5 s bis %6 s) überlappen auf Spur &apos;%7&apos;; wo sie es tun, gilt &apos;%1&apos;</translation>
     </message>
     <message>
         <location filename="../core/run_file.cpp" line="+6"/>
@@ -5713,7 +5780,17 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Binärdaten, keine Text-Laufdatei</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+49"/>
+        <source>the columns are separated by &apos;%1&apos;, not by commas (a spreadsheet saving in a comma-decimal language?); save it as CSV with &apos;,&apos; between columns and &apos;.&apos; in numbers</source>
+        <translation>die Spalten sind durch &apos;%1&apos; getrennt, nicht durch Kommas (eine Tabellenkalkulation mit Dezimalkomma?); als CSV mit &apos;,&apos; zwischen den Spalten und &apos;.&apos; in Zahlen speichern</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tab</source>
+        <translation>Tabulator</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>header has no &apos;%1&apos; column (found: %2)</source>
         <translation>Kopfzeile hat keine Spalte &apos;%1&apos; (gefunden: %2)</translation>
     </message>
@@ -5769,8 +5846,16 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <source>no header row</source>
         <translation>keine Kopfzeile</translation>
     </message>
+    <message numerus="yes">
+        <location line="+17"/>
+        <source>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample(s))</source>
+        <translation>
+            <numerusform>%1: force_N von %2 N bei %3 s liegt jenseits dessen, was ein Nadel-Kraftsensor misst (10 kN): ein beschädigter Messpunkt? (%n solcher Messpunkt)</numerusform>
+            <numerusform>%1: force_N von %2 N bei %3 s liegt jenseits dessen, was ein Nadel-Kraftsensor misst (10 kN): ein beschädigter Messpunkt? (%n solche Messpunkte)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+93"/>
+        <location line="+90"/>
         <source>cannot write: no space left on the disk</source>
         <translation>kann nicht schreiben: kein Platz mehr auf dem Datenträger</translation>
     </message>
@@ -6658,7 +6743,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+1007"/>
+        <location filename="../core/label_suggest.cpp" line="+1072"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
@@ -7016,7 +7101,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>hier kann kein Video geschrieben werden (Ordner fehlt oder ist nicht beschreibbar, oder kein Encoder)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+12"/>
+        <source>the video would start %1 s after the recording began, after its end (%2 s)</source>
+        <translation>das Video begänne %1 s nach Beginn der Aufnahme, nach ihrem Ende (%2 s)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>the video could not be written</source>
         <translation>das Video konnte nicht geschrieben werden</translation>
     </message>
@@ -7634,8 +7724,8 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-611"/>
-        <location line="+397"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-613"/>
+        <location line="+399"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>
     </message>

@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+396"/>
+        <location line="+398"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-395"/>
-        <location line="+396"/>
+        <location line="-397"/>
+        <location line="+398"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-360"/>
+        <location line="-362"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -97,7 +97,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+160"/>
+        <location line="+162"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n run analysed</numerusform>
@@ -1069,7 +1069,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+65"/>
         <source>Choose a folder to export into.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1736,7 +1736,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>Nothing moves or records now. Quit?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1800,12 +1800,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-821"/>
+        <location line="-822"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+647"/>
+        <location line="+648"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1827,7 +1827,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-591"/>
+        <location line="-592"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2346,12 +2346,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1011"/>
+        <location line="+1052"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1008"/>
+        <location line="-1049"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2377,12 +2377,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+539"/>
+        <location line="+580"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-539"/>
+        <location line="-580"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2506,12 +2506,22 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+802"/>
+        <location line="+843"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-624"/>
+        <location line="-647"/>
+        <source>the labels file could not be copied aside: the next label saved replaces it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the labels file as it was is kept in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>labels taken from %1 (not yet saved beside the run)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2526,7 +2536,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+286"/>
+        <location line="+287"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2586,7 +2596,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-917"/>
+        <location line="-958"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2596,16 +2606,16 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+182"/>
+        <location line="+223"/>
         <source>No run open: double-click one in the session list</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
         <location line="+20"/>
         <source>labels: %n</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>labels: %n</numerusform>
+            <numerusform>labels: %n</numerusform>
         </translation>
     </message>
     <message>
@@ -2733,7 +2743,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-885"/>
+        <location line="-926"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2793,12 +2803,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+111"/>
         <source>%1: %2 samples, %3 labels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3100,7 +3110,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+47"/>
+        <location filename="../app/cmd_simulate.cpp" line="+49"/>
         <source>the run file to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3123,13 +3133,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+1"/>
         <source>sine amplitude (default 10)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+1"/>
+        <location filename="../app/cmd_simulate.cpp" line="+2"/>
         <source>sine frequency (default 0.5)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3214,9 +3223,9 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+40"/>
-        <location filename="../app/cmd_fit.cpp" line="+86"/>
+        <location filename="../app/cmd_fit.cpp" line="+112"/>
         <location line="+49"/>
-        <location line="+133"/>
+        <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+164"/>
         <location line="+290"/>
@@ -3257,7 +3266,8 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-231"/>
+        <location filename="../app/cmd_fit.cpp" line="-253"/>
+        <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+119"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
         <source>warning: %1
@@ -3611,7 +3621,19 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_fit.cpp" line="+24"/>
+        <location filename="../app/cmd_fit.cpp" line="+2"/>
+        <source>warning: %1: %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>warning: %1: %2 not used by this fit (it reads %3)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>%1: the fit gave no finite result (forces or positions out of any measurable range?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3660,7 +3682,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+55"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation type="unfinished"></translation>
@@ -3755,7 +3777,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+12"/>
         <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4053,7 +4075,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source>sine amplitude, at most the stage&apos;s 10 mm travel (default 10)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>tissue slab thickness on the friction platform (default 30)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4093,12 +4120,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>the video starts this long before the recording (default 0)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4123,12 +4145,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>--video-offset-s wants seconds between 0 and 600</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+19"/>
         <location filename="../app/plan_runner.cpp" line="+109"/>
         <source>unknown tissue &apos;%1&apos; (%2)</source>
         <translation type="unfinished"></translation>
@@ -4185,7 +4202,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-120"/>
+        <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>--video-offset-s wants seconds between -600 and 600</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+64"/>
         <source>--max-force-n must be positive</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4511,8 +4538,16 @@ Stop the stage now (emergency stop) and quit?</source>
         <source>--by FACTOR,... is required when the folder has no plan.json</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+24"/>
+        <source>%n run(s) the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes them</source>
+        <translation>
+            <numerusform>%n run the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes it</numerusform>
+            <numerusform>%n runs the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes them</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>--by %1: no run in %2 records a level of it (factors recorded: %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5111,7 +5146,22 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+18"/>
+        <source>friction phase recorded with the run (the simulated rig&apos;s own)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>event recorded with the run at the sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>text recorded with the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+143"/>
         <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5121,7 +5171,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/dataset_loader.cpp" line="+28"/>
+        <location filename="../core/export/dataset_loader.cpp" line="+43"/>
+        <source>%1: label &apos;%2&apos; (%3 s to %4 s) reaches beyond the run (%5 s to %6 s); its part from %7 s to %8 s is used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>not a folder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5146,12 +5201,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: labels ignored (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-105"/>
         <source>%1: label &apos;%2&apos; (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5167,11 +5222,11 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../core/export/session_hdf5.cpp" line="+303"/>
-        <location filename="../core/labels.cpp" line="+113"/>
+        <location filename="../core/export/session_hdf5.cpp" line="+306"/>
+        <location filename="../core/labels.cpp" line="+130"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+309"/>
+        <location filename="../core/run_file.cpp" line="+333"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5423,7 +5478,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_hdf5.cpp" line="-250"/>
+        <location filename="../core/export/session_hdf5.cpp" line="-253"/>
         <source>HDF5 could not %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5464,7 +5519,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+47"/>
         <source>one row per label; frames from the sync offset and frame rate of the run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5546,8 +5601,8 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../core/labels.cpp" line="-61"/>
-        <location filename="../core/run_file.cpp" line="-302"/>
+        <location filename="../core/labels.cpp" line="-78"/>
+        <location filename="../core/run_file.cpp" line="-325"/>
         <source>cannot open: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5592,8 +5647,18 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>no header row (expected track,label,start_s,end_s,comment)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: row skipped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>labels &apos;%1&apos; (%2 s to %3 s) and &apos;%4&apos; (%5 s to %6 s) overlap on track &apos;%7&apos;; &apos;%1&apos; is taken where they do</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -5607,7 +5672,17 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+49"/>
+        <source>the columns are separated by &apos;%1&apos;, not by commas (a spreadsheet saving in a comma-decimal language?); save it as CSV with &apos;,&apos; between columns and &apos;.&apos; in numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>tab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>header has no &apos;%1&apos; column (found: %2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5663,8 +5738,16 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+17"/>
+        <source>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample(s))</source>
+        <translation>
+            <numerusform>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample)</numerusform>
+            <numerusform>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such samples)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+93"/>
+        <location line="+90"/>
         <source>cannot write: no space left on the disk</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6167,9 +6250,9 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     <message numerus="yes">
         <location filename="../core/excerpt.cpp" line="+31"/>
         <source>… (%n more characters)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>… (%n more character)</numerusform>
+            <numerusform>… (%n more characters)</numerusform>
         </translation>
     </message>
     <message>
@@ -6552,7 +6635,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+1007"/>
+        <location filename="../core/label_suggest.cpp" line="+1072"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6910,7 +6993,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+12"/>
+        <source>the video would start %1 s after the recording began, after its end (%2 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>the video could not be written</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7528,8 +7616,8 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-611"/>
-        <location line="+397"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-613"/>
+        <location line="+399"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
     </message>
