@@ -489,7 +489,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
         for (double v : {p.Cp_N_per_m, p.bp_Ns_per_m2, p.Cn_N_per_m, p.bn_Ns_per_m2, p.Dp_N_per_m, p.Dn_N_per_m}) {
             const QString name = QString::fromLatin1(names[k++]);
             const bool bad = notPhysical.contains(name);
-            io.out << (!defined || !std::isfinite(v) ? QString() : bad ? nb::TrCli::tr("not phys.") : num(v, 5)).rightJustified(9) << ' ';
+            io.out << (!defined || !std::isfinite(v) ? QString() : bad ? nb::TrCli::tr("no result") : num(v, 5)).rightJustified(9) << ' ';
         }
         io.out << '\n';
     };
@@ -532,7 +532,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           .arg(name, stiffness(f.model.bp_Ns_per_m, f.springBackP_s), stiffness(f.model.bn_Ns_per_m, f.springBackN_s));
         }
         for (const QString& why : f.notPhysical)
-            io.out << nb::TrCli::tr("%1: NOT PHYSICAL: %2\n").arg(name, why);
+            io.out << nb::TrCli::tr("%1: NOT A RESULT (not physical, or not determined by this run): %2\n").arg(name, why);
         if (peakLine) {
             const LineDeparture d = departureFromLine(f, *peakLine);
             if (d.significant)
