@@ -289,6 +289,19 @@ private slots:
         simulate(QStringLiteral("liver3"), {"--tissue", "liver3", "--tip", "diamond", "--seed", "16734", "--rate-hz", "200", "--amplitude-mm", "9.82",
                                            "--frequency-hz", "0.774", "--cycles", "6", "--thickness-mm", "38.4", "--stick-band-mm-s", "1.5",
                                            "--plate-gap-mm", "2.59", "--force-noise-n", "0.00107"});
+        // A slow sine whose slab gives as the needle slows: its straight line puts Cp 14 % high
+        // even on the true phases, and letting the line bend moves it 21 %. Flagged, not printed.
+        simulate(QStringLiteral("slow"), {"--tissue", "liver3", "--tip", "diamond", "--seed", "77459", "--rate-hz", "1000", "--amplitude-mm", "4.6",
+                                         "--frequency-hz", "0.329", "--cycles", "9", "--thickness-mm", "24.4", "--stick-band-mm-s", "2.13",
+                                         "--plate-gap-mm", "2.64", "--force-noise-n", "0.00442"});
+        const auto slow = run({QStringLiteral("fit"), QStringLiteral("friction"), path("slow.csv"), QStringLiteral("--thickness-mm"), QStringLiteral("24.4"),
+                               QStringLiteral("--json")});
+        QCOMPARE(slow.code, 0);
+        const QJsonObject so = slow.json()[QStringLiteral("runs")].toArray()[0].toObject();
+        const double cp = so[QStringLiteral("per_length")].toObject()[QStringLiteral("Cp_N_per_m")].toDouble();
+        QVERIFY2(std::fabs(cp / truthOf(path("slow.json"), "Cp_N_per_m") - 1.0) < 0.05 || so[QStringLiteral("not_physical_values")].toArray().contains(QStringLiteral("Cp")),
+                 qPrintable(QJsonDocument(so).toJson()));
+
         nb::Run blind = nb::readRunFile(path("liver3.csv")).run;
         blind.text.clear();  // force and position only
         nb::writeRunFile(path("liver3_blind.csv"), blind);
