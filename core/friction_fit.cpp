@@ -554,6 +554,9 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // stays near the noise. So each direction is fitted again with a v² term: how far C moves
     // when the line may bend tells how much of C the run determines.
     bool bends[2] = {false, false};
+    // b's standard error from the noise alone decides whether the run determines b (below): the
+    // bent line's b, a slope beside a curvature, moves more than the straight one is in doubt.
+    const double noiseSeB[2] = {fit.seBp_Ns_per_m, fit.seBn_Ns_per_m};
     for (int d : {0, 1}) {
         const auto bent = solve(solved->springP >= 0, solved->springN >= 0, d);
         if (!bent)
@@ -565,6 +568,13 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         // line bends does not hold C to 5 % either (a helper's draw: C 14 % off, the bent fit
         // 21 % away but within twice its standard error, so unflagged).
         bends[d] = std::fabs(shift) > kBendShift;
+        // The noise's standard error says nothing of the line's shape, which moves C and b far
+        // more (a helper's draws: half of the C and b in error by over 3 standard errors, all of
+        // them within 5 and 15 %). The move the bend makes is counted in.
+        double& seC = d == 0 ? fit.seCp_N : fit.seCn_N;
+        double& seB = d == 0 ? fit.seBp_Ns_per_m : fit.seBn_Ns_per_m;
+        seC = std::hypot(seC, curved - straight);
+        seB = std::hypot(seB, bent->p(off + 2 * d + 1) - p(off + 2 * d + 1));
     }
     if (solved->springP >= 0)
         fit.springBackP_s = p(solved->springP);
@@ -684,8 +694,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         unexplained("Cn", "bn", fit.residualToNoiseN);
     else if (bends[1])
         bent("Cn", "bn", fit.bendShiftCn);
-    undetermined("Cp", "bp", fit.model.bp_Ns_per_m, fit.seBp_Ns_per_m, slowest[0], fastest[0]);
-    undetermined("Cn", "bn", fit.model.bn_Ns_per_m, fit.seBn_Ns_per_m, slowest[1], fastest[1]);
+    undetermined("Cp", "bp", fit.model.bp_Ns_per_m, noiseSeB[0], slowest[0], fastest[0]);
+    undetermined("Cn", "bn", fit.model.bn_Ns_per_m, noiseSeB[1], slowest[1], fastest[1]);
     if (fit.staticSource == QLatin1String("none")) {
         // No stretch at rest to read the static limits from: D = 0 was printed as a result.
         flag("Dp", nb::TrCore::tr("Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to "

@@ -53,7 +53,9 @@ struct FrictionFit {
     double band_m_s = 0.0;           // the band used (whole width), given or found
     bool bandEstimated = false;
     double bandSlowingDown_m_s = 0.0;  // found band before turning points (band_m_s: the wider)
-    // Standard errors (N, N·s/m), widened for the smoothing (neighbouring samples share noise).
+    // Standard errors (N, N·s/m): the noise's, widened for the smoothing (neighbouring samples share
+    // noise), and how far each moves when the sliding line may bend (its shape, which the noise
+    // does not show), in quadrature.
     double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;
     // Values that cannot be physical (b < 0, C < 0, |D| below C, D of the wrong sign) or that
     // the run does not determine (b's standard error above a quarter of it, and its C),
