@@ -3832,11 +3832,18 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+12"/>
-        <source>not phys.</source>
-        <translation>unphys.</translation>
+        <source>no result</source>
+        <translation>kein Erg.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+43"/>
+        <source>%1: NOT A RESULT (not physical, or not determined by this run): %2
+</source>
+        <translation>%1: KEIN ERGEBNIS (nicht physikalisch oder von diesem Lauf nicht bestimmt): %2
+</translation>
+    </message>
+    <message>
+        <location line="-38"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation>run</translation>
@@ -3920,14 +3927,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: NOT PHYSICAL: %2
-</source>
-        <translation>%1: NICHT PHYSIKALISCH: %2
-</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %): the tissue moves while the needle slows, so this run&apos;s sliding line is tilted; prefer the peak-speed line
 </source>
         <translation>%1: C weicht von der Geraden durch die Spitzengeschwindigkeiten ab (Cp %2 %, Cn %3 %): das Gewebe bewegt sich, während die Nadel abbremst, daher ist die Gleitgerade dieses Laufs gekippt; die Gerade durch die Spitzengeschwindigkeiten ist vorzuziehen
@@ -5993,7 +5993,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+349"/>
+        <location filename="../core/friction_fit.cpp" line="+361"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -6495,7 +6495,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+127"/>
+        <location line="+143"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>
@@ -6520,7 +6520,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 = %2 ± %3 N·s/m ist durch diesen Lauf nicht bestimmt: er gleitet über einen zu engen Geschwindigkeitsbereich</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="+49"/>
+        <source>%1 is not determined by the velocity band: in %2 of %3 stretches the force still rises where the band ends, the break-away not seen apart from the sliding (label phase a)</source>
+        <translation>%1 ist durch das Geschwindigkeitsband nicht bestimmt: in %2 von %3 Abschnitten steigt die Kraft am Ende des Bandes noch, das Losbrechen ist vom Gleiten nicht zu trennen (Phase a labeln)</translation>
+    </message>
+    <message>
+        <location line="-55"/>
         <source>%1 rests on an undetermined %2</source>
         <translation>%1 beruht auf einem unbestimmten %2</translation>
     </message>

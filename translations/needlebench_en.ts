@@ -3805,11 +3805,17 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+12"/>
-        <source>not phys.</source>
+        <source>no result</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+43"/>
+        <source>%1: NOT A RESULT (not physical, or not determined by this run): %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-38"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation type="unfinished"></translation>
@@ -3888,13 +3894,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: NOT PHYSICAL: %2
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %): the tissue moves while the needle slows, so this run&apos;s sliding line is tilted; prefer the peak-speed line
 </source>
         <translation type="unfinished"></translation>
@@ -5885,7 +5885,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+349"/>
+        <location filename="../core/friction_fit.cpp" line="+361"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6387,7 +6387,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+127"/>
+        <location line="+143"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6412,7 +6412,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="+49"/>
+        <source>%1 is not determined by the velocity band: in %2 of %3 stretches the force still rises where the band ends, the break-away not seen apart from the sliding (label phase a)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-55"/>
         <source>%1 rests on an undetermined %2</source>
         <translation type="unfinished"></translation>
     </message>
