@@ -431,11 +431,18 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         throw FitError(nb::TrCore::tr("no phase c in the phases: the tissue never rested while the needle slid through it "
                                       "(a stroke longer than the slab's free travel gives phase c), so C and b cannot be measured"));
     if (pos == 0 && neg == 0)
-        throw FitError(usePhases ? nb::TrCore::tr("none of the %1 phase-c samples moves faster than the zero-velocity band (%2 m/s)")
+        throw FitError(usePhases ? nb::TrCore::tr("none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)")
                                        .arg(labelledC)
-                                       .arg(options.band_m_s)
-                                 : nb::TrCore::tr("no motion: no sample moves faster than the zero-velocity band (%1 m/s)")
-                                       .arg(options.band_m_s));
+                                       .arg(500.0 * options.band_m_s, 0, 'g', 3)
+                                 : nb::TrCore::tr("no sample moves faster than the zero-velocity band (±%1 mm/s), the needle's top speed being "
+                                                  "%2 mm/s: give a narrower --band-m-s, or label phase c")
+                                       .arg(500.0 * options.band_m_s, 0, 'g', 3)
+                                       .arg(1000.0 * [&] {
+                                           double top = 0.0;
+                                           for (std::size_t i = trim; i + trim < n; ++i)
+                                               top = std::max(top, std::fabs(v[i]));
+                                           return top;
+                                       }(), 0, 'f', 2));
     if (pos < 3 || neg < 3)
         throw FitError(usePhases ? nb::TrCore::tr("phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 "
                                                   "phase-c samples): the tissue hardly rested in the other")

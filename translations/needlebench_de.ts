@@ -6470,17 +6470,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>keine Phase c in den Phasen: das Gewebe kam nie zur Ruhe, während die Nadel hindurchglitt (ein Hub länger als der freie Weg der Scheibe ergibt Phase c), daher lassen sich C und b nicht messen</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (%2 m/s)</source>
-        <translation>keiner der %1 Messwerte der Phase c ist schneller als das Nullgeschwindigkeitsband (%2 m/s)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
-        <translation>keine Bewegung: kein Messwert ist schneller als das Nullgeschwindigkeitsband (%1 m/s)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+16"/>
         <source>phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 phase-c samples): the tissue hardly rested in the other</source>
         <translation>Phase c nur in einer Richtung (%1 gleitende Messwerte einwärts, %2 auswärts, von %3 Messwerten der Phase c): in der anderen kam das Gewebe kaum zur Ruhe</translation>
     </message>
@@ -6545,7 +6535,17 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="-242"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
+        <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no sample moves faster than the zero-velocity band (±%1 mm/s), the needle&apos;s top speed being %2 mm/s: give a narrower --band-m-s, or label phase c</source>
+        <translation>kein Messpunkt bewegt sich schneller als das Nullgeschwindigkeitsband (±%1 mm/s), bei einer Höchstgeschwindigkeit der Nadel von %2 mm/s: ein schmaleres --band-m-s angeben oder Phase c labeln</translation>
+    </message>
+    <message>
+        <location line="+271"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation>Dp und Dn sind nicht bestimmt: Der Lauf hat nicht in beiden Richtungen eine Strecke in Ruhe (Phase a), aus der sich die Haftgrenzen lesen lassen</translation>
     </message>

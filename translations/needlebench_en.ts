@@ -6362,17 +6362,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (%2 m/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>no motion: no sample moves faster than the zero-velocity band (%1 m/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+16"/>
         <source>phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 phase-c samples): the tissue hardly rested in the other</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6437,7 +6427,17 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="-242"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no sample moves faster than the zero-velocity band (±%1 mm/s), the needle&apos;s top speed being %2 mm/s: give a narrower --band-m-s, or label phase c</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+271"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation type="unfinished"></translation>
     </message>

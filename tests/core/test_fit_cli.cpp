@@ -365,6 +365,11 @@ private slots:
             << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"), ft, QStringLiteral("20"),
                            QStringLiteral("--labels"), path("nolabels.csv")}
             << QStringLiteral("nolabels.csv");
+        // A band wider than the needle ever moves: said with both speeds ("no motion" before).
+        QTest::newRow("band wider than the motion")
+            << QStringList{QStringLiteral("fit"), QStringLiteral("friction"), path("fr_nophase.csv"), ft, QStringLiteral("20"), QStringLiteral("--band-m-s"),
+                           QStringLiteral("1")}
+            << QStringLiteral("(±500 mm/s), the needle's top speed being");
         QTest::newRow("corrupt calibration")
             << QStringList{QStringLiteral("fit"), QStringLiteral("calibration"), path("corrupt.csv")} << QStringLiteral("corrupt.csv");
         QTest::newRow("too few samples") << QStringList{QStringLiteral("fit"), QStringLiteral("stiffness"), path("corrupt.csv")}
