@@ -403,7 +403,9 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           {QStringLiteral("standard_errors"), QJsonObject{{QStringLiteral("Cp_N"), f.seCp_N},
                                                                           {QStringLiteral("Cn_N"), f.seCn_N},
                                                                           {QStringLiteral("bp_Ns_per_m"), f.seBp_Ns_per_m},
-                                                                          {QStringLiteral("bn_Ns_per_m"), f.seBn_Ns_per_m}}},
+                                                                          {QStringLiteral("bn_Ns_per_m"), f.seBn_Ns_per_m},
+                                                                          {QStringLiteral("Dp_N"), std::isfinite(f.seDp_N) ? QJsonValue(f.seDp_N) : QJsonValue()},
+                                                                          {QStringLiteral("Dn_N"), std::isfinite(f.seDn_N) ? QJsonValue(f.seDn_N) : QJsonValue()}}},
                           {QStringLiteral("physical"), f.notPhysical.isEmpty()},
                           {QStringLiteral("not_physical"), QJsonArray::fromStringList(f.notPhysical)},
                           {QStringLiteral("not_physical_values"), QJsonArray::fromStringList(f.notPhysicalValues)}};
@@ -523,6 +525,11 @@ int fitFrictionCommand(const QStringList& args, Io io)
             io.out << nb::TrCli::tr("%1: zero-velocity band ±%2 mm/s (given)\n").arg(name, num(f.band_m_s * 500.0, 3));
         io.out << nb::TrCli::tr("%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5\n")
                       .arg(name, num(f.seCp_N / L, 3), num(f.seBp_Ns_per_m / L, 3), num(f.seCn_N / L, 3), num(f.seBn_Ns_per_m / L, 3));
+        if (std::isfinite(f.seDp_N) && std::isfinite(f.seDn_N))
+            io.out << nb::TrCli::tr("%1: standard errors of D per length: Dp ±%2, Dn ±%3 (the spread of %4 and %5 break-aways)\n")
+                          .arg(name, num(f.seDp_N / L, 3), num(f.seDn_N / L, 3))
+                          .arg(f.breakawaysP)
+                          .arg(f.breakawaysN);
         if (f.springBackP_s > 0.0 || f.springBackN_s > 0.0) {
             auto stiffness = [&](double b, double lag) {
                 return lag > 0.0 ? nb::TrCli::tr("%1 N/m").arg(num(b / lag, 3)) : nb::TrCli::tr("no give seen");

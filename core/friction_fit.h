@@ -9,6 +9,7 @@
 #include <QString>
 #include <QStringList>
 #include <optional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -57,6 +58,10 @@ struct FrictionFit {
     // noise), and how far each moves when the sliding line may bend (its shape, which the noise
     // does not show), in quadrature.
     double seCp_N = 0.0, seCn_N = 0.0, seBp_Ns_per_m = 0.0, seBn_Ns_per_m = 0.0;
+    // D's (N): the spread of the break-aways it averages over the root of their number; NaN
+    // with fewer than two. breakawaysP/N: how many.
+    double seDp_N = std::numeric_limits<double>::quiet_NaN(), seDn_N = std::numeric_limits<double>::quiet_NaN();
+    std::size_t breakawaysP = 0, breakawaysN = 0;
     // Values that cannot be physical (b < 0, C < 0, |D| below C, D of the wrong sign) or that
     // the run does not determine (b's standard error above a quarter of it, and its C),
     // one sentence each; empty when all are plausible. Such values are not results.

@@ -3807,7 +3807,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+125"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -3836,14 +3836,21 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>kein Erg.</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+35"/>
+        <source>%1: standard errors of D per length: Dp ±%2, Dn ±%3 (the spread of %4 and %5 break-aways)
+</source>
+        <translation>%1: Standardfehler von D pro Länge: Dp ±%2, Dn ±%3 (die Streuung von %4 und %5 Losbrech-Kräften)
+</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>%1: NOT A RESULT (not physical, or not determined by this run): %2
 </source>
         <translation>%1: KEIN ERGEBNIS (nicht physikalisch oder von diesem Lauf nicht bestimmt): %2
 </translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-43"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation>run</translation>
@@ -3910,7 +3917,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>%1 N/m</source>
         <translation>%1 N/m</translation>
     </message>
@@ -6485,7 +6492,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+155"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>
@@ -6535,7 +6542,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="-242"/>
+        <location line="-254"/>
         <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
         <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s)</translation>
     </message>
@@ -6545,7 +6552,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kein Messpunkt bewegt sich schneller als das Nullgeschwindigkeitsband (±%1 mm/s), bei einer Höchstgeschwindigkeit der Nadel von %2 mm/s: ein schmaleres --band-m-s angeben oder Phase c labeln</translation>
     </message>
     <message>
-        <location line="+271"/>
+        <location line="+283"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation>Dp und Dn sind nicht bestimmt: Der Lauf hat nicht in beiden Richtungen eine Strecke in Ruhe (Phase a), aus der sich die Haftgrenzen lesen lassen</translation>
     </message>

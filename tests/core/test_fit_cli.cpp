@@ -281,6 +281,10 @@ private slots:
                                      QStringLiteral("--json")});
         QCOMPARE(withPhases.code, 0);
         const QJsonObject pl = withPhases.json()[QStringLiteral("runs")].toArray()[0].toObject()[QStringLiteral("per_length")].toObject();
+        // Every coefficient has its standard error, D's from the spread of its break-aways.
+        const QJsonObject ses = withPhases.json()[QStringLiteral("runs")].toArray()[0].toObject()[QStringLiteral("standard_errors")].toObject();
+        for (const char* key : {"Dp_N", "Dn_N"})
+            QVERIFY2(ses[QLatin1String(key)].toDouble() > 0.0, qPrintable(QJsonDocument(ses).toJson()));
         for (const char* key : {"Dp_N_per_m", "Dn_N_per_m", "Cp_N_per_m", "Cn_N_per_m"}) {
             const double got = pl[QLatin1String(key)].toDouble(), truth = truthOf(path("liver7.json"), key);
             QVERIFY2(std::fabs(got / truth - 1.0) < 0.05, qPrintable(QStringLiteral("%1 %2, true %3").arg(QLatin1String(key)).arg(got).arg(truth)));
