@@ -78,14 +78,17 @@ QStringList labelsPerSample(const Labels& labels, const std::vector<double>& tim
             continue;
         // Samples are in time order: find the covered range by bisection, not a scan.
         const auto first = std::lower_bound(time_s.begin(), time_s.end(), l.start_s);
+        // Where labels overlap the one earlier in the list stands, as in phasePerSample (and as
+        // the loader's warning says): the fit and the exported column read the same phase.
         if (l.isPoint()) {
-            if (first != time_s.end())
+            if (first != time_s.end() && out[first - time_s.begin()].isEmpty())
                 out[first - time_s.begin()] = l.label;
             continue;
         }
         const auto last = std::lower_bound(first, time_s.end(), l.end_s);
         for (auto it = first; it != last; ++it)
-            out[it - time_s.begin()] = l.label;
+            if (out[it - time_s.begin()].isEmpty())
+                out[it - time_s.begin()] = l.label;
     }
     return out;
 }

@@ -437,8 +437,12 @@ private slots:
         QVERIFY2(warnings.contains(QStringLiteral("run.labels.csv:3")) && warnings.contains(QStringLiteral("end_s 2 is before start_s 3")),
                  qPrintable(warnings));
         QVERIFY2(warnings.contains(QStringLiteral("its part from 0.000 s to 1.500 s is used")), qPrintable(warnings));
-        QVERIFY2(warnings.contains(QStringLiteral("'b2' (4.000 s to 6.000 s) and 'c' (5.500 s to 7.000 s) overlap on track 'insertion'")),
+        QVERIFY2(warnings.contains(QStringLiteral("'b2' (4.000 s to 6.000 s) and 'c' (5.500 s to 7.000 s) overlap on track 'insertion'; 'b2' is taken")),
                  qPrintable(warnings));
+        // Where they overlap the exported column says what the fit reads: the earlier label.
+        const std::vector<double> t{5.75, 6.5};
+        QCOMPARE(labelsPerSample(got, t, QStringLiteral("insertion")), (QStringList{"b2", "c"}));
+        QCOMPARE(phasePerSample(got, t), (QStringList{"b2", "c"}));
     }
 
     void sessionHdf5RoundTrip()
