@@ -236,9 +236,10 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
             f.duplicate = samePicture(previous, current);
             std::swap(previous, current);
         }
-        if (!index.frames.empty() && f.time_s == 0.0 && index.frames.back().time_s > 0.0) {
+        if (!index.frames.empty() && f.time_s == 0.0 && index.frames.back().time_s >= 0.0) {
             // OpenCV reports 0 for the frames drained from a B-frame decoder at the end of
-            // the file; they follow the previous frame at the usual interval.
+            // the file; they follow the previous frame at the usual interval. In a clip of two or
+            // three frames every frame is drained so, the first at 0 too.
             const std::size_t k = index.frames.size();
             const double step = k >= 2 ? index.frames[k - 1].time_s - index.frames[k - 2].time_s
                                        : 1.0 / std::max(1.0, index.fpsNominal);

@@ -17,8 +17,9 @@ constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
 // Bump whenever buildFrameIndex() would index a file differently.
 // 2: width and height as shown, turned by the rotation tag; 3: the facts behind the warnings, not
 // their text (a stored index spoke the language of the program that made it); 4: the count of
-// video streams; 5: an MPEG-TS file's stream counted once (4 counted it in its program too)
-constexpr quint32 kVersion = 5;
+// video streams; 5: an MPEG-TS file's stream counted once (4 counted it in its program too); 6: the
+// frames of a two- or three-frame B-frame clip timed (5 kept them all at 0)
+constexpr quint32 kVersion = 6;
 // Indexes kept at most; the least recently stored go first.
 constexpr int kMaxStored = 300;
 

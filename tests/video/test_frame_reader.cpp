@@ -131,6 +131,27 @@ private slots:
             QCOMPARE(readCode(reader.read(n).image), spec.codes[std::size_t(n)]);
     }
 
+    // Clips of two and three frames of H.264 with B-frames: the decoder gives every frame
+    // only when drained at the end, where OpenCV reports each at 0 s. Every frame time was 0
+    // (the duration 0, "timestamps not increasing"); they follow at the usual interval.
+    void aClipOfTwoOrThreeFrames()
+    {
+        for (int n : {2, 3}) {
+            VideoSpec spec;
+            spec.codes = sequence(n);
+            spec.encodeArgs = QStringList{"-c:v", "libx264", "-bf", "2", "-pix_fmt", "yuv420p"};
+            const QString file = path(QStringLiteral("clip%1.mp4").arg(n));
+            const QString err = writeVideo(file, spec);
+            QVERIFY2(err.isEmpty(), qPrintable(err));
+            checkAllFrames(file, spec.codes, cfrTimes(n, 30.0));
+            if (QTest::currentTestFailed())
+                return;
+            const FrameIndex index = buildFrameIndex(file);
+            QVERIFY(index.timestampsMonotonic);
+            QVERIFY2(std::abs(index.duration_s() - n / 30.0) < 0.002, qPrintable(QString::number(index.duration_s())));
+        }
+    }
+
     void keyframesFromProbe()
     {
         const VideoSpec spec = keyframedH264();
