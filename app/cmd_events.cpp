@@ -11,6 +11,7 @@
 
 #include <QCoreApplication>
 #include <QJsonArray>
+#include <cmath>
 
 namespace nb::cli {
 
@@ -23,13 +24,17 @@ QJsonObject eventJson(const RunEvent& e)
             {QStringLiteral("force_N"), e.force_N}};
 }
 
+// Fixed decimals in the columns; a value no rig gives (a corrupt sample, said when the file was
+// read) in exponent form, not as three hundred digits.
+QString column(double v, int width, int decimals)
+{
+    return std::abs(v) < 1e6 ? QStringLiteral("%1").arg(v, width, 'f', decimals) : QStringLiteral("%1").arg(v, width, 'g', 4);
+}
+
 QString eventLine(const QString& name, const RunEvent& e)
 {
     return QStringLiteral("%1 %2 %3 %4\n")
-        .arg(name.leftJustified(18))
-        .arg(e.time_s, 9, 'f', 3)
-        .arg(e.position_mm, 11, 'f', 3)
-        .arg(e.force_N, 9, 'f', 4);
+        .arg(name.leftJustified(18), column(e.time_s, 9, 3), column(e.position_mm, 11, 3), column(e.force_N, 9, 4));
 }
 
 }  // namespace

@@ -347,6 +347,17 @@ private slots:
         const auto table = run({QStringLiteral("events"), path("ins1.csv")});
         QCOMPARE(table.code, 0);
         QVERIFY(table.out.contains(QStringLiteral("puncture")));
+
+        // A corrupt sample of 1e308 N: said when read, and the table keeps its columns (the
+        // force was printed as 309 digits).
+        nb::Run corrupt = nb::readRunFile(path("ins1.csv")).run;
+        corrupt.force_N[corrupt.size() / 2] = 1e308;
+        nb::writeRunFile(path("corrupt_sample.csv"), corrupt);
+        const auto huge = run({QStringLiteral("events"), path("corrupt_sample.csv")});
+        QCOMPARE(huge.code, 0);
+        QVERIFY2(huge.err.contains(QStringLiteral("beyond what any needle load cell reads")), qPrintable(huge.err));
+        for (const QString& line : huge.out.split(QLatin1Char('\n')))
+            QVERIFY2(line.size() < 100, qPrintable(line.left(120)));
     }
     void badInputFailsNamingTheFile_data()
     {
