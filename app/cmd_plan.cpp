@@ -576,13 +576,12 @@ int cmdReport(const QStringList& args, Io io)
             if (const PlanAttempt* a = r.currentAttempt())
                 counted << QFileInfo(a->runFile).completeBaseName();
         auto& runs = loaded.dataset.runs;
+        const auto notCounted = std::stable_partition(runs.begin(), runs.end(),
+                                                      [&](const DatasetRun& r) { return counted.contains(QFileInfo(r.sourcePath).completeBaseName()); });
         QStringList leftOut;
-        for (const DatasetRun& r : runs)
-            if (!counted.contains(QFileInfo(r.sourcePath).completeBaseName()))
-                leftOut << QFileInfo(r.sourcePath).fileName();
-        runs.erase(std::remove_if(runs.begin(), runs.end(),
-                                  [&](const DatasetRun& r) { return !counted.contains(QFileInfo(r.sourcePath).completeBaseName()); }),
-                   runs.end());
+        for (auto r = notCounted; r != runs.end(); ++r)
+            leftOut << QFileInfo(r->sourcePath).fileName();
+        runs.erase(notCounted, runs.end());
         // Said, so that a table with fewer runs than the folder holds is not taken for all of them.
         if (!leftOut.isEmpty())
             loaded.warnings << nb::TrCli::tr("%n run(s) the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes them",

@@ -641,16 +641,11 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     if (!breakawayP.empty() && !breakawayN.empty()) {
         fit.model.Dp_N = mean(breakawayP);
         fit.model.Dn_N = mean(breakawayN);
-        const auto standardError = [](const std::vector<double>& x, double m) {
-            if (x.size() < 2)
-                return std::numeric_limits<double>::quiet_NaN();
-            double ss = 0.0;
-            for (double e : x)
-                ss += (e - m) * (e - m);
-            return std::sqrt(ss / double(x.size() - 1) / double(x.size()));
+        const auto standardError = [](const std::vector<double>& x) {
+            return x.size() < 2 ? std::numeric_limits<double>::quiet_NaN() : sampleStdDev(x) / std::sqrt(double(x.size()));
         };
-        fit.seDp_N = standardError(breakawayP, fit.model.Dp_N);
-        fit.seDn_N = standardError(breakawayN, fit.model.Dn_N);
+        fit.seDp_N = standardError(breakawayP);
+        fit.seDn_N = standardError(breakawayN);
         fit.breakawaysP = breakawayP.size();
         fit.breakawaysN = breakawayN.size();
         fit.staticSource = usePhases ? QStringLiteral("phase a") : QStringLiteral("velocity band");

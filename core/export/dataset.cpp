@@ -44,9 +44,12 @@ std::vector<SignalColumn> exportSignals(const Run& run)
 
 std::vector<TextColumn> exportTextColumns(const Run& run, const Labels& labels)
 {
-    QStringList taken{QStringLiteral("labels")};
-    for (const SignalColumn& c : exportSignals(run))
-        taken << c.name;
+    // The signals' names without computing them (exportSignals differentiates the whole run):
+    // its own five, and the run's numeric columns.
+    QStringList taken{QStringLiteral("labels"), QStringLiteral("time_s"), QStringLiteral("position_mm"), QStringLiteral("velocity_mm_s"),
+                      QStringLiteral("acceleration_mm_s2"), QStringLiteral("force_N")};
+    for (const auto& [name, values] : run.numeric)
+        taken << name;
     for (const QString& t : labelTracks(labels))
         taken << QStringLiteral("label_") + t;
     std::vector<TextColumn> out;
