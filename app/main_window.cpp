@@ -188,8 +188,15 @@ MainWindow::MainWindow(const WorkbenchOptions& options, QWidget* parent) : QMain
     plots_->setForceLimit(panel_->forceLimit());
 
     openStartupSession();
-    if (options_.persistSettings)
+    if (options_.persistSettings) {
         restoreWorkspace();
+        // Kept as they change, as the panel's fields are: a crash loses none of them. Connected
+        // after the restore, which the opening session's defaults would otherwise overwrite.
+        connect(analysis_, &AnalysisWorkspace::choicesChanged, this, [this] {
+            QSettings settings;
+            analysis_->saveChoices(settings);
+        });
+    }
 
     drainTimer_ = new QTimer(this);
     drainTimer_->setInterval(25);  // 40 frames/s at most
@@ -479,11 +486,14 @@ void MainWindow::saveWorkspace(QSettings& settings) const
     settings.setValue(QStringLiteral("workspace/tab"), tabs_->currentIndex());
     settings.setValue(QStringLiteral("review/run"), review_->runPath());
     settings.setValue(QStringLiteral("review/cursor_s"), review_->cursorTime());
+    analysis_->saveChoices(settings);
 }
 
 void MainWindow::restoreWorkspace()
 {
     const QSettings settings;
+    if (session_)
+        analysis_->restoreChoices(settings);
     const QString run = settings.value(QStringLiteral("review/run")).toString();
     // A run of another session is not this one's to show (reviewBelongsToTheOpenSession).
     const bool ours = session_ && !run.isEmpty() && QFileInfo(run).absoluteDir() == QDir(session_->dir());

@@ -19,6 +19,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QScrollArea>
+#include <QSettings>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileDialog>
@@ -237,9 +238,15 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     connect(factorChoice_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showByFactor);
     connect(quantityChoice_, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::showByFactor);
     connect(runList_, &QListWidget::itemChanged, this, [this] {
-        if (!updatingList_)
-            recompute();
+        if (updatingList_)
+            return;
+        recompute();
+        emit choicesChanged();
     });
+    for (QComboBox* box : {factorChoice_, quantityChoice_})
+        connect(box, &QComboBox::currentIndexChanged, this, &AnalysisWorkspace::choicesChanged);
+    connect(tabs_, &QTabWidget::currentChanged, this, &AnalysisWorkspace::choicesChanged);
+    connect(includeJudgedOut_, &QCheckBox::toggled, this, &AnalysisWorkspace::choicesChanged);
     connect(reload, &QPushButton::clicked, this, &AnalysisWorkspace::reloadLabels);
     connect(includeJudgedOut_, &QCheckBox::toggled, this, &AnalysisWorkspace::recompute);
     // Editors save labels in bursts (temporary + rename): settle before re-reading.
@@ -254,9 +261,13 @@ bool AnalysisWorkspace::openSession(const QString& dir)
 {
     try {
         LoadedDataset loaded = loadDataset(dir);
+        // Recording a run reopens the session: a run the operator took out of the fits stayed
+        // out only until then.
+        const QStringList unticked = dir == dir_ ? untickedRuns() : QStringList();
         dir_ = dir;
         setDataset(std::move(loaded.dataset));
         leaveOutDiscardedRuns(dir);
+        untick(unticked);
         if (!loaded.warnings.isEmpty())
             status_->setText(status_->text() + QLatin1Char('\n') + loaded.warnings.join(QLatin1Char('\n')));
         watchLabels();
@@ -320,6 +331,59 @@ void AnalysisWorkspace::setRuns(const QStringList& names)
     }
     updatingList_ = false;
     recompute();
+}
+
+QStringList AnalysisWorkspace::untickedRuns() const
+{
+    QStringList out;
+    for (int i = 0; i < runList_->count(); ++i)
+        if (runList_->item(i)->checkState() != Qt::Checked)
+            out << runList_->item(i)->text();
+    return out;
+}
+
+void AnalysisWorkspace::untick(const QStringList& names)
+{
+    bool changed = false;
+    updatingList_ = true;
+    for (int i = 0; i < runList_->count(); ++i) {
+        QListWidgetItem* item = runList_->item(i);
+        if (names.contains(item->text()) && item->checkState() == Qt::Checked) {
+            item->setCheckState(Qt::Unchecked);
+            changed = true;
+        }
+    }
+    updatingList_ = false;
+    if (changed)
+        recompute();
+}
+
+void AnalysisWorkspace::saveChoices(QSettings& settings) const
+{
+    settings.setValue(QStringLiteral("analysis/page"), tabs_->currentIndex());
+    settings.setValue(QStringLiteral("analysis/include_judged_out"), includeJudgedOut_->isChecked());
+    settings.setValue(QStringLiteral("analysis/factor"), factorChoice_->currentData().toString());
+    settings.setValue(QStringLiteral("analysis/quantity"), quantityChoice_->currentData().toString());
+    settings.setValue(QStringLiteral("analysis/session"), dir_);
+    settings.setValue(QStringLiteral("analysis/unticked"), untickedRuns());
+}
+
+void AnalysisWorkspace::restoreChoices(const QSettings& settings)
+{
+    // Each restored in turn recomputes at most once; the switch first, so that the factors and
+    // quantities offered are those of the runs it lets in.
+    includeJudgedOut_->setChecked(settings.value(QStringLiteral("analysis/include_judged_out"), false).toBool());
+    if (!dir_.isEmpty() && settings.value(QStringLiteral("analysis/session")).toString() == dir_)
+        untick(settings.value(QStringLiteral("analysis/unticked")).toStringList());
+    auto choose = [](QComboBox* box, const QString& key) {
+        if (const int i = box->findData(key); i >= 0)
+            box->setCurrentIndex(i);
+    };
+    choose(factorChoice_, settings.value(QStringLiteral("analysis/factor")).toString());
+    choose(quantityChoice_, settings.value(QStringLiteral("analysis/quantity")).toString());
+    const int page = settings.value(QStringLiteral("analysis/page"), -1).toInt();
+    if (page >= 0 && page < tabs_->count())
+        tabs_->setCurrentIndex(page);
 }
 
 QStringList AnalysisWorkspace::selectedRuns() const

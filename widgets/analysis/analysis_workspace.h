@@ -20,6 +20,7 @@ class QComboBox;
 class QCustomPlot;
 class QLabel;
 class QListWidget;
+class QSettings;
 class QStandardItemModel;
 class QTabWidget;
 class QTableView;
@@ -32,7 +33,8 @@ public:
     explicit AnalysisWorkspace(QWidget* parent = nullptr);
 
     // Loads the session folder and analyses every run. On failure shows the reason and
-    // returns false (the previous session stays).
+    // returns false (the previous session stays). The same session opened again (a run
+    // recorded, a plan run made again) keeps the runs the operator unticked.
     bool openSession(const QString& dir);
     // An in-memory session (runs not from files: nothing to watch).
     void setDataset(Dataset dataset);
@@ -45,6 +47,11 @@ public:
     void setIncludeJudgedOut(bool on);
     bool includeJudgedOut() const;
     QString statusText() const;
+    // The operator's choices, kept across restarts: the page, the judged-out switch, By
+    // factor's factor and quantity, and the runs unticked in the session they were made in.
+    // Restore after openSession.
+    void saveChoices(QSettings& settings) const;
+    void restoreChoices(const QSettings& settings);
     // Every table (CSV and LaTeX) / figure (PNG and PDF) of the analysis into `dir`; returns
     // the files written. Throws ExportError.
     QStringList saveAllTables(const QString& dir);
@@ -77,10 +84,15 @@ public slots:
 
 signals:
     void analysisUpdated();
+    // The operator changed a choice saveChoices keeps.
+    void choicesChanged();
 
 private:
     // Unticks the runs the session's plan made again (their reason in the tooltip).
     void leaveOutDiscardedRuns(const QString& dir);
+    QStringList untickedRuns() const;
+    // Unticks those of `names` the list holds, and recomputes when any changed.
+    void untick(const QStringList& names);
     void recompute();
     void refreshViews();
     void showStiffness();
