@@ -486,6 +486,7 @@ void MainWindow::saveWorkspace(QSettings& settings) const
     settings.setValue(QStringLiteral("workspace/tab"), tabs_->currentIndex());
     settings.setValue(QStringLiteral("review/run"), review_->runPath());
     settings.setValue(QStringLiteral("review/cursor_s"), review_->cursorTime());
+    settings.setValue(QStringLiteral("review/speed"), review_->speed());
     analysis_->saveChoices(settings);
 }
 
@@ -494,6 +495,8 @@ void MainWindow::restoreWorkspace()
     const QSettings settings;
     if (session_)
         analysis_->restoreChoices(settings);
+    // The playback speed the operator labels at (a slow 0.25× for the phases' edges).
+    review_->setSpeed(settings.value(QStringLiteral("review/speed"), 1.0).toDouble());
     const QString run = settings.value(QStringLiteral("review/run")).toString();
     // A run of another session is not this one's to show (reviewBelongsToTheOpenSession).
     const bool ours = session_ && !run.isEmpty() && QFileInfo(run).absoluteDir() == QDir(session_->dir());

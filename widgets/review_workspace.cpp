@@ -284,6 +284,7 @@ void ReviewWorkspace::buildUi()
     button(tr("+1"), tr("one frame forward (Right)"), [this] { stepFrames(1); });
     button(tr("+10"), tr("ten frames forward (Shift+Right)"), [this] { stepFrames(10); });
     speedBox_ = new QComboBox(this);
+    speedBox_->setObjectName(QStringLiteral("reviewSpeed"));
     speedBox_->setFocusPolicy(Qt::NoFocus);
     for (double s : {0.1, 0.25, 0.5, 1.0, 1.5, 2.0})
         speedBox_->addItem(tr("%1×").arg(s), s);
@@ -868,6 +869,14 @@ bool ReviewWorkspace::isPlaying() const { return playTimer_->isActive(); }
 void ReviewWorkspace::setSpeed(double factor)
 {
     speed_ = std::clamp(factor, 0.1, 2.0);
+    if (speedBox_) {
+        int nearest = 0;
+        for (int i = 1; i < speedBox_->count(); ++i)
+            if (std::abs(speedBox_->itemData(i).toDouble() - speed_) < std::abs(speedBox_->itemData(nearest).toDouble() - speed_))
+                nearest = i;
+        const QSignalBlocker block(speedBox_);
+        speedBox_->setCurrentIndex(nearest);
+    }
     playStartCursor_ = cursor_;
     playClock_.restart();
 }

@@ -71,7 +71,8 @@ public:
     void stepFrames(int n);
     void setPlaying(bool on);
     bool isPlaying() const;
-    void setSpeed(double factor);  // 0.1 .. 2
+    void setSpeed(double factor);  // 0.1 .. 2; the speed box shows the nearest it offers
+    double speed() const { return speed_; }
     TimelineMapping mapping() const { return mapping_; }
     // `method` and `confidence` say how it was found; stored with the run when one is open.
     void setMapping(const TimelineMapping& m, SyncMethod method = SyncMethod::Manual, std::optional<double> confidence = std::nullopt);

@@ -675,6 +675,11 @@ private slots:
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             w.reviewRun(run);
             w.reviewWorkspace()->setCursorTime(0.5);
+            // The operator slows playback down, in the box beside Play.
+            auto* speed = w.reviewWorkspace()->findChild<QComboBox*>(QStringLiteral("reviewSpeed"));
+            QVERIFY(speed);
+            speed->setCurrentIndex(speed->findData(0.25));
+            QCOMPARE(w.reviewWorkspace()->speed(), 0.25);
             QVERIFY(w.close());
         }
         {
@@ -686,6 +691,8 @@ private slots:
             QCOMPARE(w.workspaces()->currentWidget(), static_cast<QWidget*>(w.reviewWorkspace()));
             QCOMPARE(w.reviewWorkspace()->runPath(), run);
             QCOMPARE(w.reviewWorkspace()->cursorTime(), 0.5);
+            QCOMPARE(w.reviewWorkspace()->speed(), 0.25);
+            QCOMPARE(w.reviewWorkspace()->findChild<QComboBox*>(QStringLiteral("reviewSpeed"))->currentData().toDouble(), 0.25);
             // and it is the run selected in the session's list
             const QModelIndexList selected = w.sessionView()->view()->selectionModel()->selectedRows();
             QCOMPARE(selected.size(), 1);
@@ -729,6 +736,7 @@ private slots:
         }
         QSettings().remove(QStringLiteral("session/last"));
         QSettings().remove(QStringLiteral("review/run"));
+        QSettings().remove(QStringLiteral("review/speed"));
     }
 
     // The panel's fields come back after a restart, and after a crash too: they were written
