@@ -425,6 +425,8 @@ bool MainWindow::openSession(const QString& dir)
     panel_->setSessionOpen(true);
     sessionView_->setSession(&*session_);
     analysis_->openSession(session_->dir());
+    if (options_.persistSettings)
+        analysis_->restoreChoices(QSettings());
     setWindowTitle(tr("NeedleBench – %1").arg(QDir::toNativeSeparators(session_->dir())));
     if (options_.persistSettings) {
         QSettings().setValue(QStringLiteral("session/last"), session_->dir());
@@ -493,8 +495,6 @@ void MainWindow::saveWorkspace(QSettings& settings) const
 void MainWindow::restoreWorkspace()
 {
     const QSettings settings;
-    if (session_)
-        analysis_->restoreChoices(settings);
     // The playback speed the operator labels at (a slow 0.25× for the phases' edges).
     review_->setSpeed(settings.value(QStringLiteral("review/speed"), 1.0).toDouble());
     const QString run = settings.value(QStringLiteral("review/run")).toString();

@@ -108,23 +108,25 @@ private slots:
             QTRY_VERIFY(!w.isVisible());
         }  // a restart follows
 
-        nb::MainWindow w(persisted(QString(), &rig));  // the last session, as a plain start opens it
-        w.resize(1366, 768);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.session());
-        nb::AnalysisWorkspace* a = w.analysisWorkspace();
-        QVERIFY(runItem(a, QStringLiteral("run_002_slow")));
-        QCOMPARE(runItem(a, QStringLiteral("run_002_slow"))->checkState(), Qt::Unchecked);
-        QCOMPARE(runItem(a, QStringLiteral("run_001_slow"))->checkState(), Qt::Checked);
-        QCOMPARE(runItem(a, QStringLiteral("run_003_fast"))->checkState(), Qt::Checked);
-        QVERIFY(a->includeJudgedOut());
-        QCOMPARE(a->tabs()->currentIndex(), a->tabs()->count() - 1);
-        QCOMPARE(a->factorChooser()->currentData().toString(), factor);
-        QCOMPARE(a->quantityChooser()->currentData().toString(), quantity);
-        QVERIFY(w.close());
+        {
+            nb::MainWindow w(persisted(QString(), &rig));  // the last session, as a plain start opens it
+            w.resize(1366, 768);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.session());
+            nb::AnalysisWorkspace* a = w.analysisWorkspace();
+            QVERIFY(runItem(a, QStringLiteral("run_002_slow")));
+            QCOMPARE(runItem(a, QStringLiteral("run_002_slow"))->checkState(), Qt::Unchecked);
+            QCOMPARE(runItem(a, QStringLiteral("run_001_slow"))->checkState(), Qt::Checked);
+            QCOMPARE(runItem(a, QStringLiteral("run_003_fast"))->checkState(), Qt::Checked);
+            QVERIFY(a->includeJudgedOut());
+            QCOMPARE(a->tabs()->currentIndex(), a->tabs()->count() - 1);
+            QCOMPARE(a->factorChooser()->currentData().toString(), factor);
+            QCOMPARE(a->quantityChooser()->currentData().toString(), quantity);
+            QVERIFY(w.close());
+        }
 
-        // Another session does not take this one's runs out.
+        // Another session does not take this one's runs out, and opening this one again does.
         const QString other = tmp.filePath(QStringLiteral("other"));
         nb::Session::create(other, {});
         const nbtest::CliResult sim = nbtest::runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"),
@@ -136,6 +138,10 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&o));
         QVERIFY(runItem(o.analysisWorkspace(), QStringLiteral("run_002_slow")));
         QCOMPARE(runItem(o.analysisWorkspace(), QStringLiteral("run_002_slow"))->checkState(), Qt::Checked);
+        // Back to the first session in the same window: its run is out again.
+        QVERIFY(o.openSession(sessionDir));
+        QCOMPARE(runItem(o.analysisWorkspace(), QStringLiteral("run_002_slow"))->checkState(), Qt::Unchecked);
+        QCOMPARE(runItem(o.analysisWorkspace(), QStringLiteral("run_001_slow"))->checkState(), Qt::Checked);
         QVERIFY(o.close());
         QSettings().clear();
     }
