@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+134"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+135"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -40,18 +40,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+398"/>
+        <location line="+461"/>
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-397"/>
-        <location line="+398"/>
+        <location line="-460"/>
+        <location line="+461"/>
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-362"/>
+        <location line="-425"/>
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -98,7 +98,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Nach Faktor</translation>
     </message>
     <message numerus="yes">
-        <location line="+162"/>
+        <location line="+225"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n Lauf ausgewertet</numerusform>
@@ -1454,7 +1454,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Not-Halt: Die Achse bleibt ausgeschaltet, bis Sie ihn im Bedienfeld zurücksetzen.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+578"/>
+        <location filename="../app/main_window.cpp" line="+591"/>
         <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1517,7 +1517,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Simulierter Versuchsstand: %1, Startwert %2, %3 Hz</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-478"/>
+        <location filename="../app/main_window.cpp" line="-484"/>
         <source>Recording %1</source>
         <translation>Zeichne %1 auf</translation>
     </message>
@@ -1663,7 +1663,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Sitzung %1 geöffnet</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>NeedleBench – %1</source>
         <translation>NeedleBench – %1</translation>
     </message>
@@ -1683,7 +1683,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Keine Sitzung offen: eine neue beginnen oder eine öffnen (Menü Sitzung).</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+30"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation>Der beim Beenden von NeedleBench geprüfte Lauf ist nicht mehr da: %1</translation>
     </message>
@@ -1806,12 +1806,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Nicht beenden</translation>
     </message>
     <message>
-        <location line="-822"/>
+        <location line="-835"/>
         <source>Revie&amp;w</source>
         <translation>Sic&amp;htung</translation>
     </message>
     <message>
-        <location line="+648"/>
+        <location line="+661"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation>%1 · %2 Hz · %3 Messwerte · %4 verloren</translation>
     </message>
@@ -1833,7 +1833,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location line="-592"/>
+        <location line="-598"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2352,12 +2352,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1052"/>
+        <location line="+1061"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1049"/>
+        <location line="-1058"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2383,12 +2383,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+580"/>
+        <location line="+581"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-580"/>
+        <location line="-581"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2413,7 +2413,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>zehn Bilder vor (Umschalt+Rechts)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
@@ -2512,12 +2512,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+843"/>
+        <location line="+851"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-647"/>
+        <location line="-655"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation>die Label-Datei konnte nicht beiseitegelegt werden: das nächste gespeicherte Label ersetzt sie</translation>
     </message>
@@ -2542,7 +2542,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+287"/>
+        <location line="+295"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2602,7 +2602,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-958"/>
+        <location line="-966"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2661,7 +2661,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+222"/>
+        <location line="+230"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation>%1 auf %2 bei %3 s geschlossen</translation>
     </message>
@@ -2751,7 +2751,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-926"/>
+        <location line="-934"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2831,7 +2831,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+40"/>
         <source>Event marked in the force record at %1 s; now step the video to it and mark it there</source>
         <translation>Ereignis in der Kraftaufzeichnung bei %1 s markiert; nun das Video dorthin schalten und es dort markieren</translation>
     </message>
@@ -3230,7 +3230,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
-        <location filename="../app/cmd_events.cpp" line="+40"/>
+        <location filename="../app/cmd_events.cpp" line="+45"/>
         <location filename="../app/cmd_fit.cpp" line="+112"/>
         <location line="+49"/>
         <location line="+129"/>
@@ -4606,7 +4606,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--by FAKTOR,... ist erforderlich, wenn der Ordner keine plan.json enthält</translation>
     </message>
     <message numerus="yes">
-        <location line="+24"/>
+        <location line="+23"/>
         <source>%n run(s) the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes them</source>
         <translation>
             <numerusform>%n Lauf, den der Plan nicht zählt (abgebrochen, fehlgeschlagen oder verworfen), ausgelassen: %1; --all-runs nimmt ihn auf</numerusform>
@@ -5261,7 +5261,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Messwertzähler des Sensors (eine Lücke ist ein verlorener Messwert)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>friction phase recorded with the run (the simulated rig&apos;s own)</source>
         <translation>mit dem Lauf aufgezeichnete Reibungsphase (die des simulierten Prüfstands)</translation>
     </message>
@@ -5276,7 +5276,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>mit dem Lauf aufgezeichneter Text</translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+146"/>
         <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
         <translation>%1: Bilder nach der Bildrate der Messung nummeriert, das Video ließ sich nicht indizieren (%2)</translation>
     </message>
@@ -6492,7 +6492,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+150"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>
@@ -6542,7 +6542,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="-254"/>
+        <location line="-249"/>
         <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
         <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s)</translation>
     </message>
@@ -6552,7 +6552,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kein Messpunkt bewegt sich schneller als das Nullgeschwindigkeitsband (±%1 mm/s), bei einer Höchstgeschwindigkeit der Nadel von %2 mm/s: ein schmaleres --band-m-s angeben oder Phase c labeln</translation>
     </message>
     <message>
-        <location line="+283"/>
+        <location line="+278"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation>Dp und Dn sind nicht bestimmt: Der Lauf hat nicht in beiden Richtungen eine Strecke in Ruhe (Phase a), aus der sich die Haftgrenzen lesen lassen</translation>
     </message>
@@ -7220,13 +7220,13 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+175"/>
+        <location line="+176"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-182"/>
+        <location line="-183"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
@@ -7736,8 +7736,8 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-613"/>
-        <location line="+399"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-676"/>
+        <location line="+462"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>
     </message>

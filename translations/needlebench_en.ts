@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+134"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+135"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+398"/>
+        <location line="+461"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-397"/>
-        <location line="+398"/>
+        <location line="-460"/>
+        <location line="+461"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-362"/>
+        <location line="-425"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -97,7 +97,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+162"/>
+        <location line="+225"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n run analysed</numerusform>
@@ -1453,7 +1453,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="+578"/>
+        <location filename="../app/main_window.cpp" line="+591"/>
         <location filename="../app/main_window_safety.cpp" line="+15"/>
         <location line="+31"/>
         <location line="+19"/>
@@ -1516,7 +1516,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="-478"/>
+        <location filename="../app/main_window.cpp" line="-484"/>
         <source>Recording %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1661,7 +1661,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>NeedleBench – %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1681,7 +1681,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+30"/>
         <source>The run in review when NeedleBench closed is gone: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1800,12 +1800,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-822"/>
+        <location line="-835"/>
         <source>Revie&amp;w</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+648"/>
+        <location line="+661"/>
         <source>%1 · %2 Hz · %3 samples · dropped %4</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1827,7 +1827,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-592"/>
+        <location line="-598"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2346,12 +2346,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1052"/>
+        <location line="+1061"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1049"/>
+        <location line="-1058"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2377,12 +2377,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+580"/>
+        <location line="+581"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-580"/>
+        <location line="-581"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2407,7 +2407,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1×</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2506,12 +2506,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+843"/>
+        <location line="+851"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-647"/>
+        <location line="-655"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2536,7 +2536,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+287"/>
+        <location line="+295"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2596,7 +2596,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-958"/>
+        <location line="-966"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2655,7 +2655,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+222"/>
+        <location line="+230"/>
         <source>%1 on %2 closed at %3 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2743,7 +2743,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-926"/>
+        <location line="-934"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2823,7 +2823,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+40"/>
         <source>Event marked in the force record at %1 s; now step the video to it and mark it there</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3222,7 +3222,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
-        <location filename="../app/cmd_events.cpp" line="+40"/>
+        <location filename="../app/cmd_events.cpp" line="+45"/>
         <location filename="../app/cmd_fit.cpp" line="+112"/>
         <location line="+49"/>
         <location line="+129"/>
@@ -4545,7 +4545,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+24"/>
+        <location line="+23"/>
         <source>%n run(s) the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes them</source>
         <translation>
             <numerusform>%n run the plan does not count (interrupted, failed or discarded) left out: %1; --all-runs includes it</numerusform>
@@ -5152,7 +5152,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>friction phase recorded with the run (the simulated rig&apos;s own)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5167,7 +5167,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+146"/>
         <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6383,7 +6383,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+150"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6433,7 +6433,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-254"/>
+        <location line="-249"/>
         <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6443,7 +6443,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+283"/>
+        <location line="+278"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7111,13 +7111,13 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+175"/>
+        <location line="+176"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-182"/>
+        <location line="-183"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7627,8 +7627,8 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-613"/>
-        <location line="+399"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-676"/>
+        <location line="+462"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
     </message>
