@@ -424,9 +424,9 @@ bool MainWindow::openSession(const QString& dir)
     restoreSimulatedRig();
     panel_->setSessionOpen(true);
     sessionView_->setSession(&*session_);
-    analysis_->openSession(session_->dir());
     if (options_.persistSettings)
         analysis_->restoreChoices(QSettings());
+    analysis_->openSession(session_->dir());
     setWindowTitle(tr("NeedleBench – %1").arg(QDir::toNativeSeparators(session_->dir())));
     if (options_.persistSettings) {
         QSettings().setValue(QStringLiteral("session/last"), session_->dir());

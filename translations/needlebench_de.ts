@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+135"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+137"/>
         <source>Runs in the analysis:</source>
         <translation>Läufe in der Auswertung:</translation>
     </message>
@@ -40,18 +40,18 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+461"/>
+        <location line="+463"/>
         <source>Save figure…</source>
         <translation>Abbildung speichern…</translation>
     </message>
     <message>
-        <location line="-460"/>
-        <location line="+461"/>
+        <location line="-462"/>
+        <location line="+463"/>
         <source>Save tables…</source>
         <translation>Tabellen speichern…</translation>
     </message>
     <message>
-        <location line="-425"/>
+        <location line="-427"/>
         <source>Stiffness</source>
         <translation>Steifigkeit</translation>
     </message>
@@ -98,7 +98,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Nach Faktor</translation>
     </message>
     <message numerus="yes">
-        <location line="+225"/>
+        <location line="+227"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n Lauf ausgewertet</numerusform>
@@ -7736,8 +7736,8 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-676"/>
-        <location line="+462"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-678"/>
+        <location line="+464"/>
         <source>no tissue given</source>
         <translation>ohne Gewebeangabe</translation>
     </message>

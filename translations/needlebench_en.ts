@@ -17,7 +17,7 @@
 <context>
     <name>nb::AnalysisWorkspace</name>
     <message>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+135"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="+137"/>
         <source>Runs in the analysis:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+461"/>
+        <location line="+463"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-460"/>
-        <location line="+461"/>
+        <location line="-462"/>
+        <location line="+463"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-425"/>
+        <location line="-427"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -97,7 +97,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+225"/>
+        <location line="+227"/>
         <source>%n run(s) analysed</source>
         <translation>
             <numerusform>%n run analysed</numerusform>
@@ -7627,8 +7627,8 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-676"/>
-        <location line="+462"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-678"/>
+        <location line="+464"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
     </message>

@@ -18,6 +18,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -98,6 +99,12 @@ private slots:
             QTRY_COMPARE_WITH_TIMEOUT(a->findChild<QListWidget*>()->count(), before + 1, 20000);
             QVERIFY2(!a->selectedRuns().contains(QStringLiteral("run_002_slow")), qPrintable(a->selectedRuns().join(QLatin1Char(','))));
             QCOMPARE(a->selectedRuns().size(), before);  // the new run counts, the one taken out does not
+            // Read again, the session is analysed once, with the run already out: every run is
+            // fitted again, and twice was a second's wait on a day's session.
+            QSignalSpy analysed(a, &nb::AnalysisWorkspace::analysisUpdated);
+            QVERIFY(a->openSession(sessionDir));
+            QCOMPARE(analysed.count(), 1);
+            QVERIFY(!a->selectedRuns().contains(QStringLiteral("run_002_slow")));
             QVERIFY(a->includeJudgedOut());
             QCOMPARE(a->quantityChooser()->currentData().toString(), quantity);
             // The stage is still enabled: the operator confirms the quit.

@@ -15,10 +15,12 @@
 #include "core/data_names.h"
 
 #include <map>
+#include <utility>
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QScrollArea>
+#include <QSignalBlocker>
 #include <QSettings>
 #include <QCoreApplication>
 #include <QDir>
@@ -257,17 +259,55 @@ AnalysisWorkspace::AnalysisWorkspace(QWidget* parent) : QWidget(parent)
     connect(&watcher_, &QFileSystemWatcher::directoryChanged, &reloadTimer_, qOverload<>(&QTimer::start));
 }
 
+namespace {
+
+// The runs a session's plan made again (Redo, with a reason), by run name: not its results, so
+// they start unticked, saying why, as `plan report` leaves them out. They are fitted with the rest.
+std::map<QString, QString> runsMadeAgain(const QString& dir)
+{
+    std::map<QString, QString> out;
+    const QString planPath = QDir(dir).filePath(planFileName());
+    if (!QFileInfo::exists(planPath))
+        return out;
+    try {
+        for (const PlannedRun& r : readPlanFile(planPath).runs)
+            for (const PlanAttempt& a : r.attempts)
+                if (!a.discarded.isEmpty())
+                    out[QFileInfo(a.runFile).completeBaseName()] = a.discarded;
+    } catch (const PlanError&) {
+        return {};  // the plan dock says what is wrong with it
+    }
+    return out;
+}
+
+}  // namespace
+
 bool AnalysisWorkspace::openSession(const QString& dir)
 {
     try {
         LoadedDataset loaded = loadDataset(dir);
-        // Recording a run reopens the session: a run the operator took out of the fits stayed
-        // out only until then.
-        const QStringList unticked = dir == dir_ ? untickedRuns() : QStringList();
+        // What stays unticked: reading the same session again (a run recorded, one made again)
+        // keeps the operator's choice, which stayed only until then; another session takes the
+        // choices restored for it. All before the one analysis the opening costs.
+        const std::optional<Choices> restored = std::exchange(restored_, std::nullopt);
+        QStringList unticked;
+        if (dir == dir_)
+            unticked = untickedRuns();
+        else if (restored && restored->session == dir)
+            unticked = restored->unticked;
+        if (restored) {
+            const QSignalBlocker block(includeJudgedOut_);  // analysed below
+            includeJudgedOut_->setChecked(restored->includeJudgedOut);
+        }
         dir_ = dir;
-        setDataset(std::move(loaded.dataset));
-        leaveOutDiscardedRuns(dir);
-        untick(unticked);
+        dataset_ = std::move(loaded.dataset);
+        discardedByPlan_ = runsMadeAgain(dir);
+        for (const auto& [name, why] : discardedByPlan_)
+            unticked << name;
+        fillRunList(unticked);
+        recompute();
+        if (restored)
+            applyViewChoices(*restored);
         if (!loaded.warnings.isEmpty())
             status_->setText(status_->text() + QLatin1Char('\n') + loaded.warnings.join(QLatin1Char('\n')));
         watchLabels();
@@ -278,47 +318,23 @@ bool AnalysisWorkspace::openSession(const QString& dir)
     }
 }
 
-void AnalysisWorkspace::leaveOutDiscardedRuns(const QString& dir)
+void AnalysisWorkspace::fillRunList(const QStringList& unticked)
 {
-    // A run the plan made again (Redo, with a reason) is not one of its results: it starts
-    // unticked, saying why, as `plan report` leaves it out. It was fitted with the rest.
-    const QString planPath = QDir(dir).filePath(planFileName());
-    if (!QFileInfo::exists(planPath))
-        return;
-    std::map<QString, QString>& discarded = discardedByPlan_;
-    discarded.clear();
-    try {
-        for (const PlannedRun& r : readPlanFile(planPath).runs)
-            for (const PlanAttempt& a : r.attempts)
-                if (!a.discarded.isEmpty())
-                    discarded[QFileInfo(a.runFile).completeBaseName()] = a.discarded;
-    } catch (const PlanError&) {
-        return;  // the plan dock says what is wrong with it
-    }
-    if (discarded.empty())
-        return;
     updatingList_ = true;
-    for (int i = 0; i < runList_->count(); ++i) {
-        QListWidgetItem* item = runList_->item(i);
-        if (discarded.count(item->text()))
-            item->setCheckState(Qt::Unchecked);
+    runList_->clear();
+    for (const DatasetRun& r : dataset_.runs) {
+        auto* item = new QListWidgetItem(r.name, runList_);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(unticked.contains(r.name) ? Qt::Unchecked : Qt::Checked);
     }
     updatingList_ = false;
-    recompute();
 }
 
 void AnalysisWorkspace::setDataset(Dataset dataset)
 {
     dataset_ = std::move(dataset);
     discardedByPlan_.clear();
-    updatingList_ = true;
-    runList_->clear();
-    for (const DatasetRun& r : dataset_.runs) {
-        auto* item = new QListWidgetItem(r.name, runList_);
-        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-        item->setCheckState(Qt::Checked);
-    }
-    updatingList_ = false;
+    fillRunList({});
     recompute();
 }
 
@@ -342,22 +358,6 @@ QStringList AnalysisWorkspace::untickedRuns() const
     return out;
 }
 
-void AnalysisWorkspace::untick(const QStringList& names)
-{
-    bool changed = false;
-    updatingList_ = true;
-    for (int i = 0; i < runList_->count(); ++i) {
-        QListWidgetItem* item = runList_->item(i);
-        if (names.contains(item->text()) && item->checkState() == Qt::Checked) {
-            item->setCheckState(Qt::Unchecked);
-            changed = true;
-        }
-    }
-    updatingList_ = false;
-    if (changed)
-        recompute();
-}
-
 void AnalysisWorkspace::saveChoices(QSettings& settings) const
 {
     settings.setValue(QStringLiteral("analysis/page"), tabs_->currentIndex());
@@ -370,20 +370,24 @@ void AnalysisWorkspace::saveChoices(QSettings& settings) const
 
 void AnalysisWorkspace::restoreChoices(const QSettings& settings)
 {
-    // Each restored in turn recomputes at most once; the switch first, so that the factors and
-    // quantities offered are those of the runs it lets in.
-    includeJudgedOut_->setChecked(settings.value(QStringLiteral("analysis/include_judged_out"), false).toBool());
-    if (!dir_.isEmpty() && settings.value(QStringLiteral("analysis/session")).toString() == dir_)
-        untick(settings.value(QStringLiteral("analysis/unticked")).toStringList());
+    restored_ = Choices{settings.value(QStringLiteral("analysis/session")).toString(),
+                        settings.value(QStringLiteral("analysis/unticked")).toStringList(),
+                        settings.value(QStringLiteral("analysis/factor")).toString(),
+                        settings.value(QStringLiteral("analysis/quantity")).toString(),
+                        settings.value(QStringLiteral("analysis/page"), -1).toInt(),
+                        settings.value(QStringLiteral("analysis/include_judged_out"), false).toBool()};
+}
+
+void AnalysisWorkspace::applyViewChoices(const Choices& c)
+{
     auto choose = [](QComboBox* box, const QString& key) {
         if (const int i = box->findData(key); i >= 0)
             box->setCurrentIndex(i);
     };
-    choose(factorChoice_, settings.value(QStringLiteral("analysis/factor")).toString());
-    choose(quantityChoice_, settings.value(QStringLiteral("analysis/quantity")).toString());
-    const int page = settings.value(QStringLiteral("analysis/page"), -1).toInt();
-    if (page >= 0 && page < tabs_->count())
-        tabs_->setCurrentIndex(page);
+    choose(factorChoice_, c.factor);
+    choose(quantityChoice_, c.quantity);
+    if (c.page >= 0 && c.page < tabs_->count())
+        tabs_->setCurrentIndex(c.page);
 }
 
 QStringList AnalysisWorkspace::selectedRuns() const

@@ -14,6 +14,7 @@
 #include <QWidget>
 
 #include <map>
+#include <optional>
 
 class QCheckBox;
 class QComboBox;
@@ -49,7 +50,7 @@ public:
     QString statusText() const;
     // The operator's choices, kept across restarts: the page, the judged-out switch, By
     // factor's factor and quantity, and the runs unticked in the session they were made in.
-    // Restore after openSession.
+    // restoreChoices takes them for the next openSession, which applies them as it opens.
     void saveChoices(QSettings& settings) const;
     void restoreChoices(const QSettings& settings);
     // Every table (CSV and LaTeX) / figure (PNG and PDF) of the analysis into `dir`; returns
@@ -88,11 +89,18 @@ signals:
     void choicesChanged();
 
 private:
-    // Unticks the runs the session's plan made again (their reason in the tooltip).
-    void leaveOutDiscardedRuns(const QString& dir);
+    struct Choices {
+        QString session;
+        QStringList unticked;
+        QString factor, quantity;
+        int page = -1;
+        bool includeJudgedOut = false;
+    };
+    // One item per dataset run, ticked unless in `unticked` (no analysis).
+    void fillRunList(const QStringList& unticked);
     QStringList untickedRuns() const;
-    // Unticks those of `names` the list holds, and recomputes when any changed.
-    void untick(const QStringList& names);
+    void applyViewChoices(const Choices& c);
+    std::optional<Choices> restored_;  // for the next openSession
     void recompute();
     void refreshViews();
     void showStiffness();
