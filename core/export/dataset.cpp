@@ -163,16 +163,21 @@ QString portableLink(const QString& fromFile, const QString& target)
     return rel;
 }
 
-double syncOffset(const Run& run)
+std::optional<double> namedSyncOffset(const Run& run)
 {
     for (const char* key : {"sync_offset_s", "video_offset_s"}) {
         const auto v = run.meta(QString::fromLatin1(key));
         bool ok = false;
         const double d = v ? v->trimmed().toDouble(&ok) : 0.0;
-        if (ok)
+        if (ok && std::isfinite(d))
             return d;
     }
-    return 0.0;
+    return std::nullopt;
+}
+
+double syncOffset(const Run& run)
+{
+    return namedSyncOffset(run).value_or(0.0);
 }
 
 double syncDrift(const Run& run)

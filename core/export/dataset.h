@@ -8,6 +8,7 @@
 #include <QString>
 #include <QStringList>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace nb {
@@ -91,6 +92,9 @@ constexpr double kDefaultVideoFps = 29.97;
 // Video time minus run time [s]: read from the run's metadata (`sync_offset_s`, or
 // `video_offset_s`), 0 when absent.
 double syncOffset(const Run& run);
+// The same, nullopt when the run names none: an export writes no offset for a run without a
+// video or one (a 0 there read as "synced at 0").
+std::optional<double> namedSyncOffset(const Run& run);
 // The video clock's rate error the sync found (sync_drift), 0 when unsaid.
 double syncDrift(const Run& run);
 double videoFps(const Run& run);

@@ -102,7 +102,8 @@ QJsonObject runSidecar(const DatasetRun& r, const QString& csvFileName, const QS
         {QStringLiteral("calibration"), pick(r.run, {"calib", "slope", "v0", "bias", "tare"})},
         {QStringLiteral("device"), pick(r.run, {"device", "sensor", "stage", "daq", "rig", "serial", "firmware"})},
         {QStringLiteral("drops"), pick(r.run, {"drop", "lost", "overrun", "gap", "late"})},
-        {QStringLiteral("sync"), QJsonObject{{QStringLiteral("offset_s"), syncOffset(r.run)},
+        {QStringLiteral("sync"), QJsonObject{{QStringLiteral("offset_s"), frameClockFor(r).hasVideo || namedSyncOffset(r.run)
+                                                                               ? QJsonValue(syncOffset(r.run)) : QJsonValue()},
                                              {QStringLiteral("video_fps"), frameClockFor(r).hasVideo ? QJsonValue(videoFps(r.run)) : QJsonValue()},
                                              {QStringLiteral("video_file"), r.run.meta(QStringLiteral("video_file")).value_or(QString())},
                                              {QStringLiteral("meaning"), QStringLiteral("video time = recording time + offset_s")}}},

@@ -212,9 +212,11 @@ public:
         for (const Metadata* m : {&r.run.metadata, &r.run.footer})  // the footer is written last and wins
             for (const auto& [key, value] : m->entries())
                 metadataAttribute(g, key, value);
-        attribute(g, QStringLiteral("sync_offset_s"), syncOffset(r.run));
-        attribute(g, QStringLiteral("sync_offset_s_units"), QStringLiteral("s"));
         const FrameClock clock = frameClockFor(r);
+        if (clock.hasVideo || namedSyncOffset(r.run)) {
+            attribute(g, QStringLiteral("sync_offset_s"), syncOffset(r.run));
+            attribute(g, QStringLiteral("sync_offset_s_units"), QStringLiteral("s"));
+        }
         if (clock.hasVideo) {
             attribute(g, QStringLiteral("video_fps"), videoFps(r.run));
             attribute(g, QStringLiteral("video_fps_units"), QStringLiteral("1/s"));

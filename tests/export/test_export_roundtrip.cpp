@@ -198,6 +198,17 @@ private slots:
         QCOMPARE(j.value("footer").toObject().value("end_reason").toObject().value("value").toString(),
                  QStringLiteral("completed"));
         QCOMPARE(j.value("sync").toObject().value("offset_s").toDouble(), 0.5);
+        {
+            // A run with neither a video nor an offset says no offset; a 0 read as "synced at 0".
+            DatasetRun plain = makeRun(QStringLiteral("plain"));
+            plain.run.metadata.remove(QStringLiteral("sync_offset_s"));
+            const QString plainCsv = dir.filePath(QStringLiteral("plain.csv"));
+            QVERIFY(writeRunCsv(plainCsv, plain));
+            QFile pj(sidecarPath(plainCsv));
+            QVERIFY(pj.open(QIODevice::ReadOnly));
+            const QJsonValue offset = QJsonDocument::fromJson(pj.readAll()).object().value("sync").toObject().value("offset_s");
+            QVERIFY2(offset.isNull(), qPrintable(QString::number(offset.toDouble())));
+        }
         const QJsonArray labels = j.value("labels").toArray();
         QCOMPARE(labels.size(), 3);
         QCOMPARE(labels[1].toObject().value("comment").toString(), QStringLiteral("steady, then \"drop\""));
@@ -455,6 +466,7 @@ private slots:
         d.runs.push_back(makeRun(QStringLiteral("run01")));
         d.runs.push_back(makeRun(QStringLiteral("run/02"), 2.0));
         d.runs.back().labels.clear();  // a run without labels still gets (empty) label columns
+        d.runs.back().run.metadata.remove(QStringLiteral("sync_offset_s"));  // nor a video nor an offset
         const QString path = dir.filePath(QStringLiteral("session.h5"));
         std::vector<qint64> steps;
         QVERIFY(writeSessionHdf5(path, d, [&](qint64 done, qint64 total) {
@@ -496,6 +508,8 @@ private slots:
         H5Gclose(g);
         const hid_t g2 = H5Gopen2(f, "/runs/run_02", H5P_DEFAULT);
         QCOMPARE(readStringAttr(g2, "name"), QStringLiteral("run/02"));
+        // No offset where the run has neither a video nor one: a 0 there read as "synced at 0".
+        QCOMPARE(H5Aexists(g2, "sync_offset_s"), 0);
         H5Gclose(g2);
 
         QCOMPARE(readStrings(f, "/runs/run01/labels/label"), (QStringList{"a", "c", "puncture"}));
