@@ -31,6 +31,10 @@ static QJsonObject infoJson(const FrameIndex& index)
     for (const auto& f : index.frames)
         keys += f.keyframe ? 1 : 0;
     o[QStringLiteral("keyframes")] = keys;
+    QJsonArray damaged;
+    for (const nb::video::DamagedSpan& d : index.damaged)
+        damaged.append(QJsonObject{{QStringLiteral("after_s"), d.after_s}, {QStringLiteral("before_s"), d.before_s}, {QStringLiteral("packets"), d.packets}});
+    o[QStringLiteral("damaged")] = damaged;
     QJsonArray warnings;
     for (const QString& w : index.warnings)
         warnings.append(w);

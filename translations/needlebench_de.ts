@@ -3238,7 +3238,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location line="+164"/>
         <location line="+290"/>
         <location filename="../app/cmd_sync.cpp" line="+39"/>
-        <location filename="../app/cmd_video.cpp" line="+46"/>
+        <location filename="../app/cmd_video.cpp" line="+50"/>
         <location line="+36"/>
         <source>print JSON</source>
         <translation>JSON ausgeben</translation>
@@ -5276,7 +5276,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>mit dem Lauf aufgezeichneter Text</translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+151"/>
         <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
         <translation>%1: Bilder nach der Bildrate der Messung nummeriert, das Video ließ sich nicht indizieren (%2)</translation>
     </message>
@@ -5337,7 +5337,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../core/export/session_hdf5.cpp" line="+306"/>
+        <location filename="../core/export/session_hdf5.cpp" line="+308"/>
         <location filename="../core/labels.cpp" line="+130"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
@@ -5593,7 +5593,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>RMS-Fehler</translation>
     </message>
     <message>
-        <location filename="../core/export/session_hdf5.cpp" line="-253"/>
+        <location filename="../core/export/session_hdf5.cpp" line="-255"/>
         <source>HDF5 could not %1</source>
         <translation>HDF5 konnte nicht: %1</translation>
     </message>
@@ -5634,7 +5634,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Gruppe &apos;%1&apos; anlegen</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+49"/>
         <source>one row per label; frames from the sync offset and frame rate of the run</source>
         <translation>eine Zeile je Label; Bilder aus Sync-Versatz und Bildrate des Laufs</translation>
     </message>
@@ -7174,7 +7174,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+184"/>
+        <location filename="../video/frame_index.cpp" line="+221"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7210,28 +7210,44 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-160"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
+    <message numerus="yes">
+        <location line="-10"/>
+        <source>the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; the frames on either side are read</source>
+        <translation>
+            <numerusform>die Datei ist zwischen %1 s und %2 s beschädigt: %n Paket dort ließ sich nicht dekodieren und fehlt; die Bilder davor und danach werden gelesen</numerusform>
+            <numerusform>die Datei ist zwischen %1 s und %2 s beschädigt: %n Pakete dort ließen sich nicht dekodieren und fehlen; die Bilder davor und danach werden gelesen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>and %n more damaged stretch(es)</source>
+        <translation>
+            <numerusform>und %n weitere beschädigte Stelle</numerusform>
+            <numerusform>und %n weitere beschädigte Stellen</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>the file holds %1 video streams: only the first (%2x%3) is shown and measured</source>
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+217"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-183"/>
+        <location line="-234"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+13"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>
@@ -7241,12 +7257,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>das Video hat keine indizierten Bilder</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>cannot reopen the video (moved or deleted?)</source>
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+78"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>

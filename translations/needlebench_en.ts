@@ -3230,7 +3230,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <location line="+164"/>
         <location line="+290"/>
         <location filename="../app/cmd_sync.cpp" line="+39"/>
-        <location filename="../app/cmd_video.cpp" line="+46"/>
+        <location filename="../app/cmd_video.cpp" line="+50"/>
         <location line="+36"/>
         <source>print JSON</source>
         <translation type="unfinished"></translation>
@@ -5167,7 +5167,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+151"/>
         <source>%1: frames numbered from the run&apos;s frame rate, the video could not be indexed (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5228,7 +5228,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../core/export/session_hdf5.cpp" line="+306"/>
+        <location filename="../core/export/session_hdf5.cpp" line="+308"/>
         <location filename="../core/labels.cpp" line="+130"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
@@ -5484,7 +5484,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_hdf5.cpp" line="-253"/>
+        <location filename="../core/export/session_hdf5.cpp" line="-255"/>
         <source>HDF5 could not %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5525,7 +5525,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+49"/>
         <source>one row per label; frames from the sync offset and frame rate of the run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7065,7 +7065,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+184"/>
+        <location filename="../video/frame_index.cpp" line="+221"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -7101,28 +7101,44 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-160"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="-10"/>
+        <source>the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; the frames on either side are read</source>
+        <translation>
+            <numerusform>the file is damaged between %1 s and %2 s: %n packet there could not be decoded and is left out; the frames on either side are read</numerusform>
+            <numerusform>the file is damaged between %1 s and %2 s: %n packets there could not be decoded and are left out; the frames on either side are read</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>and %n more damaged stretch(es)</source>
+        <translation>
+            <numerusform>and %n more damaged stretch</numerusform>
+            <numerusform>and %n more damaged stretches</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>the file holds %1 video streams: only the first (%2x%3) is shown and measured</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+217"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-183"/>
+        <location line="-234"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+13"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7132,12 +7148,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>cannot reopen the video (moved or deleted?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+78"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation type="unfinished"></translation>
     </message>

@@ -72,6 +72,16 @@ QStringList indexWarnings(const FrameIndex& index)
         const int expected = containerPictures(index);
         w << nb::TrDevices::tr("only %1 of %2 frames are readable: the file is cut off, or damaged after that frame").arg(index.size()).arg(expected);
     }
+    constexpr std::size_t kSpansNamed = 3;
+    for (std::size_t i = 0; i < std::min(index.damaged.size(), kSpansNamed); ++i) {
+        const DamagedSpan& d = index.damaged[i];
+        w << nb::TrDevices::tr("the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; "
+                               "the frames on either side are read", "", d.packets)
+                 .arg(d.after_s, 0, 'f', 3)
+                 .arg(d.before_s, 0, 'f', 3);
+    }
+    if (index.damaged.size() > kSpansNamed)
+        w << nb::TrDevices::tr("and %n more damaged stretch(es)", "", int(index.damaged.size() - kSpansNamed));
     if (!index.timestampsMonotonic)
         w << nb::TrDevices::tr("frame timestamps are not increasing: frames are reached by decoding from the start");
     if (index.rotation_deg != 0)
@@ -177,6 +187,33 @@ Mp4Index mp4Index(const QString& path)
 
 }  // namespace
 
+// The stretches of packets (times as OpenCV gives them) that no indexed frame shows, each
+// between the readable frames on either side. Packets before the first readable frame or after
+// the last are no stretch between frames (a file cut off says so already).
+static std::vector<DamagedSpan> packetsNotShown(const FrameIndex& index, const std::vector<double>& packets_s)
+{
+    std::vector<DamagedSpan> out;
+    bool open = false;
+    for (double p : packets_s) {
+        const double t = p - index.timeOrigin_s;
+        if (index.frameWithTime(t) || t < 0.0 || t > index.frames.back().time_s) {
+            open = false;
+            continue;
+        }
+        if (!open) {
+            const std::size_t before = std::size_t(index.frameAt(t));
+            out.push_back({index.frames[before].time_s, index.frames[before + 1].time_s, 0});
+            open = true;
+        }
+        ++out.back().packets;
+    }
+    return out;
+}
+
+// Refused grabs beyond the packets the container counts before the index ends: its count can be
+// a little short (a count from the duration, a last frame drained from the decoder).
+constexpr int kMorePacketsThanCounted = 16;
+
 FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, const std::atomic_bool* cancel)
 {
     const QFileInfo fi(path);
@@ -227,11 +264,25 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     }
 
     cv::Mat previous, current;
+    // A packet the decoder refuses (a damaged stretch of a copied or badly stored file) ends
+    // OpenCV's grab, and the first such packet used to end the index: a 20 KB scratch in the
+    // middle of a 20 s H.264 file lost its last 10 s, 100 of them whole frames after the next
+    // keyframe. Grabbing on reads the packets after it. At the end of the file every grab fails,
+    // at once, so the packets the container says are left bound the tries.
+    int refused = 0;
     while (!(cancel && cancel->load())) {
-        if (!cap.grab())
-            break;
+        if (!cap.grab()) {
+            if (++refused > std::max(0, index.containerFrames - index.size()) + kMorePacketsThanCounted)
+                break;
+            continue;
+        }
         FrameInfo f;
         f.time_s = cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
+        // Where it refused, as the frames came out: a B-frame decoder gives them out some
+        // frames late, so this is only roughly where the damage lies (see below).
+        if (refused > 0 && !index.frames.empty())
+            index.damaged.push_back({index.frames.back().time_s, f.time_s, refused});
+        refused = 0;
         if (cap.retrieve(current) && !current.empty()) {
             f.duplicate = samePicture(previous, current);
             std::swap(previous, current);
@@ -279,6 +330,10 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     index.timeOrigin_s = index.frames.front().time_s;
     for (FrameInfo& f : index.frames)
         f.time_s -= index.timeOrigin_s;
+    for (DamagedSpan& d : index.damaged) {
+        d.after_s -= index.timeOrigin_s;
+        d.before_s -= index.timeOrigin_s;
+    }
     index.updateStats();
     index.warnings = indexWarnings(index);
     index.frames.front().keyframe = true;
@@ -289,6 +344,9 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
             if (const auto n = index.frameWithTime(k - index.timeOrigin_s))
                 index.frames[std::size_t(*n)].keyframe = true;
         index.keyframesKnown = probe->keyframes_s.size() > 0;
+        if (!index.damaged.empty() && index.timestampsMonotonic && !probe->packets_s.empty())
+            index.damaged = packetsNotShown(index, probe->packets_s);
+        index.warnings = indexWarnings(index);
     }
     return index;
 }

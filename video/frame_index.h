@@ -24,6 +24,14 @@ struct FrameInfo {
     bool timeEstimated = false;  // decoder gave no timestamp (frames drained at the end)
 };
 
+// Where a file's middle could not be decoded (a damaged copy, a bad sector): between the
+// readable frames at `after_s` and `before_s` (index times), `packets` were skipped.
+struct DamagedSpan {
+    double after_s = 0.0;
+    double before_s = 0.0;
+    int packets = 0;
+};
+
 // Frames first to last of a video, both included; all of them by default.
 struct FrameSpan {
     int first = 0;
@@ -50,6 +58,7 @@ struct FrameIndex {
     bool fromPackets = false;     // indexed from the container's packets, without decoding
     bool cutShort = false;        // the readable frames end short of what the container says
     int videoStreams = 1;         // video streams in the file (the first is the one read)
+    std::vector<DamagedSpan> damaged;  // undecodable stretches that readable frames follow
     // What a user should know, in the language of the program reading the index (a stored
     // index says it in the reader's language, not the indexer's): see indexWarnings().
     QStringList warnings;

@@ -18,8 +18,9 @@ constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
 // 2: width and height as shown, turned by the rotation tag; 3: the facts behind the warnings, not
 // their text (a stored index spoke the language of the program that made it); 4: the count of
 // video streams; 5: an MPEG-TS file's stream counted once (4 counted it in its program too); 6: the
-// frames of a two- or three-frame B-frame clip timed (5 kept them all at 0)
-constexpr quint32 kVersion = 6;
+// frames of a two- or three-frame B-frame clip timed (5 kept them all at 0); 7: the frames after a
+// damaged stretch, and the stretches (6 ended the index at the first)
+constexpr quint32 kVersion = 7;
 // Indexes kept at most; the least recently stored go first.
 constexpr int kMaxStored = 300;
 
@@ -75,9 +76,18 @@ std::optional<FrameIndex> loadStoredFrameIndex(const QString& videoPath, const Q
         return std::nullopt;
     FrameIndex index;
     qint32 width = 0, height = 0, containerFrames = 0;
-    quint32 count = 0;
+    quint32 count = 0, damaged = 0;
     in >> index.codec >> width >> height >> index.fpsNominal >> containerFrames >> index.keyframesKnown >>
-        index.timestampsMonotonic >> index.rotation_deg >> index.fromPackets >> index.cutShort >> index.videoStreams >> index.timeOrigin_s >> count;
+        index.timestampsMonotonic >> index.rotation_deg >> index.fromPackets >> index.cutShort >> index.videoStreams >> index.timeOrigin_s >> damaged;
+    if (in.status() != QDataStream::Ok || damaged > 10'000'000u)
+        return std::nullopt;
+    index.damaged.resize(damaged);
+    for (DamagedSpan& d : index.damaged) {
+        qint32 packets = 0;
+        in >> d.after_s >> d.before_s >> packets;
+        d.packets = packets;
+    }
+    in >> count;
     if (in.status() != QDataStream::Ok || count == 0 || count > 100'000'000u)
         return std::nullopt;
     index.path = videoPath;
@@ -113,8 +123,10 @@ bool storeFrameIndex(const FrameIndex& index, const QString& storeDir)
     out << kMagic << kVersion << stamp->path << stamp->size << stamp->modified_ms;
     out << index.codec << qint32(index.width) << qint32(index.height) << index.fpsNominal << qint32(index.containerFrames)
         << index.keyframesKnown << index.timestampsMonotonic << qint32(index.rotation_deg) << index.fromPackets << index.cutShort << qint32(index.videoStreams)
-        << index.timeOrigin_s
-        << quint32(index.frames.size());
+        << index.timeOrigin_s << quint32(index.damaged.size());
+    for (const DamagedSpan& d : index.damaged)
+        out << d.after_s << d.before_s << qint32(d.packets);
+    out << quint32(index.frames.size());
     for (const FrameInfo& fr : index.frames)
         out << fr.time_s << quint8((fr.keyframe ? 1 : 0) | (fr.duplicate ? 2 : 0) | (fr.timeEstimated ? 4 : 0));
     if (out.status() != QDataStream::Ok || !commitWhole(f))

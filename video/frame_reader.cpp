@@ -25,6 +25,8 @@ FrameReader::FrameReader(FrameIndex index, int cacheFrames) : index_(std::move(i
     // the start again: 6 minutes to sync a 25 s video. Such a file is read forward only.
     const double picturesPerNominal = index_.fpsNominal * index_.frameDuration();
     seekable_ = index_.timestampsMonotonic && !(index_.fpsNominal > 0 && (picturesPerNominal > 2.0 || picturesPerNominal < 0.5));
+    for (const DamagedSpan& d : index_.damaged)
+        damagedPackets_ += d.packets;
     reopen();
     stats_.sequentialResets = 0;
 }
@@ -42,12 +44,16 @@ void FrameReader::reopen()
 
 int FrameReader::grabNext()
 {
-    if (!cap_.grab())
-        return -1;
+    // Past a damaged stretch the index found (its packets refused by the decoder), grabbing
+    // on reads the frames after it, as the index did; only their timestamps then say which.
+    int refused = 0;
+    while (!cap_.grab())
+        if (!index_.timestampsMonotonic || ++refused > damagedPackets_)
+            return -1;
     ++stats_.grabbed;
-    // Counting is exact while decoding on from a known frame; after a seek only the
-    // timestamp tells where we are.
-    const int counted = (current_ >= 0 || fresh_) ? current_ + 1 : -2;
+    // Counting is exact while decoding on from a known frame; after a seek, or packets
+    // skipped, only the timestamp tells where we are.
+    const int counted = refused == 0 && (current_ >= 0 || fresh_) ? current_ + 1 : -2;
     fresh_ = false;
     if (index_.timestampsMonotonic) {
         const double t = cap_.get(cv::CAP_PROP_POS_MSEC) / 1000.0;

@@ -71,6 +71,7 @@ private:
     int current_ = -1;      // index of the last grabbed frame; -1 before the first
     int firstFrameNumber_ = 0;
     bool seekable_ = true;  // OpenCV's frame seek can land near a frame (see the constructor)
+    int damagedPackets_ = 0;  // packets the index found undecodable: grabs that may fail before the next frame
     ReaderStats stats_;
     std::vector<cv::Mat> gray_;  // one per frame when grey frames are kept, else empty
     FrameSpan grayKept_;         // of those, the frames whose grey picture is kept

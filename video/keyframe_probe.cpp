@@ -1,6 +1,8 @@
 #include "keyframe_probe.h"
 #include "ffprobe.h"
 
+#include <algorithm>
+
 namespace nb::video {
 
 std::optional<ProbeResult> probeKeyframes(const QString& path)
@@ -47,13 +49,17 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
         return std::nullopt;
     for (const QByteArray& line : packets->split('\n')) {
         const QList<QByteArray> f = line.trimmed().split(',');
-        if (f.size() < 2 || !f[1].startsWith('K'))
+        if (f.size() < 2)
             continue;
         bool ok = false;
         const double t = f[0].toDouble(&ok);
-        if (ok)  // "N/A" (AVI without timestamps) is skipped: no usable keyframe time
+        if (!ok)  // "N/A" (AVI without timestamps) is skipped: no usable time
+            continue;
+        r.packets_s.push_back(t - start);
+        if (f[1].startsWith('K'))
             r.keyframes_s.push_back(t - start);
     }
+    std::sort(r.packets_s.begin(), r.packets_s.end());  // listed in decoding order
     r.start_s = start;
     return r;
 }

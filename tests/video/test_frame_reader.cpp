@@ -3,6 +3,7 @@
 #include "video_fixtures.h"
 
 #include "video/frame_index.h"
+#include "video/frame_index_store.h"
 #include "video/frame_reader.h"
 #include "video/packet_index.h"
 #include "video/video_error.h"
@@ -339,6 +340,67 @@ private slots:
         QVERIFY2(last == index.size() - 1 || last == index.size() - 2 || last == -1,
                  qPrintable(QStringLiteral("last frame shows %1").arg(last)));
         QVERIFY_THROWS_EXCEPTION(VideoError, reader.read(index.size()));
+    }
+
+    // A scratch in the middle of a file (a damaged copy, a bad sector): the frames after it are
+    // read, at their own times, and where it lies is said. The index used to end at the first
+    // packet the decoder refused, and called the file cut off.
+    void damagedMiddleKeepsTheFramesAfterIt()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(150);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        QVERIFY(writeVideo(path("whole.mp4"), spec).isEmpty());
+        const FrameIndex whole = buildFrameIndex(path("whole.mp4"));
+        QCOMPARE(whole.size(), 150);
+        // The packets shown from 1.5 s to 1.8 s (frames 45-54, in the keyframe interval 30-59).
+        QCOMPARE(writeScratched(path("whole.mp4"), path("damaged.mp4"), 1.49, 1.81), 10);
+
+        const FrameIndex index = buildFrameIndex(path("damaged.mp4"));
+        const QString said = index.warnings.join(QLatin1Char('\n'));
+        QVERIFY2(!index.cutShort && !said.contains(QStringLiteral("cut off")), qPrintable(said));
+        QVERIFY2(index.damaged.size() == 1 && said.contains(QStringLiteral("damaged between")), qPrintable(said));
+        const DamagedSpan& span = index.damaged.front();
+        QVERIFY2(span.packets >= 1 && span.packets <= 10 && span.after_s >= 1.0 && span.after_s < 1.5 && span.before_s > 1.5 && span.before_s <= 2.0 + 1e-6,
+                 qPrintable(QStringLiteral("damaged between %1 and %2 s, %3 packets").arg(span.after_s).arg(span.before_s).arg(span.packets)));
+        QVERIFY2(said.contains(QString::number(span.after_s, 'f', 3)) && said.contains(QString::number(span.before_s, 'f', 3)), qPrintable(said));
+
+        // From the next keyframe (frame 60) on, and before the scratch, every frame is there,
+        // at its own time, and shows its own picture: read at random, then one after another
+        // across the scratch, as playback does.
+        FrameReader reader(index, 4);
+        std::vector<int> kept;
+        for (int n = 0; n < whole.size(); ++n)
+            if (n < 40 || n >= 60) {
+                const auto j = index.frameWithTime(whole.frames[std::size_t(n)].time_s);
+                QVERIFY2(j, qPrintable(QStringLiteral("frame %1 at %2 s is not in the index").arg(n).arg(whole.frames[std::size_t(n)].time_s)));
+                kept.push_back(n);
+            }
+        std::mt19937 rng(11);
+        std::shuffle(kept.begin(), kept.end(), rng);
+        for (int n : kept)
+            QCOMPARE(readCode(reader.read(*index.frameWithTime(whole.frames[std::size_t(n)].time_s)).image), n);
+        reader.cache().clear();
+        for (int j = 0; j < index.size(); ++j) {
+            const DecodedFrame f = reader.read(j);
+            const int n = whole.frameAt(f.time_s);
+            if (n < 40 || n >= 60)
+                QCOMPARE(readCode(f.image), n);
+        }
+        QCOMPARE(index.frames.back().time_s, whole.frames.back().time_s);
+
+        // A stored index keeps the scratch, and says so again.
+        bool fromStore = true;
+        const QString store = path(QStringLiteral("store"));
+        loadOrBuildFrameIndex(path("damaged.mp4"), {}, nullptr, &fromStore, store);
+        QVERIFY(!fromStore);
+        const FrameIndex stored = loadOrBuildFrameIndex(path("damaged.mp4"), {}, nullptr, &fromStore, store);
+        QVERIFY(fromStore);
+        QCOMPARE(stored.size(), index.size());
+        QCOMPARE(stored.damaged.size(), std::size_t(1));
+        QCOMPARE(stored.damaged.front().packets, span.packets);
+        QCOMPARE(stored.damaged.front().before_s, span.before_s);
+        QCOMPARE(stored.warnings, index.warnings);
     }
 
     void unreadableFilesSayWhy()

@@ -2,6 +2,7 @@
 #include "video_fixtures.h"
 #include "support/needlebench_cli.h"
 
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -115,6 +116,16 @@ private slots:
         QCOMPARE(cutOff.code, 1);
         QVERIFY2(cutOff.err.contains(cut) && cutOff.err.contains(QStringLiteral("cut off")) && !cutOff.err.contains(QStringLiteral("@ 0x")),
                  qPrintable(cutOff.err));
+        // A scratch in its middle: the frames after it are read, and where it lies is said.
+        const QString scratched = dir_.filePath("scratched.mp4");
+        QVERIFY(writeScratched(full, scratched, 0.3, 0.35) >= 1);
+        const nbtest::CliResult damaged = run({"video-info", scratched, "--json"});
+        QCOMPARE(damaged.code, 0);
+        QVERIFY2(damaged.err.contains(scratched) && damaged.err.contains(QStringLiteral("damaged between")), qPrintable(damaged.err));
+        const QJsonObject info = QJsonDocument::fromJson(damaged.out.toUtf8()).object();
+        QVERIFY2(!info.value("damaged").toArray().isEmpty(), qPrintable(damaged.out));
+        QVERIFY2(info.value("damaged").toArray().first().toObject().value("before_s").toDouble() > 0.3, qPrintable(damaged.out));
+        QVERIFY2(info.value("duration_s").toDouble() > 0.6, qPrintable(damaged.out));
         // A video of one frame holds no motion to match: named, with what it lacks.
         VideoSpec one;
         one.codes = {0};

@@ -1,5 +1,6 @@
 #include "video_fixtures.h"
 
+#include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
 #include <opencv2/imgproc.hpp>
@@ -92,6 +93,27 @@ int readCode(const QImage& image)
     cv::Mat bgr;
     cv::cvtColor(m, bgr, cv::COLOR_RGB2BGR);
     return readCode(bgr);
+}
+
+int writeScratched(const QString& from, const QString& to, double t0_s, double t1_s)
+{
+    QProcess probe;
+    probe.start(QStringLiteral("ffprobe"), {"-v", "error", "-select_streams", "v:0", "-show_entries", "packet=pts_time,pos,size", "-of", "csv=p=0", from});
+    QFile in(from), out(to);
+    if (!probe.waitForFinished(60000) || probe.exitCode() != 0 || !in.open(QIODevice::ReadOnly) || !out.open(QIODevice::WriteOnly))
+        return -1;
+    QByteArray bytes = in.readAll();
+    int scratched = 0;
+    for (const QByteArray& line : probe.readAllStandardOutput().split('\n')) {
+        const QList<QByteArray> f = line.trimmed().split(',');  // pts_time, size, pos
+        if (f.size() < 3 || f[0].toDouble() < t0_s || f[0].toDouble() > t1_s)
+            continue;
+        const qint64 pos = f[2].toLongLong(), size = f[1].toLongLong();
+        for (qint64 i = pos; i < pos + size && i < bytes.size(); ++i)
+            bytes[i] = char(0xff ^ (i * 7919 % 251));
+        ++scratched;
+    }
+    return out.write(bytes) == bytes.size() ? scratched : -1;
 }
 
 }  // namespace nb::test

@@ -35,6 +35,11 @@ QString writeVideo(const QString& path, const VideoSpec& spec);
 // (8-bit, one channel) that would begin so is moved by one.
 void keepFromReadingAsId3(cv::Mat& firstFrame);
 
+// Writes `from` to `to` with the data of the video packets shown from `t0_s` to `t1_s` overwritten
+// (their place and size in the file as ffprobe gives them): a damaged stretch, as a bad copy or
+// sector leaves. Returns the packets overwritten (-1 when ffprobe or a file failed).
+int writeScratched(const QString& from, const QString& to, double t0_s, double t1_s);
+
 // Codes 0..n-1.
 std::vector<int> sequence(int n);
 
