@@ -210,6 +210,23 @@ static std::vector<DamagedSpan> packetsNotShown(const FrameIndex& index, const s
     return out;
 }
 
+// A decoder gives frames out up to this many late (H.264's largest picture buffer): refusals
+// closer than that are one damaged stretch, seen between frames given out meanwhile.
+constexpr int kDecoderDelayFrames = 16;
+
+static void joinNearStretches(std::vector<DamagedSpan>& spans, double near_s)
+{
+    std::vector<DamagedSpan> joined;
+    for (const DamagedSpan& d : spans)
+        if (!joined.empty() && d.after_s - joined.back().before_s <= near_s) {
+            joined.back().before_s = d.before_s;
+            joined.back().packets += d.packets;
+        } else {
+            joined.push_back(d);
+        }
+    spans = std::move(joined);
+}
+
 // Refused grabs beyond the packets the container counts before the index ends: its count can be
 // a little short (a count from the duration, a last frame drained from the decoder).
 constexpr int kMorePacketsThanCounted = 16;
@@ -334,6 +351,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
         d.after_s -= index.timeOrigin_s;
         d.before_s -= index.timeOrigin_s;
     }
+    joinNearStretches(index.damaged, kDecoderDelayFrames * index.frameDuration());
     index.updateStats();
     index.warnings = indexWarnings(index);
     index.frames.front().keyframe = true;

@@ -47,19 +47,24 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
                                         QStringLiteral("csv=p=0"), ffprobeInput(path)});
     if (!packets)
         return std::nullopt;
+    bool untimed = false;
     for (const QByteArray& line : packets->split('\n')) {
         const QList<QByteArray> f = line.trimmed().split(',');
         if (f.size() < 2)
             continue;
         bool ok = false;
         const double t = f[0].toDouble(&ok);
-        if (!ok)  // "N/A" (AVI without timestamps) is skipped: no usable time
+        if (!ok) {  // "N/A" (AVI without timestamps) is skipped: no usable time
+            untimed = true;
             continue;
+        }
         r.packets_s.push_back(t - start);
         if (f[1].startsWith('K'))
             r.keyframes_s.push_back(t - start);
     }
     std::sort(r.packets_s.begin(), r.packets_s.end());  // listed in decoding order
+    if (untimed)
+        r.packets_s.clear();  // some packets' times unknown: not every packet's time
     r.start_s = start;
     return r;
 }

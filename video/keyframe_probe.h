@@ -12,7 +12,7 @@ namespace nb::video {
 struct ProbeResult {
     QString codec;                    // e.g. "h264"
     std::vector<double> keyframes_s;  // relative to the stream start, as OpenCV reports time
-    std::vector<double> packets_s;    // every packet's time so, in presentation order
+    std::vector<double> packets_s;    // every packet's time so, in presentation order; empty when some have none
     double start_s = 0.0;             // the stream's start time in the file
     int videoStreams = 1;             // video streams in the file, cover pictures aside
 };
