@@ -7174,7 +7174,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+221"/>
+        <location filename="../video/frame_index.cpp" line="+238"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7210,12 +7210,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="-160"/>
+        <location line="-177"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
     <message numerus="yes">
-        <location line="-10"/>
+        <location line="-9"/>
         <source>the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; the frames on either side are read</source>
         <translation>
             <numerusform>die Datei ist zwischen %1 s und %2 s beschädigt: %n Paket dort ließ sich nicht dekodieren und fehlt; die Bilder davor und danach werden gelesen</numerusform>
@@ -7223,7 +7223,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="+5"/>
         <source>and %n more damaged stretch(es)</source>
         <translation>
             <numerusform>und %n weitere beschädigte Stelle</numerusform>
@@ -7236,18 +7236,18 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+234"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-234"/>
+        <location line="-250"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>
@@ -7262,17 +7262,22 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+82"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
+        <source>frame %1 lies in a damaged stretch of the file and cannot be decoded</source>
+        <translation>Bild %1 liegt in einer beschädigten Stelle der Datei und lässt sich nicht dekodieren</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation>Bild %1 konnte nicht dekodiert werden (Datei abgeschnitten oder verändert?)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>frame %1 could not be decoded</source>
         <translation>Bild %1 konnte nicht dekodiert werden</translation>
     </message>
@@ -7641,7 +7646,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+2055"/>
+        <location filename="../video/needle_tracker.cpp" line="+2058"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
@@ -7671,7 +7676,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>der Bereich für die Bewegung des Gewebes ist zu klein oder liegt außerhalb des Bildes</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+21"/>
+        <source>no frame of the video could be decoded</source>
+        <translation>kein Bild des Videos ließ sich dekodieren</translation>
+    </message>
+    <message>
+        <location line="+137"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
     </message>

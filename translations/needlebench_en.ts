@@ -7065,7 +7065,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+221"/>
+        <location filename="../video/frame_index.cpp" line="+238"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -7101,12 +7101,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-160"/>
+        <location line="-177"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="-10"/>
+        <location line="-9"/>
         <source>the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; the frames on either side are read</source>
         <translation>
             <numerusform>the file is damaged between %1 s and %2 s: %n packet there could not be decoded and is left out; the frames on either side are read</numerusform>
@@ -7114,7 +7114,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="+5"/>
         <source>and %n more damaged stretch(es)</source>
         <translation>
             <numerusform>and %n more damaged stretch</numerusform>
@@ -7127,18 +7127,18 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+234"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-234"/>
+        <location line="-250"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7153,17 +7153,22 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+82"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
+        <source>frame %1 lies in a damaged stretch of the file and cannot be decoded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>frame %1 could not be decoded</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7532,7 +7537,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+2055"/>
+        <location filename="../video/needle_tracker.cpp" line="+2058"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7562,7 +7567,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+21"/>
+        <source>no frame of the video could be decoded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+137"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation type="unfinished"></translation>
     </message>

@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
+#include <QLocale>
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -77,8 +78,7 @@ QStringList indexWarnings(const FrameIndex& index)
         const DamagedSpan& d = index.damaged[i];
         w << nb::TrDevices::tr("the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; "
                                "the frames on either side are read", "", d.packets)
-                 .arg(d.after_s, 0, 'f', 3)
-                 .arg(d.before_s, 0, 'f', 3);
+                 .arg(QLocale().toString(d.after_s, 'f', 3), QLocale().toString(d.before_s, 'f', 3));
     }
     if (index.damaged.size() > kSpansNamed)
         w << nb::TrDevices::tr("and %n more damaged stretch(es)", "", int(index.damaged.size() - kSpansNamed));

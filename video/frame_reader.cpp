@@ -44,12 +44,16 @@ void FrameReader::reopen()
 
 int FrameReader::grabNext()
 {
-    // Past a damaged stretch the index found (its packets refused by the decoder), grabbing
-    // on reads the frames after it, as the index did; only their timestamps then say which.
+    // Past a damaged stretch (packets the decoder refuses) grabbing on reads the frames after
+    // it, as the index did; only their timestamps then say which. A file indexed from its
+    // packets has its damage unknown, hence the tries beyond what the index found; at the end
+    // of the file each refusal is immediate.
+    constexpr int kRefusalsTried = 1000;
     int refused = 0;
     while (!cap_.grab())
-        if (!index_.timestampsMonotonic || ++refused > damagedPackets_)
+        if (!index_.timestampsMonotonic || ++refused > damagedPackets_ + kRefusalsTried)
             return -1;
+    refused_ = refused_ || refused > 0;
     ++stats_.grabbed;
     // Counting is exact while decoding on from a known frame; after a seek, or packets
     // skipped, only the timestamp tells where we are.
@@ -119,6 +123,7 @@ DecodedFrame FrameReader::read(int n)
         ++stats_.cacheHits;
         return {n, time, *img};
     }
+    refused_ = false;
     if (current_ < 0 || current_ > n || !forwardIsCheaper(current_, n))
         seekTo(n);
     auto decodeForward = [&] {
@@ -133,10 +138,20 @@ DecodedFrame FrameReader::read(int n)
     };
     // After a seek the decoder may not give back the last frames of a file (B-frames
     // drained at the end); decoding from the start always does.
+    // A frame passed over after a refused packet lies in a damaged stretch: decoding from the
+    // start would refuse it again, and costs the whole file before it.
+    auto damaged = [&] {
+        return DamagedFrame(index_.path, nb::TrDevices::tr("frame %1 lies in a damaged stretch of the file and cannot be decoded").arg(n));
+    };
     if (!decodeForward()) {
+        if (refused_ && current_ > n)
+            throw damaged();
         reopen();
-        if (!decodeForward())
+        if (!decodeForward()) {
+            if (refused_)
+                throw damaged();
             throw VideoError(index_.path, nb::TrDevices::tr("frame %1 could not be decoded (truncated or changed file?)").arg(n));
+        }
     }
     cv::Mat image;
     if (!cap_.retrieve(image) || image.empty())
@@ -188,6 +203,15 @@ cv::Mat FrameReader::gray(int n)
     if (keeping)
         gray_[std::size_t(n)] = g;
     return g;
+}
+
+std::optional<cv::Mat> FrameReader::grayUnlessDamaged(int n)
+{
+    try {
+        return gray(n);
+    } catch (const DamagedFrame&) {
+        return std::nullopt;
+    }
 }
 
 int FrameReader::fillCache(int from, int to, int budget)

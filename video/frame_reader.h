@@ -9,6 +9,7 @@
 
 #include <opencv2/videoio.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace nb::video {
@@ -55,6 +56,9 @@ public:
     bool keepGrayFrames(std::size_t budget_bytes, FrameSpan span = {});
     // Frame n in grey, 8 bit (shared with the store when kept: read-only). Throws as read().
     cv::Mat gray(int n);
+    // The same, nothing when frame n lies in a damaged stretch (DamagedFrame): for passes over
+    // the video, which leave such a frame out. Throws other failures as read().
+    std::optional<cv::Mat> grayUnlessDamaged(int n);
 
 private:
     void reopen();
@@ -72,6 +76,7 @@ private:
     int firstFrameNumber_ = 0;
     bool seekable_ = true;  // OpenCV's frame seek can land near a frame (see the constructor)
     int damagedPackets_ = 0;  // packets the index found undecodable: grabs that may fail before the next frame
+    bool refused_ = false;    // the decoder refused a packet on the way to the frame being read
     ReaderStats stats_;
     std::vector<cv::Mat> gray_;  // one per frame when grey frames are kept, else empty
     FrameSpan grayKept_;         // of those, the frames whose grey picture is kept

@@ -700,7 +700,10 @@ FrameSamples sampleFrames(FrameReader& reader, int count, FrameSpan span)
         if (std::find(taken.begin(), taken.end(), i) != taken.end())
             return;
         taken.push_back(i);
-        s.gray.push_back(reader.gray(i).clone());
+        if (const std::optional<cv::Mat> g = reader.grayUnlessDamaged(i))
+            s.gray.push_back(g->clone());
+        else
+            taken.pop_back();  // a damaged frame: the samples are one fewer
     };
     count = std::clamp(count, 1, n - first);
     for (int k = 0; k < count; ++k)
@@ -2068,7 +2071,10 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         // tell from a repeat (whole runs of frames get flagged), and a real repeat only shows
         // its tip one frame late, which the fit over all frames absorbs.
         const FrameInfo& info = index.frames[std::size_t(i)];
-        const cv::Mat gray = reader.gray(i);
+        const std::optional<cv::Mat> shown = reader.grayUnlessDamaged(i);
+        if (!shown)
+            continue;  // in a damaged stretch of the file: left out, as a dropped frame
+        const cv::Mat& gray = *shown;
         memory.add(gray);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);

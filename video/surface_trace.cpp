@@ -123,7 +123,10 @@ SurfaceTrace trackSurfaceEdges(FrameReader& reader, const QLineF& axis, const Ti
     for (int k = 0; k < n; ++k) {
         // The same picture again: no motion to measure (also where the index does not say so:
         // indexed from the file's packets, a long video).
-        const cv::Mat g = workingGray(reader.gray(k), scale);
+        const std::optional<cv::Mat> decoded = reader.grayUnlessDamaged(k);
+        if (!decoded)
+            continue;  // in a damaged stretch of the file: left out, as a repeated picture is
+        const cv::Mat g = workingGray(*decoded, scale);
         const bool repeated = k > 0 && (index.frames[std::size_t(k)].duplicate || samePicture(lastShown, g));
         lastShown = g;
         if (repeated)

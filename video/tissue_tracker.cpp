@@ -102,12 +102,20 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     cv::Mat background;
     {
         const int count = std::min(n, kBackgroundFrames);
+        int summed = 0;
         for (int j = 0; j < count; ++j) {
-            const cv::Mat f = workingImage(reader.gray(int((long long)j * (n - 1) / std::max(1, count - 1))), r, scale);
+            const std::optional<cv::Mat> g = reader.grayUnlessDamaged(int((long long)j * (n - 1) / std::max(1, count - 1)));
+            if (!g)
+                continue;  // in a damaged stretch of the file
+            const cv::Mat f = workingImage(*g, r, scale);
             if (background.empty())
                 background = cv::Mat::zeros(f.size(), CV_32F);
-            background += f / double(count);
+            background += f;
+            ++summed;
         }
+        if (summed == 0)
+            throw VideoError(index.path, nb::TrDevices::tr("no frame of the video could be decoded"));
+        background /= double(summed);
     }
     // Each picture is matched against a reference picture, not only against the one before:
     // a slow tissue moves a fraction of a pixel a frame, and frame-to-frame shifts of that size
@@ -137,7 +145,10 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             progress(i, n);
         // The same picture again: no motion to measure, and a false zero. Also where the index
         // does not say so (indexed from the file's packets, a long video).
-        const cv::Mat shown = workingImage(reader.gray(i), r, scale);
+        const std::optional<cv::Mat> g = reader.grayUnlessDamaged(i);
+        if (!g)
+            continue;  // in a damaged stretch of the file: left out, as a repeated picture is
+        const cv::Mat shown = workingImage(*g, r, scale);
         const bool repeated = i > 0 && (index.frames[std::size_t(i)].duplicate || samePicture(lastShown, shown));
         lastShown = shown;
         if (repeated)

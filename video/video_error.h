@@ -11,4 +11,12 @@ public:
     const QString& file() const { return subject(); }
 };
 
+// A frame that lies in a damaged stretch of its file: the decoder refused packets there and
+// gave out the frames after it. The frames around it are readable; a pass over the video
+// leaves it out, as a dropped frame.
+class DamagedFrame : public VideoError {
+public:
+    using VideoError::VideoError;
+};
+
 }  // namespace nb::video

@@ -379,7 +379,7 @@ private slots:
         const DamagedSpan& span = index.damaged.front();
         QVERIFY2(span.packets >= 1 && span.packets <= 10 && span.after_s >= 1.0 && span.after_s < 1.5 && span.before_s > 1.5 && span.before_s <= 2.0 + 1e-6,
                  qPrintable(QStringLiteral("damaged between %1 and %2 s, %3 packets").arg(span.after_s).arg(span.before_s).arg(span.packets)));
-        QVERIFY2(said.contains(QString::number(span.after_s, 'f', 3)) && said.contains(QString::number(span.before_s, 'f', 3)), qPrintable(said));
+        QVERIFY2(said.contains(QLocale().toString(span.after_s, 'f', 3)) && said.contains(QLocale().toString(span.before_s, 'f', 3)), qPrintable(said));
 
         // From the next keyframe (frame 60) on, and before the scratch, every frame is there,
         // at its own time, and shows its own picture: read at random, then one after another

@@ -4,7 +4,12 @@
 // reads, and at a slow stroke's onset and stop half a pixel is one to two frames of sync.
 #include "support/sanitizer_share.h"
 #include "needle_video.h"
+#include "video_fixtures.h"
 
+#include "video/packet_index.h"
+#include "video/video_error.h"
+
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <algorithm>
@@ -242,6 +247,53 @@ private slots:
         // So faint a tip is read within 2 px in 109-132 of the 160 frames on these grains.
         QVERIFY2(close >= 0.6 * v.frames, qPrintable(QStringLiteral("the tip within 2 px in %1 of %2 frames").arg(close).arg(v.frames)));
     }
+
+    // A file damaged in its middle, indexed from its packets (as a video over ten minutes is):
+    // the frames in the damaged stretch cannot be decoded, and the tracker leaves them out as
+    // dropped frames and reads the others as it reads them in the whole file. The first such
+    // frame ended the track (the sync of the whole video failed), after decoding the file from
+    // its start again.
+    void tracksPastADamagedStretch()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const NeedleVideo v = onGrain(3, restThenSine, 40.0, 6.0, 120);
+        const QString whole = dir.filePath(QStringLiteral("whole.avi")), damaged = dir.filePath(QStringLiteral("damaged.avi"));
+        const QString written = writeNeedleVideo(whole, v);
+        QVERIFY2(written.isEmpty(), qPrintable(written));
+        // Frames 60-71 (2.0 s to 2.37 s), one JPEG picture each.
+        QCOMPARE(nb::test::writeScratched(whole, damaged, 1.99, 2.38), 12);
+        const std::optional<nb::video::FrameIndex> fromPackets = nb::video::buildFrameIndexFromPackets(damaged);
+        QVERIFY(fromPackets);
+        QCOMPARE(fromPackets->size(), v.frames);
+
+        const nb::video::NeedleAxis drawn(QPointF(10.0, kHeight / 2.0), QPointF(kWidth - 10.0, kHeight / 2.0));
+        nb::video::FrameReader wholeReader(nb::video::buildFrameIndex(whole));
+        const nb::video::NeedleTrack reference = nb::video::trackNeedle(wholeReader, drawn);
+        nb::video::FrameReader reader(*fromPackets);
+        // A damaged frame is said to be one, without decoding the file from its start again.
+        QVERIFY_THROWS_EXCEPTION(nb::video::DamagedFrame, reader.read(65));
+        QCOMPARE(reader.stats().sequentialResets, 0);
+        QCOMPARE(readerFrameAfter(reader, 72), 72);
+        const nb::video::NeedleTrack track = nb::video::trackNeedle(reader, drawn);
+        QCOMPARE(int(track.time_s.size()), v.frames - 12);
+        QCOMPARE(track.displacement_px.size(), track.time_s.size());
+        int compared = 0, apart = 0;
+        for (std::size_t k = 0; k < track.time_s.size(); ++k) {
+            const int frame = int(std::lround(track.time_s[k] * 30.0));
+            QVERIFY2(frame < 60 || frame > 71, qPrintable(QStringLiteral("frame %1 of the damaged stretch tracked").arg(frame)));
+            const double there = reference.displacement_px[std::size_t(frame)], here = track.displacement_px[k];
+            if (!std::isfinite(there) || !std::isfinite(here))
+                continue;
+            ++compared;
+            apart += std::abs(here - there) > 0.5;
+        }
+        qInfo("%d frames read in both, %d of them more than 0.5 px apart", compared, apart);
+        QVERIFY2(compared >= v.frames - 12 - 5 && apart <= 2, qPrintable(QStringLiteral("%1 compared, %2 apart").arg(compared).arg(apart)));
+    }
+
+private:
+    static int readerFrameAfter(nb::video::FrameReader& reader, int n) { return reader.read(n).index; }
 };
 
 QTEST_GUILESS_MAIN(TestNeedleTip)
