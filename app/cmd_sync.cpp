@@ -145,6 +145,11 @@ int cmdSync(const QStringList& args, Io io)
             options.maxOffset_s = std::min(options.maxOffset_s, index.duration_s() + (run.time_s.back() - run.time_s.front()) + 1.0);
         const video::VideoSync vs = video::syncVideoToRun(index, run, vso);
         const SyncResult& r = vs.result;
+        // A long video indexed from its packets finds its damage only as it is decoded.
+        if (vs.track.damaged > 0)
+            io.err << nb::TrCli::tr("warning: %1: %n frame(s) in damaged stretches of the file could not be decoded and were left out",
+                                    "", vs.track.damaged).arg(videoPath)
+                   << '\n';
         // Only the frames the offsets tried can put beside the recording are tracked.
         const video::FrameSpan& tracked = vs.tracked;
         // Nothing in the picture moved with the recording: there is no offset to be sure of,
@@ -190,6 +195,7 @@ int cmdSync(const QStringList& args, Io io)
                 o[QStringLiteral("needle")] = QJsonArray{a.x1(), a.y1(), a.x2(), a.y2()};
                 o[QStringLiteral("needle_found")] = vs.track.axisDetected;
                 o[QStringLiteral("frames_masked")] = vs.track.masked;
+                o[QStringLiteral("frames_damaged")] = vs.track.damaged;
                 o[QStringLiteral("picture_memory")] = vs.track.coding.memory;
                 o[QStringLiteral("picture_noise_grey")] = vs.track.coding.noise_grey;
                 o[QStringLiteral("edge_slope_grey_per_px")] = vs.track.coding.edgeSlope_grey_per_px;

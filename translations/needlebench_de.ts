@@ -4719,8 +4719,16 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>needlebench sync: --needle %1,%2,%3,%4 liegt außerhalb des Bildes von %5x%6
 </translation>
     </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>warning: %1: %n frame(s) in damaged stretches of the file could not be decoded and were left out</source>
+        <translation>
+            <numerusform>Warnung: %1: %n Bild in beschädigten Stellen der Datei ließ sich nicht dekodieren und wurde ausgelassen</numerusform>
+            <numerusform>Warnung: %1: %n Bilder in beschädigten Stellen der Datei ließen sich nicht dekodieren und wurden ausgelassen</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+63"/>
+        <location line="+55"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4874,7 +4882,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Videodatei</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-133"/>
+        <location filename="../app/cmd_sync.cpp" line="-139"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation>Warnung: %1: %2</translation>

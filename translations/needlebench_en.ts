@@ -4650,8 +4650,16 @@ Stop the stage now (emergency stop) and quit?</source>
 </source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>warning: %1: %n frame(s) in damaged stretches of the file could not be decoded and were left out</source>
+        <translation>
+            <numerusform>warning: %1: %n frame in a damaged stretch of the file could not be decoded and was left out</numerusform>
+            <numerusform>warning: %1: %n frames in damaged stretches of the file could not be decoded and were left out</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+63"/>
+        <location line="+55"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4789,7 +4797,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-133"/>
+        <location filename="../app/cmd_sync.cpp" line="-139"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation type="unfinished"></translation>

@@ -2072,8 +2072,11 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         // its tip one frame late, which the fit over all frames absorbs.
         const FrameInfo& info = index.frames[std::size_t(i)];
         const std::optional<cv::Mat> shown = reader.grayUnlessDamaged(i);
-        if (!shown)
+        if (!shown) {
+            for (NeedleTrack& t : out)
+                ++t.damaged;
             continue;  // in a damaged stretch of the file: left out, as a dropped frame
+        }
         const cv::Mat& gray = *shown;
         memory.add(gray);
         for (std::size_t a = 0; a < axes.size(); ++a) {

@@ -41,6 +41,7 @@ struct NeedleTrack {
     bool axisDetected = false;            // false: the caller gave the axis
     double edgeSnr = 0.0;                 // median tip edge strength over the gradient noise
     int masked = 0;                       // frames without a usable tip (duplicates included)
+    int damaged = 0;                      // frames left out: in a damaged stretch of the file, not decodable
     // How the video's coder carried pictures over, and the tip's edge (core/picture_lag.h).
     PictureCoding coding;
 };

@@ -277,6 +277,7 @@ private slots:
         QCOMPARE(readerFrameAfter(reader, 72), 72);
         const nb::video::NeedleTrack track = nb::video::trackNeedle(reader, drawn);
         QCOMPARE(int(track.time_s.size()), v.frames - 12);
+        QCOMPARE(track.damaged, 12);  // and said so
         QCOMPARE(track.displacement_px.size(), track.time_s.size());
         int compared = 0, apart = 0;
         for (std::size_t k = 0; k < track.time_s.size(); ++k) {
