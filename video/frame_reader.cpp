@@ -136,13 +136,13 @@ DecodedFrame FrameReader::read(int n)
         }
         return true;
     };
-    // After a seek the decoder may not give back the last frames of a file (B-frames
-    // drained at the end); decoding from the start always does.
     // A frame passed over after a refused packet lies in a damaged stretch: decoding from the
     // start would refuse it again, and costs the whole file before it.
     auto damaged = [&] {
         return DamagedFrame(index_.path, nb::TrDevices::tr("frame %1 lies in a damaged stretch of the file and cannot be decoded").arg(n));
     };
+    // After a seek the decoder may not give back the last frames of a file (B-frames
+    // drained at the end); decoding from the start always does.
     if (!decodeForward()) {
         if (refused_ && current_ > n)
             throw damaged();
