@@ -7275,12 +7275,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+11"/>
         <source>frame %1 lies in a damaged stretch of the file and cannot be decoded</source>
         <translation>Bild %1 liegt in einer beschädigten Stelle der Datei und lässt sich nicht dekodieren</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+28"/>
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation>Bild %1 konnte nicht dekodiert werden (Datei abgeschnitten oder verändert?)</translation>
     </message>

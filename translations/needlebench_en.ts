@@ -7166,12 +7166,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+11"/>
         <source>frame %1 lies in a damaged stretch of the file and cannot be decoded</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+28"/>
         <source>frame %1 could not be decoded (truncated or changed file?)</source>
         <translation type="unfinished"></translation>
     </message>

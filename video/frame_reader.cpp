@@ -123,6 +123,15 @@ DecodedFrame FrameReader::read(int n)
         ++stats_.cacheHits;
         return {n, time, *img};
     }
+    // A frame found damaged once is damaged again: passes over the video and playback's
+    // prefetch ask for it again and again, and each asking cost a seek and a decode.
+    auto damaged = [&] {
+        damaged_.resize(index_.frames.size());
+        damaged_[std::size_t(n)] = true;
+        return DamagedFrame(index_.path, nb::TrDevices::tr("frame %1 lies in a damaged stretch of the file and cannot be decoded").arg(n));
+    };
+    if (std::size_t(n) < damaged_.size() && damaged_[std::size_t(n)])
+        throw damaged();
     refused_ = false;
     if (current_ < 0 || current_ > n || !forwardIsCheaper(current_, n))
         seekTo(n);
@@ -138,9 +147,6 @@ DecodedFrame FrameReader::read(int n)
     };
     // A frame passed over after a refused packet lies in a damaged stretch: decoding from the
     // start would refuse it again, and costs the whole file before it.
-    auto damaged = [&] {
-        return DamagedFrame(index_.path, nb::TrDevices::tr("frame %1 lies in a damaged stretch of the file and cannot be decoded").arg(n));
-    };
     // After a seek the decoder may not give back the last frames of a file (B-frames
     // drained at the end); decoding from the start always does.
     if (!decodeForward()) {
@@ -222,8 +228,11 @@ int FrameReader::fillCache(int from, int to, int budget)
     for (int i = from; i <= to && (budget < 0 || decoded < budget); ++i) {
         if (cache_.contains(i))
             continue;
-        read(i);
-        ++decoded;
+        try {
+            read(i);
+            ++decoded;
+        } catch (const DamagedFrame&) {
+        }
     }
     return decoded;
 }

@@ -43,7 +43,8 @@ public:
     DecodedFrame read(int n);
     bool isCached(int n) const { return cache_.contains(n); }
     // Decodes frames [from, to] into the cache (clamped to the file); stops early after
-    // `budget` decoded frames (<0: no limit). Returns how many it decoded.
+    // `budget` decoded frames (<0: no limit). Returns how many it decoded. Frames of a damaged
+    // stretch are passed over (playback's prefetch stopped at the first).
     int fillCache(int from, int to, int budget = -1);
     FrameCache& cache() { return cache_; }
     const ReaderStats& stats() const { return stats_; }
@@ -77,6 +78,7 @@ private:
     bool seekable_ = true;  // OpenCV's frame seek can land near a frame (see the constructor)
     int damagedPackets_ = 0;  // packets the index found undecodable: grabs that may fail before the next frame
     bool refused_ = false;    // the decoder refused a packet on the way to the frame being read
+    std::vector<bool> damaged_;  // per frame: found in a damaged stretch (read again, it throws at once)
     ReaderStats stats_;
     std::vector<cv::Mat> gray_;  // one per frame when grey frames are kept, else empty
     FrameSpan grayKept_;         // of those, the frames whose grey picture is kept

@@ -275,6 +275,13 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(nb::video::DamagedFrame, reader.read(65));
         QCOMPARE(reader.stats().sequentialResets, 0);
         QCOMPARE(readerFrameAfter(reader, 72), 72);
+        // Playback's prefetch passes over the damaged frames (it stopped at the first), and a
+        // frame found damaged is said so again at once.
+        reader.cache().clear();
+        QCOMPARE(reader.fillCache(55, 80), 26 - 12);
+        const int grabbed = reader.stats().grabbed;
+        QVERIFY_THROWS_EXCEPTION(nb::video::DamagedFrame, reader.read(65));
+        QCOMPARE(reader.stats().grabbed, grabbed);
         const nb::video::NeedleTrack track = nb::video::trackNeedle(reader, drawn);
         QCOMPARE(int(track.time_s.size()), v.frames - 12);
         QCOMPARE(track.damaged, 12);  // and said so
