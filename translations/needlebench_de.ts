@@ -7265,7 +7265,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>das Video hat keine indizierten Bilder</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>cannot reopen the video (moved or deleted?)</source>
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
@@ -7275,7 +7275,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>frame %1 lies in a damaged stretch of the file and cannot be decoded</source>
         <translation>Bild %1 liegt in einer beschädigten Stelle der Datei und lässt sich nicht dekodieren</translation>
     </message>

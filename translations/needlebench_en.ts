@@ -7156,7 +7156,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>cannot reopen the video (moved or deleted?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7166,7 +7166,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>frame %1 lies in a damaged stretch of the file and cannot be decoded</source>
         <translation type="unfinished"></translation>
     </message>

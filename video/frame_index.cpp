@@ -353,7 +353,6 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     }
     joinNearStretches(index.damaged, kDecoderDelayFrames * index.frameDuration());
     index.updateStats();
-    index.warnings = indexWarnings(index);
     index.frames.front().keyframe = true;
     if (probe) {
         if (!probe->codec.isEmpty())
@@ -364,8 +363,8 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
         index.keyframesKnown = probe->keyframes_s.size() > 0;
         if (!index.damaged.empty() && index.timestampsMonotonic && !probe->packets_s.empty())
             index.damaged = packetsNotShown(index, probe->packets_s);
-        index.warnings = indexWarnings(index);
     }
+    index.warnings = indexWarnings(index);
     return index;
 }
 

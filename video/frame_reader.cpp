@@ -27,6 +27,7 @@ FrameReader::FrameReader(FrameIndex index, int cacheFrames) : index_(std::move(i
     seekable_ = index_.timestampsMonotonic && !(index_.fpsNominal > 0 && (picturesPerNominal > 2.0 || picturesPerNominal < 0.5));
     for (const DamagedSpan& d : index_.damaged)
         damagedPackets_ += d.packets;
+    damaged_.assign(index_.frames.size(), false);
     reopen();
     stats_.sequentialResets = 0;
 }
@@ -126,11 +127,10 @@ DecodedFrame FrameReader::read(int n)
     // A frame found damaged once is damaged again: passes over the video and playback's
     // prefetch ask for it again and again, and each asking cost a seek and a decode.
     auto damaged = [&] {
-        damaged_.resize(index_.frames.size());
         damaged_[std::size_t(n)] = true;
         return DamagedFrame(index_.path, nb::TrDevices::tr("frame %1 lies in a damaged stretch of the file and cannot be decoded").arg(n));
     };
-    if (std::size_t(n) < damaged_.size() && damaged_[std::size_t(n)])
+    if (damaged_[std::size_t(n)])
         throw damaged();
     refused_ = false;
     if (current_ < 0 || current_ > n || !forwardIsCheaper(current_, n))
@@ -145,10 +145,10 @@ DecodedFrame FrameReader::read(int n)
         }
         return true;
     };
-    // A frame passed over after a refused packet lies in a damaged stretch: decoding from the
-    // start would refuse it again, and costs the whole file before it.
     // After a seek the decoder may not give back the last frames of a file (B-frames
-    // drained at the end); decoding from the start always does.
+    // drained at the end); decoding from the start always does. But a frame passed over after
+    // a refused packet lies in a damaged stretch: from the start it would be refused again,
+    // after decoding the whole file before it.
     if (!decodeForward()) {
         if (refused_ && current_ > n)
             throw damaged();
