@@ -237,6 +237,60 @@ private slots:
             QCOMPARE(w.reviewWorkspace()->syncMethod(), nb::SyncMethod::Automatic);
         }
     }
+
+    // A copy of the video damaged in its middle (the pictures shown from 5.0 to 5.5 s
+    // overwritten), opened in Review while the stage moves: Review names the damaged stretch,
+    // Auto sync still finds the offset within a frame from the frames around it, and the run
+    // recorded meanwhile loses no sample. The index used to end at the damage.
+    void damagedVideoWhileTheStageMoves()
+    {
+        nb::setPreferredLanguage(QStringLiteral("en"));
+        nb::installTranslation(*QCoreApplication::instance());
+        const QString sessionDir = session_ + QStringLiteral("_damaged");
+        QVERIFY(QDir().mkpath(sessionDir));
+        const QString sine = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
+        QFile::remove(sine);
+        QVERIFY(QFile::copy(sine_, sine));
+        const QString damaged = QDir(sessionDir).filePath(QStringLiteral("run_001_imaging.avi"));
+        QVERIFY(nb::test::writeScratched(video_, damaged, 5.0, 5.5) >= 10);
+
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true, &rig));
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        nb::ControlPanel* p = w.controlPanel();
+        p->findChild<QDoubleSpinBox*>(QStringLiteral("velocity"))->setValue(1.5);
+        p->findChild<QDoubleSpinBox*>(QStringLiteral("depth"))->setValue(40.0);
+        nbtest::prepareToRecord(w);
+        p->button(Control::StartInsertion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving && p->interlockState().recording, 20000);
+
+        w.reviewRun(sine);
+        nb::ReviewWorkspace* review = w.reviewWorkspace();
+        QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
+        review->openVideo(damaged);
+        QVERIFY(opened.count() > 0 || opened.wait(60000));
+        QVERIFY2(review->status().contains(QStringLiteral("run_001_imaging.avi")) && review->status().contains(QStringLiteral("damaged between")),
+                 qPrintable(review->status()));
+        QSignalSpy synced(review, &nb::ReviewWorkspace::syncFinished);
+        QVERIFY(p->interlockState().moving);
+        review->startAutoSync();
+        QVERIFY(synced.wait(120000));
+        QVERIFY(review->pendingSync());
+        const nb::SyncResult found = *review->pendingSync();
+        qInfo("damaged: found %.4f s (true %.4f s, %+.2f frames), confidence %.2f", found.offset_s, kOffset_s,
+              (found.offset_s - kOffset_s) * kFps, found.confidence);
+        QVERIFY2(std::abs(found.offset_s - kOffset_s) < 1.0 / kFps, qPrintable(QString::number(found.offset_s)));
+
+        QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 90000);
+        const nb::Run recorded = nb::readRunFile(w.lastRunPath()).run;
+        QVERIFY(recorded.size() > 1000);
+        double widest = 0.0;
+        for (std::size_t k = 1; k < recorded.size(); ++k)
+            widest = std::max(widest, recorded.time_s[k] - recorded.time_s[k - 1]);
+        QVERIFY2(widest < 1.5e-3, qPrintable(QStringLiteral("a gap of %1 s in %2").arg(widest).arg(w.lastRunPath())));
+    }
 };
 
 QTEST_MAIN(TestCodedVideoReview)
