@@ -365,11 +365,34 @@ std::optional<double> laterRest(const TissueMotion& tissue, double from_s, doubl
     const double at_s = std::max(c_s, from_s);
     if ((f.rest - f.at(at_s)) * tissue.px_per_mm < kLeft_px || f.speedAt(at_s) * tissue.px_per_mm * frame_s < kMoving_px)
         return std::nullopt;
+    // The curve must also be what the frames after `c_s` show: a tissue carried at the needle's
+    // speed that stops within a frame is fitted by a curve with a tau of a frame or two, which
+    // still creeps on after the stop (liver3 at 0.81 Hz, a 30 mm slab: c placed 60-80 ms late
+    // in most strokes, seed 518445 phase case 11). The frames after it show half the creep left.
+    const auto after = std::lower_bound(t.begin(), t.end(), at_s);
+    if (after == t.end() || after + 1 == t.end())
+        return std::nullopt;
+    const std::size_t j = std::size_t(after - t.begin());
+    const double shown_mm = y.back() - y[j], curve_mm = f.at(t.back()) - f.at(t[j]);
+    if (shown_mm < 0.5 * curve_mm)
+        return std::nullopt;
     for (double rest_s = at_s; rest_s < to_s; rest_s += 0.001)
         if (f.speedAt(rest_s) <= kAtRest * std::abs(needle_mm_s(rest_s)))
             return rest_s;
     return std::nullopt;
 }
+
+// A creep read from the force (creepRest).
+struct Creep {
+    std::size_t rest = 0;  // index of the first sample at rest
+    SettlingFit shortfall;  // of the force below the line
+    double b_Ns_per_m = 0.0;
+    // How far the tissue creeps on after `t_s`: the shortfall over the level is b times the creep's speed.
+    double leftAfter_mm(double t_s) const
+    {
+        return 1000.0 * std::max(0.0, shortfall.at(t_s) - shortfall.rest) * shortfall.tau_s / b_Ns_per_m;
+    }
+};
 
 // Where a tissue creeping into the plate's soft part comes to rest, read from the force's
 // shortfall below the sliding line (`shortfall_N` at `t_s`, the needle at `speed_mm_s`): b times
@@ -377,13 +400,13 @@ std::optional<double> laterRest(const TissueMotion& tissue, double from_s, doubl
 // to read sample by sample, but settling as the creep does. Fitted as an exponential over a
 // level (what the line misses of the force), the tissue rests from the first sample where the
 // fitted creep is a twentieth of the needle's speed, the rest laterRest reads in the picture.
-// Its index into the samples; nullopt unless the fit shows a creep: τ from half the force
+// The creep and where it rests; nullopt unless the fit shows a creep: τ from half the force
 // smoothing's spread (a smoothed stop reads τ of about a quarter of it) to under a quarter of
 // the stretch (longer is the line missing the force's curve), a shortfall three times the
 // smoothed noise, and more than a tenth of a millimetre left to creep (∫shortfall/b: less is
 // the slab stopping against the stiff part, and a pixel or less at the imaging view's scale).
-std::optional<std::size_t> creepRest(const std::vector<double>& t_s, const std::vector<double>& speed_mm_s, const std::vector<double>& shortfall_N,
-                                     double b_Ns_per_m, double noise_N, double smoothing_s)
+std::optional<Creep> creepRest(const std::vector<double>& t_s, const std::vector<double>& speed_mm_s, const std::vector<double>& shortfall_N,
+                               double b_Ns_per_m, double noise_N, double smoothing_s)
 {
     if (t_s.size() < 2 || !(b_Ns_per_m > 0.0))
         return std::nullopt;
@@ -394,8 +417,30 @@ std::optional<std::size_t> creepRest(const std::vector<double>& t_s, const std::
         return std::nullopt;
     for (std::size_t i = 0; i < t_s.size(); ++i)
         if (f.at(t_s[i]) - f.rest <= 0.05 * b_Ns_per_m * speed_mm_s[i] / 1000.0)
-            return i;
+            return Creep{i, f, b_Ns_per_m};
     return std::nullopt;
+}
+
+// Whether the picture shows too little of the creep the force read (`creep`) between `from_s`
+// and `to_s` for it to have been there: where the creep stands out of the picture's noise
+// (`noise_mm_s`, each reading's) four times over and moves it half a pixel, the frames show
+// under half of it (slow motion reads short in the picture, not by half).
+bool creepUnseen(const TissueMotion& tissue, const Creep& creep, double from_s, double to_s, int direction, double frame_s,
+                 double noise_mm_s)
+{
+    const double expected_mm = creep.leftAfter_mm(from_s) - creep.leftAfter_mm(to_s);
+    double shown_mm = 0.0;
+    int readings = 0;
+    for (std::size_t k = 0; k < tissue.time_s.size() && k < tissue.velocity_mm_s.size(); ++k)
+        if (tissue.time_s[k] - 0.5 * frame_s >= from_s - 1e-9 && tissue.time_s[k] + 0.5 * frame_s <= to_s + 1e-9 &&
+            std::isfinite(tissue.velocity_mm_s[k])) {
+            shown_mm += direction * tissue.velocity_mm_s[k] * frame_s;
+            ++readings;
+        }
+    if (readings == 0 || !(tissue.px_per_mm > 0.0) || expected_mm * tissue.px_per_mm < 0.5 ||
+        expected_mm < 4.0 * noise_mm_s * frame_s * std::sqrt(double(readings)))
+        return false;
+    return shown_mm < 0.5 * expected_mm;
 }
 
 constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
@@ -581,6 +626,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         }
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
         bool creptOnPlate = false;  // the force read the tissue creeping to rest on the plate's soft part
+        std::optional<Creep> creep;
         QString source = forceSource;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)
@@ -706,10 +752,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     speed.push_back(std::abs(v[i]));
                     shortfall.push_back(-over(i));
                 }
-                const std::optional<std::size_t> rest = creepRest(ts, speed, shortfall, h.direction > 0 ? m.bp_Ns_per_m : m.bn_Ns_per_m, noise_N,
-                                                                  double(2 * half + 1) / rate);
-                if (rest && *rest > 0) {
-                    cStart += *rest;
+                creep = creepRest(ts, speed, shortfall, h.direction > 0 ? m.bp_Ns_per_m : m.bn_Ns_per_m, noise_N, double(2 * half + 1) / rate);
+                if (creep && creep->rest > 0) {
+                    cStart += creep->rest;
                     creptOnPlate = true;
                 }
             }
@@ -969,7 +1014,12 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 const double forceC_s = forceC < h.end ? run.time_s[forceC] : t1;
                 // A picture read reading by reading takes a slow creep for rest: a window before
                 // where the force read the creep's end does not overrule it.
-                const bool creepSeen = creptOnPlate && cWindow && cWindow->second <= forceC_s;
+                // Unless the frames after the window show under half the creep the force read,
+                // where it would stand out of their noise: the force fell short of its line for
+                // another reason (liver3 at 0.81 Hz, a 30 mm slab: c placed
+                // 80 ms late where the tissue stopped within a frame, seed 518445 phase case 11).
+                const bool creepSeen = creptOnPlate && cWindow && cWindow->second <= forceC_s &&
+                                       !creepUnseen(*tissue, *creep, cWindow->second, forceC_s, h.direction, frame_s, videoNoise_mm_s);
                 cStart = cWindow && !creepSeen ? place(forceC, *cWindow) : (lastMoving > forceC_s + slack ? h.end : forceC);
                 // A tissue that settles slowly does so on the plate's soft part (b1): against
                 // its stiff part it stops within a frame. So c starts later, and b2, if any, was
