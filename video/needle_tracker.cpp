@@ -318,7 +318,12 @@ double shaftEnding(const std::vector<double>& shaft, int i, int polarity)
         to = std::clamp(to, 0, n);
         if (to - from < kShaftBehind / 4)
             return kNaN;
-        return median(std::vector<double>(shaft.begin() + from, shaft.begin() + to));
+        // On the stack: this runs for every sample of every frame's profile.
+        std::array<double, std::max(kShaftBehind, kShaftAhead)> values;
+        const auto end = std::copy(shaft.begin() + from, shaft.begin() + to, values.begin());
+        const auto mid = values.begin() + (end - values.begin()) / 2;
+        std::nth_element(values.begin(), mid, end);
+        return *mid;
     };
     // In the shaft's own sign: the tip's edge goes from the shaft to what lies beyond it.
     const double behind = -polarity * stretch(i - kShaftGap - kShaftBehind, i - kShaftGap);
@@ -1853,12 +1858,15 @@ struct AxisTracker {
     std::vector<double> edgeScores(const Seen& seen) const
     {
         std::vector<double> out(seen.g.size(), 0.0);
+        const bool clear = clearlySeen(seen.sighting);
         for (std::size_t i = 2; i + 3 < seen.g.size(); ++i) {
+            if (clear && std::abs(double(i) - seen.sighting.found) > 8.0)
+                continue;  // set below; the gate's medians were a tenth of a sync's time
             const double v = polarity * seen.g[i] - still[i];
             // The gate only lowers a score, and below 1 σ it changes little.
             out[i] = (gated && v > sigma ? gatedStrength(seen.profile.shaft, polarity, sigma, int(i), v) : v) / sigma;
         }
-        if (clearlySeen(seen.sighting))
+        if (clear)
             for (std::size_t i = 0; i < out.size(); ++i)
                 if (std::abs(double(i) - seen.sighting.found) > 8.0)
                     out[i] = -TipPath::kScoreCap;
