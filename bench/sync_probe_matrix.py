@@ -12,7 +12,11 @@ video shows no motion (it starts after a short stroke has ended) has no right of
 counted apart, and only a refusal or a confidence below the accept threshold is right for it.
 
   bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--expect-hits] [--exe build/app/needlebench] [--keep DIR]
-                             [--slow-small] [--expect-honest]
+                             [--slow-small] [--expect-honest] [--damage]
+
+--damage overwrites each video's packets over a stretch of 0.2-1.5 s drawn from the case's
+seed (a bad copy, a bad sector): the frames there cannot be decoded, and the sync must still
+hold on the frames either side.
 
 --slow-small draws the family the main draw meets rarely: two cycles of a slow, short sine
 (0.1-0.3 Hz, ±2.5-4 mm at 3-4 px/mm, so ±8-16 px), a faint needle (contrast 28-45, noise
@@ -92,6 +96,33 @@ def draw_video(c, t, x, path):
         raise RuntimeError('ffmpeg failed')
 
 
+def damage_video(c, path):
+    """Overwrites the packets of a stretch of the video (drawn from the case's seed) with noise;
+    returns the stretch's (start, end) in video time."""
+    rnd = random.Random(c['seed'] * 7 + 3)
+    probe = subprocess.run(['ffprobe', '-v', 'error', '-select_streams', 'v:0', '-show_entries', 'packet=pts_time,dts_time,pos,size',
+                            '-of', 'csv=p=0', path], capture_output=True, text=True, check=True)
+    packets = []
+    for line in probe.stdout.split():
+        cells = line.split(',')
+        if len(cells) < 4:
+            continue
+        pts, dts, size, pos = cells[:4]
+        at = pts if pts not in ('', 'N/A') else dts
+        if at in ('', 'N/A') or pos in ('', 'N/A'):
+            continue
+        packets.append((float(at), int(pos), int(size)))
+    end = max(p[0] for p in packets)
+    length = rnd.uniform(0.2, 1.5)
+    start = rnd.uniform(0.1 * end, max(0.1 * end, 0.9 * end - length))
+    with open(path, 'r+b') as f:
+        for at, pos, size in packets:
+            if start <= at < start + length and size > 16:
+                f.seek(pos + 8)
+                f.write(bytes(rnd.randrange(256) for _ in range(size - 8)))
+    return start, start + length
+
+
 def draw_cases(seed, count):
     rnd = random.Random(seed)
     cases = []
@@ -127,10 +158,11 @@ def describe(c):
     motion = f"linear {c['velocity']} mm/s" if c['linear'] else f"sine {c['frequency']} Hz ±{c['amplitude']} mm"
     return (f"{motion}, offset {c['offset']} s, drift {100 * c['drift']:.3f} %, {c['fps']} fps {c['size'][0]}x{c['size'][1]}, "
             f"angle {c['angle']}, {c['px_per_mm']} px/mm, noise {c['noise']}, contrast {c['contrast']}, {c['codec']}"
-            + (", counter and clock" if c['counter'] else ""))
+            + (", counter and clock" if c['counter'] else "")
+            + (f", damaged {c['damaged'][0]:.2f}-{c['damaged'][1]:.2f} s" if 'damaged' in c else ""))
 
 
-def run_case(c, exe, root):
+def run_case(c, exe, root, damage=False):
     d = os.path.join(root, f"case{c['i']}")
     os.makedirs(d, exist_ok=True)
     if c['linear']:
@@ -144,6 +176,8 @@ def run_case(c, exe, root):
     t, x = read_run(run)
     video = os.path.join(d, 'video.mp4' if c['codec'] == 'libx264' else 'video.avi')
     draw_video(c, t, x, video)
+    if damage:
+        c['damaged'] = damage_video(c, video)
     # A video that starts after the motion has ended (a short stroke, an offset well below
     # zero) shows nothing to sync on: the honest answer is a refusal or a low confidence, and
     # no error in frames means anything.
@@ -170,6 +204,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[1])
     add_common_arguments(ap)
     ap.add_argument('--slow-small', action='store_true', help='draw slow, short sines of a faint needle with overlays')
+    ap.add_argument('--damage', action='store_true', help="overwrite a stretch of each video's packets (0.2-1.5 s)")
     ap.add_argument('--expect-honest', action='store_true',
                     help='exit with status 1 if a case more than a frame off was offered for acceptance')
     ap.add_argument('--expect-hits', action='store_true',
@@ -178,7 +213,8 @@ def main():
                     help='exit with status 1 unless every case is within FRAMES frames, accepted or not')
     a = ap.parse_args()
     seed = chosen_seed(a, 'sync_probe_matrix')
-    print(f"sync_probe_matrix: seed {seed} (rerun with --seed {seed}{' --slow-small' if a.slow_small else ''}), {a.cases} cases", flush=True)
+    rerun = f"--seed {seed}{' --slow-small' if a.slow_small else ''}{' --damage' if a.damage else ''}"
+    print(f"sync_probe_matrix: seed {seed} (rerun with {rerun}), {a.cases} cases", flush=True)
     cases = (draw_slow_small_cases if a.slow_small else draw_cases)(seed, a.cases)
     if a.only:
         wanted = {int(i) for i in a.only.split(',')}
@@ -188,7 +224,7 @@ def main():
     worst = 0.0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root), cases):
+            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.damage), cases):
                 if o.get('refused'):
                     if o['moving']:
                         misses += 1

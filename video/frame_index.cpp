@@ -146,6 +146,14 @@ int FrameIndex::keyframeAtOrBefore(int n) const
     return 0;
 }
 
+bool FrameIndex::decodedAcrossDamage(int n) const
+{
+    if (!keyframesKnown || n < 0 || n >= size())
+        return false;
+    const double at_s = frames[std::size_t(n)].time_s, key_s = frames[std::size_t(keyframeAtOrBefore(n))].time_s;
+    return std::any_of(damaged.begin(), damaged.end(), [&](const DamagedSpan& d) { return at_s > d.after_s && key_s <= d.after_s; });
+}
+
 namespace {
 
 enum class Mp4Index { NotMp4, Missing, Present };

@@ -82,6 +82,11 @@ struct FrameIndex {
     std::optional<int> frameWithTime(double t) const;
     // The last keyframe at or before frame n.
     int keyframeAtOrBefore(int n) const;
+    // Whether frame n is decoded from pictures a damaged stretch took: it follows the stretch
+    // with no keyframe between (a codec that codes each picture alone flags every frame a
+    // keyframe). Its picture is what the decoder made up for the lost ones. False when the
+    // keyframes are not known.
+    bool decodedAcrossDamage(int n) const;
 };
 
 // The index's warnings, from its facts: a cut-off file, timestamps out of order, a rotation

@@ -213,6 +213,8 @@ cv::Mat FrameReader::gray(int n)
 
 std::optional<cv::Mat> FrameReader::grayUnlessDamaged(int n)
 {
+    if (index_.decodedAcrossDamage(n))
+        return std::nullopt;
     try {
         return gray(n);
     } catch (const DamagedFrame&) {

@@ -57,8 +57,10 @@ public:
     bool keepGrayFrames(std::size_t budget_bytes, FrameSpan span = {});
     // Frame n in grey, 8 bit (shared with the store when kept: read-only). Throws as read().
     cv::Mat gray(int n);
-    // The same, nothing when frame n lies in a damaged stretch (DamagedFrame): for passes over
-    // the video, which leave such a frame out. Throws other failures as read().
+    // The same, nothing when frame n lies in a damaged stretch (DamagedFrame) or is decoded
+    // across one up to the next keyframe (its picture partly made up by the decoder; seed 605620
+    // --damage case 1: H.264 with 0.57 s overwritten, the sync right at confidence 0): for passes
+    // over the video, which leave such a frame out. Throws other failures as read().
     std::optional<cv::Mat> grayUnlessDamaged(int n);
 
 private:
