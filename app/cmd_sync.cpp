@@ -147,7 +147,7 @@ int cmdSync(const QStringList& args, Io io)
         const SyncResult& r = vs.result;
         // A long video indexed from its packets finds its damage only as it is decoded.
         if (vs.track.damaged > 0)
-            io.err << nb::TrCli::tr("warning: %1: %n frame(s) in damaged stretches of the file could not be decoded and were left out",
+            io.err << nb::TrCli::tr("warning: %1: %n frame(s) in damaged stretches of the file, or after one up to the next keyframe, were left out",
                                     "", vs.track.damaged).arg(videoPath)
                    << '\n';
         // Only the frames the offsets tried can put beside the recording are tracked.

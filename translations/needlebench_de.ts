@@ -4721,10 +4721,10 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message numerus="yes">
         <location line="+14"/>
-        <source>warning: %1: %n frame(s) in damaged stretches of the file could not be decoded and were left out</source>
+        <source>warning: %1: %n frame(s) in damaged stretches of the file, or after one up to the next keyframe, were left out</source>
         <translation>
-            <numerusform>Warnung: %1: %n Bild in beschädigten Stellen der Datei ließ sich nicht dekodieren und wurde ausgelassen</numerusform>
-            <numerusform>Warnung: %1: %n Bilder in beschädigten Stellen der Datei ließen sich nicht dekodieren und wurden ausgelassen</numerusform>
+            <numerusform>Warnung: %1: %n Bild in beschädigten Stellen der Datei oder dahinter bis zum nächsten Schlüsselbild wurde ausgelassen</numerusform>
+            <numerusform>Warnung: %1: %n Bilder in beschädigten Stellen der Datei oder dahinter bis zum nächsten Schlüsselbild wurden ausgelassen</numerusform>
         </translation>
     </message>
     <message>
@@ -6763,7 +6763,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+1072"/>
+        <location filename="../core/label_suggest.cpp" line="+1122"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
@@ -7182,7 +7182,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+238"/>
+        <location filename="../video/frame_index.cpp" line="+246"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7218,7 +7218,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-185"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
@@ -7244,13 +7244,13 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+234"/>
+        <location line="+242"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-250"/>
+        <location line="-258"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
@@ -7654,7 +7654,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+2058"/>
+        <location filename="../video/needle_tracker.cpp" line="+2066"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>

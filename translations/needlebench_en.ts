@@ -4652,10 +4652,10 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message numerus="yes">
         <location line="+14"/>
-        <source>warning: %1: %n frame(s) in damaged stretches of the file could not be decoded and were left out</source>
+        <source>warning: %1: %n frame(s) in damaged stretches of the file, or after one up to the next keyframe, were left out</source>
         <translation>
-            <numerusform>warning: %1: %n frame in a damaged stretch of the file could not be decoded and was left out</numerusform>
-            <numerusform>warning: %1: %n frames in damaged stretches of the file could not be decoded and were left out</numerusform>
+            <numerusform>warning: %1: %n frame in a damaged stretch of the file, or after one up to the next keyframe, was left out</numerusform>
+            <numerusform>warning: %1: %n frames in damaged stretches of the file, or after one up to the next keyframe, were left out</numerusform>
         </translation>
     </message>
     <message>
@@ -6654,7 +6654,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+1072"/>
+        <location filename="../core/label_suggest.cpp" line="+1122"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7073,7 +7073,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+238"/>
+        <location filename="../video/frame_index.cpp" line="+246"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -7109,7 +7109,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-185"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7135,13 +7135,13 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+234"/>
+        <location line="+242"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-250"/>
+        <location line="-258"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7545,7 +7545,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+2058"/>
+        <location filename="../video/needle_tracker.cpp" line="+2066"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
