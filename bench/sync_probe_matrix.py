@@ -112,6 +112,8 @@ def damage_video(c, path):
         if at in ('', 'N/A') or pos in ('', 'N/A'):
             continue
         packets.append((float(at), int(pos), int(size)))
+    if not packets:
+        raise RuntimeError(f'ffprobe placed no packet of {path}: nothing to damage')
     end = max(p[0] for p in packets)
     length = rnd.uniform(0.2, 1.5)
     start = rnd.uniform(0.1 * end, max(0.1 * end, 0.9 * end - length))
