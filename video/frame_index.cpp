@@ -148,7 +148,8 @@ int FrameIndex::keyframeAtOrBefore(int n) const
 
 bool FrameIndex::decodedAcrossDamage(int n) const
 {
-    if (!keyframesKnown || n < 0 || n >= size())
+    // Asked for every frame of every pass: an undamaged file answers at once.
+    if (damaged.empty() || !keyframesKnown || n < 0 || n >= size())
         return false;
     const double at_s = frames[std::size_t(n)].time_s, key_s = frames[std::size_t(keyframeAtOrBefore(n))].time_s;
     return std::any_of(damaged.begin(), damaged.end(), [&](const DamagedSpan& d) { return at_s > d.after_s && key_s <= d.after_s; });

@@ -23,14 +23,18 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double median(std::vector<double> v)
+// The median of [first, last), reordering it.
+template <class It>
+double medianInPlace(It first, It last)
 {
-    if (v.empty())
+    if (first == last)
         return kNaN;
-    const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
+    const It mid = first + (last - first) / 2;
+    std::nth_element(first, mid, last);
     return *mid;
 }
+
+double median(std::vector<double> v) { return medianInPlace(v.begin(), v.end()); }
 
 // A strip along a line, sampled every pixel along it and `halfWidth` pixels to either side.
 struct Strip {
@@ -320,10 +324,7 @@ double shaftEnding(const std::vector<double>& shaft, int i, int polarity)
             return kNaN;
         // On the stack: this runs for every sample of every frame's profile.
         std::array<double, std::max(kShaftBehind, kShaftAhead)> values;
-        const auto end = std::copy(shaft.begin() + from, shaft.begin() + to, values.begin());
-        const auto mid = values.begin() + (end - values.begin()) / 2;
-        std::nth_element(values.begin(), mid, end);
-        return *mid;
+        return medianInPlace(values.begin(), std::copy(shaft.begin() + from, shaft.begin() + to, values.begin()));
     };
     // In the shaft's own sign: the tip's edge goes from the shaft to what lies beyond it.
     const double behind = -polarity * stretch(i - kShaftGap - kShaftBehind, i - kShaftGap);
