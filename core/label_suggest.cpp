@@ -625,8 +625,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             continue;
         }
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
-        bool creptOnPlate = false;  // the force read the tissue creeping to rest on the plate's soft part
-        std::optional<Creep> creep;
+        std::optional<Creep> creep;  // the force read the tissue creeping to rest on the plate's soft part
         QString source = forceSource;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)
@@ -753,10 +752,10 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     shortfall.push_back(-over(i));
                 }
                 creep = creepRest(ts, speed, shortfall, h.direction > 0 ? m.bp_Ns_per_m : m.bn_Ns_per_m, noise_N, double(2 * half + 1) / rate);
-                if (creep && creep->rest > 0) {
+                if (creep && creep->rest > 0)
                     cStart += creep->rest;
-                    creptOnPlate = true;
-                }
+                else
+                    creep.reset();
             }
             // a: the tissue is carried with the needle (static friction) and pulls on it only
             // through its inertia, well below the sliding line, until it meets the plate
@@ -834,7 +833,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // to the line has closed to a quarter of what it was when the tissue met the plate.
             const double gap0 = aEnd < cStart ? std::abs(force[aEnd] - line(aEnd)) : 0.0;
             b2Start = cStart;
-            while (!creptOnPlate && b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
+            while (!creep && b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
                 --b2Start;
         } else {
             while (aEnd < h.end && std::abs(v[aEnd]) < o.zeroBand_mm_s / 2)
@@ -1018,7 +1017,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 // where it would stand out of their noise: the force fell short of its line for
                 // another reason (liver3 at 0.81 Hz, a 30 mm slab: c placed
                 // 80 ms late where the tissue stopped within a frame, seed 518445 phase case 11).
-                const bool creepSeen = creptOnPlate && cWindow && cWindow->second <= forceC_s &&
+                const bool creepSeen = creep && cWindow && cWindow->second <= forceC_s &&
                                        !creepUnseen(*tissue, *creep, cWindow->second, forceC_s, h.direction, frame_s, videoNoise_mm_s);
                 cStart = cWindow && !creepSeen ? place(forceC, *cWindow) : (lastMoving > forceC_s + slack ? h.end : forceC);
                 // A tissue that settles slowly does so on the plate's soft part (b1): against
