@@ -152,7 +152,14 @@ bool FrameIndex::decodedAcrossDamage(int n) const
     if (damaged.empty() || !keyframesKnown || n < 0 || n >= size())
         return false;
     const double at_s = frames[std::size_t(n)].time_s, key_s = frames[std::size_t(keyframeAtOrBefore(n))].time_s;
-    return std::any_of(damaged.begin(), damaged.end(), [&](const DamagedSpan& d) { return at_s > d.after_s && key_s <= d.after_s; });
+    return std::any_of(damaged.begin(), damaged.end(), [&](const DamagedSpan& d) {
+        // Random bytes over an H.264 keyframe left a picture the decoder gave out (seed 2 of
+        // test_frame_reader madeUpTimesAfterDamageAreLeftOut): the 60 frames from it were made up.
+        if (at_s > d.after_s)
+            return key_s < d.before_s;
+        const int lastShown = frameAt(d.after_s);
+        return n > lastShown - reorderFrames;
+    });
 }
 
 namespace {
@@ -236,6 +243,20 @@ static void joinNearStretches(std::vector<DamagedSpan>& spans, double near_s)
     spans = std::move(joined);
 }
 
+// After a damaged stretch an inter-coded decoder gives out some pictures it made up with the
+// timestamps of the packets it lost, behind frames it has already given out (a random-byte
+// scratch of an H.264 MP4: 3.7704 s, then 3.2366 s; or 5.9333 s drained after the last frame,
+// 7.9 s). Kept, the index's times went backwards: every later frame was then reached by decoding
+// from the start, the reader could not pass the damage at all ("frame 97 could not be decoded")
+// and the file was called cut off. Such a frame shows no moment of its own: it is left out, as
+// part of the damaged stretch; the reader passes over it as well (FrameReader::grabNext).
+static bool isStrayAfterDamage(const FrameIndex& index, double time_s, int refusedJustBefore)
+{
+    const bool afterDamage = !index.damaged.empty() || refusedJustBefore > 0;
+    // OpenCV's 0 past the start is "no timestamp" (frames drained at the end), placed below.
+    return afterDamage && time_s > 0.0 && !index.frames.empty() && time_s <= index.frames.back().time_s;
+}
+
 // Refused grabs beyond the packets the container counts before the index ends: its count can be
 // a little short (a count from the duration, a last frame drained from the decoder).
 constexpr int kMorePacketsThanCounted = 16;
@@ -304,6 +325,10 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
         }
         FrameInfo f;
         f.time_s = cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
+        if (isStrayAfterDamage(index, f.time_s, refused)) {
+            ++refused;  // its picture is lost with the damaged stretch's
+            continue;
+        }
         // Where it refused, as the frames came out: a B-frame decoder gives them out some
         // frames late, so this is only roughly where the damage lies (see below).
         if (refused > 0 && !index.frames.empty())
@@ -347,8 +372,10 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     // cut off: "only 120 of 270 frames").
     const auto probe = probeKeyframes(path);
     const double start_s = probe ? std::max(0.0, probe->start_s) : 0.0;
-    if (probe)
+    if (probe) {
         index.videoStreams = std::max(1, probe->videoStreams);
+        index.reorderFrames = probe->reorderFrames;
+    }
     const double containerSpan_s = index.fpsNominal > 0.0 ? std::max(0.0, index.containerFrames / index.fpsNominal - start_s) : 0.0;
     const bool endsShort = !index.timestampsMonotonic || readSpan_s < containerSpan_s * (timeBase ? 0.9 : 0.98) - index.frameDuration();
     index.cutShort = !(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1 && endsShort;
@@ -370,8 +397,11 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
             if (const auto n = index.frameWithTime(k - index.timeOrigin_s))
                 index.frames[std::size_t(*n)].keyframe = true;
         index.keyframesKnown = probe->keyframes_s.size() > 0;
-        if (!index.damaged.empty() && index.timestampsMonotonic && !probe->packets_s.empty())
+        if (!index.damaged.empty() && index.timestampsMonotonic && !probe->packets_s.empty()) {
             index.damaged = packetsNotShown(index, probe->packets_s);
+            // Frames a B-frame decoder gives out between its refusals split one scratch in many.
+            joinNearStretches(index.damaged, kDecoderDelayFrames * index.frameDuration());
+        }
     }
     index.warnings = indexWarnings(index);
     return index;

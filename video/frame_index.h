@@ -58,6 +58,7 @@ struct FrameIndex {
     bool fromPackets = false;     // indexed from the container's packets, without decoding
     bool cutShort = false;        // the readable frames end short of what the container says
     int videoStreams = 1;         // video streams in the file (the first is the one read)
+    int reorderFrames = 0;        // pictures shown before one they are predicted from (B-frames; 0 when unknown)
     std::vector<DamagedSpan> damaged;  // undecodable stretches that readable frames follow
     // What a user should know, in the language of the program reading the index (a stored
     // index says it in the reader's language, not the indexer's): see indexWarnings().
@@ -82,10 +83,11 @@ struct FrameIndex {
     std::optional<int> frameWithTime(double t) const;
     // The last keyframe at or before frame n.
     int keyframeAtOrBefore(int n) const;
-    // Whether frame n is decoded from pictures a damaged stretch took: it follows the stretch
-    // with no keyframe between (a codec that codes each picture alone flags every frame a
-    // keyframe). Its picture is what the decoder made up for the lost ones. False when the
-    // keyframes are not known.
+    // Whether frame n is decoded from pictures a damaged stretch took: it follows the stretch's
+    // start with no keyframe after the stretch between (a codec that codes each picture alone
+    // flags every frame a keyframe; a keyframe within the stretch may be damaged itself), or it is
+    // one of the B-frames shown just before it. Its picture is what the decoder made up for the
+    // lost ones. False when the keyframes are not known.
     bool decodedAcrossDamage(int n) const;
 };
 

@@ -19,8 +19,10 @@ constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
 // their text (a stored index spoke the language of the program that made it); 4: the count of
 // video streams; 5: an MPEG-TS file's stream counted once (4 counted it in its program too); 6: the
 // frames of a two- or three-frame B-frame clip timed (5 kept them all at 0); 7: the frames after a
-// damaged stretch, and the stretches (6 ended the index at the first)
-constexpr quint32 kVersion = 7;
+// damaged stretch, and the stretches (6 ended the index at the first); 8: pictures made up after
+// damage with times behind the frames before them left out (7 kept them: times out of order), and
+// the stream's reorder depth
+constexpr quint32 kVersion = 8;
 // Indexes kept at most; the least recently stored go first.
 constexpr int kMaxStored = 300;
 
@@ -78,7 +80,7 @@ std::optional<FrameIndex> loadStoredFrameIndex(const QString& videoPath, const Q
     qint32 width = 0, height = 0, containerFrames = 0;
     quint32 count = 0, damaged = 0;
     in >> index.codec >> width >> height >> index.fpsNominal >> containerFrames >> index.keyframesKnown >>
-        index.timestampsMonotonic >> index.rotation_deg >> index.fromPackets >> index.cutShort >> index.videoStreams >> index.timeOrigin_s >> damaged;
+        index.timestampsMonotonic >> index.rotation_deg >> index.fromPackets >> index.cutShort >> index.videoStreams >> index.reorderFrames >> index.timeOrigin_s >> damaged;
     if (in.status() != QDataStream::Ok || damaged > 10'000'000u)
         return std::nullopt;
     index.damaged.resize(damaged);
@@ -123,7 +125,7 @@ bool storeFrameIndex(const FrameIndex& index, const QString& storeDir)
     out << kMagic << kVersion << stamp->path << stamp->size << stamp->modified_ms;
     out << index.codec << qint32(index.width) << qint32(index.height) << index.fpsNominal << qint32(index.containerFrames)
         << index.keyframesKnown << index.timestampsMonotonic << qint32(index.rotation_deg) << index.fromPackets << index.cutShort << qint32(index.videoStreams)
-        << index.timeOrigin_s << quint32(index.damaged.size());
+        << qint32(index.reorderFrames) << index.timeOrigin_s << quint32(index.damaged.size());
     for (const DamagedSpan& d : index.damaged)
         out << d.after_s << d.before_s << qint32(d.packets);
     out << quint32(index.frames.size());

@@ -51,27 +51,36 @@ int FrameReader::grabNext()
     // of the file each refusal is immediate.
     constexpr int kRefusalsTried = 1000;
     int refused = 0;
-    while (!cap_.grab())
-        if (!index_.timestampsMonotonic || ++refused > damagedPackets_ + kRefusalsTried)
-            return -1;
-    refused_ = refused_ || refused > 0;
-    ++stats_.grabbed;
-    // Counting is exact while decoding on from a known frame; after a seek, or packets
-    // skipped, only the timestamp tells where we are.
-    const int counted = refused == 0 && (current_ >= 0 || fresh_) ? current_ + 1 : -2;
-    fresh_ = false;
-    if (index_.timestampsMonotonic) {
-        const double t = cap_.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
-        // A zero time past the start is OpenCV's "no timestamp" (drained frames).
-        if (t > 0.0 || counted == 0) {
-            if (const auto j = index_.frameWithTime(t - index_.timeOrigin_s)) {
-                current_ = *j;
-                return current_;
+    for (;;) {
+        while (!cap_.grab())
+            if (!index_.timestampsMonotonic || ++refused > damagedPackets_ + kRefusalsTried)
+                return -1;
+        refused_ = refused_ || refused > 0;
+        ++stats_.grabbed;
+        // Counting is exact while decoding on from a known frame; after a seek, or packets
+        // skipped, only the timestamp tells where we are.
+        const int counted = refused == 0 && (current_ >= 0 || fresh_) ? current_ + 1 : -2;
+        fresh_ = false;
+        if (index_.timestampsMonotonic) {
+            const double t = cap_.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
+            // A zero time past the start is OpenCV's "no timestamp" (drained frames).
+            if (t > 0.0 || counted == 0) {
+                const auto j = index_.frameWithTime(t - index_.timeOrigin_s);
+                // A picture the decoder made up after damage, with a lost packet's time, that
+                // the index left out (isStrayAfterDamage): not a frame; the count goes on past it.
+                if (damagedPackets_ > 0 && t > 0.0 && (!j || (current_ >= 0 && *j <= current_))) {
+                    refused_ = true;
+                    continue;
+                }
+                if (j) {
+                    current_ = *j;
+                    return current_;
+                }
             }
         }
+        current_ = counted < 0 ? -1 : counted;
+        return counted;
     }
-    current_ = counted < 0 ? -1 : counted;
-    return counted;
 }
 
 bool FrameReader::forwardIsCheaper(int from, int to) const

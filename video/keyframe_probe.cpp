@@ -11,7 +11,7 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
     // decodes.
     const auto stream = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"),
                                        QStringLiteral("v"), QStringLiteral("-show_entries"),
-                                       QStringLiteral("stream=codec_name,start_time:stream_disposition=attached_pic"),
+                                       QStringLiteral("stream=codec_name,start_time,has_b_frames:stream_disposition=attached_pic"),
                                        QStringLiteral("-of"), QStringLiteral("default"), ffprobeInput(path)});
     if (!stream)
         return std::nullopt;
@@ -33,6 +33,8 @@ std::optional<ProbeResult> probeKeyframes(const QString& path)
         for (const QByteArray& line : block.split('\n')) {
             if (line.startsWith("codec_name="))
                 r.codec = QString::fromUtf8(line.mid(11)).trimmed();
+            else if (line.startsWith("has_b_frames="))
+                r.reorderFrames = std::clamp(line.mid(13).trimmed().toInt(), 0, 16);
             else if (line.startsWith("start_time=")) {
                 bool ok = false;
                 const double s = line.mid(11).trimmed().toDouble(&ok);

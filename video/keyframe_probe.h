@@ -15,6 +15,7 @@ struct ProbeResult {
     std::vector<double> packets_s;    // every packet's time so, in presentation order; empty when some have none
     double start_s = 0.0;             // the stream's start time in the file
     int videoStreams = 1;             // video streams in the file, cover pictures aside
+    int reorderFrames = 0;            // the stream's has_b_frames: pictures shown before one they are predicted from
 };
 
 std::optional<ProbeResult> probeKeyframes(const QString& path);

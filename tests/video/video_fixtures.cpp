@@ -6,6 +6,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cstring>
+#include <functional>
+#include <random>
 
 namespace nb::test {
 
@@ -95,7 +97,10 @@ int readCode(const QImage& image)
     return readCode(bgr);
 }
 
-int writeScratched(const QString& from, const QString& to, double t0_s, double t1_s)
+namespace {
+// Overwrites the video packets shown from t0_s to t1_s, from byte `kept` of each on, with `fill`.
+int overwritePackets(const QString& from, const QString& to, double t0_s, double t1_s, qint64 kept,
+                     const std::function<char(qint64)>& fill)
 {
     QProcess probe;
     probe.start(QStringLiteral("ffprobe"), {"-v", "error", "-select_streams", "v:0", "-show_entries", "packet=pts_time,pos,size", "-of", "csv=p=0", from});
@@ -109,11 +114,25 @@ int writeScratched(const QString& from, const QString& to, double t0_s, double t
         if (f.size() < 3 || f[0].toDouble() < t0_s || f[0].toDouble() > t1_s)
             continue;
         const qint64 pos = f[2].toLongLong(), size = f[1].toLongLong();
-        for (qint64 i = pos; i < pos + size && i < bytes.size(); ++i)
-            bytes[i] = char(0xff ^ (i * 7919 % 251));
+        if (size <= kept)
+            continue;
+        for (qint64 i = pos + kept; i < pos + size && i < bytes.size(); ++i)
+            bytes[i] = fill(i);
         ++scratched;
     }
     return out.write(bytes) == bytes.size() ? scratched : -1;
+}
+}  // namespace
+
+int writeScratched(const QString& from, const QString& to, double t0_s, double t1_s)
+{
+    return overwritePackets(from, to, t0_s, t1_s, 0, [](qint64 i) { return char(0xff ^ (i * 7919 % 251)); });
+}
+
+int writeScrambled(const QString& from, const QString& to, double t0_s, double t1_s, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    return overwritePackets(from, to, t0_s, t1_s, 8, [&rng](qint64) { return char(rng() & 0xff); });
 }
 
 }  // namespace nb::test

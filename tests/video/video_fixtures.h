@@ -40,6 +40,12 @@ void keepFromReadingAsId3(cv::Mat& firstFrame);
 // sector leaves. Returns the packets overwritten (-1 when ffprobe or a file failed).
 int writeScratched(const QString& from, const QString& to, double t0_s, double t1_s);
 
+// The same, but each packet keeps its first 8 bytes (an MP4 packet's length and the NAL unit's
+// header) and the rest is random bytes drawn from `seed`: the decoder then reads nonsense slices
+// instead of skipping the packets, conceals, and gives out pictures it made up, some with the
+// times of packets it lost (bench/sync_probe_matrix.py --damage does the same).
+int writeScrambled(const QString& from, const QString& to, double t0_s, double t1_s, unsigned seed);
+
 // Codes 0..n-1.
 std::vector<int> sequence(int n);
 
