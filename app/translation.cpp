@@ -22,14 +22,23 @@ void setPreferredLanguage(const QString& code) { QSettings().setValue(QStringLit
 
 void installTranslation(QCoreApplication& app)
 {
+    // The language installed before goes: kept, it answered every string the new one leaves to
+    // the source (English keeps most so), and a window in English showed German notes.
+    const QString ours = QStringLiteral("needlebench-translation");
+    for (QTranslator* before : app.findChildren<QTranslator*>(ours, Qt::FindDirectChildrenOnly)) {
+        QCoreApplication::removeTranslator(before);
+        delete before;
+    }
     const QString lang = preferredLanguage();
     // English is the source language; its .qm only holds the plural forms ("1 run", "2 runs").
     auto* own = new QTranslator(&app);
+    own->setObjectName(ours);
     if (own->load(QStringLiteral(":/i18n/needlebench_%1.qm").arg(lang)))
         app.installTranslator(own);
     if (lang == QLatin1String("en"))
         return;
     auto* qt = new QTranslator(&app);
+    qt->setObjectName(ours);
     if (qt->load(QStringLiteral("qtbase_%1").arg(lang), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         app.installTranslator(qt);
 }

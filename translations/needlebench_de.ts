@@ -2286,17 +2286,22 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+698"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-669"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+15"/>
+        <source>decoded across a damaged stretch: partly made up by the decoder</source>
+        <translation>über eine beschädigte Strecke hinweg dekodiert: teils vom Decoder ergänzt</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -2352,12 +2357,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1061"/>
+        <location line="+1077"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1058"/>
+        <location line="-1074"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2383,12 +2388,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+581"/>
+        <location line="+597"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2512,12 +2517,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+851"/>
+        <location line="+867"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-655"/>
+        <location line="-667"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation>die Label-Datei konnte nicht beiseitegelegt werden: das nächste gespeicherte Label ersetzt sie</translation>
     </message>
@@ -2542,7 +2547,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+295"/>
+        <location line="+307"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2602,7 +2607,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-966"/>
+        <location line="-982"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2612,7 +2617,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Phasen oder Ereignisse aus Kraft und Position und, wenn vorhanden, aus dem synchronisierten Video</translation>
     </message>
     <message>
-        <location line="+223"/>
+        <location line="+227"/>
         <source>No run open: double-click one in the session list</source>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
@@ -2656,7 +2661,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+35"/>
         <source>Video and sync not kept: %1</source>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
@@ -2751,7 +2756,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-934"/>
+        <location line="-950"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2801,7 +2806,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Labels dieses Protokolls und ihre Tasten hinzufügen, umbenennen oder entfernen</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+62"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation>Tasten: %1 · S teilen · Entf löschen · Strg+Z rückgängig</translation>
     </message>
@@ -2826,7 +2831,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="+152"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -7182,7 +7187,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+247"/>
+        <location filename="../video/frame_index.cpp" line="+268"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7218,7 +7223,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-207"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
@@ -7244,13 +7249,13 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+243"/>
+        <location line="+268"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-284"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
@@ -7270,7 +7275,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+91"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
@@ -7908,7 +7913,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+19"/>
+        <location filename="../widgets/video_view.cpp" line="+21"/>
         <source>Open video…</source>
         <translation>Video öffnen…</translation>
     </message>
@@ -7923,7 +7928,7 @@ F = %1 x + %2 x²
         <translation>Kein Video. Eines öffnen oder die Datei hierher ziehen, um es mit der Kraftaufzeichnung auszuwerten.</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>frame %1   %2 s</source>
         <translation>Bild %1   %2 s</translation>
     </message>

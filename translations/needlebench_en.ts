@@ -2280,17 +2280,22 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+698"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-669"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+15"/>
+        <source>decoded across a damaged stretch: partly made up by the decoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2346,12 +2351,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1061"/>
+        <location line="+1077"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1058"/>
+        <location line="-1074"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2377,12 +2382,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+581"/>
+        <location line="+597"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2506,12 +2511,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+851"/>
+        <location line="+867"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-655"/>
+        <location line="-667"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2536,7 +2541,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+295"/>
+        <location line="+307"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2596,7 +2601,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-966"/>
+        <location line="-982"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2606,7 +2611,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+223"/>
+        <location line="+227"/>
         <source>No run open: double-click one in the session list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2650,7 +2655,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+35"/>
         <source>Video and sync not kept: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2743,7 +2748,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-934"/>
+        <location line="-950"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2793,7 +2798,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+62"/>
         <source>Keys: %1 · S split · Del delete · Ctrl+Z undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2818,7 +2823,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="+152"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7073,7 +7078,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+247"/>
+        <location filename="../video/frame_index.cpp" line="+268"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -7109,7 +7114,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-207"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7135,13 +7140,13 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+243"/>
+        <location line="+268"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-284"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7161,7 +7166,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+91"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7797,7 +7802,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+19"/>
+        <location filename="../widgets/video_view.cpp" line="+21"/>
         <source>Open video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7812,7 +7817,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>frame %1   %2 s</source>
         <translation type="unfinished"></translation>
     </message>

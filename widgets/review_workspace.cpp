@@ -92,8 +92,8 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
             attachPending_ = false;
             storeVideoLink();
         }
-        for (const QString& w : index->warnings)
-            showStatus(tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), w));
+        if (const QString said = videoWarnings(); !said.isEmpty())
+            showStatus(said);
         if (!notAttached_.isEmpty())
             showStatus(std::exchange(notAttached_, QString()));
         if (run_.size() == 0)
@@ -125,7 +125,8 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         if (!index_)
             return;
         frame_ = n;
-        video_->setFrame(image, n, t);
+        video_->setFrame(image, n, t,
+                         index_->decodedAcrossDamage(n) ? tr("decoded across a damaged stretch: partly made up by the decoder") : QString());
         emit frameShown(n);
     });
     connect(model_, &LabelModel::labelsChanged, this, [this] {
@@ -438,6 +439,10 @@ void ReviewWorkspace::buildUi()
     status_->setObjectName(QStringLiteral("reviewStatus"));
     status_->setWordWrap(true);
     status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    // Two lines kept for it: a status that wrapped to a second line moved the buttons above it
+    // down a line, under the pointer of an operator about to click one (and under xdotool's).
+    status_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    status_->setMinimumHeight(2 * status_->fontMetrics().lineSpacing());
 
     auto* top = new QSplitter(Qt::Horizontal, this);
     top->addWidget(video_);
@@ -761,9 +766,21 @@ void ReviewWorkspace::restoreVideoLink()
         requested_ = -1;
         requestFrameForCursor();
         trackInBackground();
+        // The run opened again with its video still open: the video's warnings (a damaged
+        // stretch) were said only when it was opened, and the run's line covered them.
+        if (const QString said = videoWarnings(); !said.isEmpty())
+            showStatus(status_->text() + QStringLiteral("; ") + said);
     }
     if (!problem.isEmpty())
         showStatus(problem);
+}
+
+QString ReviewWorkspace::videoWarnings() const
+{
+    // All of them: each used to replace the one before, and only the last was read.
+    if (!index_ || index_->warnings.isEmpty())
+        return {};
+    return tr("%1: %2").arg(QFileInfo(videoPath_).fileName(), index_->warnings.join(QStringLiteral("; ")));
 }
 
 void ReviewWorkspace::storeVideoLink()

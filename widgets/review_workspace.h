@@ -139,6 +139,7 @@ protected:
 private:
     // Video link kept per run (core/run_video_link.h).
     void restoreVideoLink();
+    QString videoWarnings() const;  // the open video's warnings in one line (empty when none)
     void storeVideoLink();
     void clearVideo();
     void alignTimeline();

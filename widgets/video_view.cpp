@@ -1,5 +1,7 @@
 #include "video_view.h"
 
+#include <algorithm>
+
 #include <QLocale>
 
 #include <QDragEnterEvent>
@@ -58,11 +60,12 @@ void VideoView::dropEvent(QDropEvent* e)
     }
 }
 
-void VideoView::setFrame(const QImage& image, int index, double time_s)
+void VideoView::setFrame(const QImage& image, int index, double time_s, const QString& note)
 {
     image_ = image;
     index_ = index;
     time_ = time_s;
+    note_ = note;
     message_.clear();
     openButton_->hide();
     update();
@@ -116,10 +119,17 @@ void VideoView::paintEvent(QPaintEvent*)
         p.drawRect(QRectF(t.x() + roi_.x() * sx, t.y() + roi_.y() * sy, roi_.width() * sx, roi_.height() * sy));
     }
     const QString caption = tr("frame %1   %2 s").arg(index_).arg(QLocale().toString(time_, 'f', 3));
+    const QFontMetrics fm = p.fontMetrics();
+    const int lines = note_.isEmpty() ? 1 : 2;
+    const QString note = fm.elidedText(note_, Qt::ElideRight, std::max(0, t.width() - 16));  // a small view or a narrow picture
+    const int wide = std::max(fm.horizontalAdvance(caption), note.isEmpty() ? 0 : fm.horizontalAdvance(note));
+    p.fillRect(QRect(t.x() + 4, t.y() + 4, wide + 8, lines * fm.height() + 4), QColor(0, 0, 0, 150));
     p.setPen(Qt::white);
-    p.fillRect(QRect(t.x() + 4, t.y() + 4, p.fontMetrics().horizontalAdvance(caption) + 8, p.fontMetrics().height() + 4),
-               QColor(0, 0, 0, 150));
-    p.drawText(t.x() + 8, t.y() + 6 + p.fontMetrics().ascent(), caption);
+    p.drawText(t.x() + 8, t.y() + 6 + fm.ascent(), caption);
+    if (!note_.isEmpty()) {
+        p.setPen(QColor(255, 190, 60));
+        p.drawText(t.x() + 8, t.y() + 6 + fm.height() + fm.ascent(), note);
+    }
 }
 
 void VideoView::mousePressEvent(QMouseEvent* e)

@@ -14,9 +14,12 @@ class VideoView : public QWidget {
     Q_OBJECT
 public:
     explicit VideoView(QWidget* parent = nullptr);
-    void setFrame(const QImage& image, int index, double time_s);
+    // `note` follows the frame number and time, in amber: something the operator should know
+    // about this picture (that the decoder made part of it up).
+    void setFrame(const QImage& image, int index, double time_s, const QString& note = {});
     void setMessage(const QString& text);  // shown instead of a frame (no video, indexing...)
     QString message() const { return message_; }
+    QString note() const { return note_; }
     QRect roi() const { return roi_; }     // in video pixels; empty = whole frame
     void setRoi(const QRect& roi);
     int frameIndex() const { return index_; }
@@ -46,6 +49,7 @@ private:
     QImage image_;
     int index_ = -1;
     double time_ = 0.0;
+    QString note_;
     QString message_;
     QRect roi_;
     QPoint dragStart_;

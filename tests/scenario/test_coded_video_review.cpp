@@ -12,9 +12,11 @@
 
 #include "core/run_file.h"
 #include "core/sync.h"
+#include "video/frame_index.h"
 #include "video/video_fixtures.h"
 #include "widgets/control_panel.h"
 #include "widgets/review_workspace.h"
+#include "widgets/video_view.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -302,9 +304,12 @@ private slots:
         w.reviewRun(sine);
         nb::ReviewWorkspace* review = w.reviewWorkspace();
         QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
-        review->openVideo(damaged);
+        QVERIFY(review->attachVideo(damaged));  // as Open video… does
         QVERIFY(opened.count() > 0 || opened.wait(60000));
         QVERIFY2(review->status().contains(file) && review->status().contains(QStringLiteral("damaged between")), qPrintable(review->status()));
+        // Opened again, the run keeps its video open, and says again that it is damaged.
+        w.reviewRun(sine);
+        QTRY_VERIFY2_WITH_TIMEOUT(review->status().contains(QStringLiteral("damaged between")), qPrintable(review->status()), 30000);
         QSignalSpy synced(review, &nb::ReviewWorkspace::syncFinished);
         QVERIFY(p->interlockState().moving);
         review->startAutoSync();
@@ -314,6 +319,25 @@ private slots:
         qInfo("%s damaged: found %.4f s (true %.4f s, %+.2f frames), confidence %.2f", qPrintable(file), found.offset_s, kOffset_s,
               (found.offset_s - kOffset_s) * kFps, found.confidence);
         QVERIFY2(std::abs(found.offset_s - kOffset_s) < 1.0 / kFps, qPrintable(QString::number(found.offset_s)));
+
+        // Where the keyframes are known (H.264), a frame decoded across the damage says over the
+        // picture that the decoder made it partly up; the keyframe after the damage says nothing.
+        const nb::video::FrameIndex index = nb::video::buildFrameIndex(damaged);
+        if (index.keyframesKnown) {
+            int across = 0;
+            while (across < index.size() && !index.decodedAcrossDamage(across))
+                ++across;
+            int clean = across;
+            while (clean < index.size() && index.decodedAcrossDamage(clean))
+                ++clean;
+            QVERIFY2(clean < index.size(), "no frame decoded across the damage, or none after it");
+            for (const int n : {across, clean}) {
+                review->stepFrames(n - review->videoView()->frameIndex());
+                QTRY_COMPARE_WITH_TIMEOUT(review->videoView()->frameIndex(), n, 20000);
+                QVERIFY2(review->videoView()->note().contains(QStringLiteral("damaged stretch")) == (n == across),
+                         qPrintable(QStringLiteral("frame %1: '%2'").arg(n).arg(review->videoView()->note())));
+            }
+        }
         expectEndedWhole(w);
     }
 };
