@@ -7187,7 +7187,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+268"/>
+        <location filename="../video/frame_index.cpp" line="+279"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7223,12 +7223,20 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="-207"/>
+        <location line="-211"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
     <message numerus="yes">
-        <location line="-9"/>
+        <location line="-14"/>
+        <source>the file&apos;s first %1 s are damaged: %n packet(s) there could not be decoded; its frames start at %1 s</source>
+        <translation>
+            <numerusform>die ersten %1 s der Datei sind beschädigt: %n Paket dort ließ sich nicht dekodieren; ihre Bilder beginnen bei %1 s</numerusform>
+            <numerusform>die ersten %1 s der Datei sind beschädigt: %n Pakete dort ließen sich nicht dekodieren; ihre Bilder beginnen bei %1 s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
         <source>the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; the frames on either side are read</source>
         <translation>
             <numerusform>die Datei ist zwischen %1 s und %2 s beschädigt: %n Paket dort ließ sich nicht dekodieren und fehlt; die Bilder davor und danach werden gelesen</numerusform>
@@ -7249,18 +7257,19 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+268"/>
+        <location line="+275"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
+        <location line="+9"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-284"/>
+        <location line="-297"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>

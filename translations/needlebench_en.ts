@@ -7078,7 +7078,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+268"/>
+        <location filename="../video/frame_index.cpp" line="+279"/>
         <location filename="../video/packet_index.cpp" line="+36"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -7114,12 +7114,20 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-207"/>
+        <location line="-211"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="-9"/>
+        <location line="-14"/>
+        <source>the file&apos;s first %1 s are damaged: %n packet(s) there could not be decoded; its frames start at %1 s</source>
+        <translation>
+            <numerusform>the file&apos;s first %1 s are damaged: %n packet there could not be decoded; its frames start at %1 s</numerusform>
+            <numerusform>the file&apos;s first %1 s are damaged: %n packets there could not be decoded; its frames start at %1 s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
         <source>the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; the frames on either side are read</source>
         <translation>
             <numerusform>the file is damaged between %1 s and %2 s: %n packet there could not be decoded and is left out; the frames on either side are read</numerusform>
@@ -7140,18 +7148,19 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+268"/>
+        <location line="+275"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
+        <location line="+9"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-284"/>
+        <location line="-297"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>frame timestamps are not increasing: frames are reached by decoding from the start</source>
         <translation type="unfinished"></translation>
     </message>

@@ -35,7 +35,8 @@ double FrameIndex::duration_s() const
 {
     if (frames.empty())
         return 0.0;
-    return frames.back().time_s - frames.front().time_s + frameDuration();
+    // From the file's start: a file whose first packets are damaged has its first frame later.
+    return frames.back().time_s + frameDuration();
 }
 
 void FrameIndex::updateStats()
@@ -76,6 +77,12 @@ QStringList indexWarnings(const FrameIndex& index)
     constexpr std::size_t kSpansNamed = 3;
     for (std::size_t i = 0; i < std::min(index.damaged.size(), kSpansNamed); ++i) {
         const DamagedSpan& d = index.damaged[i];
+        if (!index.frames.empty() && d.before_s <= index.frames.front().time_s) {
+            w << nb::TrDevices::tr("the file's first %1 s are damaged: %n packet(s) there could not be decoded; its frames start at %1 s",
+                                   "", d.packets)
+                     .arg(QLocale().toString(d.before_s, 'f', 3));
+            continue;
+        }
         w << nb::TrDevices::tr("the file is damaged between %1 s and %2 s: %n packet(s) there could not be decoded and are left out; "
                                "the frames on either side are read", "", d.packets)
                  .arg(QLocale().toString(d.after_s, 'f', 3), QLocale().toString(d.before_s, 'f', 3));
@@ -217,8 +224,12 @@ static std::vector<DamagedSpan> packetsNotShown(const FrameIndex& index, const s
             continue;
         }
         if (!open) {
-            const std::size_t before = std::size_t(index.frameAt(t));
-            out.push_back({index.frames[before].time_s, index.frames[before + 1].time_s, 0});
+            if (t < index.frames.front().time_s) {  // the file's start (its frames start later)
+                out.push_back({0.0, index.frames.front().time_s, 0});
+            } else {
+                const std::size_t before = std::size_t(index.frameAt(t));
+                out.push_back({index.frames[before].time_s, index.frames[before + 1].time_s, 0});
+            }
             open = true;
         }
         ++out.back().packets;
@@ -317,6 +328,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     // keyframe. Grabbing on reads the packets after it. At the end of the file every grab fails,
     // at once, so the packets the container says are left bound the tries.
     int refused = 0;
+    int refusedBeforeFirst = 0;
     while (!(cancel && cancel->load())) {
         if (!cap.grab()) {
             if (++refused > std::max(0, index.containerFrames - index.size()) + kMorePacketsThanCounted)
@@ -333,6 +345,8 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
         // frames late, so this is only roughly where the damage lies (see below).
         if (refused > 0 && !index.frames.empty())
             index.damaged.push_back({index.frames.back().time_s, f.time_s, refused});
+        else if (index.frames.empty())
+            refusedBeforeFirst = refused;
         refused = 0;
         if (cap.retrieve(current) && !current.empty()) {
             f.duplicate = samePicture(previous, current);
@@ -364,13 +378,20 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     // duration over the usual interval counts dropped frames too), taken with more slack.
     const bool timeBase = index.fpsNominal * index.frameDuration() > 2.0;
     const int expected = containerPictures(index);
-    // Frames missing in the middle (a capture that dropped them: the timestamps jump) are no
-    // sign of a cut file; only a file whose readable frames end short of its duration is.
-    const double readSpan_s = index.frames.back().time_s - index.frames.front().time_s + index.frameDuration();
     // A stream that starts later than 0 (an MKV written with a start time of 5 s) may count its
     // frames to its end time: its readable frames end there, not 5 s short of it (it was called
     // cut off: "only 120 of 270 frames").
     const auto probe = probeKeyframes(path);
+    // The file's first packets refused (random bytes over its first keyframe): its frames start
+    // later than the file does, and keep their own times. The first readable frame was taken
+    // for the start: every frame 0.73 s early, and the file called cut off.
+    std::optional<double> fileStart_s;
+    if (refusedBeforeFirst > 0 && probe && !probe->packets_s.empty()
+        && probe->packets_s.front() < index.frames.front().time_s - 0.5 * index.frameDuration())
+        fileStart_s = probe->packets_s.front();
+    // Frames missing in the middle (a capture that dropped them: the timestamps jump) are no
+    // sign of a cut file; only a file whose readable frames end short of its duration is.
+    const double readSpan_s = index.frames.back().time_s - fileStart_s.value_or(index.frames.front().time_s) + index.frameDuration();
     const double start_s = probe ? std::max(0.0, probe->start_s) : 0.0;
     if (probe) {
         index.videoStreams = std::max(1, probe->videoStreams);
@@ -380,13 +401,15 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     const bool endsShort = !index.timestampsMonotonic || readSpan_s < containerSpan_s * (timeBase ? 0.9 : 0.98) - index.frameDuration();
     index.cutShort = !(cancel && cancel->load()) && expected > 0 && index.size() < expected * (timeBase ? 0.9 : 0.98) - 1 && endsShort;
 
-    index.timeOrigin_s = index.frames.front().time_s;
+    index.timeOrigin_s = fileStart_s.value_or(index.frames.front().time_s);
     for (FrameInfo& f : index.frames)
         f.time_s -= index.timeOrigin_s;
     for (DamagedSpan& d : index.damaged) {
         d.after_s -= index.timeOrigin_s;
         d.before_s -= index.timeOrigin_s;
     }
+    if (fileStart_s)
+        index.damaged.insert(index.damaged.begin(), DamagedSpan{0.0, index.frames.front().time_s, refusedBeforeFirst});
     joinNearStretches(index.damaged, kDecoderDelayFrames * index.frameDuration());
     index.updateStats();
     index.frames.front().keyframe = true;

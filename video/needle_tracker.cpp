@@ -282,11 +282,11 @@ double robustSigma(const std::vector<std::vector<double>>& gradients)
     for (std::size_t i = 0; i < n; i += 2) {
         for (std::size_t k = 0; k < gradients.size(); ++k)
             column[k] = gradients[k][i];
-        const double m = median(column);
+        const double m = medianInPlace(column.begin(), column.end());  // refilled for the next sample
         for (double v : column)
             dev.push_back(std::abs(v - m));
     }
-    return std::max(1e-6, 1.4826 * median(dev));
+    return std::max(1e-6, 1.4826 * medianInPlace(dev.begin(), dev.end()));
 }
 
 // Where the parabola through three neighbouring samples `a`, `b`, `c` (b the highest) peaks,

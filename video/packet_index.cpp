@@ -98,9 +98,18 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
     // The decoder's time of frame 0 (AVI with B-frames reports every frame late by its delay):
     // the reader compares decoded times with the index through it.
     cv::VideoCapture cap(path.toStdString(), cv::CAP_FFMPEG);
-    if (!cap.isOpened() || !cap.grab())
+    if (!cap.isOpened())
         throw VideoError(path, nb::TrDevices::tr("no frame could be decoded (truncated or corrupt file?)"));
-    const double first = cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
+    // A damaged start (the decoder refuses the first packets) is passed over, as the reader does
+    // later. Its first frame then is not the first packet's: with times from the packets, the
+    // origin is the first packet's (the decoder's and ffprobe's times count from the stream's
+    // start alike); the first frame decoded would put every frame that much late.
+    constexpr int kRefusalsTried = 1000;
+    int refused = 0;
+    while (!cap.grab())
+        if (++refused > std::min(kRefusalsTried, int(list.size())))
+            throw VideoError(path, nb::TrDevices::tr("no frame could be decoded (truncated or corrupt file?)"));
+    const double first = refused > 0 && timed ? list.front().pts : cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
     turnIndexUpright(index, takeRotation(cap));
     index.containerFrames = int(list.size());
     index.frames.reserve(list.size());

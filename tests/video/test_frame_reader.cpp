@@ -442,6 +442,61 @@ private slots:
         QCOMPARE(stored.warnings, index.warnings);
     }
 
+    // The file's first packets damaged (its first keyframe among them): its frames keep their
+    // own times. The first readable frame was taken for the start, so every frame came 0.73 s
+    // early, the file was called cut off, and the index from the packets (a long video's) failed
+    // at its first refused packet.
+    void damagedStartKeepsTheTimes()
+    {
+        VideoSpec spec;
+        spec.codes = sequence(150);
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        const QString wholeFile = path(QStringLiteral("whole-start.mp4")), damagedFile = path(QStringLiteral("damaged-start.mp4"));
+        QVERIFY(writeVideo(wholeFile, spec).isEmpty());
+        const FrameIndex whole = buildFrameIndex(wholeFile);
+        QCOMPARE(whole.size(), 150);
+        QVERIFY(writeScratched(wholeFile, damagedFile, 0.0, 0.51) >= 10);  // frames 0-15
+
+        const FrameIndex index = buildFrameIndex(damagedFile);
+        const QString said = index.warnings.join(QLatin1Char('\n'));
+        QVERIFY2(!index.cutShort && !said.contains(QStringLiteral("cut off")) && said.contains(QStringLiteral("first")), qPrintable(said));
+        QCOMPARE(index.damaged.size(), std::size_t(1));
+        QCOMPARE(index.damaged.front().after_s, 0.0);
+        QCOMPARE(index.damaged.front().before_s, index.frames.front().time_s);
+        QVERIFY2(index.frames.front().time_s > 0.5, qPrintable(QString::number(index.frames.front().time_s)));
+        QCOMPARE(index.duration_s(), whole.duration_s());
+
+        // Every frame read is at its own time; from the next keyframe (frame 30) on it shows its
+        // own picture, and the frames before it are decoded across the damage.
+        FrameReader reader(index, 4);
+        int pictures = 0;
+        for (int j = 0; j < index.size(); ++j) {
+            const auto n = whole.frameWithTime(index.frames[std::size_t(j)].time_s);
+            QVERIFY2(n, qPrintable(QStringLiteral("frame %1 at %2 s is at no frame's time").arg(j).arg(index.frames[std::size_t(j)].time_s)));
+            QCOMPARE(index.decodedAcrossDamage(j), *n < 30);
+            try {
+                const DecodedFrame f = reader.read(j);
+                if (*n >= 30) {
+                    QCOMPARE(readCode(f.image), *n);
+                    ++pictures;
+                }
+            } catch (const DamagedFrame&) {
+                QVERIFY2(*n < 30, qPrintable(QString::number(*n)));
+            }
+        }
+        QCOMPARE(pictures, 120);
+
+        // So does the index from the packets alone.
+        const auto packets = buildFrameIndexFromPackets(damagedFile);
+        QVERIFY(packets.has_value());
+        FrameReader fromPackets(*packets, 4);
+        for (int n : {30, 45, 100, 149, 60}) {
+            const auto j = packets->frameWithTime(whole.frames[std::size_t(n)].time_s);
+            QVERIFY(j.has_value());
+            QCOMPARE(readCode(fromPackets.read(*j).image), n);
+        }
+    }
+
     // Random bytes over a stretch of an H.264 MP4 (a bad copy): the decoder conceals what it
     // lost and gives out made-up pictures, some with the times of the lost packets, behind frames
     // it has given out already. Those times made the index run backwards: the reader could not
