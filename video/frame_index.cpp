@@ -261,9 +261,9 @@ static void joinNearStretches(std::vector<DamagedSpan>& spans, double near_s)
 // from the start, the reader could not pass the damage at all ("frame 97 could not be decoded")
 // and the file was called cut off. Such a frame shows no moment of its own: it is left out, as
 // part of the damaged stretch; the reader passes over it as well (FrameReader::grabNext).
-static bool isStrayAfterDamage(const FrameIndex& index, double time_s, int refusedJustBefore)
+static bool isStrayAfterDamage(const FrameIndex& index, double time_s, int refusedOutsideSpans)
 {
-    const bool afterDamage = !index.damaged.empty() || refusedJustBefore > 0;
+    const bool afterDamage = !index.damaged.empty() || refusedOutsideSpans > 0;
     // OpenCV's 0 past the start is "no timestamp" (frames drained at the end), placed below.
     return afterDamage && time_s > 0.0 && !index.frames.empty() && time_s <= index.frames.back().time_s;
 }
@@ -337,7 +337,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
         }
         FrameInfo f;
         f.time_s = cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
-        if (isStrayAfterDamage(index, f.time_s, refused)) {
+        if (isStrayAfterDamage(index, f.time_s, refused + refusedBeforeFirst)) {
             ++refused;  // its picture is lost with the damaged stretch's
             continue;
         }
