@@ -222,7 +222,7 @@ cv::Mat FrameReader::gray(int n)
 
 std::optional<cv::Mat> FrameReader::grayUnlessDamaged(int n)
 {
-    if (index_.decodedAcrossDamage(n))
+    if (leaveOutAcross_ && index_.decodedAcrossDamage(n))
         return std::nullopt;
     try {
         return gray(n);

@@ -62,6 +62,8 @@ public:
     // --damage case 1: H.264 with 0.57 s overwritten, the sync right at confidence 0): for passes
     // over the video, which leave such a frame out. Throws other failures as read().
     std::optional<cv::Mat> grayUnlessDamaged(int n);
+    // Whether grayUnlessDamaged leaves out the frames decoded across damage (it does by default).
+    void leaveOutDecodedAcrossDamage(bool on) { leaveOutAcross_ = on; }
 
 private:
     void reopen();
@@ -81,6 +83,7 @@ private:
     int damagedPackets_ = 0;  // packets the index found undecodable: grabs that may fail before the next frame
     bool refused_ = false;    // the decoder refused a packet on the way to the frame being read
     std::vector<bool> damaged_;  // per frame: found in a damaged stretch (read again, it throws at once)
+    bool leaveOutAcross_ = true;
     ReaderStats stats_;
     std::vector<cv::Mat> gray_;  // one per frame when grey frames are kept, else empty
     FrameSpan grayKept_;         // of those, the frames whose grey picture is kept
