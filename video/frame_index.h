@@ -91,6 +91,11 @@ struct FrameIndex {
     bool decodedAcrossDamage(int n) const;
 };
 
+// Refused packets a reader grabs on past, beyond the damage an index found, before it takes the
+// file for ended: a file indexed from its packets has its damage unknown, and at the end of a
+// file each refusal is immediate (FrameReader, the packet index's first frame).
+inline constexpr int kRefusedPacketsTried = 1000;
+
 // The index's warnings, from its facts: a cut-off file, timestamps out of order, a rotation
 // tag, an index from packets.
 QStringList indexWarnings(const FrameIndex& index);

@@ -49,11 +49,10 @@ int FrameReader::grabNext()
     // it, as the index did; only their timestamps then say which. A file indexed from its
     // packets has its damage unknown, hence the tries beyond what the index found; at the end
     // of the file each refusal is immediate.
-    constexpr int kRefusalsTried = 1000;
     int refused = 0;
     for (;;) {
         while (!cap_.grab())
-            if (!index_.timestampsMonotonic || ++refused > damagedPackets_ + kRefusalsTried)
+            if (!index_.timestampsMonotonic || ++refused > damagedPackets_ + kRefusedPacketsTried)
                 return -1;
         refused_ = refused_ || refused > 0;
         ++stats_.grabbed;

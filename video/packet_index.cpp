@@ -104,10 +104,9 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
     // later. Its first frame then is not the first packet's: with times from the packets, the
     // origin is the first packet's (the decoder's and ffprobe's times count from the stream's
     // start alike); the first frame decoded would put every frame that much late.
-    constexpr int kRefusalsTried = 1000;
     int refused = 0;
     while (!cap.grab())
-        if (++refused > std::min(kRefusalsTried, int(list.size())))
+        if (++refused > std::min(kRefusedPacketsTried, int(list.size())))
             throw VideoError(path, nb::TrDevices::tr("no frame could be decoded (truncated or corrupt file?)"));
     const double first = refused > 0 && timed ? list.front().pts : cap.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
     turnIndexUpright(index, takeRotation(cap));
