@@ -249,6 +249,69 @@ std::vector<std::size_t> consistentlySliding(const std::vector<std::size_t>& row
     return kept;
 }
 
+// Tissue that reaches the plate only as the needle passes its top speed is still being
+// brought to rest there: the force goes on rising while the needle slows (the peak point's
+// `settled`), and those samples lie below the sliding line. Left in, the slab's spring-back
+// term bends to meet them and takes C along (liver 3 at 0.66 Hz: C 10 % low, its residual at
+// the noise). Per direction, the slowing-down samples faster than where the force peaks are
+// left out. Bins of a 40th of the top speed, over the sliding samples in the upper half of the
+// stroke.
+std::vector<std::size_t> withoutArrival(const std::vector<std::size_t>& rows, const std::vector<double>& v,
+                                        const std::vector<double>& a, const std::vector<double>& f, double mass,
+                                        double noise_N, int window, std::size_t from, std::size_t to)
+{
+    double cut[2] = {INFINITY, INFINITY};
+    for (int s : {1, -1}) {
+        std::vector<double> speeds;
+        for (std::size_t i = from; i < to; ++i)
+            if (s * v[i] > 0.0)
+                speeds.push_back(std::fabs(v[i]));
+        if (speeds.size() < 100)
+            continue;
+        const auto k = speeds.begin() + std::ptrdiff_t(speeds.size() * 995 / 1000);
+        std::nth_element(speeds.begin(), k, speeds.end());
+        const double top = *k;
+        constexpr int kBins = 20;  // 40ths of the top speed, from the top down to half of it
+        double sum[kBins] = {}, count[kBins] = {};
+        for (std::size_t i : rows) {
+            if (s * v[i] <= 0.0 || v[i] * a[i] > 0.0)
+                continue;
+            const int bin = int(std::floor((top - std::fabs(v[i])) / (top / 40.0)));
+            if (bin < 0 || bin >= kBins)
+                continue;
+            sum[bin] += s * (f[i] - mass * a[i]);
+            count[bin] += 1;
+        }
+        // From the top down, the force's highest bin until it clearly falls (beyond the noise and
+        // 1 % of the force, as for the peak point's `settled`): further down, as the needle nears
+        // the band, the force rises again towards the static limit, which is not it.
+        const double enough = std::max(5.0, double(window));
+        auto meanOf = [&](int bin) { return sum[bin] / count[bin]; };
+        auto apart = [&](int p, int q) {
+            const double effective = std::max(1.0, std::min(count[p], count[q]) / std::max(1, window));
+            return 3.0 * noise_N / std::sqrt(effective) + 0.01 * std::fabs(meanOf(p));
+        };
+        int fastest = -1, peak = -1;
+        for (int bin = 0; bin < kBins; ++bin) {
+            if (count[bin] < enough)
+                continue;
+            if (fastest < 0)
+                fastest = peak = bin;
+            else if (meanOf(bin) > meanOf(peak))
+                peak = bin;
+            else if (meanOf(bin) < meanOf(peak) - apart(peak, bin))
+                break;
+        }
+        if (fastest >= 0 && peak != fastest && meanOf(peak) - meanOf(fastest) > apart(peak, fastest))
+            cut[s > 0 ? 0 : 1] = top - peak * (top / 40.0);
+    }
+    std::vector<std::size_t> kept;
+    for (std::size_t i : rows)
+        if (v[i] * a[i] > 0.0 || std::fabs(v[i]) <= cut[v[i] > 0.0 ? 0 : 1])
+            kept.push_back(i);
+    return kept;
+}
+
 }  // namespace
 
 BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
@@ -413,6 +476,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     const std::vector<double> forceRate = movingAverage(derivative(run.time_s, friction), w);
     // Phase c as labelled still holds samples off the sliding line: the slab settling against
     // the plate as c begins, stick-slip as the needle stops.
+    rows = withoutArrival(rows, v, a, f, mass0, c.noise_N, w, trim, n - trim);
     rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N, forceRate);
     // Per direction (0: +, 1: -): how many sliding samples, and the needle speeds they span.
     std::size_t pos = 0, neg = 0;

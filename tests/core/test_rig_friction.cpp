@@ -298,6 +298,38 @@ private slots:
         QVERIFY(speeds.at(0).toDouble() > 0.0 && speeds.at(0).toDouble() < speeds.at(1).toDouble());
     }
 
+    // The Table 4 slab at 0.66 Hz with a wide band (±5.6 mm/s, bench_accuracy --seed 895, rig set
+    // 2): the tissue reaches the plate only as the needle passes its top speed, so the force goes
+    // on rising while the needle slows. Those samples, below the sliding line, bent the
+    // spring-back term and Cp came out 9 % low with its residual at the noise, unflagged. They
+    // are not sliding against resting tissue and are left out: Cp within 5 %.
+    void slabArrivingAtTopSpeed()
+    {
+        Truth truth;
+        const QString file = simulate(QStringLiteral("arriving"),
+                                      {QStringLiteral("--tissue"), QStringLiteral("liver3"), QStringLiteral("--frequency-hz"), QStringLiteral("0.6625"),
+                                       QStringLiteral("--amplitude-mm"), QStringLiteral("6.908"), QStringLiteral("--stick-band-mm-s"), QStringLiteral("5.642"),
+                                       QStringLiteral("--plate-gap-mm"), QStringLiteral("2.179"), QStringLiteral("--force-noise-n"), QStringLiteral("0.00287"),
+                                       QStringLiteral("--cycles"), QStringLiteral("7"), QStringLiteral("--seed"), QStringLiteral("98938")},
+                                      &truth);
+        QVERIFY(!file.isEmpty());
+        const QJsonObject r = fit({file}).value(QStringLiteral("runs")).toArray().at(0).toObject();
+        const QJsonObject p = r.value(QStringLiteral("per_length")).toObject();
+        const double eCp = relErr(p.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp);
+        const double eCn = relErr(p.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn);
+        const double eBp = relErr(p.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), truth.bp);
+        const double eBn = relErr(p.value(QStringLiteral("bn_Ns_per_m2")).toDouble(), truth.bn);
+        const QJsonArray flagged = r.value(QStringLiteral("not_physical_values")).toArray();
+        qInfo("slab arriving at top speed: Cp %.1f %%, bp %.1f %%, Cn %.1f %%, bn %.1f %% off; flagged %s", 100 * eCp, 100 * eBp, 100 * eCn,
+              100 * eBn, qPrintable(QJsonDocument(flagged).toJson(QJsonDocument::Compact)));
+        QVERIFY2(eCp < 0.05 && eBp < 0.15, qPrintable(QStringLiteral("Cp %1 %, bp %2 % off").arg(100 * eCp).arg(100 * eBp)));
+        QVERIFY2(eCn < 0.05 && eBn < 0.15, qPrintable(QStringLiteral("Cn %1 %, bn %2 % off").arg(100 * eCn).arg(100 * eBn)));
+        // Its static limits come from the velocity band, which here cannot see Dn apart from the
+        // sliding, and says so; C and b are results.
+        for (const char* name : {"Cp", "bp", "Cn", "bn"})
+            QVERIFY2(!flagged.contains(QLatin1String(name)), name);
+    }
+
     // A wide stick band (±3.9 mm/s) on a short, quick stroke (±3.7 mm at 0.57 Hz): phase c holds
     // sliding samples only between 7.1 and 7.9 mm/s, the top tenth of the stroke's speed. Their
     // line's slope was 23 % high in both directions with standard errors of 1.5 %, nothing
