@@ -423,6 +423,10 @@ int fitFrictionCommand(const QStringList& args, Io io)
             // How far C moves (a fraction of it) when the sliding line may bend.
             o.insert(QStringLiteral("c_shift_if_bent"),
                      QJsonObject{{QStringLiteral("positive"), f.bendShiftCp}, {QStringLiteral("negative"), f.bendShiftCn}});
+            // Where the tissue was still arriving at the plate past the top speed (null: not seen).
+            auto speedOrNull = [](double speed_m_s) { return std::isfinite(speed_m_s) ? QJsonValue(speed_m_s) : QJsonValue(); };
+            o.insert(QStringLiteral("arriving_above_m_s"), QJsonObject{{QStringLiteral("positive"), speedOrNull(f.arrivingAboveP_m_s)},
+                                                                      {QStringLiteral("negative"), speedOrNull(f.arrivingAboveN_m_s)}});
             o.insert(QStringLiteral("sliding_speed_m_s"),
                      QJsonObject{{QStringLiteral("positive"), QJsonArray{f.slidingFromP_m_s, f.slidingToP_m_s}},
                                  {QStringLiteral("negative"), QJsonArray{f.slidingFromN_m_s, f.slidingToN_m_s}}});
@@ -530,6 +534,14 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           .arg(name, num(f.seDp_N / L, 3), num(f.seDn_N / L, 3))
                           .arg(f.breakawaysP)
                           .arg(f.breakawaysN);
+        if (std::isfinite(f.arrivingAboveP_m_s) || std::isfinite(f.arrivingAboveN_m_s)) {
+            auto above = [&](double speed_m_s) {
+                return std::isfinite(speed_m_s) ? nb::TrCli::tr("above %1 mm/s").arg(num(speed_m_s * 1000.0, 3)) : nb::TrCli::tr("not seen");
+            };
+            io.out << nb::TrCli::tr("%1: the tissue was still arriving at the plate as the needle passed its top speed (+ motion: %2, "
+                                    "- motion: %3); those samples are left out of the sliding line and the peak point\n")
+                          .arg(name, above(f.arrivingAboveP_m_s), above(f.arrivingAboveN_m_s));
+        }
         if (f.springBackP_s > 0.0 || f.springBackN_s > 0.0) {
             auto stiffness = [&](double b, double lag) {
                 return lag > 0.0 ? nb::TrCli::tr("%1 N/m").arg(num(b / lag, 3)) : nb::TrCli::tr("no give seen");

@@ -250,17 +250,23 @@ std::vector<std::size_t> consistentlySliding(const std::vector<std::size_t>& row
 }
 
 // Tissue that reaches the plate only as the needle passes its top speed is still being
-// brought to rest there: the force goes on rising while the needle slows (the peak point's
-// `settled`), and those samples lie below the sliding line. Left in, the slab's spring-back
-// term bends to meet them and takes C along (liver 3 at 0.66 Hz: C 10 % low, its residual at
-// the noise). Per direction, the slowing-down samples faster than where the force peaks are
-// left out. Bins of a 40th of the top speed, over the sliding samples in the upper half of the
-// stroke.
-std::vector<std::size_t> withoutArrival(const std::vector<std::size_t>& rows, const std::vector<double>& v,
-                                        const std::vector<double>& a, const std::vector<double>& f, double mass,
-                                        double noise_N, int window, std::size_t from, std::size_t to)
+// brought to rest there: the force is short of the sliding line at the top, and may even go on
+// rising while the needle slows. Left in, the slab's spring-back term bends to meet those
+// samples and takes C along (liver 3 at 0.66 Hz: C 10 % low, its residual at the noise). Per
+// direction, the speed above which the slowing-down samples are left out (infinite: none):
+// from the top down, each bin (a 40th of the top speed) whose force lies below the line through
+// the next four, by more than their noise and half a percent of the force, is still arriving.
+// The slab's spring-back bends the sliding force near the top far less than that (0.5 mN
+// where liver 3's arrival took 6-10 mN); further down, as the needle nears the band, the force
+// rises towards the static limit, which is not this.
+struct ArrivalSpeeds {
+    double positive_m_s = INFINITY, negative_m_s = INFINITY;
+    double of(double v) const { return v > 0.0 ? positive_m_s : negative_m_s; }
+};
+ArrivalSpeeds arrivalSpeeds(const std::vector<std::size_t>& rows, const std::vector<double>& v, const std::vector<double>& a,
+                            const std::vector<double>& f, double mass, double noise_N, int window, std::size_t from, std::size_t to)
 {
-    double cut[2] = {INFINITY, INFINITY};
+    ArrivalSpeeds cut;
     for (int s : {1, -1}) {
         std::vector<double> speeds;
         for (std::size_t i = from; i < to; ++i)
@@ -270,46 +276,52 @@ std::vector<std::size_t> withoutArrival(const std::vector<std::size_t>& rows, co
             continue;
         const auto k = speeds.begin() + std::ptrdiff_t(speeds.size() * 995 / 1000);
         std::nth_element(speeds.begin(), k, speeds.end());
-        const double top = *k;
-        constexpr int kBins = 20;  // 40ths of the top speed, from the top down to half of it
+        const double top = *k, width = top / 40.0;
+        constexpr int kBins = 20;  // from the top down to half of it
         double sum[kBins] = {}, count[kBins] = {};
         for (std::size_t i : rows) {
             if (s * v[i] <= 0.0 || v[i] * a[i] > 0.0)
                 continue;
-            const int bin = int(std::floor((top - std::fabs(v[i])) / (top / 40.0)));
+            const int bin = int(std::floor((top - std::fabs(v[i])) / width));
             if (bin < 0 || bin >= kBins)
                 continue;
             sum[bin] += s * (f[i] - mass * a[i]);
             count[bin] += 1;
         }
-        // From the top down, the force's highest bin until it clearly falls (beyond the noise and
-        // 1 % of the force, as for the peak point's `settled`): further down, as the needle nears
-        // the band, the force rises again towards the static limit, which is not it.
         const double enough = std::max(5.0, double(window));
-        auto meanOf = [&](int bin) { return sum[bin] / count[bin]; };
-        auto apart = [&](int p, int q) {
-            const double effective = std::max(1.0, std::min(count[p], count[q]) / std::max(1, window));
-            return 3.0 * noise_N / std::sqrt(effective) + 0.01 * std::fabs(meanOf(p));
-        };
-        int fastest = -1, peak = -1;
-        for (int bin = 0; bin < kBins; ++bin) {
+        constexpr int kNext = 4;
+        int arriving = 0;  // bins from the top still arriving
+        for (int bin = 0; bin + kNext < kBins; ++bin) {
             if (count[bin] < enough)
-                continue;
-            if (fastest < 0)
-                fastest = peak = bin;
-            else if (meanOf(bin) > meanOf(peak))
-                peak = bin;
-            else if (meanOf(bin) < meanOf(peak) - apart(peak, bin))
                 break;
+            double sx = 0, sy = 0, sxx = 0, sxy = 0, fewest = count[bin];
+            bool full = true;
+            for (int q = bin + 1; q <= bin + kNext; ++q) {
+                if (count[q] < enough) {
+                    full = false;
+                    break;
+                }
+                const double y = sum[q] / count[q];
+                sx += q;
+                sy += y;
+                sxx += double(q) * q;
+                sxy += q * y;
+                fewest = std::min(fewest, count[q]);
+            }
+            if (!full)
+                break;
+            const double slope = (kNext * sxy - sx * sy) / (kNext * sxx - sx * sx);
+            const double onLine = (sy - slope * sx) / kNext + slope * bin;
+            const double short_N = onLine - sum[bin] / count[bin];
+            const double effective = std::max(1.0, fewest / std::max(1, window));
+            if (!(short_N > 3.0 * noise_N / std::sqrt(effective) + 0.005 * std::fabs(onLine)))
+                break;
+            arriving = bin + 1;
         }
-        if (fastest >= 0 && peak != fastest && meanOf(peak) - meanOf(fastest) > apart(peak, fastest))
-            cut[s > 0 ? 0 : 1] = top - peak * (top / 40.0);
+        if (arriving > 0)
+            (s > 0 ? cut.positive_m_s : cut.negative_m_s) = top - arriving * width;
     }
-    std::vector<std::size_t> kept;
-    for (std::size_t i : rows)
-        if (v[i] * a[i] > 0.0 || std::fabs(v[i]) <= cut[v[i] > 0.0 ? 0 : 1])
-            kept.push_back(i);
-    return kept;
+    return cut;
 }
 
 }  // namespace
@@ -476,7 +488,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     const std::vector<double> forceRate = movingAverage(derivative(run.time_s, friction), w);
     // Phase c as labelled still holds samples off the sliding line: the slab settling against
     // the plate as c begins, stick-slip as the needle stops.
-    rows = withoutArrival(rows, v, a, f, mass0, c.noise_N, w, trim, n - trim);
+    const ArrivalSpeeds arriving = arrivalSpeeds(rows, v, a, f, mass0, c.noise_N, w, trim, n - trim);
+    std::erase_if(rows, [&](std::size_t i) { return v[i] * a[i] <= 0.0 && std::fabs(v[i]) > arriving.of(v[i]); });
     rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N, forceRate);
     // Per direction (0: +, 1: -): how many sliding samples, and the needle speeds they span.
     std::size_t pos = 0, neg = 0;
@@ -808,7 +821,9 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     bool ok = false;
     const double mf = metaF ? metaF->trimmed().toDouble(&ok) : 0.0;
     fit.frequency_hz = ok && mf > 0.0 ? mf : estimateFrequency(run);
-    fit.peaks = peakPoints(c, options);
+    fit.arrivingAboveP_m_s = arriving.positive_m_s;
+    fit.arrivingAboveN_m_s = arriving.negative_m_s;
+    fit.peaks = peakPoints(c, options, arriving.positive_m_s, arriving.negative_m_s);
     checkAgainstFit(fit.peaks, fit);
     return fit;
 }

@@ -86,6 +86,11 @@ struct FrictionFit {
     // (a v² term): beyond 5 % (and two standard errors) C and b are flagged as not determined.
     double bendShiftCp = 0.0, bendShiftCn = 0.0;
     double slidingFromP_m_s = 0.0, slidingToP_m_s = 0.0, slidingFromN_m_s = 0.0, slidingToN_m_s = 0.0;
+    // Needle speeds (m/s, magnitudes) above which, slowing down from the top, the tissue was still
+    // arriving at the plate: the force short of the sliding line there. Those samples are left
+    // out of the line and of the peak point; infinite where the run shows no such thing.
+    double arrivingAboveP_m_s = std::numeric_limits<double>::infinity();
+    double arrivingAboveN_m_s = std::numeric_limits<double>::infinity();
 };
 
 // `phases`: one phase name per sample ("a", "b1", "b2", "c" or empty), e.g. from a labels

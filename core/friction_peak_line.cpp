@@ -56,7 +56,7 @@ std::optional<LineFit> fitLine(const std::vector<double>& x, const std::vector<d
 
 }  // namespace
 
-RunPeaks peakPoints(const ConditionedSignals& c, const FrictionOptions& options)
+RunPeaks peakPoints(const ConditionedSignals& c, const FrictionOptions& options, double arrivingAboveP_m_s, double arrivingAboveN_m_s)
 {
     RunPeaks peaks;
     const std::size_t n = c.v_m_s.size();
@@ -80,12 +80,12 @@ RunPeaks peakPoints(const ConditionedSignals& c, const FrictionOptions& options)
         // Not the single fastest sample: one noisy sample must not set the top.
         const auto k = speeds.begin() + std::ptrdiff_t(speeds.size() * 995 / 1000);
         std::nth_element(speeds.begin(), k, speeds.end());
-        const double top = *k;
+        const double top = std::min(*k, sign > 0 ? arrivingAboveP_m_s : arrivingAboveN_m_s);
         double sumV = 0, sumF = 0, sumAfter = 0;
         std::size_t count = 0, after = 0;
         std::vector<double> atTop;
         for (std::size_t i = trim; i < n - trim; ++i) {
-            if (v[i] * a[i] > 0.0 || sign * v[i] < kSlowerAfter * top)
+            if (v[i] * a[i] > 0.0 || sign * v[i] < kSlowerAfter * top || sign * v[i] > top)
                 continue;
             if (sign * v[i] < kNearTop * top) {
                 sumAfter += f[i] - mass * a[i];

@@ -16,6 +16,7 @@
 #include "friction_fit.h"
 #include "run.h"
 
+#include <cmath>
 #include <optional>
 #include <span>
 
@@ -23,7 +24,10 @@ namespace nb {
 
 // The run's peaks from its conditioned signals, with the fit's trimming and mass (fitFriction
 // calls this and keeps them in FrictionFit::peaks). Empty sides when a direction never moves.
-RunPeaks peakPoints(const ConditionedSignals& conditioned, const FrictionOptions& options);
+// Above `arrivingAbove*_m_s` the tissue was still arriving at the plate (FrictionFit): the
+// top is taken below that speed.
+RunPeaks peakPoints(const ConditionedSignals& conditioned, const FrictionOptions& options, double arrivingAboveP_m_s = INFINITY,
+                    double arrivingAboveN_m_s = INFINITY);
 
 // A peak point must also lie on its own run's sliding line (within 1.5 % of its force): one
 // below it was taken while the tissue still moved with the needle. A direction whose C or b

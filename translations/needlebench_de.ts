@@ -3812,7 +3812,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+129"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -3848,6 +3848,23 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>above %1 mm/s</source>
+        <translation>über %1 mm/s</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not seen</source>
+        <translation>nicht gesehen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the tissue was still arriving at the plate as the needle passed its top speed (+ motion: %2, - motion: %3); those samples are left out of the sliding line and the peak point
+</source>
+        <translation>%1: Das Gewebe kam noch an der Lochplatte an, als die Nadel ihre Höchstgeschwindigkeit durchlief (+-Bewegung: %2, −-Bewegung: %3); diese Messpunkte bleiben aus der Gleitgeraden und dem Spitzenpunkt heraus
+</translation>
+    </message>
+    <message>
         <location line="+13"/>
         <source>%1: NOT A RESULT (not physical, or not determined by this run): %2
 </source>
@@ -3855,7 +3872,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-51"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation>run</translation>
@@ -3922,7 +3939,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+17"/>
         <source>%1 N/m</source>
         <translation>%1 N/m</translation>
     </message>
@@ -6013,7 +6030,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+361"/>
+        <location filename="../core/friction_fit.cpp" line="+436"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -6485,7 +6502,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 Phasennamen für %2 Messwerte</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>no phase c in the phases: the tissue never rested while the needle slid through it (a stroke longer than the slab&apos;s free travel gives phase c), so C and b cannot be measured</source>
         <translation>keine Phase c in den Phasen: das Gewebe kam nie zur Ruhe, während die Nadel hindurchglitt (ein Hub länger als der freie Weg der Scheibe ergibt Phase c), daher lassen sich C und b nicht messen</translation>
     </message>
@@ -7259,7 +7276,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     <message>
         <location line="+275"/>
         <location filename="../video/packet_index.cpp" line="+66"/>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
@@ -7284,7 +7301,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>das Video kann nicht erneut geöffnet werden (verschoben oder gelöscht?)</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+90"/>
         <source>frame %1 does not exist (the video has %2 frames)</source>
         <translation>Bild %1 existiert nicht (das Video hat %2 Bilder)</translation>
     </message>
