@@ -80,12 +80,13 @@ RunPeaks peakPoints(const ConditionedSignals& c, const FrictionOptions& options,
         // Not the single fastest sample: one noisy sample must not set the top.
         const auto k = speeds.begin() + std::ptrdiff_t(speeds.size() * 995 / 1000);
         std::nth_element(speeds.begin(), k, speeds.end());
-        const double top = std::min(*k, sign > 0 ? arrivingAboveP_m_s : arrivingAboveN_m_s);
+        const double arriving = sign > 0 ? arrivingAboveP_m_s : arrivingAboveN_m_s;
+        const double top = std::min(*k, arriving);
         double sumV = 0, sumF = 0, sumAfter = 0;
         std::size_t count = 0, after = 0;
         std::vector<double> atTop;
         for (std::size_t i = trim; i < n - trim; ++i) {
-            if (v[i] * a[i] > 0.0 || sign * v[i] < kSlowerAfter * top || sign * v[i] > top)
+            if (v[i] * a[i] > 0.0 || sign * v[i] < kSlowerAfter * top || sign * v[i] > arriving)
                 continue;
             if (sign * v[i] < kNearTop * top) {
                 sumAfter += f[i] - mass * a[i];
