@@ -75,6 +75,19 @@ ConditionedSignals conditionSignals(const Run& run, double smoothing_s)
     return c;
 }
 
+std::optional<double> topSpeed(const std::vector<double>& v, int sign, std::size_t from, std::size_t to, std::size_t fewest)
+{
+    std::vector<double> speeds;
+    for (std::size_t i = from; i < to; ++i)
+        if (sign * v[i] > 0.0 && std::isfinite(v[i]))
+            speeds.push_back(std::fabs(v[i]));
+    if (speeds.empty() || speeds.size() < fewest)
+        return std::nullopt;
+    const auto k = speeds.begin() + std::ptrdiff_t(speeds.size() * 995 / 1000);
+    std::nth_element(speeds.begin(), k, speeds.end());
+    return *k;
+}
+
 double estimateFrequency(const Run& run)
 {
     const std::size_t n = run.size();
@@ -107,10 +120,10 @@ namespace {
 struct Line {
     double c = 0.0, b = 0.0, sd = 0.0;
 };
-std::optional<Line> lineThrough(const std::vector<double>& v, const std::vector<double>& f)
+std::optional<Line> lineThrough(const std::vector<double>& v, const std::vector<double>& f, std::size_t fewest = 10)
 {
     const std::size_t n = v.size();
-    if (n < 10)
+    if (n < std::max<std::size_t>(fewest, 3))
         return std::nullopt;
     double sv = 0, sf = 0, svv = 0, svf = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -268,15 +281,10 @@ ArrivalSpeeds arrivalSpeeds(const std::vector<std::size_t>& rows, const std::vec
 {
     ArrivalSpeeds cut;
     for (int s : {1, -1}) {
-        std::vector<double> speeds;
-        for (std::size_t i = from; i < to; ++i)
-            if (s * v[i] > 0.0)
-                speeds.push_back(std::fabs(v[i]));
-        if (speeds.size() < 100)
+        const std::optional<double> fastest = topSpeed(v, s, from, to, 100);
+        if (!fastest)
             continue;
-        const auto k = speeds.begin() + std::ptrdiff_t(speeds.size() * 995 / 1000);
-        std::nth_element(speeds.begin(), k, speeds.end());
-        const double top = *k, width = top / 40.0;
+        const double top = *fastest, width = top / 40.0;
         constexpr int kBins = 20;  // from the top down to half of it
         double sum[kBins] = {}, count[kBins] = {};
         for (std::size_t i : rows) {
@@ -294,24 +302,17 @@ ArrivalSpeeds arrivalSpeeds(const std::vector<std::size_t>& rows, const std::vec
         for (int bin = 0; bin + kNext < kBins; ++bin) {
             if (count[bin] < enough)
                 break;
-            double sx = 0, sy = 0, sxx = 0, sxy = 0, fewest = count[bin];
-            bool full = true;
-            for (int q = bin + 1; q <= bin + kNext; ++q) {
-                if (count[q] < enough) {
-                    full = false;
-                    break;
-                }
-                const double y = sum[q] / count[q];
-                sx += q;
-                sy += y;
-                sxx += double(q) * q;
-                sxy += q * y;
+            std::vector<double> at, mean;
+            double fewest = count[bin];
+            for (int q = bin + 1; q <= bin + kNext && count[q] >= enough; ++q) {
+                at.push_back(q);
+                mean.push_back(sum[q] / count[q]);
                 fewest = std::min(fewest, count[q]);
             }
-            if (!full)
+            const std::optional<Line> next = lineThrough(at, mean, kNext);
+            if (!next)
                 break;
-            const double slope = (kNext * sxy - sx * sy) / (kNext * sxx - sx * sx);
-            const double onLine = (sy - slope * sx) / kNext + slope * bin;
+            const double onLine = next->c + next->b * bin;
             const double short_N = onLine - sum[bin] / count[bin];
             const double effective = std::max(1.0, fewest / std::max(1, window));
             if (!(short_N > 3.0 * noise_N / std::sqrt(effective) + 0.005 * std::fabs(onLine)))

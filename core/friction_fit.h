@@ -122,6 +122,11 @@ struct ConditionedSignals {
 };
 ConditionedSignals conditionSignals(const Run& run, double smoothing_s);
 
+// A direction's top speed (m/s, a magnitude) over samples [from, to) of a velocity: the 99.5th
+// percentile of the speeds moving that way, not the single fastest (one noisy sample must not
+// set it); nullopt with fewer than `fewest` such samples.
+std::optional<double> topSpeed(const std::vector<double>& v_m_s, int sign, std::size_t from, std::size_t to, std::size_t fewest);
+
 // Frequency of a sinusoidal position signal from its mean crossings; 0 when fewer than
 // two crossings.
 double estimateFrequency(const Run& run);

@@ -71,17 +71,11 @@ RunPeaks peakPoints(const ConditionedSignals& c, const FrictionOptions& options,
     const double noise_N = c.noise_N;
 
     for (int sign : {1, -1}) {
-        std::vector<double> speeds;
-        for (std::size_t i = trim; i < n - trim; ++i)
-            if (sign * v[i] > 0.0 && std::isfinite(v[i]))
-                speeds.push_back(std::fabs(v[i]));
-        if (speeds.size() < 10 * kMinSamples)
+        const std::optional<double> fastest = topSpeed(v, sign, trim, n - trim, 10 * kMinSamples);
+        if (!fastest)
             continue;
-        // Not the single fastest sample: one noisy sample must not set the top.
-        const auto k = speeds.begin() + std::ptrdiff_t(speeds.size() * 995 / 1000);
-        std::nth_element(speeds.begin(), k, speeds.end());
         const double arriving = sign > 0 ? arrivingAboveP_m_s : arrivingAboveN_m_s;
-        const double top = std::min(*k, arriving);
+        const double top = std::min(*fastest, arriving);
         double sumV = 0, sumF = 0, sumAfter = 0;
         std::size_t count = 0, after = 0;
         std::vector<double> atTop;
