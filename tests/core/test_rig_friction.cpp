@@ -21,6 +21,20 @@ struct Truth {
 
 double relErr(double got, double want) { return std::fabs(got - want) / std::fabs(want); }
 
+// One rig case as a benchmark draw describes it, in `simulate --protocol friction`'s terms.
+struct RigCase {
+    QString tissue, frequency_hz, amplitude_mm, stickBand_mm_s, plateGap_mm, forceNoise_N;
+    int seed = 1;
+    int cycles = 5;
+    QStringList args() const
+    {
+        return {QStringLiteral("--tissue"), tissue, QStringLiteral("--frequency-hz"), frequency_hz, QStringLiteral("--amplitude-mm"),
+                amplitude_mm, QStringLiteral("--stick-band-mm-s"), stickBand_mm_s, QStringLiteral("--plate-gap-mm"), plateGap_mm,
+                QStringLiteral("--force-noise-n"), forceNoise_N, QStringLiteral("--cycles"), QString::number(cycles),
+                QStringLiteral("--seed"), QString::number(seed)};
+    }
+};
+
 }  // namespace
 
 class TestRigFriction : public QObject {
@@ -208,10 +222,9 @@ private slots:
     {
         Truth truth;
         const QString file = simulate(QStringLiteral("knee"),
-                                      {QStringLiteral("--tissue"), QStringLiteral("liver3"), QStringLiteral("--frequency-hz"), QStringLiteral("0.23"),
-                                       QStringLiteral("--amplitude-mm"), QStringLiteral("5.6"), QStringLiteral("--stick-band-mm-s"), QStringLiteral("1.2"),
-                                       QStringLiteral("--plate-gap-mm"), QStringLiteral("2.46"), QStringLiteral("--force-noise-n"), QStringLiteral("0.0006"),
-                                       QStringLiteral("--seed"), QStringLiteral("5")},
+                                      RigCase{QStringLiteral("liver3"), QStringLiteral("0.23"), QStringLiteral("5.6"), QStringLiteral("1.2"),
+                                              QStringLiteral("2.46"), QStringLiteral("0.0006"), 5}
+                                          .args(),
                                       &truth);
         QVERIFY(!file.isEmpty());
         const QJsonObject r = fit({file}).value(QStringLiteral("runs")).toArray().at(0).toObject();
@@ -268,10 +281,9 @@ private slots:
     {
         Truth truth;
         const QString file = simulate(QStringLiteral("slow_soft"),
-                                      {QStringLiteral("--tissue"), QStringLiteral("liver3"), QStringLiteral("--frequency-hz"), QStringLiteral("0.2438"),
-                                       QStringLiteral("--amplitude-mm"), QStringLiteral("5.548"), QStringLiteral("--stick-band-mm-s"), QStringLiteral("4.3"),
-                                       QStringLiteral("--plate-gap-mm"), QStringLiteral("3.0"), QStringLiteral("--force-noise-n"), QStringLiteral("0.0015"),
-                                       QStringLiteral("--seed"), QStringLiteral("87646")},
+                                      RigCase{QStringLiteral("liver3"), QStringLiteral("0.2438"), QStringLiteral("5.548"), QStringLiteral("4.3"),
+                                              QStringLiteral("3.0"), QStringLiteral("0.0015"), 87646}
+                                          .args(),
                                       &truth);
         QVERIFY(!file.isEmpty());
         const QJsonObject r = fit({file}).value(QStringLiteral("runs")).toArray().at(0).toObject();
@@ -307,10 +319,9 @@ private slots:
     {
         Truth truth;
         const QString file = simulate(QStringLiteral("arriving"),
-                                      {QStringLiteral("--tissue"), QStringLiteral("liver3"), QStringLiteral("--frequency-hz"), QStringLiteral("0.6625"),
-                                       QStringLiteral("--amplitude-mm"), QStringLiteral("6.908"), QStringLiteral("--stick-band-mm-s"), QStringLiteral("5.642"),
-                                       QStringLiteral("--plate-gap-mm"), QStringLiteral("2.179"), QStringLiteral("--force-noise-n"), QStringLiteral("0.00287"),
-                                       QStringLiteral("--cycles"), QStringLiteral("7"), QStringLiteral("--seed"), QStringLiteral("98938")},
+                                      RigCase{QStringLiteral("liver3"), QStringLiteral("0.6625"), QStringLiteral("6.908"), QStringLiteral("5.642"),
+                                              QStringLiteral("2.179"), QStringLiteral("0.00287"), 98938, 7}
+                                          .args(),
                                       &truth);
         QVERIFY(!file.isEmpty());
         const QJsonObject r = fit({file}).value(QStringLiteral("runs")).toArray().at(0).toObject();
@@ -343,11 +354,9 @@ private slots:
         const QStringList frequencies{QStringLiteral("0.25591"), QStringLiteral("0.499673"), QStringLiteral("0.796597")};
         for (int k = 0; k < 3; ++k)
             files << simulate(QStringLiteral("late_%1").arg(k),
-                              {QStringLiteral("--tissue"), QStringLiteral("liver3"), QStringLiteral("--frequency-hz"), frequencies[k],
-                               QStringLiteral("--amplitude-mm"), QStringLiteral("8.18534"), QStringLiteral("--stick-band-mm-s"),
-                               QStringLiteral("3.34675"), QStringLiteral("--plate-gap-mm"), QStringLiteral("2.59054"),
-                               QStringLiteral("--force-noise-n"), QStringLiteral("0.0008289"), QStringLiteral("--cycles"), QStringLiteral("7"),
-                               QStringLiteral("--seed"), QString::number(90421 + k)},
+                              RigCase{QStringLiteral("liver3"), frequencies[k], QStringLiteral("8.18534"), QStringLiteral("3.34675"),
+                                      QStringLiteral("2.59054"), QStringLiteral("0.0008289"), 90421 + k, 7}
+                                  .args(),
                               &truth);
         QVERIFY(!files.contains(QString()));
         const QJsonObject doc = fit(files);
