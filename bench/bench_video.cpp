@@ -8,6 +8,7 @@
 #include "video/frame_index.h"
 #include "video/frame_index_store.h"
 #include "video/frame_reader.h"
+#include "video/needle_axis_finder.h"
 #include "video/needle_tracker.h"
 #include "video/packet_index.h"
 #include "video/tissue_tracker.h"

@@ -1,38 +1,33 @@
 #pragma once
-// The needle's signed displacement along its own axis, frame by frame: what the picture
-// measures, in pixels, for synchronisation and for the friction phases.
+// The needle's signed displacement along its own axis, frame by frame: what the picture measures,
+// in pixels, for synchronisation and for the friction phases.
 //
-// The axis is a line the operator gives or one found in the picture: the straight ridge
-// (bright or dark) along which an edge moves from frame to frame. Either is first moved onto
-// the shaft the video shows, when it shows one over a good stretch (a line drawn by hand, or
-// found from a short path of the tip, is a degree or two off it). Along it a strip a few
-// pixels wide is sampled into a profile; what stays put in the profile (plates, overlays
-// crossing the strip, the shaft's own texture) is removed by subtracting the low percentile
-// of the gradient over the video, and the moving edge that is left is the tip. Where the
-// shaft shows against the picture either side of it, an edge is the tip only where the shaft
-// ends: the changing digits of a clock or counter that the line crosses are not. Its
-// position is found in every frame on its own (no accumulated drift), and measured again
-// against what each sample of the strip shows behind a tip and ahead of one (learnt from the
-// sampled frames), so that a still textured background does not pull it to the texture's
-// edges; a track keeps that measure where it scatters clearly less while the tip moves.
-// Where a frame alone does not show the tip clearly (a faint needle in heavy noise), the tip's
-// likeliest course through the frames (TipPath) says where to look for it in that frame.
-// Frames where no edge stands out of the noise there are masked (NaN), never guessed.
+// The axis is a line the operator gives or one found in the picture (needle_axis_finder.h). Either
+// is first moved onto the shaft the video shows, when it shows one over a good stretch (a line
+// drawn by hand, or found from a short path of the tip, is a degree or two off it). Along it a
+// strip a few pixels wide is sampled into a profile (needle_strip.h); what stays put in the profile
+// (plates, overlays crossing the strip, the shaft's own texture) is removed by subtracting the low
+// percentile of the gradient over the video, and the moving edge that is left is the tip. Where the
+// shaft shows against the picture either side of it, an edge is the tip only where the shaft ends:
+// the changing digits of a clock or counter that the line crosses are not. Its position is found in
+// every frame on its own (no accumulated drift), and measured again against what each sample of the
+// strip shows behind a tip and ahead of one (learnt from the sampled frames), so that a still
+// textured background does not pull it to the texture's edges; a track keeps that measure where it
+// scatters clearly less while the tip moves. Where a frame alone does not show the tip clearly (a
+// faint needle in heavy noise), the tip's likeliest course through the frames (TipPath) says where
+// to look for it in that frame. Frames where no edge stands out of the noise there are masked
+// (NaN), never guessed.
 
 #include "core/picture_lag.h"
-#include "frame_reader.h"
+#include "frame_samples.h"
+#include "needle_axis.h"
 
-#include <QLineF>
-#include <QRect>
 #include <atomic>
 #include <functional>
 #include <optional>
 #include <vector>
 
 namespace nb::video {
-
-// A line in video pixels. Displacements are positive towards `p2()`.
-using NeedleAxis = QLineF;
 
 struct NeedleTrack {
     std::vector<double> time_s;           // video time of each frame
@@ -45,34 +40,6 @@ struct NeedleTrack {
     // How the video's coder carried pictures over, and the tip's edge (core/picture_lag.h).
     PictureCoding coding;
 };
-
-// Frames spread over a video, in grey, from which the line finder and the tracker learn what
-// is always there and what changes. Sampling seeks through the file (on H.264 with a keyframe
-// every 250 frames it decodes about as much as two passes over the video): a caller that both
-// finds lines and tracks them samples once and gives both the same frames.
-struct FrameSamples {
-    std::vector<cv::Mat> gray;
-    int width = 0, height = 0;
-    FrameSpan span;  // the frames sampled from, which trackNeedles tracks
-};
-
-// `count` frames spread evenly over `span` of the video (all of it by default), and as many
-// again over the stretch in which the picture changes, when that is a small part of it.
-// Throws VideoError.
-FrameSamples sampleFrames(FrameReader& reader, int count = 40, FrameSpan span = {});
-
-// Finds the needle's axis in `reader`'s video from `sampleFrames` frames spread over it,
-// inside `roi` when it is not empty. nullopt when nothing moves along a line. Throws VideoError.
-std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, int sampleFrames = 40);
-
-// The likeliest needle axes, best first (at most `maxCount`, and after them the few lines along
-// which a shaft stands out most of the frames' mean, and the two paths of a tip with the most
-// change under them, when they ranked lower); `scores` (may be null) gets how clearly each
-// looks like a needle (a moving edge on a straight ridge).
-std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
-                                             std::vector<double>* scores = nullptr);
-std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& samples, QRect roi = {}, int maxCount = 4,
-                                             std::vector<double>* scores = nullptr);
 
 // For each of `axes`, the line of a shaft too faint to settle it on (trackNeedles moves a line
 // only onto a shaft that stands 4 σ out of the grain in enough of its segments): the shaft read

@@ -1,5 +1,6 @@
 #include "surface_trace.h"
 
+#include "needle_axis_finder.h"
 #include "needle_tracker.h"
 
 #include <opencv2/imgproc.hpp>

@@ -2,6 +2,7 @@
 
 #include "frame_reader.h"
 #include "motion_signal.h"
+#include "needle_axis_finder.h"
 
 #include <algorithm>
 #include <cmath>

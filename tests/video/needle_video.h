@@ -4,6 +4,7 @@
 // each frame (MJPEG through OpenCV); written, indexed and tracked.
 #include "video/frame_index.h"
 #include "video/frame_reader.h"
+#include "video/needle_axis_finder.h"
 #include "video/needle_tracker.h"
 
 #include <QTemporaryDir>
