@@ -12,11 +12,14 @@ video shows no motion (it starts after a short stroke has ended) has no right of
 counted apart, and only a refusal or a confidence below the accept threshold is right for it.
 
   bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--expect-hits] [--exe build/app/needlebench] [--keep DIR]
-                             [--slow-small] [--expect-honest] [--damage]
+                             [--slow-small] [--expect-honest] [--damage] [--operator]
 
 --damage overwrites each video's packets over a stretch of 0.2-1.5 s drawn from the case's
 seed (a bad copy, a bad sector): the frames there cannot be decoded, and the sync must still
 hold on the frames either side.
+
+--operator syncs as an operator who marks the picture: the needle's true line (drawn from the
+shaft towards the tip) and a region, the band between the counter's rows and the clock's.
 
 --slow-small draws the family the main draw meets rarely: two cycles of a slow, short sine
 (0.1-0.3 Hz, ±2.5-4 mm at 3-4 px/mm, so ±8-16 px), a faint needle (contrast 28-45, noise
@@ -164,7 +167,16 @@ def describe(c):
             + (f", damaged {c['damaged'][0]:.2f}-{c['damaged'][1]:.2f} s" if 'damaged' in c else ""))
 
 
-def run_case(c, exe, root, damage=False):
+def operator_marks(c):
+    """What an operator marks on the picture: the needle's line (drawn from the shaft towards the
+    tip) and a region, the band between the counter's rows and the clock's, that leaves both out."""
+    W, H = c['size']
+    u = np.array([np.cos(np.radians(c['angle'])), np.sin(np.radians(c['angle']))])
+    p1, p2 = np.array([W / 2, H / 2]) - 50 * u, np.array([W / 2, H / 2]) + 50 * u
+    return ['--needle', ','.join(f'{v:.1f}' for v in (*p1, *p2)), '--roi', f'0,40,{W},{H - 85}']
+
+
+def run_case(c, exe, root, damage=False, operator=False):
     d = os.path.join(root, f"case{c['i']}")
     os.makedirs(d, exist_ok=True)
     if c['linear']:
@@ -186,7 +198,7 @@ def run_case(c, exe, root, damage=False):
     n = int((c['offset'] + t[-1] + 1.0) * c['fps'])
     seen = (t >= -c['offset'] / (1 + c['drift'])) & (t <= (n / c['fps'] - c['offset']) / (1 + c['drift']))
     moving = bool(seen.any()) and np.ptp(x[seen]) >= 0.05 * max(np.ptp(x), 1e-9)
-    r = subprocess.run([exe, 'sync', run, video, '--json'], capture_output=True, text=True)
+    r = subprocess.run([exe, 'sync', run, video, '--json'] + (operator_marks(c) if operator else []), capture_output=True, text=True)
     try:
         j = json.loads(r.stdout)
     except ValueError:
@@ -207,6 +219,8 @@ def main():
     add_common_arguments(ap)
     ap.add_argument('--slow-small', action='store_true', help='draw slow, short sines of a faint needle with overlays')
     ap.add_argument('--damage', action='store_true', help="overwrite a stretch of each video's packets (0.2-1.5 s)")
+    ap.add_argument('--operator', action='store_true',
+                    help="sync as an operator who draws the needle's line and a region leaving out the counter and the clock")
     ap.add_argument('--expect-honest', action='store_true',
                     help='exit with status 1 if a case more than a frame off was offered for acceptance')
     ap.add_argument('--expect-hits', action='store_true',
@@ -215,7 +229,7 @@ def main():
                     help='exit with status 1 unless every case is within FRAMES frames, accepted or not')
     a = ap.parse_args()
     seed = chosen_seed(a, 'sync_probe_matrix')
-    rerun = f"--seed {seed}{' --slow-small' if a.slow_small else ''}{' --damage' if a.damage else ''}"
+    rerun = f"--seed {seed}{' --slow-small' if a.slow_small else ''}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}"
     print(f"sync_probe_matrix: seed {seed} (rerun with {rerun}), {a.cases} cases", flush=True)
     cases = (draw_slow_small_cases if a.slow_small else draw_cases)(seed, a.cases)
     if a.only:
@@ -226,7 +240,7 @@ def main():
     worst = 0.0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.damage), cases):
+            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.damage, a.operator), cases):
                 if o.get('refused'):
                     if o['moving']:
                         misses += 1

@@ -2357,12 +2357,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1077"/>
+        <location line="+1078"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1074"/>
+        <location line="-1075"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2592,12 +2592,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die automatische Synchronisation abbrechen (der verwendete Versatz bleibt)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position</source>
-        <translation>die Nadel verfolgen (im gezeichneten Bereich oder überall gefunden) und ihre Verschiebung an die aufgezeichnete Position anpassen</translation>
-    </message>
-    <message>
-        <location line="+67"/>
+        <location line="+69"/>
         <source>needle tracked (offset found)</source>
         <translation>verfolgte Nadel (gefundener Versatz)</translation>
     </message>
@@ -2607,7 +2602,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-982"/>
+        <location line="-983"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2736,7 +2731,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+50"/>
+        <source>track the needle and fit its displacement to the recorded position; drag on the video to draw a region, and the needle is read in it alone (leave burnt-in clocks and counters out of it)</source>
+        <translation>die Nadel verfolgen und ihre Verschiebung an die aufgezeichnete Position anpassen; auf dem Video einen Bereich aufziehen, dann wird die Nadel nur darin gelesen (eingeblendete Uhren und Zähler außen lassen)</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>correlating: frame %1 of %2…</source>
         <translation>korreliere: Bild %1 von %2…</translation>
     </message>
@@ -2756,7 +2756,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-950"/>
+        <location line="-951"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2886,7 +2886,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+119"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -6030,7 +6030,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+436"/>
+        <location filename="../core/friction_fit.cpp" line="+437"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -7685,9 +7685,14 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+2067"/>
+        <location filename="../video/needle_tracker.cpp" line="+708"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the needle line does not cross the region %1,%2 %3x%4 (at least 20 pixels of it)</source>
+        <translation>die Nadellinie kreuzt den Bereich %1,%2 %3x%4 nicht (auf mindestens 20 Pixeln)</translation>
     </message>
     <message>
         <location filename="../video/frame_index.cpp" line="+9"/>

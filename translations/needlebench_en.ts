@@ -2351,12 +2351,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1077"/>
+        <location line="+1078"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1074"/>
+        <location line="-1075"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2586,12 +2586,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+67"/>
+        <location line="+69"/>
         <source>needle tracked (offset found)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2601,7 +2596,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-982"/>
+        <location line="-983"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2728,7 +2723,12 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+50"/>
+        <source>track the needle and fit its displacement to the recorded position; drag on the video to draw a region, and the needle is read in it alone (leave burnt-in clocks and counters out of it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>correlating: frame %1 of %2…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2748,7 +2748,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-950"/>
+        <location line="-951"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2878,7 +2878,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+119"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5920,7 +5920,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+436"/>
+        <location filename="../core/friction_fit.cpp" line="+437"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7575,8 +7575,13 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+2067"/>
+        <location filename="../video/needle_tracker.cpp" line="+708"/>
         <source>the needle line lies outside the picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the needle line does not cross the region %1,%2 %3x%4 (at least 20 pixels of it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

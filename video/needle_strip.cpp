@@ -9,26 +9,30 @@ namespace nb::video::strip {
 
 double median(std::vector<double> v) { return medianInPlace(v.begin(), v.end()); }
 
-Strip::Strip(const NeedleAxis& axis, int width, int height, int halfWidth, double sideOffset)
+Strip::Strip(const NeedleAxis& axis, int width, int height, int halfWidth, double sideOffset, QRect within)
 {
     const double len = axis.length();
     if (len < 2.0)
         return;
     const double ux = (axis.x2() - axis.x1()) / len, uy = (axis.y2() - axis.y1()) / len;
     const double nx = -uy, ny = ux;
-    // Extend the line across the whole picture: the tip may travel past the drawn ends.
+    // Extend the line across the whole picture (or region): the tip may travel past the drawn ends.
+    const QRect bounds = within.isEmpty() ? QRect(0, 0, width, height) : within & QRect(0, 0, width, height);
     double s0 = -1e9, s1 = 1e9;
     auto clip = [&](double p, double d, double lo, double hi) {
-        if (std::abs(d) < 1e-9)
+        if (std::abs(d) < 1e-9) {
+            if (p < lo || p > hi)
+                s1 = s0;  // parallel to two of the bounds, outside them: nothing to sample
             return;
+        }
         double a = (lo - p) / d, b = (hi - p) / d;
         if (a > b)
             std::swap(a, b);
         s0 = std::max(s0, a);
         s1 = std::min(s1, b);
     };
-    clip(axis.x1(), ux, 0.0, width - 1.0);
-    clip(axis.y1(), uy, 0.0, height - 1.0);
+    clip(axis.x1(), ux, bounds.left(), bounds.right());
+    clip(axis.y1(), uy, bounds.top(), bounds.bottom());
     if (!(s1 > s0 + 2))
         return;
     length = int(s1 - s0);

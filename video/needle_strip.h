@@ -7,6 +7,7 @@
 #include "frame_samples.h"
 #include "needle_axis.h"
 
+#include <QRect>
 #include <opencv2/core.hpp>
 
 #include <algorithm>
@@ -30,13 +31,14 @@ double medianInPlace(It first, It last)
 
 double median(std::vector<double> v);
 
-// A strip along a line, sampled every pixel along it and `halfWidth` pixels to either side.
+// A strip along a line, sampled every pixel along it and `halfWidth` pixels to either side, as
+// far as the line runs inside `within` (the whole picture when empty).
 struct Strip {
     cv::Mat mapX, mapY;  // (2·halfWidth+1) rows × length columns
     int length = 0;
     double origin = 0.0;  // position along the axis (from p1) of profile sample 0
 
-    Strip(const NeedleAxis& axis, int width, int height, int halfWidth, double sideOffset = 0.0);
+    Strip(const NeedleAxis& axis, int width, int height, int halfWidth, double sideOffset = 0.0, QRect within = {});
 
     // The strip's mean across its width, smoothed along it.
     std::vector<double> profile(const cv::Mat& gray, double smoothing_px = 0.8) const;
@@ -53,7 +55,10 @@ struct StripProfile {
 };
 
 struct NeedleStrip : Strip {
-    NeedleStrip(const NeedleAxis& axis, int width, int height) : Strip(axis, width, height, kSideTo_px) {}
+    NeedleStrip(const NeedleAxis& axis, int width, int height, QRect within = {})
+        : Strip(axis, width, height, kSideTo_px, 0.0, within)
+    {
+    }
 
     StripProfile sample(const cv::Mat& gray, double smoothing_px = 0.8) const;
 };

@@ -276,8 +276,9 @@ struct AxisTracker {
 
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
 
-    AxisTracker(const NeedleAxis& given, const FrameSamples& s, double frameDuration_s, const std::optional<AxisStretch>& notRead)
-        : strip(given, s.width, s.height), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
+    AxisTracker(const NeedleAxis& given, const FrameSamples& s, double frameDuration_s, const std::optional<AxisStretch>& notRead,
+                QRect within)
+        : strip(given, s.width, s.height, within), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
     {
         if (strip.length < 20)
             return;
@@ -286,7 +287,7 @@ struct AxisTracker {
         // A line drawn by the operator may point either way (found ones are turned already).
         if (shaftFromFarEnd(profiles)) {
             axis = NeedleAxis(given.p2(), given.p1());
-            strip = NeedleStrip(axis, s.width, s.height);
+            strip = NeedleStrip(axis, s.width, s.height, within);
             profiles = sampleStrip(strip, s);
             if (blind)
                 blind = AxisStretch{given.length() - blind->to_px, given.length() - blind->from_px};
@@ -682,27 +683,34 @@ std::vector<std::optional<NeedleAxis>> settledOnFaintShafts(const FrameSamples& 
 
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,
-                                      const std::vector<std::optional<AxisStretch>>& notRead)
+                                      const std::vector<std::optional<AxisStretch>>& notRead, QRect within)
 {
-    return trackNeedles(reader, sampleFrames(reader, 40), axes, progress, cancel, notRead);
+    return trackNeedles(reader, sampleFrames(reader, 40), axes, progress, cancel, notRead, within);
 }
 
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,
-                                      const std::vector<std::optional<AxisStretch>>& notRead)
+                                      const std::vector<std::optional<AxisStretch>>& notRead, QRect within)
 {
     const FrameIndex& index = reader.index();
     const cv::Mat mean = framesMean(s);
     std::vector<AxisTracker> trackers;
     std::vector<NeedleTrack> out(axes.size());
     std::vector<std::vector<double>> measured(axes.size());
+    // A line that the region leaves too little of to read a tip on is not read at all (every
+    // frame masked): among found lines, one that only clips the region's corner.
+    std::vector<char> readable(axes.size(), 1);
     for (std::size_t a = 0; a < axes.size(); ++a) {
         trackers.emplace_back(settleOnShaft(mean, axes[a]), s, index.frameDuration(),
-                              a < notRead.size() ? notRead[a] : std::nullopt);
-        if (trackers.back().strip.length < 20)
+                              a < notRead.size() ? notRead[a] : std::nullopt, within);
+        readable[a] = trackers.back().strip.length >= 20;
+        if (!readable[a] && within.isEmpty())
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
         out[a].axis = trackers.back().axis;
     }
+    if (!axes.empty() && std::none_of(readable.begin(), readable.end(), [](char r) { return r; }))
+        throw VideoError(index.path, nb::TrDevices::tr("the needle line does not cross the region %1,%2 %3x%4 (at least 20 pixels of it)")
+                                         .arg(within.x()).arg(within.y()).arg(within.width()).arg(within.height()));
     // A frame's tip, once decided, along the axis from its p1.
     auto record = [&](std::size_t a, const AxisTracker::Sighting& tip) {
         out[a].displacement_px.push_back(tip.found + trackers[a].strip.origin);
@@ -726,13 +734,19 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         memory.add(gray);
         for (std::size_t a = 0; a < axes.size(); ++a) {
             out[a].time_s.push_back(info.time_s);
-            if (const std::optional<AxisTracker::Sighting> tip = trackers[a].next(gray, info.time_s, info.duplicate))
+            if (!readable[a])
+                out[a].displacement_px.push_back(kNaN);
+            else if (const std::optional<AxisTracker::Sighting> tip = trackers[a].next(gray, info.time_s, info.duplicate))
                 record(a, *tip);
         }
         if (progress && (i - first) % 50 == 0)
             progress(i - first, n - first);
     }
     for (std::size_t a = 0; a < axes.size(); ++a) {
+        if (!readable[a]) {
+            out[a].masked = int(out[a].displacement_px.size());
+            continue;
+        }
         for (const AxisTracker::Sighting& tip : trackers[a].rest())
             record(a, tip);
         trackers[a].readAgain(out[a].displacement_px, trackers[a].strip.origin);

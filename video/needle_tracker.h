@@ -22,6 +22,7 @@
 #include "frame_samples.h"
 #include "needle_axis.h"
 
+#include <QRect>
 #include <atomic>
 #include <functional>
 #include <optional>
@@ -59,16 +60,18 @@ struct AxisStretch {
 // needle's shaft lies towards p2: an operator may draw the line roughly and either way. The
 // track's `axis` is the line measured along. `notRead` (empty, or one per axis): a stretch of
 // the axis where no tip is read, as far around it as a tip's edge reaches; give the axis as a
-// track measured along it, so that the stretch stays where it was. Throws VideoError.
+// track measured along it, so that the stretch stays where it was. `within` (empty: the whole
+// picture): the region in which the tip is read; the line beyond it is not read at all (the
+// operator's region that leaves out a clock or counter the line runs through). Throws VideoError.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
                                       const std::atomic_bool* cancel = nullptr,
-                                      const std::vector<std::optional<AxisStretch>>& notRead = {});
+                                      const std::vector<std::optional<AxisStretch>>& notRead = {}, QRect within = {});
 // The same, learning from `samples` (sampleFrames of this reader) instead of sampling again.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& samples, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
                                       const std::atomic_bool* cancel = nullptr,
-                                      const std::vector<std::optional<AxisStretch>>& notRead = {});
+                                      const std::vector<std::optional<AxisStretch>>& notRead = {}, QRect within = {});
 
 // Tracks the tip along `axis` in every frame. Throws VideoError.
 NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis,

@@ -1242,7 +1242,8 @@ void ReviewWorkspace::updateAutoSyncButton()
         return;
     autoSyncButton_->setText(wantPending_ ? tr("Stop sync") : tr("Auto sync"));
     autoSyncButton_->setToolTip(wantPending_ ? tr("stop the automatic sync (the offset in use stays)")
-                                             : tr("track the needle (found in the drawn region, or anywhere) and fit its displacement to the recorded position"));
+                                             : tr("track the needle and fit its displacement to the recorded position; drag on the video to draw a region, "
+                                                  "and the needle is read in it alone (leave burnt-in clocks and counters out of it)"));
 }
 
 void ReviewWorkspace::startSyncJob(bool forOperator)

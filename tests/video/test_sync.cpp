@@ -503,6 +503,23 @@ private slots:
         const QJsonArray past{a[0], a[1], a[2].toDouble() + 3.0 * (a[2].toDouble() - a[0].toDouble()), a[3].toDouble() + 3.0 * (a[3].toDouble() - a[1].toDouble())};
         runJson({"sync", run_, video_, "--needle", coordinates(past), "--json"}, &code);
         QCOMPARE(code, 0);
+        // The tip is read in the region alone: a drawn line that misses the region is refused,
+        // named, not tracked as nothing. The region: 16 px in the picture's corner furthest from
+        // the line.
+        const QLineF line(a[0].toDouble(), a[1].toDouble(), a[2].toDouble(), a[3].toDouble());
+        const QPointF along = (line.p2() - line.p1()) / line.length();
+        auto distance = [&](QPointF p) { return std::abs((p.x() - line.x1()) * along.y() - (p.y() - line.y1()) * along.x()); };
+        const nb::video::FrameIndex index = nb::video::buildFrameIndex(video_);
+        const int w = index.width, h = index.height;
+        QPoint corner(0, 0);
+        for (const QPoint c : {QPoint(w - 16, 0), QPoint(0, h - 16), QPoint(w - 16, h - 16)})
+            if (distance(c + QPointF(8, 8)) > distance(corner + QPointF(8, 8)))
+                corner = c;
+        QVERIFY(distance(corner + QPointF(8, 8)) > 16.0);
+        const QString roi = QStringLiteral("%1,%2,16,16").arg(corner.x()).arg(corner.y());
+        const nbtest::CliResult apart = nbtest::runCli({"sync", run_, video_, "--needle", coordinates(a), "--roi", roi}, 240000);
+        QCOMPARE(apart.code, 1);
+        QVERIFY2(apart.err.contains(QStringLiteral("does not cross the region %1,%2 16x16").arg(corner.x()).arg(corner.y())), qPrintable(apart.err));
     }
 
     // A short fast stroke (8 mm at 10 mm/s) in an H.264 video begun 14 s before it: the needle
