@@ -2276,7 +2276,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+84"/>
+        <location filename="../widgets/review_workspace.cpp" line="+101"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2286,12 +2286,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+698"/>
+        <location line="+703"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-669"/>
+        <location line="-674"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
@@ -2301,7 +2301,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>über eine beschädigte Strecke hinweg dekodiert: teils vom Decoder ergänzt</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -2357,12 +2357,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1078"/>
+        <location line="+1087"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1075"/>
+        <location line="-1084"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2388,12 +2388,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+597"/>
+        <location line="+601"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-597"/>
+        <location line="-601"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2517,12 +2517,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+867"/>
+        <location line="+872"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-667"/>
+        <location line="-672"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation>die Label-Datei konnte nicht beiseitegelegt werden: das nächste gespeicherte Label ersetzt sie</translation>
     </message>
@@ -2547,7 +2547,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+307"/>
+        <location line="+311"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2577,7 +2577,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+104"/>
         <source>Automatic sync stopped</source>
         <translation>Automatische Synchronisation abgebrochen</translation>
     </message>
@@ -2592,7 +2592,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die automatische Synchronisation abbrechen (der verwendete Versatz bleibt)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+1"/>
+        <source>track the needle and fit its displacement to the recorded position. Drag on the video to draw a region: the needle is read in it alone (leave burnt-in clocks and counters out). Shift+drag from the shaft to the tip to draw the needle&apos;s line where it is not found.</source>
+        <translation>die Nadel verfolgen und ihre Verschiebung an die aufgezeichnete Position anpassen. Auf dem Video einen Bereich aufziehen: die Nadel wird nur darin gelesen (eingeblendete Uhren und Zähler außen lassen). Mit Umschalt vom Schaft zur Spitze ziehen, um die Nadellinie zu zeichnen, wo sie nicht gefunden wird.</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>needle tracked (offset found)</source>
         <translation>verfolgte Nadel (gefundener Versatz)</translation>
     </message>
@@ -2602,7 +2607,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-983"/>
+        <location line="-992"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2617,7 +2622,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+24"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>Labels: %n</numerusform>
@@ -2731,12 +2736,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+50"/>
-        <source>track the needle and fit its displacement to the recorded position; drag on the video to draw a region, and the needle is read in it alone (leave burnt-in clocks and counters out of it)</source>
-        <translation>die Nadel verfolgen und ihre Verschiebung an die aufgezeichnete Position anpassen; auf dem Video einen Bereich aufziehen, dann wird die Nadel nur darin gelesen (eingeblendete Uhren und Zähler außen lassen)</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="+79"/>
         <source>correlating: frame %1 of %2…</source>
         <translation>korreliere: Bild %1 von %2…</translation>
     </message>
@@ -2756,7 +2756,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-951"/>
+        <location line="-960"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2821,7 +2821,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+51"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -2881,12 +2881,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>correlating…</source>
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+123"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -7944,7 +7944,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+21"/>
+        <location filename="../widgets/video_view.cpp" line="+22"/>
         <source>Open video…</source>
         <translation>Video öffnen…</translation>
     </message>
@@ -7959,7 +7959,7 @@ F = %1 x + %2 x²
         <translation>Kein Video. Eines öffnen oder die Datei hierher ziehen, um es mit der Kraftaufzeichnung auszuwerten.</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+106"/>
         <source>frame %1   %2 s</source>
         <translation>Bild %1   %2 s</translation>
     </message>

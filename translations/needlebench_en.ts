@@ -2270,7 +2270,7 @@ Stop the stage now (emergency stop) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+84"/>
+        <location filename="../widgets/review_workspace.cpp" line="+101"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2280,12 +2280,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+698"/>
+        <location line="+703"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-669"/>
+        <location line="-674"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2295,7 +2295,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2351,12 +2351,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1078"/>
+        <location line="+1087"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1075"/>
+        <location line="-1084"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2382,12 +2382,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+597"/>
+        <location line="+601"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-597"/>
+        <location line="-601"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2511,12 +2511,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+867"/>
+        <location line="+872"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-667"/>
+        <location line="-672"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2541,7 +2541,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+307"/>
+        <location line="+311"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2571,7 +2571,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+104"/>
         <source>Automatic sync stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2586,7 +2586,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+1"/>
+        <source>track the needle and fit its displacement to the recorded position. Drag on the video to draw a region: the needle is read in it alone (leave burnt-in clocks and counters out). Shift+drag from the shaft to the tip to draw the needle&apos;s line where it is not found.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>needle tracked (offset found)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2596,7 +2601,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-983"/>
+        <location line="-992"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2611,7 +2616,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+24"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>labels: %n</numerusform>
@@ -2723,12 +2728,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+50"/>
-        <source>track the needle and fit its displacement to the recorded position; drag on the video to draw a region, and the needle is read in it alone (leave burnt-in clocks and counters out of it)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="+79"/>
         <source>correlating: frame %1 of %2…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2748,7 +2748,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-951"/>
+        <location line="-960"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2813,7 +2813,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+51"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2873,12 +2873,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>correlating…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+123"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7832,7 +7832,7 @@ F = %1 x + %2 x²
 <context>
     <name>nb::VideoView</name>
     <message>
-        <location filename="../widgets/video_view.cpp" line="+21"/>
+        <location filename="../widgets/video_view.cpp" line="+22"/>
         <source>Open video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7847,7 +7847,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+106"/>
         <source>frame %1   %2 s</source>
         <translation type="unfinished"></translation>
     </message>

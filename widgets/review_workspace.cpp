@@ -18,6 +18,7 @@
 #include "video/video_error.h"
 
 #include <QCheckBox>
+#include <QUnhandledException>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QDir>
@@ -47,6 +48,22 @@
 namespace nb {
 
 namespace {
+
+// What went wrong in a background job, in its own words: QtConcurrent hands on an exception that
+// is no QException as a QUnhandledException, whose what() is "std::exception" (the window said
+// "Automatic sync failed: std::exception" for a line outside the region, a video too short...).
+QString jobFailure(const std::exception& e)
+{
+    if (const auto* unhandled = dynamic_cast<const QUnhandledException*>(&e); unhandled && unhandled->exception()) {
+        try {
+            std::rethrow_exception(unhandled->exception());
+        } catch (const std::exception& thrown) {
+            return QString::fromUtf8(thrown.what());
+        } catch (...) {
+        }
+    }
+    return QString::fromUtf8(e.what());
+}
 
 // One change of the sync (ReviewWorkspace::changeSync); `apply` sets a state on the workspace.
 template <typename State>
@@ -153,11 +170,12 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
                 pendingSync_ = vs.result;
             tracked_ = std::move(vs);
             trackedRoi_ = jobRoi_;
+            trackedNeedle_ = jobNeedle_;
         } catch (const std::exception& e) {
             tracked_.reset();
             if (forOperator) {
                 pendingSync_.reset();
-                showStatus(tr("Automatic sync failed: %1").arg(QString::fromUtf8(e.what())));
+                showStatus(tr("Automatic sync failed: %1").arg(jobFailure(e)));
             }
         }
         if (forOperator) {
@@ -651,10 +669,14 @@ void ReviewWorkspace::closeRun()
 
 void ReviewWorkspace::openVideo(const QString& path)
 {
-    // Marks belong to one run and one video.
+    // Marks belong to one run and one video, and so do the region and the line drawn on it.
     markRecording_.reset();
     markVideo_.reset();
     markedEvent_.reset();
+    if (path != videoPath_) {
+        video_->setRoi({});
+        video_->setNeedleLine({});
+    }
     videoPath_ = path;
     index_.reset();
     resetTrack();
@@ -1204,9 +1226,10 @@ void ReviewWorkspace::startAutoSync()
         return;
     }
     const QRect roi = video_->roi();
+    const QLineF needle = video_->needleLine();
     const bool running = syncWatcher_.isRunning() && watchedGeneration_ == jobGeneration_;
-    if (!running && tracked_ && trackedRoi_ == roi) {
-        // The background tracking already fitted this run and video in this region.
+    if (!running && tracked_ && trackedRoi_ == roi && trackedNeedle_ == needle) {
+        // The background tracking already fitted this run and video with these marks.
         pendingSync_ = tracked_->result;
         updateSyncUi();
         updateTrace();
@@ -1215,7 +1238,7 @@ void ReviewWorkspace::startAutoSync()
     }
     operatorStopped_ = false;
     syncLabel_->setText(tr("correlating…"));
-    if (running && jobRoi_ == roi)
+    if (running && jobRoi_ == roi && jobNeedle_ == needle)
         wantPending_ = true;  // the background job is doing just this
     else
         startSyncJob(true);
@@ -1242,8 +1265,9 @@ void ReviewWorkspace::updateAutoSyncButton()
         return;
     autoSyncButton_->setText(wantPending_ ? tr("Stop sync") : tr("Auto sync"));
     autoSyncButton_->setToolTip(wantPending_ ? tr("stop the automatic sync (the offset in use stays)")
-                                             : tr("track the needle and fit its displacement to the recorded position; drag on the video to draw a region, "
-                                                  "and the needle is read in it alone (leave burnt-in clocks and counters out of it)"));
+                                             : tr("track the needle and fit its displacement to the recorded position. Drag on the video to draw a "
+                                                  "region: the needle is read in it alone (leave burnt-in clocks and counters out). "
+                                                  "Shift+drag from the shaft to the tip to draw the needle's line where it is not found."));
 }
 
 void ReviewWorkspace::startSyncJob(bool forOperator)
@@ -1254,9 +1278,12 @@ void ReviewWorkspace::startSyncJob(bool forOperator)
     watchedGeneration_ = jobGeneration_;
     wantPending_ = forOperator;
     jobRoi_ = video_->roi();
+    jobNeedle_ = video_->needleLine();
     const video::FrameIndex index = *index_;
     video::VideoSyncOptions options;
     options.roi = jobRoi_;
+    if (!jobNeedle_.isNull())
+        options.axis = jobNeedle_;
     const Run run = run_;
     const std::shared_ptr<std::atomic_bool> cancel = jobCancel_;
     // How far the tracking is, while the operator waits for it: a long video showed

@@ -1,6 +1,7 @@
 #include "video_view.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <QLocale>
 
@@ -85,7 +86,14 @@ void VideoView::setRoi(const QRect& roi)
     emit roiChanged(roi_);
 }
 
-QRect VideoView::target() const
+void VideoView::setNeedleLine(const QLineF& line)
+{
+    needle_ = line;
+    update();
+    emit needleLineChanged(needle_);
+}
+
+QRect VideoView::pictureRect() const
 {
     if (image_.isNull())
         return rect();
@@ -95,7 +103,7 @@ QRect VideoView::target() const
 
 QPoint VideoView::toVideo(QPoint w) const
 {
-    const QRect t = target();
+    const QRect t = pictureRect();
     if (image_.isNull() || t.width() == 0 || t.height() == 0)
         return {};
     return {int((w.x() - t.x()) * double(image_.width()) / t.width()), int((w.y() - t.y()) * double(image_.height()) / t.height())};
@@ -110,13 +118,26 @@ void VideoView::paintEvent(QPaintEvent*)
         p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, message_);
         return;
     }
-    const QRect t = target();
+    const QRect t = pictureRect();
     p.setRenderHint(QPainter::SmoothPixmapTransform);
     p.drawImage(t, image_);
     if (!roi_.isEmpty()) {
         const double sx = double(t.width()) / image_.width(), sy = double(t.height()) / image_.height();
         p.setPen(QPen(QColor(255, 200, 0), 1, Qt::DashLine));
         p.drawRect(QRectF(t.x() + roi_.x() * sx, t.y() + roi_.y() * sy, roi_.width() * sx, roi_.height() * sy));
+    }
+    if (!needle_.isNull()) {
+        const double sx = double(t.width()) / image_.width(), sy = double(t.height()) / image_.height();
+        const QPointF a(t.x() + needle_.x1() * sx, t.y() + needle_.y1() * sy), b(t.x() + needle_.x2() * sx, t.y() + needle_.y2() * sy);
+        p.setRenderHint(QPainter::Antialiasing);
+        // Thin and see-through: the operator lays it on the needle and must see the needle under it.
+        const QColor cyan(0, 220, 255, 190);
+        p.setPen(QPen(cyan, 1.2));
+        p.drawLine(a, b);
+        p.setBrush(cyan);
+        p.drawEllipse(a, 3, 3);
+        p.drawEllipse(b, 3, 3);
+        p.setBrush(Qt::NoBrush);
     }
     const QString caption = tr("frame %1   %2 s").arg(index_).arg(QLocale().toString(time_, 'f', 3));
     const QFontMetrics fm = p.fontMetrics();
@@ -137,24 +158,32 @@ void VideoView::mousePressEvent(QMouseEvent* e)
     if (image_.isNull())
         return;
     dragStart_ = toVideo(e->position().toPoint());
-    dragging_ = true;
+    drag_ = e->modifiers() & Qt::ShiftModifier ? Drag::Needle : Drag::Region;
 }
 
 void VideoView::mouseMoveEvent(QMouseEvent* e)
 {
-    if (!dragging_)
+    const QPoint at = toVideo(e->position().toPoint());
+    if (drag_ == Drag::Region)
+        roi_ = QRect(dragStart_, at).normalized() & image_.rect();
+    else if (drag_ == Drag::Needle)
+        needle_ = QLineF(dragStart_, at);
+    else
         return;
-    roi_ = QRect(dragStart_, toVideo(e->position().toPoint())).normalized() & image_.rect();
     update();
 }
 
 void VideoView::mouseReleaseEvent(QMouseEvent* e)
 {
-    if (!dragging_)
-        return;
-    dragging_ = false;
-    const QRect r = QRect(dragStart_, toVideo(e->position().toPoint())).normalized() & image_.rect();
-    setRoi(r.width() > 4 && r.height() > 4 ? r : QRect());  // a click clears the region
+    const Drag was = std::exchange(drag_, Drag::None);
+    const QPoint at = toVideo(e->position().toPoint());
+    if (was == Drag::Region) {
+        const QRect r = QRect(dragStart_, at).normalized() & image_.rect();
+        setRoi(r.width() > 4 && r.height() > 4 ? r : QRect());  // a click clears the region
+    } else if (was == Drag::Needle) {
+        const QLineF line(dragStart_, at);
+        setNeedleLine(line.length() >= 8 ? line : QLineF());  // a Shift-click clears the line
+    }
 }
 
 }  // namespace nb

@@ -1,8 +1,11 @@
 #pragma once
 // Shows the current video frame, scaled to fit with its aspect kept, with frame number and
-// time; the user drags a rectangle to set the region used for the motion signal (sync).
+// time. The operator marks the picture for the sync: a drag draws the region the needle is read
+// in, a drag with Shift held the needle's line (when the picture does not show it plainly enough
+// to be found); a click, or a Shift-click, clears either.
 
 #include <QImage>
+#include <QLineF>
 #include <QRect>
 #include <QWidget>
 
@@ -22,6 +25,10 @@ public:
     QString note() const { return note_; }
     QRect roi() const { return roi_; }     // in video pixels; empty = whole frame
     void setRoi(const QRect& roi);
+    QLineF needleLine() const { return needle_; }  // in video pixels; null = find it in the picture
+    void setNeedleLine(const QLineF& line);
+    // Where the frame is drawn in the view (its aspect kept).
+    QRect pictureRect() const;
     int frameIndex() const { return index_; }
     QSize sizeHint() const override { return {480, 320}; }
     // Back to the "No video" placeholder with its Open video… button.
@@ -30,6 +37,7 @@ public:
 
 signals:
     void roiChanged(const QRect& roi);
+    void needleLineChanged(const QLineF& line);
     void openRequested();                   // the placeholder's Open video… button
     void videoDropped(const QString& path); // a file dropped on the view
 
@@ -44,7 +52,6 @@ protected:
     void mouseReleaseEvent(QMouseEvent*) override;
 
 private:
-    QRect target() const;  // where the frame is drawn
     QPoint toVideo(QPoint widget) const;
     QImage image_;
     int index_ = -1;
@@ -52,8 +59,9 @@ private:
     QString note_;
     QString message_;
     QRect roi_;
+    QLineF needle_;
     QPoint dragStart_;
-    bool dragging_ = false;
+    enum class Drag { None, Region, Needle } drag_ = Drag::None;
     QPushButton* openButton_ = nullptr;
     void placeOpenButton();
 };

@@ -8,6 +8,8 @@
 #include "widgets/review_workspace.h"
 #include "widgets/timeline.h"
 #include "widgets/video_view.h"
+#include "video/frame_index.h"
+#include "support/needlebench_cli.h"
 
 #include <QCheckBox>
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QMessageBox>
@@ -333,6 +336,77 @@ private slots:
     // accepted, and visibly apart before (offset 0) and after a nudge: the operator sees
     // whether the two agree. The tracking runs in the background as soon as the run's own
     // video is found beside it, and Auto sync takes its answer.
+    // The operator marks the picture with the mouse: a drag draws the region the needle is read
+    // in, a drag with Shift the needle's line (where the picture does not show it plainly enough
+    // to be found), and Auto sync reads the tip along that line inside the region, as `sync
+    // --needle --roi` does. A click clears the region, a Shift-click the line.
+    void needleLineDrawnWithShift()
+    {
+        nb::ReviewWorkspace ws;
+        ws.resize(1280, 820);
+        ws.show();
+        QVERIFY(ws.openRun(run_));
+        QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
+        ws.openVideo(video_);
+        QVERIFY(opened.wait(60000));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.currentFrame() == 0, 20000);
+        nb::VideoView* view = ws.videoView();
+        const nb::video::FrameIndex index = nb::video::buildFrameIndex(video_);
+        const QRect picture = view->pictureRect();
+        QVERIFY(picture.width() > 100);
+        auto onView = [&](QPointF video) {
+            return QPoint(int(std::lround(picture.x() + video.x() * picture.width() / index.width)),
+                          int(std::lround(picture.y() + video.y() * picture.height() / index.height)));
+        };
+        auto drag = [&](QPointF from, QPointF to, Qt::KeyboardModifiers keys) {
+            QTest::mousePress(view, Qt::LeftButton, keys, onView(from));
+            QTest::mouseMove(view, onView((from + to) / 2));
+            QTest::mouseMove(view, onView(to));
+            QTest::mouseRelease(view, Qt::LeftButton, keys, onView(to));
+        };
+        const double pixel = std::max(double(index.width) / picture.width(), 1.0) + 0.5;  // a view pixel in the video's, rounded
+
+        // The needle's line as `sync` finds it, drawn from the shaft to the tip.
+        const nbtest::CliResult found = nbtest::runCli({"sync", run_, video_, "--json"}, 240000);
+        QCOMPARE(found.code, 0);
+        const QJsonArray a = found.json()["needle"].toArray();
+        QCOMPARE(a.size(), 4);
+        const QLineF needle(a[0].toDouble(), a[1].toDouble(), a[2].toDouble(), a[3].toDouble());
+        const QRect region(240, 300, 240, 180);
+        drag(region.topLeft(), region.bottomRight() + QPoint(1, 1), Qt::NoModifier);
+        QVERIFY2((view->roi().topLeft() - region.topLeft()).manhattanLength() <= 2 * pixel &&
+                     (view->roi().bottomRight() - region.bottomRight()).manhattanLength() <= 2 * pixel,
+                 qPrintable(QStringLiteral("%1,%2 %3x%4").arg(view->roi().x()).arg(view->roi().y()).arg(view->roi().width()).arg(view->roi().height())));
+        drag(needle.p1(), needle.p2(), Qt::ShiftModifier);
+        QVERIFY(QLineF(view->needleLine().p1(), needle.p1()).length() <= pixel);
+        QVERIFY(QLineF(view->needleLine().p2(), needle.p2()).length() <= pixel);
+        QVERIFY(!view->roi().isEmpty());  // the line leaves the region as it was
+
+        QSignalSpy synced(&ws, &nb::ReviewWorkspace::syncFinished);
+        ws.startAutoSync();
+        QVERIFY(synced.wait(240000));
+        QVERIFY2(ws.pendingSync().has_value(), qPrintable(ws.status()));
+        QVERIFY2(std::abs(ws.pendingSync()->offset_s - truthOffset_) < 1.0 / 29.97, qPrintable(QString::number(ws.pendingSync()->offset_s)));
+        ws.rejectSync();
+
+        // The line is the one read: drawn where the region leaves none of it, the sync says so.
+        const QRect corner(0, 0, 40, 40);
+        drag(corner.topLeft(), corner.bottomRight() + QPoint(1, 1), Qt::NoModifier);
+        drag(QPointF(index.width - 200, index.height - 20), QPointF(index.width - 20, index.height - 20), Qt::ShiftModifier);
+        QSignalSpy again(&ws, &nb::ReviewWorkspace::syncFinished);
+        ws.startAutoSync();
+        QVERIFY(again.wait(240000));
+        QVERIFY(!ws.pendingSync().has_value());
+        QVERIFY2(ws.status().contains(QLatin1String("does not cross the region")), qPrintable(ws.status()));
+
+        // A Shift-click clears the line and a click the region.
+        QTest::mouseClick(view, Qt::LeftButton, Qt::ShiftModifier, onView(QPointF(100, 100)));
+        QVERIFY(view->needleLine().isNull());
+        QVERIFY(!view->roi().isEmpty());
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, onView(QPointF(100, 100)));
+        QVERIFY(view->roi().isEmpty());
+    }
+
     void trackedTraceLinesUpWithThePosition()
     {
         QTemporaryDir own;
