@@ -8,8 +8,10 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <array>
 #include <cmath>
 
 namespace nb {
@@ -36,6 +38,21 @@ QJsonObject readStore(const QString& path, QString* problem)
         return {};
     }
     return doc.object();
+}
+
+// Four finite numbers, or nothing.
+std::optional<std::array<double, 4>> fourNumbers(const QJsonValue& v)
+{
+    const QJsonArray a = v.toArray();
+    if (a.size() != 4)
+        return std::nullopt;
+    std::array<double, 4> out{};
+    for (int i = 0; i < 4; ++i) {
+        if (!a[i].isDouble() || !std::isfinite(a[i].toDouble()))
+            return std::nullopt;
+        out[std::size_t(i)] = a[i].toDouble();
+    }
+    return out;
 }
 
 }  // namespace
@@ -115,6 +132,11 @@ std::optional<RunVideoLink> readRunVideoLink(const QString& runPath, QString* pr
     link.method = syncMethodFromKey(o.value(QStringLiteral("method")).toString());
     if (o.value(QStringLiteral("confidence")).isDouble())
         link.confidence = o.value(QStringLiteral("confidence")).toDouble();
+    // A hand-edited mark that makes no sense is dropped, not drawn: the sync then finds the needle.
+    if (const auto r = fourNumbers(o.value(QStringLiteral("region"))); r && (*r)[2] >= 1 && (*r)[3] >= 1)
+        link.region = QRect(int((*r)[0]), int((*r)[1]), int((*r)[2]), int((*r)[3]));
+    if (const auto n = fourNumbers(o.value(QStringLiteral("needle"))))
+        link.needle = QLineF((*n)[0], (*n)[1], (*n)[2], (*n)[3]);
     return link;
 }
 
@@ -138,6 +160,10 @@ void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>
         o.insert(QStringLiteral("method"), syncMethodKey(link->method));
         if (link->confidence)
             o.insert(QStringLiteral("confidence"), *link->confidence);
+        if (!link->region.isEmpty())
+            o.insert(QStringLiteral("region"), QJsonArray{link->region.x(), link->region.y(), link->region.width(), link->region.height()});
+        if (!link->needle.isNull())
+            o.insert(QStringLiteral("needle"), QJsonArray{link->needle.x1(), link->needle.y1(), link->needle.x2(), link->needle.y2()});
         runs.insert(run.fileName(), o);
     } else {
         runs.remove(run.fileName());

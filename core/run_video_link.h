@@ -4,7 +4,11 @@
 // finds them again:
 //
 //   { "runs": { "run_002_sine.csv": { "video": "run_002_sine.mp4", "offset_s": 0.41,
-//        "drift": 1e-4, "method": "automatic", "confidence": 0.93 } } }
+//        "drift": 1e-4, "method": "automatic", "confidence": 0.93,
+//        "region": [240, 300, 240, 180], "needle": [636, 20, 636, 290] } } }
+//
+// `region` (x, y, width, height) and `needle` (x1, y1, x2, y2) are what the operator drew on the
+// video for its sync, in its pixels; each is left out when nothing was drawn.
 //
 // The video is stored relative to the session folder when it lies inside it (the folder may
 // move), absolute otherwise.
@@ -12,6 +16,8 @@
 #include "core/run.h"
 #include "core/sync.h"
 
+#include <QLineF>
+#include <QRect>
 #include <QString>
 #include <QStringList>
 #include <optional>
@@ -28,6 +34,8 @@ struct RunVideoLink {
     TimelineMapping mapping;
     SyncMethod method = SyncMethod::None;
     std::optional<double> confidence;  // 0..1, from the automatic sync
+    QRect region;   // where the needle is read, in video pixels; empty: everywhere
+    QLineF needle;  // the needle's line drawn from its shaft to its tip; null: found in the picture
 };
 
 QString videoLinksPath(const QString& sessionDir);

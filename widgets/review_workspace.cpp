@@ -232,6 +232,9 @@ void ReviewWorkspace::buildUi()
     video_->setFocusPolicy(Qt::NoFocus);
     connect(video_, &VideoView::openRequested, this, &ReviewWorkspace::chooseVideo);
     connect(video_, &VideoView::videoDropped, this, &ReviewWorkspace::attachVideo);
+    // What the operator draws on the video is kept with the run's link to it, for a restart.
+    connect(video_, &VideoView::roiChanged, this, &ReviewWorkspace::storeVideoLink);
+    connect(video_, &VideoView::needleLineChanged, this, &ReviewWorkspace::storeVideoLink);
     plot_ = new QCustomPlot(this);
     plot_->setObjectName(QStringLiteral("reviewForcePlot"));
     plot_->setFocusPolicy(Qt::NoFocus);
@@ -674,6 +677,8 @@ void ReviewWorkspace::openVideo(const QString& path)
     markVideo_.reset();
     markedEvent_.reset();
     if (path != videoPath_) {
+        // Kept with the link when the new video is attached, not before (nothing to store yet).
+        const QSignalBlocker quiet(video_);
         video_->setRoi({});
         video_->setNeedleLine({});
     }
@@ -709,6 +714,11 @@ void ReviewWorkspace::clearVideo()
     frame_ = -1;
     requested_ = -1;
     video_->clearVideo();
+    {
+        const QSignalBlocker quiet(video_);  // the marks went with the video they were drawn on
+        video_->setRoi({});
+        video_->setNeedleLine({});
+    }
     // What the decoder still does for the video gone (indexing it, reading a frame of a file
     // since deleted) is no longer this run's: it said "cannot reopen the video" or "Indexing
     // the video" over a run without one (video probe).
@@ -793,6 +803,11 @@ void ReviewWorkspace::restoreVideoLink()
         if (const QString said = videoWarnings(); !said.isEmpty())
             showStatus(status_->text() + QStringLiteral("; ") + said);
     }
+    if (!videoPath_.isEmpty()) {
+        const QSignalBlocker quiet(video_);  // read from the store, nothing to store
+        video_->setRoi(link ? link->region : QRect());
+        video_->setNeedleLine(link ? link->needle : QLineF());
+    }
     if (!problem.isEmpty())
         showStatus(problem);
 }
@@ -810,7 +825,7 @@ void ReviewWorkspace::storeVideoLink()
     if (runPath_.isEmpty() || attachPending_)
         return;
     try {
-        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_};
+        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_, video_->roi(), video_->needleLine()};
         const bool empty = videoPath_.isEmpty() && mapping_ == TimelineMapping{} && syncMethod_ == SyncMethod::None;
         writeRunVideoLink(runPath_, empty ? std::nullopt : std::optional(link));
         emit videoLinkChanged();

@@ -160,6 +160,30 @@ private slots:
         QCOMPARE(back->mapping, link.mapping);
         QCOMPARE(back->method, nb::SyncMethod::EventMarks);
         QVERIFY(!back->confidence);
+        QVERIFY(back->region.isEmpty() && back->needle.isNull());  // nothing drawn, nothing kept
+
+        // What the operator drew on the video for its sync comes back as drawn; a hand-edited
+        // mark that makes no sense (no width, a word for a number) is dropped, not drawn.
+        link.region = QRect(240, 300, 240, 180);
+        link.needle = QLineF(636.5, 20, 636, 290.25);
+        nb::writeRunVideoLink(run, link);
+        QCOMPARE(nb::readRunVideoLink(run)->region, link.region);
+        QCOMPARE(nb::readRunVideoLink(run)->needle, link.needle);
+        {
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            QByteArray edited = f.readAll();
+            f.close();
+            QVERIFY(edited.contains("\"region\"") && edited.contains("\"needle\""));
+            edited.replace("180", "0").replace("290.25", "\"far\"");
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(edited);
+            f.close();
+        }
+        const auto edited = nb::readRunVideoLink(run);
+        QVERIFY(edited && edited->region.isEmpty() && edited->needle.isNull());
+        QCOMPARE(edited->mapping, link.mapping);
+        link.region = {};
+        link.needle = {};
 
         // Outside the session folder: kept absolute.
         QTemporaryDir elsewhere;

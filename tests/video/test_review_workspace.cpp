@@ -382,6 +382,22 @@ private slots:
         QVERIFY(QLineF(view->needleLine().p2(), needle.p2()).length() <= pixel);
         QVERIFY(!view->roi().isEmpty());  // the line leaves the region as it was
 
+        // Kept with the run's link to its video: a restart finds both drawn again.
+        {
+            const std::optional<nb::RunVideoLink> kept = nb::readRunVideoLink(run_);
+            QVERIFY(kept);
+            QCOMPARE(kept->region, view->roi());
+            QCOMPARE(kept->needle, view->needleLine());
+            nb::ReviewWorkspace restarted;
+            restarted.resize(1280, 820);
+            restarted.show();
+            QSignalSpy reopened(&restarted, &nb::ReviewWorkspace::videoOpened);
+            QVERIFY(restarted.openRun(run_));
+            QVERIFY(reopened.wait(60000));
+            QCOMPARE(restarted.videoView()->roi(), view->roi());
+            QCOMPARE(restarted.videoView()->needleLine(), view->needleLine());
+        }
+
         QSignalSpy synced(&ws, &nb::ReviewWorkspace::syncFinished);
         ws.startAutoSync();
         QVERIFY(synced.wait(240000));
@@ -405,6 +421,8 @@ private slots:
         QVERIFY(!view->roi().isEmpty());
         QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, onView(QPointF(100, 100)));
         QVERIFY(view->roi().isEmpty());
+        const std::optional<nb::RunVideoLink> cleared = nb::readRunVideoLink(run_);
+        QVERIFY(cleared && cleared->region.isEmpty() && cleared->needle.isNull());
     }
 
     void trackedTraceLinesUpWithThePosition()
