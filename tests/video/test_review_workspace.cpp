@@ -889,7 +889,7 @@ private slots:
         QFile::remove(withVideo);
         QFile::remove(without);
         QVERIFY(QFile::copy(run_, withVideo) && QFile::copy(run_, without));
-        nb::writeRunVideoLink(withVideo, nb::RunVideoLink{broken, {}, nb::SyncMethod::None, std::nullopt});
+        nb::writeRunVideoLink(withVideo, nb::RunVideoLink{broken, {}, nb::SyncMethod::None, std::nullopt, {}, {}});
         nb::writeRunVideoLink(without, std::nullopt);
         nb::ReviewWorkspace ws;
         ws.resize(1280, 820);
