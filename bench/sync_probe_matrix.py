@@ -19,7 +19,7 @@ seed (a bad copy, a bad sector): the frames there cannot be decoded, and the syn
 hold on the frames either side.
 
 --operator syncs as an operator who marks the picture: the needle's true line (drawn from the
-shaft towards the tip) and a region, the band between the counter's rows and the clock's.
+shaft towards the tip) and a box around the needle's path, leaving out the burnt-in text beside it.
 
 --slow-small draws the family the main draw meets rarely: two cycles of a slow, short sine
 (0.1-0.3 Hz, ±2.5-4 mm at 3-4 px/mm, so ±8-16 px), a faint needle (contrast 28-45, noise
@@ -167,13 +167,20 @@ def describe(c):
             + (f", damaged {c['damaged'][0]:.2f}-{c['damaged'][1]:.2f} s" if 'damaged' in c else ""))
 
 
-def operator_marks(c):
+def operator_marks(c, x):
     """What an operator marks on the picture: the needle's line (drawn from the shaft towards the
-    tip) and a region, the band between the counter's rows and the clock's, that leaves both out."""
+    tip) and a box around the needle's path, from 60 px of shaft behind the tip's furthest-back
+    place to 30 px ahead of its furthest reach, 20 px either side, as one would draw it to leave
+    out burnt-in text beside the path (text on the path stays in)."""
     W, H = c['size']
     u = np.array([np.cos(np.radians(c['angle'])), np.sin(np.radians(c['angle']))])
-    p1, p2 = np.array([W / 2, H / 2]) - 50 * u, np.array([W / 2, H / 2]) + 50 * u
-    return ['--needle', ','.join(f'{v:.1f}' for v in (*p1, *p2)), '--roi', f'0,40,{W},{H - 85}']
+    centre = np.array([W / 2, H / 2])
+    p1, p2 = centre - 50 * u, centre + 50 * u
+    tips = -40 + np.array([x.min(), x.max()]) * c['px_per_mm']
+    ends = np.array([centre + (tips[0] - 60) * u, centre + (tips[1] + 30) * u])
+    lo = np.clip(np.floor(ends.min(axis=0) - 20), 0, [W - 1, H - 1]).astype(int)
+    hi = np.clip(np.ceil(ends.max(axis=0) + 20), 0, [W, H]).astype(int)
+    return ['--needle', ','.join(f'{v:.1f}' for v in (*p1, *p2)), '--roi', f'{lo[0]},{lo[1]},{hi[0] - lo[0]},{hi[1] - lo[1]}']
 
 
 def run_case(c, exe, root, damage=False, operator=False):
@@ -198,7 +205,7 @@ def run_case(c, exe, root, damage=False, operator=False):
     n = int((c['offset'] + t[-1] + 1.0) * c['fps'])
     seen = (t >= -c['offset'] / (1 + c['drift'])) & (t <= (n / c['fps'] - c['offset']) / (1 + c['drift']))
     moving = bool(seen.any()) and np.ptp(x[seen]) >= 0.05 * max(np.ptp(x), 1e-9)
-    r = subprocess.run([exe, 'sync', run, video, '--json'] + (operator_marks(c) if operator else []), capture_output=True, text=True)
+    r = subprocess.run([exe, 'sync', run, video, '--json'] + (operator_marks(c, x) if operator else []), capture_output=True, text=True)
     try:
         j = json.loads(r.stdout)
     except ValueError:
@@ -220,7 +227,7 @@ def main():
     ap.add_argument('--slow-small', action='store_true', help='draw slow, short sines of a faint needle with overlays')
     ap.add_argument('--damage', action='store_true', help="overwrite a stretch of each video's packets (0.2-1.5 s)")
     ap.add_argument('--operator', action='store_true',
-                    help="sync as an operator who draws the needle's line and a region leaving out the counter and the clock")
+                    help="sync as an operator who draws the needle's line and a box around its path")
     ap.add_argument('--expect-honest', action='store_true',
                     help='exit with status 1 if a case more than a frame off was offered for acceptance')
     ap.add_argument('--expect-hits', action='store_true',
