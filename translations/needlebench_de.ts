@@ -2286,12 +2286,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+703"/>
+        <location line="+724"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-674"/>
+        <location line="-695"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
@@ -2301,7 +2301,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>über eine beschädigte Strecke hinweg dekodiert: teils vom Decoder ergänzt</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+28"/>
+        <source>Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again</source>
+        <translation>Geringe Konfidenz: ist die Nadel schwach zu sehen oder liegt eingeblendeter Text auf ihrer Linie, die Linie mit Umschalt+Ziehen auf dem Video zeichnen (Schaft zur Spitze) und mit Ziehen einen Bereich um ihren Weg, dann erneut automatisch synchronisieren</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -2336,7 +2341,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Kraft und Position, die Relaxation aus der Oberfläche in %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>recording time [s]</source>
         <translation>Aufzeichnungszeit [s]</translation>
     </message>
@@ -2357,12 +2362,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1087"/>
+        <location line="+1099"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1084"/>
+        <location line="-1096"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2388,12 +2393,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+601"/>
+        <location line="+613"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-601"/>
+        <location line="-613"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2517,12 +2522,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+872"/>
+        <location line="+884"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-672"/>
+        <location line="-684"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation>die Label-Datei konnte nicht beiseitegelegt werden: das nächste gespeicherte Label ersetzt sie</translation>
     </message>
@@ -2547,7 +2552,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+311"/>
+        <location line="+323"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2607,7 +2612,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-992"/>
+        <location line="-1004"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2622,7 +2627,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
     <message numerus="yes">
-        <location line="+24"/>
+        <location line="+26"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>Labels: %n</numerusform>
@@ -2630,7 +2635,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+35"/>
         <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation>Zuerst einen Lauf öffnen (Doppelklick in der Sitzungsliste), dann sein Video anhängen</translation>
@@ -2661,7 +2666,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+40"/>
         <source>Video and sync not kept: %1</source>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
@@ -2756,7 +2761,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-960"/>
+        <location line="-972"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2821,17 +2826,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+53"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+71"/>
         <source>Videos (%1);;All files (*)</source>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+157"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -6431,7 +6436,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 %2 %3 liegt %4 %3 vom Median %5 %3 entfernt (Grenze %6 %3: %7 MADs oder %8 %)</translation>
     </message>
     <message>
-        <location filename="../core/run_video_link.cpp" line="+28"/>
+        <location filename="../core/run_video_link.cpp" line="+30"/>
         <source>%1: cannot read (%2)</source>
         <translation>%1: nicht lesbar (%2)</translation>
     </message>
@@ -6441,7 +6446,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1: keine Video-Verknüpfungsdatei (%2)</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+45"/>
         <source>set by hand</source>
         <translation>von Hand gesetzt</translation>
     </message>
@@ -6461,7 +6466,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nicht synchronisiert</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+87"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation>nicht schreibbar (%1)</translation>
@@ -7959,7 +7964,7 @@ F = %1 x + %2 x²
         <translation>Kein Video. Eines öffnen oder die Datei hierher ziehen, um es mit der Kraftaufzeichnung auszuwerten.</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>frame %1   %2 s</source>
         <translation>Bild %1   %2 s</translation>
     </message>

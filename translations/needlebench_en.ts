@@ -2280,12 +2280,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+703"/>
+        <location line="+724"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-674"/>
+        <location line="-695"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2295,7 +2295,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+28"/>
+        <source>Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2330,7 +2335,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>recording time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2351,12 +2356,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1087"/>
+        <location line="+1099"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1084"/>
+        <location line="-1096"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2382,12 +2387,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+601"/>
+        <location line="+613"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-601"/>
+        <location line="-613"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2511,12 +2516,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+872"/>
+        <location line="+884"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-672"/>
+        <location line="-684"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2541,7 +2546,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+311"/>
+        <location line="+323"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2601,7 +2606,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-992"/>
+        <location line="-1004"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2616,7 +2621,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+24"/>
+        <location line="+26"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>labels: %n</numerusform>
@@ -2624,7 +2629,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+35"/>
         <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation type="unfinished"></translation>
@@ -2655,7 +2660,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+40"/>
         <source>Video and sync not kept: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2748,7 +2753,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-960"/>
+        <location line="-972"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2813,17 +2818,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+53"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+71"/>
         <source>Videos (%1);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+157"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6321,7 +6326,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/run_video_link.cpp" line="+28"/>
+        <location filename="../core/run_video_link.cpp" line="+30"/>
         <source>%1: cannot read (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6331,7 +6336,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+45"/>
         <source>set by hand</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6351,7 +6356,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+87"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation type="unfinished"></translation>
@@ -7847,7 +7852,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>frame %1   %2 s</source>
         <translation type="unfinished"></translation>
     </message>

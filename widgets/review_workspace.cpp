@@ -166,8 +166,14 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         }
         try {
             video::VideoSync vs = syncWatcher_.result();
-            if (forOperator)
+            if (forOperator) {
                 pendingSync_ = vs.result;
+                // What the operator can do about it: a needle too faint to be found, or a clock
+                // on its line, is read where its line and a region around its path are drawn.
+                if (!vs.result.acceptable() && video_->needleLine().isNull())
+                    showStatus(tr("Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the "
+                                  "video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again"));
+            }
             tracked_ = std::move(vs);
             trackedRoi_ = jobRoi_;
             trackedNeedle_ = jobNeedle_;

@@ -516,6 +516,8 @@ private slots:
         QVERIFY2(!ws.pendingSync()->acceptable(), qPrintable(QString::number(ws.pendingSync()->confidence)));
         QVERIFY(!ws.acceptButton()->isEnabled());
         QVERIFY(ws.acceptOverride()->isVisible());
+        // It says what the operator can do: draw the needle's line and a region, and sync again.
+        QVERIFY2(ws.status().contains(QLatin1String("Shift+drag")), qPrintable(ws.status()));
         const nb::TimelineMapping before = ws.mapping();
         ws.acceptSync();  // refused
         QCOMPARE(ws.mapping(), before);
