@@ -121,13 +121,12 @@ void VideoView::paintEvent(QPaintEvent*)
     const QRect t = pictureRect();
     p.setRenderHint(QPainter::SmoothPixmapTransform);
     p.drawImage(t, image_);
+    const double sx = double(t.width()) / image_.width(), sy = double(t.height()) / image_.height();  // video px to view px
     if (!roi_.isEmpty()) {
-        const double sx = double(t.width()) / image_.width(), sy = double(t.height()) / image_.height();
         p.setPen(QPen(QColor(255, 200, 0), 1, Qt::DashLine));
         p.drawRect(QRectF(t.x() + roi_.x() * sx, t.y() + roi_.y() * sy, roi_.width() * sx, roi_.height() * sy));
     }
     if (!needle_.isNull()) {
-        const double sx = double(t.width()) / image_.width(), sy = double(t.height()) / image_.height();
         const QPointF a(t.x() + needle_.x1() * sx, t.y() + needle_.y1() * sy), b(t.x() + needle_.x2() * sx, t.y() + needle_.y2() * sy);
         p.setRenderHint(QPainter::Antialiasing);
         // Thin and see-through: the operator lays it on the needle and must see the needle under it.
