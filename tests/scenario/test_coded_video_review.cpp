@@ -2,7 +2,8 @@
 // a faint, slow needle coded by MPEG-4 part 2 (each picture from the one before, which shows a
 // faint motion late). The sync line says how late the coded pictures are and that the offset
 // allows for it, in English and in German; the line is read whole on a 1366×768 laptop; the
-// run recorded meanwhile loses no sample; the accepted sync is there after a restart.
+// run recorded meanwhile loses no sample; the accepted sync, and the region and needle line the
+// operator drew on the picture for it, are there after a restart.
 //
 // With NB_SCREENSHOT_DIR set (and a real X server: xvfb-run -s "-screen 0 1366x768x24"), it
 // photographs the screen with the sync line shown, in each language.
@@ -169,6 +170,7 @@ private slots:
         QVERIFY(QFile::copy(sine_, QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"))));
         const QString sine = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
         nb::TimelineMapping accepted;
+        std::pair<QRect, QLineF> marks;
         {
             std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
             nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true, &rig));
@@ -201,6 +203,27 @@ private slots:
             QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
             review->openVideo(video_);
             QVERIFY(opened.count() > 0 || opened.wait(60000));
+            // The operator marks the picture with the mouse as the stage moves: a box around the
+            // needle's path (a drag), and its line from the shaft to the tip (a drag with Shift).
+            nb::VideoView* view = review->videoView();
+            QTRY_VERIFY_WITH_TIMEOUT(view->frameIndex() >= 0, 20000);
+            auto onView = [view](QPointF video) {
+                const QRect r = view->pictureRect();
+                return QPoint(int(std::lround(r.x() + video.x() * r.width() / kWidth)),
+                              int(std::lround(r.y() + video.y() * r.height() / kHeight)));
+            };
+            auto drag = [&](QPointF from, QPointF to, Qt::KeyboardModifiers keys) {
+                QTest::mousePress(view, Qt::LeftButton, keys, onView(from));
+                QTest::mouseMove(view, onView((from + to) / 2));
+                QTest::mouseMove(view, onView(to));
+                QTest::mouseRelease(view, Qt::LeftButton, keys, onView(to));
+            };
+            const QPointF centre(kWidth / 2.0, kHeight / 2.0), along(std::cos(M_PI / 6), std::sin(M_PI / 6));
+            drag(QPointF(36, 40), QPointF(180, 140), Qt::NoModifier);
+            drag(centre - 100.0 * along, centre - 10.0 * along, Qt::ShiftModifier);
+            QVERIFY(!view->roi().isEmpty());
+            QVERIFY(!view->needleLine().isNull());
+            marks = {view->roi(), view->needleLine()};
             QSignalSpy synced(review, &nb::ReviewWorkspace::syncFinished);
             QVERIFY(p->interlockState().moving);
             review->startAutoSync();
@@ -252,6 +275,11 @@ private slots:
             QCOMPARE(QFileInfo(w.reviewWorkspace()->videoPath()).canonicalFilePath(), QFileInfo(video_).canonicalFilePath());
             QCOMPARE(w.reviewWorkspace()->mapping(), accepted);
             QCOMPARE(w.reviewWorkspace()->syncMethod(), nb::SyncMethod::Automatic);
+            // And what the operator drew on the picture, drawn again.
+            QCOMPARE(w.reviewWorkspace()->videoView()->roi(), marks.first);
+            QCOMPARE(w.reviewWorkspace()->videoView()->needleLine(), marks.second);
+            QTest::qWait(300);
+            screenshot(QStringLiteral("review_marks_after_restart_%1.png").arg(language));
         }
     }
 
