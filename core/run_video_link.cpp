@@ -134,9 +134,9 @@ std::optional<RunVideoLink> readRunVideoLink(const QString& runPath, QString* pr
         link.confidence = o.value(QStringLiteral("confidence")).toDouble();
     // A hand-edited mark that makes no sense is dropped, not drawn: the sync then finds the needle.
     if (const auto r = fourNumbers(o.value(QStringLiteral("region"))); r && (*r)[2] >= 1 && (*r)[3] >= 1)
-        link.region = QRect(int((*r)[0]), int((*r)[1]), int((*r)[2]), int((*r)[3]));
+        link.marks.region = QRect(int((*r)[0]), int((*r)[1]), int((*r)[2]), int((*r)[3]));
     if (const auto n = fourNumbers(o.value(QStringLiteral("needle"))))
-        link.needle = QLineF((*n)[0], (*n)[1], (*n)[2], (*n)[3]);
+        link.marks.needle = QLineF((*n)[0], (*n)[1], (*n)[2], (*n)[3]);
     return link;
 }
 
@@ -160,10 +160,12 @@ void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>
         o.insert(QStringLiteral("method"), syncMethodKey(link->method));
         if (link->confidence)
             o.insert(QStringLiteral("confidence"), *link->confidence);
-        if (!link->region.isEmpty())
-            o.insert(QStringLiteral("region"), QJsonArray{link->region.x(), link->region.y(), link->region.width(), link->region.height()});
-        if (!link->needle.isNull())
-            o.insert(QStringLiteral("needle"), QJsonArray{link->needle.x1(), link->needle.y1(), link->needle.x2(), link->needle.y2()});
+        const QRect& r = link->marks.region;
+        if (!r.isEmpty())
+            o.insert(QStringLiteral("region"), QJsonArray{r.x(), r.y(), r.width(), r.height()});
+        const QLineF& n = link->marks.needle;
+        if (!n.isNull())
+            o.insert(QStringLiteral("needle"), QJsonArray{n.x1(), n.y1(), n.x2(), n.y2()});
         runs.insert(run.fileName(), o);
     } else {
         runs.remove(run.fileName());

@@ -29,13 +29,19 @@ QString syncMethodKey(SyncMethod m);  // "", "manual", "event_marks", "automatic
 SyncMethod syncMethodFromKey(const QString& key);
 QString syncMethodName(SyncMethod m);  // operator-facing (translated)
 
+// What the operator drew on a video for its sync, in the video's pixels.
+struct PictureMarks {
+    QRect region;   // where the needle is read; empty: everywhere
+    QLineF needle;  // the needle's line from its shaft to its tip; null: found in the picture
+    bool operator==(const PictureMarks&) const = default;
+};
+
 struct RunVideoLink {
     QString video;  // absolute path when read; empty: no video attached
     TimelineMapping mapping;
     SyncMethod method = SyncMethod::None;
     std::optional<double> confidence;  // 0..1, from the automatic sync
-    QRect region;   // where the needle is read, in video pixels; empty: everywhere
-    QLineF needle;  // the needle's line drawn from its shaft to its tip; null: found in the picture
+    PictureMarks marks;
 };
 
 QString videoLinksPath(const QString& sessionDir);

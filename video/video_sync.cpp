@@ -95,7 +95,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             }
         // Where the operator marked a region, the tip is read in it alone: the line beyond it may
         // run through a clock or counter whose digits hold the track (slow-small probe seed
-        // 954840 case 1: the drawn line through a clock ahead of a faint tip, 243 frames off).
+        // 954840 case 1: the drawn line through a clock ahead of a faint tip, 184 frames off).
         std::vector<NeedleTrack> tracks = trackNeedles(reader, samples, axes, progress, cancel, {}, options.roi);
         // Tracks are compared where they lie (`tracks`, `retracked`), and the best one moved out.
         std::vector<NeedleTrack> retracked;

@@ -18,7 +18,6 @@
 #include "video/video_error.h"
 
 #include <QCheckBox>
-#include <QUnhandledException>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QDir>
@@ -35,6 +34,7 @@
 #include <QTimer>
 #include <QUndoCommand>
 #include <QUndoStack>
+#include <QUnhandledException>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <qcustomplot.h>
@@ -175,8 +175,7 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
                                   "video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again"));
             }
             tracked_ = std::move(vs);
-            trackedRoi_ = jobRoi_;
-            trackedNeedle_ = jobNeedle_;
+            trackedMarks_ = jobMarks_;
         } catch (const std::exception& e) {
             tracked_.reset();
             if (forOperator) {
@@ -239,8 +238,7 @@ void ReviewWorkspace::buildUi()
     connect(video_, &VideoView::openRequested, this, &ReviewWorkspace::chooseVideo);
     connect(video_, &VideoView::videoDropped, this, &ReviewWorkspace::attachVideo);
     // What the operator draws on the video is kept with the run's link to it, for a restart.
-    connect(video_, &VideoView::roiChanged, this, &ReviewWorkspace::storeVideoLink);
-    connect(video_, &VideoView::needleLineChanged, this, &ReviewWorkspace::storeVideoLink);
+    connect(video_, &VideoView::marksChanged, this, &ReviewWorkspace::storeVideoLink);
     plot_ = new QCustomPlot(this);
     plot_->setObjectName(QStringLiteral("reviewForcePlot"));
     plot_->setFocusPolicy(Qt::NoFocus);
@@ -685,8 +683,7 @@ void ReviewWorkspace::openVideo(const QString& path)
     if (path != videoPath_) {
         // Kept with the link when the new video is attached, not before (nothing to store yet).
         const QSignalBlocker quiet(video_);
-        video_->setRoi({});
-        video_->setNeedleLine({});
+        video_->setMarks({});
     }
     videoPath_ = path;
     index_.reset();
@@ -722,8 +719,7 @@ void ReviewWorkspace::clearVideo()
     video_->clearVideo();
     {
         const QSignalBlocker quiet(video_);  // the marks went with the video they were drawn on
-        video_->setRoi({});
-        video_->setNeedleLine({});
+        video_->setMarks({});
     }
     // What the decoder still does for the video gone (indexing it, reading a frame of a file
     // since deleted) is no longer this run's: it said "cannot reopen the video" or "Indexing
@@ -811,8 +807,7 @@ void ReviewWorkspace::restoreVideoLink()
     }
     if (!videoPath_.isEmpty()) {
         const QSignalBlocker quiet(video_);  // read from the store, nothing to store
-        video_->setRoi(link ? link->region : QRect());
-        video_->setNeedleLine(link ? link->needle : QLineF());
+        video_->setMarks(link ? link->marks : PictureMarks{});
     }
     if (!problem.isEmpty())
         showStatus(problem);
@@ -831,7 +826,7 @@ void ReviewWorkspace::storeVideoLink()
     if (runPath_.isEmpty() || attachPending_)
         return;
     try {
-        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_, video_->roi(), video_->needleLine()};
+        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_, video_->marks()};
         const bool empty = videoPath_.isEmpty() && mapping_ == TimelineMapping{} && syncMethod_ == SyncMethod::None;
         writeRunVideoLink(runPath_, empty ? std::nullopt : std::optional(link));
         emit videoLinkChanged();
@@ -1246,10 +1241,9 @@ void ReviewWorkspace::startAutoSync()
         showStatus(tr("Open a run and a video first"));
         return;
     }
-    const QRect roi = video_->roi();
-    const QLineF needle = video_->needleLine();
+    const PictureMarks marks = video_->marks();
     const bool running = syncWatcher_.isRunning() && watchedGeneration_ == jobGeneration_;
-    if (!running && tracked_ && trackedRoi_ == roi && trackedNeedle_ == needle) {
+    if (!running && tracked_ && trackedMarks_ == marks) {
         // The background tracking already fitted this run and video with these marks.
         pendingSync_ = tracked_->result;
         updateSyncUi();
@@ -1259,7 +1253,7 @@ void ReviewWorkspace::startAutoSync()
     }
     operatorStopped_ = false;
     syncLabel_->setText(tr("correlating…"));
-    if (running && jobRoi_ == roi && jobNeedle_ == needle)
+    if (running && jobMarks_ == marks)
         wantPending_ = true;  // the background job is doing just this
     else
         startSyncJob(true);
@@ -1298,13 +1292,12 @@ void ReviewWorkspace::startSyncJob(bool forOperator)
     jobCancel_ = std::make_shared<std::atomic_bool>(false);
     watchedGeneration_ = jobGeneration_;
     wantPending_ = forOperator;
-    jobRoi_ = video_->roi();
-    jobNeedle_ = video_->needleLine();
+    jobMarks_ = video_->marks();
     const video::FrameIndex index = *index_;
     video::VideoSyncOptions options;
-    options.roi = jobRoi_;
-    if (!jobNeedle_.isNull())
-        options.axis = jobNeedle_;
+    options.roi = jobMarks_.region;
+    if (!jobMarks_.needle.isNull())
+        options.axis = jobMarks_.needle;
     const Run run = run_;
     const std::shared_ptr<std::atomic_bool> cancel = jobCancel_;
     // How far the tracking is, while the operator waits for it: a long video showed

@@ -232,13 +232,11 @@ private:
     QLabel* keysHelp_ = nullptr;
     QFutureWatcher<video::VideoSync> syncWatcher_;
     std::shared_ptr<std::atomic_bool> jobCancel_;
-    QRect jobRoi_;
-    QLineF jobNeedle_;  // the line the operator drew, null when none
+    PictureMarks jobMarks_;  // what the operator had drawn on the video when the job began
     int jobGeneration_ = 0, watchedGeneration_ = -1;
     bool wantPending_ = false;
     std::optional<video::VideoSync> tracked_;  // the last job's answer for this run and video
-    QRect trackedRoi_;
-    QLineF trackedNeedle_;
+    PictureMarks trackedMarks_;
     // Suggest labels with the video: one job at a time, for the run, video and offset it began with.
     QFutureWatcher<video::VideoLabels> suggestWatcher_;
     std::shared_ptr<std::atomic_bool> suggestCancel_;

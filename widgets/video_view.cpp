@@ -83,14 +83,22 @@ void VideoView::setRoi(const QRect& roi)
 {
     roi_ = roi;
     update();
-    emit roiChanged(roi_);
+    emit marksChanged(marks());
 }
 
 void VideoView::setNeedleLine(const QLineF& line)
 {
     needle_ = line;
     update();
-    emit needleLineChanged(needle_);
+    emit marksChanged(marks());
+}
+
+void VideoView::setMarks(const PictureMarks& m)
+{
+    roi_ = m.region;
+    needle_ = m.needle;
+    update();
+    emit marksChanged(marks());
 }
 
 QRect VideoView::pictureRect() const

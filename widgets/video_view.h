@@ -4,6 +4,8 @@
 // in, a drag with Shift held the needle's line (when the picture does not show it plainly enough
 // to be found); a click, or a Shift-click, clears either.
 
+#include "core/run_video_link.h"
+
 #include <QImage>
 #include <QLineF>
 #include <QRect>
@@ -27,6 +29,8 @@ public:
     void setRoi(const QRect& roi);
     QLineF needleLine() const { return needle_; }  // in video pixels; null = find it in the picture
     void setNeedleLine(const QLineF& line);
+    PictureMarks marks() const { return {roi_, needle_}; }
+    void setMarks(const PictureMarks& marks);
     // Where the frame is drawn in the view (its aspect kept).
     QRect pictureRect() const;
     int frameIndex() const { return index_; }
@@ -36,8 +40,7 @@ public:
     QPushButton* openButton() const { return openButton_; }
 
 signals:
-    void roiChanged(const QRect& roi);
-    void needleLineChanged(const QLineF& line);
+    void marksChanged(const PictureMarks& marks);  // the region or the line, drawn or cleared
     void openRequested();                   // the placeholder's Open video… button
     void videoDropped(const QString& path); // a file dropped on the view
 

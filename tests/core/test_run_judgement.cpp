@@ -160,15 +160,15 @@ private slots:
         QCOMPARE(back->mapping, link.mapping);
         QCOMPARE(back->method, nb::SyncMethod::EventMarks);
         QVERIFY(!back->confidence);
-        QVERIFY(back->region.isEmpty() && back->needle.isNull());  // nothing drawn, nothing kept
+        QVERIFY(back->marks.region.isEmpty() && back->marks.needle.isNull());  // nothing drawn, nothing kept
 
         // What the operator drew on the video for its sync comes back as drawn; a hand-edited
         // mark that makes no sense (no width, a word for a number) is dropped, not drawn.
-        link.region = QRect(240, 300, 240, 180);
-        link.needle = QLineF(636.5, 20, 636, 290.25);
+        link.marks.region = QRect(240, 300, 240, 180);
+        link.marks.needle = QLineF(636.5, 20, 636, 290.25);
         nb::writeRunVideoLink(run, link);
-        QCOMPARE(nb::readRunVideoLink(run)->region, link.region);
-        QCOMPARE(nb::readRunVideoLink(run)->needle, link.needle);
+        QCOMPARE(nb::readRunVideoLink(run)->marks.region, link.marks.region);
+        QCOMPARE(nb::readRunVideoLink(run)->marks.needle, link.marks.needle);
         {
             QVERIFY(f.open(QIODevice::ReadOnly));
             QByteArray edited = f.readAll();
@@ -180,10 +180,9 @@ private slots:
             f.close();
         }
         const auto edited = nb::readRunVideoLink(run);
-        QVERIFY(edited && edited->region.isEmpty() && edited->needle.isNull());
+        QVERIFY(edited && edited->marks.region.isEmpty() && edited->marks.needle.isNull());
         QCOMPARE(edited->mapping, link.mapping);
-        link.region = {};
-        link.needle = {};
+        link.marks = {};
 
         // Outside the session folder: kept absolute.
         QTemporaryDir elsewhere;

@@ -386,8 +386,8 @@ private slots:
         {
             const std::optional<nb::RunVideoLink> kept = nb::readRunVideoLink(run_);
             QVERIFY(kept);
-            QCOMPARE(kept->region, view->roi());
-            QCOMPARE(kept->needle, view->needleLine());
+            QCOMPARE(kept->marks.region, view->roi());
+            QCOMPARE(kept->marks.needle, view->needleLine());
             nb::ReviewWorkspace restarted;
             restarted.resize(1280, 820);
             restarted.show();
@@ -422,7 +422,7 @@ private slots:
         QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, onView(QPointF(100, 100)));
         QVERIFY(view->roi().isEmpty());
         const std::optional<nb::RunVideoLink> cleared = nb::readRunVideoLink(run_);
-        QVERIFY(cleared && cleared->region.isEmpty() && cleared->needle.isNull());
+        QVERIFY(cleared && cleared->marks.region.isEmpty() && cleared->marks.needle.isNull());
     }
 
     void trackedTraceLinesUpWithThePosition()
@@ -891,7 +891,7 @@ private slots:
         QFile::remove(withVideo);
         QFile::remove(without);
         QVERIFY(QFile::copy(run_, withVideo) && QFile::copy(run_, without));
-        nb::writeRunVideoLink(withVideo, nb::RunVideoLink{broken, {}, nb::SyncMethod::None, std::nullopt, {}, {}});
+        nb::writeRunVideoLink(withVideo, nb::RunVideoLink{broken, {}, nb::SyncMethod::None, std::nullopt, {}});
         nb::writeRunVideoLink(without, std::nullopt);
         nb::ReviewWorkspace ws;
         ws.resize(1280, 820);
