@@ -143,7 +143,9 @@ void writeRigFrictionDetails(QTextStream& t, unsigned seed, std::size_t set, con
               << (p ? f.seCp_N / f.model.Cp_N : f.seCn_N / f.model.Cn_N) << '\t'
               << f.band_m_s << '\t' << f.bandSlowingDown_m_s << '\t' << (p ? f.positiveSamples : f.negativeSamples) << '\t'
               << (p ? f.model.Cp_N : f.model.Cn_N) << '\t' << (p ? f.model.bp_Ns_per_m : f.model.bn_Ns_per_m) << '\t'
-              << (p ? f.bendShiftCp : f.bendShiftCn) << '\n';
+              << (p ? f.bendShiftCp : f.bendShiftCn) << '\t';
+            const std::optional<nb::PeakPoint>& peak = p ? f.peaks.positive : f.peaks.negative;
+            t << (peak ? (peak->settled ? "settled" : "unsettled") : "none") << '\t' << o.runDeparts[k] << '\n';
         }
     }
 }
@@ -353,7 +355,8 @@ int main(int argc, char** argv)
         if (detailsFile.size() == 0)
             *detailsOut << "seed\tset\trun\tdirection\ttissue\tfrequency_hz\tamplitude_mm\tstick_band_mm_s\tplate_gap_mm\tforce_noise_N\t"
                            "C_error\tb_error\tflagged\tsliding_from_m_s\tsliding_to_m_s\tspring_back_s\tresidual_to_noise\tse_b_over_b\t"
-                           "se_C_over_C\tband_m_s\tband_slowing_down_m_s\tsamples\tC_N\tb_Ns_per_m\tC_shift_if_bent\n";
+                           "se_C_over_C\tband_m_s\tband_slowing_down_m_s\tsamples\tC_N\tb_Ns_per_m\tC_shift_if_bent\t"
+                           "peak\tdeparts_from_line\n";
     }
     printRigFriction(out, seed, rigFrictionSets, root, detailsOut ? &*detailsOut : nullptr, rigTruePhases);
     printRelaxMatrix(out, seed, relaxCases, small, root);

@@ -824,7 +824,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     fit.frequency_hz = ok && mf > 0.0 ? mf : estimateFrequency(run);
     fit.arrivingAboveP_m_s = arriving.positive_m_s;
     fit.arrivingAboveN_m_s = arriving.negative_m_s;
-    fit.peaks = peakPoints(c, options, arriving.positive_m_s, arriving.negative_m_s);
+    fit.peaks = peakPoints(c, options, fit);
     checkAgainstFit(fit.peaks, fit);
     return fit;
 }

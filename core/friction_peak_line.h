@@ -24,14 +24,14 @@ namespace nb {
 
 // The run's peaks from its conditioned signals, with the fit's trimming and mass (fitFriction
 // calls this and keeps them in FrictionFit::peaks). Empty sides when a direction never moves.
-// Above `arrivingAbove*_m_s` the tissue was still arriving at the plate (FrictionFit): the
-// top is taken below that speed.
-RunPeaks peakPoints(const ConditionedSignals& conditioned, const FrictionOptions& options, double arrivingAboveP_m_s = INFINITY,
-                    double arrivingAboveN_m_s = INFINITY);
+// Above the fit's `arrivingAbove*_m_s` the tissue was still arriving at the plate: the top is
+// taken below that speed. The fit's b takes the needle's slowing out across the top.
+RunPeaks peakPoints(const ConditionedSignals& conditioned, const FrictionOptions& options, const FrictionFit& fit);
 
 // A peak point must also lie on its own run's sliding line (within 1.5 % of its force): one
-// below it was taken while the tissue still moved with the needle. A direction whose C or b
-// the fit flagged cannot vouch for its point. Marks such points not settled.
+// below it was taken while the tissue still moved with the needle. Marks such points not
+// settled. A run whose C or b the fit flagged (a sliding line bent by the slab's give) still
+// gives its point: the point rests on the flat top alone, not on that run's line.
 void checkAgainstFit(RunPeaks& peaks, const FrictionFit& fit);
 
 struct PeakSpeedLine {
@@ -49,7 +49,10 @@ std::optional<PeakSpeedLine> peakSpeedLine(std::span<const RunPeaks> runs);
 // How far (percent of the line's value) a run's own C departs from the line's, per direction.
 struct LineDeparture {
     double Cp_percent = 0.0, Cn_percent = 0.0;
-    bool significant = false;  // beyond 5 % and three standard errors of both
+    // Beyond 5 % and three of the line's standard errors. The run's own standard error does
+    // not excuse it: it holds the noise, not the slab's spring-back, which tilts a run's line
+    // (liver 3 runs 6-8 % off in C with standard errors of 2 %, their peaks on the line).
+    bool significant = false;
 };
 LineDeparture departureFromLine(const FrictionFit& fit, const PeakSpeedLine& line);
 

@@ -2,6 +2,7 @@
 
 #include "core/end_reason.h"
 #include "core/run_keys.h"
+#include "core/statistics.h"
 #include "core/tr.h"
 
 #include <algorithm>
@@ -10,15 +11,6 @@
 namespace nb {
 
 namespace {
-
-double medianOf(std::vector<double> v)
-{
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double percentile(std::vector<double> v, double p)
 {
@@ -43,7 +35,7 @@ bool touchedTissue(const Run& run)
     for (std::size_t i = 1; i < f.size(); ++i)
         diff.push_back(std::abs(f[i] - f[i - 1]));
     // Differences of white noise have sqrt(2) its sigma.
-    const double noise = 1.4826 * medianOf(std::move(diff)) / std::sqrt(2.0);
+    const double noise = 1.4826 * median(std::move(diff)) / std::sqrt(2.0);
     const double span = percentile(f, 0.99) - percentile(f, 0.01);
     return span > std::max(kMinContact_N, 8.0 * noise);
 }
@@ -82,11 +74,11 @@ QStringList robustOutlierReasons(const std::vector<double>& values, const QStrin
         reasons << QString();
     if (values.size() < minValues)
         return reasons;
-    const double m = medianOf(values);
+    const double m = median(values);
     std::vector<double> dev;
     for (double v : values)
         dev.push_back(std::abs(v - m));
-    const double mad = 1.4826 * medianOf(dev);
+    const double mad = 1.4826 * median(dev);
     const double limit = std::max(k * mad, relativeFloor * std::abs(m));
     for (std::size_t i = 0; i < values.size(); ++i)
         if (std::abs(values[i] - m) > limit)

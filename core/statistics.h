@@ -1,9 +1,11 @@
 #pragma once
 // Summary statistics shared by the fits (goodness of fit, per-group means).
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace nb {
 
@@ -27,6 +29,16 @@ inline double sampleStdDev(std::span<const double> x)
     for (double v : x)
         s += (v - m) * (v - m);
     return std::sqrt(s / double(x.size() - 1));
+}
+
+// The middle value (the mean of the two middle ones for an even count), 0 for none.
+inline double median(std::vector<double> x)
+{
+    if (x.empty())
+        return 0.0;
+    std::sort(x.begin(), x.end());
+    const std::size_t n = x.size();
+    return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
 }
 
 // Root mean square of residuals.

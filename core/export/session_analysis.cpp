@@ -29,15 +29,6 @@ QString tissueOf(const Run& run)
     return run.meta(QStringLiteral("sim_tissue")).value_or(QString());
 }
 
-double median(std::vector<double> v)
-{
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 bool hasPhaseLabels(const Labels& labels)
 {
     for (const Label& l : labels)
