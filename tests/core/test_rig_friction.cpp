@@ -21,6 +21,29 @@ struct Truth {
 
 double relErr(double got, double want) { return std::fabs(got - want) / std::fabs(want); }
 
+// The peak-speed line's errors per length against the truth; all 1 (100 %) when there is none.
+struct LineErrors {
+    double Cp = 1, Cn = 1, bp = 1, bn = 1;
+    double C() const { return std::max(Cp, Cn); }
+    double b() const { return std::max(bp, bn); }
+};
+LineErrors lineErrors(const QJsonObject& doc, const Truth& truth)
+{
+    if (!doc.contains(QStringLiteral("peak_speed_line")))
+        return {};
+    const QJsonObject pl = doc.value(QStringLiteral("peak_speed_line")).toObject().value(QStringLiteral("per_length")).toObject();
+    return {relErr(pl.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp), relErr(pl.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn),
+            relErr(pl.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), truth.bp),
+            relErr(pl.value(QStringLiteral("bn_Ns_per_m2")).toDouble(), truth.bn)};
+}
+
+// A run's file name and its own Cp's error.
+QString runName(const QJsonObject& run) { return run.value(QStringLiteral("file")).toString().section(QLatin1Char('/'), -1); }
+double ownCpError(const QJsonObject& run, const Truth& truth)
+{
+    return relErr(run.value(QStringLiteral("per_length")).toObject().value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp);
+}
+
 // One rig case as a benchmark draw describes it, in `simulate --protocol friction`'s terms.
 struct RigCase {
     QString tissue, frequency_hz, amplitude_mm, stickBand_mm_s, plateGap_mm, forceNoise_N;
@@ -86,6 +109,19 @@ class TestRigFriction : public QObject {
         return blind;
     }
 
+    // One slab at three frequencies as a benchmark rig set draws it: the runs' seeds follow on.
+    QStringList simulateSet(const QString& name, RigCase rig, const QStringList& frequencies, Truth* truth)
+    {
+        QStringList files;
+        const int firstSeed = rig.seed;
+        for (int k = 0; k < frequencies.size(); ++k) {
+            rig.frequency_hz = frequencies[k];
+            rig.seed = firstSeed + k;
+            files << simulate(QStringLiteral("%1_%2").arg(name).arg(k), rig.args(), truth);
+        }
+        return files;
+    }
+
     static QJsonObject fit(const QStringList& files)
     {
         const auto r = nbtest::runCli(QStringList{QStringLiteral("fit"), QStringLiteral("friction"), QStringLiteral("--thickness-mm"),
@@ -114,14 +150,10 @@ private slots:
         QVERIFY(!files.contains(QString()));
         const QJsonObject doc = fit(files);
         QVERIFY2(doc.contains(QStringLiteral("peak_speed_line")), "three frequencies give a peak-speed line");
-        const QJsonObject line = doc.value(QStringLiteral("peak_speed_line")).toObject();
-        const QJsonObject pl = line.value(QStringLiteral("per_length")).toObject();
-        const double eC = std::max(relErr(pl.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp),
-                                   relErr(pl.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn));
-        const double eB = std::max(relErr(pl.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), truth.bp),
-                                   relErr(pl.value(QStringLiteral("bn_Ns_per_m2")).toDouble(), truth.bn));
+        const LineErrors line = lineErrors(doc, truth);
+        const double eC = line.C(), eB = line.b();
         qInfo("peak-speed line on liver3 at 0.2/0.5/0.8 Hz: C error %.2f %%, b error %.2f %% (%lld runs)", 100 * eC, 100 * eB,
-              qint64(line.value(QStringLiteral("runs")).toInteger()));
+              qint64(doc.value(QStringLiteral("peak_speed_line")).toObject().value(QStringLiteral("runs")).toInteger()));
         QVERIFY2(eC < 0.05, qPrintable(QStringLiteral("line C error %1 %").arg(100 * eC)));
         QVERIFY2(eB < 0.15, qPrintable(QStringLiteral("line b error %1 %").arg(100 * eB)));
         // Each run alone: the fit takes the slab's spring-back (the tissue moving back off the
@@ -350,33 +382,25 @@ private slots:
     void peakLineThroughASlabArrivingAtTheTop()
     {
         Truth truth;
-        QStringList files;
-        const QStringList frequencies{QStringLiteral("0.25591"), QStringLiteral("0.499673"), QStringLiteral("0.796597")};
-        for (int k = 0; k < 3; ++k)
-            files << simulate(QStringLiteral("late_%1").arg(k),
-                              RigCase{QStringLiteral("liver3"), frequencies[k], QStringLiteral("8.18534"), QStringLiteral("3.34675"),
-                                      QStringLiteral("2.59054"), QStringLiteral("0.0008289"), 90421 + k, 7}
-                                  .args(),
-                              &truth);
+        const QStringList files = simulateSet(QStringLiteral("late"),
+                                              RigCase{QStringLiteral("liver3"), {}, QStringLiteral("8.18534"), QStringLiteral("3.34675"),
+                                                      QStringLiteral("2.59054"), QStringLiteral("0.0008289"), 90421, 7},
+                                              {QStringLiteral("0.25591"), QStringLiteral("0.499673"), QStringLiteral("0.796597")}, &truth);
         QVERIFY(!files.contains(QString()));
         const QJsonObject doc = fit(files);
         QVERIFY2(doc.contains(QStringLiteral("peak_speed_line")), "three frequencies give a peak-speed line");
-        const QJsonObject pl = doc.value(QStringLiteral("peak_speed_line")).toObject().value(QStringLiteral("per_length")).toObject();
-        const double eC = std::max(relErr(pl.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp),
-                                   relErr(pl.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn));
-        const double eB = std::max(relErr(pl.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), truth.bp),
-                                   relErr(pl.value(QStringLiteral("bn_Ns_per_m2")).toDouble(), truth.bn));
-        qInfo("peak-speed line through a slab arriving at the top: C error %.2f %%, b error %.2f %%", 100 * eC, 100 * eB);
-        QVERIFY2(eC < 0.05 && eB < 0.15, qPrintable(QStringLiteral("line C %1 %, b %2 % off").arg(100 * eC).arg(100 * eB)));
+        const LineErrors e = lineErrors(doc, truth);
+        qInfo("peak-speed line through a slab arriving at the top: C error %.2f %%, b error %.2f %%", 100 * e.C(), 100 * e.b());
+        QVERIFY2(e.C() < 0.05 && e.b() < 0.15, qPrintable(QStringLiteral("line C %1 %, b %2 % off").arg(100 * e.C()).arg(100 * e.b())));
         const QJsonArray runs = doc.value(QStringLiteral("runs")).toArray();
         QCOMPARE(runs.size(), 3);
         for (const QJsonValue& rv : runs) {
             const QJsonObject r = rv.toObject();
             const QJsonObject p = r.value(QStringLiteral("per_length")).toObject();
-            const double e = std::max(relErr(p.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp),
-                                      relErr(p.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn));
-            const QString name = r.value(QStringLiteral("file")).toString().section(QLatin1Char('/'), -1);
-            QVERIFY2(e < 0.05, qPrintable(QStringLiteral("%1: C off by %2 %").arg(name).arg(100 * e)));
+            const double own = std::max(relErr(p.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp),
+                                        relErr(p.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn));
+            const QString name = runName(r);
+            QVERIFY2(own < 0.05, qPrintable(QStringLiteral("%1: C off by %2 %").arg(name).arg(100 * own)));
             QVERIFY2(!r.value(QStringLiteral("departs_from_peak_line")).toBool(), qPrintable(name));
         }
         // The fast run says where the tissue was still arriving.
@@ -394,37 +418,28 @@ private slots:
     void peakLineReadsTheTopAfterTheTissueSettles()
     {
         Truth truth;
-        QStringList files;
-        const QStringList frequencies{QStringLiteral("0.2417"), QStringLiteral("0.4250"), QStringLiteral("0.6637")};
-        for (int k = 0; k < 3; ++k)
-            files << simulate(QStringLiteral("settling_%1").arg(k),
-                              RigCase{QStringLiteral("liver3"), frequencies[k], QStringLiteral("8.048"), QStringLiteral("4.889"),
-                                      QStringLiteral("2.500"), QStringLiteral("0.00321"), 59898 + k, 7}
-                                  .args(),
-                              &truth);
+        const QStringList files = simulateSet(QStringLiteral("settling"),
+                                              RigCase{QStringLiteral("liver3"), {}, QStringLiteral("8.048"), QStringLiteral("4.889"),
+                                                      QStringLiteral("2.500"), QStringLiteral("0.00321"), 59898, 7},
+                                              {QStringLiteral("0.2417"), QStringLiteral("0.4250"), QStringLiteral("0.6637")}, &truth);
         QVERIFY(!files.contains(QString()));
         const QJsonObject doc = fit(files);
         QVERIFY2(doc.contains(QStringLiteral("peak_speed_line")), "three frequencies give a peak-speed line");
-        const QJsonObject pl = doc.value(QStringLiteral("peak_speed_line")).toObject().value(QStringLiteral("per_length")).toObject();
-        const double eCp = relErr(pl.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp);
-        const double eCn = relErr(pl.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn);
-        const double eB = std::max(relErr(pl.value(QStringLiteral("bp_Ns_per_m2")).toDouble(), truth.bp),
-                                   relErr(pl.value(QStringLiteral("bn_Ns_per_m2")).toDouble(), truth.bn));
-        qInfo("peak-speed line, tissue settling just after the top: Cp %.2f %%, Cn %.2f %%, b %.2f %% off", 100 * eCp, 100 * eCn, 100 * eB);
-        QVERIFY2(eCp < 0.04 && eCn < 0.04 && eB < 0.15,
-                 qPrintable(QStringLiteral("line Cp %1 %, Cn %2 %, b %3 % off").arg(100 * eCp).arg(100 * eCn).arg(100 * eB)));
+        const LineErrors e = lineErrors(doc, truth);
+        qInfo("peak-speed line, tissue settling just after the top: Cp %.2f %%, Cn %.2f %%, b %.2f %% off", 100 * e.Cp, 100 * e.Cn, 100 * e.b());
+        QVERIFY2(e.C() < 0.04 && e.b() < 0.15, qPrintable(QStringLiteral("line Cp %1 %, Cn %2 %, b %3 % off").arg(100 * e.Cp).arg(100 * e.Cn).arg(100 * e.b())));
         const QJsonArray runs = doc.value(QStringLiteral("runs")).toArray();
         QCOMPARE(runs.size(), 3);
         for (const QJsonValue& rv : runs) {
             const QJsonObject r = rv.toObject();
-            const double e = relErr(r.value(QStringLiteral("per_length")).toObject().value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp);
+            const double own = ownCpError(r, truth);
             const bool departs = r.value(QStringLiteral("departs_from_peak_line")).toBool();
-            const QString name = r.value(QStringLiteral("file")).toString().section(QLatin1Char('/'), -1);
-            qInfo("  %s: own Cp %.1f %% off, departs %d", qPrintable(name), 100 * e, int(departs));
+            const QString name = runName(r);
+            qInfo("  %s: own Cp %.1f %% off, departs %d", qPrintable(name), 100 * own, int(departs));
             // Off by more than 5 %: told; within 4 %: not.
-            if (e > 0.05)
-                QVERIFY2(departs, qPrintable(QStringLiteral("%1: Cp %2 % off, not told").arg(name).arg(100 * e)));
-            if (e < 0.04)
+            if (own > 0.05)
+                QVERIFY2(departs, qPrintable(QStringLiteral("%1: Cp %2 % off, not told").arg(name).arg(100 * own)));
+            if (own < 0.04)
                 QVERIFY2(!departs, qPrintable(name));
         }
     }
@@ -438,31 +453,24 @@ private slots:
     void runsOffTheLineAreToldWhateverTheirOwnError()
     {
         Truth truth;
-        QStringList files;
-        const QStringList frequencies{QStringLiteral("0.2899"), QStringLiteral("0.5070"), QStringLiteral("0.6809")};
-        for (int k = 0; k < 3; ++k)
-            files << simulate(QStringLiteral("noisy_%1").arg(k),
-                              RigCase{QStringLiteral("liver3"), frequencies[k], QStringLiteral("7.009"), QStringLiteral("3.465"),
-                                      QStringLiteral("1.431"), QStringLiteral("0.00930"), 83899 + k, 7}
-                                  .args(),
-                              &truth);
+        const QStringList files = simulateSet(QStringLiteral("noisy"),
+                                              RigCase{QStringLiteral("liver3"), {}, QStringLiteral("7.009"), QStringLiteral("3.465"),
+                                                      QStringLiteral("1.431"), QStringLiteral("0.00930"), 83899, 7},
+                                              {QStringLiteral("0.2899"), QStringLiteral("0.5070"), QStringLiteral("0.6809")}, &truth);
         QVERIFY(!files.contains(QString()));
         const QJsonObject doc = fit(files);
         QVERIFY2(doc.contains(QStringLiteral("peak_speed_line")), "three frequencies give a peak-speed line");
-        const QJsonObject pl = doc.value(QStringLiteral("peak_speed_line")).toObject().value(QStringLiteral("per_length")).toObject();
-        const double eC = std::max(relErr(pl.value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp),
-                                   relErr(pl.value(QStringLiteral("Cn_N_per_m")).toDouble(), truth.Cn));
-        qInfo("peak-speed line through noisy liver 3 runs: C %.2f %% off", 100 * eC);
-        QVERIFY2(eC < 0.04, qPrintable(QStringLiteral("line C %1 % off").arg(100 * eC)));
+        const LineErrors e = lineErrors(doc, truth);
+        qInfo("peak-speed line through noisy liver 3 runs: C %.2f %% off", 100 * e.C());
+        QVERIFY2(e.C() < 0.04, qPrintable(QStringLiteral("line C %1 % off").arg(100 * e.C())));
         const QJsonArray runs = doc.value(QStringLiteral("runs")).toArray();
         QCOMPARE(runs.size(), 3);
         for (const QJsonValue& rv : runs) {
             const QJsonObject r = rv.toObject();
-            const double e = relErr(r.value(QStringLiteral("per_length")).toObject().value(QStringLiteral("Cp_N_per_m")).toDouble(), truth.Cp);
             const double fromLine = r.value(QStringLiteral("C_from_peak_line_percent")).toObject().value(QStringLiteral("Cp")).toDouble();
             const bool departs = r.value(QStringLiteral("departs_from_peak_line")).toBool();
-            const QString name = r.value(QStringLiteral("file")).toString().section(QLatin1Char('/'), -1);
-            qInfo("  %s: own Cp %.1f %% off, %.1f %% from the line, departs %d", qPrintable(name), 100 * e, fromLine, int(departs));
+            qInfo("  %s: own Cp %.1f %% off, %.1f %% from the line, departs %d", qPrintable(runName(r)), 100 * ownCpError(r, truth), fromLine,
+                  int(departs));
             QCOMPARE(departs, std::fabs(fromLine) > 5.0);
         }
         QVERIFY2(runs.at(1).toObject().value(QStringLiteral("departs_from_peak_line")).toBool(), "the 0.51 Hz run, 7.8 % off, is told");
