@@ -35,9 +35,10 @@ struct PeakPoint {
     double speed_m_s = 0.0;
     double force_N = 0.0;
     std::size_t samples = 0;
-    // False when the force went on rising well past the top speed: the tissue was still
-    // carried or arriving at the plate there (wide band, large gap, short stroke), so the
-    // point is not on the sliding line and the line leaves it out.
+    // False when the force went on rising well past the top speed, or changed between the
+    // quarters of the tops' later halves: the tissue was still carried or arriving at the
+    // plate there (wide band, large gap, short stroke), so the point is not on the sliding
+    // line and the line leaves it out.
     bool settled = true;
 };
 struct RunPeaks {

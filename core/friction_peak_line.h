@@ -30,8 +30,9 @@ RunPeaks peakPoints(const ConditionedSignals& conditioned, const FrictionOptions
 
 // A peak point must also lie on its own run's sliding line (within 1.5 % of its force): one
 // below it was taken while the tissue still moved with the needle. Marks such points not
-// settled. A run whose C or b the fit flagged (a sliding line bent by the slab's give) still
-// gives its point: the point rests on the flat top alone, not on that run's line.
+// settled. A run whose C or b the fit flagged (a sliding line bent by the slab's give) is
+// checked so too and still gives its point: near the top, where the run's samples are, its line
+// holds even where its C, carried far below them to zero speed, does not.
 void checkAgainstFit(RunPeaks& peaks, const FrictionFit& fit);
 
 struct PeakSpeedLine {
