@@ -2286,12 +2286,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+724"/>
+        <location line="+719"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-695"/>
+        <location line="-690"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
@@ -2306,7 +2306,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Geringe Konfidenz: ist die Nadel schwach zu sehen oder liegt eingeblendeter Text auf ihrer Linie, die Linie mit Umschalt+Ziehen auf dem Video zeichnen (Schaft zur Spitze) und mit Ziehen einen Bereich um ihren Weg, dann erneut automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -2341,7 +2341,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Kraft und Position, die Relaxation aus der Oberfläche in %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>recording time [s]</source>
         <translation>Aufzeichnungszeit [s]</translation>
     </message>
@@ -2362,12 +2362,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1099"/>
+        <location line="+1094"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1096"/>
+        <location line="-1091"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2393,12 +2393,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+613"/>
+        <location line="+610"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-613"/>
+        <location line="-610"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2522,12 +2522,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+884"/>
+        <location line="+880"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-684"/>
+        <location line="-680"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation>die Label-Datei konnte nicht beiseitegelegt werden: das nächste gespeicherte Label ersetzt sie</translation>
     </message>
@@ -2552,7 +2552,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+323"/>
+        <location line="+320"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2582,7 +2582,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+103"/>
         <source>Automatic sync stopped</source>
         <translation>Automatische Synchronisation abgebrochen</translation>
     </message>
@@ -2602,7 +2602,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Nadel verfolgen und ihre Verschiebung an die aufgezeichnete Position anpassen. Auf dem Video einen Bereich aufziehen: die Nadel wird nur darin gelesen (eingeblendete Uhren und Zähler außen lassen). Mit Umschalt vom Schaft zur Spitze ziehen, um die Nadellinie zu zeichnen, wo sie nicht gefunden wird.</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+71"/>
         <source>needle tracked (offset found)</source>
         <translation>verfolgte Nadel (gefundener Versatz)</translation>
     </message>
@@ -2612,7 +2612,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-1004"/>
+        <location line="-999"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2627,7 +2627,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
     <message numerus="yes">
-        <location line="+26"/>
+        <location line="+25"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>Labels: %n</numerusform>
@@ -2635,7 +2635,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+34"/>
         <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation>Zuerst einen Lauf öffnen (Doppelklick in der Sitzungsliste), dann sein Video anhängen</translation>
@@ -2666,7 +2666,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+39"/>
         <source>Video and sync not kept: %1</source>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
@@ -2741,7 +2741,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+77"/>
         <source>correlating: frame %1 of %2…</source>
         <translation>korreliere: Bild %1 von %2…</translation>
     </message>
@@ -2761,7 +2761,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-972"/>
+        <location line="-967"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2826,17 +2826,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1: %2 Messwerte, %3 Labels</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+52"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+70"/>
         <source>Videos (%1);;All files (*)</source>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+157"/>
+        <location line="+156"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -2886,12 +2886,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>correlating…</source>
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+122"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -5384,7 +5384,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+84"/>
+        <location filename="../core/export/session_analysis.cpp" line="+75"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation>%1: kein Steifigkeitsfit (%2)</translation>
     </message>
@@ -6411,7 +6411,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>… (insgesamt %1 Bytes)</translation>
     </message>
     <message>
-        <location filename="../core/run_judgement.cpp" line="+55"/>
+        <location filename="../core/run_judgement.cpp" line="+47"/>
         <source>no end reason: the recording was cut off</source>
         <translation>kein Endgrund: die Aufzeichnung wurde abgeschnitten</translation>
     </message>
@@ -6466,7 +6466,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nicht synchronisiert</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+89"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation>nicht schreibbar (%1)</translation>
@@ -7964,7 +7964,7 @@ F = %1 x + %2 x²
         <translation>Kein Video. Eines öffnen oder die Datei hierher ziehen, um es mit der Kraftaufzeichnung auszuwerten.</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+115"/>
         <source>frame %1   %2 s</source>
         <translation>Bild %1   %2 s</translation>
     </message>

@@ -2280,12 +2280,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+724"/>
+        <location line="+719"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-695"/>
+        <location line="-690"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2300,7 +2300,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2335,7 +2335,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>recording time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2356,12 +2356,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1099"/>
+        <location line="+1094"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1096"/>
+        <location line="-1091"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2387,12 +2387,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+613"/>
+        <location line="+610"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-613"/>
+        <location line="-610"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2516,12 +2516,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+884"/>
+        <location line="+880"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-684"/>
+        <location line="-680"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2546,7 +2546,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+323"/>
+        <location line="+320"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2576,7 +2576,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+103"/>
         <source>Automatic sync stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2596,7 +2596,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+71"/>
         <source>needle tracked (offset found)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2606,7 +2606,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1004"/>
+        <location line="-999"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2621,7 +2621,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+26"/>
+        <location line="+25"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>labels: %n</numerusform>
@@ -2629,7 +2629,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+34"/>
         <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation type="unfinished"></translation>
@@ -2660,7 +2660,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+39"/>
         <source>Video and sync not kept: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2733,7 +2733,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+77"/>
         <source>correlating: frame %1 of %2…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2753,7 +2753,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-972"/>
+        <location line="-967"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2818,17 +2818,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+52"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+70"/>
         <source>Videos (%1);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+157"/>
+        <location line="+156"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2878,12 +2878,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>correlating…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+122"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5274,7 +5274,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+84"/>
+        <location filename="../core/export/session_analysis.cpp" line="+75"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6301,7 +6301,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/run_judgement.cpp" line="+55"/>
+        <location filename="../core/run_judgement.cpp" line="+47"/>
         <source>no end reason: the recording was cut off</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6356,7 +6356,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+89"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation type="unfinished"></translation>
@@ -7852,7 +7852,7 @@ F = %1 x + %2 x²
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+115"/>
         <source>frame %1   %2 s</source>
         <translation type="unfinished"></translation>
     </message>
