@@ -81,24 +81,19 @@ void VideoView::setMessage(const QString& text)
 
 void VideoView::setRoi(const QRect& roi)
 {
-    roi_ = roi;
-    update();
-    emit marksChanged(marks());
+    setMarks({roi, marks_.needle});
 }
 
 void VideoView::setNeedleLine(const QLineF& line)
 {
-    needle_ = line;
-    update();
-    emit marksChanged(marks());
+    setMarks({marks_.region, line});
 }
 
 void VideoView::setMarks(const PictureMarks& m)
 {
-    roi_ = m.region;
-    needle_ = m.needle;
+    marks_ = m;
     update();
-    emit marksChanged(marks());
+    emit marksChanged(marks_);
 }
 
 QRect VideoView::pictureRect() const
@@ -130,12 +125,12 @@ void VideoView::paintEvent(QPaintEvent*)
     p.setRenderHint(QPainter::SmoothPixmapTransform);
     p.drawImage(t, image_);
     const double sx = double(t.width()) / image_.width(), sy = double(t.height()) / image_.height();  // video px to view px
-    if (!roi_.isEmpty()) {
+    if (const QRect& r = marks_.region; !r.isEmpty()) {
         p.setPen(QPen(QColor(255, 200, 0), 1, Qt::DashLine));
-        p.drawRect(QRectF(t.x() + roi_.x() * sx, t.y() + roi_.y() * sy, roi_.width() * sx, roi_.height() * sy));
+        p.drawRect(QRectF(t.x() + r.x() * sx, t.y() + r.y() * sy, r.width() * sx, r.height() * sy));
     }
-    if (!needle_.isNull()) {
-        const QPointF a(t.x() + needle_.x1() * sx, t.y() + needle_.y1() * sy), b(t.x() + needle_.x2() * sx, t.y() + needle_.y2() * sy);
+    if (const QLineF& n = marks_.needle; !n.isNull()) {
+        const QPointF a(t.x() + n.x1() * sx, t.y() + n.y1() * sy), b(t.x() + n.x2() * sx, t.y() + n.y2() * sy);
         p.setRenderHint(QPainter::Antialiasing);
         // Thin and see-through: the operator lays it on the needle and must see the needle under it.
         const QColor cyan(0, 220, 255, 190);
@@ -172,9 +167,9 @@ void VideoView::mouseMoveEvent(QMouseEvent* e)
 {
     const QPoint at = toVideo(e->position().toPoint());
     if (drag_ == Drag::Region)
-        roi_ = QRect(dragStart_, at).normalized() & image_.rect();
+        marks_.region = QRect(dragStart_, at).normalized() & image_.rect();  // drawn as it is dragged, stored on release
     else if (drag_ == Drag::Needle)
-        needle_ = QLineF(dragStart_, at);
+        marks_.needle = QLineF(dragStart_, at);
     else
         return;
     update();

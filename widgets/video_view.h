@@ -25,11 +25,11 @@ public:
     void setMessage(const QString& text);  // shown instead of a frame (no video, indexing...)
     QString message() const { return message_; }
     QString note() const { return note_; }
-    QRect roi() const { return roi_; }     // in video pixels; empty = whole frame
+    QRect roi() const { return marks_.region; }     // in video pixels; empty = whole frame
     void setRoi(const QRect& roi);
-    QLineF needleLine() const { return needle_; }  // in video pixels; null = find it in the picture
+    QLineF needleLine() const { return marks_.needle; }  // in video pixels; null = find it in the picture
     void setNeedleLine(const QLineF& line);
-    PictureMarks marks() const { return {roi_, needle_}; }
+    PictureMarks marks() const { return marks_; }
     void setMarks(const PictureMarks& marks);
     // Where the frame is drawn in the view (its aspect kept).
     QRect pictureRect() const;
@@ -61,8 +61,7 @@ private:
     double time_ = 0.0;
     QString note_;
     QString message_;
-    QRect roi_;
-    QLineF needle_;
+    PictureMarks marks_;
     QPoint dragStart_;
     enum class Drag { None, Region, Needle } drag_ = Drag::None;
     QPushButton* openButton_ = nullptr;
