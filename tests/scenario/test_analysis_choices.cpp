@@ -6,7 +6,9 @@
 #include "main_window.h"
 #include "support/needlebench_cli.h"
 #include "support/simulated_window.h"
+#include "support/truth_columns.h"
 
+#include "core/run_file.h"
 #include "core/session.h"
 #include "devices/acquisition_engine.h"
 #include "widgets/analysis/analysis_workspace.h"
@@ -19,6 +21,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStandardItemModel>
 #include <QStandardPaths>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -150,6 +153,59 @@ private slots:
         QCOMPARE(runItem(o.analysisWorkspace(), QStringLiteral("run_002_slow"))->checkState(), Qt::Unchecked);
         QCOMPARE(runItem(o.analysisWorkspace(), QStringLiteral("run_001_slow"))->checkState(), Qt::Checked);
         QVERIFY(o.close());
+        QSettings().clear();
+    }
+
+    // One noisy liver 3 slab at three frequencies (bench_accuracy --seed 88, rig set 2), force
+    // and position only, read in the real window's Analysis while the stage moves and records
+    // the next insertion. Each run's own Cp is 6-8 % high; the line through the
+    // runs' peak speeds is within 2 %. Before, the set had no such line and no run was named;
+    // now the summary carries the line and the status names the run that departs from it.
+    void runOffThePeakSpeedLineIsNamed()
+    {
+        QTemporaryDir tmp;
+        const QString sessionDir = tmp.filePath(QStringLiteral("liver3"));
+        nb::Session::create(sessionDir, {});
+        const QStringList hz{QStringLiteral("0.2899"), QStringLiteral("0.5070"), QStringLiteral("0.6809")};
+        for (int k = 0; k < 3; ++k) {
+            const QString full = tmp.filePath(QStringLiteral("full_%1.csv").arg(k));
+            const nbtest::CliResult sim = nbtest::runCli(
+                {QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"), QStringLiteral("--tissue"), QStringLiteral("liver3"),
+                 QStringLiteral("--frequency-hz"), hz[k], QStringLiteral("--amplitude-mm"), QStringLiteral("7.009"), QStringLiteral("--stick-band-mm-s"),
+                 QStringLiteral("3.465"), QStringLiteral("--plate-gap-mm"), QStringLiteral("1.431"), QStringLiteral("--force-noise-n"),
+                 QStringLiteral("0.00930"), QStringLiteral("--cycles"), QStringLiteral("7"), QStringLiteral("--seed"), QString::number(83899 + k),
+                 QStringLiteral("--out"), full});
+            QVERIFY2(sim.code == 0, qPrintable(sim.err));
+            nb::writeRunFile(QDir(sessionDir).filePath(QStringLiteral("run_00%1_sine.csv").arg(k + 1)),
+                             nbtest::withoutTruthColumns(nb::readRunFile(full).run));
+        }
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(persisted(sessionDir, &rig));
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        nbtest::prepareToRecord(w);
+        w.controlPanel()->button(nb::Control::StartInsertion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().moving, 20000);
+        nb::AnalysisWorkspace* a = w.analysisWorkspace();
+        w.workspaces()->setCurrentWidget(a);
+        const QString status = a->statusText();
+        QVERIFY2(status.contains(QStringLiteral("run_002_sine: C departs from the peak-speed line")), qPrintable(status));
+        QVERIFY2(!status.contains(QStringLiteral("run_003_sine: C departs")), qPrintable(status));
+        bool lineRow = false;
+        for (int r = 0; r < a->frictionSummaryModel()->rowCount(); ++r)
+            lineRow |= a->frictionSummaryModel()->item(r, 0)->text().startsWith(QStringLiteral("peak speeds"));
+        QVERIFY2(lineRow, "the friction summary carries the line through the peak speeds");
+        w.controlPanel()->button(nb::Control::StopMotion)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.engine()->status().moving, 20000);
+        w.controlPanel()->button(nb::Control::EndRun)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.engine()->status().recording, 20000);
+        if (!w.close()) {
+            auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
+            QVERIFY(question && question->isVisible());
+            question->button(QMessageBox::Yes)->click();
+        }
+        QTRY_VERIFY(!w.isVisible());
         QSettings().clear();
     }
 };
