@@ -72,8 +72,7 @@ private slots:
             QVERIFY(kept.open(QIODevice::ReadOnly));
             QCOMPARE(kept.readAll(), typed);
 
-            w.controlPanel()->button(nb::Control::EndRun)->click();
-            QTRY_VERIFY_WITH_TIMEOUT(!w.engine()->status().recording, 20000);
+            nbtest::endRun(w);
         }  // the window closes: a restart follows
 
         nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true, &rig));

@@ -54,4 +54,21 @@ inline void prepareToRecord(nb::MainWindow& w)
                               qPrintable(p->button(nb::Control::StartInsertion)->toolTip()), 20000);
 }
 
+// The operator ends a recording run: Stop while the stage moves (the run keeps recording), then
+// End run once it is offered, which is at rest (interlocks.cpp). A click on a greyed-out button is
+// lost, as it is for the operator, so each click waits until the panel offers it.
+inline void endRun(nb::MainWindow& w)
+{
+    nb::ControlPanel* p = w.controlPanel();
+    QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().recording, 20000);
+    if (p->interlockState().moving) {
+        QVERIFY(p->button(nb::Control::StopMotion)->isEnabled());
+        p->button(nb::Control::StopMotion)->click();
+    }
+    QTRY_VERIFY2_WITH_TIMEOUT(p->button(nb::Control::EndRun)->isEnabled(),
+                              qPrintable(p->button(nb::Control::EndRun)->toolTip()), 20000);
+    p->button(nb::Control::EndRun)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().recording, 20000);
+}
+
 }  // namespace nbtest
