@@ -32,6 +32,15 @@ constexpr double kBendShift = 0.05;
 // so its standard error does not show it) moves C threefold or more. Runs that slid only
 // between 0.79 and 0.90 of their top speed gave b 18-148 % off with standard errors of 1-4 %.
 constexpr double kMinSlidingSpan = 0.25;
+// The same measured against the stroke's own top speed, where the sliding samples stop short of
+// it (below kTopReached of it: the tissue had not come to rest at the faster speeds, still
+// arriving at the plate, and they were left out). Short strokes (±3.2-3.5 mm) slid, so far as
+// the line could use, between 0.53 and 0.83 of their top speed: b came out 30-48 % high with
+// standard errors under 1 % and no flag, while kMinSlidingSpan, measured against the fastest
+// sample left, saw a third of it. Their spans were 0.20-0.29 of the top; runs whose b held were
+// at 0.32 and above but one (at 0.26) in 960 directions of friction_cli_matrix.py's draws.
+constexpr double kMinSlidingShareOfTop = 0.3;
+constexpr double kTopReached = 0.9;
 
 struct Extremes {
     double max = -INFINITY, min = INFINITY;
@@ -752,17 +761,27 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         flag(c, nb::TrCore::tr("%1 rests on an undetermined %2").arg(QString::fromLatin1(c), QString::fromLatin1(b)));
     };
     // Its standard error above a quarter of it (noise), or sliding speeds spanning less than
-    // kMinSlidingSpan of the fastest (the slab's give, which the standard error does not show).
-    auto undetermined = [&](const char* c, const char* b, double slope, double se, double from_m_s, double to_m_s) {
+    // kMinSlidingSpan of the fastest (the slab's give, which the standard error does not show),
+    // or, where they stop short of the stroke's top, less than kMinSlidingShareOfTop of the top.
+    auto undetermined = [&](const char* c, const char* b, int sign, double slope, double se, double from_m_s, double to_m_s) {
         if (se > 0.25 * std::fabs(slope))
             slopeUndetermined(c, b, nb::TrCore::tr("%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds")
                                         .arg(QString::fromLatin1(b)).arg(slope, 0, 'g', 3).arg(se, 0, 'g', 2));
+        const std::optional<double> top = topSpeed(v, sign, trim, n - trim, 10);
         if (to_m_s - from_m_s < kMinSlidingSpan * to_m_s)
             slopeUndetermined(c, b, nb::TrCore::tr("%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range "
                                                    "of speeds to carry its line down to zero speed")
                                         .arg(QString::fromLatin1(b))
                                         .arg(1000.0 * from_m_s, 0, 'f', 1)
                                         .arg(1000.0 * to_m_s, 0, 'f', 1));
+        else if (top && to_m_s < kTopReached * *top && to_m_s - from_m_s < kMinSlidingShareOfTop * *top)
+            slopeUndetermined(c, b, nb::TrCore::tr("%1 is not determined by this run: the tissue rests on the plate only while the needle slides "
+                                                   "between %2 and %3 mm/s, of a stroke reaching %4 mm/s, too narrow a range of speeds to carry "
+                                                   "its line down to zero speed")
+                                        .arg(QString::fromLatin1(b))
+                                        .arg(1000.0 * from_m_s, 0, 'f', 1)
+                                        .arg(1000.0 * to_m_s, 0, 'f', 1)
+                                        .arg(1000.0 * *top, 0, 'f', 1));
     };
     auto unexplained = [&](const char* c, const char* b, double ratio) {
         flag(c, nb::TrCore::tr("%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times "
@@ -786,8 +805,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         unexplained("Cn", "bn", fit.residualToNoiseN);
     else if (bends[1])
         bent("Cn", "bn", fit.bendShiftCn);
-    undetermined("Cp", "bp", fit.model.bp_Ns_per_m, noiseSeB[0], slowest[0], fastest[0]);
-    undetermined("Cn", "bn", fit.model.bn_Ns_per_m, noiseSeB[1], slowest[1], fastest[1]);
+    undetermined("Cp", "bp", 1, fit.model.bp_Ns_per_m, noiseSeB[0], slowest[0], fastest[0]);
+    undetermined("Cn", "bn", -1, fit.model.bn_Ns_per_m, noiseSeB[1], slowest[1], fastest[1]);
     if (fit.staticSource == QLatin1String("none")) {
         // No stretch at rest to read the static limits from: D = 0 was printed as a result.
         flag("Dp", nb::TrCore::tr("Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to "

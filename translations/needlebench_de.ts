@@ -6035,7 +6035,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+437"/>
+        <location filename="../core/friction_fit.cpp" line="+446"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -6547,22 +6547,27 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>bn &lt; 0: Dämpfung kann keine Energie zuführen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds</source>
         <translation>%1 = %2 ± %3 N·s/m ist durch diesen Lauf nicht bestimmt: er gleitet über einen zu engen Geschwindigkeitsbereich</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+10"/>
+        <source>%1 is not determined by this run: the tissue rests on the plate only while the needle slides between %2 and %3 mm/s, of a stroke reaching %4 mm/s, too narrow a range of speeds to carry its line down to zero speed</source>
+        <translation>%1 ist durch diesen Lauf nicht bestimmt: das Gewebe liegt nur an der Platte an, während die Nadel zwischen %2 und %3 mm/s gleitet, bei einem Hub bis %4 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
+    </message>
+    <message>
+        <location line="+48"/>
         <source>%1 is not determined by the velocity band: in %2 of %3 stretches the force still rises where the band ends, the break-away not seen apart from the sliding (label phase a)</source>
         <translation>%1 ist durch das Geschwindigkeitsband nicht bestimmt: in %2 von %3 Abschnitten steigt die Kraft am Ende des Bandes noch, das Losbrechen ist vom Gleiten nicht zu trennen (Phase a labeln)</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-65"/>
         <source>%1 rests on an undetermined %2</source>
         <translation>%1 beruht auf einem unbestimmten %2</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+26"/>
         <source>%1 and %2 are not determined by this run: its sliding force departs from the line by %3 times its noise (the tissue&apos;s give changes along the stroke)</source>
         <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Seine Gleitkraft weicht um das %3-Fache ihres Rauschens von der Geraden ab (das Nachgeben des Gewebes ändert sich entlang des Hubs)</translation>
     </message>
@@ -6572,12 +6577,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 und %2 sind durch diesen Lauf nicht bestimmt: Darf sich seine Gleitgerade krümmen, verschiebt sich %1 um %3 % (das Nachgeben des Gewebes ändert sich mit der Geschwindigkeit; Phase c dort markieren, wo das Gewebe ruht)</translation>
     </message>
     <message>
-        <location line="-14"/>
+        <location line="-22"/>
         <source>%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range of speeds to carry its line down to zero speed</source>
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="-249"/>
+        <location line="-251"/>
         <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
         <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s)</translation>
     </message>
@@ -6587,7 +6592,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kein Messpunkt bewegt sich schneller als das Nullgeschwindigkeitsband (±%1 mm/s), bei einer Höchstgeschwindigkeit der Nadel von %2 mm/s: ein schmaleres --band-m-s angeben oder Phase c labeln</translation>
     </message>
     <message>
-        <location line="+278"/>
+        <location line="+288"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation>Dp und Dn sind nicht bestimmt: Der Lauf hat nicht in beiden Richtungen eine Strecke in Ruhe (Phase a), aus der sich die Haftgrenzen lesen lassen</translation>
     </message>
@@ -7964,7 +7969,7 @@ F = %1 x + %2 x²
         <translation>Kein Video. Eines öffnen oder die Datei hierher ziehen, um es mit der Kraftaufzeichnung auszuwerten.</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+110"/>
         <source>frame %1   %2 s</source>
         <translation>Bild %1   %2 s</translation>
     </message>
