@@ -283,7 +283,10 @@ std::vector<std::size_t> consistentlySliding(const std::vector<std::size_t>& row
 // rises towards the static limit, which is not this.
 struct ArrivalSpeeds {
     double positive_m_s = INFINITY, negative_m_s = INFINITY;
+    // Each direction's top speed, which the bins count down from (nullopt: too few samples).
+    std::optional<double> topPositive_m_s, topNegative_m_s;
     double of(double v) const { return v > 0.0 ? positive_m_s : negative_m_s; }
+    std::optional<double> top(int sign) const { return sign > 0 ? topPositive_m_s : topNegative_m_s; }
 };
 ArrivalSpeeds arrivalSpeeds(const std::vector<std::size_t>& rows, const std::vector<double>& v, const std::vector<double>& a,
                             const std::vector<double>& f, double mass, double noise_N, int window, std::size_t from, std::size_t to)
@@ -293,6 +296,7 @@ ArrivalSpeeds arrivalSpeeds(const std::vector<std::size_t>& rows, const std::vec
         const std::optional<double> fastest = topSpeed(v, s, from, to, 100);
         if (!fastest)
             continue;
+        (s > 0 ? cut.topPositive_m_s : cut.topNegative_m_s) = fastest;
         const double top = *fastest, width = top / 40.0;
         constexpr int kBins = 20;  // from the top down to half of it
         double sum[kBins] = {}, count[kBins] = {};
@@ -767,7 +771,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         if (se > 0.25 * std::fabs(slope))
             slopeUndetermined(c, b, nb::TrCore::tr("%1 = %2 ± %3 N·s/m is not determined by this run: it slides over too narrow a range of speeds")
                                         .arg(QString::fromLatin1(b)).arg(slope, 0, 'g', 3).arg(se, 0, 'g', 2));
-        const std::optional<double> top = topSpeed(v, sign, trim, n - trim, 10);
+        const std::optional<double> top = arriving.top(sign);
         if (to_m_s - from_m_s < kMinSlidingSpan * to_m_s)
             slopeUndetermined(c, b, nb::TrCore::tr("%1 is not determined by this run: it slides only between %2 and %3 mm/s, too narrow a range "
                                                    "of speeds to carry its line down to zero speed")

@@ -17,7 +17,6 @@
 #include <QComboBox>
 #include <QDir>
 #include <QListWidget>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -111,12 +110,7 @@ private slots:
             QCOMPARE(a->quantityChooser()->currentData().toString(), quantity);
             // Stopped a few millimetres in, the needle may be in the tissue: if the window asks,
             // the operator confirms the quit.
-            if (!w.close()) {
-                auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
-                QVERIFY(question && question->isVisible());
-                question->button(QMessageBox::Yes)->click();
-            }
-            QTRY_VERIFY(!w.isVisible());
+            nbtest::quitConfirming(w);
         }  // a restart follows
 
         {
@@ -198,12 +192,7 @@ private slots:
             lineRow |= a->frictionSummaryModel()->item(r, 0)->text().startsWith(QStringLiteral("peak speeds"));
         QVERIFY2(lineRow, "the friction summary carries the line through the peak speeds");
         nbtest::endRun(w);
-        if (!w.close()) {
-            auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
-            QVERIFY(question && question->isVisible());
-            question->button(QMessageBox::Yes)->click();
-        }
-        QTRY_VERIFY(!w.isVisible());
+        nbtest::quitConfirming(w);
         QSettings().clear();
     }
 };

@@ -9,6 +9,7 @@
 #include "widgets/control_panel.h"
 
 #include <QAbstractButton>
+#include <QMessageBox>
 #include <QtTest>
 
 #include <memory>
@@ -69,6 +70,18 @@ inline void endRun(nb::MainWindow& w)
                               qPrintable(p->button(nb::Control::EndRun)->toolTip()), 20000);
     p->button(nb::Control::EndRun)->click();
     QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().recording, 20000);
+}
+
+// The operator quits; where the window asks first (the stage enabled with the needle in the
+// tissue, say), they confirm.
+inline void quitConfirming(nb::MainWindow& w)
+{
+    if (!w.close()) {
+        auto* question = w.findChild<QMessageBox*>(QStringLiteral("quitQuestion"));
+        QVERIFY(question && question->isVisible());
+        question->button(QMessageBox::Yes)->click();
+    }
+    QTRY_VERIFY(!w.isVisible());
 }
 
 }  // namespace nbtest
