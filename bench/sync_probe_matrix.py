@@ -63,7 +63,7 @@ def read_run(path):
     return np.array(t), np.array(x)
 
 
-def draw_video(c, t, x, path):
+def draw_video(c, t, x, path, x264_preset):
     rng = np.random.default_rng(c['seed'])
     W, H = c['size']
     fps = c['fps']
@@ -79,7 +79,7 @@ def draw_video(c, t, x, path):
     if c['counter']:
         cmd += ['-vf', "drawtext=text='%{n}':x=10:y=10:fontsize=24:fontcolor=white:box=1:boxcolor=black,"
                        "drawtext=text='%{pts\\:hms}':x=W-200:y=H-40:fontsize=20:fontcolor=white"]
-    cmd += {'libx264': ['-c:v', 'libx264', '-preset', c.get('x264_preset', 'medium'), '-bf', '2', '-pix_fmt', 'yuv420p', '-crf', '23'],
+    cmd += {'libx264': ['-c:v', 'libx264', '-preset', x264_preset, '-bf', '2', '-pix_fmt', 'yuv420p', '-crf', '23'],
             'mjpeg': ['-c:v', 'mjpeg', '-q:v', '5', '-pix_fmt', 'yuvj420p'],
             'mpeg4': ['-c:v', 'mpeg4', '-q:v', '5']}[c['codec']] + [path]
     p = subprocess.Popen(cmd, stdin=subprocess.PIPE)
@@ -183,7 +183,7 @@ def operator_marks(c, x):
     return ['--needle', ','.join(f'{v:.1f}' for v in (*p1, *p2)), '--roi', f'{lo[0]},{lo[1]},{hi[0] - lo[0]},{hi[1] - lo[1]}']
 
 
-def run_case(c, exe, root, damage=False, operator=False):
+def run_case(c, exe, root, x264_preset, damage=False, operator=False):
     d = os.path.join(root, f"case{c['i']}")
     os.makedirs(d, exist_ok=True)
     if c['linear']:
@@ -196,7 +196,7 @@ def run_case(c, exe, root, damage=False, operator=False):
                    check=True, capture_output=True)
     t, x = read_run(run)
     video = os.path.join(d, 'video.mp4' if c['codec'] == 'libx264' else 'video.avi')
-    draw_video(c, t, x, video)
+    draw_video(c, t, x, video, x264_preset)
     if damage:
         c['damaged'] = damage_video(c, video)
     # A video that starts after the motion has ended (a short stroke, an offset well below
@@ -246,14 +246,12 @@ def main():
     if a.only:
         wanted = {int(i) for i in a.only.split(',')}
         cases = [c for c in cases if c['i'] in wanted]
-    for c in cases:
-        c['x264_preset'] = a.x264_preset
     root = a.keep or tempfile.mkdtemp(prefix='sync_probe_')
     within = accepted_within = misses = honest_misses = unsyncable = offered = 0
     worst = 0.0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.damage, a.operator), cases):
+            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.x264_preset, a.damage, a.operator), cases):
                 if o.get('refused'):
                     if o['moving']:
                         misses += 1
