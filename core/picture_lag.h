@@ -20,7 +20,8 @@ struct PictureCoding {
     // Lag-one correlation of the picture's noise from one frame to the next: 0 when every picture
     // is coded afresh (MJPEG, DV, uncoded), towards 1 when the coder drops the noise.
     double memory = 0.0;
-    double noise_grey = 0.0;             // the camera's noise per pixel before coding (σ)
+    double noise_grey = 0.0;             // the noise per pixel in the pictures as decoded (σ), taken
+                                         // for the camera's: a coder that holds a pixel shows it whole
     double edgeSlope_grey_per_px = 0.0;  // the tip's edge along the needle: how much a pixel changes
                                          // as the tip moves a pixel
 };

@@ -52,6 +52,20 @@ std::vector<cv::Mat> pictures(int frames, double memory, std::uint64_t seed)
     return out;
 }
 
+// The noise as the pictures show it: each pixel's spread about its mean over the frames.
+double noiseShown(const std::vector<cv::Mat>& frames)
+{
+    cv::Mat sum = cv::Mat::zeros(frames.front().size(), CV_64F), squares = sum.clone(), f;
+    for (const cv::Mat& frame : frames) {
+        frame.convertTo(f, CV_64F);
+        sum += f;
+        squares += f.mul(f);
+    }
+    const double n = double(frames.size());
+    const cv::Mat variance = (squares - sum.mul(sum) / n) / (n - 1.0);
+    return std::sqrt(cv::mean(variance)[0]);
+}
+
 nb::PictureCoding measured(const std::vector<cv::Mat>& frames)
 {
     nb::video::PictureMemoryMeter meter;
@@ -60,9 +74,14 @@ nb::PictureCoding measured(const std::vector<cv::Mat>& frames)
     return meter.coding();
 }
 
+struct Coded {
+    nb::PictureCoding coding;
+    double noiseShown = 0.0;
+};
+
 // The pictures encoded by the ffmpeg tool with `codec` (its arguments), decoded back through
 // NeedleBench's reader and measured; nullopt when the tool failed.
-std::optional<nb::PictureCoding> throughCoder(const QStringList& codec, const QString& name)
+std::optional<Coded> throughCoder(const QStringList& codec, const QString& name)
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(name);
@@ -80,12 +99,14 @@ std::optional<nb::PictureCoding> throughCoder(const QStringList& codec, const QS
     const nb::video::FrameIndex index = nb::video::buildFrameIndex(path);
     nb::video::FrameReader reader(index);
     nb::video::PictureMemoryMeter meter;
+    std::vector<cv::Mat> decoded;
     for (int i = 0; i < index.size(); ++i) {
         cv::Mat gray;
         cv::cvtColor(reader.read(i).image, gray, cv::COLOR_BGR2GRAY);
         meter.add(gray);
+        decoded.push_back(gray);
     }
-    return meter.coding();
+    return Coded{meter.coding(), noiseShown(decoded)};
 }
 
 }  // namespace
@@ -104,13 +125,18 @@ private slots:
     }
 
     // Each picture 0.4 of the one before and 0.6 of what the camera saw: memory 0.4, and the
-    // camera's noise found again under the smoothing (the pictures' own is half as large).
+    // noise as the pictures show it, σ·√((1 − ρ)/(1 + ρ)), the spread the lag model is given
+    // (core/picture_lag.h: the coder holds, and what it shows spreads as it does).
     void aCarryOverOfKnownMemory()
     {
-        const nb::PictureCoding c = measured(pictures(60, 0.4, 2));
-        qInfo("memory %.3f (made 0.4), noise %.2f grey levels (drawn %.1f)", c.memory, c.noise_grey, kNoise);
+        const std::vector<cv::Mat> frames = pictures(60, 0.4, 2);
+        const nb::PictureCoding c = measured(frames);
+        const double shown = noiseShown(frames);
+        qInfo("memory %.3f (made 0.4), noise %.2f grey levels (in the pictures %.2f, drawn %.1f)", c.memory, c.noise_grey, shown,
+              kNoise);
         QVERIFY2(std::abs(c.memory - 0.4) < 0.04, qPrintable(QString::number(c.memory)));
-        QVERIFY2(std::abs(c.noise_grey - kNoise) < 0.15 * kNoise, qPrintable(QString::number(c.noise_grey)));
+        QVERIFY2(std::abs(c.noise_grey - shown) < 0.1 * shown, qPrintable(QString::number(c.noise_grey)));
+        QVERIFY2(c.noise_grey < 0.8 * kNoise, qPrintable(QString::number(c.noise_grey)));
     }
 
     // A picture repeated whole is no sample of the coder: left out, it changes nothing (taken,
@@ -136,11 +162,14 @@ private slots:
         const auto mjpeg = throughCoder({"-c:v", "mjpeg", "-q:v", "5", "-pix_fmt", "yuvj420p"}, QStringLiteral("noise.avi"));
         const auto mpeg4 = throughCoder({"-c:v", "mpeg4", "-q:v", "5"}, QStringLiteral("noise4.avi"));
         QVERIFY(mjpeg && mpeg4);
-        qInfo("MJPEG memory %.3f noise %.2f; MPEG-4 memory %.3f noise %.2f (drawn %.1f)", mjpeg->memory, mjpeg->noise_grey,
-              mpeg4->memory, mpeg4->noise_grey, kNoise);
-        QVERIFY2(mjpeg->memory < 0.05, qPrintable(QString::number(mjpeg->memory)));
-        QVERIFY2(mpeg4->memory > 0.2, qPrintable(QString::number(mpeg4->memory)));
-        QVERIFY2(std::abs(mpeg4->noise_grey - kNoise) < 0.3 * kNoise, qPrintable(QString::number(mpeg4->noise_grey)));
+        qInfo("MJPEG memory %.3f noise %.2f (shown %.2f); MPEG-4 memory %.3f noise %.2f (shown %.2f); drawn %.1f",
+              mjpeg->coding.memory, mjpeg->coding.noise_grey, mjpeg->noiseShown, mpeg4->coding.memory, mpeg4->coding.noise_grey,
+              mpeg4->noiseShown, kNoise);
+        QVERIFY2(mjpeg->coding.memory < 0.05, qPrintable(QString::number(mjpeg->coding.memory)));
+        QVERIFY2(mpeg4->coding.memory > 0.2, qPrintable(QString::number(mpeg4->coding.memory)));
+        // Either coder's quantiser drops part of the noise; what is measured is what is shown.
+        for (const Coded* c : {&*mjpeg, &*mpeg4})
+            QVERIFY2(std::abs(c->coding.noise_grey - c->noiseShown) < 0.15 * c->noiseShown, qPrintable(QString::number(c->coding.noise_grey)));
     }
 
     // The lag: none where nothing is carried over; for a change far below the noise, the
