@@ -665,6 +665,38 @@ void maskJumps(const std::vector<double>& t, std::vector<double>& d)
     d = cleaned;
 }
 
+// A tip that runs on past the end of its strip (out of the picture, or of the operator's region)
+// is no longer in it, but something on the line behind it is still found, and kept to: a clock's
+// digits the shaft runs through (probe seed 27053 case 11: the tip left the picture at the end of
+// a 40 mm stroke and was read 40 px back on the clock for the last 1.6 s; the sync was 17 frames
+// off at confidence 0.01, 7 frames with the needle's line given). Once the tip has been read within
+// kEndReach samples of the strip's far end `end` and is next read farther back than it can have
+// moved since, the readings are masked for as long as they keep to that place, a thing that does
+// not move: a tip coming back into the picture is read at its end first, and a tip drawn back
+// does not stay in one place.
+constexpr double kEndReach = 3.0 * kStep, kStillFoil_px = 6.0;
+void maskBeyondEnd(std::vector<double>& d, double end)
+{
+    double step = 0.0;  // the tip's last step between two frames read in a row
+    std::size_t last = d.size();  // the last frame read, while it is within reach of the end
+    for (std::size_t k = 0; k < d.size(); ++k) {
+        if (!std::isfinite(d[k]))
+            continue;
+        if (last < d.size() && end - d[k] > end - d[last] + std::max(8.0, 3.0 * std::abs(step) * double(k - last))) {
+            const double foil = d[k];
+            std::size_t j = k;
+            for (; j < d.size() && (!std::isfinite(d[j]) || (std::abs(d[j] - foil) <= kStillFoil_px && end - d[j] > kEndReach)); ++j)
+                d[j] = kNaN;
+            last = d.size();
+            k = j - 1;
+            continue;
+        }
+        if (k > 0 && std::isfinite(d[k - 1]))
+            step = d[k] - d[k - 1];
+        last = end - d[k] <= kEndReach ? k : d.size();
+    }
+}
+
 }  // namespace
 
 std::vector<std::optional<NeedleAxis>> settledOnFaintShafts(const FrameSamples& s, const std::vector<NeedleAxis>& axes)
@@ -752,6 +784,9 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
         trackers[a].readAgain(out[a].displacement_px, trackers[a].strip.origin);
         maskJumps(out[a].time_s, out[a].displacement_px);
         maskJumps(out[a].time_s, measured[a]);
+        const double end = trackers[a].strip.origin + trackers[a].strip.length - 1;
+        maskBeyondEnd(out[a].displacement_px, end);
+        maskBeyondEnd(measured[a], end);
         // Measured against the strip's sides, the tip is freed of a still texture's pull (probe
         // seed 4711, two linear strokes on grain: 0.36 and 0.38 px of scatter against 0.47 and
         // 0.43), but where the picture ahead of it moves (the simulator's imaging view, tissue
