@@ -673,8 +673,10 @@ void maskJumps(const std::vector<double>& t, std::vector<double>& d)
 // kEndReach samples of the strip's far end `end` and is next read farther back than it can have
 // moved since, the readings are masked for as long as they keep to that place, a thing that does
 // not move: a tip coming back into the picture is read at its end first, and a tip drawn back
-// does not stay in one place.
+// does not stay in one place. Not after more than kEndGap frames unread: a tip may have been
+// drawn back unseen and rest where it is read next.
 constexpr double kEndReach = 3.0 * kStep, kStillFoil_px = 6.0;
+constexpr std::size_t kEndGap = 10;
 void maskBeyondEnd(std::vector<double>& d, double end)
 {
     double step = 0.0;  // the tip's last step between two frames read in a row
@@ -682,7 +684,7 @@ void maskBeyondEnd(std::vector<double>& d, double end)
     for (std::size_t k = 0; k < d.size(); ++k) {
         if (!std::isfinite(d[k]))
             continue;
-        if (last < d.size() && end - d[k] > end - d[last] + std::max(8.0, 3.0 * std::abs(step) * double(k - last))) {
+        if (last < d.size() && k - last <= kEndGap && end - d[k] > end - d[last] + std::max(8.0, 3.0 * std::abs(step) * double(k - last))) {
             const double foil = d[k];
             std::size_t j = k;
             for (; j < d.size() && (!std::isfinite(d[j]) || (std::abs(d[j] - foil) <= kStillFoil_px && end - d[j] > kEndReach)); ++j)
