@@ -76,6 +76,18 @@ QAction* action(nb::MainWindow& w, const QString& text)
 
 bool busy(const nb::devices::EngineStatus& s) { return s.moving || s.approaching || s.jogging; }
 
+// The rig's state in a failed check's message: a scenario that fails on a loaded machine only
+// must say where the rig was.
+QString stateOf(nb::MainWindow& w)
+{
+    const nb::devices::EngineStatus s = w.engine()->status();
+    const nb::InterlockState i = w.controlPanel()->interlockState();
+    return QStringLiteral("position %1 mm, force %2 N, moving %3, recording %4, latched %5, enabled %6, zeroed %7, "
+                          "in tissue %8, loaded %9, runs ended %10 (%11), status line '%12'")
+        .arg(s.position_mm, 0, 'f', 3).arg(s.force_N, 0, 'f', 3).arg(busy(s)).arg(s.recording).arg(i.latched).arg(i.stageEnabled)
+        .arg(i.zeroed).arg(i.inTissue).arg(i.loaded).arg(w.runsEnded()).arg(w.lastEndReason(), w.statusBar()->toolTip());
+}
+
 // The dialog on screen besides the main window, modal or not.
 QWidget* visibleDialog()
 {
@@ -454,19 +466,25 @@ private slots:
             }
         });
         watchdog.start(50);
+        // The status bar shortens a message to its room; its tooltip holds the whole text.
+        const auto said = [&w] {
+            return QStringLiteral("'%1' (whole: '%2'; %3)").arg(w.statusBar()->currentMessage(), w.statusBar()->toolTip(), stateOf(w));
+        };
+        QVERIFY2(QApplication::activeWindow() == &w, qPrintable(said()));
         QTest::keyClick(&w, Qt::Key_N, Qt::ControlModifier);  // Ctrl+N
-        QTest::qWait(200);
-        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("A run is recording")), qPrintable(w.statusBar()->currentMessage()));
+        QTRY_VERIFY2_WITH_TIMEOUT(w.statusBar()->toolTip().contains(QStringLiteral("A run is recording")), qPrintable(said()), 5000);
         for (const char* text : {"&Open session…", "Session &details…", "&Choose devices…", "&Simulated rig…", "&Calibrate force sensor…"}) {
             w.statusBar()->clearMessage();
-            action(w, QString::fromUtf8(text))->trigger();
-            QTest::qWait(100);
-            QVERIFY2(w.statusBar()->currentMessage().startsWith(QStringLiteral("Not now")), text);
+            w.statusBar()->setToolTip(QString());
+            QAction* a = action(w, QString::fromUtf8(text));
+            QVERIFY2(a, text);
+            a->trigger();
+            QTRY_VERIFY2_WITH_TIMEOUT(w.statusBar()->currentMessage().startsWith(QStringLiteral("Not now")), qPrintable(text + (": " + said())), 5000);
         }
         QCOMPARE(dialogs, 0);
         QVERIFY(!w.findChild<nb::CalibrationWizard*>());
         QCOMPARE(w.session()->dir(), sessionDir);
-        QVERIFY(w.engine()->status().recording);  // the run went on
+        QVERIFY2(w.engine()->status().recording, qPrintable(said()));  // the run went on
         QVERIFY(QFileInfo(w.engine()->status().runPath).absolutePath() == QDir(sessionDir).absolutePath());
         w.controlPanel()->button(Control::EmergencyStop)->click();
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 10000);
@@ -498,11 +516,12 @@ private slots:
         QVERIFY(!p->findChild<QPushButton*>(QStringLiteral("jogOut"))->isEnabled());
         w.engine()->jog(-1.0, 5.0);  // even asked directly, the engine refuses
         QTest::qWait(500);
-        QCOMPARE(w.engine()->status().position_mm, position);
+        QVERIFY2(w.engine()->status().position_mm == position,
+                 qPrintable(QStringLiteral("%1 mm, latched at %2 mm; %3").arg(w.engine()->status().position_mm).arg(position).arg(stateOf(w))));
         // The deliberate reset.
         QTest::mouseClick(p->findChild<QPushButton*>(QStringLiteral("resetEmergencyStop")), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(!p->interlockState().latched, 5000);
-        QVERIFY(p->interlockState().stageEnabled);
+        QTRY_VERIFY2_WITH_TIMEOUT(!p->interlockState().latched, qPrintable(stateOf(w)), 5000);
+        QTRY_VERIFY2_WITH_TIMEOUT(p->interlockState().stageEnabled, qPrintable(stateOf(w)), 5000);
         QTRY_VERIFY_WITH_TIMEOUT(!banner->isVisible(), 5000);
         // The reset asks for a fresh zero before the next run, but the needle comes out without
         // one: Withdraw goes back towards the start the last zero set.
@@ -513,8 +532,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(p->findChild<QPushButton*>(QStringLiteral("jogOut"))->isEnabled(), 5000);
         p->findChild<QComboBox*>(QStringLiteral("jogStep"))->setCurrentIndex(1);  // 1 mm
         p->findChild<QPushButton*>(QStringLiteral("jogOut"))->click();
-        QTRY_VERIFY_WITH_TIMEOUT(std::abs(w.engine()->status().position_mm - (position - 1.0)) < 0.05 && !w.engine()->status().moving, 10000);
-        QVERIFY(!w.engine()->status().recording);
+        QTRY_VERIFY2_WITH_TIMEOUT(std::abs(w.engine()->status().position_mm - (position - 1.0)) < 0.05 && !busy(w.engine()->status()),
+                                  qPrintable(QStringLiteral("from %1 mm: %2").arg(position).arg(stateOf(w))), 10000);
+        QVERIFY2(!w.engine()->status().recording, qPrintable(stateOf(w)));
     }
 
     void biasInTissueNeedsOverrideAndWithdrawalIsNeverTrapped()
@@ -530,7 +550,8 @@ private slots:
         p->button(Control::StartInsertion)->click();
         QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 30000);
         QCOMPARE(w.lastEndReason(), QStringLiteral("completed"));
-        QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().inTissue || p->interlockState().loaded, 5000);
+        QTRY_VERIFY2_WITH_TIMEOUT((p->interlockState().inTissue || p->interlockState().loaded) && !busy(w.engine()->status()),
+                                  qPrintable(stateOf(w)), 5000);
         const double bias0 = w.engine()->status().bias_V;
 
         // Refused with the reason; the operator cancels.
@@ -550,7 +571,8 @@ private slots:
         };
         answer(false);
         p->button(Control::Bias)->click();
-        QVERIFY2(asked.contains(QStringLiteral("noise band")) || asked.contains(QStringLiteral("met tissue")), qPrintable(asked));
+        QVERIFY2(asked.contains(QStringLiteral("noise band")) || asked.contains(QStringLiteral("met tissue")),
+                 qPrintable(QStringLiteral("asked '%1'; status '%2'; %3").arg(asked, w.statusBar()->toolTip(), stateOf(w))));
         QTest::qWait(1000);
         QCOMPARE(w.engine()->status().bias_V, bias0);
         // The override works.
@@ -566,10 +588,10 @@ private slots:
         auto* out = p->findChild<QPushButton*>(QStringLiteral("withdrawToStart"));
         QTRY_VERIFY2_WITH_TIMEOUT(out->isEnabled(), qPrintable(out->toolTip()), 5000);
         QTest::mouseClick(out, Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().moving, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(!w.engine()->status().moving, 20000);
-        QVERIFY2(std::abs(w.engine()->status().position_mm) < 0.05, qPrintable(QString::number(w.engine()->status().position_mm)));
-        QVERIFY(!w.engine()->status().forceLimitTripped);
+        // Out to the start (the move may be over before a look sees it moving).
+        QTRY_VERIFY2_WITH_TIMEOUT(std::abs(w.engine()->status().position_mm) < 0.05 && !busy(w.engine()->status()),
+                                  qPrintable(stateOf(w)), 20000);
+        QVERIFY2(!w.engine()->status().forceLimitTripped, qPrintable(stateOf(w)));
         QCOMPARE(w.runsEnded(), 1);  // never recorded
     }
 
