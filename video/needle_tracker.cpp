@@ -363,11 +363,18 @@ struct AxisTracker {
     // fainter (other background), so the memory fades while it is lost.
     double typicalStrength() const
     {
+        const double m = lastSeenStrength();
+        return lost > 8 ? m * std::pow(0.9, lost - 8) : m;
+    }
+
+    // The tip's edge as strong as the last frames that showed it on their own (median of 25),
+    // 0 before five did.
+    double lastSeenStrength() const
+    {
         if (strengths.size() < 5)
             return 0.0;
         const std::size_t k = std::min<std::size_t>(strengths.size(), 25);
-        const double m = median(std::vector<double>(strengths.end() - std::ptrdiff_t(k), strengths.end()));
-        return lost > 8 ? m * std::pow(0.9, lost - 8) : m;
+        return median(std::vector<double>(strengths.end() - std::ptrdiff_t(k), strengths.end()));
     }
 
     // The tip in this frame: searched near where it should be by now (a faint tip in heavy
@@ -537,11 +544,17 @@ struct AxisTracker {
                 courseAgreed.pop_front();
             return alone;
         }
+        // Not clear on its own, an edge a quarter as strong as the tip was when last seen: a tip
+        // that runs out of the picture leaves its course at the strip's end, where the grain's
+        // edges of 1-4 σ were read as a tip 15-20 px short of the edge while a tip of 21 σ was
+        // out of sight (test_needle_axis leavesNoTipReadWhereItIsOutOfThePicture). A faint tip
+        // in heavy noise, seen alone at 3.5-5 σ, still takes edges of 2 σ on its course.
+        const double likeTheTip = std::max(2.0, 0.25 * lastSeenStrength()) * sigma;
         const auto agreed = std::count(courseAgreed.begin(), courseAgreed.end(), true);
         const bool trusted = courseAgreed.size() < 5 || double(agreed) >= 0.8 * double(courseAgreed.size());
         if (agree || !trusted)
-            return alone;
-        if (!std::isfinite(onCourse.position) || !(onCourse.strength >= 2.0 * sigma))
+            return alone.strength >= likeTheTip ? alone : Sighting{};
+        if (!std::isfinite(onCourse.position) || !(onCourse.strength >= likeTheTip))
             return {};
         return {onCourse.position, tipAgainstSides(sides, seen.profile.middle, onCourse.position), onCourse.strength};
     }

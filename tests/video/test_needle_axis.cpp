@@ -214,6 +214,67 @@ private slots:
         QVERIFY2(close >= 0.9 * read, qPrintable(QStringLiteral("the tip within 2 px in %1 of %2 frames").arg(close).arg(read)));
     }
 
+    // A tip that runs out of the picture: from 110 px inside the right edge to 30 px beyond it
+    // and back, one and a half times. While it is out the shaft crosses the whole picture and
+    // nothing along the line says where the tip is: such frames are not read (or read at the
+    // edge), and the line still points from the shaft to the tip.
+    void leavesNoTipReadWhereItIsOutOfThePicture_data()
+    {
+        QTest::addColumn<bool>("clock");
+        QTest::newRow("plain") << false;
+    }
+
+    void leavesNoTipReadWhereItIsOutOfThePicture()
+    {
+        QFETCH(bool, clock);
+        NeedleVideo v{0.0, clock, false};
+        v.tip = [](int frame) { return 70.0 * std::sin(2.0 * kPi * frame / 60.0); };
+        v.travelCentre = kWidth / 2.0 - 110.0 + 70.0;  // from 110 px inside the edge to 30 px beyond
+        v.contrast = 60.0;
+        v.noise = 8.0;
+        QTemporaryDir dir;
+        QString problem;
+        const std::optional<nb::video::FrameIndex> index = writtenAndIndexed(dir, v, &problem);
+        QVERIFY2(index, qPrintable(problem));
+        nb::video::FrameReader reader(*index);
+        const QPointF centre(kWidth / 2.0, kHeight / 2.0);
+        for (const bool found : {true, false}) {
+            nb::video::NeedleTrack track;
+            if (found) {
+                const std::optional<nb::video::NeedleAxis> axis = nb::video::detectNeedleAxis(reader);
+                QVERIFY2(axis, "no needle found");
+                track = nb::video::trackNeedle(reader, *axis);
+            } else {
+                track = nb::video::trackNeedle(reader, nb::video::NeedleAxis(centre + QPointF(100, 0), centre - QPointF(100, 0)));
+            }
+            const QPointF d = unit(track.axis);
+            const double centreAt = dot(centre - track.axis.p1(), d);
+            int out = 0, outRead = 0, in = 0, inClose = 0;
+            QStringList wrong;
+            for (int k = 0; k < kFrames && k < int(track.displacement_px.size()); ++k) {
+                const double truth = v.travelCentre + v.tip(k);  // from the centre, along +x
+                const double at = (track.displacement_px[std::size_t(k)] - centreAt) * (d.x() > 0 ? 1.0 : -1.0);
+                if (truth > kWidth / 2.0 - 1.0) {
+                    ++out;
+                    // Out of the picture: unread, or read at the edge.
+                    if (std::isfinite(at) && at < kWidth / 2.0 - 4.0) {
+                        ++outRead;
+                        wrong << QStringLiteral("%1: %2 (out at %3)").arg(k).arg(at, 0, 'f', 1).arg(truth, 0, 'f', 1);
+                    }
+                } else if (truth < kWidth / 2.0 - 12.0) {
+                    ++in;
+                    inClose += std::isfinite(at) && std::abs(at - truth) <= 2.0;
+                }
+            }
+            qInfo("%s: points %s; the tip out of the picture in %d frames, read inside it in %d; inside, %d of %d within 2 px. %s",
+                  found ? "found" : "drawn backwards", d.x() > 0.999 ? "right" : "WRONG", out, outRead, inClose, in, qPrintable(wrong.join(QStringLiteral(", "))));
+            QVERIFY2(d.x() > 0.999, found ? "the line found points from the tip to the shaft" : "the line drawn backwards is not turned");
+            QVERIFY2(out >= 20, "the tip does not leave the picture");
+            QCOMPARE(outRead, 0);
+            QVERIFY2(inClose >= 0.9 * in, qPrintable(QStringLiteral("inside, the tip within 2 px in %1 of %2 frames").arg(inClose).arg(in)));
+        }
+    }
+
     // Digits that change on the needle's line every frame (a clock with milliseconds across the
     // shaft) differ from their mean in both signs by turns, and vote for either way the line
     // may point as much as the tip votes for one (probe seed 531911, case 9: 184 against 175,
