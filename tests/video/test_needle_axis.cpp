@@ -218,16 +218,11 @@ private slots:
     // and back, one and a half times. While it is out the shaft crosses the whole picture and
     // nothing along the line says where the tip is: such frames are not read (or read at the
     // edge), and the line still points from the shaft to the tip.
-    void leavesNoTipReadWhereItIsOutOfThePicture_data()
-    {
-        QTest::addColumn<bool>("clock");
-        QTest::newRow("plain") << false;
-    }
-
+    // (With a clock burnt in on the shaft as well, the tracker loses the tip along the needle's
+    // line after its first return and settles on the clock: not yet mended.)
     void leavesNoTipReadWhereItIsOutOfThePicture()
     {
-        QFETCH(bool, clock);
-        NeedleVideo v{0.0, clock, false};
+        NeedleVideo v{0.0};
         v.tip = [](int frame) { return 70.0 * std::sin(2.0 * kPi * frame / 60.0); };
         v.travelCentre = kWidth / 2.0 - 110.0 + 70.0;  // from 110 px inside the edge to 30 px beyond
         v.contrast = 60.0;
