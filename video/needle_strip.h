@@ -113,6 +113,24 @@ struct TipModel {
     std::vector<double> still;
 };
 TipModel tipModel(const std::vector<StripProfile>& profiles, const std::vector<std::vector<double>>& g, double sigma);
+// How strongly a frame shows the shaft (of sign `shaftSign`) over the strip's first quarter
+// (its median) and over its last 16 samples (their quarter point); NaN where the strip is too
+// short or no shaft is seen.
+struct ShaftAtEnds {
+    double start = kNaN, end = kNaN;
+};
+ShaftAtEnds shaftAtEnds(const StripProfile& raw, int shaftSign);
+// What the strip's end shows in nearly every frame (the tenth percentile of the sampled
+// frames): beside a picture's corner the sides run out of it, and the strip's end shows a
+// "shaft" that is always there; and how far the frames' noise alone takes it above that.
+struct UsualAtEnd {
+    double floor = 0.0, margin = 0.0;
+};
+UsualAtEnd usualShaftAtEnd(const std::vector<ShaftAtEnds>& frames);
+// Whether a frame's shaft runs on to the strip's far end: beyond what is usual there, at
+// least half as strong as over its first quarter and beyond the noise's reach. Its tip is
+// then beyond the strip (out of the picture or the operator's region): no edge on it is the tip.
+bool shaftReachesEnd(const ShaftAtEnds& frame, const UsualAtEnd& usual);
 
 // What `strip` sees in each sampled frame.
 std::vector<StripProfile> sampleStrip(const NeedleStrip& strip, const FrameSamples& s);

@@ -261,6 +261,7 @@ struct AxisTracker {
     NeedleStrip strip;
     std::vector<double> still;
     std::vector<double> background;  // of the strip's shaft profile (shaftBackground)
+    UsualAtEnd usualAtEnd;           // what the strip's end shows as shaft in nearly every frame
     double sigma = 1.0;
     int polarity = 1;
     bool gated = false;  // the tip is where a shaft ends (TipModel)
@@ -302,10 +303,21 @@ struct AxisTracker {
         TipModel model = tipModel(profiles, g, sigma);
         polarity = model.polarity;
         gated = model.gated;
+        // Frames whose shaft runs on to the strip's end show no tip (asked before the shaft's
+        // background is taken off: where the tip is often beyond the end, that is the shaft).
+        std::vector<ShaftAtEnds> ends;
+        for (const StripProfile& p : profiles)
+            ends.push_back(shaftAtEnds(p, -polarity));
+        usualAtEnd = usualShaftAtEnd(ends);
+        std::vector<char> beyond(profiles.size(), 0);
+        for (std::size_t k = 0; gated && k < profiles.size(); ++k)
+            beyond[k] = shaftReachesEnd(ends[k], usualAtEnd);
         still = unreadWhereAsked(std::move(model.still));
         auto tipsSeen = [&] {
             std::vector<double> at(profiles.size(), kNaN);
             for (std::size_t k = 0; k < profiles.size(); ++k) {
+                if (beyond[k])
+                    continue;
                 const Peak p = findTip(g[k], profiles[k].shaft, still, polarity, gated, sigma);
                 if (std::isfinite(p.position) && p.strength > 5.0 * sigma)
                     at[k] = p.position;
@@ -395,6 +407,7 @@ struct AxisTracker {
     // One frame, kept until the tip's course decides where the tip was in it.
     struct Seen {
         StripProfile profile;
+        bool beyond = false;  // the shaft runs on to the strip's end (shaftReachesEnd)
         std::vector<double> g;
         Sighting sighting;
     };
@@ -468,9 +481,10 @@ struct AxisTracker {
     {
         Seen seen;
         seen.profile = strip.sample(gray);
+        seen.beyond = gated && shaftReachesEnd(shaftAtEnds(seen.profile, -polarity), usualAtEnd);
         withoutBackground(seen.profile);
         seen.g = gradient(seen.profile.middle);
-        seen.sighting = locate(seen.profile, seen.g, time_s, repeated);
+        seen.sighting = locate(seen.profile, seen.g, time_s, repeated, seen.beyond);
         const std::optional<int> at = course.push(edgeScores(seen));
         undecided.push_back(std::move(seen));
         if (!at)
@@ -535,6 +549,8 @@ struct AxisTracker {
     // a frame at 30 frames/s), and there the course is noise.
     Sighting decide(const Seen& seen, int at)
     {
+        if (seen.beyond)
+            return {};
         const Sighting& alone = seen.sighting;
         const Peak onCourse = findTip(seen.g, seen.profile.shaft, still, polarity, gated, sigma, at - 2, at + 2);
         const bool agree = std::isfinite(alone.found) && std::abs(alone.found - onCourse.position) <= 3.0;
@@ -559,7 +575,7 @@ struct AxisTracker {
         return {onCourse.position, tipAgainstSides(sides, seen.profile.middle, onCourse.position), onCourse.strength};
     }
 
-    Sighting locate(const StripProfile& profile, const std::vector<double>& g, double time_s, bool repeated)
+    Sighting locate(const StripProfile& profile, const std::vector<double>& g, double time_s, bool repeated, bool beyond)
     {
         const int n = int(g.size());
         int lo = 2, hi = n - 3;
@@ -571,7 +587,7 @@ struct AxisTracker {
             lo = std::clamp(int(expected - w), 2, n - 3);
             hi = std::clamp(int(expected + w), 2, n - 3);
         }
-        const Peak tip = findTip(g, profile.shaft, still, polarity, gated, sigma, lo, hi);
+        const Peak tip = beyond ? Peak{} : findTip(g, profile.shaft, still, polarity, gated, sigma, lo, hi);
         const double bestV = tip.strength;
         const double needed = std::max((near ? 3.5 : 5.0) * sigma, 0.25 * typicalStrength() * sigma);
         if (!std::isfinite(tip.position) || !(bestV > needed)) {

@@ -217,12 +217,23 @@ private slots:
     // A tip that runs out of the picture: from 110 px inside the right edge to 30 px beyond it
     // and back, one and a half times. While it is out the shaft crosses the whole picture and
     // nothing along the line says where the tip is: such frames are not read (or read at the
-    // edge), and the line still points from the shaft to the tip.
-    // (With a clock burnt in on the shaft as well, the tracker loses the tip along the needle's
-    // line after its first return and settles on the clock: not yet mended.)
+    // edge), and the line still points from the shaft to the tip. Along the lines found on the
+    // needle (which line is the needle, the recording decides) and one drawn backwards. With a
+    // clock burnt in on the shaft, the tracker read the clock's digits where the tip was out
+    // (19 of 38 frames) and, misled by them, lost the tip inside the picture (7 of 44 frames
+    // within 2 px): the frames where the tip was beyond the edge had taught it the shaft there
+    // as the strip's background.
+    void leavesNoTipReadWhereItIsOutOfThePicture_data()
+    {
+        QTest::addColumn<bool>("clock");
+        QTest::newRow("plain") << false;
+        QTest::newRow("clock on the shaft") << true;
+    }
+
     void leavesNoTipReadWhereItIsOutOfThePicture()
     {
-        NeedleVideo v{0.0};
+        QFETCH(bool, clock);
+        NeedleVideo v{0.0, clock, false};
         v.tip = [](int frame) { return 70.0 * std::sin(2.0 * kPi * frame / 60.0); };
         v.travelCentre = kWidth / 2.0 - 110.0 + 70.0;  // from 110 px inside the edge to 30 px beyond
         v.contrast = 60.0;
@@ -233,15 +244,17 @@ private slots:
         QVERIFY2(index, qPrintable(problem));
         nb::video::FrameReader reader(*index);
         const QPointF centre(kWidth / 2.0, kHeight / 2.0);
-        for (const bool found : {true, false}) {
-            nb::video::NeedleTrack track;
-            if (found) {
-                const std::optional<nb::video::NeedleAxis> axis = nb::video::detectNeedleAxis(reader);
-                QVERIFY2(axis, "no needle found");
-                track = nb::video::trackNeedle(reader, *axis);
-            } else {
-                track = nb::video::trackNeedle(reader, nb::video::NeedleAxis(centre + QPointF(100, 0), centre - QPointF(100, 0)));
-            }
+        std::vector<std::pair<QString, nb::video::NeedleAxis>> lines;
+        for (const nb::video::NeedleAxis& a : nb::video::needleAxisCandidates(reader, {}, 16)) {
+            const QPointF d = unit(a), n(-d.y(), d.x());
+            if (std::abs(d.x()) > 0.998 && std::abs(dot(centre - a.p1(), n)) < 2.0)
+                lines.emplace_back(QStringLiteral("found"), a);
+        }
+        QVERIFY2(!lines.empty(), "no line found on the needle");
+        lines.emplace_back(QStringLiteral("drawn backwards"), nb::video::NeedleAxis(centre + QPointF(100, 0), centre - QPointF(100, 0)));
+        for (const auto& [how, line] : lines) {
+            const bool found = how == QLatin1String("found");
+            const nb::video::NeedleTrack track = nb::video::trackNeedle(reader, line);
             const QPointF d = unit(track.axis);
             const double centreAt = dot(centre - track.axis.p1(), d);
             int out = 0, outRead = 0, in = 0, inClose = 0;
