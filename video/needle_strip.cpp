@@ -99,13 +99,15 @@ std::vector<double> gradient(const std::vector<double>& p)
 
 namespace {
 
-// The low (15 %) percentile of `column` (reordered).
-double lowPercentile(std::vector<double>& column)
+// The value `k` values from the lowest of `v` (reordered).
+double atRank(std::vector<double>& v, std::size_t k)
 {
-    const std::size_t k15 = column.size() * 15 / 100;
-    std::nth_element(column.begin(), column.begin() + std::ptrdiff_t(k15), column.end());
-    return column[k15];
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+    return v[k];
 }
+
+// The low (15 %) percentile of `column` (reordered).
+double lowPercentile(std::vector<double>& column) { return atRank(column, column.size() * 15 / 100); }
 
 }  // namespace
 
@@ -489,9 +491,7 @@ ShaftAtEnds shaftAtEnds(const StripProfile& raw, int shaftSign)
         std::vector<double> v;
         for (int i = a; i < b; ++i)
             v.push_back(shaftSign * raw.shaft[std::size_t(i)]);
-        const auto at = v.begin() + std::ptrdiff_t(q * double(v.size() - 1));
-        std::nth_element(v.begin(), at, v.end());
-        return *at;
+        return atRank(v, std::size_t(q * double(v.size() - 1)));
     };
     return {quantileOf(0, n / 4, 0.5), quantileOf(from, end, 0.25)};
 }
@@ -509,11 +509,7 @@ UsualAtEnd usualShaftAtEnd(const std::vector<ShaftAtEnds>& frames)
             ends.push_back(f.end);
     if (ends.empty())
         return {};
-    auto at = [&](std::size_t k) {
-        std::nth_element(ends.begin(), ends.begin() + std::ptrdiff_t(k), ends.end());
-        return ends[k];
-    };
-    const double floor = at(ends.size() / 10), quarter = at(ends.size() / 4);
+    const double floor = atRank(ends, ends.size() / 10), quarter = atRank(ends, ends.size() / 4);
     // The noise from the lower frames alone (the tip may be beyond the end in half of them):
     // from the tenth percentile to the quarter point is 0.61 σ, and 8 times that lies 3.6 σ
     // above the noise's mean. Less, and a faint shaft's frames on coarse grain (45 over noise
