@@ -146,21 +146,23 @@ int walkChild(const QString& sessionDir)
     w.show();
     if (!QTest::qWaitForWindowExposed(&w))
         return childFail("window not exposed");
-    QAction* nominal = menuAction(w, QStringLiteral("Use the sensor's &nominal calibration"));
-    if (!nominal)
-        return childFail("no nominal calibration action");
-    nominal->trigger();
-    if (!w.session() || !w.session()->activeCalibration())
-        return childFail("no calibration");
     const nb::devices::AcquisitionEngine* engine = w.engine();
     // As the operator waits for the device line to say the rig is ready: the window refuses a
     // plan until the devices report running, and while the stage moves or records (seen in
     // ctest: "plan refused" a second after start, twice in some thirty runs).
     if (!waitFor([&] {
             const nb::devices::EngineStatus s = w.engine()->status();
-            return s.running && !s.moving && !s.approaching && !s.recording;
+            return s.running && !s.moving && !s.approaching && !s.recording && w.controlPanel()->interlockState().devicesRunning;
         }))
         return childFail("the rig did not come to rest after start");
+    // Calibrated only once the window knows the devices run (it refuses before: seen after
+    // test_demo_cli in one ctest invocation, "Not now: The devices are not running.").
+    QAction* nominal = menuAction(w, QStringLiteral("Use the sensor's &nominal calibration"));
+    if (!nominal)
+        return childFail("no nominal calibration action");
+    nominal->trigger();
+    if (!w.session() || !w.session()->activeCalibration())
+        return childFail(qPrintable(QStringLiteral("no calibration: ") + w.statusBar()->currentMessage()));
     if (!w.startPlan(testPlan()))
         return childFail(qPrintable(QStringLiteral("plan refused: ") + w.statusBar()->currentMessage()));
     for (int run = 1; run <= 4; ++run) {
