@@ -67,7 +67,8 @@ private slots:
             };
             nb::MainWindow w(options);
             w.show();
-            QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().running, 20000);
+            // The window, not only the engine, must know the devices run: it refuses a calibration before.
+            QTRY_VERIFY_WITH_TIMEOUT(w.engine()->status().running && w.controlPanel()->interlockState().devicesRunning, 20000);
             QVERIFY2(w.engine()->deviceDescription().contains(QStringLiteral("U6")), qPrintable(w.engine()->deviceDescription()));
 
             QAction* nominal = actionNamed(&w, QStringLiteral("Use the sensor's nominal calibration"));

@@ -420,13 +420,14 @@ private slots:
             nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(waitFor([&] {
+                const nb::devices::EngineStatus s = w.engine()->status();
+                return s.running && !s.moving && !s.approaching && !s.recording && w.controlPanel()->interlockState().devicesRunning;
+            }));
             QAction* nominal = menuAction(w, QStringLiteral("Use the sensor's &nominal calibration"));
             QVERIFY(nominal);
             nominal->trigger();
-            QVERIFY(waitFor([&] {
-                const nb::devices::EngineStatus s = w.engine()->status();
-                return s.running && !s.moving && !s.approaching && !s.recording;
-            }));
+            QVERIFY2(w.session() && w.session()->activeCalibration(), qPrintable(w.statusBar()->currentMessage()));
             nb::Plan plan = testPlan();
             plan.runs[0].settings.insert(QStringLiteral("velocity_mm_s"), kSlowVelocity_mm_s);
             const nb::devices::AcquisitionEngine* before = w.engine();
