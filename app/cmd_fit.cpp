@@ -13,6 +13,7 @@
 #include "core/labels.h"
 #include "core/run_file.h"
 #include "core/stiffness_fit.h"
+#include "core/tissue_trace.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -301,7 +302,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
                                        "C and b then come from phase c, D from phase a. Runs may carry a 'phase' "
                                        "column instead. Without phases the velocity band decides."),
                                     QStringLiteral("FILE"));
-    for (const auto* o : {&json, &thickness, &mass, &estimate, &band, &labels})
+    const QCommandLineOption tissueTrace(QStringLiteral("tissue-trace"),
+                                         nb::TrCli::tr("the tissue's velocity over the run (time_s,tissue_velocity_mm_s, as labels suggest "
+                                                       "--tissue-trace writes it from the video) for a single run: C and b are then fitted "
+                                                       "against the needle's velocity relative to the tissue"),
+                                         QStringLiteral("FILE.csv"));
+    for (const auto* o : {&json, &thickness, &mass, &estimate, &band, &labels, &tissueTrace})
         parser.addOption(*o);
     parser.addPositionalArgument(QStringLiteral("RUN.csv..."), nb::TrCli::tr("sinusoidal runs through a tissue slab"));
     int code = Ok;
@@ -310,7 +316,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
     auto usage = [&](const QString& why) {
         io.err << "needlebench fit friction: " << why << '\n'
                << nb::TrCli::tr("Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] "
-                     "[--band-m-s B] [--labels FILE] [--json]\n");
+                     "[--band-m-s B] [--labels FILE] [--tissue-trace FILE.csv] [--json]\n");
         return int(Usage);
     };
     FrictionOptions options;
@@ -339,6 +345,17 @@ int fitFrictionCommand(const QStringList& args, Io io)
     const QStringList files = parser.positionalArguments();
     if (parser.isSet(labels) && files.size() != 1)
         return usage(nb::TrCli::tr("--labels applies to a single run; give one run per call"));
+    if (parser.isSet(tissueTrace) && files.size() != 1)
+        return usage(nb::TrCli::tr("--tissue-trace applies to a single run; give one run per call"));
+    std::optional<TissueMotion> trace;
+    if (parser.isSet(tissueTrace)) {
+        try {
+            trace = readTissueTrace(parser.value(tissueTrace));
+        } catch (const TissueTraceError& e) {
+            io.err << "needlebench fit friction: " << e.message() << '\n';
+            return Failure;
+        }
+    }
 
     std::vector<FrictionFit> fits;
     for (const QString& path : files) {
@@ -357,7 +374,14 @@ int fitFrictionCommand(const QStringList& args, Io io)
                 phases.clear();
             }
         }
-        fits.push_back(onFile(path, [&] { return fitFriction(run, options, phases); }));
+        FrictionOptions runOptions = options;
+        if (trace) {
+            runOptions.tissueVelocity_m_s = tissueVelocityAt(*trace, run.time_s);
+            for (double& v : runOptions.tissueVelocity_m_s)
+                v /= 1000.0;  // mm/s -> m/s
+            runOptions.tissueStep_s = (trace->time_s.back() - trace->time_s.front()) / double(trace->time_s.size() - 1);
+        }
+        fits.push_back(onFile(path, [&] { return fitFriction(run, runOptions, phases); }));
         const KarnoppModel& k = fits.back().model;
         requireFinite(path, {k.Cp_N, k.Cn_N, k.bp_Ns_per_m, k.bn_Ns_per_m, k.Dp_N, k.Dn_N, fits.back().rms_N});
     }
@@ -399,6 +423,8 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           {QStringLiteral("per_length"), perLength},
                           {QStringLiteral("band_m_s"), f.band_m_s},
                           {QStringLiteral("band_estimated"), f.bandEstimated},
+                          // C and b against the needle's velocity relative to the tissue's (--tissue-trace), else the needle's.
+                          {QStringLiteral("tissue_trace"), f.relativeVelocity ? QJsonValue(parser.value(tissueTrace)) : QJsonValue()},
                           {QStringLiteral("band_slowing_down_m_s"), f.bandEstimated ? f.bandSlowingDown_m_s : f.band_m_s},
                           {QStringLiteral("standard_errors"), QJsonObject{{QStringLiteral("Cp_N"), f.seCp_N},
                                                                           {QStringLiteral("Cn_N"), f.seCn_N},
@@ -527,6 +553,9 @@ int fitFrictionCommand(const QStringList& args, Io io)
                           .arg(name, num(f.band_m_s * 500.0, 3), num(f.bandSlowingDown_m_s * 500.0, 3));
         else
             io.out << nb::TrCli::tr("%1: zero-velocity band ±%2 mm/s (given)\n").arg(name, num(f.band_m_s * 500.0, 3));
+        if (f.relativeVelocity)
+            io.out << nb::TrCli::tr("%1: C and b fitted against the needle's velocity relative to the tissue's (%2)\n")
+                          .arg(name, parser.value(tissueTrace));
         io.out << nb::TrCli::tr("%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5\n")
                       .arg(name, num(f.seCp_N / L, 3), num(f.seBp_Ns_per_m / L, 3), num(f.seCn_N / L, 3), num(f.seBn_Ns_per_m / L, 3));
         if (std::isfinite(f.seDp_N) && std::isfinite(f.seDn_N))

@@ -468,6 +468,13 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     const std::vector<double>& v = c.v_m_s;
     const std::vector<double>& a = c.a_m_s2;
     const std::vector<double>& f = c.force_N;
+    const bool relative = !options.tissueVelocity_m_s.empty();
+    if (relative && options.tissueVelocity_m_s.size() != n)
+        throw FitError(nb::TrCore::tr("%1 tissue velocities for %2 samples").arg(options.tissueVelocity_m_s.size()).arg(n));
+    // The needle's velocity relative to the tissue, where the sliding line is written in it.
+    auto slip = [&](std::size_t i) { return relative ? v[i] - options.tissueVelocity_m_s[i] : v[i]; };
+    if (relative && std::none_of(options.tissueVelocity_m_s.begin(), options.tissueVelocity_m_s.end(), [](double e) { return std::isfinite(e); }))
+        throw FitError(nb::TrCore::tr("the tissue's velocity is measured at none of the run's samples (does the trace cover the run's time?)"));
 
     const double half = options.band_m_s / 2.0;
     // A found band may differ between speeding up (after a turning point the tissue is
@@ -478,14 +485,21 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         return (v[i] * a[i] > 0 ? found->speedingUp_m_s : found->slowingDown_m_s) / 2.0;
     };
     auto sliding = [&](std::size_t i) {
-        return std::fabs(v[i]) >= halfAt(i) && v[i] != 0.0 && (!usePhases || phases[qsizetype(i)] == QLatin1String("c"));
+        return std::fabs(v[i]) >= halfAt(i) && v[i] != 0.0 && (!usePhases || phases[qsizetype(i)] == QLatin1String("c")) &&
+               (!relative || std::isfinite(options.tissueVelocity_m_s[i]));
     };
     // The smoothed signals mix samples across a stick/slip boundary (the force jumps there
     // from D to C), so only samples whose whole smoothing window slides are used.
     std::vector<std::size_t> notSliding(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i)
         notSliding[i + 1] = notSliding[i] + (sliding(i) ? 0 : 1);
-    const std::size_t reach = std::size_t(w / 2 + 1);
+    // The tissue's velocity is known only to its own time step (a video's frame): a sample
+    // nearer than that to the slide's start or end takes the stick or the arrival into it.
+    const double sampleInterval_s = n > 1 ? (run.time_s[n - 1] - run.time_s[0]) / double(n - 1) : 0.0;
+    const std::size_t traceReach = relative && sampleInterval_s > 0.0 && options.tissueStep_s > 0.0
+                                       ? std::size_t(std::ceil(options.tissueStep_s / sampleInterval_s))
+                                       : 0;
+    const std::size_t reach = std::max(std::size_t(w / 2 + 1), traceReach);
     std::vector<std::size_t> rows;
     for (std::size_t i = trim; i < n - trim; ++i) {
         const std::size_t lo = i >= reach ? i - reach : 0, hi = std::min(n, i + reach + 1);
@@ -567,7 +581,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
                 A(ri, 0) = a[i];
             const bool plus = v[i] > 0.0;
             A(ri, off + (plus ? 0 : 2)) = plus ? 1.0 : -1.0;
-            A(ri, off + (plus ? 1 : 3)) = v[i];
+            A(ri, off + (plus ? 1 : 3)) = slip(i);
             if (const int k = plus ? sol.springP : sol.springN; k >= 0)
                 A(ri, k) = -forceRate[i];
             if (quad >= 0 && plus == (quadDir == 0))
@@ -618,6 +632,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     fit.model.band_m_s = options.band_m_s;
     fit.band_m_s = options.band_m_s;
     fit.bandEstimated = options.estimateBand;
+    fit.relativeVelocity = relative;
     if (found)
         fit.bandSlowingDown_m_s = found->slowingDown_m_s;
     fit.seCp_N = se(off + 0);

@@ -25,6 +25,14 @@ struct FrictionOptions {
     double mass_kg = kNeedleHolderMass_kg;      // removed from the force (eq. 21)...
     bool estimateMass = false;                  // ...or estimated with the friction (eq. 19)
     double smoothing_s = 0.02;                  // moving-average window
+    // The tissue's velocity at each of the run's samples (m/s, the needle's axis and sign; NaN
+    // where unmeasured), e.g. from the imaging video (core/tissue_trace.h). Given, C and b are
+    // fitted against the relative velocity, as the model is written: a slab creeping back
+    // against its plate all through the slide moves the force like a larger C (liver 3 at
+    // 0.34 Hz: Cp 26 % high, from force and position alone). Samples without it are left out
+    // of the sliding line. Empty: the tissue is taken to rest while the needle slides.
+    std::vector<double> tissueVelocity_m_s;
+    double tissueStep_s = 0.0;                  // the time between its measurements (a frame)
     int trimSamples = 100;                      // dropped at each end (filter edges)
 };
 
@@ -52,6 +60,7 @@ struct FrictionFit {
     double frequency_hz = 0.0;       // metadata `frequency_hz`, else estimated from position
     double rms_N = 0.0;              // of the sliding-sample residuals
     std::size_t positiveSamples = 0, negativeSamples = 0;
+    bool relativeVelocity = false;   // C and b against the needle's velocity relative to the tissue's
     double band_m_s = 0.0;           // the band used (whole width), given or found
     bool bandEstimated = false;
     double bandSlowingDown_m_s = 0.0;  // found band before turning points (band_m_s: the wider)

@@ -3241,7 +3241,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+45"/>
-        <location filename="../app/cmd_fit.cpp" line="+112"/>
+        <location filename="../app/cmd_fit.cpp" line="+113"/>
         <location line="+49"/>
         <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
@@ -3770,19 +3770,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Phasen-Labels (track,label,start_s,end_s,comment) für einen einzelnen Lauf; C und b kommen dann aus Phase c, D aus Phase a. Läufe können stattdessen eine Spalte &apos;phase&apos; enthalten. Ohne Phasen entscheidet das Geschwindigkeitsband.</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>the tissue&apos;s velocity over the run (time_s,tissue_velocity_mm_s, as labels suggest --tissue-trace writes it from the video) for a single run: C and b are then fitted against the needle&apos;s velocity relative to the tissue</source>
+        <translation>die Geschwindigkeit des Gewebes über den Lauf (time_s,tissue_velocity_mm_s, wie labels suggest --tissue-trace sie aus dem Video schreibt) für einen einzelnen Lauf: C und b werden dann gegen die Geschwindigkeit der Nadel relativ zum Gewebe angepasst</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>sinusoidal runs through a tissue slab</source>
         <translation>sinusförmige Läufe durch eine Gewebescheibe</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels FILE] [--json]
-</source>
-        <translation>Aufruf: needlebench fit friction LAUF.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels DATEI] [--json]
-</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>--thickness-mm is required</source>
         <translation>--thickness-mm ist erforderlich</translation>
     </message>
@@ -3812,12 +3810,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+23"/>
         <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
         <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+138"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation>Reibung pro Länge der Nadel im Gewebe (Dicke %1 mm): C, D in N/m, b in N·s/m²
@@ -3846,7 +3844,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>kein Erg.</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>%1: standard errors of D per length: Dp ±%2, Dn ±%3 (the spread of %4 and %5 break-aways)
 </source>
         <translation>%1: Standardfehler von D pro Länge: Dp ±%2, Dn ±%3 (die Streuung von %4 und %5 Losbrech-Kräften)
@@ -3877,13 +3875,25 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-54"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation>run</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-211"/>
+        <source>Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels FILE] [--tissue-trace FILE.csv] [--json]
+</source>
+        <translation>Aufruf: needlebench fit friction LAUF.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels DATEI] [--tissue-trace DATEI.csv] [--json]
+</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>--tissue-trace applies to a single run; give one run per call</source>
+        <translation>--tissue-trace gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
+    </message>
+    <message>
+        <location line="+183"/>
         <source>%1Hz (%2 runs)</source>
         <translation>%1 Hz (%2 Läufe)</translation>
     </message>
@@ -3937,7 +3947,14 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>%1: C and b fitted against the needle&apos;s velocity relative to the tissue&apos;s (%2)
+</source>
+        <translation>%1: C und b gegen die Geschwindigkeit der Nadel relativ zu der des Gewebes angepasst (%2)
+</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5
 </source>
         <translation>%1: Standardfehler je Länge: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5
@@ -6035,7 +6052,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+446"/>
+        <location filename="../core/friction_fit.cpp" line="+450"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -6507,7 +6524,17 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 Phasennamen für %2 Messwerte</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+9"/>
+        <source>%1 tissue velocities for %2 samples</source>
+        <translation>%1 Gewebegeschwindigkeiten für %2 Messpunkte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the tissue&apos;s velocity is measured at none of the run&apos;s samples (does the trace cover the run&apos;s time?)</source>
+        <translation>die Geschwindigkeit des Gewebes ist zu keinem Messpunkt des Laufs gemessen (deckt der Verlauf die Zeit des Laufs ab?)</translation>
+    </message>
+    <message>
+        <location line="+59"/>
         <source>no phase c in the phases: the tissue never rested while the needle slid through it (a stroke longer than the slab&apos;s free travel gives phase c), so C and b cannot be measured</source>
         <translation>keine Phase c in den Phasen: das Gewebe kam nie zur Ruhe, während die Nadel hindurchglitt (ein Hub länger als der freie Weg der Scheibe ergibt Phase c), daher lassen sich C und b nicht messen</translation>
     </message>
@@ -6527,7 +6554,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+151"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation>Cp &lt; 0: Gleitreibung kann die Nadel nicht vorantreiben</translation>
     </message>
@@ -6582,7 +6609,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-252"/>
         <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
         <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s)</translation>
     </message>
@@ -6592,7 +6619,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kein Messpunkt bewegt sich schneller als das Nullgeschwindigkeitsband (±%1 mm/s), bei einer Höchstgeschwindigkeit der Nadel von %2 mm/s: ein schmaleres --band-m-s angeben oder Phase c labeln</translation>
     </message>
     <message>
-        <location line="+288"/>
+        <location line="+289"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation>Dp und Dn sind nicht bestimmt: Der Lauf hat nicht in beiden Richtungen eine Strecke in Ruhe (Phase a), aus der sich die Haftgrenzen lesen lassen</translation>
     </message>
@@ -6858,6 +6885,31 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <location line="+11"/>
         <source>cannot keep the earlier export aside while the new one is written (%1): nothing was written</source>
         <translation>der frühere Export kann nicht beiseitegelegt werden, während der neue geschrieben wird (%1): nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../core/tissue_trace.cpp" line="+20"/>
+        <source>cannot be read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>is not a tissue trace: its first line must be &apos;%1&apos; (as labels suggest --tissue-trace writes it)</source>
+        <translation>ist kein Gewebeverlauf: die erste Zeile muss &apos;%1&apos; lauten (wie labels suggest --tissue-trace sie schreibt)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>line %1 is not a time and a velocity: &apos;%2&apos;</source>
+        <translation>Zeile %1 ist keine Zeit mit Geschwindigkeit: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>line %1: the time %2 s does not follow %3 s</source>
+        <translation>Zeile %1: die Zeit %2 s folgt nicht auf %3 s</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>holds fewer than two measurements</source>
+        <translation>enthält weniger als zwei Messungen</translation>
     </message>
 </context>
 <context>
@@ -7695,7 +7747,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+708"/>
+        <location filename="../video/needle_tracker.cpp" line="+771"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>

@@ -3233,7 +3233,7 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+45"/>
-        <location filename="../app/cmd_fit.cpp" line="+112"/>
+        <location filename="../app/cmd_fit.cpp" line="+113"/>
         <location line="+49"/>
         <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
@@ -3746,18 +3746,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>the tissue&apos;s velocity over the run (time_s,tissue_velocity_mm_s, as labels suggest --tissue-trace writes it from the video) for a single run: C and b are then fitted against the needle&apos;s velocity relative to the tissue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>sinusoidal runs through a tissue slab</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels FILE] [--json]
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>--thickness-mm is required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3787,12 +3786,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+23"/>
         <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+138"/>
         <source>friction per unit length of needle in tissue (thickness %1 mm): C, D in N/m, b in N·s/m²
 </source>
         <translation type="unfinished"></translation>
@@ -3819,7 +3818,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>%1: standard errors of D per length: Dp ±%2, Dn ±%3 (the spread of %4 and %5 break-aways)
 </source>
         <translation type="unfinished"></translation>
@@ -3847,13 +3846,24 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-54"/>
         <location filename="../app/cmd_plan.cpp" line="-29"/>
         <source>run</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-211"/>
+        <source>Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels FILE] [--tissue-trace FILE.csv] [--json]
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>--tissue-trace applies to a single run; give one run per call</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+183"/>
         <source>%1Hz (%2 runs)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3904,7 +3914,13 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>%1: C and b fitted against the needle&apos;s velocity relative to the tissue&apos;s (%2)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1: standard errors per length: Cp ±%2, bp ±%3, Cn ±%4, bn ±%5
 </source>
         <translation type="unfinished"></translation>
@@ -5925,7 +5941,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+446"/>
+        <location filename="../core/friction_fit.cpp" line="+450"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6397,7 +6413,17 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+9"/>
+        <source>%1 tissue velocities for %2 samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the tissue&apos;s velocity is measured at none of the run&apos;s samples (does the trace cover the run&apos;s time?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+59"/>
         <source>no phase c in the phases: the tissue never rested while the needle slid through it (a stroke longer than the slab&apos;s free travel gives phase c), so C and b cannot be measured</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6417,7 +6443,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+151"/>
         <source>Cp &lt; 0: dynamic friction cannot push the needle along</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6472,7 +6498,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-252"/>
         <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6482,7 +6508,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+288"/>
+        <location line="+289"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6747,6 +6773,31 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     <message>
         <location line="+11"/>
         <source>cannot keep the earlier export aside while the new one is written (%1): nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/tissue_trace.cpp" line="+20"/>
+        <source>cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>is not a tissue trace: its first line must be &apos;%1&apos; (as labels suggest --tissue-trace writes it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>line %1 is not a time and a velocity: &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>line %1: the time %2 s does not follow %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>holds fewer than two measurements</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7585,7 +7636,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+708"/>
+        <location filename="../video/needle_tracker.cpp" line="+771"/>
         <source>the needle line lies outside the picture</source>
         <translation type="unfinished"></translation>
     </message>
