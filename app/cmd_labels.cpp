@@ -10,6 +10,7 @@
 #include "core/label_suggest.h"
 #include "core/run_file.h"
 #include "core/run_video_link.h"
+#include "core/tissue_trace.h"
 #include "video/frame_index_store.h"
 #include "video/frame_reader.h"
 #include "video/labels_from_video.h"
@@ -27,8 +28,6 @@
 #include <optional>
 
 namespace nb::cli {
-
-static constexpr char kTissueTraceHeader[] = "time_s,tissue_velocity_mm_s";
 
 int cmdLabels(const QStringList& args, Io io)
 {

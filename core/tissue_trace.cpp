@@ -9,18 +9,14 @@
 
 namespace nb {
 
-namespace {
-constexpr char kHeader[] = "time_s,tissue_velocity_mm_s";
-}
-
 TissueMotion readTissueTrace(const QString& path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
         throw TissueTraceError(path, nb::TrCore::tr("cannot be read: %1").arg(file.errorString()));
-    if (file.readLine().trimmed() != QByteArray(kHeader))
+    if (file.readLine().trimmed() != QByteArray(kTissueTraceHeader))
         throw TissueTraceError(path, nb::TrCore::tr("is not a tissue trace: its first line must be '%1' (as labels suggest --tissue-trace writes it)")
-                                         .arg(QString::fromLatin1(kHeader)));
+                                         .arg(QString::fromLatin1(kTissueTraceHeader)));
     TissueMotion trace;
     trace.source = QFileInfo(path).fileName();
     for (int line = 2; !file.atEnd(); ++line) {

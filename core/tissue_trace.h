@@ -12,6 +12,9 @@
 
 namespace nb {
 
+// The trace file's first line: written by `labels suggest --tissue-trace`, checked on reading.
+inline constexpr char kTissueTraceHeader[] = "time_s,tissue_velocity_mm_s";
+
 class TissueTraceError : public Error {
 public:
     using Error::Error;
