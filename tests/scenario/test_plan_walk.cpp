@@ -138,6 +138,15 @@ int childStartRun(nb::MainWindow& w, const nb::devices::AcquisitionEngine* oldEn
     return 0;
 }
 
+// The rig as the operator waits for it after start: the devices run, the stage rests, and the
+// window has heard so, for it refuses a calibration or a plan before ("Not now: The devices are
+// not running.", seen when the window's state trailed the engine's under load).
+bool readyAtRest(nb::MainWindow& w)
+{
+    const nb::devices::EngineStatus s = w.engine()->status();
+    return s.running && !s.moving && !s.approaching && !s.recording && w.controlPanel()->interlockState().devicesRunning;
+}
+
 int walkChild(const QString& sessionDir)
 {
     std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
@@ -150,13 +159,8 @@ int walkChild(const QString& sessionDir)
     // As the operator waits for the device line to say the rig is ready: the window refuses a
     // plan until the devices report running, and while the stage moves or records (seen in
     // ctest: "plan refused" a second after start, twice in some thirty runs).
-    if (!waitFor([&] {
-            const nb::devices::EngineStatus s = w.engine()->status();
-            return s.running && !s.moving && !s.approaching && !s.recording && w.controlPanel()->interlockState().devicesRunning;
-        }))
+    if (!waitFor([&] { return readyAtRest(w); }))
         return childFail("the rig did not come to rest after start");
-    // Calibrated only once the window knows the devices run (it refuses before: seen after
-    // test_demo_cli in one ctest invocation, "Not now: The devices are not running.").
     QAction* nominal = menuAction(w, QStringLiteral("Use the sensor's &nominal calibration"));
     if (!nominal)
         return childFail("no nominal calibration action");
@@ -420,10 +424,7 @@ private slots:
             nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
-            QVERIFY(waitFor([&] {
-                const nb::devices::EngineStatus s = w.engine()->status();
-                return s.running && !s.moving && !s.approaching && !s.recording && w.controlPanel()->interlockState().devicesRunning;
-            }));
+            QVERIFY(waitFor([&] { return readyAtRest(w); }));
             QAction* nominal = menuAction(w, QStringLiteral("Use the sensor's &nominal calibration"));
             QVERIFY(nominal);
             nominal->trigger();
