@@ -3,8 +3,12 @@
 random with a printed seed, each run made with `needlebench simulate --protocol friction` and
 fitted with `needlebench fit friction --json` twice, with the run's own `phase` column and with
 force and position only (the simulator's `phase` and `tissue_position_mm` columns removed).
+With --video each run is also rendered as its imaging video (29.97 frames/s, starting a drawn
+0.3-4 s before the recording) and fitted as an operator's script would from that video alone:
+`labels suggest --video` (synced automatically, the truth columns removed) gives the phases and
+`--tissue-trace` the tissue's velocity, then `fit friction --labels` with and without the trace.
 
-    bench/friction_cli_matrix.py [--seed N] [--runs N] [--exe build/app/needlebench] [--keep DIR] [--jobs N]
+    bench/friction_cli_matrix.py [--seed N] [--runs N] [--exe build/app/needlebench] [--keep DIR] [--jobs N] [--video]
 
 A miss is C more than 5 % or b more than 15 % off the truth (`--truth`'s friction_per_length)
 without the fit flagging that value (`not_physical_values`): issue 13's targets. A run the fit
@@ -29,12 +33,16 @@ def draw(seed, count):
         cases.append(dict(name=f'r{i}', tissue=r.choice(TISSUES), amplitude_mm=round(r.uniform(2, 10), 1),
                           frequency_hz=round(r.uniform(0.2, 0.8), 2), seed=r.randint(1, 99999),
                           band_mm_s=round(r.uniform(0.5, 6), 2), gap_mm=round(r.uniform(0.5, 3), 2)))
+    # From a stream of their own, so that a seed draws the same runs with --video as without.
+    v = random.Random(f'{seed} video')
+    for c in cases:
+        c['video_offset_s'] = round(v.uniform(0.3, 4), 3)
     return cases
 
 
 def describe(c):
     return (f"{c['tissue']} ±{c['amplitude_mm']} mm {c['frequency_hz']} Hz band ±{c['band_mm_s']} mm/s "
-            f"gap {c['gap_mm']} mm seed {c['seed']}")
+            f"gap {c['gap_mm']} mm seed {c['seed']} (video offset {c['video_offset_s']} s)")
 
 
 def strip_truth(src, dst):
@@ -50,8 +58,8 @@ def strip_truth(src, dst):
             o.write(','.join(cells[k] for k in keep) + '\n')
 
 
-def fit(exe, csv):
-    p = subprocess.run([exe, 'fit', 'friction', csv, '--thickness-mm', '30', '--json'], capture_output=True, text=True)
+def fit(exe, csv, extra=()):
+    p = subprocess.run([exe, 'fit', 'friction', csv, '--thickness-mm', '30', '--json', *extra], capture_output=True, text=True)
     if p.returncode != 0:
         return None, p.stderr.strip().splitlines()[-1] if p.stderr.strip() else f'exit {p.returncode}'
     return json.loads(p.stdout)['runs'][0], None
@@ -69,20 +77,32 @@ def judge(run, truth):
     return errors, misses, flagged
 
 
-def one(exe, work, c):
+def one(exe, work, c, video):
     base = os.path.join(work, c['name'])
+    film = ['--video', base + '.mp4', '--video-offset-s', str(c['video_offset_s'])] if video else []
     sim = subprocess.run([exe, 'simulate', '--overwrite', '--protocol', 'friction', '--thickness-mm', '30', '--tissue', c['tissue'],
                           '--amplitude-mm', str(c['amplitude_mm']), '--frequency-hz', str(c['frequency_hz']),
                           '--seed', str(c['seed']), '--stick-band-mm-s', str(c['band_mm_s']),
-                          '--plate-gap-mm', str(c['gap_mm']), '--out', base + '.csv', '--truth', base + '.json'],
+                          '--plate-gap-mm', str(c['gap_mm']), '--out', base + '.csv', '--truth', base + '.json', *film],
                          capture_output=True, text=True)
     if sim.returncode != 0:
         return c, {'simulate': sim.stderr.strip()}
     truth = json.load(open(base + '.json'))['model']['friction_per_length']
     strip_truth(base + '.csv', base + '.blind.csv')
+    fits = [('phases', base + '.csv', ()), ('force only', base + '.blind.csv', ())]
     out = {}
-    for mode, csv in (('phases', base + '.csv'), ('force only', base + '.blind.csv')):
-        run, problem = fit(exe, csv)
+    if video:
+        # The blind run has no link to the video: it is named, and synced automatically.
+        s = subprocess.run([exe, 'labels', 'suggest', base + '.blind.csv', '--video', base + '.mp4', '--overwrite',
+                            '--out', base + '.labels.csv', '--tissue-trace', base + '.trace.csv'], capture_output=True, text=True)
+        if s.returncode != 0 or not os.path.exists(base + '.trace.csv'):
+            problem = s.stderr.strip().splitlines()[-1] if s.stderr.strip() else 'no tissue trace written'
+            out['video'] = out['video, no trace'] = {'problem': 'labels suggest: ' + problem}
+        else:
+            fits += [('video', base + '.blind.csv', ('--labels', base + '.labels.csv', '--tissue-trace', base + '.trace.csv')),
+                     ('video, no trace', base + '.blind.csv', ('--labels', base + '.labels.csv'))]
+    for mode, csv, extra in fits:
+        run, problem = fit(exe, csv, extra)
         out[mode] = {'problem': problem} if run is None else dict(zip(('errors', 'misses', 'flagged'), judge(run, truth)))
     return c, out
 
@@ -94,6 +114,7 @@ def main():
     ap.add_argument('--exe', default=os.path.join(os.path.dirname(__file__), '..', 'build', 'app', 'needlebench'))
     ap.add_argument('--keep', default=None, help='leave the runs and truths in this folder')
     ap.add_argument('--jobs', type=int, default=2)
+    ap.add_argument('--video', action='store_true', help='also fit from the rendered video\'s phases and tissue trace')
     a = ap.parse_args()
     if not os.access(a.exe, os.X_OK):
         print(f'friction_cli_matrix: {a.exe} is not an executable needlebench (build it, or give --exe)', file=sys.stderr)
@@ -102,9 +123,10 @@ def main():
     print(f'friction_cli_matrix: seed {seed} (rerun with --seed {seed}), {a.runs} runs')
     work = a.keep or tempfile.mkdtemp(prefix='nb_friction_matrix_')
     os.makedirs(work, exist_ok=True)
-    totals = {m: {'fits': 0, 'refused': 0, 'misses': 0, 'flagged': 0} for m in ('phases', 'force only')}
+    modes = ('phases', 'force only') + (('video', 'video, no trace') if a.video else ())
+    totals = {m: {'fits': 0, 'refused': 0, 'misses': 0, 'flagged': 0} for m in modes}
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        for c, out in pool.map(lambda c: one(a.exe, work, c), draw(seed, a.runs)):
+        for c, out in pool.map(lambda c: one(a.exe, work, c, a.video), draw(seed, a.runs)):
             if 'simulate' in out:
                 print(f"{c['name']:>5} simulate failed: {out['simulate']}")
                 continue
@@ -112,6 +134,8 @@ def main():
                 t = totals[mode]
                 if 'problem' in r:
                     t['refused'] += 1
+                    if mode.startswith('video'):
+                        print(f"{c['name']:>5} refused ({mode}): {r['problem']}; {describe(c)}")
                     continue
                 t['fits'] += 1
                 t['flagged'] += bool(r['flagged'] & {'Cp', 'Cn', 'bp', 'bn'})

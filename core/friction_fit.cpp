@@ -5,6 +5,7 @@
 #include "friction_peak_line.h"
 #include "signal.h"
 #include "statistics.h"
+#include "tissue_trace.h"
 
 #include <Eigen/Dense>
 #include <QCoreApplication>
@@ -471,8 +472,6 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     const bool relative = !options.tissueVelocity_m_s.empty();
     if (relative && options.tissueVelocity_m_s.size() != n)
         throw FitError(nb::TrCore::tr("%1 tissue velocities for %2 samples").arg(options.tissueVelocity_m_s.size()).arg(n));
-    // The needle's velocity relative to the tissue, where the sliding line is written in it.
-    auto slip = [&](std::size_t i) { return relative ? v[i] - options.tissueVelocity_m_s[i] : v[i]; };
     if (relative && std::none_of(options.tissueVelocity_m_s.begin(), options.tissueVelocity_m_s.end(), [](double e) { return std::isfinite(e); }))
         throw FitError(nb::TrCore::tr("the tissue's velocity is measured at none of the run's samples (does the trace cover the run's time?)"));
 
@@ -555,6 +554,27 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
                                        .arg(neg)
                                        .arg(labelledC)
                                  : nb::TrCore::tr("motion in one direction only (%1 samples moving in, %2 moving out)").arg(pos).arg(neg));
+
+    // The needle's velocity relative to the tissue, where the sliding line is written in it,
+    // with the tissue's smoothed over each slide (tissueOverSlide). The trace's scatter is not
+    // allowed for in the check of the sliding force against its line below: allowed for, it let
+    // a C 10 % high pass (liver 3, the real tracker's trace, bench/friction_cli_matrix.py --video).
+    std::vector<double> tissueSmoothed(relative ? n : 0, 0.0);
+    if (relative)
+        for (std::size_t k = 0; k < rows.size();) {
+            std::size_t end = k + 1;  // one slide: consecutive sliding samples in one direction
+            while (end < rows.size() && notSliding[rows[end] + 1] == notSliding[rows[k]] && (v[rows[end]] > 0.0) == (v[rows[k]] > 0.0))
+                ++end;
+            std::vector<double> t, u;
+            for (std::size_t r = k; r < end; ++r)
+                t.push_back(run.time_s[rows[r]]), u.push_back(options.tissueVelocity_m_s[rows[r]]);
+            const double frames = options.tissueStep_s > 0.0 ? (t.back() - t.front()) / options.tissueStep_s + 1.0 : double(t.size());
+            const SlideTissue slide = tissueOverSlide(t, u, frames);
+            for (std::size_t r = k; r < end; ++r)
+                tissueSmoothed[rows[r]] = slide.velocity[r - k];
+            k = end;
+        }
+    auto slip = [&](std::size_t i) { return relative ? v[i] - tissueSmoothed[i] : v[i]; };
 
     const int off = options.estimateMass ? 1 : 0;
     // Columns follow eq. 19/21: [a], s+, s+·v, s-, s-·v, s- = -1 for v < 0 (F = -Cn + bn·v),

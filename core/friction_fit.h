@@ -30,7 +30,8 @@ struct FrictionOptions {
     // fitted against the relative velocity, as the model is written: a slab creeping back
     // against its plate all through the slide moves the force like a larger C (liver 3 at
     // 0.34 Hz: Cp 26 % high, from force and position alone). Samples without it are left out
-    // of the sliding line. Empty: the tissue is taken to rest while the needle slides.
+    // of the sliding line; through each slide it is smoothed (tissueOverSlide, tissue_trace.h).
+    // Empty: the tissue is taken to rest while the needle slides.
     std::vector<double> tissueVelocity_m_s;
     double tissueStep_s = 0.0;                  // the time between its measurements (a frame)
     int trimSamples = 100;                      // dropped at each end (filter edges)

@@ -5,6 +5,7 @@
 #include "core/labels.h"
 #include "core/run_file.h"
 #include "core/signal.h"
+#include "core/tissue_trace.h"
 #include "synthetic.h"
 
 #include <QTemporaryDir>
@@ -268,6 +269,79 @@ private slots:
         const auto all = overall(fits);
         QCOMPARE(all.runs, std::size_t(6));
         QVERIFY(std::fabs(all.mean.Cp_N_per_m - 10.0) < 0.5);  // 0.2 N over 0.02 m
+    }
+    // The tissue's velocity through a slide, as the friction fit takes it from a video's trace:
+    // a frame-rate tracker's noise (2 mm/s rms, about what the real tracker shows in phase c)
+    // must not pass for a change in the slab's creep, and a change the trace does show is kept.
+    void tissueOverSlideKeepsOnlyWhatTheTraceShows()
+    {
+        const double frame_s = 1.0 / 29.97, sample_s = 0.002, slide_s = 1.0;
+        const int frames = int(slide_s / frame_s) + 2;
+        // Readings at frame times, put on the samples as tissueVelocityAt does (linear between).
+        auto onSamples = [&](const std::vector<double>& reading, std::vector<double>& t, std::vector<double>& u) {
+            t.clear(), u.clear();
+            for (double x = 0.0; x <= slide_s; x += sample_s) {
+                const auto k = std::size_t(x / frame_s);
+                const double w = x / frame_s - double(k);
+                t.push_back(x), u.push_back(reading[k] + w * (reading[k + 1] - reading[k]));
+            }
+        };
+        auto creep = [](double x) { return -0.28 - 0.32 * x * x; };  // mm/s, growing as the needle slows
+        std::vector<double> t, u, reading(std::size_t(frames + 1));
+        // Without noise the creep's change is the trace's, and followed.
+        for (std::size_t k = 0; k < reading.size(); ++k)
+            reading[k] = creep(double(k) * frame_s);
+        onSamples(reading, t, u);
+        const double measured = slide_s / frame_s + 1.0;
+        SlideTissue exact = tissueOverSlide(t, u, measured);
+        QCOMPARE(exact.degree, 2);
+        for (std::size_t i = 0; i < t.size(); ++i)
+            QVERIFY2(std::fabs(exact.velocity[i] - u[i]) < 0.01, qPrintable(QStringLiteral("%1 s: %2 against %3").arg(t[i]).arg(exact.velocity[i]).arg(u[i])));
+        // With the tracker's noise, a steady creep comes out steady: over 400 slides a higher
+        // degree is taken in few (the test's level is 0.5 % a term), and the slide's mean within
+        // what 31 readings allow.
+        std::mt19937 rng(20261204);
+        std::normal_distribution<double> noise(0.0, 2.0);
+        int raised = 0;
+        double worst = 0.0;
+        for (int trial = 0; trial < 400; ++trial) {
+            for (double& r : reading)
+                r = -1.1 + noise(rng);
+            onSamples(reading, t, u);
+            const SlideTissue steady = tissueOverSlide(t, u, measured);
+            raised += steady.degree > 0;
+            if (steady.degree == 0)
+                worst = std::max(worst, std::fabs(steady.velocity.front() + 1.1));
+        }
+        QVERIFY2(raised <= 12, qPrintable(QStringLiteral("%1 of 400 noisy steady slides taken as changing").arg(raised)));
+        QVERIFY2(worst < 4.0 * 2.0 / std::sqrt(measured), qPrintable(QStringLiteral("a slide's mean %1 mm/s off").arg(worst)));
+        // A creep that halves through the slide, read with a tenth of that noise, is seen to change.
+        std::normal_distribution<double> small(0.0, 0.05);
+        for (std::size_t k = 0; k < reading.size(); ++k)
+            reading[k] = -1.0 + 0.5 * double(k) * frame_s + small(rng);
+        onSamples(reading, t, u);
+        const SlideTissue ramp = tissueOverSlide(t, u, measured);
+        QVERIFY(ramp.degree >= 1);
+        QVERIFY2(std::fabs(ramp.velocity.back() + 0.5) < 0.1, qPrintable(QStringLiteral("ends at %1").arg(ramp.velocity.back())));
+        // A clean trace with motion no smooth curve follows (the slab arriving at the plate:
+        // 4 mm/s for three frames as the slide begins) is taken as read.
+        for (std::size_t k = 0; k < reading.size(); ++k)
+            reading[k] = k < 3 ? 4.0 : creep(double(k) * frame_s);
+        onSamples(reading, t, u);
+        const SlideTissue arrival = tissueOverSlide(t, u, measured);
+        QCOMPARE(arrival.degree, -1);
+        QCOMPARE(arrival.velocity, u);
+        // The same with the tracker's noise on it: the noise hides what the curve misses, and
+        // one wild reading (a misread frame) does not bend it.
+        for (std::size_t k = 0; k < reading.size(); ++k)
+            reading[k] = creep(double(k) * frame_s) + noise(rng) + (k == 12 ? 60.0 : 0.0);
+        onSamples(reading, t, u);
+        const SlideTissue misread = tissueOverSlide(t, u, measured);
+        QCOMPARE(misread.degree, 0);
+        QVERIFY2(std::fabs(misread.velocity.front() + 0.39) < 3.0 * 2.0 / std::sqrt(measured),  // the creep's mean, -0.39 mm/s
+                 qPrintable(QStringLiteral("%1 mm/s").arg(misread.velocity.front())));
+        // Too few readings for a curve: the mean.
+        QCOMPARE(tissueOverSlide(std::vector<double>{0.0, 0.01}, std::vector<double>{1.0, 3.0}, 2.0).degree, 0);
     }
     void badInputThrows()
     {
