@@ -1,6 +1,7 @@
 #include "surface_relaxation.h"
 
 #include "settling_fit.h"
+#include "statistics.h"
 #include "tr.h"
 
 #include <algorithm>
@@ -22,15 +23,6 @@ constexpr double kMinExplained = 0.8;
 // It springs back at most to where it was touched (x_s3 ≥ x_s1), with some slack for the
 // contact's time and an organ that overshoots a little.
 constexpr double kMaxSpringBackOfCarried = 1.25;
-
-double median(std::vector<double> v)
-{
-    if (v.empty())
-        return 0.0;
-    const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    return *mid;
-}
 
 }  // namespace
 

@@ -1,4 +1,5 @@
 #include "tissue_trace.h"
+#include "statistics.h"
 #include "tr.h"
 
 #include <Eigen/Dense>
@@ -113,6 +114,7 @@ SlideTissue tissueOverSlide(std::span<const double> time_s, std::span<const doub
     // motion the curve cannot follow (the slab arriving at the plate as the slide begins: 4 to 9
     // mm/s over a few frames, liver 3) or a misreading: left out of the curve.
     constexpr double kBeyondScatter = 5.0;
+    constexpr double kMadToSigma = 1.4826;  // a normal scatter's sigma from its median absolute deviation
     const auto m = Eigen::Index(std::min(time_s.size(), velocity.size()));
     if (m == 0)
         return {};
@@ -131,9 +133,7 @@ SlideTissue tissueOverSlide(std::span<const double> time_s, std::span<const doub
     std::vector<double> away(static_cast<std::size_t>(m));
     for (Eigen::Index r = 0; r < m; ++r)
         away[std::size_t(r)] = std::fabs(u(r) - first.velocity[std::size_t(r)]);
-    std::vector<double> sorted = away;
-    std::nth_element(sorted.begin(), sorted.begin() + m / 2, sorted.end());
-    const double scatter = 1.4826 * sorted[std::size_t(m / 2)];
+    const double scatter = kMadToSigma * median(away);
     std::size_t beyond = 0;
     for (std::size_t r = 0; r < use.size(); ++r)
         if (away[r] > kBeyondScatter * scatter && away[r] > 1e-9 * (std::fabs(u(Eigen::Index(r))) + 1e-300))
@@ -152,13 +152,11 @@ SlideTissue tissueOverSlide(std::span<const double> time_s, std::span<const doub
     for (Eigen::Index r = 2 * stride; r < m; r += stride)
         second.push_back(std::fabs(u(r) - 2.0 * u(r - stride) + u(r - 2 * stride)));
     if (second.size() >= 3) {
-        std::nth_element(second.begin(), second.begin() + std::ptrdiff_t(second.size() / 2), second.end());
-        const double noise = 1.4826 * second[second.size() / 2] / std::sqrt(6.0);
+        const double noise = kMadToSigma * median(second) / std::sqrt(6.0);  // a second difference adds 6 readings' variance
         std::vector<double> left(static_cast<std::size_t>(m));
         for (Eigen::Index r = 0; r < m; ++r)
             left[std::size_t(r)] = std::fabs(u(r) - out.velocity[std::size_t(r)]);
-        std::nth_element(left.begin(), left.begin() + m / 2, left.end());
-        const double curveScatter = 1.4826 * left[std::size_t(m / 2)];
+        const double curveScatter = kMadToSigma * median(left);
         if (curveScatter * curveScatter > kCurveToNoise * noise * noise) {
             out.velocity.assign(velocity.begin(), velocity.begin() + m);
             out.degree = -1;
