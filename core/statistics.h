@@ -41,6 +41,20 @@ inline double median(std::vector<double> x)
     return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
 }
 
+// A normal scatter's sigma from absolute deviations (1.4826 times their median), which a few
+// wild values do not move.
+inline double robustSigma(std::vector<double> absoluteDeviations)
+{
+    return 1.4826 * median(std::move(absoluteDeviations));
+}
+
+// White noise's sigma from the absolute second differences of its readings (each adds six
+// readings' variance), robust as above: a smooth motion under the noise hardly moves it.
+inline double noiseFromSecondDifferences(std::vector<double> absoluteSecondDifferences)
+{
+    return robustSigma(std::move(absoluteSecondDifferences)) / std::sqrt(6.0);
+}
+
 // Root mean square of residuals.
 inline double rms(std::span<const double> residuals)
 {

@@ -47,7 +47,7 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
     for (std::size_t i = 1; i + 1 < n; ++i)
         if (std::abs(t[i] - puncture_s) < 3.0)
             second.push_back(std::abs(d[i + 1] - 2 * d[i] + d[i - 1]));
-    const double noise = 1.4826 * median(second) / std::sqrt(6.0);
+    const double noise = noiseFromSecondDifferences(std::move(second));
     // The spring-back's onset: where the motion over a few frames changes most from the
     // motion over the few before (the surface carried one way, then springing back the other;
     // over one frame a slow spring-back's first step is hardly larger than the noise, and a
@@ -99,7 +99,7 @@ std::optional<SpringBack> fitSpringBack(const SurfaceTrace& trace, double punctu
             residual[i] = d[i] - model;
             absolute.push_back(std::abs(residual[i]));
         }
-        const double scale = 4.685 * std::max({1.4826 * median(absolute), noise, 0.05});
+        const double scale = 4.685 * std::max({robustSigma(absolute), noise, 0.05});
         for (std::size_t i = 0; i < n; ++i) {
             const double u = residual[i] / scale;
             w[i] = std::abs(u) < 1.0 ? (1 - u * u) * (1 - u * u) : 0.0;

@@ -110,11 +110,10 @@ SlideTissue tissueOverSlide(std::span<const double> time_s, std::span<const doub
     // creep while a clean trace keeps the shape it shows.
     constexpr double kTermCost = 10.0;
     constexpr int kMostTerms = 7;
-    // A reading this many times the scatter (1.48 median absolute deviations) off the curve is
+    // A reading this many times the scatter (robustSigma) off the curve is
     // motion the curve cannot follow (the slab arriving at the plate as the slide begins: 4 to 9
     // mm/s over a few frames, liver 3) or a misreading: left out of the curve.
     constexpr double kBeyondScatter = 5.0;
-    constexpr double kMadToSigma = 1.4826;  // a normal scatter's sigma from its median absolute deviation
     const auto m = Eigen::Index(std::min(time_s.size(), velocity.size()));
     if (m == 0)
         return {};
@@ -133,7 +132,7 @@ SlideTissue tissueOverSlide(std::span<const double> time_s, std::span<const doub
     std::vector<double> away(static_cast<std::size_t>(m));
     for (Eigen::Index r = 0; r < m; ++r)
         away[std::size_t(r)] = std::fabs(u(r) - first.velocity[std::size_t(r)]);
-    const double scatter = kMadToSigma * median(away);
+    const double scatter = robustSigma(away);
     std::size_t beyond = 0;
     for (std::size_t r = 0; r < use.size(); ++r)
         if (away[r] > kBeyondScatter * scatter && away[r] > 1e-9 * (std::fabs(u(Eigen::Index(r))) + 1e-300))
@@ -144,19 +143,19 @@ SlideTissue tissueOverSlide(std::span<const double> time_s, std::span<const doub
     // A clean trace (a tracker that reads the frames nearly without noise) may show motion no
     // smooth curve follows: the slab arriving, stopping at the slide's end. Where the readings'
     // scatter about the curve is far beyond their own noise (from their second differences frame
-    // to frame; both as 1.48 median absolute deviations, which a misread frame does not move),
-    // the readings are taken as they are.
+    // to frame; both robust, so that a misread frame does not move them), the readings are taken
+    // as they are.
     constexpr double kCurveToNoise = 9.0;
     const auto stride = std::max<Eigen::Index>(1, Eigen::Index(double(m) / nf));
     std::vector<double> second;
     for (Eigen::Index r = 2 * stride; r < m; r += stride)
         second.push_back(std::fabs(u(r) - 2.0 * u(r - stride) + u(r - 2 * stride)));
     if (second.size() >= 3) {
-        const double noise = kMadToSigma * median(second) / std::sqrt(6.0);  // a second difference adds 6 readings' variance
+        const double noise = noiseFromSecondDifferences(std::move(second));
         std::vector<double> left(static_cast<std::size_t>(m));
         for (Eigen::Index r = 0; r < m; ++r)
             left[std::size_t(r)] = std::fabs(u(r) - out.velocity[std::size_t(r)]);
-        const double curveScatter = kMadToSigma * median(left);
+        const double curveScatter = robustSigma(std::move(left));
         if (curveScatter * curveScatter > kCurveToNoise * noise * noise) {
             out.velocity.assign(velocity.begin(), velocity.begin() + m);
             out.degree = -1;
