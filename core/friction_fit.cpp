@@ -534,19 +534,39 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     if (usePhases && labelledC == 0)
         throw FitError(nb::TrCore::tr("no phase c in the phases: the tissue never rested while the needle slid through it "
                                       "(a stroke longer than the slab's free travel gives phase c), so C and b cannot be measured"));
-    if (pos == 0 && neg == 0)
-        throw FitError(usePhases ? nb::TrCore::tr("none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)")
-                                       .arg(labelledC)
-                                       .arg(500.0 * options.band_m_s, 0, 'g', 3)
-                                 : nb::TrCore::tr("no sample moves faster than the zero-velocity band (±%1 mm/s), the needle's top speed being "
-                                                  "%2 mm/s: give a narrower --band-m-s, or label phase c")
-                                       .arg(500.0 * options.band_m_s, 0, 'g', 3)
-                                       .arg(1000.0 * [&] {
-                                           double top = 0.0;
-                                           for (std::size_t i = trim; i + trim < n; ++i)
-                                               top = std::max(top, std::fabs(v[i]));
-                                           return top;
-                                       }(), 0, 'f', 2));
+    if (pos == 0 && neg == 0) {
+        // The needle's fastest in labelled c, against its fastest anywhere: a c that lies only
+        // where the needle turns (the picture sees the tissue stop there with the needle, on a
+        // stroke within the slab's free travel) is no sliding, and a narrower band would not
+        // make it one.
+        double top_m_s = 0.0, topInC_m_s = 0.0;
+        for (std::size_t i = trim; i + trim < n; ++i) {
+            top_m_s = std::max(top_m_s, std::fabs(v[i]));
+            if (usePhases && phases[qsizetype(i)] == QLatin1String("c"))
+                topInC_m_s = std::max(topInC_m_s, std::fabs(v[i]));
+        }
+        if (usePhases && topInC_m_s < 0.5 * top_m_s)
+            throw FitError(nb::TrCore::tr("none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s): in "
+                                          "phase c as labelled the needle reaches only %3 mm/s of its %4 mm/s, so c lies only where "
+                                          "it turns. The tissue may never have rested (a stroke within the slab's free travel "
+                                          "carries it throughout): then C and b cannot be measured; else label c where the tissue "
+                                          "rests while the needle is still fast")
+                               .arg(labelledC)
+                               .arg(500.0 * options.band_m_s, 0, 'g', 3)
+                               .arg(1000.0 * topInC_m_s, 0, 'f', 2)
+                               .arg(1000.0 * top_m_s, 0, 'f', 2));
+        if (usePhases)
+            throw FitError(nb::TrCore::tr("none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s), the "
+                                          "needle reaching %3 mm/s in phase c: check that c is labelled where the tissue rests, or give a narrower "
+                                          "--band-m-s")
+                               .arg(labelledC)
+                               .arg(500.0 * options.band_m_s, 0, 'g', 3)
+                               .arg(1000.0 * topInC_m_s, 0, 'f', 2));
+        throw FitError(nb::TrCore::tr("no sample moves faster than the zero-velocity band (±%1 mm/s), the needle's top speed being "
+                                      "%2 mm/s: give a narrower --band-m-s, or label phase c")
+                           .arg(500.0 * options.band_m_s, 0, 'g', 3)
+                           .arg(1000.0 * top_m_s, 0, 'f', 2));
+    }
     if (pos < 3 || neg < 3)
         throw FitError(usePhases ? nb::TrCore::tr("phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 "
                                                   "phase-c samples): the tissue hardly rested in the other")

@@ -3288,7 +3288,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location line="+9"/>
         <location filename="../app/cmd_fit.cpp" line="-253"/>
         <location line="+20"/>
-        <location filename="../app/cmd_labels.cpp" line="+119"/>
+        <location filename="../app/cmd_labels.cpp" line="+118"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
         <source>warning: %1
 </source>
@@ -6052,7 +6052,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+450"/>
+        <location filename="../core/friction_fit.cpp" line="+451"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -6529,7 +6529,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 Gewebegeschwindigkeiten für %2 Messpunkte</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>the tissue&apos;s velocity is measured at none of the run&apos;s samples (does the trace cover the run&apos;s time?)</source>
         <translation>die Geschwindigkeit des Gewebes ist zu keinem Messpunkt des Laufs gemessen (deckt der Verlauf die Zeit des Laufs ab?)</translation>
     </message>
@@ -6539,7 +6539,17 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>keine Phase c in den Phasen: das Gewebe kam nie zur Ruhe, während die Nadel hindurchglitt (ein Hub länger als der freie Weg der Scheibe ergibt Phase c), daher lassen sich C und b nicht messen</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s): in phase c as labelled the needle reaches only %3 mm/s of its %4 mm/s, so c lies only where it turns. The tissue may never have rested (a stroke within the slab&apos;s free travel carries it throughout): then C and b cannot be measured; else label c where the tissue rests while the needle is still fast</source>
+        <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s): in Phase c, wie gelabelt, erreicht die Nadel nur %3 mm/s ihrer %4 mm/s, Phase c liegt also nur dort, wo sie umkehrt. Das Gewebe kam womöglich nie zur Ruhe (ein Hub innerhalb des freien Wegs der Scheibe trägt es durchgehend mit): dann lassen sich C und b nicht messen; sonst Phase c dort labeln, wo das Gewebe ruht, während die Nadel noch schnell ist</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s), the needle reaching %3 mm/s in phase c: check that c is labelled where the tissue rests, or give a narrower --band-m-s</source>
+        <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s), bei bis zu %3 mm/s der Nadel in Phase c: prüfen, ob Phase c dort gelabelt ist, wo das Gewebe ruht, oder ein schmaleres --band-m-s angeben</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 phase-c samples): the tissue hardly rested in the other</source>
         <translation>Phase c nur in einer Richtung (%1 gleitende Messwerte einwärts, %2 auswärts, von %3 Messwerten der Phase c): in der anderen kam das Gewebe kaum zur Ruhe</translation>
     </message>
@@ -6549,7 +6559,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+82"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
@@ -6609,17 +6619,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="-252"/>
-        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
-        <translation>keiner der %1 Messpunkte der Phase c bewegt sich schneller als das Nullgeschwindigkeitsband (±%2 mm/s)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="-266"/>
         <source>no sample moves faster than the zero-velocity band (±%1 mm/s), the needle&apos;s top speed being %2 mm/s: give a narrower --band-m-s, or label phase c</source>
         <translation>kein Messpunkt bewegt sich schneller als das Nullgeschwindigkeitsband (±%1 mm/s), bei einer Höchstgeschwindigkeit der Nadel von %2 mm/s: ein schmaleres --band-m-s angeben oder Phase c labeln</translation>
     </message>
     <message>
-        <location line="+289"/>
+        <location line="+306"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation>Dp und Dn sind nicht bestimmt: Der Lauf hat nicht in beiden Richtungen eine Strecke in Ruhe (Phase a), aus der sich die Haftgrenzen lesen lassen</translation>
     </message>
@@ -6827,7 +6832,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
     <message>
-        <location filename="../core/surface_relaxation.cpp" line="+49"/>
+        <location filename="../core/surface_relaxation.cpp" line="+41"/>
         <source>too few frames to follow the surface</source>
         <translation>zu wenige Bilder, um der Oberfläche zu folgen</translation>
     </message>
@@ -6887,7 +6892,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>der frühere Export kann nicht beiseitegelegt werden, während der neue geschrieben wird (%1): nichts wurde geschrieben</translation>
     </message>
     <message>
-        <location filename="../core/tissue_trace.cpp" line="+20"/>
+        <location filename="../core/tissue_trace.cpp" line="+18"/>
         <source>cannot be read: %1</source>
         <translation>kann nicht gelesen werden: %1</translation>
     </message>

@@ -3278,7 +3278,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <location line="+9"/>
         <location filename="../app/cmd_fit.cpp" line="-253"/>
         <location line="+20"/>
-        <location filename="../app/cmd_labels.cpp" line="+119"/>
+        <location filename="../app/cmd_labels.cpp" line="+118"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
         <source>warning: %1
 </source>
@@ -5941,7 +5941,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+450"/>
+        <location filename="../core/friction_fit.cpp" line="+451"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6418,7 +6418,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>the tissue&apos;s velocity is measured at none of the run&apos;s samples (does the trace cover the run&apos;s time?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6428,7 +6428,17 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s): in phase c as labelled the needle reaches only %3 mm/s of its %4 mm/s, so c lies only where it turns. The tissue may never have rested (a stroke within the slab&apos;s free travel carries it throughout): then C and b cannot be measured; else label c where the tissue rests while the needle is still fast</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s), the needle reaching %3 mm/s in phase c: check that c is labelled where the tissue rests, or give a narrower --band-m-s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>phase c in one direction only (%1 sliding samples moving in, %2 moving out, of %3 phase-c samples): the tissue hardly rested in the other</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6438,7 +6448,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+82"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6498,17 +6508,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-252"/>
-        <source>none of the %1 phase-c samples moves faster than the zero-velocity band (±%2 mm/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="-266"/>
         <source>no sample moves faster than the zero-velocity band (±%1 mm/s), the needle&apos;s top speed being %2 mm/s: give a narrower --band-m-s, or label phase c</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+289"/>
+        <location line="+306"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6716,7 +6721,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/surface_relaxation.cpp" line="+49"/>
+        <location filename="../core/surface_relaxation.cpp" line="+41"/>
         <source>too few frames to follow the surface</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6776,7 +6781,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/tissue_trace.cpp" line="+20"/>
+        <location filename="../core/tissue_trace.cpp" line="+18"/>
         <source>cannot be read: %1</source>
         <translation type="unfinished"></translation>
     </message>

@@ -243,6 +243,44 @@ private slots:
         QStringList wrongSize = phases.mid(1);
         QVERIFY_THROWS_EXCEPTION(FitError, fitFriction(run, o, wrongSize));
     }
+    // Phase c labelled only where the needle turns (as the picture reads a slab carried all
+    // along, stopping with the needle) is refused for what it is, not blamed on the band; c
+    // labelled where the needle is fast but inside a band given too wide names the band.
+    void phaseCWithoutSlidingSaysWhy()
+    {
+        synthetic::Friction p;
+        p.writePhases = false;
+        const Run run = synthetic::makeFriction(p);
+        const QStringList phases = phasePerSample(synthetic::frictionLabels(p), run.time_s);
+        const std::vector<double> v = derivative(run.time_s, run.position_mm);
+        double top = 0.0;
+        for (double x : v)
+            top = std::max(top, std::fabs(x));
+        FrictionOptions o;
+        o.thickness_mm = 20.0;
+        const double bandHalf_mm_s = 500.0 * fitFriction(run, o, phases).band_m_s;
+        QStringList turning(phases.size(), QStringLiteral("a"));
+        for (qsizetype i = 0; i < turning.size(); ++i)
+            if (std::fabs(v[std::size_t(i)]) < 0.8 * bandHalf_mm_s)
+                turning[i] = QStringLiteral("c");
+        try {
+            fitFriction(run, o, turning);
+            QFAIL("a c only at the turning points was fitted");
+        } catch (const FitError& e) {
+            QVERIFY2(e.message().contains(QStringLiteral("c lies only where it turns")), qPrintable(e.message()));
+            QVERIFY2(!e.message().contains(QStringLiteral("narrower")), qPrintable(e.message()));
+        }
+        FrictionOptions wide = o;
+        wide.estimateBand = false;
+        wide.band_m_s = 2.2 * top / 1000.0;  // wider than the needle's top speed both ways
+        try {
+            fitFriction(run, wide, phases);
+            QFAIL("a band wider than the needle's speed was fitted");
+        } catch (const FitError& e) {
+            QVERIFY2(e.message().contains(QStringLiteral("narrower --band-m-s")), qPrintable(e.message()));
+            QVERIFY2(!e.message().contains(QStringLiteral("where it turns")), qPrintable(e.message()));
+        }
+    }
     void groupsByFrequency()
     {
         std::vector<FrictionFit> fits;
