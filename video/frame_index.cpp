@@ -272,7 +272,8 @@ static bool isStrayAfterDamage(const FrameIndex& index, double time_s, int refus
 // a little short (a count from the duration, a last frame drained from the decoder).
 constexpr int kMorePacketsThanCounted = 16;
 
-FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, const std::atomic_bool* cancel)
+FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, const std::atomic_bool* cancel,
+                           const FfprobeListing* listing)
 {
     const QFileInfo fi(path);
     if (!fi.exists())
@@ -381,7 +382,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
     // A stream that starts later than 0 (an MKV written with a start time of 5 s) may count its
     // frames to its end time: its readable frames end there, not 5 s short of it (it was called
     // cut off: "only 120 of 270 frames").
-    const auto probe = probeKeyframes(path);
+    const std::optional<ProbeResult> probe = listing ? std::optional<ProbeResult>(probeKeyframes(*listing)) : probeKeyframes(path);
     // The file's first packets refused (random bytes over its first keyframe): its frames start
     // later than the file does, and keep their own times. The first readable frame was taken
     // for the start: every frame 0.73 s early, and the file called cut off.

@@ -111,7 +111,9 @@ using IndexProgress = std::function<void(int done, int expected)>;
 // Decodes the whole file. Throws VideoError when the file cannot be opened or holds no
 // readable frame; a file that ends early keeps the frames read so far and says so in
 // `warnings`. `cancel` (may be null) stops early with what was indexed.
+// `listing`: the file's ffprobe listing when already made (listVideo, ffprobe.h), else it is made.
+struct FfprobeListing;
 FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress = {},
-                           const std::atomic_bool* cancel = nullptr);
+                           const std::atomic_bool* cancel = nullptr, const FfprobeListing* listing = nullptr);
 
 }  // namespace nb::video

@@ -156,14 +156,17 @@ FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progr
     // Long videos are indexed from their packets (seconds, not minutes); short ones are
     // decoded, which also flags repeated pictures.
     constexpr int kLongVideoFrames = 18000;  // ten minutes at 30 frames/s
+    const std::optional<FfprobeListing> listing = listVideo(path);
     std::optional<FrameIndex> packets;
-    try {
-        packets = buildFrameIndexFromPackets(path);
-    } catch (const VideoError&) {
-        packets.reset();  // decoding below names the problem
+    if (listing && listing->packets.size() > std::size_t(kLongVideoFrames)) {
+        try {
+            packets = buildFrameIndexFromPackets(path, *listing);
+        } catch (const VideoError&) {
+            packets.reset();  // decoding below names the problem
+        }
     }
     const bool fromPackets = packets && packets->size() > kLongVideoFrames;
-    FrameIndex index = fromPackets ? std::move(*packets) : buildFrameIndex(path, progress, cancel);
+    FrameIndex index = fromPackets ? std::move(*packets) : buildFrameIndex(path, progress, cancel, listing ? &*listing : nullptr);
     if (progress && fromPackets)
         progress(index.size(), index.size());
     if (!(cancel && cancel->load()))

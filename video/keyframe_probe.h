@@ -18,6 +18,10 @@ struct ProbeResult {
     int reorderFrames = 0;            // the stream's has_b_frames: pictures shown before one they are predicted from
 };
 
+struct FfprobeListing;
+
+// From the listing of the file (listVideo, ffprobe.h), or from the file, listed first.
+ProbeResult probeKeyframes(const FfprobeListing& listing);
 std::optional<ProbeResult> probeKeyframes(const QString& path);
 
 }  // namespace nb::video

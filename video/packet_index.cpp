@@ -7,8 +7,6 @@
 #include "core/tr.h"
 
 #include <QFileInfo>
-#include <QProcess>
-#include <QStandardPaths>
 #include <opencv2/videoio.hpp>
 
 #include <algorithm>
@@ -16,58 +14,28 @@
 
 namespace nb::video {
 
-namespace {
-
-
-double rate(const QByteArray& fraction)
-{
-    const QList<QByteArray> p = fraction.trimmed().split('/');
-    bool ok1 = false, ok2 = true;
-    const double num = p.value(0).toDouble(&ok1);
-    const double den = p.size() > 1 ? p[1].toDouble(&ok2) : 1.0;
-    return ok1 && ok2 && den > 0 ? num / den : 0.0;
-}
-
-}  // namespace
-
 std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
 {
     if (!QFileInfo(path).isFile())
         throw VideoError(path, nb::TrDevices::tr("no such file"));
-    const auto stream = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
-                               QStringLiteral("-show_entries"),
-                               QStringLiteral("stream=codec_name,width,height,avg_frame_rate,r_frame_rate,start_time"),
-                               QStringLiteral("-of"), QStringLiteral("default=noprint_wrappers=1"), ffprobeInput(path)});
-    if (!stream)
+    const std::optional<FfprobeListing> listing = listVideo(path);
+    if (!listing)
         return std::nullopt;
+    return buildFrameIndexFromPackets(path, *listing);
+}
+
+std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path, const FfprobeListing& listing)
+{
+    if (listing.videoStreams.empty())
+        return std::nullopt;
+    const ProbedStream& stream = listing.videoStreams.front();
     FrameIndex index;
     index.path = path;
-    double start = 0.0, avg = 0.0, real = 0.0;
-    for (const QByteArray& line : stream->split('\n')) {
-        const int eq = line.indexOf('=');
-        if (eq < 0)
-            continue;
-        const QByteArray key = line.left(eq), value = line.mid(eq + 1).trimmed();
-        if (key == "codec_name")
-            index.codec = QString::fromUtf8(value);
-        else if (key == "width")
-            index.width = value.toInt();
-        else if (key == "height")
-            index.height = value.toInt();
-        else if (key == "avg_frame_rate")
-            avg = rate(value);
-        else if (key == "r_frame_rate")
-            real = rate(value);
-        else if (key == "start_time")
-            start = value.toDouble();
-    }
-    index.fpsNominal = avg > 0 ? avg : real;
+    index.codec = stream.codec;
+    index.width = stream.width;
+    index.height = stream.height;
+    index.fpsNominal = stream.avgRate > 0 ? stream.avgRate : stream.realRate;
     if (index.width <= 0 || index.height <= 0)
-        return std::nullopt;
-    const auto packets = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v:0"),
-                                QStringLiteral("-show_entries"), QStringLiteral("packet=pts_time,flags"), QStringLiteral("-of"),
-                                QStringLiteral("csv=p=0"), ffprobeInput(path)});
-    if (!packets)
         return std::nullopt;
     struct Packet {
         double pts;
@@ -75,14 +43,9 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path)
     };
     std::vector<Packet> list;
     bool timed = true;
-    for (const QByteArray& line : packets->split('\n')) {
-        const QList<QByteArray> f = line.trimmed().split(',');
-        if (f.size() < 2 || f[0].isEmpty())
-            continue;
-        bool ok = false;
-        const double t = f[0].toDouble(&ok);
-        timed = timed && ok;
-        list.push_back({ok ? t - start : 0.0, f[1].startsWith('K')});
+    for (const ProbedPacket& p : listing.packets) {
+        timed = timed && p.pts_s.has_value();
+        list.push_back({p.pts_s ? *p.pts_s - stream.start_s : 0.0, p.keyframe});
     }
     if (list.empty())
         return std::nullopt;

@@ -7,6 +7,7 @@
 // cannot know without decoding: which frames repeat the previous picture (duplicates stay
 // unflagged, and a warning says so).
 
+#include "ffprobe.h"
 #include "frame_index.h"
 
 #include <optional>
@@ -16,5 +17,7 @@ namespace nb::video {
 // nullopt when ffprobe is missing or the file's packets carry no usable times (then build
 // the index by decoding). Throws VideoError when the file cannot be opened at all.
 std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path);
+// The same from the file's listing (listVideo, ffprobe.h), made once for every use.
+std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path, const FfprobeListing& listing);
 
 }  // namespace nb::video
