@@ -172,12 +172,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent)
                             tr("Starts recording a new run file, then moves the needle in"));
     start->setStyleSheet(QStringLiteral("QPushButton:enabled { font-weight: bold; }"));
     start->setIcon(QIcon(QStringLiteral(":/icons/record.svg")));
-    connect(start, &QPushButton::clicked, this, [this, estop] {
-        // Start disables itself; the focus must not fall into a parameter field, where digits
-        // typed mid-run would change the run. The emergency stop is the one safe place.
-        estop->setFocus(Qt::OtherFocusReason);
-        emit startRequested();
-    });
+    connect(start, &QPushButton::clicked, this, &ControlPanel::startRequested);
     auto* withdraw = addButton(Control::Withdraw, tr("Withdraw"), tr("Moves the needle back to 0 mm"));
     withdraw->setIcon(QIcon(QStringLiteral(":/icons/withdraw.svg")));
     connect(withdraw, &QPushButton::clicked, this, [this] { emit withdrawRequested(withdrawVelocity()); });
@@ -520,11 +515,11 @@ void ControlPanel::updateControls()
     for (auto& [control, b] : buttons_) {
         const Permission p = permission(control, state_);
         // Refused but insistable (bias or zero under load): clickable, the window asks first.
-        b->setEnabled(p.enabled || p.overridable);
+        setEnabledKeepingFocusSafe(b, p.enabled || p.overridable);
         b->setToolTip(p.enabled ? help_[control] : help_[control] + QStringLiteral("\n") + tr("Not now: %1").arg(p.reason));
     }
     const Permission motion = permission(Control::MotionSettings, state_);
-    motionBox_->setEnabled(motion.enabled && !locked_);
+    setEnabledKeepingFocusSafe(motionBox_, motion.enabled && !locked_);
     motionBox_->setToolTip(!motion.enabled ? motion.reason : lockReason_);
     auto* enable = buttons_[Control::Enable];
     enable->setChecked(state_.stageEnabled);
@@ -630,13 +625,13 @@ void ControlPanel::updateSafetyControls()
     latchBanner_->setVisible(state_.latched);
     const Permission jog = permission(Control::Jog, state_);
     for (QPushButton* b : {jogOut_, jogIn_, goTo_}) {
-        b->setEnabled(jog.enabled);
+        setEnabledKeepingFocusSafe(b, jog.enabled);
         b->setToolTip(jog.enabled ? tr("Moves the needle without recording") : tr("Not now: %1").arg(jog.reason));
     }
     // Out to the last run's start: offered when the needle is deeper than that.
     const Permission out = permission(Control::Withdraw, state_);
     const bool deeper = status_.lastRunStart_mm && status_.position_mm > *status_.lastRunStart_mm + 0.05;
-    withdrawToStart_->setEnabled(out.enabled && deeper);
+    setEnabledKeepingFocusSafe(withdrawToStart_, out.enabled && deeper);
     withdrawToStart_->setText(status_.lastRunStart_mm
                                   ? tr("To start (%1 mm)").arg(localNumber(*status_.lastRunStart_mm, 1))
                                   : tr("To start"));
@@ -644,10 +639,20 @@ void ControlPanel::updateSafetyControls()
                                  : deeper     ? tr("Moves the needle out to where the last run began (not recorded)")
                                               : tr("The needle is not deeper than where the last run began."));
     // The limits of a run are fixed while it records (and Start never leaves the focus there).
-    limit_->setEnabled(!state_.recording);
-    withdrawLimit_->setEnabled(!state_.recording);
-    jogStep_->setEnabled(!state_.recording);
-    goToPosition_->setEnabled(!state_.recording);
+    for (QWidget* field : std::initializer_list<QWidget*>{limit_, withdrawLimit_, jogStep_, goToPosition_})
+        setEnabledKeepingFocusSafe(field, !state_.recording);
+}
+
+// A widget disabled while it holds the focus hands it on along the focus chain: from Withdraw,
+// out of the needle's way, to the next control or the Max. force field with its value
+// selected, where digits typed change the run's limit; from Start to a parameter field. The
+// emergency stop takes it instead: the one safe place.
+void ControlPanel::setEnabledKeepingFocusSafe(QWidget* w, bool enabled)
+{
+    QWidget* focus = window()->focusWidget();
+    if (!enabled && w->isEnabled() && focus && (focus == w || w->isAncestorOf(focus)))
+        buttons_[Control::EmergencyStop]->setFocus(Qt::OtherFocusReason);
+    w->setEnabled(enabled);
 }
 
 }  // namespace nb

@@ -103,6 +103,7 @@ private:
     QWidget* buildLatchBanner();
     QWidget* buildJogBox();
     void updateSafetyControls();
+    void setEnabledKeepingFocusSafe(QWidget* w, bool enabled);
 
     InterlockState state_;
     devices::EngineStatus status_;

@@ -593,6 +593,12 @@ private slots:
                                   qPrintable(stateOf(w)), 20000);
         QVERIFY2(!w.engine()->status().forceLimitTripped, qPrintable(stateOf(w)));
         QCOMPARE(w.runsEnded(), 1);  // never recorded
+        // The button clicked, disabled once the needle is out, leaves the focus with the
+        // emergency stop, not in the next field (Max. force, its value selected, where a digit
+        // typed changes the limit).
+        QTRY_VERIFY_WITH_TIMEOUT(!out->isEnabled(), 5000);
+        QWidget* focus = w.focusWidget();
+        QVERIFY2(focus == p->button(Control::EmergencyStop), focus ? qPrintable(focus->objectName() + QLatin1Char(' ') + focus->metaObject()->className()) : "none");
     }
 
     void simulatedRigChosenInTheWindowIsRecorded()
