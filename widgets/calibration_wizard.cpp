@@ -269,13 +269,21 @@ void CalibrationWizard::reject()
     for (int row = 0; row < table_->rowCount(); ++row)
         measured += measuredAt(row);
     if (measured > 0 || isMeasuring()) {
+        // Measuring waits while the operator is asked: it went on behind the question, which
+        // then named fewer points than the table showed. Kept, the row is measured afresh.
+        askingToDiscard_ = true;
         QMessageBox question(QMessageBox::Question, windowTitle(),
                              tr("Discard the %n point(s) measured? They are not saved.", nullptr, measured),
                              QMessageBox::Discard | QMessageBox::Cancel, this);
         question.setObjectName(QStringLiteral("discardPoints"));
         question.setDefaultButton(QMessageBox::Cancel);
-        if (question.exec() != QMessageBox::Discard)
+        const bool discard = question.exec() == QMessageBox::Discard;
+        askingToDiscard_ = false;
+        if (!discard) {
+            if (isMeasuring())
+                beginRow(measuringRow_);
             return;
+        }
     }
     stopMeasuring();
     QDialog::reject();
@@ -345,7 +353,7 @@ void CalibrationWizard::beginRow(int row)
 void CalibrationWizard::addSample(double time_s, double volts)
 {
     lastSample_ = std::max(lastSample_, time_s);
-    if (measuringRow_ < 0 || time_s <= notBefore_)
+    if (measuringRow_ < 0 || askingToDiscard_ || time_s <= notBefore_)
         return;
     if (startTime_ < 0.0)
         startTime_ = time_s;

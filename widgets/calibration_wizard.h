@@ -109,6 +109,7 @@ private:
     QDoubleSpinBox* step_ = nullptr;
     int measuringRow_ = -1;
     bool all_ = false;
+    bool askingToDiscard_ = false;  // measuring paused while the operator is asked
     double startTime_ = -1.0;
     double deviceNow_ = -1.0;
     double notBefore_ = -1.0;

@@ -391,6 +391,49 @@ private slots:
         QVERIFY(std::abs(w.engine()->status().slope_V_per_g - active->fit.slope_V_per_g) < 1e-12);
     }
 
+    // Esc during Measure all: measuring waits while the operator is asked, so the question
+    // names every point the table shows; kept, it goes on to the last row.
+    void calibrationWaitsWhileDiscardIsAsked()
+    {
+        QTemporaryDir tmp;
+        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+        nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
+        QTest::mouseClick(w.controlPanel()->button(Control::Calibrate), Qt::LeftButton);
+        nb::CalibrationWizard* wizard = w.findChild<nb::CalibrationWizard*>();
+        QVERIFY(wizard);
+        QVERIFY(QTest::qWaitForWindowExposed(wizard));
+        wizard->setMasses(0.0, 300.0, 50.0);
+        const auto measured = [wizard] {
+            int n = 0;
+            for (int row = 0; row < wizard->rowCount(); ++row)
+                n += wizard->table()->item(row, 1)->data(Qt::UserRole).isValid();
+            return n;
+        };
+        wizard->measureAll();
+        QTRY_VERIFY_WITH_TIMEOUT(measured() >= 2, 60000);
+        QVERIFY(wizard->isMeasuring());
+        int asked = -1, whileAsked = -1;
+        QTimer::singleShot(0, wizard, [&] {
+            auto* q = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!q || q->objectName() != QLatin1String("discardPoints"))
+                return;
+            const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("Discard the (\\d+) point")).match(q->text());
+            asked = m.hasMatch() ? m.captured(1).toInt() : -2;
+            QTest::qWait(6000);  // the operator reads the question: a row's dwell and more
+            whileAsked = measured();
+            q->button(QMessageBox::Cancel)->click();
+        });
+        QTest::keyClick(wizard, Qt::Key_Escape);
+        QVERIFY(asked >= 2);
+        QCOMPARE(whileAsked, asked);
+        QVERIFY(wizard->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard->isMeasuring(), 90000);
+        QCOMPARE(measured(), wizard->rowCount());
+    }
+
     void recoversAnInterruptedRunAtStart()
     {
         QTemporaryDir tmp;
