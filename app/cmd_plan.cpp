@@ -121,7 +121,9 @@ int cmdNew(const QStringList& args, Io io)
     const QCommandLineOption set(QStringLiteral("set"), nb::TrCli::tr("change a default setting, e.g. cycles=3 (repeatable)"), QStringLiteral("KEY=VALUE"));
     const QCommandLineOption levels(QStringLiteral("levels"), nb::TrCli::tr("set a factor's levels, e.g. site=1,2,3 (repeatable; a new name adds a factor)"),
                                     QStringLiteral("FACTOR=L1,L2"));
-    for (const auto* o : {&tmpl, &out, &order, &seed, &set, &levels})
+    const QCommandLineOption overwrite(QStringLiteral("overwrite"),
+                                       nb::TrCli::tr("replace an existing file (never a plan with recorded runs)"));
+    for (const auto* o : {&tmpl, &out, &order, &seed, &set, &levels, &overwrite})
         p.addOption(*o);
     int code = Ok;
     const QString sub = QStringLiteral("new");
@@ -193,8 +195,11 @@ int cmdNew(const QStringList& args, Io io)
             if (std::any_of(existing.runs.begin(), existing.runs.end(), [](const PlannedRun& r) { return !r.attempts.empty(); }))
                 return fail(io, sub, nb::TrCli::tr("%1 holds a plan with recorded runs; it is not overwritten").arg(p.value(out)));
         } catch (const PlanError&) {
-            // Not a plan (or a broken one): replaced.
+            // Not a plan (or a broken one): kept unless --overwrite, as a recorded run or a
+            // hand-edited plan named by mistake was replaced without a word.
         }
+        if (const QString e = existingOutput(QStringLiteral("--out"), p.value(out), p.isSet(overwrite)); !e.isEmpty())
+            return fail(io, sub, e);
     }
     try {
         const Plan plan = generatePlan(design, *o, s);

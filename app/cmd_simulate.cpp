@@ -54,7 +54,7 @@ struct OptionSet {
     QCommandLineOption plateGap{QStringLiteral("plate-gap-mm"), nb::TrCli::tr("friction platform: free travel of the slab before it meets a plate (default 1.5)"), QStringLiteral("MM"), QStringLiteral("1.5")};
     QCommandLineOption forceNoise{QStringLiteral("force-noise-n"), nb::TrCli::tr("rms noise of the force sensor in newtons (default about 0.0012)"), QStringLiteral("N")};
     QCommandLineOption videoOffset{QStringLiteral("video-offset-s"), nb::TrCli::tr("the video starts this long before the recording; negative: after it began (-600 to 600, default 0)"), QStringLiteral("S"), QStringLiteral("0")};
-    QCommandLineOption overwrite{QStringLiteral("overwrite"), nb::TrCli::tr("replace an existing run file")};
+    QCommandLineOption overwrite{QStringLiteral("overwrite"), nb::TrCli::tr("replace existing output files (--out, --truth, --video)")};
 
     void addTo(QCommandLineParser& p) const
     {
@@ -93,12 +93,15 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
     s.truth = p.value(o.truth);
     s.video = p.value(o.video);
     // Every output is checked before the run: a run is not recorded only to fail on them.
-    if (const QString e = existingOutput(QStringLiteral("--out"), s.out, p.isSet(o.overwrite)); !e.isEmpty())
-        return e;
+    // --truth and --video as --out: a recorded run or a lab's video named by mistake was replaced
+    // without a word.
     for (const auto& [option, path] : {std::pair{QStringLiteral("--out"), s.out}, {QStringLiteral("--truth"), s.truth}, {QStringLiteral("--video"), s.video}})
-        if (!path.isEmpty())
+        if (!path.isEmpty()) {
+            if (const QString e = existingOutput(option, path, p.isSet(o.overwrite)); !e.isEmpty())
+                return e;
             if (const QString e = unwritableOutput(option, path); !e.isEmpty())
                 return e;
+        }
     if (!s.truth.isEmpty() && samePath(s.truth, s.out))
         return nb::TrCli::tr("--truth and --out name the same file %1").arg(s.out);
     if (!s.video.isEmpty()) {

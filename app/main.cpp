@@ -154,6 +154,14 @@ int main(int argc, char** argv)
         QApplication app(argc, argv);
         nb::endStartupExplanation();
         nb::installTranslation(app);
+        // Qt takes its own options (-platform, -style, …) out of argv: what is left is a typo,
+        // which opened the window (restoring the last session) instead of saying so.
+        if (argc > 1) {
+            err << nb::TrCli::tr("needlebench: unknown option '%1'; 'needlebench --help' lists the commands and their options")
+                       .arg(QString::fromLocal8Bit(argv[1]))
+                << '\n';
+            return 2;
+        }
         return nb::runGuarded(QStringLiteral("(window)"), [&] { return runWindow(app); }, err);
     }, err);
 }

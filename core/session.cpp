@@ -9,6 +9,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
+#include <QDateTime>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -421,15 +422,26 @@ void Session::setActiveCalibration(const QString& name)
 SessionLock lockSession(const QString& dir)
 {
     SessionLock lock;
-    auto file = std::make_unique<QLockFile>(QDir(dir).filePath(QStringLiteral(".needlebench.lock")));
+    const QString path = QDir(dir).filePath(QStringLiteral(".needlebench.lock"));
+    auto file = std::make_unique<QLockFile>(path);
     file->setStaleLockTime(0);  // held as long as its program lives, however long
-    if (file->tryLock(0)) {
+    bool locked = file->tryLock(0);
+    // A lock file that names no process (empty or garbled: a crash or a full disk as it was
+    // written) is no one's, and QLockFile never takes it for stale: the session stayed locked
+    // for good ("process 0 on "). One that young may still be being written.
+    qint64 pid = 0;
+    QString host, app;
+    if (!locked && file->error() == QLockFile::LockFailedError && !file->getLockInfo(&pid, &host, &app) &&
+        QFileInfo(path).lastModified().secsTo(QDateTime::currentDateTime()) > 10) {
+        file->removeStaleLockFile();
+        locked = file->tryLock(0);
+    }
+    if (locked) {
         lock.file = std::move(file);
     } else if (file->error() == QLockFile::LockFailedError) {
-        qint64 pid = 0;
-        QString host, app;
-        file->getLockInfo(&pid, &host, &app);
-        lock.heldBy = nb::TrCore::tr("process %1 on %2").arg(pid).arg(host);
+        lock.heldBy = file->getLockInfo(&pid, &host, &app)
+                          ? nb::TrCore::tr("process %1 on %2").arg(pid).arg(host)
+                          : nb::TrCore::tr("its lock file %1 names no process; if no NeedleBench has it open, delete that file").arg(path);
     }
     return lock;
 }

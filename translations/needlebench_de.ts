@@ -270,12 +270,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+365"/>
+        <location line="+373"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation>Noch kein Fit: mindestens zwei Massen messen.</translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location line="-360"/>
         <source>Measure</source>
         <translation>Messen</translation>
     </message>
@@ -305,7 +305,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1 g übersteuert den Eingang (%2 V, der Bereich endet bei ±%3 V): der Punkt wird abgelehnt. Nur bis zu Massen kalibrieren, die der Sensor lesen kann.</translation>
     </message>
     <message numerus="yes">
-        <location line="+63"/>
+        <location line="+66"/>
         <source>Discard the %n point(s) measured? They are not saved.</source>
         <translation>
             <numerusform>Den %n gemessenen Punkt verwerfen? Er ist nicht gespeichert.</numerusform>
@@ -313,7 +313,7 @@ oder ohne Kontakt einbeziehen</translation>
         </translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+68"/>
         <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
         <translation>Schritt %1 von %2: %3 g – warte, bis sich der Messwert beruhigt, dann %4 s mitteln; die Masse ruhig halten…</translation>
     </message>
@@ -328,7 +328,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Alle Massen gemessen, aber noch keine Anpassung.</translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-305"/>
         <source>Measure all</source>
         <translation>Alle messen</translation>
     </message>
@@ -358,7 +358,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+326"/>
+        <location line="+334"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation>d = %1 mV/g,  c = %2 V,  r² = %3,  RMS-Residuum = %4 mV,  %5 Punkte</translation>
     </message>
@@ -412,12 +412,12 @@ oder ohne Kontakt einbeziehen</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+295"/>
+        <location line="+290"/>
         <source>2. Motion</source>
         <translation>2. Bewegung</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-287"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
@@ -435,12 +435,12 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+474"/>
+        <location line="+469"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="-492"/>
+        <location line="-487"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -475,18 +475,18 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>3. Lauf</translation>
     </message>
     <message>
-        <location line="+472"/>
+        <location line="+467"/>
         <source>To start (%1 mm)</source>
         <translation>Zum Start (%1 mm)</translation>
     </message>
     <message>
-        <location line="-560"/>
-        <location line="+450"/>
+        <location line="-555"/>
+        <location line="+445"/>
         <source>&amp;Enable stage</source>
         <translation>Achse &amp;einschalten</translation>
     </message>
     <message>
-        <location line="-447"/>
+        <location line="-442"/>
         <source>&amp;Bias force sensor</source>
         <translation>Kraftsensor &amp;tarieren</translation>
     </message>
@@ -516,7 +516,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>Beginnt die Aufzeichnung einer neuen Laufdatei und fährt dann die Nadel ein</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
         <source>Withdraw</source>
         <translation>Zurückziehen</translation>
     </message>
@@ -3196,7 +3196,6 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+5"/>
         <source>replace an existing run file</source>
         <translation>eine vorhandene Laufdatei ersetzen</translation>
     </message>
@@ -3212,7 +3211,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+34"/>
+        <location filename="../app/cmd_simulate.cpp" line="+39"/>
         <source>--out RUN.csv is required</source>
         <translation>--out LAUF.csv ist erforderlich</translation>
     </message>
@@ -3223,7 +3222,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+121"/>
+        <location filename="../app/cmd_simulate.cpp" line="+124"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
@@ -3245,7 +3244,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location line="+49"/>
         <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
-        <location line="+164"/>
+        <location line="+169"/>
         <location line="+290"/>
         <location filename="../app/cmd_sync.cpp" line="+39"/>
         <location filename="../app/cmd_video.cpp" line="+50"/>
@@ -4153,7 +4152,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-277"/>
+        <location filename="../app/cmd_simulate.cpp" line="-280"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -4223,7 +4222,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Effektivwert des Rauschens des Kraftsensors in Newton (Standard etwa 0,0012)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+2"/>
+        <source>replace existing output files (--out, --truth, --video)</source>
+        <translation>vorhandene Ausgabedateien ersetzen (--out, --truth, --video)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation>--%1: &apos;%2&apos; ist keine Zahl</translation>
     </message>
@@ -4238,7 +4242,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>unbekanntes Protokoll &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>--truth and --out name the same file %1</source>
         <translation>--truth und --out nennen dieselbe Datei %1</translation>
     </message>
@@ -4305,12 +4309,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--thickness-mm muss positiv sein</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-123"/>
         <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
         <translation>das Video beginnt so lange vor der Aufnahme; negativ: nach ihrem Beginn (-600 bis 600, Standard 0)</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+61"/>
         <source>--video-offset-s wants seconds between -600 and 600</source>
         <translation>--video-offset-s erwartet Sekunden zwischen -600 und 600</translation>
     </message>
@@ -4350,7 +4354,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>&apos;needlebench simulate --help&apos; zeigt die Optionen.</translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-470"/>
+        <location filename="../app/cmd_plan.cpp" line="-475"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation>&apos;needlebench plan %1 --help&apos; zeigt die Optionen.</translation>
     </message>
@@ -4377,12 +4381,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+54"/>
-        <location line="+147"/>
+        <location line="+152"/>
         <source>runs</source>
         <translation>Läufe</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-144"/>
         <source>the template (see &apos;plan templates&apos;)</source>
         <translation>die Vorlage (siehe &apos;plan templates&apos;)</translation>
     </message>
@@ -4412,7 +4416,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Stufen eines Faktors setzen, z. B. site=1,2,3 (wiederholbar; ein neuer Name fügt einen Faktor hinzu)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+3"/>
+        <source>replace an existing file (never a plan with recorded runs)</source>
+        <translation>eine vorhandene Datei ersetzen (nie einen Plan mit aufgezeichneten Läufen)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>--template NAME is required (see &apos;needlebench plan templates&apos;)</source>
         <translation>--template NAME ist erforderlich (siehe &apos;needlebench plan templates&apos;)</translation>
     </message>
@@ -4462,7 +4471,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1 enthält einen Plan mit aufgezeichneten Läufen; er wird nicht überschrieben</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>%1: %2 runs of &apos;%3&apos;, order %4, seed %5</source>
         <translation>%1: %2 Läufe von &apos;%3&apos;, Reihenfolge %4, Startwert %5</translation>
     </message>
@@ -5269,6 +5278,11 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <source>needlebench: the workbench cannot open on the display &apos;%1&apos; (see above): is the desktop still running, or the SSH session still forwarding X?</source>
         <translation>needlebench: Die Werkbank kann auf dem Bildschirm &apos;%1&apos; nicht geöffnet werden (siehe oben): Läuft der Desktop noch, oder leitet die SSH-Sitzung X noch weiter?</translation>
     </message>
+    <message>
+        <location line="+16"/>
+        <source>needlebench: unknown option &apos;%1&apos;; &apos;needlebench --help&apos; lists the commands and their options</source>
+        <translation>needlebench: unbekannte Option &apos;%1&apos;; &apos;needlebench --help&apos; listet die Befehle und ihre Optionen auf</translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
@@ -5901,7 +5915,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+197"/>
+        <location filename="../core/session.cpp" line="+198"/>
         <source>no header row</source>
         <translation>keine Kopfzeile</translation>
     </message>
@@ -6016,9 +6030,14 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kein Sitzungsordner (kein %1)</translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+186"/>
         <source>process %1 on %2</source>
         <translation>Prozess %1 auf %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its lock file %1 names no process; if no NeedleBench has it open, delete that file</source>
+        <translation>seine Sperrdatei %1 nennt keinen Prozess; wenn kein NeedleBench sie geöffnet hat, diese Datei löschen</translation>
     </message>
     <message>
         <location filename="../core/end_reason.cpp" line="+1"/>
@@ -6026,7 +6045,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-272"/>
+        <location filename="../core/session.cpp" line="-283"/>
         <source>unreadable</source>
         <translation>unlesbar</translation>
     </message>
@@ -6827,7 +6846,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+1121"/>
+        <location filename="../core/label_suggest.cpp" line="+1133"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
@@ -7271,8 +7290,8 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+279"/>
-        <location filename="../video/packet_index.cpp" line="+36"/>
+        <location filename="../video/frame_index.cpp" line="+280"/>
+        <location filename="../video/packet_index.cpp" line="+20"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
     </message>
@@ -7307,7 +7326,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-212"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
@@ -7341,14 +7360,14 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+275"/>
-        <location filename="../video/packet_index.cpp" line="+66"/>
+        <location line="+276"/>
+        <location filename="../video/packet_index.cpp" line="+45"/>
         <location line="+8"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-298"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>

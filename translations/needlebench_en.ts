@@ -269,12 +269,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+365"/>
+        <location line="+373"/>
         <source>No fit yet: measure at least two masses.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location line="-360"/>
         <source>Measure</source>
         <translation type="unfinished"></translation>
     </message>
@@ -304,7 +304,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+63"/>
+        <location line="+66"/>
         <source>Discard the %n point(s) measured? They are not saved.</source>
         <translation>
             <numerusform>Discard the %n point measured? It is not saved.</numerusform>
@@ -312,7 +312,7 @@ or without contact</source>
         </translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+68"/>
         <source>Step %1 of %2: %3 g – waiting for the reading to settle, then averaging %4 s; keep the mass still…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -327,7 +327,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-305"/>
         <source>Measure all</source>
         <translation type="unfinished"></translation>
     </message>
@@ -357,7 +357,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+326"/>
+        <location line="+334"/>
         <source>d = %1 mV/g,  c = %2 V,  r² = %3,  rms residual = %4 mV,  %5 points</source>
         <translation type="unfinished"></translation>
     </message>
@@ -411,12 +411,12 @@ or without contact</source>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+295"/>
+        <location line="+290"/>
         <source>2. Motion</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-287"/>
         <source>Linear</source>
         <translation type="unfinished"></translation>
     </message>
@@ -434,12 +434,12 @@ or without contact</source>
         <location line="+1"/>
         <location line="+14"/>
         <location line="+12"/>
-        <location line="+474"/>
+        <location line="+469"/>
         <source> mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-492"/>
+        <location line="-487"/>
         <source>Velocity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -474,18 +474,18 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+472"/>
+        <location line="+467"/>
         <source>To start (%1 mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-560"/>
-        <location line="+450"/>
+        <location line="-555"/>
+        <location line="+445"/>
         <source>&amp;Enable stage</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-447"/>
+        <location line="-442"/>
         <source>&amp;Bias force sensor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -515,7 +515,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
         <source>Withdraw</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3188,7 +3188,6 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_simulate.cpp" line="+5"/>
         <source>replace an existing run file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3204,7 +3203,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cmd_simulate.cpp" line="+34"/>
+        <location filename="../app/cmd_simulate.cpp" line="+39"/>
         <source>--out RUN.csv is required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3215,7 +3214,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+121"/>
+        <location filename="../app/cmd_simulate.cpp" line="+124"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3237,7 +3236,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <location line="+49"/>
         <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
-        <location line="+164"/>
+        <location line="+169"/>
         <location line="+290"/>
         <location filename="../app/cmd_sync.cpp" line="+39"/>
         <location filename="../app/cmd_video.cpp" line="+50"/>
@@ -4098,7 +4097,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-277"/>
+        <location filename="../app/cmd_simulate.cpp" line="-280"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4168,7 +4167,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+2"/>
+        <source>replace existing output files (--out, --truth, --video)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>--%1: &apos;%2&apos; is not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4183,7 +4187,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>--truth and --out name the same file %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4250,12 +4254,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-123"/>
         <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+61"/>
         <source>--video-offset-s wants seconds between -600 and 600</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4295,7 +4299,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-470"/>
+        <location filename="../app/cmd_plan.cpp" line="-475"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4314,12 +4318,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+54"/>
-        <location line="+147"/>
+        <location line="+152"/>
         <source>runs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-144"/>
         <source>the template (see &apos;plan templates&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4349,7 +4353,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+3"/>
+        <source>replace an existing file (never a plan with recorded runs)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>--template NAME is required (see &apos;needlebench plan templates&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4399,7 +4408,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>%1: %2 runs of &apos;%3&apos;, order %4, seed %5</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5158,6 +5167,11 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <source>needlebench: the workbench cannot open on the display &apos;%1&apos; (see above): is the desktop still running, or the SSH session still forwarding X?</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="+16"/>
+        <source>needlebench: unknown option &apos;%1&apos;; &apos;needlebench --help&apos; lists the commands and their options</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>nb::TrCore</name>
@@ -5790,7 +5804,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+197"/>
+        <location filename="../core/session.cpp" line="+198"/>
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5905,8 +5919,13 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+186"/>
         <source>process %1 on %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its lock file %1 names no process; if no NeedleBench has it open, delete that file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -5915,7 +5934,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-272"/>
+        <location filename="../core/session.cpp" line="-283"/>
         <source>unreadable</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6716,7 +6735,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+1121"/>
+        <location filename="../core/label_suggest.cpp" line="+1133"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7160,8 +7179,8 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+279"/>
-        <location filename="../video/packet_index.cpp" line="+36"/>
+        <location filename="../video/frame_index.cpp" line="+280"/>
+        <location filename="../video/packet_index.cpp" line="+20"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7196,7 +7215,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-212"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7230,14 +7249,14 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+275"/>
-        <location filename="../video/packet_index.cpp" line="+66"/>
+        <location line="+276"/>
+        <location filename="../video/packet_index.cpp" line="+45"/>
         <location line="+8"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-298"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1,5 +1,6 @@
 // The command-line contract: the real executable, run as a user's script would.
 #include <QProcess>
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryDir>
@@ -42,6 +43,26 @@ private slots:
         QCOMPARE(r.code, 0);
         QVERIFY(r.out.contains(QStringLiteral("version")));
         QVERIFY(r.out.contains(QStringLiteral("Exit status: 0 done; 1 failed")));  // what scripts test for
+    }
+    // An unknown option before any command opened the window (and with it the last session).
+    void unknownOptionWithoutACommandFails()
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        env.insert(QStringLiteral("HOME"), QDir::tempPath() + QStringLiteral("/nb-test-cli-home"));
+        for (const QString& option : {QStringLiteral("--bogus"), QStringLiteral("--json"), QStringLiteral("-x")}) {
+            QProcess p;
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(NB_EXECUTABLE), {option});
+            QVERIFY2(p.waitForFinished(30000), qPrintable(option + QStringLiteral(": still running (the window opened?)")));
+            if (p.state() != QProcess::NotRunning) {
+                p.kill();
+                p.waitForFinished();
+            }
+            QCOMPARE(p.exitCode(), 2);
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QVERIFY2(err.contains(QStringLiteral("unknown option '%1'").arg(option)), qPrintable(err));
+        }
     }
     void badOptionFails()
     {
@@ -114,6 +135,11 @@ private slots:
         refused({"export", dir.path(), "--format", "csv", "--out", dir.path()}, QStringLiteral("session folder"));
         refused({"export", dir.path(), "--format", "hdf5", "--out", run}, QStringLiteral("not an HDF5 file"));
         refused({"simulate", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
+        // --truth and --video are outputs as --out is: a recorded run named there was replaced.
+        const QString elsewhere = dir.filePath(QStringLiteral("elsewhere.csv"));
+        refused({"simulate", "--protocol", "stiffness", "--out", elsewhere, "--truth", run}, QStringLiteral("--truth %1 already exists").arg(run));
+        refused({"simulate", "--protocol", "stiffness", "--out", elsewhere, "--video", run}, QStringLiteral("--video %1 already exists").arg(run));
+        QVERIFY(!QFileInfo::exists(elsewhere));
         refused({"acquire", "--daq", "sim", "--stage", "sim", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
         // An export into a folder of recorded runs (another session's) replaced them, the
         // calibration header and raw columns gone, with exit 0. An earlier export's own files are

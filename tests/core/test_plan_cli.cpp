@@ -104,6 +104,37 @@ private slots:
             QVERIFY(!QFileInfo::exists(QDir(session).filePath(QStringLiteral("plan.json"))));
         }
         QVERIFY(!nb::lockSession(session).refused());
+        // A lock file that names no process (left empty by a crash or a full disk) is taken
+        // over once it is not being written any more; a fresh one says what to delete.
+        const QString lockPath = QDir(session).filePath(QStringLiteral(".needlebench.lock"));
+        for (const QByteArray& content : {QByteArray(), QByteArray("garbage\n")}) {
+            QFile lockFile(lockPath);
+            QVERIFY(lockFile.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            lockFile.write(content);
+            lockFile.close();
+            const nb::SessionLock young = nb::lockSession(session);
+            QVERIFY(young.refused());
+            QVERIFY2(young.heldBy.contains(QStringLiteral("names no process")) && young.heldBy.contains(lockPath), qPrintable(young.heldBy));
+            QVERIFY(lockFile.open(QIODevice::ReadWrite));
+            QVERIFY(lockFile.setFileTime(QDateTime::currentDateTime().addSecs(-60), QFileDevice::FileModificationTime));
+            lockFile.close();
+            const nb::SessionLock taken = nb::lockSession(session);
+            QVERIFY2(taken.file && !taken.refused(), qPrintable(taken.heldBy));
+        }
+        // plan new keeps a file that is not a plan unless told to replace it.
+        const QString notAPlan = path(QStringLiteral("recorded.csv"));
+        {
+            QFile f(notAPlan);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("# protocol: stiffness\ntime_s,position_mm,force_N\n0,0,0\n");
+        }
+        nbtest::CliResult kept = plan({"new", "--template", "prostate", "--out", notAPlan});
+        QCOMPARE(kept.code, 1);
+        QVERIFY2(kept.err.contains(QStringLiteral("already exists; it is kept")), qPrintable(kept.err));
+        QFile again(notAPlan);
+        QVERIFY(again.open(QIODevice::ReadOnly));
+        QVERIFY(again.readAll().startsWith("# protocol: stiffness"));
+        QCOMPARE(plan({"new", "--template", "prostate", "--out", notAPlan, "--overwrite"}).code, 0);
     }
 
     void frictionUnderImagingEndToEnd()
