@@ -442,14 +442,19 @@ int cmdRun(const QStringList& args, Io io)
             req.interruption = [&] { return interrupts->interruption(); };
         const PlannedRunOutcome r = runPlannedRun(req);
         const int signalled = interrupts ? interrupts->signalNumber() : 0;
-        finishAttempt(plan, i, r.ok ? r.endReason : (r.endReason.isEmpty() ? QStringLiteral("not started") : r.endReason),
-                      QDateTime::currentDateTimeUtc());
+        // A run recorded whole whose video or truth was not written (a signal while the video
+        // was rendered, a full disk) is not done: it was kept as done, and a resume went on
+        // past a run without its video for good.
+        QString ended = r.endReason.isEmpty() ? QStringLiteral("not started") : r.endReason;
+        if (!r.ok && isCompletingEndReason(ended))
+            ended = signalled ? QStringLiteral("interrupted") : QStringLiteral("outputs not written");
+        finishAttempt(plan, i, ended, QDateTime::currentDateTimeUtc());
         try {
             writePlanFile(planPath, plan);
         } catch (const PlanError& e) {
             return fail(io, sub, e.message());
         }
-        if (signalled || r.endReason == QLatin1String("interrupted")) {
+        if (signalled || ended == QLatin1String("interrupted")) {
             io.out << nb::TrCli::tr("interrupted") << " " << fi.fileName() << '\n';
             io.out.flush();
             stopped = nb::TrCli::tr("the plan stops at run %1 (interrupted); run the same command again to resume").arg(run.number);

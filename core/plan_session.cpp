@@ -23,8 +23,11 @@ PlanResumption resumePlan(Plan& plan, const QString& sessionDir)
         try {
             const Run run = readRunFile(file).run;
             const QString end = run.meta(QStringLiteral("end_reason")).value_or(QString());
+            // Its video too, when it has one: killed while that was rendered, it is done again.
+            const QString video = r.attempts.back().videoFile;
             if (run.meta(QStringLiteral("plan_run")) == QString::number(r.number) &&
-                run.meta(QStringLiteral("plan_attempt")) == QString::number(r.attempts.size()) && isCompletingEndReason(end)) {
+                run.meta(QStringLiteral("plan_attempt")) == QString::number(r.attempts.size()) && isCompletingEndReason(end) &&
+                (video.isEmpty() || QFileInfo::exists(QDir(sessionDir).filePath(video)))) {
                 finishAttempt(plan, int(i), end, QFileInfo(file).lastModified().toUTC());
                 out.endedBefore.emplace_back(r.number, r.attempts.back().runFile);
             }

@@ -5,6 +5,7 @@
 
 #include "support/needlebench_cli.h"
 
+#include "core/plan.h"
 #include "core/run_file.h"
 
 #include <QDir>
@@ -215,6 +216,31 @@ private slots:
         QVERIFY(kept.open(QIODevice::ReadOnly));
         const QByteArray planText = kept.readAll();
         QVERIFY2(planText.contains("\"result\": \"interrupted\"") && !planText.contains("\"status\": \"running\""), planText.left(1500).constData());
+    }
+
+    // Ctrl+C while a run's imaging video is rendered: the run file is whole but its video is
+    // not written, so the plan does not count the run as done (it did, and a resume went past
+    // it for good); resumed, the run is recorded again with its video.
+    void planRunInterruptedWhileTheVideoIsRendered()
+    {
+        QTemporaryDir dir, config;
+        const QString planPath = dir.filePath(QStringLiteral("plan.json")), session = dir.filePath(QStringLiteral("session"));
+        QCOMPARE(runCli({"plan", "new", "--template", "friction-imaging", "--out", planPath, "--levels", "frequency_hz=0.5", "--set",
+                         "cycles=4"}).code, 0);
+        const QString video = QDir(session).filePath(QStringLiteral("run_001_sine.avi"));
+        QProcess p;
+        QVERIFY2(startUntilWritten(p, {QStringLiteral("plan"), QStringLiteral("run"), planPath, QStringLiteral("--session"), session, QStringLiteral("--yes")},
+                                   config.path(), video, 1),
+                 "plan run did not start rendering the video");
+        ::kill(pid_t(p.processId()), SIGINT);
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 128 + SIGINT);
+        const QString out = QString::fromUtf8(p.readAllStandardOutput());
+        QVERIFY2(out.contains(QStringLiteral("interrupted run_001_sine.csv")), qPrintable(out));
+        QVERIFY(!QFileInfo::exists(video));
+        const nb::Plan kept = nb::readPlanFile(QDir(session).filePath(QStringLiteral("plan.json")));
+        QCOMPARE(kept.runs[0].status, nb::PlanRunStatus::Pending);
+        QCOMPARE(kept.runs[0].attempts.back().result, QStringLiteral("interrupted"));
     }
 
     // A .part left by a killed export goes with the next export; one still being written
