@@ -280,6 +280,10 @@ double positionAtTime(const Run& run, double t)
     return run.position_mm[std::min(run.size() - 1, std::size_t(at - run.time_s.begin()))];
 }
 
+// How far the needle must move the picture in one pair of frames for the tissue's motion in it
+// to read true (pictureReading).
+constexpr double kClearPair_px = 1.5;
+
 // One reading of the picture against the needle, over one or a few pairs of frames.
 struct PictureReading {
     double from_s = 0.0, to_s = 0.0;       // recording time it spans
@@ -301,7 +305,6 @@ PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::s
                               double frameHalf_s, double sum_px = 1.5)
 {
     constexpr int kMaxPairs = 8;
-    constexpr double kClearPair_px = 1.5;
     PictureReading r;
     r.to_s = tissue.time_s[k] + frameHalf_s;
     for (std::size_t j = k + 1; j-- > 0 && r.pairs < kMaxPairs;) {
@@ -999,6 +1002,15 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 if (forceC < h.end) {
                     aEnd = std::max(forceA, sampleAt(lastClearFollow));
                     cStart = std::max(forceC, aEnd);
+                    // Unless the needle moves the picture less than a clear reading needs
+                    // (kClearPair_px) from there to its turning point: the picture cannot have
+                    // seen the tissue rest, and the force cannot tell either (a slab carried onto
+                    // the plate's soft part presses on it as a resting one would). A stroke within
+                    // the slab's free travel had a c at every turning point, the needle sliding
+                    // 0.03-0.1 mm in it (friction_cli_matrix.py --video seed 630281 r0).
+                    const double left_mm = std::abs(run.position_mm[h.end - 1] - run.position_mm[std::min(cStart, h.end - 1)]);
+                    if (tissue->px_per_mm > 0.0 && left_mm * tissue->px_per_mm < kClearPair_px)
+                        aEnd = h.end;
                 } else {
                     aEnd = h.end;
                 }

@@ -83,6 +83,40 @@ private slots:
         QVERIFY(f.readAll().count('\n') > 100);
     }
 
+    // A stroke within the slab's free travel (±3.2 mm, gaps of 2.48 mm) carries it throughout:
+    // the picture sees it move with the needle as far as it can tell, and where the needle
+    // turns, inside the stick band, neither picture nor force tells rest from being carried. No
+    // phase c is suggested there (one was, at every turning point: friction_cli_matrix.py
+    // --video seed 630281 r0), and the fit says why it has nothing to fit.
+    void aStrokeWithinTheFreeTravelHasNoPhaseC()
+    {
+        const QString full = dir_.filePath(QStringLiteral("carried.csv")), video = dir_.filePath(QStringLiteral("carried.avi"));
+        nbtest::CliResult r = nbtest::runCli({"simulate", "--protocol", "friction", "--tissue", "liver1", "--thickness-mm", "30",
+                                              "--amplitude-mm", "3.2", "--frequency-hz", "0.48", "--cycles", "3", "--seed", "23756",
+                                              "--stick-band-mm-s", "1.74", "--plate-gap-mm", "2.48", "--out", full, "--video", video,
+                                              "--video-offset-s", "0.8"},
+                                             240000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        nb::Run run = nb::readRunFile(full).run;
+        const std::vector<QString> truth = *run.textColumn(QStringLiteral("phase"));
+        QVERIFY(std::all_of(truth.begin(), truth.end(), [](const QString& p) { return p == QLatin1String("a"); }));
+        run.text.clear();
+        run.numeric.erase(std::remove_if(run.numeric.begin(), run.numeric.end(),
+                                         [](const auto& c) { return c.first == QLatin1String("tissue_position_mm"); }),
+                          run.numeric.end());
+        const QString blind = dir_.filePath(QStringLiteral("carried-blind.csv")), out = dir_.filePath(QStringLiteral("carried.labels.csv"));
+        nb::writeRunFile(blind, run);
+        r = nbtest::runCli({"labels", "suggest", blind, "--video", video, "--video-offset-s", "0.8", "--out", out, "--json"}, 240000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.json()["video"].toObject()["used"].toBool(), qPrintable(r.out + r.err));
+        for (const auto& l : r.json()["labels"].toArray())
+            QVERIFY2(l.toObject()["label"].toString() != QLatin1String("c"),
+                     qPrintable(QStringLiteral("c suggested at %1 s").arg(l.toObject()["start_s"].toDouble())));
+        r = nbtest::runCli({"fit", "friction", blind, "--thickness-mm", "30", "--labels", out});
+        QVERIFY(r.code != 0);
+        QVERIFY2(r.err.contains(QStringLiteral("no phase c in the phases")), qPrintable(r.err));
+    }
+
     // Without a video the command is what it was: the same keys, labels from force and position.
     void withoutAVideo()
     {
