@@ -32,6 +32,14 @@ bool isExportSidecar(const QString& path, const QString& runName)
         && o.value(QStringLiteral("csv")).toString() == runName + QStringLiteral(".csv");
 }
 
+// A file that begins as a recorded run does ("# protocol: …"): an export's CSV is its columns'
+// names and rows alone, for pandas and MATLAB.
+bool looksRecorded(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) && f.read(1) == "#";
+}
+
 }  // namespace
 
 bool isHdf5File(const QString& path)
@@ -65,8 +73,11 @@ FilesInTheWay filesInTheWay(const QStringList& paths)
                 sidecars.insert(sidecar, isExportSidecar(sidecar, name));
             return sidecars.value(sidecar);
         };
+        // By its sidecar, and for the run's CSV by itself too: a recorded run copied over an
+        // earlier export's CSV, the sidecar still beside it, was replaced as the export's own.
         const bool exported = info.isFile()
-                              && (info.suffix() == QLatin1String("h5") ? isHdf5File(path) : !name.isEmpty() && knownSidecar());
+                              && (info.suffix() == QLatin1String("h5") ? isHdf5File(path) : !name.isEmpty() && knownSidecar())
+                              && !(info.fileName() == name + QStringLiteral(".csv") && looksRecorded(path));
         (exported ? way.earlierExport : way.other) << path;
     }
     return way;

@@ -136,10 +136,10 @@ private slots:
         refused({"export", dir.path(), "--format", "hdf5", "--out", run}, QStringLiteral("not an HDF5 file"));
         refused({"simulate", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
         // --truth and --video are outputs as --out is: a recorded run named there was replaced.
-        const QString elsewhere = dir.filePath(QStringLiteral("elsewhere.csv"));
-        refused({"simulate", "--protocol", "stiffness", "--out", elsewhere, "--truth", run}, QStringLiteral("--truth %1 already exists").arg(run));
-        refused({"simulate", "--protocol", "stiffness", "--out", elsewhere, "--video", run}, QStringLiteral("--video %1 already exists").arg(run));
-        QVERIFY(!QFileInfo::exists(elsewhere));
+        const QString unrecorded = dir.filePath(QStringLiteral("unrecorded.csv"));
+        refused({"simulate", "--protocol", "stiffness", "--out", unrecorded, "--truth", run}, QStringLiteral("--truth %1 already exists").arg(run));
+        refused({"simulate", "--protocol", "stiffness", "--out", unrecorded, "--video", run}, QStringLiteral("--video %1 already exists").arg(run));
+        QVERIFY(!QFileInfo::exists(unrecorded));
         refused({"acquire", "--daq", "sim", "--stage", "sim", "--protocol", "stiffness", "--out", run}, QStringLiteral("--overwrite"));
         // An export into a folder of recorded runs (another session's) replaced them, the
         // calibration header and raw columns gone, with exit 0. An earlier export's own files are
@@ -154,6 +154,12 @@ private slots:
             QCOMPARE(TestCli::run({"export", dir.path(), "--format", "csv", "--out", out}).code, 0);
             const nbtest::CliResult again = TestCli::run({"export", dir.path(), "--format", "csv", "--out", out});
             QVERIFY2(again.code == 0 && again.err.contains(QStringLiteral("earlier export")), qPrintable(again.err));
+            // A recorded run copied over an earlier export's CSV, its sidecar still beside it, is
+            // a recorded run: kept (it was replaced as the export's own).
+            const QString exportedCsv = QDir(out).filePath(QStringLiteral("run_001_sine.csv"));
+            QVERIFY(QFile::remove(exportedCsv) && QFile::copy(run, exportedCsv));
+            refused({"export", dir.path(), "--format", "csv", "--out", out}, QStringLiteral("not an earlier export"));
+            QCOMPARE(bytes(exportedCsv), recorded);
             QCOMPARE(TestCli::run({"export", dir.path(), "--format", "csv", "--out", otherSession.path(), "--overwrite"}).code, 0);
             QVERIFY(!bytes(theirs).startsWith(recorded.left(200)));
             QVERIFY(QDir(out).removeRecursively());
