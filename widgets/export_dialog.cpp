@@ -22,6 +22,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QScreen>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -165,7 +166,7 @@ void ExportDialog::start()
     const QString target = targetDir();
     if (target.isEmpty()) {
         progress_->setValue(0);
-        status_->setText(tr("Choose a folder to export into."));
+        setStatus(tr("Choose a folder to export into."));
         return;
     }
     if (const FilesInTheWay way = filesInTheWay(exportPaths(c, target)); !way.empty()) {
@@ -204,7 +205,7 @@ void ExportDialog::askToReplace(const FilesInTheWay& way, const Choice& c, const
         if (question->clickedButton() == replace)
             begin(c, target);
         else
-            status_->setText(tr("Not exported: the files in %1 are kept.").arg(QDir::toNativeSeparators(target)));
+            setStatus(tr("Not exported: the files in %1 are kept.").arg(QDir::toNativeSeparators(target)));
     });
     question->show();
 }
@@ -215,7 +216,7 @@ void ExportDialog::begin(const Choice& c, const QString& target)
     made_ = makeFolders(target, &made);
     if (!made) {
         progress_->setValue(0);  // not the last export's full bar beside this failure
-        status_->setText(tr("%1: cannot create the folder").arg(QDir::toNativeSeparators(target)));
+        setStatus(tr("%1: cannot create the folder").arg(QDir::toNativeSeparators(target)));
         emit exportFinished(false);
         return;
     }
@@ -225,7 +226,7 @@ void ExportDialog::begin(const Choice& c, const QString& target)
     for (QCheckBox* b : {csv_, hdf5_, eaf_, figures_, tables_})
         b->setEnabled(false);
     progress_->setRange(0, 0);
-    status_->setText(tr("Exporting…"));
+    setStatus(tr("Exporting…"));
     QPointer<QProgressBar> bar = progress_;  // made here: the worker only reads it
     watcher_.setFuture(QtConcurrent::run([this, c, target, bar] { return run(c, target, bar); }));
 }
@@ -233,7 +234,7 @@ void ExportDialog::begin(const Choice& c, const QString& target)
 void ExportDialog::cancel()
 {
     cancel_->store(true);
-    status_->setText(tr("Cancelling…"));
+    setStatus(tr("Cancelling…"));
 }
 
 // In a worker thread. The earlier export's files stay whole until this one is (kept_export.h):
@@ -338,6 +339,21 @@ ExportDialog::Outcome ExportDialog::write(const Choice& c, const QString& target
     return out;
 }
 
+// The dialog grows to show the whole message: a result with the runs left out below it was cut
+// off after its first lines at 1366x768, the warning unseen (the window does not grow for a
+// wrapped label's height by itself).
+void ExportDialog::setStatus(const QString& text)
+{
+    status_->setText(text);
+    const QScreen* screen = this->screen();
+    const int room = screen ? screen->availableGeometry().height() - 60 : 700;
+    int need = layout()->totalHeightForWidth(width());
+    if (need < 0)
+        need = sizeHint().height();
+    if (need > height())
+        resize(width(), std::min(need, room));
+}
+
 void ExportDialog::finish()
 {
     Outcome out = watcher_.result();
@@ -373,7 +389,7 @@ void ExportDialog::finish()
         text = tr("Exported %n file(s) into %1", nullptr, int(out.written.size())).arg(QDir::toNativeSeparators(targetDir()));
     if (!out.warnings.isEmpty())
         text += QLatin1Char('\n') + out.warnings.join(QLatin1Char('\n'));
-    status_->setText(text);
+    setStatus(text);
     exportButton_->setEnabled(true);
     for (QCheckBox* b : {csv_, hdf5_, eaf_})
         b->setEnabled(true);

@@ -68,6 +68,7 @@ private:
     Outcome run(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
     Outcome write(const Choice& c, const QString& target, QPointer<QProgressBar> bar);
     void finish();
+    void setStatus(const QString& text);
 
     QString sessionDir_;
     AnalysisWorkspace* analysis_;

@@ -6,6 +6,7 @@
 
 #include <QDir>
 #include <QDirIterator>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QProcess>
@@ -163,6 +164,36 @@ private slots:
         QVERIFY(done.wait(60000));
         QVERIFY(QFileInfo(before).isDir());
         QVERIFY(!QFileInfo::exists(QDir(before).filePath(QStringLiteral("csv"))));
+    }
+
+    // The result is shown whole, the runs left out below it: the dialog kept its height and
+    // cut the message after two lines, the warning unseen.
+    void theWholeResultIsShown()
+    {
+        const QString cut = tmp_.filePath(QStringLiteral("cut_session"));
+        nb::Session::create(cut, {});
+        QFile whole(QDir(session_).filePath(QStringLiteral("run_001_linear.csv")));
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        QFile part(QDir(cut).filePath(QStringLiteral("run_001_linear.csv")));
+        QVERIFY(part.open(QIODevice::WriteOnly));
+        part.write(whole.read(whole.size() / 2));  // still recording, or cut off: left out
+        part.close();
+        nb::ExportDialog dialog(cut, nullptr);
+        dialog.setTargetDir(tmp_.filePath(QStringLiteral("cut_export/with/a/long/enough/path/to/wrap/over/several/lines")));
+        dialog.setChoice({.csv = true, .hdf5 = false, .eaf = false, .figures = false, .tables = false});
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QSignalSpy done(&dialog, &nb::ExportDialog::exportFinished);
+        dialog.start();
+        QVERIFY(done.wait(60000));
+        QVERIFY2(dialog.resultText().contains(QStringLiteral("run_001_linear.csv")), qPrintable(dialog.resultText()));
+        QLabel* status = nullptr;
+        for (QLabel* l : dialog.findChildren<QLabel*>())
+            if (l->text() == dialog.resultText())
+                status = l;
+        QVERIFY(status);
+        QTRY_VERIFY2(status->height() >= status->heightForWidth(status->width()),
+                     qPrintable(QStringLiteral("%1 px shown of %2").arg(status->height()).arg(status->heightForWidth(status->width()))));
     }
 
     // An export into a folder that holds one asks first (it replaced the files without a word):
