@@ -117,6 +117,13 @@ int cmdLabels(const QStringList& args, Io io)
         for (const QString& w : read.warnings)
             io.err << nb::TrCli::tr("warning: %1\n").arg(w);
         const Run run = std::move(read.run);
+        // Too short to suggest anything: said, not an empty labels file and exit 0 (events and
+        // fit refuse the same run).
+        constexpr std::size_t kFewestSamples = 10;
+        if (run.size() < kFewestSamples) {
+            io.err << "needlebench labels: " << nb::TrCli::tr("%1: too few samples (%2) to suggest labels").arg(runPath).arg(run.size()) << '\n';
+            return Failure;
+        }
         Labels labels = suggestLabels(run);
         QJsonObject videoReport;
         std::optional<TissueMotion> tissue;

@@ -1015,7 +1015,7 @@ oder ohne Kontakt einbeziehen</translation>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+56"/>
+        <location filename="../widgets/export_dialog.cpp" line="+57"/>
         <source>Export session</source>
         <translation>Sitzung exportieren</translation>
     </message>
@@ -1126,7 +1126,7 @@ oder ohne Kontakt einbeziehen</translation>
         <translation>%1: keine Läufe zum Exportieren</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+97"/>
         <source>Cancelled: the earlier export in %1 is as it was.</source>
         <translation>Abgebrochen: der frühere Export in %1 ist unverändert.</translation>
     </message>
@@ -2552,7 +2552,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die in %1 aufbewahrten Markierungen sind nicht lesbar: %2</translation>
     </message>
     <message>
-        <location line="+320"/>
+        <location line="+15"/>
+        <source>%1 opened: %2 samples, %3 labels read</source>
+        <translation>%1 geöffnet: %2 Messwerte, %3 Labels gelesen</translation>
+    </message>
+    <message>
+        <location line="+305"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2821,12 +2826,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
     </message>
     <message>
-        <location line="+111"/>
-        <source>%1: %2 samples, %3 labels</source>
-        <translation>%1: %2 Messwerte, %3 Labels</translation>
-    </message>
-    <message>
-        <location line="+52"/>
+        <location line="+163"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
@@ -3245,7 +3245,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
-        <location line="+290"/>
+        <location line="+295"/>
         <location filename="../app/cmd_sync.cpp" line="+39"/>
         <location filename="../app/cmd_video.cpp" line="+50"/>
         <location line="+36"/>
@@ -4100,7 +4100,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+14"/>
+        <source>%1: too few samples (%2) to suggest labels</source>
+        <translation>%1: zu wenige Messwerte (%2), um Labels vorzuschlagen</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>needlebench labels: the run&apos;s video %1 is missing; looking beside the run
 </source>
         <translation>needlebench labels: das Video des Laufs, %1, fehlt; es wird neben dem Lauf gesucht
@@ -4128,7 +4133,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-146"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation>das Bildgebungsvideo der Messung: Reibungsphasen auch aus der Gewebebewegung darin, die Relaxation von Einstichmessungen aus dem Zurückfedern der Oberfläche (Standard: das mit der Messung verknüpfte Video, sonst RUN.mp4, RUN.avi… daneben)</translation>
     </message>
@@ -4138,7 +4143,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>eine vorhandene Label-Datei ersetzen (sie kann von Hand gesetzte Labels enthalten) und --tissue-trace eine Datei ersetzen lassen, die kein Verlauf ist</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+140"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation>needlebench labels: %1: keine Relaxation vorgeschlagen: %2
@@ -4354,7 +4359,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>&apos;needlebench simulate --help&apos; zeigt die Optionen.</translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-475"/>
+        <location filename="../app/cmd_plan.cpp" line="-480"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation>&apos;needlebench plan %1 --help&apos; zeigt die Optionen.</translation>
     </message>
@@ -4512,12 +4517,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+156"/>
+        <location line="+161"/>
         <source>run %1: %2</source>
         <translation>Lauf %1: %2</translation>
     </message>
     <message>
-        <location line="-145"/>
+        <location line="-150"/>
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation>der Sitzungsordner (wird angelegt, wenn er fehlt; enthält plan.json und die Läufe)</translation>
     </message>
@@ -4592,7 +4597,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Lauf %1 von %2: %3</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+19"/>
         <source>interrupted</source>
         <translation>unterbrochen</translation>
     </message>

@@ -1014,7 +1014,7 @@ or without contact</source>
 <context>
     <name>nb::ExportDialog</name>
     <message>
-        <location filename="../widgets/export_dialog.cpp" line="+56"/>
+        <location filename="../widgets/export_dialog.cpp" line="+57"/>
         <source>Export session</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1125,7 +1125,7 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+97"/>
         <source>Cancelled: the earlier export in %1 is as it was.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2546,7 +2546,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+320"/>
+        <location line="+15"/>
+        <source>%1 opened: %2 samples, %3 labels read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+305"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2813,12 +2818,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+111"/>
-        <source>%1: %2 samples, %3 labels</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+52"/>
+        <location line="+163"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3237,7 +3237,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <location line="+129"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
-        <location line="+290"/>
+        <location line="+295"/>
         <location filename="../app/cmd_sync.cpp" line="+39"/>
         <location filename="../app/cmd_video.cpp" line="+50"/>
         <location line="+36"/>
@@ -4051,7 +4051,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+14"/>
+        <source>%1: too few samples (%2) to suggest labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>needlebench labels: the run&apos;s video %1 is missing; looking beside the run
 </source>
         <translation type="unfinished"></translation>
@@ -4075,7 +4080,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-146"/>
         <source>the run&apos;s imaging video: friction phases also from the tissue&apos;s motion in it, the relaxation of insertion runs from the surface&apos;s spring-back (default: the video linked to the run, else RUN.mp4, RUN.avi… beside it)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4085,7 +4090,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+140"/>
         <source>needlebench labels: %1: no relaxation suggested: %2
 </source>
         <translation type="unfinished"></translation>
@@ -4299,7 +4304,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_plan.cpp" line="-475"/>
+        <location filename="../app/cmd_plan.cpp" line="-480"/>
         <source>Run &apos;needlebench plan %1 --help&apos; for the options.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4449,12 +4454,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+156"/>
+        <location line="+161"/>
         <source>run %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-145"/>
+        <location line="-150"/>
         <source>the session folder (created when missing; holds plan.json and the runs)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4529,7 +4534,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+19"/>
         <source>interrupted</source>
         <translation type="unfinished"></translation>
     </message>

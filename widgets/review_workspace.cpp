@@ -638,7 +638,7 @@ bool ReviewWorkspace::openRun(const QString& path)
         updateKeysHelp();
         updateShading();
         setCursorTime(run_.time_s.front());
-        showStatus(tr("%1: %2 samples, %3 labels").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size())
+        showStatus(tr("%1 opened: %2 samples, %3 labels read").arg(QFileInfo(path).fileName()).arg(run_.size()).arg(labels.size())
                    + (keptNote.isEmpty() ? QString() : QStringLiteral("; ") + keptNote)
                    + (labelsNotes.isEmpty() ? QString() : QStringLiteral("; ") + labelsNotes.join(QStringLiteral("; ")))
                    + (read.warnings.isEmpty() ? QString() : QStringLiteral("; ") + read.warnings.join(QStringLiteral("; "))));

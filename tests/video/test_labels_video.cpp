@@ -154,6 +154,17 @@ private slots:
 
     void badInput()
     {
+        // A run of its header alone: said, no empty labels file written with exit 0.
+        const QString headerOnly = dir_.filePath(QStringLiteral("header_only.csv"));
+        {
+            QFile f(headerOnly);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("# protocol: friction\ntime_s,position_mm,force_N\n");
+        }
+        nbtest::CliResult empty = nbtest::runCli({"labels", "suggest", headerOnly});
+        QCOMPARE(empty.code, 1);
+        QVERIFY2(empty.err.contains(headerOnly) && empty.err.contains(QStringLiteral("too few samples (0)")), qPrintable(empty.err));
+        QVERIFY(!QFile::exists(dir_.filePath(QStringLiteral("header_only.labels.csv"))));
         // A video asked for that is not there: a mistake in the command, named, nothing written.
         const QString missing = dir_.filePath(QStringLiteral("missing.avi"));
         nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind_, "--video", missing, "--video-offset-s", "0",
