@@ -188,14 +188,21 @@ int fitStiffnessCommand(const QStringList& args, Io io)
         const Run run = loadRun(path, io);
         if (const QString w = notAnInsertionRun(run, path); !w.isEmpty())
             io.err << w << '\n';
-        events.push_back(onFile(path, [&] { return detectEvents(run); }));
         if (!labelFiles.isEmpty()) {
             const QStringList reads{QStringLiteral("contact"), QStringLiteral("puncture")};
             const Labels marks = readLabelsForFit(labelFiles[f], reads, reads + QStringList{QStringLiteral("relaxation"), QStringLiteral("internal puncture")}, false, io);
-            onFile(labelFiles[f], [&] {
-                applyEventLabels(events.back(), run, marks);
-                return 0;
-            });
+            // Detection's error names the run, a label's the labels file.
+            try {
+                events.push_back(eventsWithLabels(run, marks));
+            } catch (const FitError&) {
+                events.push_back(onFile(path, [&] { return detectEvents(run); }));
+                onFile(labelFiles[f], [&] {
+                    applyEventLabels(events.back(), run, marks);
+                    return 0;
+                });
+            }
+        } else {
+            events.push_back(onFile(path, [&] { return detectEvents(run); }));
         }
         segments.push_back(stiffnessSegment(run, events.back()));
         const StiffnessFit one = onFile(path, [&] { return fitStiffness(segments.back()); });  // names the file if a run is unusable

@@ -466,4 +466,22 @@ void applyEventLabels(InsertionEvents& ev, const Run& run, const Labels& labels,
                            .arg(ev.puncture.position_mm).arg(ev.contact.position_mm));
 }
 
+InsertionEvents eventsWithLabels(const Run& run, const Labels& labels)
+{
+    const auto marked = [&](const char* name) {
+        return std::any_of(labels.begin(), labels.end(), [&](const Label& l) {
+            return l.isPoint() && l.label.compare(QLatin1String(name), Qt::CaseInsensitive) == 0;
+        });
+    };
+    InsertionEvents ev;
+    try {
+        ev = detectEvents(run);
+    } catch (const FitError&) {
+        if (!marked("contact") || !marked("puncture"))
+            throw;
+    }
+    applyEventLabels(ev, run, labels);
+    return ev;
+}
+
 }  // namespace nb

@@ -68,4 +68,9 @@ ContactFit fitContact(std::span<const double> position_mm, std::span<const doubl
 // FitError for a label outside the run or a puncture not past the contact.
 void applyEventLabels(InsertionEvents& events, const Run& run, const Labels& labels, double window_s = 0.05);
 
+// The events detected, with the operator's labels applied. Where detection finds none (a
+// puncture too soft for it, say) and the labels mark both the contact and the puncture, the
+// events are the labels' alone, as the thesis read them off the video; else detection's error.
+InsertionEvents eventsWithLabels(const Run& run, const Labels& labels);
+
 }  // namespace nb

@@ -66,8 +66,7 @@ void analyseStiffness(const Dataset& d, SessionAnalysis& a, const AnalysisOption
         s.group = tissueOf(r.run);
         s.tip = r.run.meta(QStringLiteral("tip")).value_or(QString());
         try {
-            s.events = detectEvents(r.run);
-            applyEventLabels(s.events, r.run, r.labels);
+            s.events = eventsWithLabels(r.run, r.labels);
             s.segment = stiffnessSegment(r.run, s.events);
             s.fit = fitStiffness(s.segment);
         } catch (const FitError& e) {

@@ -2,6 +2,7 @@
 // relaxation and internal punctures (Table 2 parameters, 6 mN noise, 500 Hz, 4 mm/s).
 #include "core/events.h"
 #include "core/fit_error.h"
+#include "core/labels.h"
 #include "synthetic.h"
 
 #include <Eigen/Dense>
@@ -167,6 +168,35 @@ private slots:
         auto p = liver(1);
         p.punctureDepth_mm = 100.0;  // never reached
         QVERIFY_THROWS_EXCEPTION(FitError, detectEvents(synthetic::makeInsertion(p)));
+    }
+    // A puncture detection misses (here the run stops before the one the model has) but the
+    // operator marked, with the contact: the labels' events, as Analysis and fit stiffness
+    // --labels use them (they said 'no puncture' whatever was marked). Without a contact label
+    // detection's own error stands.
+    void labelsStandWhereDetectionFindsNoPuncture()
+    {
+        auto p = liver(1);
+        p.punctureDepth_mm = 100.0;
+        const Run run = synthetic::makeInsertion(p);
+        const auto timeAt = [&](double x) {
+            std::size_t i = 0;
+            while (i + 1 < run.size() && run.position_mm[i] < x)
+                ++i;
+            return run.time_s[i];
+        };
+        Labels marks{{QStringLiteral("events"), QStringLiteral("contact"), timeAt(p.contact_mm), timeAt(p.contact_mm), {}},
+                     {QStringLiteral("events"), QStringLiteral("puncture"), timeAt(20.0), timeAt(20.0), {}}};
+        const InsertionEvents ev = eventsWithLabels(run, marks);
+        QVERIFY2(std::fabs(ev.contact.position_mm - p.contact_mm) < 0.05, qPrintable(QString::number(ev.contact.position_mm)));
+        QVERIFY2(std::fabs(ev.puncture.position_mm - 20.0) < 0.3, qPrintable(QString::number(ev.puncture.position_mm)));
+        QVERIFY(std::fabs(ev.zeroOffset_N - p.offset_N) < 0.01);
+        marks.erase(marks.begin());
+        QVERIFY_THROWS_EXCEPTION(FitError, eventsWithLabels(run, marks));
+        // Where detection works, the labels still override it.
+        const Run punctured = synthetic::makeInsertion(liver(1));
+        const InsertionEvents detected = detectEvents(punctured);
+        const InsertionEvents labelled = eventsWithLabels(punctured, {});
+        QCOMPARE(labelled.puncture.index, detected.puncture.index);
     }
     void noMotionOrTooFewSamplesThrow()
     {
