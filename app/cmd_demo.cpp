@@ -77,15 +77,20 @@ int cmdDemo(const QStringList& args, Io io)
         io.out.flush();
     };
 
+    // Everything a demo writes (session/, session.h5, tables/, figures) goes into --out: a folder
+    // already holding anything is refused, as a session.h5 or tables there were replaced.
+    if (QFileInfo(root.path()).isDir() && !root.isEmpty(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden)) {
+        io.err << "needlebench demo: "
+               << nb::TrCli::tr("%1 is not empty; a demo writes a session and its exports into --out: choose an empty or new folder")
+                      .arg(root.path())
+               << '\n';
+        return Failure;
+    }
     if (!QDir().mkpath(root.path())) {
         io.err << "needlebench demo: " << nb::TrCli::tr("%1: cannot create the folder").arg(root.path()) << '\n';
         return Failure;
     }
     const QString sessionDir = root.filePath(QStringLiteral("session"));
-    if (QFileInfo::exists(sessionDir) && !QDir(sessionDir).isEmpty()) {
-        io.err << "needlebench demo: " << nb::TrCli::tr("%1 already holds a session; choose an empty --out folder").arg(sessionDir) << '\n';
-        return Failure;
-    }
     SessionInfo info;
     info.organ = QStringLiteral("bovine liver (simulated)");
     info.specimen = QStringLiteral("demo");

@@ -3242,7 +3242,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location filename="../app/cmd_events.cpp" line="+45"/>
         <location filename="../app/cmd_fit.cpp" line="+113"/>
         <location line="+49"/>
-        <location line="+129"/>
+        <location line="+136"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
         <location line="+295"/>
@@ -3285,7 +3285,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-253"/>
+        <location filename="../app/cmd_fit.cpp" line="-260"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
@@ -3428,12 +3428,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>&apos;needlebench demo --help&apos; zeigt die Optionen.</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>%1 already holds a session; choose an empty --out folder</source>
-        <translation>%1 enthält bereits eine Sitzung; wählen Sie einen leeren --out-Ordner</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="+41"/>
         <source>session folder %1</source>
         <translation>Sitzungsordner %1</translation>
     </message>
@@ -3498,7 +3493,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Phasen a, b1, b2, c je Halbzyklus</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-150"/>
+        <source>%1 is not empty; a demo writes a session and its exports into --out: choose an empty or new folder</source>
+        <translation>%1 ist nicht leer; eine Demo schreibt eine Sitzung und ihre Exporte in --out: einen leeren oder neuen Ordner wählen</translation>
+    </message>
+    <message>
+        <location line="+165"/>
         <location line="+4"/>
         <location filename="../app/cmd_export.cpp" line="+15"/>
         <source>warning: %1</source>
@@ -3626,7 +3626,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>abgebrochen; %1 wurde nicht geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="-258"/>
+        <location filename="../app/cmd_demo.cpp" line="-254"/>
         <location filename="../app/cmd_export.cpp" line="-23"/>
         <location line="+11"/>
         <location line="+19"/>
@@ -3711,7 +3711,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+62"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation>Steifigkeit f = a1*x + a2*x^2, x = Tiefe nach dem Kontakt [mm]
@@ -5420,7 +5420,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht schreiben: %1</translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+75"/>
+        <location filename="../core/export/session_analysis.cpp" line="+74"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation>%1: kein Steifigkeitsfit (%2)</translation>
     </message>
@@ -5477,12 +5477,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Durchstichkraft</translation>
     </message>
     <message>
-        <location line="-225"/>
+        <location line="-224"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+54"/>
         <source>model force at %1 mm</source>
         <translation>Modellkraft bei %1 mm</translation>
     </message>

@@ -3234,7 +3234,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <location filename="../app/cmd_events.cpp" line="+45"/>
         <location filename="../app/cmd_fit.cpp" line="+113"/>
         <location line="+49"/>
-        <location line="+129"/>
+        <location line="+136"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
         <location line="+295"/>
@@ -3275,7 +3275,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-253"/>
+        <location filename="../app/cmd_fit.cpp" line="-260"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
@@ -3414,12 +3414,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>%1 already holds a session; choose an empty --out folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="+41"/>
         <source>session folder %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3484,7 +3479,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-150"/>
+        <source>%1 is not empty; a demo writes a session and its exports into --out: choose an empty or new folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+165"/>
         <location line="+4"/>
         <location filename="../app/cmd_export.cpp" line="+15"/>
         <source>warning: %1</source>
@@ -3612,7 +3612,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_demo.cpp" line="-258"/>
+        <location filename="../app/cmd_demo.cpp" line="-254"/>
         <location filename="../app/cmd_export.cpp" line="-23"/>
         <location line="+11"/>
         <location line="+19"/>
@@ -3691,7 +3691,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+62"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation type="unfinished"></translation>
@@ -5309,7 +5309,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/export/session_analysis.cpp" line="+75"/>
+        <location filename="../core/export/session_analysis.cpp" line="+74"/>
         <source>%1: no stiffness fit (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5366,12 +5366,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-225"/>
+        <location line="-224"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+54"/>
         <source>model force at %1 mm</source>
         <translation type="unfinished"></translation>
     </message>

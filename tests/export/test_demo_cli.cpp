@@ -151,7 +151,21 @@ private slots:
     {
         const nbtest::CliResult r = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), demo_});
         QCOMPARE(r.code, 1);
-        QVERIFY(r.err.contains(QStringLiteral("already holds a session")));
+        QVERIFY2(r.err.contains(QStringLiteral("is not empty")), qPrintable(r.err));
+        // A folder without a session/ (an earlier demo's exports, a lab's tables) is kept too:
+        // its session.h5 and tables were replaced.
+        const QString other = dir_.filePath(QStringLiteral("not_a_demo"));
+        QVERIFY(QDir().mkpath(other));
+        {
+            QFile h5(QDir(other).filePath(QStringLiteral("session.h5")));
+            QVERIFY(h5.open(QIODevice::WriteOnly));
+            h5.write("kept");
+        }
+        const nbtest::CliResult again = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), other});
+        QCOMPARE(again.code, 1);
+        QVERIFY2(again.err.contains(other), qPrintable(again.err));
+        QCOMPARE(QFileInfo(QDir(other).filePath(QStringLiteral("session.h5"))).size(), 4);
+        QVERIFY(!QFileInfo::exists(QDir(other).filePath(QStringLiteral("session"))));
     }
 
     void exportEveryFormatFromTheDemoSession()
