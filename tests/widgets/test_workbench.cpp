@@ -124,6 +124,17 @@ void setMotion(nb::MainWindow& w, double velocity, double depth)
 
 }  // namespace
 
+// The window's calibration wizard, opened as the operator opens it once the devices run
+// (nullptr when it does not open).
+static nb::CalibrationWizard* openCalibrationWizard(nb::MainWindow& w)
+{
+    if (!QTest::qWaitForWindowExposed(&w) || !QTest::qWaitFor([&w] { return w.controlPanel()->interlockState().devicesRunning; }, 20000))
+        return nullptr;
+    QTest::mouseClick(w.controlPanel()->button(Control::Calibrate), Qt::LeftButton);
+    auto* wizard = w.findChild<nb::CalibrationWizard*>();
+    return wizard && QTest::qWaitForWindowExposed(wizard) ? wizard : nullptr;
+}
+
 class TestWorkbench : public QObject {
     Q_OBJECT
 private slots:
@@ -308,12 +319,8 @@ private slots:
         std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
         nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
         w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
-        QTest::mouseClick(w.controlPanel()->button(Control::Calibrate), Qt::LeftButton);
-        nb::CalibrationWizard* wizard = w.findChild<nb::CalibrationWizard*>();
+        nb::CalibrationWizard* wizard = openCalibrationWizard(w);
         QVERIFY(wizard);
-        QVERIFY(QTest::qWaitForWindowExposed(wizard));
         // The default masses stop short of the ±10 V input: 0 to 700 g in 50 g steps at the
         // simulated chain's 12.07 mV/g (800 g would saturate).
         const double slope = w.engine()->nominalSlope_V_per_g();
@@ -399,12 +406,8 @@ private slots:
         std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
         nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
         w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QTRY_VERIFY_WITH_TIMEOUT(w.controlPanel()->interlockState().devicesRunning, 20000);
-        QTest::mouseClick(w.controlPanel()->button(Control::Calibrate), Qt::LeftButton);
-        nb::CalibrationWizard* wizard = w.findChild<nb::CalibrationWizard*>();
+        nb::CalibrationWizard* wizard = openCalibrationWizard(w);
         QVERIFY(wizard);
-        QVERIFY(QTest::qWaitForWindowExposed(wizard));
         wizard->setMasses(0.0, 300.0, 50.0);
         const auto measured = [wizard] {
             int n = 0;
