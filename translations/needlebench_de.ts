@@ -5392,7 +5392,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1: Labels ignoriert (%2)</translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="+17"/>
+        <source>%1: its video %2 is missing; the export links none</source>
+        <translation>%1: sein Video %2 fehlt; der Export verknüpft keines</translation>
+    </message>
+    <message>
+        <location line="-122"/>
         <source>%1: label &apos;%2&apos; (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored</source>
         <translation>%1: Label &apos;%2&apos; (%3 s bis %4 s) liegt außerhalb des Laufs (%5 s bis %6 s); ignoriert</translation>
     </message>

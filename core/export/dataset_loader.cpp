@@ -149,6 +149,10 @@ LoadedDataset loadDataset(const QString& dirPath)
         used << name;
         r.name = name;
         r.videoPath = findRunVideo(path, r.run);
+        // A video the run names that is not there: said, as the export then links none (with
+        // --copy-video the export's JSON kept the name of a video it did not carry).
+        if (const auto named = r.run.meta(QStringLiteral("video_file")); r.videoPath.isEmpty() && named && !named->trimmed().isEmpty())
+            out.warnings << nb::TrCore::tr("%1: its video %2 is missing; the export links none").arg(path, named->trimmed());
         d.runs.push_back(std::move(r));
     }
     return out;

@@ -235,6 +235,27 @@ private slots:
     // A run cut off mid-row (the recorder's process died) is read up to its last whole row by
     // every command, saying so: events, fit, labels and sync refused it whole, and only the
     // window could recover it.
+    // A run whose video is gone is exported saying so (with --copy-video the export's JSON kept
+    // the video's name and carried no video, without a word).
+    void anExportSaysWhenARunsVideoIsMissing()
+    {
+        QTemporaryDir dir;
+        const QString run = dir.filePath(QStringLiteral("run_001_sine.csv"));
+        nbtest::CliResult r = TestCli::run({"simulate", "--protocol", "friction", "--cycles", "1", "--frequency-hz", "1", "--out", run});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        // Named in its header, as the window and plan run record it; not there.
+        QFile f(run);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QByteArray text = f.readAll();
+        f.close();
+        text.prepend("# video_file: run_001_sine.avi\n");
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(text);
+        f.close();
+        r = TestCli::run({"export", dir.path(), "--format", "csv", "--out", dir.filePath(QStringLiteral("out")), "--copy-video"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("run_001_sine.avi is missing")), qPrintable(r.err));
+    }
     void aRunCutOffMidRowIsReadToItsLastRow()
     {
         QTemporaryDir dir;
