@@ -142,7 +142,9 @@ SimulatedRunResult simulateRun(const SimulatedRunRequest& s, const devices::RunO
                 return result;
             }
             // An encoder on a full disk fails silently: count what can be read back.
-            cv::VideoCapture check(QFile::encodeName(s.video).toStdString());
+            // Read back as NeedleBench reads every video, through FFmpeg: any backend tried a
+            // file half written on a full disk with GStreamer, whose errors were printed.
+            cv::VideoCapture check(QFile::encodeName(s.video).toStdString(), cv::CAP_FFMPEG);
             const double readable = check.isOpened() ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0.0;
             if (readable < vt.frames - 2) {
                 QFile::remove(s.video);

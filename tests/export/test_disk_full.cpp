@@ -104,6 +104,17 @@ private slots:
         const QFileInfo truth(d.filePath(QStringLiteral("truth.json")));
         QVERIFY2(!truth.exists() || truth.size() > 0, "a 0-byte truth file was left");
         QVERIFY2(!QFileInfo::exists(d.filePath(QStringLiteral("view.avi"))), "a half video was left");
+
+        // A run that fits and a video that does not: said in NeedleBench's words alone (the
+        // read-back of the half-written video went through GStreamer, whose errors were printed).
+        emptyFolder(small);
+        const auto v = runCli({QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("stiffness"), QStringLiteral("--out"),
+                               d.filePath(QStringLiteral("s.csv")), QStringLiteral("--video"), d.filePath(QStringLiteral("s.avi"))});
+        checkClean(v);
+        QCOMPARE(v.code, 1);
+        QVERIFY2(v.err.contains(QStringLiteral("s.avi")), qPrintable(v.err));
+        QVERIFY2(!v.err.contains(QStringLiteral("GStreamer")) && !v.err.contains(QStringLiteral("OpenCV")), qPrintable(v.err));
+        QVERIFY(!QFileInfo::exists(d.filePath(QStringLiteral("s.avi"))));
     }
 
     void realTimeRecordingWarnsBeforeTheDiskIsFull()
