@@ -1149,8 +1149,8 @@ oder ohne Kontakt einbeziehen</translation>
         <location line="+2"/>
         <source>Exported %n file(s) into %1</source>
         <translation>
-            <numerusform>%n Datei(en) nach %1 exportiert</numerusform>
-            <numerusform>%n Datei(en) nach %1 exportiert</numerusform>
+            <numerusform>%n Datei nach %1 exportiert</numerusform>
+            <numerusform>%n Dateien nach %1 exportiert</numerusform>
         </translation>
     </message>
     <message>
@@ -4629,7 +4629,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     <message>
         <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+172"/>
+        <location filename="../app/simulated_run.cpp" line="+174"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -5249,12 +5249,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>interner Fehler: %1</translation>
     </message>
     <message>
-        <location filename="../app/simulated_run.cpp" line="-32"/>
+        <location filename="../app/simulated_run.cpp" line="-34"/>
         <source>interrupted while the video was rendered: %1 and the truth are not written; the run file %2 is whole</source>
         <translation>beim Rendern des Videos unterbrochen: %1 und die Referenzwerte werden nicht geschrieben; die Laufdatei %2 ist vollständig</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
         <translation>%1: nur %2 von %3 Bildern konnten geschrieben werden (Datenträger voll?); entfernt</translation>
     </message>

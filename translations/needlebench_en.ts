@@ -4566,7 +4566,7 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+172"/>
+        <location filename="../app/simulated_run.cpp" line="+174"/>
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5138,12 +5138,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/simulated_run.cpp" line="-32"/>
+        <location filename="../app/simulated_run.cpp" line="-34"/>
         <source>interrupted while the video was rendered: %1 and the truth are not written; the run file %2 is whole</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>%1: only %2 of %3 frames could be written (disk full?); removed</source>
         <translation type="unfinished"></translation>
     </message>
