@@ -302,7 +302,7 @@ struct PictureReading {
 // against a reference, so their sum over a few frames has about the noise of one: a slow
 // needle is judged over a few frames, not left unjudged.
 PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::size_t k, double since_s, double noise_mm_s,
-                              double frameHalf_s, double sum_px = 1.5)
+                              double frameHalf_s, double sum_px = kClearPair_px)
 {
     constexpr int kMaxPairs = 8;
     PictureReading r;

@@ -165,7 +165,7 @@ FrameIndex loadOrBuildFrameIndex(const QString& path, const IndexProgress& progr
             packets.reset();  // decoding below names the problem
         }
     }
-    const bool fromPackets = packets && packets->size() > kLongVideoFrames;
+    const bool fromPackets = packets.has_value();
     FrameIndex index = fromPackets ? std::move(*packets) : buildFrameIndex(path, progress, cancel, listing ? &*listing : nullptr);
     if (progress && fromPackets)
         progress(index.size(), index.size());
