@@ -7,6 +7,7 @@
 #include "devices/acquisition_engine.h"
 #include "devices/sim/imaging_render.h"
 #include "devices/sim/simulated_rig.h"
+#include "video/capture.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -144,8 +145,8 @@ SimulatedRunResult simulateRun(const SimulatedRunRequest& s, const devices::RunO
             // An encoder on a full disk fails silently: count what can be read back.
             // Read back as NeedleBench reads every video, through FFmpeg: any backend tried a
             // file half written on a full disk with GStreamer, whose errors were printed.
-            cv::VideoCapture check(QFile::encodeName(s.video).toStdString(), cv::CAP_FFMPEG);
-            const double readable = check.isOpened() ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0.0;
+            cv::VideoCapture check;
+            const double readable = nb::video::openCapture(check, s.video) ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0.0;
             if (readable < vt.frames - 2) {
                 QFile::remove(s.video);
                 result.error = nb::TrCli::tr("%1: only %2 of %3 frames could be written (disk full?); removed")

@@ -1,4 +1,5 @@
 #include "ffprobe.h"
+#include "capture.h"
 
 #include <QFileInfo>
 #include <QProcess>
@@ -47,7 +48,7 @@ std::optional<FfprobeListing> listVideo(const QString& path)
     // Compact lines, one a section: "stream|index=0|codec_name=h264|…|disposition:attached_pic=0",
     // "packet|stream_index=0|pts_time=0.040000|flags=K_"; a stream listed inside a program
     // (MPEG-TS) comes as "program|stream|…" and again on its own.
-    const auto out = runFfprobe({QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v"),
+    const auto out = runFfprobe(ffprobeReadOptions() + QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-select_streams"), QStringLiteral("v"),
                                  QStringLiteral("-show_entries"),
                                  QStringLiteral("stream=index,codec_name,width,height,avg_frame_rate,r_frame_rate,start_time,has_b_frames"
                                                 ":stream_disposition=attached_pic:packet=stream_index,pts_time,flags"),

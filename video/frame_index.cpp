@@ -1,6 +1,7 @@
 #include "frame_index.h"
 #include "core/tr.h"
 
+#include "capture.h"
 #include "keyframe_probe.h"
 #include "orientation.h"
 #include "video_error.h"
@@ -285,7 +286,7 @@ FrameIndex buildFrameIndex(const QString& path, const IndexProgress& progress, c
 
     cv::VideoCapture cap;
     try {
-        cap.open(path.toStdString(), cv::CAP_FFMPEG);
+        openCapture(cap, path);
     } catch (const cv::Exception& e) {
         throw VideoError(path, nb::TrDevices::tr("cannot open as video: %1").arg(QString::fromStdString(e.what())));
     }

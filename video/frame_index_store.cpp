@@ -21,8 +21,9 @@ constexpr quint32 kMagic = 0x4e424658;  // "NBFX"
 // frames of a two- or three-frame B-frame clip timed (5 kept them all at 0); 7: the frames after a
 // damaged stretch, and the stretches (6 ended the index at the first); 8: pictures made up after
 // damage with times behind the frames before them left out (7 kept them: times out of order), and
-// the stream's reorder depth
-constexpr quint32 kVersion = 8;
+// the stream's reorder depth; 9: an AVI read in the order of its index (8 numbered the frames after
+// a stretch passed over early)
+constexpr quint32 kVersion = 9;
 // Indexes kept at most; the least recently stored go first.
 constexpr int kMaxStored = 300;
 

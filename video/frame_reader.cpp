@@ -1,4 +1,5 @@
 #include "frame_reader.h"
+#include "capture.h"
 #include "orientation.h"
 #include "core/tr.h"
 
@@ -35,7 +36,7 @@ FrameReader::FrameReader(FrameIndex index, int cacheFrames) : index_(std::move(i
 void FrameReader::reopen()
 {
     cap_.release();
-    if (!cap_.open(index_.path.toStdString(), cv::CAP_FFMPEG))
+    if (!openCapture(cap_, index_.path))
         throw VideoError(index_.path, nb::TrDevices::tr("cannot reopen the video (moved or deleted?)"));
     rotation_deg_ = takeRotation(cap_);
     current_ = -1;

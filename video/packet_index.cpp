@@ -1,5 +1,6 @@
 #include "packet_index.h"
 #include "orientation.h"
+#include "capture.h"
 
 #include "ffprobe.h"
 #include "video_error.h"
@@ -60,8 +61,8 @@ std::optional<FrameIndex> buildFrameIndexFromPackets(const QString& path, const 
     std::stable_sort(list.begin(), list.end(), [](const Packet& a, const Packet& b) { return a.pts < b.pts; });
     // The decoder's time of frame 0 (AVI with B-frames reports every frame late by its delay):
     // the reader compares decoded times with the index through it.
-    cv::VideoCapture cap(path.toStdString(), cv::CAP_FFMPEG);
-    if (!cap.isOpened())
+    cv::VideoCapture cap;
+    if (!openCapture(cap, path))
         throw VideoError(path, nb::TrDevices::tr("no frame could be decoded (truncated or corrupt file?)"));
     // A damaged start (the decoder refuses the first packets) is passed over, as the reader does
     // later. Its first frame then is not the first packet's: with times from the packets, the

@@ -442,6 +442,72 @@ private slots:
         QCOMPARE(stored.warnings, index.warnings);
     }
 
+    // A stretch of an AVI overwritten with zeros, chunk headers and all (a bad copy): AVI keeps no
+    // time per chunk, and FFmpeg, reading on, passed over the chunks without refusing any and
+    // numbered every later frame early by them: four frames gone without a word and every frame
+    // after them 0.13 s early (a spurious drift to the run), while a seek found them in their
+    // true places. Read in the order of the file's own index, every frame keeps its time.
+    void zeroedStretchOfAnAviKeepsTheTimesAfterIt_data()
+    {
+        QTest::addColumn<QStringList>("encodeArgs");
+        QTest::newRow("mjpeg") << QStringList{"-c:v", "mjpeg", "-q:v", "5"};
+        QTest::newRow("mpeg4-bframes") << QStringList{"-c:v", "mpeg4", "-g", "30", "-bf", "2", "-q:v", "4"};
+    }
+
+    void zeroedStretchOfAnAviKeepsTheTimesAfterIt()
+    {
+        QFETCH(QStringList, encodeArgs);
+        VideoSpec spec;
+        spec.codes = sequence(150);
+        spec.encodeArgs = encodeArgs;
+        const QString wholeFile = path(QStringLiteral("whole-zeroed.avi")), damagedFile = path(QStringLiteral("zeroed.avi"));
+        QVERIFY(writeVideo(wholeFile, spec).isEmpty());
+        const FrameIndex whole = buildFrameIndex(wholeFile);
+        QCOMPARE(whole.size(), 150);
+        const int zeroed = writeZeroed(wholeFile, damagedFile, 1.49, 1.64);  // frames 45 to 49
+        QVERIFY2(zeroed >= 3 && zeroed <= 8, qPrintable(QString::number(zeroed)));
+
+        const FrameIndex index = buildFrameIndex(damagedFile);
+        const QString said = index.warnings.join(QLatin1Char('\n'));
+        QVERIFY2(index.damaged.size() == 1 && said.contains(QStringLiteral("damaged between")), qPrintable(said));
+        const DamagedSpan& span = index.damaged.front();
+        QVERIFY2(span.after_s >= 1.0 && span.after_s < 1.5 && span.before_s > 1.5 && span.before_s <= 2.0 + 1e-6,
+                 qPrintable(QStringLiteral("damaged between %1 and %2 s").arg(span.after_s).arg(span.before_s)));
+        QCOMPARE(index.frames.back().time_s, whole.frames.back().time_s);
+        QCOMPARE(index.duration_s(), whole.duration_s());
+
+        // Every frame from the next keyframe (60) on shows its own picture at its own time, read
+        // at random and one after another; so does every frame before the stretch.
+        const auto check = [&](const FrameIndex& idx, const QString& how) {
+            FrameReader reader(idx, 4);
+            std::vector<int> order = sequence(idx.size());
+            std::mt19937 rng(5);
+            std::shuffle(order.begin(), order.end(), rng);
+            for (const std::vector<int>& pass : {order, sequence(idx.size())}) {
+                reader.cache().clear();
+                for (int j : pass) {
+                    // ffprobe gives times to the microsecond
+                    const int n = whole.frameAt(idx.frames[std::size_t(j)].time_s + 2e-6);
+                    QVERIFY2(std::abs(idx.frames[std::size_t(j)].time_s - whole.frames[std::size_t(n)].time_s) < 2e-6,
+                             qPrintable(how + QStringLiteral(": frame %1 at %2 s is no frame of the whole file").arg(j).arg(idx.frames[std::size_t(j)].time_s)));
+                    if (n >= 40 && n < 60)
+                        continue;
+                    try {
+                        QCOMPARE(readCode(reader.read(j).image), n);
+                    } catch (const VideoError& e) {
+                        QFAIL(qPrintable(how + QStringLiteral(": frame %1 (picture %2): ").arg(j).arg(n) + e.message()));
+                    }
+                }
+            }
+        };
+        check(index, QStringLiteral("decoded"));
+        // From the packets (a long video's index), the stretch's frames are listed at their times.
+        const auto packets = buildFrameIndexFromPackets(damagedFile);
+        QVERIFY(packets);
+        check(*packets, QStringLiteral("packets"));
+        QVERIFY(std::abs(packets->frames.back().time_s - whole.frames.back().time_s) < 2e-6);
+    }
+
     // The file's first packets damaged (its first keyframe among them): its frames keep their
     // own times. The first readable frame was taken for the start, so every frame came 0.73 s
     // early, the file was called cut off, and the index from the packets (a long video's) failed

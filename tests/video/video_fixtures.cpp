@@ -129,6 +129,30 @@ int writeScratched(const QString& from, const QString& to, double t0_s, double t
     return overwritePackets(from, to, t0_s, t1_s, 0, [](qint64 i) { return char(0xff ^ (i * 7919 % 251)); });
 }
 
+int writeZeroed(const QString& from, const QString& to, double t0_s, double t1_s)
+{
+    QProcess probe;
+    probe.start(QStringLiteral("ffprobe"), {"-v", "error", "-select_streams", "v:0", "-show_entries", "packet=pts_time,pos,size", "-of", "csv=p=0", from});
+    QFile in(from), out(to);
+    if (!probe.waitForFinished(60000) || probe.exitCode() != 0 || !in.open(QIODevice::ReadOnly) || !out.open(QIODevice::WriteOnly))
+        return -1;
+    QByteArray bytes = in.readAll();
+    qint64 first = -1, end = -1;
+    int packets = 0;
+    for (const QByteArray& line : probe.readAllStandardOutput().split('\n')) {
+        const QList<QByteArray> f = line.trimmed().split(',');  // pts_time, size, pos
+        if (f.size() < 3 || f[0].toDouble() < t0_s || f[0].toDouble() > t1_s)
+            continue;
+        const qint64 pos = f[2].toLongLong();
+        first = first < 0 ? pos : std::min(first, pos);
+        end = std::max(end, pos + f[1].toLongLong());
+        ++packets;
+    }
+    for (qint64 i = std::max<qint64>(first, 0); i < end && i < bytes.size(); ++i)
+        bytes[i] = 0;
+    return first >= 0 && out.write(bytes) == bytes.size() ? packets : -1;
+}
+
 int writeScrambled(const QString& from, const QString& to, double t0_s, double t1_s, unsigned seed)
 {
     std::mt19937 rng(seed);

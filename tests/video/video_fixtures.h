@@ -46,6 +46,11 @@ int writeScratched(const QString& from, const QString& to, double t0_s, double t
 // times of packets it lost (bench/sync_probe_matrix.py --damage does the same).
 int writeScrambled(const QString& from, const QString& to, double t0_s, double t1_s, unsigned seed);
 
+// Writes `from` to `to` with every byte from the first video packet shown from `t0_s` on to the end
+// of the last shown by `t1_s` zeroed, headers and all: a stretch of the file overwritten. Returns
+// the packets in it (-1 when ffprobe or a file failed).
+int writeZeroed(const QString& from, const QString& to, double t0_s, double t1_s);
+
 // Codes 0..n-1.
 std::vector<int> sequence(int n);
 
