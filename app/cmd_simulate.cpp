@@ -175,10 +175,12 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
     // As `acquire` takes them: a run of 10^6 s filled the disk.
     if (*f < 0.01 || *f > 5.0)
         return nb::TrCli::tr("--frequency-hz must be in [0.01, 5]");
-    if (*t <= 0.0)
-        return nb::TrCli::tr("--thickness-mm must be positive");
-    if (*m <= 0.0)
-        return nb::TrCli::tr("--max-force-n must be positive");
+    // Within what the rig could hold: a slab of 1e300 mm, or a limit no load cell reaches (acquire's
+    // bounds), ran on to nonsense without a word.
+    if (*t <= 0.0 || *t > s.rig.stage.maxPosition_mm)
+        return nb::TrCli::tr("--thickness-mm must be in (0, %1]").arg(s.rig.stage.maxPosition_mm);
+    if (*m < 0.01 || *m > 20.0)
+        return nb::TrCli::tr("--max-force-n must be in [0.01, 20]");
     const int cycles = p.value(o.cycles).toInt(&ok);
     if (!ok || cycles < 1 || cycles > 1000)
         return nb::TrCli::tr("--cycles must be a whole number in [1, 1000]");
@@ -207,6 +209,8 @@ QString readOptions(const QCommandLineParser& p, const OptionSet& o, SimulatedRu
         auto b = number(p, o.bone, &error);
         if (!b)
             return error;
+        if (*b <= 0.0 || *b > s.rig.stage.maxPosition_mm)
+            return nb::TrCli::tr("--bone-depth-mm must be in (0, %1]").arg(s.rig.stage.maxPosition_mm);
         s.rig.boneDepth_mm = *b;
     }
     if (p.isSet(o.stopAt)) {
@@ -283,14 +287,17 @@ int cmdSimulate(const QStringList& args, Io io)
     QElapsedTimer sinceProgress;
     sinceProgress.start();
     SpaceWatch space(s.out);
+    std::uint64_t lastReported = ~std::uint64_t{0};
     run.onTick = [&](const devices::EngineStatus& st) {
         if (st.recording)
             if (const QString w = space.check(); !w.isEmpty()) {
                 io.err << "needlebench simulate: " << w << '\n';
                 io.err.flush();
             }
-        if (st.recording && s.rig.realtime && sinceProgress.elapsed() >= 20) {
+        // The engine's status moves on every 40 ms or so: a line for each new one, not each tick.
+        if (st.recording && s.rig.realtime && sinceProgress.elapsed() >= 20 && st.samples != lastReported) {
             sinceProgress.restart();
+            lastReported = st.samples;
             io.out << "progress run_time_s=" << QString::number(st.runTime_s, 'f', 4) << " samples=" << st.samples << '\n';
             io.out.flush();
         }

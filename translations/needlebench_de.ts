@@ -3222,7 +3222,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+124"/>
+        <location filename="../app/cmd_simulate.cpp" line="+128"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
@@ -3233,7 +3233,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location filename="../app/cmd_acquire.cpp" line="+27"/>
-        <location filename="../app/cmd_simulate.cpp" line="+99"/>
+        <location filename="../app/cmd_simulate.cpp" line="+102"/>
         <source>recording failed: %1; the run file keeps %2 whole rows</source>
         <translation>Aufzeichnung fehlgeschlagen: %1; die Laufdatei behält %2 vollständige Zeilen</translation>
     </message>
@@ -4157,7 +4157,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-280"/>
+        <location filename="../app/cmd_simulate.cpp" line="-287"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -4299,22 +4299,32 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--frequency-hz muss in [0.01, 5] liegen</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
+        <source>--thickness-mm must be in (0, %1]</source>
+        <translation>--thickness-mm muss in (0, %1] liegen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--max-force-n must be in [0.01, 20]</source>
+        <translation>--max-force-n muss in [0.01, 20] liegen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>--cycles must be a whole number in [1, 1000]</source>
         <translation>--cycles muss eine ganze Zahl in [1, 1000] sein</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+27"/>
+        <source>--bone-depth-mm must be in (0, %1]</source>
+        <translation>--bone-depth-mm muss in (0, %1] liegen</translation>
+    </message>
+    <message>
+        <location line="+111"/>
         <source>the run did not end by itself: no truth or video is written for it</source>
         <translation>der Lauf endete nicht von selbst: für ihn werden keine Referenzwerte und kein Video geschrieben</translation>
     </message>
     <message>
-        <location line="-138"/>
-        <source>--thickness-mm must be positive</source>
-        <translation>--thickness-mm muss positiv sein</translation>
-    </message>
-    <message>
-        <location line="-123"/>
+        <location line="-268"/>
         <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
         <translation>das Video beginnt so lange vor der Aufnahme; negativ: nach ihrem Beginn (-600 bis 600, Standard 0)</translation>
     </message>
@@ -4324,12 +4334,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--video-offset-s erwartet Sekunden zwischen -600 und 600</translation>
     </message>
     <message>
-        <location line="+64"/>
-        <source>--max-force-n must be positive</source>
-        <translation>--max-force-n muss positiv sein</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+78"/>
         <source>--stick-band-mm-s must be in (0, 50]</source>
         <translation>--stick-band-mm-s muss in (0, 50] liegen</translation>
     </message>
@@ -4344,7 +4349,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--force-noise-n muss in [0, 1] liegen</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>--slow-after-puncture must be in (0, %1] mm/s</source>
         <translation>--slow-after-puncture muss in (0, %1] mm/s liegen</translation>
     </message>
@@ -4629,7 +4634,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     <message>
         <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+174"/>
+        <location filename="../app/simulated_run.cpp" line="+175"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -7300,8 +7305,8 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+280"/>
-        <location filename="../video/packet_index.cpp" line="+20"/>
+        <location filename="../video/frame_index.cpp" line="+281"/>
+        <location filename="../video/packet_index.cpp" line="+21"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
     </message>
@@ -7387,7 +7392,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Zeitstempel der Bilder steigen nicht an: Bilder werden durch Dekodieren vom Anfang erreicht</translation>
     </message>
     <message>
-        <location filename="../video/frame_reader.cpp" line="+17"/>
+        <location filename="../video/frame_reader.cpp" line="+18"/>
         <source>the video has no indexed frames</source>
         <translation>das Video hat keine indizierten Bilder</translation>
     </message>

@@ -3214,7 +3214,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+124"/>
+        <location filename="../app/cmd_simulate.cpp" line="+128"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3225,7 +3225,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location filename="../app/cmd_acquire.cpp" line="+27"/>
-        <location filename="../app/cmd_simulate.cpp" line="+99"/>
+        <location filename="../app/cmd_simulate.cpp" line="+102"/>
         <source>recording failed: %1; the run file keeps %2 whole rows</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4102,7 +4102,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-280"/>
+        <location filename="../app/cmd_simulate.cpp" line="-287"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4244,22 +4244,32 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
+        <source>--thickness-mm must be in (0, %1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--max-force-n must be in [0.01, 20]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>--cycles must be a whole number in [1, 1000]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+27"/>
+        <source>--bone-depth-mm must be in (0, %1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+111"/>
         <source>the run did not end by itself: no truth or video is written for it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-138"/>
-        <source>--thickness-mm must be positive</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-123"/>
+        <location line="-268"/>
         <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4269,12 +4279,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+64"/>
-        <source>--max-force-n must be positive</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+78"/>
         <source>--stick-band-mm-s must be in (0, 50]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4289,7 +4294,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>--slow-after-puncture must be in (0, %1] mm/s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4566,7 +4571,7 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location line="+20"/>
         <location filename="../app/plan_runner.cpp" line="-27"/>
-        <location filename="../app/simulated_run.cpp" line="+174"/>
+        <location filename="../app/simulated_run.cpp" line="+175"/>
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7189,8 +7194,8 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+280"/>
-        <location filename="../video/packet_index.cpp" line="+20"/>
+        <location filename="../video/frame_index.cpp" line="+281"/>
+        <location filename="../video/packet_index.cpp" line="+21"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7276,7 +7281,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../video/frame_reader.cpp" line="+17"/>
+        <location filename="../video/frame_reader.cpp" line="+18"/>
         <source>the video has no indexed frames</source>
         <translation type="unfinished"></translation>
     </message>

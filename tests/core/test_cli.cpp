@@ -226,6 +226,12 @@ private slots:
         // Runs that would never end (10^6 s) are refused, by the command and by a plan.
         QCOMPARE(TestCli::run({"simulate", "--protocol", "friction", "--frequency-hz", "1e-6", "--out", fresh}).code, 2);
         QCOMPARE(TestCli::run({"simulate", "--protocol", "friction", "--cycles", "100000", "--out", fresh}).code, 2);
+        // So are a rig that could not be (a limit no load cell reaches, a slab or bone beyond the stage's travel).
+        for (const QStringList& bad : {QStringList{"--max-force-n", "1e300"}, QStringList{"--max-force-n", "0.001"}, QStringList{"--thickness-mm", "1e300"},
+                                       QStringList{"--bone-depth-mm", "-1"}, QStringList{"--bone-depth-mm", "1e9"}}) {
+            const nbtest::CliResult r = TestCli::run(QStringList{"simulate", "--protocol", "friction", "--out", fresh} + bad);
+            QVERIFY2(r.code == 2 && r.err.contains(bad.front()), qPrintable(bad.join(QLatin1Char(' ')) + QStringLiteral(": exit %1: ").arg(r.code) + r.err));
+        }
         const nbtest::CliResult plan = TestCli::run({"plan", "new", "--template", "friction", "--out", dir.filePath(QStringLiteral("p.json")),
                                                      "--levels", "frequency_hz=1e-6"});
         QVERIFY2(plan.code == 2 && plan.err.contains(QStringLiteral("0.01")), qPrintable(plan.err));

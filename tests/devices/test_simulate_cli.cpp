@@ -152,6 +152,7 @@ private slots:
         QVERIFY(p.waitForStarted());
         static const QRegularExpression progress(QStringLiteral("progress run_time_s=([0-9.]+)"));
         double lastProgress = -1.0;
+        QSet<QString> progressLines;
         QByteArray buffer;
         while (lastProgress < 1.5) {
             QVERIFY2(p.state() == QProcess::Running || p.bytesAvailable() > 0, "simulate ended early");
@@ -159,9 +160,14 @@ private slots:
             buffer += p.readAllStandardOutput();
             qsizetype nl;
             while ((nl = buffer.indexOf('\n')) >= 0) {
-                const auto m = progress.match(QString::fromUtf8(buffer.left(nl)));
-                if (m.hasMatch())
+                const QString line = QString::fromUtf8(buffer.left(nl));
+                const auto m = progress.match(line);
+                if (m.hasMatch()) {
                     lastProgress = m.captured(1).toDouble();
+                    // Each line once (every one came twice: a tick saw the engine's last status again).
+                    QVERIFY2(!progressLines.contains(line), qPrintable(line));
+                    progressLines.insert(line);
+                }
                 buffer.remove(0, nl + 1);
             }
         }
