@@ -191,6 +191,16 @@ int fitStiffnessCommand(const QStringList& args, Io io)
         if (!labelFiles.isEmpty()) {
             const QStringList reads{QStringLiteral("contact"), QStringLiteral("puncture")};
             const Labels marks = readLabelsForFit(labelFiles[f], reads, reads + QStringList{QStringLiteral("relaxation"), QStringLiteral("internal puncture")}, false, io);
+            // An event the file does not mark is detected in the force, as without it: said, so that
+            // a labels file of another run (or one without events) is not taken for the operator's.
+            QStringList unmarked;
+            for (const QString& name : reads)
+                if (std::none_of(marks.begin(), marks.end(), [&](const Label& l) { return l.isPoint() && l.label.compare(name, Qt::CaseInsensitive) == 0; }))
+                    unmarked << name;
+            if (!unmarked.isEmpty())
+                io.err << nb::TrCli::tr("warning: %1 marks no %2 for %3: found in the force instead")
+                              .arg(labelFiles[f], unmarked.join(nb::TrCli::tr(" or ")), path)
+                       << '\n';
             // Detection's error names the run, a label's the labels file.
             try {
                 events.push_back(eventsWithLabels(run, marks));

@@ -3242,7 +3242,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location filename="../app/cmd_events.cpp" line="+45"/>
         <location filename="../app/cmd_fit.cpp" line="+113"/>
         <location line="+49"/>
-        <location line="+136"/>
+        <location line="+146"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
         <location line="+295"/>
@@ -3285,7 +3285,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-260"/>
+        <location filename="../app/cmd_fit.cpp" line="-270"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
@@ -3711,7 +3711,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+20"/>
+        <source>warning: %1 marks no %2 for %3: found in the force instead</source>
+        <translation>Warnung: %1 markiert für %3 kein %2: stattdessen aus der Kraft bestimmt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> or </source>
+        <translation> oder </translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>stiffness f = a1*x + a2*x^2, x = depth past contact [mm]
 </source>
         <translation>Steifigkeit f = a1*x + a2*x^2, x = Tiefe nach dem Kontakt [mm]

@@ -140,6 +140,7 @@ private slots:
                             QStringLiteral("--labels"), path("ins1.labels.csv"), QStringLiteral("--labels"),
                             path("ins1.labels.csv"), QStringLiteral("--json")});
         QCOMPARE(r.code, 0);
+        QVERIFY2(!r.err.contains(QStringLiteral("marks no")), qPrintable(r.err));
         const QJsonObject l = r.json()[QStringLiteral("runs")].toArray()[0].toObject();
         QVERIFY2(std::fabs(l[QStringLiteral("contact_mm")].toDouble() - 5.5) < 0.005, qPrintable(r.out));
         QVERIFY(std::fabs(l[QStringLiteral("puncture_mm")].toDouble() - d[QStringLiteral("puncture_mm")].toDouble()) < 0.02);
@@ -153,6 +154,15 @@ private slots:
         QCOMPARE(late.code, 1);
         QVERIFY2(late.err.contains(QStringLiteral("late.labels.csv")) && late.err.contains(QStringLiteral("outside the run")),
                  qPrintable(late.err));
+        // A labels file that marks neither event (a friction run's phases) is said to leave them to
+        // detection; it was taken without a word.
+        writeLabelsFile(path("phases.labels.csv"), {{QStringLiteral("phases"), QStringLiteral("a"), 0.1, 0.5, {}}});
+        const auto none = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), QStringLiteral("--labels"),
+                               path("phases.labels.csv"), QStringLiteral("--json")});
+        QCOMPARE(none.code, 0);
+        QVERIFY2(none.err.contains(QStringLiteral("phases.labels.csv marks no contact or puncture")) && none.err.contains(QStringLiteral("ins1.csv")),
+                 qPrintable(none.err));
+        QCOMPARE(none.json()[QStringLiteral("runs")].toArray()[0].toObject()[QStringLiteral("contact_mm")].toDouble(), d[QStringLiteral("contact_mm")].toDouble());
         const auto count = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), path("ins2.csv"),
                                 QStringLiteral("--labels"), path("ins1.labels.csv")});
         QCOMPARE(count.code, 2);
