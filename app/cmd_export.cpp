@@ -243,6 +243,15 @@ int cmdExport(const QStringList& args, Io io)
     }
     finished = true;
     io.out << nb::TrCli::tr("exported %1 runs from %2 as %3: %4 files").arg(d.runs.size()).arg(dir, fmt).arg(written.size()) << '\n';
+    // A run the session lists and the export lacks fails the command, whatever it wrote: a
+    // script exporting a day's session went on with most runs skipped, on exit status 0.
+    if (!loaded.runsLeftOut.isEmpty()) {
+        io.err << "needlebench export: "
+               << nb::TrCli::tr("%n run(s) of the session left out (named above): %1", nullptr, int(loaded.runsLeftOut.size()))
+                      .arg(QStringList(loaded.runsLeftOut.mid(0, 3)).join(QStringLiteral(", ")) + (loaded.runsLeftOut.size() > 3 ? QStringLiteral(", …") : QString()))
+               << '\n';
+        return Failure;
+    }
     return Ok;
 }
 

@@ -3402,6 +3402,14 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <source>--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.</source>
         <translation>--out %1 existiert und ist keine HDF5-Datei (eine Laufdatei?); sie bleibt erhalten. Geben Sie eine andere Datei an.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+148"/>
+        <source>%n run(s) of the session left out (named above): %1</source>
+        <translation>
+            <numerusform>%n Lauf der Sitzung ausgelassen (oben genannt): %1</numerusform>
+            <numerusform>%n Läufe der Sitzung ausgelassen (oben genannt): %1</numerusform>
+        </translation>
+    </message>
     <message>
         <location filename="../app/cmd_demo.cpp" line="+59"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
@@ -3500,7 +3508,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     <message>
         <location line="+165"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="+15"/>
+        <location filename="../app/cmd_export.cpp" line="-133"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -5392,17 +5400,17 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1: übersprungen, %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: left out, the run is still recording or was cut off before it was closed (export it after it ends; a cut-off run is recovered when its session is opened in the window)</source>
         <translation>%1: ausgelassen, der Lauf zeichnet noch auf oder wurde abgebrochen, bevor er geschlossen war (nach seinem Ende exportieren; ein abgebrochener Lauf wird wiederhergestellt, wenn seine Sitzung im Fenster geöffnet wird)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>%1: skipped, not a run file (%2)</source>
         <translation>%1: übersprungen, keine Laufdatei (%2)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1: labels ignored (%2)</source>
         <translation>%1: Labels ignoriert (%2)</translation>
     </message>
@@ -5412,7 +5420,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1: sein Video %2 fehlt; der Export verknüpft keines</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-127"/>
         <source>%1: label &apos;%2&apos; (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored</source>
         <translation>%1: Label &apos;%2&apos; (%3 s bis %4 s) liegt außerhalb des Laufs (%5 s bis %6 s); ignoriert</translation>
     </message>

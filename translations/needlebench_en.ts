@@ -3388,6 +3388,14 @@ Stop the stage now (emergency stop) and quit?</source>
         <source>--out %1 exists and is not an HDF5 file (a run file?); it is kept. Name another file.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+148"/>
+        <source>%n run(s) of the session left out (named above): %1</source>
+        <translation>
+            <numerusform>%n run of the session left out (named above): %1</numerusform>
+            <numerusform>%n runs of the session left out (named above): %1</numerusform>
+        </translation>
+    </message>
     <message>
         <location filename="../app/cmd_demo.cpp" line="+59"/>
         <source>Simulate, label, fit and export a short session in one go.</source>
@@ -3486,7 +3494,7 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location line="+165"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="+15"/>
+        <location filename="../app/cmd_export.cpp" line="-133"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5281,17 +5289,17 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: left out, the run is still recording or was cut off before it was closed (export it after it ends; a cut-off run is recovered when its session is opened in the window)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>%1: skipped, not a run file (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1: labels ignored (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5301,7 +5309,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-127"/>
         <source>%1: label &apos;%2&apos; (%3 s to %4 s) lies outside the run (%5 s to %6 s); ignored</source>
         <translation type="unfinished"></translation>
     </message>

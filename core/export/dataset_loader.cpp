@@ -87,17 +87,20 @@ LoadedDataset loadDataset(const QString& dirPath)
                 d.metadata.set(QStringLiteral("calibration_r2"), cal->fit.r2);
             }
             for (const RunEntry& e : s.runs()) {
-                if (e.state == RunState::Unreadable)
+                if (e.state == RunState::Unreadable) {
                     out.warnings << nb::TrCore::tr("%1: skipped, %2").arg(e.path, e.detail);
-                else if (e.endReason.isEmpty())
+                    out.runsLeftOut << e.path;
+                } else if (e.endReason.isEmpty()) {
                     // No footer: a run still recording (exported half, it looked complete) or
                     // one cut off by a crash, which opening the session in the window recovers.
                     out.warnings << nb::TrCore::tr("%1: left out, the run is still recording or was cut off before it was closed "
                                                    "(export it after it ends; a cut-off run is recovered when its session is "
                                                    "opened in the window)")
                                         .arg(e.path);
-                else
+                    out.runsLeftOut << e.path;
+                } else {
                     runPaths << e.path;
+                }
             }
         } catch (const SessionError& e) {
             out.warnings << e.message();
@@ -120,6 +123,8 @@ LoadedDataset loadDataset(const QString& dirPath)
                 out.warnings << w;
         } catch (const RunFileError& e) {
             out.warnings << nb::TrCore::tr("%1: skipped, not a run file (%2)").arg(path, e.message());
+            if (fromSession)
+                out.runsLeftOut << path;
             continue;
         }
         // The video and sync the operator set in the window (videos.json) win over the file's.

@@ -12,6 +12,7 @@ namespace nb {
 struct LoadedDataset {
     Dataset dataset;
     QStringList warnings;  // one line per skipped file or ignored problem, naming the file
+    QStringList runsLeftOut;  // runs the session lists that are not in the dataset (unreadable, still recording)
 };
 
 

@@ -5,6 +5,7 @@
 #include <QFileInfo>
 #include <QTemporaryDir>
 #include "support/needlebench_cli.h"
+#include "core/session.h"
 
 #include <QtTest>
 
@@ -245,6 +246,27 @@ private slots:
     // the video's name and carried no video, without a word).
     void anExportSaysWhenARunsVideoIsMissing()
     {
+        {
+            // A run the session lists that the export leaves out (still recording, or cut off)
+            // fails the command, after the others are written: a script went on on exit status 0.
+            QTemporaryDir dir;
+            const QString sessionDir = dir.filePath(QStringLiteral("s")), out = dir.filePath(QStringLiteral("out"));
+            nb::Session::create(sessionDir, {});
+            for (const QString& name : {QStringLiteral("run_001_linear.csv"), QStringLiteral("run_002_linear.csv")}) {
+                QFile f(QDir(sessionDir).filePath(name));
+                QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+                f.write("# format: needlebench-run 1\n# motion: linear\ntime_s,position_mm,force_N\n");
+                for (int i = 0; i < 50; ++i)
+                    f.write(QStringLiteral("%1,%2,%3\n").arg(i * 0.001).arg(i * 0.01).arg(i * 0.002).toUtf8());
+                if (name.startsWith(QLatin1String("run_001")))
+                    f.write("# end_reason: completed\n");
+            }
+            const nbtest::CliResult r = TestCli::run({"export", sessionDir, "--format", "csv", "--out", out});
+            QVERIFY2(r.code == 1 && r.err.contains(QStringLiteral("1 run of the session left out")) && r.err.contains(QStringLiteral("run_002_linear.csv")),
+                     qPrintable(QStringLiteral("exit %1: ").arg(r.code) + r.err));
+            QVERIFY(QFileInfo::exists(QDir(out).filePath(QStringLiteral("run_001_linear.csv"))));
+        }
+
         QTemporaryDir dir;
         const QString run = dir.filePath(QStringLiteral("run_001_sine.csv"));
         nbtest::CliResult r = TestCli::run({"simulate", "--protocol", "friction", "--cycles", "1", "--frequency-hz", "1", "--out", run});
