@@ -68,6 +68,34 @@ Labels readLabelsForFit(const QString& path, const QStringList& reads, const QSt
     return std::move(read.labels);
 }
 
+// A run named twice (a shell glob, and the file again) was fitted twice, and the pooled fit and
+// the mean of runs counted it so (one run three times: "± 0"). Each file is fitted once, saying
+// so; returns the places of the files kept, the first of each.
+QList<qsizetype> eachRunOnce(const QStringList& files, Io io)
+{
+    QList<qsizetype> kept;
+    QStringList seen;
+    for (qsizetype i = 0; i < files.size(); ++i) {
+        const QFileInfo fi(files[i]);
+        const QString key = fi.exists() ? fi.canonicalFilePath() : fi.absoluteFilePath();
+        if (seen.contains(key)) {
+            io.err << nb::TrCli::tr("warning: %1 is given more than once; it is fitted once").arg(files[i]) << '\n';
+            continue;
+        }
+        seen << key;
+        kept << i;
+    }
+    return kept;
+}
+
+QStringList pick(const QStringList& list, const QList<qsizetype>& at)
+{
+    QStringList out;
+    for (qsizetype i : at)
+        out << list[i];
+    return out;
+}
+
 template <typename F>
 auto onFile(const QString& path, F&& f)
 {
@@ -171,8 +199,8 @@ int fitStiffnessCommand(const QStringList& args, Io io)
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("fit stiffness"), args, io, 1, -1, &code))
         return code;
-    const QStringList files = parser.positionalArguments();
-    const QStringList labelFiles = parser.values(labels);
+    QStringList files = parser.positionalArguments();
+    QStringList labelFiles = parser.values(labels);
     if (!labelFiles.isEmpty() && labelFiles.size() != files.size()) {
         io.err << "needlebench fit stiffness: "
                << nb::TrCli::tr("%1 label files for %2 runs; give --labels once per run, in the runs' order\n")
@@ -181,6 +209,10 @@ int fitStiffnessCommand(const QStringList& args, Io io)
                << nb::TrCli::tr("Usage: needlebench fit stiffness RUN.csv... [--labels FILE]... [--json]\n");
         return Usage;
     }
+    const QList<qsizetype> once = eachRunOnce(files, io);
+    files = pick(files, once);
+    if (!labelFiles.isEmpty())
+        labelFiles = pick(labelFiles, once);
     std::vector<InsertionEvents> events;
     std::vector<StiffnessSegment> segments;
     for (qsizetype f = 0; f < files.size(); ++f) {
@@ -359,7 +391,7 @@ int fitFrictionCommand(const QStringList& args, Io io)
         else
             return usage(nb::TrCli::tr("--band-m-s: '%1' is not a positive number").arg(parser.value(band)));
     }
-    const QStringList files = parser.positionalArguments();
+    const QStringList files = pick(parser.positionalArguments(), eachRunOnce(parser.positionalArguments(), io));
     if (parser.isSet(labels) && files.size() != 1)
         return usage(nb::TrCli::tr("--labels applies to a single run; give one run per call"));
     if (parser.isSet(tissueTrace) && files.size() != 1)

@@ -3240,9 +3240,9 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+45"/>
-        <location filename="../app/cmd_fit.cpp" line="+113"/>
+        <location filename="../app/cmd_fit.cpp" line="+141"/>
         <location line="+49"/>
-        <location line="+146"/>
+        <location line="+150"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
         <location line="+295"/>
@@ -3285,7 +3285,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-270"/>
+        <location filename="../app/cmd_fit.cpp" line="-302"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
@@ -3666,7 +3666,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
+        <source>warning: %1 is given more than once; it is fitted once</source>
+        <translation>Warnung: %1 ist mehrfach angegeben; angepasst wird es einmal</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>%1: the fit gave no finite result (forces or positions out of any measurable range?)</source>
         <translation>%1: die Anpassung ergab kein endliches Ergebnis (Kräfte oder Positionen außerhalb jedes messbaren Bereichs?)</translation>
     </message>
@@ -3719,7 +3724,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>warning: %1 marks no %2 for %3: found in the force instead</source>
         <translation>Warnung: %1 markiert für %3 kein %2: stattdessen aus der Kraft bestimmt</translation>
     </message>

@@ -3232,9 +3232,9 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
         <location filename="../app/cmd_events.cpp" line="+45"/>
-        <location filename="../app/cmd_fit.cpp" line="+113"/>
+        <location filename="../app/cmd_fit.cpp" line="+141"/>
         <location line="+49"/>
-        <location line="+146"/>
+        <location line="+150"/>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
         <location line="+295"/>
@@ -3275,7 +3275,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../app/cmd_fit.cpp" line="-270"/>
+        <location filename="../app/cmd_fit.cpp" line="-302"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
         <location filename="../app/cmd_sync.cpp" line="+65"/>
@@ -3650,7 +3650,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
+        <source>warning: %1 is given more than once; it is fitted once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>%1: the fit gave no finite result (forces or positions out of any measurable range?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3699,7 +3704,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>warning: %1 marks no %2 for %3: found in the force instead</source>
         <translation type="unfinished"></translation>
     </message>

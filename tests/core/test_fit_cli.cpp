@@ -163,6 +163,15 @@ private slots:
         QVERIFY2(none.err.contains(QStringLiteral("phases.labels.csv marks no contact or puncture")) && none.err.contains(QStringLiteral("ins1.csv")),
                  qPrintable(none.err));
         QCOMPARE(none.json()[QStringLiteral("runs")].toArray()[0].toObject()[QStringLiteral("contact_mm")].toDouble(), d[QStringLiteral("contact_mm")].toDouble());
+        // A run named twice is fitted once, saying so (the pooled fit and the mean counted it twice).
+        const auto twice = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), dir_.path() + QStringLiteral("/./ins1.csv"),
+                                QStringLiteral("--labels"), path("ins1.labels.csv"), QStringLiteral("--labels"), path("late.labels.csv"), QStringLiteral("--json")});
+        QVERIFY2(twice.code == 0 && twice.err.contains(QStringLiteral("more than once")), qPrintable(twice.err));
+        QCOMPARE(twice.json()[QStringLiteral("runs")].toArray().size(), 1);
+        const auto frictionTwice = run({QStringLiteral("fit"), QStringLiteral("friction"), dir_.filePath(QStringLiteral("fr_0.2_0.csv")),
+                                        dir_.filePath(QStringLiteral("fr_0.2_0.csv")), QStringLiteral("--thickness-mm"), QStringLiteral("20"), QStringLiteral("--json")});
+        QVERIFY2(frictionTwice.code == 0 && frictionTwice.err.contains(QStringLiteral("more than once")), qPrintable(frictionTwice.err));
+        QCOMPARE(frictionTwice.json()[QStringLiteral("runs")].toArray().size(), 1);
         const auto count = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), path("ins2.csv"),
                                 QStringLiteral("--labels"), path("ins1.labels.csv")});
         QCOMPARE(count.code, 2);
