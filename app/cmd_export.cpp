@@ -170,6 +170,17 @@ int cmdExport(const QStringList& args, Io io)
             kept->release();
         else if (kept && kept->restore(written))
             io.err << nb::TrCli::tr("the earlier export in %1 is as it was").arg(target) << '\n';
+        // A fresh export that fails half-way takes its files away: the runs written before a full
+        // disk stopped it looked like a whole export of fewer runs. Files of the user's that
+        // --overwrite replaced are not ours to take.
+        if (!finished && !kept) {
+            int removed = 0;
+            for (const QString& f : written)
+                if (!inTheWay.other.contains(f) && QFile::remove(f))
+                    ++removed;
+            if (removed > 0)
+                io.err << nb::TrCli::tr("the %n file(s) this export had written are removed", nullptr, removed) << '\n';
+        }
         if (!finished)
             removeEmptyFolders(made);
     });

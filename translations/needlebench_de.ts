@@ -3403,7 +3403,15 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--out %1 existiert und ist keine HDF5-Datei (eine Laufdatei?); sie bleibt erhalten. Geben Sie eine andere Datei an.</translation>
     </message>
     <message numerus="yes">
-        <location line="+148"/>
+        <location line="+80"/>
+        <source>the %n file(s) this export had written are removed</source>
+        <translation>
+            <numerusform>die %n Datei, die dieser Export geschrieben hatte, ist entfernt</numerusform>
+            <numerusform>die %n Dateien, die dieser Export geschrieben hatte, sind entfernt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+79"/>
         <source>%n run(s) of the session left out (named above): %1</source>
         <translation>
             <numerusform>%n Lauf der Sitzung ausgelassen (oben genannt): %1</numerusform>
@@ -3508,7 +3516,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     <message>
         <location line="+165"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="-133"/>
+        <location filename="../app/cmd_export.cpp" line="-144"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -3619,7 +3627,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>der frühere Export in %1 ist unverändert</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+19"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation>Warnung: %1 entfernt, von einem nicht beendeten Export zurückgelassen</translation>
     </message>

@@ -3389,7 +3389,15 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+148"/>
+        <location line="+80"/>
+        <source>the %n file(s) this export had written are removed</source>
+        <translation>
+            <numerusform>the %n file this export had written is removed</numerusform>
+            <numerusform>the %n files this export had written are removed</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+79"/>
         <source>%n run(s) of the session left out (named above): %1</source>
         <translation>
             <numerusform>%n run of the session left out (named above): %1</numerusform>
@@ -3494,7 +3502,7 @@ Stop the stage now (emergency stop) and quit?</source>
     <message>
         <location line="+165"/>
         <location line="+4"/>
-        <location filename="../app/cmd_export.cpp" line="-133"/>
+        <location filename="../app/cmd_export.cpp" line="-144"/>
         <source>warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3605,7 +3613,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+19"/>
         <source>warning: removed %1, left by an export that did not finish</source>
         <translation type="unfinished"></translation>
     </message>

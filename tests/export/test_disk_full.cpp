@@ -165,6 +165,23 @@ private slots:
             QVERIFY2(!QFileInfo::exists(QDir(tiny).filePath(QStringLiteral("out"))), "the folder made for the export, left empty");
             emptyFolder(tiny);
         }
+
+        // Small runs first, written whole, then one the disk cannot take: the small ones' files
+        // are taken away with the folder. They were left, looking like a whole export of fewer runs.
+        for (int k = 0; k < 3; ++k) {
+            QFile f(QDir(session.path()).filePath(QStringLiteral("run0%1.csv").arg(k)));
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+            f.write("# format: needlebench-run 1\n# motion: linear\ntime_s,position_mm,force_N\n");
+            for (int i = 0; i < 20; ++i)
+                f.write(QStringLiteral("%1,%2,%3\n").arg(i * 0.001).arg(i * 0.01).arg(i * 0.002).toUtf8());
+            f.write("# end_reason: completed\n");
+        }
+        const QString out = QDir(tiny).filePath(QStringLiteral("out"));
+        const auto r = runCli({QStringLiteral("export"), session.path(), QStringLiteral("--format"), QStringLiteral("csv"), QStringLiteral("--out"), out});
+        checkClean(r);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.out.contains(QStringLiteral("[4/4] run1")) && r.err.contains(QStringLiteral("written are removed")), qPrintable(r.out + r.err));
+        QVERIFY2(!QFileInfo::exists(out), qPrintable(QDir(out).entryList(QDir::Files).join(QLatin1Char(' '))));
     }
 
     // An export over an earlier one that fails half-way leaves the earlier one as it was: it left
