@@ -1,5 +1,6 @@
 #include "calibration.h"
 #include "core/tr.h"
+#include "core/spreadsheet_separator.h"
 
 #include "fit_error.h"
 #include "models.h"
@@ -83,6 +84,8 @@ std::vector<CalibrationPoint> readCalibrationFile(const QString& path)
             haveHeader = true;
             massCol = int(f.indexOf(QLatin1String("mass_g")));
             voltCol = int(f.indexOf(QLatin1String("voltage_V")));
+            if (const QString problem = otherSeparatorProblem(line, QStringLiteral("mass_g")); !problem.isEmpty())
+                throw RunFileError(path, i + 1, problem);
             if (massCol < 0 || voltCol < 0)
                 throw RunFileError(path, i + 1,
                                    nb::TrCore::tr("header needs columns mass_g and voltage_V"));

@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include "core/spreadsheet_separator.h"
 #include "core/tr.h"
 
 #include "run_file.h"
@@ -80,6 +81,8 @@ LabelsRead readLabels(const QString& path)
             haveHeader = true;
             for (int k = 0; k < 5; ++k)
                 col[k] = int(f.indexOf(QLatin1String(names[k])));
+            if (const QString problem = otherSeparatorProblem(line, QStringLiteral("track")); !problem.isEmpty())
+                throw RunFileError(path, i + 1, problem);
             for (int k = 0; k < 4; ++k)
                 if (col[k] < 0)
                     throw RunFileError(path, i + 1, nb::TrCore::tr("header has no '%1' column").arg(QLatin1String(names[k])));

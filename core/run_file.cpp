@@ -3,6 +3,7 @@
 #include "core/excerpt.h"
 #include "core/tr.h"
 #include "core/save_file.h"
+#include "core/spreadsheet_separator.h"
 
 #include <QSet>
 #include <cerrno>
@@ -162,12 +163,8 @@ RunReadResult parseRunText(const QByteArray& bytes, const QString& name, const R
             // A file saved by a spreadsheet set to a comma-decimal region has its columns
             // split by ';' (or a tab): say so, not only that a column is missing.
             if (names.size() == 1)
-                for (const char separator : {';', '\t'})
-                    if (names.front().split(QLatin1Char(separator)).contains(QLatin1String("time_s")))
-                        throw RunFileError(name, lineNo,
-                                           nb::TrCore::tr("the columns are separated by '%1', not by commas (a spreadsheet saving in a "
-                                                          "comma-decimal language?); save it as CSV with ',' between columns and '.' in numbers")
-                                               .arg(separator == ';' ? QStringLiteral(";") : nb::TrCore::tr("tab")));
+                if (const QString problem = otherSeparatorProblem(names.front(), QStringLiteral("time_s")); !problem.isEmpty())
+                    throw RunFileError(name, lineNo, problem);
             for (const char* req : kRequired)
                 if (!names.contains(QLatin1String(req)))
                     throw RunFileError(name, lineNo,

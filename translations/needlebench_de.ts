@@ -5450,10 +5450,10 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     <message>
         <location line="+2"/>
         <location filename="../core/export/session_hdf5.cpp" line="+308"/>
-        <location filename="../core/labels.cpp" line="+130"/>
+        <location filename="../core/labels.cpp" line="+133"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+333"/>
+        <location filename="../core/run_file.cpp" line="+330"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5802,7 +5802,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die fertige Datei kann nicht an ihren Platz umbenannt werden: %1</translation>
     </message>
     <message>
-        <location filename="../core/calibration.cpp" line="+25"/>
+        <location filename="../core/calibration.cpp" line="+26"/>
         <source>calibration needs at least two points, got %1</source>
         <translation>die Kalibrierung braucht mindestens zwei Punkte, erhalten: %1</translation>
     </message>
@@ -5828,13 +5828,13 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../core/labels.cpp" line="-78"/>
-        <location filename="../core/run_file.cpp" line="-325"/>
+        <location filename="../core/labels.cpp" line="-80"/>
+        <location filename="../core/run_file.cpp" line="-321"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>header needs columns mass_g and voltage_V</source>
         <translation>Kopfzeile braucht die Spalten mass_g und voltage_V</translation>
     </message>
@@ -5854,7 +5854,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>leere Datei (erwartet: Kopfzeile mass_g,voltage_V)</translation>
     </message>
     <message>
-        <location filename="../core/labels.cpp" line="+22"/>
+        <location filename="../core/labels.cpp" line="+24"/>
         <source>header has no &apos;%1&apos; column</source>
         <translation>Kopfzeile hat keine Spalte &apos;%1&apos;</translation>
     </message>
@@ -5899,7 +5899,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Binärdaten, keine Text-Laufdatei</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location filename="../core/spreadsheet_separator.cpp" line="+18"/>
         <source>the columns are separated by &apos;%1&apos;, not by commas (a spreadsheet saving in a comma-decimal language?); save it as CSV with &apos;,&apos; between columns and &apos;.&apos; in numbers</source>
         <translation>die Spalten sind durch &apos;%1&apos; getrennt, nicht durch Kommas (eine Tabellenkalkulation mit Dezimalkomma?); als CSV mit &apos;,&apos; zwischen den Spalten und &apos;.&apos; in Zahlen speichern</translation>
     </message>
@@ -5909,7 +5909,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Tabulator</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../core/run_file.cpp" line="+51"/>
         <source>header has no &apos;%1&apos; column (found: %2)</source>
         <translation>Kopfzeile hat keine Spalte &apos;%1&apos; (gefunden: %2)</translation>
     </message>

@@ -5339,10 +5339,10 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     <message>
         <location line="+2"/>
         <location filename="../core/export/session_hdf5.cpp" line="+308"/>
-        <location filename="../core/labels.cpp" line="+130"/>
+        <location filename="../core/labels.cpp" line="+133"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+333"/>
+        <location filename="../core/run_file.cpp" line="+330"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5691,7 +5691,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/calibration.cpp" line="+25"/>
+        <location filename="../core/calibration.cpp" line="+26"/>
         <source>calibration needs at least two points, got %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5717,13 +5717,13 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../core/labels.cpp" line="-78"/>
-        <location filename="../core/run_file.cpp" line="-325"/>
+        <location filename="../core/labels.cpp" line="-80"/>
+        <location filename="../core/run_file.cpp" line="-321"/>
         <source>cannot open: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>header needs columns mass_g and voltage_V</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5743,7 +5743,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/labels.cpp" line="+22"/>
+        <location filename="../core/labels.cpp" line="+24"/>
         <source>header has no &apos;%1&apos; column</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5788,7 +5788,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location filename="../core/spreadsheet_separator.cpp" line="+18"/>
         <source>the columns are separated by &apos;%1&apos;, not by commas (a spreadsheet saving in a comma-decimal language?); save it as CSV with &apos;,&apos; between columns and &apos;.&apos; in numbers</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5798,7 +5798,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../core/run_file.cpp" line="+51"/>
         <source>header has no &apos;%1&apos; column (found: %2)</source>
         <translation type="unfinished"></translation>
     </message>

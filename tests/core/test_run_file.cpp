@@ -1,6 +1,8 @@
 // The run file format: round trips and every kind of bad input, on real files on disk.
 #include "core/run_file.h"
 #include "core/excerpt.h"
+#include "core/calibration.h"
+#include "core/labels.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -171,6 +173,26 @@ private slots:
         QCOMPARE(e.line(), line);
         QVERIFY2(e.reason().contains(reason), qPrintable(e.message()));
         QVERIFY(e.message().startsWith(path));
+    }
+
+    // The calibration and labels files a comma-decimal spreadsheet saved are said to be that, as
+    // run files are: they were refused for "header needs columns mass_g and voltage_V".
+    void spreadsheetSeparatorsAreNamedInEveryFile()
+    {
+        const QString cal = write(QStringLiteral("cal.csv"), "mass_g;voltage_V\r\n0;0,42\r\n10;0,54\r\n");
+        const QString labels = write(QStringLiteral("run.labels.csv"), "\"track\";\"label\";\"start_s\";\"end_s\";\"comment\"\r\nphases;a;0,5;1,5;\r\n");
+        try {
+            readCalibrationFile(cal);
+            QFAIL("a ';' calibration file was read");
+        } catch (const RunFileError& e) {
+            QVERIFY2(e.message().startsWith(cal) && e.reason().contains(QStringLiteral("separated by ';'")), qPrintable(e.message()));
+        }
+        try {
+            readLabels(labels);
+            QFAIL("a ';' labels file was read");
+        } catch (const RunFileError& e) {
+            QVERIFY2(e.message().startsWith(labels) && e.reason().contains(QStringLiteral("separated by ';'")), qPrintable(e.message()));
+        }
     }
 
     void recoveryDropsOnlyThePartialLastRow()
