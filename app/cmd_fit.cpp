@@ -371,8 +371,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
     FrictionOptions options;
     if (!parser.isSet(thickness))
         return usage(nb::TrCli::tr("--thickness-mm is required"));
-    if (const auto t = positiveNumber(parser.value(thickness)))
+    // Per length of tissue: a slab of 1e9 mm gave coefficients a million times too small, as results.
+    constexpr double kThickestSlab_mm = 1000.0;
+    if (const auto t = positiveNumber(parser.value(thickness)); t && *t <= kThickestSlab_mm)
         options.thickness_mm = *t;
+    else if (t)
+        return usage(nb::TrCli::tr("--thickness-mm: %1 mm is no slab (at most %2 mm)").arg(parser.value(thickness)).arg(kThickestSlab_mm));
     else
         return usage(nb::TrCli::tr("--thickness-mm: '%1' is not a positive number").arg(parser.value(thickness)));
     if (parser.isSet(mass) && parser.isSet(estimate))
@@ -391,11 +395,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
         else
             return usage(nb::TrCli::tr("--band-m-s: '%1' is not a positive number").arg(parser.value(band)));
     }
-    const QStringList files = pick(parser.positionalArguments(), eachRunOnce(parser.positionalArguments(), io));
-    if (parser.isSet(labels) && files.size() != 1)
+    const QStringList named = parser.positionalArguments();
+    if (parser.isSet(labels) && named.size() != 1)
         return usage(nb::TrCli::tr("--labels applies to a single run; give one run per call"));
-    if (parser.isSet(tissueTrace) && files.size() != 1)
+    if (parser.isSet(tissueTrace) && named.size() != 1)
         return usage(nb::TrCli::tr("--tissue-trace applies to a single run; give one run per call"));
+    const QStringList files = pick(named, eachRunOnce(named, io));
     std::optional<TissueMotion> trace;
     if (parser.isSet(tissueTrace)) {
         try {

@@ -2,6 +2,7 @@
 #include "core/disk_space.h"
 #include "core/excerpt.h"
 #include "core/tr.h"
+#include "core/run_plausibility.h"
 #include "core/save_file.h"
 #include "core/spreadsheet_separator.h"
 
@@ -268,20 +269,7 @@ done:
         c.resize(std::min(c.size(), n));
     for (auto& [_, c] : run.text)
         c.resize(std::min(c.size(), n));
-    // A force no needle's load cell reads (a corrupt sample, a unit slip) is kept as written but
-    // said: `events` took 1e308 N for the puncture.
-    constexpr double kNoLoadCellReads_N = 1e4;
-    std::size_t beyond = 0, first = 0;
-    for (std::size_t i = 0; i < run.force_N.size(); ++i)
-        if (std::abs(run.force_N[i]) > kNoLoadCellReads_N && beyond++ == 0)
-            first = i;
-    if (beyond > 0)
-        result.warnings << nb::TrCore::tr("%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? "
-                                          "(%n such sample(s))",
-                                          nullptr, int(std::min<std::size_t>(beyond, INT_MAX)))
-                               .arg(name)
-                               .arg(run.force_N[first], 0, 'g', 4)
-                               .arg(run.time_s[first], 0, 'f', 3);
+    result.warnings << implausibleRun(run, name);
     return result;
 }
 

@@ -3222,7 +3222,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+128"/>
+        <location filename="../app/cmd_simulate.cpp" line="+129"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation>--stop-at erwartet puncture oder puncture:N mit N ≥ 1 (erhalten: „%1“)</translation>
     </message>
@@ -3815,7 +3815,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--thickness-mm ist erforderlich</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>--thickness-mm: %1 mm is no slab (at most %2 mm)</source>
+        <translation>--thickness-mm: %1 mm ist keine Gewebeplatte (höchstens %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>--thickness-mm: &apos;%1&apos; is not a positive number</source>
         <translation>--thickness-mm: &apos;%1&apos; ist keine positive Zahl</translation>
     </message>
@@ -3840,7 +3845,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--labels gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
         <translation>Warnung: %1 enthält über %2 keine Reibungsphase (a, b1, b2, c); die eigene Phasenspalte des Laufs wird verwendet, sonst das Geschwindigkeitsband</translation>
     </message>
@@ -3911,19 +3916,19 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>run</translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-216"/>
         <source>Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels FILE] [--tissue-trace FILE.csv] [--json]
 </source>
         <translation>Aufruf: needlebench fit friction LAUF.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels DATEI] [--tissue-trace DATEI.csv] [--json]
 </translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+35"/>
         <source>--tissue-trace applies to a single run; give one run per call</source>
         <translation>--tissue-trace gilt für einen einzelnen Lauf; geben Sie einen Lauf pro Aufruf an</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+184"/>
         <source>%1Hz (%2 runs)</source>
         <translation>%1 Hz (%2 Läufe)</translation>
     </message>
@@ -4188,7 +4193,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-287"/>
+        <location filename="../app/cmd_simulate.cpp" line="-288"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation>stiffness|internal|friction|prostate</translation>
     </message>
@@ -4330,17 +4335,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--frequency-hz muss in [0.01, 5] liegen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>--thickness-mm must be in (0, %1]</source>
         <translation>--thickness-mm muss in (0, %1] liegen</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>--max-force-n must be in [0.01, 20]</source>
-        <translation>--max-force-n muss in [0.01, 20] liegen</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>--cycles must be a whole number in [1, 1000]</source>
         <translation>--cycles muss eine ganze Zahl in [1, 1000] sein</translation>
     </message>
@@ -4355,7 +4355,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>der Lauf endete nicht von selbst: für ihn werden keine Referenzwerte und kein Video geschrieben</translation>
     </message>
     <message>
-        <location line="-268"/>
+        <location line="-269"/>
         <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
         <translation>das Video beginnt so lange vor der Aufnahme; negativ: nach ihrem Beginn (-600 bis 600, Standard 0)</translation>
     </message>
@@ -4365,7 +4365,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>--video-offset-s erwartet Sekunden zwischen -600 und 600</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+67"/>
+        <source>--max-force-n must be in [0.01, 100]</source>
+        <translation>--max-force-n muss in [0.01, 100] liegen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>--stick-band-mm-s must be in (0, 50]</source>
         <translation>--stick-band-mm-s muss in (0, 50] liegen</translation>
     </message>
@@ -5453,7 +5458,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <location filename="../core/labels.cpp" line="+133"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+330"/>
+        <location filename="../core/run_file.cpp" line="+318"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5829,7 +5834,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     <message>
         <location line="+11"/>
         <location filename="../core/labels.cpp" line="-80"/>
-        <location filename="../core/run_file.cpp" line="-321"/>
+        <location filename="../core/run_file.cpp" line="-308"/>
         <source>cannot open: %1</source>
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
@@ -5966,7 +5971,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>keine Kopfzeile</translation>
     </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location filename="../core/run_plausibility.cpp" line="+24"/>
         <source>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample(s))</source>
         <translation>
             <numerusform>%1: force_N von %2 N bei %3 s liegt jenseits dessen, was ein Nadel-Kraftsensor misst (10 kN): ein beschädigter Messpunkt? (%n solcher Messpunkt)</numerusform>
@@ -5974,7 +5979,17 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         </translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+36"/>
+        <source>%1: force_N stays at %2 N from %3 s to %4 s while the needle moves %5 mm: the sensor or its amplifier saturated there, and the force beyond it is not in the file</source>
+        <translation>%1: force_N bleibt von %3 s bis %4 s bei %2 N, während sich die Nadel %5 mm bewegt: Sensor oder Verstärker waren dort gesättigt, und die Kraft darüber steht nicht in der Datei</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1: position_mm spans only %2 mm: if the positions were written in metres, they are 1000 times too small (position_mm is in millimetres)</source>
+        <translation>%1: position_mm umfasst nur %2 mm: wurden die Positionen in Metern geschrieben, sind sie 1000-mal zu klein (position_mm ist in Millimetern)</translation>
+    </message>
+    <message>
+        <location filename="../core/run_file.cpp" line="+94"/>
         <source>cannot write: no space left on the disk</source>
         <translation>kann nicht schreiben: kein Platz mehr auf dem Datenträger</translation>
     </message>

@@ -3214,7 +3214,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+57"/>
-        <location filename="../app/cmd_simulate.cpp" line="+128"/>
+        <location filename="../app/cmd_simulate.cpp" line="+129"/>
         <source>--stop-at wants puncture or puncture:N with N ≥ 1 (got &apos;%1&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3791,7 +3791,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>--thickness-mm: %1 mm is no slab (at most %2 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>--thickness-mm: &apos;%1&apos; is not a positive number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3816,7 +3821,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>warning: %1 holds no friction phase over %2 (a, b1, b2, c); the run&apos;s own phase column is used, else the velocity band</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3882,18 +3887,18 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-216"/>
         <source>Usage: needlebench fit friction RUN.csv... --thickness-mm T [--mass-kg M | --estimate-mass] [--band-m-s B] [--labels FILE] [--tissue-trace FILE.csv] [--json]
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+35"/>
         <source>--tissue-trace applies to a single run; give one run per call</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+184"/>
         <source>%1Hz (%2 runs)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4133,7 +4138,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_simulate.cpp" line="-287"/>
+        <location filename="../app/cmd_simulate.cpp" line="-288"/>
         <source>stiffness|internal|friction|prostate</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4275,17 +4280,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>--thickness-mm must be in (0, %1]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>--max-force-n must be in [0.01, 20]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>--cycles must be a whole number in [1, 1000]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4300,7 +4300,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-268"/>
+        <location line="-269"/>
         <source>the video starts this long before the recording; negative: after it began (-600 to 600, default 0)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4310,7 +4310,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+67"/>
+        <source>--max-force-n must be in [0.01, 100]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>--stick-band-mm-s must be in (0, 50]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5342,7 +5347,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <location filename="../core/labels.cpp" line="+133"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
-        <location filename="../core/run_file.cpp" line="+330"/>
+        <location filename="../core/run_file.cpp" line="+318"/>
         <location line="+40"/>
         <location line="+39"/>
         <location line="+14"/>
@@ -5718,7 +5723,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     <message>
         <location line="+11"/>
         <location filename="../core/labels.cpp" line="-80"/>
-        <location filename="../core/run_file.cpp" line="-321"/>
+        <location filename="../core/run_file.cpp" line="-308"/>
         <source>cannot open: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5855,7 +5860,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location filename="../core/run_plausibility.cpp" line="+24"/>
         <source>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample(s))</source>
         <translation>
             <numerusform>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample)</numerusform>
@@ -5863,7 +5868,17 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         </translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+36"/>
+        <source>%1: force_N stays at %2 N from %3 s to %4 s while the needle moves %5 mm: the sensor or its amplifier saturated there, and the force beyond it is not in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1: position_mm spans only %2 mm: if the positions were written in metres, they are 1000 times too small (position_mm is in millimetres)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../core/run_file.cpp" line="+94"/>
         <source>cannot write: no space left on the disk</source>
         <translation type="unfinished"></translation>
     </message>

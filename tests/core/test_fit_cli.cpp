@@ -172,6 +172,12 @@ private slots:
                                         dir_.filePath(QStringLiteral("fr_0.2_0.csv")), QStringLiteral("--thickness-mm"), QStringLiteral("20"), QStringLiteral("--json")});
         QVERIFY2(frictionTwice.code == 0 && frictionTwice.err.contains(QStringLiteral("more than once")), qPrintable(frictionTwice.err));
         QCOMPARE(frictionTwice.json()[QStringLiteral("runs")].toArray().size(), 1);
+        // A slab no platform holds is refused (per-length coefficients a million times too small were results).
+        for (const char* t : {"1e9", "-3", "x"}) {
+            const auto slab = run({QStringLiteral("fit"), QStringLiteral("friction"), dir_.filePath(QStringLiteral("fr_0.2_0.csv")),
+                                   QStringLiteral("--thickness-mm"), QString::fromLatin1(t)});
+            QVERIFY2(slab.code == 2 && slab.err.contains(QStringLiteral("--thickness-mm")), qPrintable(slab.err));
+        }
         const auto count = run({QStringLiteral("fit"), QStringLiteral("stiffness"), path("ins1.csv"), path("ins2.csv"),
                                 QStringLiteral("--labels"), path("ins1.labels.csv")});
         QCOMPARE(count.code, 2);

@@ -195,6 +195,47 @@ private slots:
         }
     }
 
+    // Numbers that tell how they were written are said, naming the file, and kept as written: a
+    // force flat at its top while the needle moves on (a saturated amplifier), positions in metres.
+    // A smooth peak, a hold at depth and a run in millimetres are not.
+    void implausibleNumbersAreSaid()
+    {
+        const auto runText = [](auto force, auto position) {
+            QByteArray t("# format: needlebench-run 1\ntime_s,position_mm,force_N\n");
+            for (int i = 0; i < 2000; ++i) {
+                const double s = i * 0.001;
+                t += QStringLiteral("%1,%2,%3\n").arg(s, 0, 'f', 3).arg(position(s), 0, 'g', 9).arg(force(s), 0, 'g', 9).toUtf8();
+            }
+            return t;
+        };
+        const auto insertion = [](double s) { return 4.0 * s; };                       // 4 mm/s
+        const auto rising = [](double s) { return 0.02 * 4.0 * s * 4.0 * s; };          // up to 1.28 N
+        const auto clippedAt1 = [&](double s) { return std::min(1.0, rising(s)); };     // at 1 N from 1.77 s
+        const auto peak = [](double s) { return std::round(1000.0 * (1.0 - (s - 1.0) * (s - 1.0))) / 1000.0; };  // 1 mN steps
+        struct Case {
+            const char* name;
+            QByteArray text;
+            const char* said;  // nullptr: nothing
+        };
+        const Case cases[] = {
+            {"clipped", runText(clippedAt1, insertion), "saturated"},
+            {"metres", runText(rising, [&](double s) { return insertion(s) / 1000.0; }), "metres"},
+            {"smooth peak", runText(peak, insertion), nullptr},
+            {"hold at depth", runText(rising, [](double) { return 12.0; }), nullptr},
+            {"plain", runText(rising, insertion), nullptr},
+        };
+        for (const Case& c : cases) {
+            const QString path = write(QStringLiteral("%1.csv").arg(QLatin1String(c.name)).replace(QLatin1Char(' '), QLatin1Char('_')), c.text);
+            const RunReadResult r = readRunFile(path);
+            const QString said = r.warnings.join(QLatin1Char('\n'));
+            QCOMPARE(r.run.size(), std::size_t(2000));
+            if (c.said)
+                QVERIFY2(r.warnings.size() == 1 && said.startsWith(path) && said.contains(QLatin1String(c.said)), qPrintable(QLatin1String(c.name) + QStringLiteral(": ") + said));
+            else
+                QVERIFY2(r.warnings.isEmpty(), qPrintable(QLatin1String(c.name) + QStringLiteral(": ") + said));
+        }
+    }
+
     void recoveryDropsOnlyThePartialLastRow()
     {
         const QString path = write(QStringLiteral("crashed.csv"), "time_s,position_mm,force_N\n0,0,0\n0.1,1,0.2\n0.2,1.");
