@@ -7,6 +7,8 @@
 
 #include <cstring>
 #include <functional>
+#include <optional>
+#include <vector>
 #include <random>
 
 namespace nb::test {
@@ -98,29 +100,56 @@ int readCode(const QImage& image)
 }
 
 namespace {
+struct Packet {
+    qint64 pos = 0, size = 0;
+};
+
+// The video packets shown from t0_s to t1_s: where they lie in `from` and their size, as ffprobe
+// gives them. nullopt when ffprobe fails.
+std::optional<std::vector<Packet>> packetsShown(const QString& from, double t0_s, double t1_s)
+{
+    QProcess probe;
+    probe.start(QStringLiteral("ffprobe"), {"-v", "error", "-select_streams", "v:0", "-show_entries", "packet=pts_time,pos,size", "-of", "csv=p=0", from});
+    if (!probe.waitForFinished(60000) || probe.exitCode() != 0)
+        return std::nullopt;
+    std::vector<Packet> packets;
+    for (const QByteArray& line : probe.readAllStandardOutput().split('\n')) {
+        const QList<QByteArray> f = line.trimmed().split(',');  // pts_time, size, pos
+        if (f.size() >= 3 && f[0].toDouble() >= t0_s && f[0].toDouble() <= t1_s)
+            packets.push_back({f[2].toLongLong(), f[1].toLongLong()});
+    }
+    return packets;
+}
+
+// `from` written to `to` with the bytes `change` changes; -1 when a file failed.
+int rewritten(const QString& from, const QString& to, const std::function<int(QByteArray&)>& change)
+{
+    QFile in(from), out(to);
+    if (!in.open(QIODevice::ReadOnly) || !out.open(QIODevice::WriteOnly))
+        return -1;
+    QByteArray bytes = in.readAll();
+    const int changed = change(bytes);
+    return out.write(bytes) == bytes.size() ? changed : -1;
+}
+
 // Overwrites the video packets shown from t0_s to t1_s, from byte `kept` of each on, with `fill`.
 int overwritePackets(const QString& from, const QString& to, double t0_s, double t1_s, qint64 kept,
                      const std::function<char(qint64)>& fill)
 {
-    QProcess probe;
-    probe.start(QStringLiteral("ffprobe"), {"-v", "error", "-select_streams", "v:0", "-show_entries", "packet=pts_time,pos,size", "-of", "csv=p=0", from});
-    QFile in(from), out(to);
-    if (!probe.waitForFinished(60000) || probe.exitCode() != 0 || !in.open(QIODevice::ReadOnly) || !out.open(QIODevice::WriteOnly))
+    const auto packets = packetsShown(from, t0_s, t1_s);
+    if (!packets)
         return -1;
-    QByteArray bytes = in.readAll();
-    int scratched = 0;
-    for (const QByteArray& line : probe.readAllStandardOutput().split('\n')) {
-        const QList<QByteArray> f = line.trimmed().split(',');  // pts_time, size, pos
-        if (f.size() < 3 || f[0].toDouble() < t0_s || f[0].toDouble() > t1_s)
-            continue;
-        const qint64 pos = f[2].toLongLong(), size = f[1].toLongLong();
-        if (size <= kept)
-            continue;
-        for (qint64 i = pos + kept; i < pos + size && i < bytes.size(); ++i)
-            bytes[i] = fill(i);
-        ++scratched;
-    }
-    return out.write(bytes) == bytes.size() ? scratched : -1;
+    return rewritten(from, to, [&](QByteArray& bytes) {
+        int scratched = 0;
+        for (const Packet& p : *packets) {
+            if (p.size <= kept)
+                continue;
+            for (qint64 i = p.pos + kept; i < p.pos + p.size && i < bytes.size(); ++i)
+                bytes[i] = fill(i);
+            ++scratched;
+        }
+        return scratched;
+    });
 }
 }  // namespace
 
@@ -131,26 +160,19 @@ int writeScratched(const QString& from, const QString& to, double t0_s, double t
 
 int writeZeroed(const QString& from, const QString& to, double t0_s, double t1_s)
 {
-    QProcess probe;
-    probe.start(QStringLiteral("ffprobe"), {"-v", "error", "-select_streams", "v:0", "-show_entries", "packet=pts_time,pos,size", "-of", "csv=p=0", from});
-    QFile in(from), out(to);
-    if (!probe.waitForFinished(60000) || probe.exitCode() != 0 || !in.open(QIODevice::ReadOnly) || !out.open(QIODevice::WriteOnly))
+    const auto packets = packetsShown(from, t0_s, t1_s);
+    if (!packets || packets->empty())
         return -1;
-    QByteArray bytes = in.readAll();
-    qint64 first = -1, end = -1;
-    int packets = 0;
-    for (const QByteArray& line : probe.readAllStandardOutput().split('\n')) {
-        const QList<QByteArray> f = line.trimmed().split(',');  // pts_time, size, pos
-        if (f.size() < 3 || f[0].toDouble() < t0_s || f[0].toDouble() > t1_s)
-            continue;
-        const qint64 pos = f[2].toLongLong();
-        first = first < 0 ? pos : std::min(first, pos);
-        end = std::max(end, pos + f[1].toLongLong());
-        ++packets;
+    qint64 first = packets->front().pos, end = 0;
+    for (const Packet& p : *packets) {
+        first = std::min(first, p.pos);
+        end = std::max(end, p.pos + p.size);
     }
-    for (qint64 i = std::max<qint64>(first, 0); i < end && i < bytes.size(); ++i)
-        bytes[i] = 0;
-    return first >= 0 && out.write(bytes) == bytes.size() ? packets : -1;
+    return rewritten(from, to, [&](QByteArray& bytes) {
+        for (qint64 i = first; i < end && i < bytes.size(); ++i)
+            bytes[i] = 0;
+        return int(packets->size());
+    });
 }
 
 int writeScrambled(const QString& from, const QString& to, double t0_s, double t1_s, unsigned seed)
