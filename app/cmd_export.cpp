@@ -32,6 +32,13 @@ namespace {
 volatile std::sig_atomic_t interrupted = 0;
 void onInterrupt(int) { interrupted = 1; }
 
+// The first three of `paths`, and "…" when there are more: a message names what it is about
+// without filling the terminal.
+QString firstFew(const QStringList& paths)
+{
+    return QStringList(paths.mid(0, 3)).join(QStringLiteral(", ")) + (paths.size() > 3 ? QStringLiteral(", …") : QString());
+}
+
 // --copy-video: the video beside the export (a hard link when the file system allows, else a
 // copy), so that the export folder carries it. Returns the path linked to (the original when
 // it could not be placed).
@@ -131,7 +138,7 @@ int cmdExport(const QStringList& args, Io io)
         io.err << "needlebench export: "
                << nb::TrCli::tr("%n file(s) in %1 would be replaced that are not an earlier export's (%2); they are kept. "
                                 "Name another folder, or give --overwrite.", nullptr, int(inTheWay.other.size()))
-                      .arg(target, QStringList(inTheWay.other.mid(0, 3)).join(QStringLiteral(", ")) + (inTheWay.other.size() > 3 ? QStringLiteral(", …") : QString()))
+                      .arg(target, firstFew(inTheWay.other))
                << '\n';
         return Usage;
     }
@@ -259,7 +266,7 @@ int cmdExport(const QStringList& args, Io io)
     if (!loaded.runsLeftOut.isEmpty()) {
         io.err << "needlebench export: "
                << nb::TrCli::tr("%n run(s) of the session left out (named above): %1", nullptr, int(loaded.runsLeftOut.size()))
-                      .arg(QStringList(loaded.runsLeftOut.mid(0, 3)).join(QStringLiteral(", ")) + (loaded.runsLeftOut.size() > 3 ? QStringLiteral(", …") : QString()))
+                      .arg(firstFew(loaded.runsLeftOut))
                << '\n';
         return Failure;
     }

@@ -227,7 +227,7 @@ int fitStiffnessCommand(const QStringList& args, Io io)
             // a labels file of another run (or one without events) is not taken for the operator's.
             QStringList unmarked;
             for (const QString& name : reads)
-                if (std::none_of(marks.begin(), marks.end(), [&](const Label& l) { return l.isPoint() && l.label.compare(name, Qt::CaseInsensitive) == 0; }))
+                if (!marksEvent(marks, name))
                     unmarked << name;
             if (!unmarked.isEmpty())
                 io.err << nb::TrCli::tr("warning: %1 marks no %2 for %3: found in the force instead")

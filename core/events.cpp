@@ -468,16 +468,11 @@ void applyEventLabels(InsertionEvents& ev, const Run& run, const Labels& labels,
 
 InsertionEvents eventsWithLabels(const Run& run, const Labels& labels)
 {
-    const auto marked = [&](const char* name) {
-        return std::any_of(labels.begin(), labels.end(), [&](const Label& l) {
-            return l.isPoint() && l.label.compare(QLatin1String(name), Qt::CaseInsensitive) == 0;
-        });
-    };
     InsertionEvents ev;
     try {
         ev = detectEvents(run);
     } catch (const FitError&) {
-        if (!marked("contact") || !marked("puncture"))
+        if (!marksEvent(labels, QStringLiteral("contact")) || !marksEvent(labels, QStringLiteral("puncture")))
             throw;
     }
     applyEventLabels(ev, run, labels);

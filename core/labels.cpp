@@ -9,6 +9,7 @@
 #include "save_file.h"
 
 #include <QFile>
+#include <algorithm>
 #include <cmath>
 
 namespace nb {
@@ -183,6 +184,12 @@ QStringList overlappingLabels(const Labels& labels)
         }
     }
     return out;
+}
+
+bool marksEvent(const Labels& labels, const QString& name)
+{
+    return std::any_of(labels.begin(), labels.end(),
+                       [&](const Label& l) { return l.isPoint() && l.label.compare(name, Qt::CaseInsensitive) == 0; });
 }
 
 QString labelsPathFor(const QString& runPath)

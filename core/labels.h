@@ -27,6 +27,9 @@ struct Label {
 
 using Labels = std::vector<Label>;
 
+// Whether `labels` mark the event `name` (a point label, any case: "Puncture" as "puncture").
+bool marksEvent(const Labels& labels, const QString& name);
+
 // A labels file as read: the labels of its good rows, and each row that could not be taken
 // (file, line, why). One typo in a hand-edited file costs its row, not the file's labels.
 struct LabelsRead {

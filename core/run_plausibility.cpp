@@ -39,10 +39,11 @@ QString clipped(const Run& run, const QString& name)
     const std::size_t n = std::min({run.time_s.size(), run.force_N.size(), run.position_mm.size()});
     if (n < 20)
         return {};
-    for (const bool top : {true, false}) {
-        const auto [lo, hi] = std::minmax_element(run.force_N.begin(), run.force_N.begin() + std::ptrdiff_t(n));
-        const double rail = top ? *hi : *lo;
-        if (!std::isfinite(rail) || rail == 0.0 || *hi == *lo)
+    const auto [lo, hi] = std::minmax_element(run.force_N.begin(), run.force_N.begin() + std::ptrdiff_t(n));
+    if (*hi == *lo)
+        return {};
+    for (const double rail : {*hi, *lo}) {
+        if (!std::isfinite(rail) || rail == 0.0)
             continue;
         for (std::size_t i = 0; i < n;) {
             if (run.force_N[i] != rail) {
