@@ -13,6 +13,7 @@
 
 #include <QApplication>
 #include <QCoreApplication>
+#include <QStringDecoder>
 #include <QTextStream>
 #include <QTimer>
 #include <cstdio>
@@ -111,6 +112,21 @@ int main(int argc, char** argv)
             QStringList arguments = app.arguments().mid(1);
             if (!arguments.isEmpty())
                 arguments[0] = words.value(0);  // --version asked as the command it is
+            // A file name in another encoding (Latin-1 from an old instrument PC) cannot be
+            // given back to the file system once read as text: it was "cannot open: no such
+            // file", naming a file with a '?' the operator could not find.
+            for (int i = 1; i < argc; ++i) {
+                QStringDecoder utf8(QStringDecoder::Utf8);
+                (void)QString(utf8.decode(QByteArrayView(argv[i])));
+                if (utf8.hasError()) {
+                    err << nb::TrCli::tr("needlebench %1: '%2' is not UTF-8, so it cannot be opened by name here: rename it "
+                                         "(for example with convmv -f latin1 -t utf8 --notest)")
+                               .arg(what, QString::fromLatin1(argv[i]))
+                        << '\n';
+                    err.flush();
+                    return int(nb::cli::Usage);
+                }
+            }
             int code = nb::runGuarded(what, [&] { return nb::cli::run(arguments, {out, err}); }, err);
             out.flush();
             // What a script reads from the output is the result: an output that could not be

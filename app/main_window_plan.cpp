@@ -84,6 +84,18 @@ QString settingsLine(const QJsonObject& s, const devices::RunPlan& m, bool simul
     return parts.join(QStringLiteral(" · "));
 }
 
+// The plan's name in the operator's language. A template's identifier (e.g. "friction-imaging")
+// is a key for files and scripts, not words: the template is named by its title, and only when
+// the plan was renamed from it.
+QString planHeading(const Plan& plan)
+{
+    const QString name = planTitleDisplayName(plan.name);
+    const PlanTemplate* from = findPlanTemplate(plan.templateName);
+    if (!from || from->title == plan.name)
+        return name;
+    return MainWindow::tr("%1 (from the template %2)").arg(name, planTitleDisplayName(from->title));
+}
+
 bool onSimulatedRig(const devices::DeviceSpec& spec)
 {
     return spec.daq == QLatin1String("sim") && spec.stage == QLatin1String("sim");
@@ -282,7 +294,7 @@ void MainWindow::showPlan()
         // Any run or motion, the plan's or one made after leaving it: skip, redo, leave and
         // return would change the plan (and lock the panel to its settings) under a run.
         v.recording = planWalker_->attemptOpen() || planPanelBusy_;
-        v.title = plan.templateName.isEmpty() ? plan.name : tr("%1 (template %2)").arg(planTitleDisplayName(plan.name), plan.templateName);
+        v.title = planHeading(plan);
         v.progress = planWalker_->progressText();
         if (const PlannedRun* r = planWalker_->nextRun()) {
             v.next = tr("Run %1: %2").arg(r->number).arg(describeRun(plan, *r));

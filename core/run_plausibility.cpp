@@ -10,9 +10,6 @@ namespace nb {
 
 namespace {
 
-// A corrupt sample or a unit slip: `events` took 1e308 N for the puncture.
-constexpr double kNoLoadCellReads_N = 1e4;
-
 QString beyondAnyLoadCell(const Run& run, const QString& name)
 {
     std::size_t beyond = 0, first = 0;

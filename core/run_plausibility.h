@@ -11,6 +11,9 @@
 
 namespace nb {
 
+// A corrupt sample or a unit slip: `events` took 1e308 N for the puncture.
+inline constexpr double kNoLoadCellReads_N = 1e4;
+
 QStringList implausibleRun(const Run& run, const QString& name);
 
 }  // namespace nb

@@ -176,7 +176,18 @@ RunEntry inspectRun(const QString& path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         e.state = RunState::Unreadable;
-        e.detail = file.errorString();
+        // A name in another encoding is listed with '\uFFFD' for its odd bytes and cannot be
+        // opened by that name: "no such file" of a file the folder shows.
+        e.detail = e.fileName.contains(QChar::ReplacementCharacter)
+                       ? nb::TrCore::tr("its name is not UTF-8, so it cannot be opened by it; rename it")
+                       : file.errorString();
+        return e;
+    }
+    // A binary file (an image or an archive saved under a run's name) has no footer either, and
+    // was listed as a run still recording: export said to wait for it to end.
+    if (file.peek(8192).contains('\0')) {
+        e.state = RunState::Unreadable;
+        e.detail = nb::TrCore::tr("binary data, not a text run file");
         return e;
     }
     // Head: metadata lines up to the header row.

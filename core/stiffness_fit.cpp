@@ -1,4 +1,6 @@
 #include "stiffness_fit.h"
+
+#include "core/run_plausibility.h"
 #include "core/tr.h"
 
 #include "fit_error.h"
@@ -155,6 +157,10 @@ StiffnessFit fitStiffness(const StiffnessSegment& segment)
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(segment.depth_mm[i]) || !std::isfinite(segment.force_N[i]))
             throw FitError(nb::TrCore::tr("stiffness sample %1 is not a finite number").arg(i + 1));
+        else if (std::abs(segment.force_N[i]) > kNoLoadCellReads_N)  // one such sample is the whole fit
+            throw FitError(nb::TrCore::tr("stiffness sample %1 is %2 N: a corrupt sample")
+                               .arg(i + 1)
+                               .arg(segment.force_N[i], 0, 'g', 4));
     if (*std::max_element(segment.depth_mm.begin(), segment.depth_mm.end()) <= 0.0)
         throw FitError(nb::TrCore::tr("no depth past the contact point"));
 

@@ -39,18 +39,18 @@ or without contact</source>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+463"/>
+        <location line="+490"/>
         <source>Save figure…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-462"/>
-        <location line="+463"/>
+        <location line="-489"/>
+        <location line="+490"/>
         <source>Save tables…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-427"/>
+        <location line="-454"/>
         <source>Stiffness</source>
         <translation type="unfinished"></translation>
     </message>
@@ -111,22 +111,32 @@ or without contact</source>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-12"/>
         <source>Outliers:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %); see Friction ▸ Summary</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+10"/>
+        <source>Fitted, with doubts:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not fitted:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>made again in the plan: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -136,13 +146,13 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
-        <location line="+27"/>
+        <location line="+52"/>
+        <location line="+15"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+83"/>
         <source>The factors of a plan&apos;s runs (their factor_… metadata)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1069,12 +1079,12 @@ or without contact</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+76"/>
         <source>Choose a folder to export into.</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+22"/>
+        <location line="+28"/>
         <source>%1 already holds an earlier export: %n file(s) will be replaced.</source>
         <translation>
             <numerusform>%1 already holds an earlier export: %n file will be replaced.</numerusform>
@@ -1902,7 +1912,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+13"/>
+        <source>%1 (from the template %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Plan</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1991,12 +2006,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>%1 (template %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+20"/>
         <source>Run %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3231,7 +3241,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location filename="../app/cmd_devices.cpp" line="+17"/>
-        <location filename="../app/cmd_events.cpp" line="+45"/>
+        <location filename="../app/cmd_events.cpp" line="+47"/>
         <location filename="../app/cmd_fit.cpp" line="+141"/>
         <location line="+49"/>
         <location line="+150"/>
@@ -3274,7 +3284,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+14"/>
         <location filename="../app/cmd_fit.cpp" line="-302"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
@@ -3284,7 +3294,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+35"/>
         <source>events of %1 (force zeroed by %2 N, noise %3 N)
 </source>
         <translation type="unfinished"></translation>
@@ -3316,13 +3326,19 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>puncture depth %1 mm; stiffness a1 = %2 N/mm, a2 = %3 N/mm²
+        <location line="+2"/>
+        <source>puncture depth %1 mm; stiffness a1 = %2 N/mm, a2 = %3 N/mm² (as fit stiffness gives it)
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_export.cpp" line="+47"/>
+        <location line="+5"/>
+        <source>puncture depth %1 mm; no stiffness fit (%2)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/cmd_export.cpp" line="+54"/>
         <source>warning: %1: could not copy the video beside the export; linked where it is</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5189,7 +5205,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="+120"/>
+        <location filename="../app/main.cpp" line="+122"/>
+        <source>needlebench %1: &apos;%2&apos; is not UTF-8, so it cannot be opened by name here: rename it (for example with convmv -f latin1 -t utf8 --notest)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>needlebench %1: the output could not be written (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5344,7 +5365,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     <message>
         <location line="+2"/>
         <location filename="../core/export/session_hdf5.cpp" line="+308"/>
-        <location filename="../core/labels.cpp" line="+133"/>
+        <location filename="../core/labels.cpp" line="+134"/>
         <location line="+11"/>
         <location filename="../core/plan.cpp" line="+983"/>
         <location filename="../core/run_file.cpp" line="+318"/>
@@ -5789,6 +5810,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+12"/>
+        <location filename="../core/session.cpp" line="+190"/>
         <source>binary data, not a text run file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5855,12 +5877,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../core/session.cpp" line="+198"/>
+        <location filename="../core/session.cpp" line="+19"/>
         <source>no header row</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../core/run_plausibility.cpp" line="+24"/>
+        <location filename="../core/run_plausibility.cpp" line="+21"/>
         <source>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample(s))</source>
         <translation>
             <numerusform>%1: force_N of %2 N at %3 s is beyond what any needle load cell reads (10 kN): a corrupt sample? (%n such sample)</numerusform>
@@ -5868,7 +5890,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         </translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1: force_N stays at %2 N from %3 s to %4 s while the needle moves %5 mm: the sensor or its amplifier saturated there, and the force beyond it is not in the file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5904,7 +5926,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-152"/>
+        <location filename="../core/session.cpp" line="-163"/>
         <source>not valid JSON at byte %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5964,7 +5986,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="+189"/>
+        <location filename="../core/session.cpp" line="+134"/>
+        <source>its name is not UTF-8, so it cannot be opened by it; rename it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+66"/>
         <location line="+4"/>
         <source>cannot create the folder</source>
         <translation type="unfinished"></translation>
@@ -5995,7 +6022,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/session.cpp" line="-283"/>
+        <location filename="../core/session.cpp" line="-294"/>
         <source>unreadable</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6066,7 +6093,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/stiffness_fit.cpp" line="+154"/>
+        <location filename="../core/stiffness_fit.cpp" line="+156"/>
         <source>too few samples (%1) between contact and puncture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6077,6 +6104,11 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+2"/>
+        <source>stiffness sample %1 is %2 N: a corrupt sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>no depth past the contact point</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7842,8 +7874,8 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="-109"/>
-        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-678"/>
-        <location line="+464"/>
+        <location filename="../widgets/analysis/analysis_workspace.cpp" line="-705"/>
+        <location line="+491"/>
         <source>no tissue given</source>
         <translation type="unfinished"></translation>
     </message>

@@ -158,6 +158,17 @@ QStringList ExportDialog::exportPaths(const Choice& c, const QString& target) co
     return paths;
 }
 
+QStringList ExportDialog::analysisPaths(const Choice& c, const QString& target) const
+{
+    QStringList paths;
+    const QString dir = QDir(target).filePath(QStringLiteral("analysis"));
+    if (analysis_ && c.tables)
+        paths << analysis_->allTablesPaths(dir);
+    if (analysis_ && c.figures)
+        paths << analysis_->allFiguresPaths(dir);
+    return paths;
+}
+
 void ExportDialog::start()
 {
     if (isRunning())
@@ -169,7 +180,13 @@ void ExportDialog::start()
         setStatus(tr("Choose a folder to export into."));
         return;
     }
-    if (const FilesInTheWay way = filesInTheWay(exportPaths(c, target)); !way.empty()) {
+    FilesInTheWay way = filesInTheWay(exportPaths(c, target));
+    // The analysis's tables and figures, under their own names in the export's own folder, are
+    // an earlier export's; the question counted the data files alone and replaced these unsaid.
+    for (const QString& path : analysisPaths(c, target))
+        if (QFileInfo::exists(path))
+            way.earlierExport << path;
+    if (!way.empty()) {
         askToReplace(way, c, target);
         return;
     }
@@ -361,7 +378,7 @@ void ExportDialog::finish()
     // Figures and tables are drawn by widgets: here, in the window's thread, after the data.
     if (out.ok && !out.cancelled && analysis_ && (c.figures || c.tables)) {
         try {
-            const QString dir = QDir(targetDir()).filePath(QStringLiteral("analysis"));
+            const QString dir = QDir(targetDir()).filePath(QStringLiteral("analysis"));  // as analysisPaths
             if (c.tables)
                 out.written << analysis_->saveAllTables(dir);
             if (c.figures)

@@ -63,6 +63,7 @@ private:
     };
     // The files an export of `c` into `target` writes (those of an earlier one are replaced).
     QStringList exportPaths(const Choice& c, const QString& target) const;
+    QStringList analysisPaths(const Choice& c, const QString& target) const;
     void begin(const Choice& c, const QString& target);
     void askToReplace(const FilesInTheWay& way, const Choice& c, const QString& target);
     Outcome run(const Choice& c, const QString& target, QPointer<QProgressBar> bar);

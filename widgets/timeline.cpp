@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <cmath>
 
 namespace nb {
@@ -80,6 +81,44 @@ QString Timeline::trackAt(int y) const
     return i >= 0 && i < t.size() ? t[i] : QString();
 }
 
+std::vector<Timeline::Name> Timeline::labelNames() const
+{
+    // A point's name runs up to the next point on its track, elided, or is left out where there
+    // is no room: a run's dozen internal punctures within a second wrote over one another. Of
+    // points on one pixel (a contact and a puncture a millisecond apart at this zoom) only the
+    // first is named, and a phase narrower than its name is left unnamed.
+    std::map<QString, std::vector<int>> pointsX;
+    for (const Label& l : model_->labels())
+        if (shown(l).isPoint())
+            pointsX[l.track].push_back(xOf(shown(l).start_s));
+    for (auto& [track, xs] : pointsX)
+        std::sort(xs.begin(), xs.end());
+    std::set<std::pair<QString, int>> named;  // (track, x) of the points named
+    const QFontMetrics fm = fontMetrics();
+    std::vector<Name> names;
+    for (const Label& l : model_->labels()) {
+        const Label& at = shown(l);
+        const int y = rowTop(l.track);
+        const QString text = labelDisplayName(l.label);
+        if (at.isPoint()) {
+            const int x = xOf(at.start_s);
+            const std::vector<int>& xs = pointsX[l.track];
+            const auto after = std::upper_bound(xs.begin(), xs.end(), x);
+            const int room = (after == xs.end() ? axisLeft() + axisWidth() + 200 : *after) - x - 6;
+            if (room < fm.horizontalAdvance(QStringLiteral("ab…")) || !named.insert({l.track, x}).second)
+                continue;
+            const QString elided = fm.elidedText(text, Qt::ElideRight, room);
+            names.push_back({QRect(x + 3, y + 2, fm.horizontalAdvance(elided), rowHeight() - 4), elided});
+        } else {
+            const QRect r(QPoint(xOf(at.start_s), y + 3), QPoint(xOf(at.end_s), y + rowHeight() - 4));
+            const int w = fm.horizontalAdvance(text);
+            if (w <= r.width() - 2)
+                names.push_back({QRect(r.center().x() - w / 2, y + 2, w, rowHeight() - 4), text});
+        }
+    }
+    return names;
+}
+
 void Timeline::paintEvent(QPaintEvent*)
 {
     QPainter p(this);
@@ -96,38 +135,24 @@ void Timeline::paintEvent(QPaintEvent*)
         p.drawLine(axisLeft(), y + rowHeight() - 1, width(), y + rowHeight() - 1);
     }
     p.setClipRect(QRect(axisLeft(), 0, axisWidth() + 1, height()));
-    // A point's name runs up to the next point on its track, elided, or is left out where there
-    // is no room: a run's dozen internal punctures within a second wrote over one another.
-    std::map<QString, std::vector<int>> pointsX;
     for (const Label& l : model_->labels()) {
-        const Label& shown = drag_ && l == drag_->original ? drag_->current : l;
-        if (shown.isPoint())
-            pointsX[l.track].push_back(xOf(shown.start_s));
-    }
-    for (auto& [track, xs] : pointsX)
-        std::sort(xs.begin(), xs.end());
-    for (const Label& l : model_->labels()) {
-        const Label& shown = drag_ && l == drag_->original ? drag_->current : l;
+        const Label& at = shown(l);
         const int y = rowTop(l.track);
         const QColor c = model_->colorOf(l);
-        if (shown.isPoint()) {
-            const int x = xOf(shown.start_s);
+        if (at.isPoint()) {
+            const int x = xOf(at.start_s);
             p.setPen(QPen(c, 2));
             p.drawLine(x, y + 2, x, y + rowHeight() - 3);
-            const std::vector<int>& xs = pointsX[l.track];
-            const auto next = std::upper_bound(xs.begin(), xs.end(), x);
-            const int room = (next == xs.end() ? axisLeft() + axisWidth() + 200 : *next) - x - 6;
-            if (room >= fontMetrics().horizontalAdvance(QStringLiteral("ab…")))
-                p.drawText(x + 3, y + rowHeight() - 6, fontMetrics().elidedText(labelDisplayName(l.label), Qt::ElideRight, room));
         } else {
-            const QRect r(QPoint(xOf(shown.start_s), y + 3), QPoint(xOf(shown.end_s), y + rowHeight() - 4));
+            const QRect r(QPoint(xOf(at.start_s), y + 3), QPoint(xOf(at.end_s), y + rowHeight() - 4));
             p.fillRect(r, c.lighter(130));
             p.setPen(c.darker(140));
             p.drawRect(r);
-            p.setPen(Qt::black);
-            p.drawText(r, Qt::AlignCenter, l.label);
         }
     }
+    p.setPen(Qt::black);
+    for (const Name& name : labelNames())
+        p.drawText(name.rect, Qt::AlignVCenter | Qt::AlignLeft, name.text);
     if (pending_) {
         const int y = rowTop(pending_->track);
         p.setPen(QPen(palette().text().color(), 1, Qt::DashLine));

@@ -8,6 +8,7 @@
 #include <QWidget>
 #include <algorithm>
 #include <optional>
+#include <vector>
 
 class QUndoStack;
 
@@ -37,6 +38,12 @@ public:
     double timeAt(int x) const;
     int rowTop(const QString& track) const;
     int rowHeight() const { return 22; }
+    // The labels' names as drawn: each within its own room, none over another.
+    struct Name {
+        QRect rect;
+        QString text;
+    };
+    std::vector<Name> labelNames() const;
 
 signals:
     void cursorMoved(double t);
@@ -49,6 +56,7 @@ protected:
 
 private:
     QString trackAt(int y) const;
+    const Label& shown(const Label& l) const { return drag_ && l == drag_->original ? drag_->current : l; }
     LabelModel* model_;
     QUndoStack* undo_;
     double start_ = 0.0, end_ = 10.0, cursor_ = 0.0;

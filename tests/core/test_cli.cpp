@@ -9,6 +9,7 @@
 
 #include <QtTest>
 
+#include <cstdio>
 #include <unistd.h>
 
 class TestCli : public QObject {
@@ -365,6 +366,28 @@ private slots:
         const nbtest::CliResult typo = TestCli::run({"plan", "new", "--template", "friction", "--out", dir.filePath(QStringLiteral("p.json")), "--levels", "location=1"});
         QCOMPARE(typo.code, 0);
         QVERIFY2(typo.err.contains(QStringLiteral("'location'")), qPrintable(typo.err));
+    }
+    // A file named in Latin-1 (an old instrument PC's) was "cannot open: no such file" of a name
+    // with a '?': the name is said as it is and what to do about it.
+    void aNameThatIsNotUtf8IsSaid()
+    {
+        QTemporaryDir dir;
+        const QByteArray latin1 = QFile::encodeName(dir.path()) + "/caf\xe9.csv";
+        {
+            FILE* f = std::fopen(latin1.constData(), "w");
+            QVERIFY(f);
+            std::fputs("time_s,position_mm,force_N\n0,0,0\n", f);
+            std::fclose(f);
+        }
+        QProcess p;
+        p.setProcessEnvironment(withoutDisplay());
+        // QProcess passes its arguments as UTF-8; the shell passes the name's own bytes.
+        p.start(QStringLiteral("/bin/sh"), {QStringLiteral("-c"), QStringLiteral("exec \"$0\" events \"$1/$(printf 'caf\\351.csv')\""),
+                                             QStringLiteral(NB_EXECUTABLE), dir.path()});
+        QVERIFY(p.waitForFinished(60000));
+        const QString said = QString::fromUtf8(p.readAllStandardError());
+        QCOMPARE(p.exitCode(), 2);
+        QVERIFY2(said.contains(QStringLiteral("café.csv' is not UTF-8")) && said.contains(QStringLiteral("rename")), qPrintable(said));
     }
     // Qt aborts without a display it can reach and advises reinstalling; the operator is told
     // instead what is missing and what runs without it.

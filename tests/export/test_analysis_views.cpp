@@ -183,6 +183,48 @@ private slots:
                  qPrintable(german.stiffnessRunsModel()->horizontalHeaderItem(3)->text()));
     }
 
+    // A run the judgement leaves out and a run taken but not fitted are two lists, each under
+    // its own heading: the unfitted run followed the left-out list unheaded, as if left out.
+    void leftOutAndNotFittedAreTwoLists()
+    {
+        QTemporaryDir tmp;
+        const QDir d(tmp.path());
+        QVERIFY(QFile::copy(QDir(dir_.path()).filePath(QStringLiteral("run_001_linear.csv")), d.filePath(QStringLiteral("run_001_linear.csv"))));
+        QFile in(QDir(dir_.path()).filePath(QStringLiteral("run_002_linear.csv")));
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        const QByteArray text = in.readAll();
+        auto write = [&](const char* name, const QByteArray& bytes) {
+            QFile out(d.filePath(QLatin1String(name)));
+            QVERIFY(out.open(QIODevice::WriteOnly));
+            out.write(bytes);
+        };
+        QByteArray stopped = text;
+        QVERIFY(stopped.contains("# end_reason: completed\n"));
+        stopped.replace("# end_reason: completed\n", "# end_reason: force_limit\n");
+        write("run_002_linear.csv", stopped);
+        // Ended by the operator 3 s in: in the tissue, before its puncture.
+        QByteArray early;
+        for (const QByteArray& line : text.split('\n')) {
+            bool number = false;
+            const double t = line.left(line.indexOf(',')).toDouble(&number);
+            if (line.startsWith("# end_reason"))
+                early += "# end_reason: stopped\n";
+            else if (!line.isEmpty() && (!number || t <= 3.0))
+                early += line + '\n';
+        }
+        write("run_003_linear.csv", early);
+
+        AnalysisWorkspace w;
+        QVERIFY(w.openSession(tmp.path()));
+        const QStringList lines = w.statusText().split(QLatin1Char('\n'));
+        const qsizetype leftOut = lines.indexOf(QStringLiteral("Left out (switch above to include them):"));
+        const qsizetype notFitted = lines.indexOf(QStringLiteral("Not fitted:"));
+        QVERIFY2(leftOut >= 0 && notFitted > leftOut, qPrintable(w.statusText()));
+        QVERIFY2(lines.at(leftOut + 1).startsWith(QStringLiteral("run_002_linear: ")), qPrintable(w.statusText()));
+        QVERIFY2(lines.at(notFitted + 1).startsWith(QStringLiteral("run_003_linear: no stiffness fit")), qPrintable(w.statusText()));
+        QCOMPARE(lines.first(), QStringLiteral("2 run(s) analysed"));  // no translation loaded: the source's plural
+    }
+
     // One compliant slab (liver3, the thesis's Table 4) at three frequencies and no insertion:
     // the page opens on Friction and the summary carries the line through the peak speeds.
     void compliantSlabOpensOnFrictionWithThePeakSpeedLine()

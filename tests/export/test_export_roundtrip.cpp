@@ -409,6 +409,18 @@ private slots:
         QVERIFY(loaded.dataset.runs[0].sourcePath.endsWith(QStringLiteral("run_001_linear.csv")));
         const QString warnings = loaded.warnings.join(QLatin1Char('\n'));
         QVERIFY2(warnings.contains(QStringLiteral("run_002_linear.csv: left out, the run is still recording")), qPrintable(warnings));
+        // A picture saved under a run's name has no footer either; it is named for what it is,
+        // not as a run to wait for.
+        {
+            QFile f(QDir(sessionDir).filePath(QStringLiteral("run_003_linear.csv")));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\x02\x80", 22));
+        }
+        const nb::LoadedDataset withPicture = nb::loadDataset(sessionDir);
+        const QString said = withPicture.warnings.join(QLatin1Char('\n'));
+        QVERIFY2(said.contains(QStringLiteral("run_003_linear.csv: skipped, binary data, not a text run file")), qPrintable(said));
+        QVERIFY2(!said.contains(QStringLiteral("run_003_linear.csv: left out, the run is still recording")), qPrintable(said));
+        QVERIFY(withPicture.runsLeftOut.filter(QStringLiteral("run_003_linear.csv")).size() == 1);
         // A folder that is not a session keeps every run file it holds.
         QDir(sessionDir).rename(QStringLiteral("session.json"), QStringLiteral("session.json.away"));
         QCOMPARE(int(nb::loadDataset(sessionDir).dataset.runs.size()), 2);

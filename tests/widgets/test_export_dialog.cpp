@@ -58,6 +58,23 @@ private slots:
         QCOMPARE(dialog.findChild<QProgressBar*>()->value(), dialog.findChild<QProgressBar*>()->maximum());
         QVERIFY(dialog.resultText().contains(QStringLiteral("Exported")));
 
+        // Again, the analysis's tables alone: the question counts them and names them (it
+        // counted the data files alone and replaced these unsaid).
+        dialog.setChoice({.csv = false, .hdf5 = false, .eaf = false, .figures = false, .tables = true});
+        dialog.start();
+        QMessageBox* question = nullptr;
+        for (QMessageBox* q : dialog.findChildren<QMessageBox*>(QStringLiteral("replaceExport")))
+            if (q->isVisible())
+                question = q;
+        QVERIFY(question);
+        const qsizetype tables = analysis.allTablesPaths(QDir(out).filePath(QStringLiteral("analysis"))).size();
+        QVERIFY(tables >= 10);
+        QVERIFY2(question->text().contains(QStringLiteral(": %1 file(s) will be replaced").arg(tables)), qPrintable(question->text()));
+        QVERIFY2(question->detailedText().contains(QDir::toNativeSeparators(QStringLiteral("analysis/stiffness_runs.csv"))),
+                 qPrintable(question->detailedText()));
+        question->button(QMessageBox::Cancel)->click();
+        QVERIFY(!dialog.isRunning());
+
         // The same bytes as the command line writes for the run CSV.
         const QString cli = tmp_.filePath(QStringLiteral("cli"));
         QProcess p;

@@ -463,17 +463,22 @@ void AnalysisWorkspace::recompute()
         lines << tr("Outliers:") << outliers;
     // A run whose own C is off the line through the peak speeds (the tissue moving as the
     // needle slows) is named: its row in the table looks as good as the others.
+    QStringList doubts;
     for (const FrictionRunResult& f : analysis_.friction)
         if (f.peakLineDeparture && f.peakLineDeparture->significant)
-            lines << tr("%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %); see Friction ▸ Summary")
+            doubts << tr("%1: C departs from the peak-speed line (Cp %2 %, Cn %3 %); see Friction ▸ Summary")
                          .arg(f.run, QLocale().toString(f.peakLineDeparture->Cp_percent, 'f', 1),
                               QLocale().toString(f.peakLineDeparture->Cn_percent, 'f', 1));
     // Values a run does not determine are empty in its row; the reason is only here.
     for (const FrictionRunResult& f : analysis_.friction)
         if (f.ok() && !f.fit.notPhysical.isEmpty())
-            lines << tr("%1: %2").arg(f.run, f.fit.notPhysical.join(QStringLiteral("; ")));
+            doubts << tr("%1: %2").arg(f.run, f.fit.notPhysical.join(QStringLiteral("; ")));
+    // Each list under its own heading: a run that was taken and could not be fitted is not one
+    // the judgement left out, though it followed that list unheaded.
+    if (!doubts.isEmpty())
+        lines << tr("Fitted, with doubts:") << doubts;
     if (!analysis_.warnings.isEmpty())
-        lines << analysis_.warnings;
+        lines << tr("Not fitted:") << analysis_.warnings;
     status_->setText(lines.join(QLatin1Char('\n')));
     markJudgedRuns();
     refreshViews();
@@ -507,29 +512,58 @@ void AnalysisWorkspace::markJudgedRuns()
     }
 }
 
+std::vector<std::pair<QString, FitTable>> AnalysisWorkspace::allTables() const
+{
+    std::vector<std::pair<QString, FitTable>> all{{QStringLiteral("stiffness_runs"), stiffnessRunsTable(analysis_)},
+                                                  {QStringLiteral("stiffness_pooled"), stiffnessPooledTable(analysis_)},
+                                                  {QStringLiteral("friction_runs"), frictionRunsTable(analysis_)},
+                                                  {QStringLiteral("friction_summary"), frictionSummaryTable(analysis_)},
+                                                  {QStringLiteral("validation"), validationTable(analysis_)}};
+    // A plan's runs: each quantity per level of each of their factors.
+    for (const QString& factor : datasetFactors(dataset_))
+        all.emplace_back(QStringLiteral("by_factor_") + factor, factorTableFor(factor));
+    return all;
+}
+
+std::vector<std::pair<QString, QCustomPlot*>> AnalysisWorkspace::allFigures() const
+{
+    std::vector<std::pair<QString, QCustomPlot*>> all{{QStringLiteral("stiffness"), stiffnessPlot_},
+                                                      {QStringLiteral("friction_velocity"), frictionPlot_},
+                                                      {QStringLiteral("friction_phases"), phasesPlot_},
+                                                      {QStringLiteral("validation"), validationPlot_}};
+    if (!factorChoice_->currentData().toString().isEmpty())
+        all.emplace_back(QStringLiteral("by_factor"), factorPlot_);
+    return all;
+}
+
+namespace {
+
+template <typename T>
+QStringList pathsOf(const QString& dir, const std::vector<std::pair<QString, T>>& items, std::initializer_list<const char*> exts)
+{
+    QStringList paths;
+    for (const auto& item : items)
+        for (const char* ext : exts)
+            paths << QDir(dir).filePath(item.first + QLatin1String(ext));
+    return paths;
+}
+
+}  // namespace
+
+QStringList AnalysisWorkspace::allTablesPaths(const QString& dir) const { return pathsOf(dir, allTables(), {".csv", ".tex"}); }
+QStringList AnalysisWorkspace::allFiguresPaths(const QString& dir) const { return pathsOf(dir, allFigures(), {".png", ".pdf"}); }
+
 QStringList AnalysisWorkspace::saveAllTables(const QString& dir)
 {
     if (!QDir().mkpath(dir))
         throw ExportError(dir, tr("cannot create the folder"));
     QStringList written;
-    const std::pair<QString, FitTable> tables[] = {{QStringLiteral("stiffness_runs"), stiffnessRunsTable(analysis_)},
-                                                   {QStringLiteral("stiffness_pooled"), stiffnessPooledTable(analysis_)},
-                                                   {QStringLiteral("friction_runs"), frictionRunsTable(analysis_)},
-                                                   {QStringLiteral("friction_summary"), frictionSummaryTable(analysis_)},
-                                                   {QStringLiteral("validation"), validationTable(analysis_)}};
-    std::vector<std::pair<QString, FitTable>> all(std::begin(tables), std::end(tables));
-    // A plan's runs: each quantity per level of each of their factors.
-    for (const QString& factor : datasetFactors(dataset_))
-        all.emplace_back(QStringLiteral("by_factor_") + factor, factorTableFor(factor));
-    for (const auto& [name, table] : all) {
-        for (const char* ext : {".csv", ".tex"}) {
-            const QString path = QDir(dir).filePath(name + QLatin1String(ext));
-            if (QLatin1String(ext) == QLatin1String(".csv"))
-                writeFitTableCsv(path, table);
-            else
-                writeFitTableLatex(path, table);
-            written << path;
-        }
+    for (const auto& [name, table] : allTables()) {
+        const QString csv = QDir(dir).filePath(name + QStringLiteral(".csv")), tex = QDir(dir).filePath(name + QStringLiteral(".tex"));
+        writeFitTableCsv(csv, table);
+        written << csv;
+        writeFitTableLatex(tex, table);
+        written << tex;
     }
     return written;
 }
@@ -539,14 +573,7 @@ QStringList AnalysisWorkspace::saveAllFigures(const QString& dir)
     if (!QDir().mkpath(dir))
         throw ExportError(dir, tr("cannot create the folder"));
     QStringList written;
-    const std::pair<QString, QCustomPlot*> plots[] = {{QStringLiteral("stiffness"), stiffnessPlot_},
-                                                      {QStringLiteral("friction_velocity"), frictionPlot_},
-                                                      {QStringLiteral("friction_phases"), phasesPlot_},
-                                                      {QStringLiteral("validation"), validationPlot_}};
-    std::vector<std::pair<QString, QCustomPlot*>> all(std::begin(plots), std::end(plots));
-    if (!factorChoice_->currentData().toString().isEmpty())
-        all.emplace_back(QStringLiteral("by_factor"), factorPlot_);
-    for (const auto& [name, plot] : all)
+    for (const auto& [name, plot] : allFigures())
         for (const char* ext : {".png", ".pdf"}) {
             const QString path = QDir(dir).filePath(name + QLatin1String(ext));
             saveFigure(plot, path);

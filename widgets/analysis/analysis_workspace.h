@@ -57,6 +57,9 @@ public:
     // the files written. Throws ExportError.
     QStringList saveAllTables(const QString& dir);
     QStringList saveAllFigures(const QString& dir);
+    // The files those would write, written or not: what an export asks about replacing.
+    QStringList allTablesPaths(const QString& dir) const;
+    QStringList allFiguresPaths(const QString& dir) const;
 
     const SessionAnalysis& analysis() const { return analysis_; }
     const Dataset& dataset() const { return dataset_; }
@@ -89,6 +92,8 @@ signals:
     void choicesChanged();
 
 private:
+    std::vector<std::pair<QString, FitTable>> allTables() const;
+    std::vector<std::pair<QString, QCustomPlot*>> allFigures() const;
     struct Choices {
         QString session;
         QStringList unticked;
