@@ -2029,7 +2029,7 @@ Stop the stage now (emergency stop) and quit?</source>
 <context>
     <name>nb::NewPlanDialog</name>
     <message>
-        <location filename="../widgets/plan_panel.cpp" line="+188"/>
+        <location filename="../widgets/plan_panel.cpp" line="+211"/>
         <source>New plan from template</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2072,7 +2072,7 @@ Stop the stage now (emergency stop) and quit?</source>
 <context>
     <name>nb::PlanPanel</name>
     <message>
-        <location line="-184"/>
+        <location line="-206"/>
         <source>No experiment plan in this session. Session ▸ New plan from template… makes one; its runs are then set here one after the other.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2082,7 +2082,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>Bias done</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2102,7 +2102,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
+        <source>Done:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Skip run…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2147,12 +2152,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Done: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+16"/>
         <source>No run of the plan is done yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2185,7 +2185,7 @@ Stop the stage now (emergency stop) and quit?</source>
 <context>
     <name>nb::PlanReasonDialog</name>
     <message>
-        <location line="+29"/>
+        <location line="+36"/>
         <source>e.g. a vessel at this site</source>
         <translation type="unfinished"></translation>
     </message>

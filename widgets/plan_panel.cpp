@@ -5,6 +5,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QEvent>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -42,10 +43,12 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent)
     title_->setObjectName(QStringLiteral("planTitle"));
     progress_ = new QLabel(walker_);
     progress_->setObjectName(QStringLiteral("planProgress"));
-    progress_->setStyleSheet(QStringLiteral("font-weight: bold;"));
+    // The plan's name, then where the walk stands: "friction under imaging  Run 1 of 15 · …";
+    // the other way round the two read as one sentence ("… 5 min left friction under imaging").
+    title_->setStyleSheet(QStringLiteral("font-weight: bold;"));
     auto* head = new QHBoxLayout;
-    head->addWidget(progress_);
-    head->addWidget(title_, 1);
+    head->addWidget(title_);
+    head->addWidget(progress_, 1);
     left->addLayout(head);
     next_ = new QLabel(walker_);
     next_->setObjectName(QStringLiteral("planNext"));
@@ -66,7 +69,18 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent)
     zero_ = new QCheckBox(tr("Zero done"), walker_);
     zero_->setObjectName(QStringLiteral("planCheckZero"));
     zero_->setToolTip(tr("Ticks itself when the position has been zeroed since the last run"));
-    left->addWidget(instruction_);
+    // A check box's text never wraps: the German instruction ("Leber 7 einspannen. Die
+    // 30-mm-Gewebescheibe einspannen. …") widened the window past a laptop's 1366 px. The box
+    // says "Done:" and the instruction beside it wraps; a click on it ticks the box as well.
+    instruction_->setText(tr("Done:"));
+    instructionText_ = new QLabel(walker_);
+    instructionText_->setObjectName(QStringLiteral("planInstruction"));
+    instructionText_->setWordWrap(true);
+    instructionText_->installEventFilter(this);
+    auto* instructionRow = new QHBoxLayout;
+    instructionRow->addWidget(instruction_, 0, Qt::AlignTop);
+    instructionRow->addWidget(instructionText_, 1);
+    left->addLayout(instructionRow);
     const std::pair<QCheckBox*, Item> items[] = {{instruction_, Item::Instruction}, {bias_, Item::Bias}, {zero_, Item::Zero}};
     for (const auto& [box, item] : items)
         connect(box, &QCheckBox::clicked, this, [this, item](bool on) { emit itemToggled(item, on); });
@@ -126,12 +140,14 @@ void PlanPanel::setView(const PlanPanelView& v)
     settings_->setText(v.settings);
     const bool ready = v.walking && !v.next.isEmpty();
     instruction_->setVisible(!v.instruction.isEmpty());
-    instruction_->setText(tr("Done: %1").arg(v.instruction));
+    instructionText_->setVisible(!v.instruction.isEmpty());
+    instructionText_->setText(v.instruction);
     instruction_->setChecked(v.instructionDone);
     bias_->setChecked(v.biasDone);
     zero_->setChecked(v.zeroDone);
     for (QCheckBox* b : {instruction_, bias_, zero_})
         b->setEnabled(ready && !v.recording);
+    instructionText_->setEnabled(instruction_->isEnabled());
     bias_->setVisible(!v.next.isEmpty());
     zero_->setVisible(!v.next.isEmpty());
     skip_->setEnabled(ready && !v.recording);
@@ -149,6 +165,13 @@ void PlanPanel::setView(const PlanPanelView& v)
         runs_->item(v.nextRow)->setFont(bold);
         runs_->scrollToItem(runs_->item(v.nextRow), QAbstractItemView::PositionAtCenter);
     }
+}
+
+bool PlanPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == instructionText_ && event->type() == QEvent::MouseButtonRelease && instruction_->isEnabled())
+        instruction_->click();
+    return QWidget::eventFilter(watched, event);
 }
 
 void PlanPanel::askReason(const QString& title, const QString& question, void (PlanPanel::*done)(const QString&))

@@ -57,6 +57,9 @@ signals:
     void rejoinRequested();
     void newPlanRequested();
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void askReason(const QString& title, const QString& question, void (PlanPanel::*done)(const QString&));
 
@@ -66,6 +69,7 @@ private:
     QLabel* next_ = nullptr;
     QLabel* settings_ = nullptr;
     QCheckBox* instruction_ = nullptr;
+    QLabel* instructionText_ = nullptr;  // wraps: a template's instruction is the window's longest line
     QCheckBox* bias_ = nullptr;
     QCheckBox* zero_ = nullptr;
     QPushButton* skip_ = nullptr;

@@ -104,7 +104,7 @@ std::vector<Timeline::Name> Timeline::labelNames() const
             const int x = xOf(at.start_s);
             const std::vector<int>& xs = pointsX[l.track];
             const auto after = std::upper_bound(xs.begin(), xs.end(), x);
-            const int room = (after == xs.end() ? axisLeft() + axisWidth() + 200 : *after) - x - 6;
+            const int room = (after == xs.end() ? axisLeft() + axisWidth() : *after) - x - 6;  // the axis' end clips
             if (room < fm.horizontalAdvance(QStringLiteral("ab…")) || !named.insert({l.track, x}).second)
                 continue;
             const QString elided = fm.elidedText(text, Qt::ElideRight, room);

@@ -11,6 +11,8 @@
 #include "core/data_names.h"
 #include "core/export/session_analysis.h"
 #include "core/labels.h"
+#include "core/plan.h"
+#include "core/plan_session.h"
 #include "core/run_file.h"
 #include "core/session.h"
 #include "widgets/analysis/analysis_workspace.h"
@@ -27,6 +29,7 @@
 #include "widgets/timeline.h"
 
 #include <algorithm>
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
 #include <QSignalSpy>
@@ -84,6 +87,10 @@ private slots:
         QCoreApplication::setApplicationName(QStringLiteral("test_laptop_layout"));
         session_ = tmp_.filePath(QStringLiteral("liver_laptop"));
         QVERIFY(makeSession(session_));
+        // A plan being walked, as on a lab day: its dock shows the next run's instruction, the
+        // longest line of the window in German (it widened the window to 1437 px).
+        nb::writePlanFile(nb::planFilePath(session_),
+                          nb::generatePlan(*nb::findPlanTemplate(QStringLiteral("friction-imaging")), nb::PlanOrder::Listed, 1));
     }
 
     void fitsALaptop_data()
@@ -242,7 +249,20 @@ private slots:
             QVERIFY2(min.height() <= 700, qPrintable(QStringLiteral("%1: minimum height %2 px").arg(language).arg(min.height())));
             QCOMPARE(w.width(), 1366);
 
+            // The plan's instruction wraps in its dock, and a click on it ticks it done.
+            w.findChild<QDockWidget*>(QStringLiteral("planDock"))->raise();
+            QApplication::processEvents();
+            auto* instructionText = w.findChild<QLabel*>(QStringLiteral("planInstruction"));
+            auto* instructionBox = w.findChild<QCheckBox*>(QStringLiteral("planCheckInstruction"));
+            QVERIFY(instructionText && instructionBox && instructionText->wordWrap());
+            QVERIFY2(instructionText->text().size() > 60, qPrintable(instructionText->text()));
+            QVERIFY(instructionBox->isEnabled() && !instructionBox->isChecked());
+            QTest::mouseClick(instructionText, Qt::LeftButton);
+            QTRY_VERIFY(instructionBox->isChecked());
+
             // The session list shows more than two runs.
+            w.findChild<QDockWidget*>(QStringLiteral("sessionDock"))->raise();
+            QApplication::processEvents();
             auto* runs = w.sessionView()->view();
             QVERIFY(runs);
             const int rowHeight = runs->verticalHeader()->defaultSectionSize();

@@ -490,7 +490,7 @@ private slots:
               w.planPanel()->minimumSizeHint().height());
         QVERIFY(w.planPanel()->isVisible());
         QVERIFY(w.minimumSizeHint().height() <= 700);
-        QVERIFY(w.planPanel()->checkBox(nb::PlanPanel::Item::Instruction)->text().contains(QStringLiteral("site 1")));
+        QVERIFY(w.planPanel()->findChild<QLabel*>(QStringLiteral("planInstruction"))->text().contains(QStringLiteral("site 1")));
         // A second plan over one with no runs made replaces it; the session's plan opens with it.
         w.openSession(sessionDir);
         QVERIFY(w.planWalker()->hasPlan());

@@ -1062,7 +1062,7 @@ private slots:
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             auto* title = w.findChild<QLabel*>(QStringLiteral("planTitle"));
             auto* next = w.findChild<QLabel*>(QStringLiteral("planNext"));
-            auto* instruction = w.findChild<QCheckBox*>(QStringLiteral("planCheckInstruction"));
+            auto* instruction = w.findChild<QLabel*>(QStringLiteral("planInstruction"));
             QVERIFY(title && next && instruction);
             // The template's identifier is a key for files, not words: not shown.
             QTRY_COMPARE(title->text(), QStringLiteral("Reibung unter Bildgebung"));
