@@ -237,7 +237,14 @@ def main():
                     help='exit with status 1 unless every case is within a frame and accepted (a regression check)')
     ap.add_argument('--expect-within', type=float, default=None, metavar='FRAMES',
                     help='exit with status 1 unless every case is within FRAMES frames, accepted or not')
+    ap.add_argument('--share-index', type=int, default=None, metavar='I',
+                    help="as a test, probe I of the suite's: runs only if I is in its share (NB_CASE_SHARE, tests/support/case_share.h)")
     a = ap.parse_args()
+    if a.share_index is not None:
+        share = 1 if os.environ.get('NB_ALL_CASES') else max(1, int(os.environ.get('NB_CASE_SHARE') or 1))
+        if a.share_index % share:
+            print(f"one sync probe in {share} runs here (NB_CASE_SHARE); scripts/test-all-cases.sh runs them all")
+            return 77
     seed = chosen_seed(a, 'sync_probe_matrix')
     rerun = f"--seed {seed}{' --slow-small' if a.slow_small else ''}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}"
     rerun += f" --x264-preset {a.x264_preset}" if a.x264_preset != 'medium' else ''

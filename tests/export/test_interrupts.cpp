@@ -346,7 +346,8 @@ private slots:
             const auto r = runCli({QStringLiteral("fit"), QStringLiteral("stiffness"), d.filePath(QStringLiteral("scaled.csv")), QStringLiteral("--json")});
             checkClean(r);
             QCOMPARE(r.code, 1);
-            QVERIFY2(r.err.contains(QLatin1String("no finite result")), qPrintable(r.err));
+            // Refused at the first such sample, before a fit it would make alone.
+            QVERIFY2(r.err.contains(QLatin1String("scaled.csv: stiffness sample 1 is 5.058e+157 N: a corrupt sample")), qPrintable(r.err));
             QVERIFY(!r.out.contains(QLatin1String("null")));
         }
 

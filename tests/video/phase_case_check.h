@@ -1,7 +1,7 @@
 #pragma once
 // Checks shared by the phase accuracy tests: a case of bench_accuracy's phase matrix, drawn
 // again from its seed and index, run with its imaging video against issue 13's 90 %.
-#include "support/sanitizer_share.h"
+#include "support/case_share.h"
 #include "video/phase_matrix.h"
 #include "video/video_fixtures.h"
 
@@ -53,7 +53,7 @@ inline void checkDrawnCase(unsigned seed, int index, const std::function<bool(co
         QSKIP("the ffmpeg tool is needed to encode the videos");
     PhaseMatrixCase c;
     QVERIFY2(drawnCase(seed, index, stillTheCase, c, slabs_mm), qPrintable(c.describe()));
-    NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+    NB_SKIP_OUTSIDE_CASE_SHARE();
     checkWithVideo(c, source);
 }
 

@@ -2,7 +2,7 @@
 // NB_ACCURACY_SEED repeats a draw): real simulated runs, real encoded videos, the real sync
 // pipeline; synthetic friction runs through the real fit. bench/bench_accuracy prints the
 // full table.
-#include "support/sanitizer_share.h"
+#include "support/case_share.h"
 #include "video/accuracy_matrix.h"
 #include "video/video_fixtures.h"
 
@@ -86,7 +86,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         SyncCase c;
         c.sine = true;
         c.frequency_hz = 1.0;
@@ -109,7 +109,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         std::mt19937 rng(715541);
         const std::vector<SyncCase> cases = drawSyncCases(rng, 20, false);
         QCOMPARE(cases.size(), std::size_t(20));
@@ -124,7 +124,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         SyncCase c;
         c.sine = true;
         c.frequency_hz = 0.6;
@@ -146,7 +146,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         SyncCase c;
         c.sine = false;
         c.velocity_mm_s = 6.0;
@@ -172,7 +172,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         SyncCase c;
         c.frequency_hz = 0.4;
         c.amplitude_mm = 8.0;
@@ -196,7 +196,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         SyncCase c;
         c.sine = false;
         c.velocity_mm_s = 6.0;
@@ -227,7 +227,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         SyncCase c;
         c.overlaysOnNeedleLine = true;
         c.sine = true;
@@ -259,7 +259,7 @@ private slots:
     {
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         SyncCase c;
         c.sine = true;
         c.frequency_hz = 1.0;

@@ -55,7 +55,7 @@ private slots:
         VideoSpec spec;
         spec.rate = QStringLiteral("30000/1001");
         spec.codes = sequence(60);
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "30", "-bf", "2", "-pix_fmt", "yuv420p"};
         const QString err = writeVideo(video_, spec);
         QVERIFY2(err.isEmpty(), qPrintable(err));
         store_ = dir_.filePath(QStringLiteral("store"));
@@ -87,7 +87,7 @@ private slots:
     {
         const QString plain = dir_.filePath(QStringLiteral("plain.mp4")), rotated = dir_.filePath(QStringLiteral("rotated.mp4")),
                       late = dir_.filePath(QStringLiteral("late.mkv"));
-        const QStringList lavfi{"-f", "lavfi", "-i", "testsrc2=size=320x240:rate=30", "-t", "4", "-c:v", "libx264", "-pix_fmt", "yuv420p"};
+        const QStringList lavfi{"-f", "lavfi", "-i", "testsrc2=size=320x240:rate=30", "-t", "4", "-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p"};
         // The rotation tag as a phone writes it, put on by a copy (ffmpeg 5.1 drops it on encoding).
         for (const QStringList& args : {lavfi + QStringList{plain}, QStringList{"-i", plain, "-c", "copy", "-metadata:s:v:0", "rotate=90", rotated},
                                         lavfi + QStringList{"-output_ts_offset", "5", late}}) {
@@ -125,11 +125,11 @@ private slots:
                       png = dir_.filePath(QStringLiteral("cover.png")), ts = dir_.filePath(QStringLiteral("one.ts"));
         const QStringList small{"-f", "lavfi", "-t", "2", "-i", "testsrc2=size=160x120:rate=25"};
         const QStringList large{"-f", "lavfi", "-t", "2", "-i", "testsrc2=size=320x240:rate=25"};
-        for (const QStringList& args : {small + large + QStringList{"-map", "0", "-map", "1", "-c:v", "libx264", "-pix_fmt", "yuv420p", two},
+        for (const QStringList& args : {small + large + QStringList{"-map", "0", "-map", "1", "-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p", two},
                                         QStringList{"-f", "lavfi", "-i", "color=c=red:size=64x64", "-frames:v", "1", png},
-                                        large + QStringList{"-i", png, "-map", "0", "-map", "1", "-c:v:0", "libx264", "-pix_fmt", "yuv420p",
+                                        large + QStringList{"-i", png, "-map", "0", "-map", "1", "-c:v:0", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p",
                                                             "-c:v:1", "png", "-disposition:v:1", "attached_pic", cover},
-                                        large + QStringList{"-c:v", "libx264", "-pix_fmt", "yuv420p", "-f", "mpegts", ts}}) {
+                                        large + QStringList{"-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p", "-f", "mpegts", ts}}) {
             QProcess ffmpeg;
             ffmpeg.start(QStringLiteral("ffmpeg"), QStringList{"-v", "error", "-y"} + args);
             QVERIFY(ffmpeg.waitForFinished(60000));
@@ -161,7 +161,7 @@ private slots:
         const QString other = dir_.filePath(QStringLiteral("other.mp4"));
         VideoSpec spec;
         spec.codes = sequence(45);
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "15", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "15", "-pix_fmt", "yuv420p"};
         QVERIFY(writeVideo(other, spec).isEmpty());
         QFile::remove(video_ + QStringLiteral(".bak"));
         QVERIFY(QFile::rename(video_, video_ + QStringLiteral(".bak")));

@@ -54,7 +54,7 @@ class TestFrameReader : public QObject {
     {
         VideoSpec spec;
         spec.codes = sequence(100);
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
         return spec;
     }
 
@@ -81,7 +81,7 @@ private slots:
         QTest::addColumn<int>("width");
         QTest::addColumn<int>("height");
         QTest::addColumn<QString>("rate");
-        const QStringList x264{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        const QStringList x264{"-c:v", "libx264", "-preset", "veryfast", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
         QTest::newRow("h264-bframes.mp4") << "a.mp4" << x264 << 320 << 240 << "30";
         QTest::newRow("h264-bframes.mkv") << "a.mkv" << x264 << 320 << 240 << "30000/1001";
         QTest::newRow("h264-bframes.avi") << "a.avi" << x264 << 320 << 240 << "30";
@@ -141,7 +141,7 @@ private slots:
         for (int n : {2, 3}) {
             VideoSpec spec;
             spec.codes = sequence(n);
-            spec.encodeArgs = QStringList{"-c:v", "libx264", "-bf", "2", "-pix_fmt", "yuv420p"};
+            spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-bf", "2", "-pix_fmt", "yuv420p"};
             const QString file = path(QStringLiteral("clip%1.mp4").arg(n));
             const QString err = writeVideo(file, spec);
             QVERIFY2(err.isEmpty(), qPrintable(err));
@@ -220,7 +220,7 @@ private slots:
         // Time base 1/600 s: a frame period is 20 ticks, half a period 10, all exact.
         spec.filterArgs = QStringList{"-vf", "settb=1/600,setpts=(N+floor(N/10)*0.5+floor(N/60)*12)*20", "-fps_mode", "passthrough",
                                       "-enc_time_base", "1/600"};
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "40", "-bf", "2", "-pix_fmt", "yuv420p",
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "40", "-bf", "2", "-pix_fmt", "yuv420p",
                                       "-video_track_timescale", "600"};
         if (file.endsWith(".mkv"))
             spec.encodeArgs.mid(0, 8).swap(spec.encodeArgs);
@@ -259,7 +259,7 @@ private slots:
         spec.codes = sequence(150);
         spec.filterArgs = QStringList{"-vf", "settb=1/1000,setpts=floor(N*100/3)+floor(N/10)*17", "-fps_mode", "passthrough",
                                       "-r", "1000", "-enc_time_base", "1/1000"};
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "20", "-bf", "2", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "20", "-bf", "2", "-pix_fmt", "yuv420p"};
         const QString file = path("ms_rate.mkv");
         const QString err = writeVideo(file, spec);
         QVERIFY2(err.isEmpty(), qPrintable(err));
@@ -291,7 +291,7 @@ private slots:
         VideoSpec spec;
         spec.codes = sequence(90);
         spec.filterArgs = QStringList{"-vf", "setpts='if(lt(N,30),N,N+15)/(29.97*TB)'", "-fps_mode", "passthrough"};
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p"};
         const QString file = path("dropped.mkv");
         const QString err = writeVideo(file, spec);
         QVERIFY2(err.isEmpty(), qPrintable(err));
@@ -352,7 +352,7 @@ private slots:
         QTest::addColumn<QStringList>("encodeArgs");
         // Every packet timed: the stretch is the packets no frame shows.
         QTest::newRow("h264.mp4") << QStringLiteral("h264.mp4")
-                                  << QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+                                  << QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
         // AVI with B-frames, many packets without a time: the stretch is where the decoder refused.
         QTest::newRow("mpeg4-bframes.avi") << QStringLiteral("mpeg4.avi") << QStringList{"-c:v", "mpeg4", "-g", "30", "-bf", "2", "-q:v", "4"};
     }
@@ -516,7 +516,7 @@ private slots:
     {
         VideoSpec spec;
         spec.codes = sequence(150);
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "30", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
         const QString wholeFile = path(QStringLiteral("whole-start.mp4")), damagedFile = path(QStringLiteral("damaged-start.mp4"));
         QVERIFY(writeVideo(wholeFile, spec).isEmpty());
         const FrameIndex whole = buildFrameIndex(wholeFile);
@@ -574,7 +574,7 @@ private slots:
         VideoSpec spec;
         spec.codes = sequence(240);
         spec.filterArgs = QStringList{"-vf", "noise=alls=14:allf=t+u"};  // packets the size of a real picture's
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-g", "60", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-g", "60", "-bf", "2", "-sc_threshold", "0", "-pix_fmt", "yuv420p"};
         const QString wholeFile = path(QStringLiteral("whole-noisy.mp4"));
         QVERIFY(writeVideo(wholeFile, spec).isEmpty());
         const FrameIndex whole = buildFrameIndex(wholeFile);
@@ -676,7 +676,7 @@ private slots:
         // An MP4 cut before its index (moov) cannot be opened: a clear error, no crash.
         VideoSpec spec;
         spec.codes = sequence(30);
-        spec.encodeArgs = QStringList{"-c:v", "libx264", "-pix_fmt", "yuv420p"};
+        spec.encodeArgs = QStringList{"-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p"};
         QVERIFY(writeVideo(path("m.mp4"), spec).isEmpty());
         QFile m(path("m.mp4"));
         QVERIFY(m.open(QIODevice::ReadOnly));
@@ -724,7 +724,7 @@ private slots:
         };
         const QString plain = path("upright.mp4"), tagged = path(QStringLiteral("turned%1.mp4").arg(rotation));
         const QString shown = path(QStringLiteral("shown%1.png").arg(rotation));
-        QVERIFY(QFile::exists(plain) || ffmpeg({"-f", "lavfi", "-i", "testsrc2=size=320x240:rate=25:duration=2", "-c:v", "libx264", "-pix_fmt",
+        QVERIFY(QFile::exists(plain) || ffmpeg({"-f", "lavfi", "-i", "testsrc2=size=320x240:rate=25:duration=2", "-c:v", "libx264", "-preset", "veryfast", "-pix_fmt",
                                                 "yuv444p", "-qp", "0", plain}));
         QVERIFY(ffmpeg({"-i", plain, "-c", "copy", "-metadata:s:v", QStringLiteral("rotate=%1").arg(rotation), tagged}));
         QVERIFY(ffmpeg({"-i", tagged, "-vf", "select=eq(n\\,10)", "-frames:v", "1", shown}));  // ffmpeg turns it as players do

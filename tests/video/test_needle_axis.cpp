@@ -3,7 +3,7 @@
 // A line found in the picture used to point left to right or downwards: a needle entering from
 // the right or from below then had its shaft ahead of the tip, the tip was lost in most frames
 // and the sync went by what was left (probe seed 187716, case 10: 116 frames off).
-#include "support/sanitizer_share.h"
+#include "support/case_share.h"
 #include "needle_video.h"
 
 #include <QtTest>
@@ -75,7 +75,7 @@ private slots:
 
     void pointsFromShaftToTip()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         QFETCH(double, towardsTip_deg);
         QFETCH(bool, clockOnShaft);
         QFETCH(bool, tissueCarried);
@@ -303,7 +303,7 @@ private slots:
 
     void turnsALineTheClockLeavesUndecided()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         QFETCH(double, towardsTip_deg);
         QFETCH(double, clockScale);
         NeedleVideo v{towardsTip_deg, true, false};

@@ -2,7 +2,7 @@
 // rest as well as moving, faint or clear. A texture's own edges pull the edge detector, and the
 // tracker takes out what is always there; how well it learns that decides where a resting tip
 // reads, and at a slow stroke's onset and stop half a pixel is one to two frames of sync.
-#include "support/sanitizer_share.h"
+#include "support/case_share.h"
 #include "needle_video.h"
 #include "video_fixtures.h"
 
@@ -104,7 +104,7 @@ private slots:
     }
     void readsATipAtRestOnTexture()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         QFETCH(unsigned, grainSeed);
         QString problem;
         const std::optional<std::vector<double>> errors = tipErrors(onGrain(grainSeed, strokeThenRest, 40.0, 15.0), &problem);
@@ -132,7 +132,7 @@ private slots:
     void takesTheShaftsSignForAFaintTip_data() { addGrainRows(12, 17); }
     void takesTheShaftsSignForAFaintTip()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         QFETCH(unsigned, grainSeed);
         QString problem;
         const std::optional<std::vector<double>> errors = tipErrors(onGrain(grainSeed, restThenSine, 36.0, 28.0), &problem);
@@ -162,7 +162,7 @@ private slots:
     void readsALongRestAsTheStrokeDoes_data() { addGrainRows(21, 26); }
     void readsALongRestAsTheStrokeDoes()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         QFETCH(unsigned, grainSeed);
         QString problem;
         const std::optional<std::vector<double>> errors = tipErrors(onGrain(grainSeed, longRestThenStroke, 45.0, 15.0, 400), &problem);
@@ -188,7 +188,7 @@ private slots:
     void readsPastAStretchNotRead_data() { addGrainRows(31, 36); }
     void readsPastAStretchNotRead()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         QFETCH(unsigned, grainSeed);
         NeedleVideo v = onGrain(grainSeed, restThenSine, 30.0, 22.0);
         v.counterAhead = true;
@@ -231,7 +231,7 @@ private slots:
     void shrugsOffANoisierFrame_data() { addGrainRows(41, 50); }
     void shrugsOffANoisierFrame()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         QFETCH(unsigned, grainSeed);
         NeedleVideo v = onGrain(grainSeed, restThenSine, 27.0, 23.0, 160);
         v.noisierFrame = 0;

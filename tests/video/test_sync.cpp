@@ -6,7 +6,7 @@
 #include "core/sync.h"
 #include "needle_video.h"
 #include "support/needlebench_cli.h"
-#include "support/sanitizer_share.h"
+#include "support/case_share.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -393,7 +393,7 @@ private slots:
     // the answer says what was tracked.
     void aLongVideoIsTrackedWhereTheRunCanLie()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         const nb::needle_video::NeedleVideo v = plainNeedle(2400, strokeThenAnotherLater);  // 80 s
         const QString video = dir_.filePath("long.avi"), run = dir_.filePath("stroke.csv"), trace = dir_.filePath("long-trace.csv");
         const QString problem = nb::needle_video::writeNeedleVideo(video, v);
@@ -443,7 +443,7 @@ private slots:
     // line for the whole file).
     void aVideoWhoseTimeGoesBackIsTrackedWhole()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         int code = -1;
         const QString ts = dir_.filePath("once.ts"), twice = dir_.filePath("twice.ts"), twiceTrace = dir_.filePath("twice-trace.csv");
         QProcess ffmpeg;
@@ -528,7 +528,7 @@ private slots:
     // No needle was found; the weaker motion comparison said 14.016 s at confidence 0.45.
     void shortStrokeLongAfterTheVideoStarts()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         const QString run = dir_.filePath("late.csv"), video = dir_.filePath("late.mp4"), truth = dir_.filePath("late.json");
         int code = -1;
         runJson({"simulate", "--protocol", "stiffness", "--tissue", "liver2", "--velocity-mm-s", "10", "--depth-mm", "8", "--seed", "95",
@@ -584,7 +584,7 @@ private slots:
     // needle's own line never tried). A check outside the probe's matrix, drawn at random.
     void simulatorsViewCodedAlmostStill()
     {
-        NB_SKIP_OUTSIDE_SANITIZER_SHARE();
+        NB_SKIP_OUTSIDE_CASE_SHARE();
         const QString run = dir_.filePath("held.csv"), rendered = dir_.filePath("held.avi"), coded = dir_.filePath("held.mp4");
         int code = -1;
         runJson({"simulate", "--protocol", "friction", "--tissue", "liver7", "--seed", "822", "--cycles", "4", "--frequency-hz",
