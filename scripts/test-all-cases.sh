@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every case of the suite's case matrices (the tests labelled "cases": accuracy, their regression
 # cases, the needle tracker's cases, the sync probes), of which the README's test command runs one
-# in three (tests/support/case_share.h). Run after ./scripts/test.sh, on its build; CI runs both.
+# in four (tests/support/case_share.h). Run after ./scripts/test.sh, on its build; CI runs both.
 #   NEEDLEBENCH_BUILD_DIR  build folder (default: build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
