@@ -16,9 +16,9 @@ if [ "$sanitize" = ON ]; then
   flags="-g1"
 else
   # One test more than cores: a fifth of the suite's time is waiting (the real-time simulated
-  # rig's runs, the window system, child processes), measured as idle under perf. 2 cores, one
-  # case in three of the matrices: 9 min
-  # 33 s at 2 at a time, 8 min 28 s at 3. Under the sanitizers the real-time runs need their core.
+  # rig's runs, the window system, child processes), measured as idle under perf. On 2 cores,
+  # one case in three of the matrices: 9 min 33 s at 2 at a time, 8 min 28 s at 3. Under the
+  # sanitizers the real-time runs need their core.
   jobs=$(( $(nproc) + 1 ))
 fi
 cmake -S . -B "$build" -G Ninja -DNEEDLEBENCH_SANITIZE="$sanitize" -DCMAKE_BUILD_TYPE=Release \
