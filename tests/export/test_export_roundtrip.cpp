@@ -414,7 +414,8 @@ private slots:
         {
             QFile f(QDir(sessionDir).filePath(QStringLiteral("run_003_linear.csv")));
             QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write(QByteArray("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\x02\x80", 22));
+            static constexpr char pngHead[] = "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\x02\x80";
+            f.write(pngHead, sizeof pngHead - 1);
         }
         const nb::LoadedDataset withPicture = nb::loadDataset(sessionDir);
         const QString said = withPicture.warnings.join(QLatin1Char('\n'));
