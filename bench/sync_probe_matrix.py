@@ -12,7 +12,7 @@ video shows no motion (it starts after a short stroke has ended) has no right of
 counted apart, and only a refusal or a confidence below the accept threshold is right for it.
 
   bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--expect-hits] [--exe build/app/needlebench] [--keep DIR]
-                             [--slow-small] [--expect-honest] [--damage] [--operator]
+                             [--slow-small] [--expect-honest] [--damage] [--operator] [--recode]
 
 --damage overwrites each video's packets over a stretch of 0.2-1.5 s drawn from the case's
 seed (a bad copy, a bad sector): the frames there cannot be decoded, and the sync must still
@@ -20,6 +20,9 @@ hold on the frames either side.
 
 --operator syncs as an operator who marks the picture: the needle's true line (drawn from the
 shaft towards the tip) and a box around the needle's path, leaving out the burnt-in text beside it.
+
+--recode codes each video again as H.264, as a lab converting a console's export does (x264
+preset ultrafast to slow and CRF 18-28, drawn from the case's seed): two coders' lags add up.
 
 --slow-small draws the family the main draw meets rarely: two cycles of a slow, short sine
 (0.1-0.3 Hz, ±2.5-4 mm at 3-4 px/mm, so ±8-16 px), a faint needle (contrast 28-45, noise
@@ -128,6 +131,17 @@ def damage_video(c, path):
     return start, start + length
 
 
+def recode_video(c, path):
+    """Codes the video again as H.264 (B-frames), as a lab converting a console's export might:
+    x264 preset and CRF drawn from the case's seed. Returns the new file's path."""
+    rnd = random.Random(c['seed'] * 11 + 5)
+    c['recoded'] = (rnd.choice(['ultrafast', 'superfast', 'veryfast', 'faster', 'fast', 'medium', 'slow']), rnd.randint(18, 28))
+    out = os.path.splitext(path)[0] + '_recoded.mp4'
+    subprocess.run(['ffmpeg', '-y', '-loglevel', 'error', '-i', path, '-c:v', 'libx264', '-preset', c['recoded'][0], '-crf',
+                    str(c['recoded'][1]), '-bf', '2', '-pix_fmt', 'yuv420p', out], check=True)
+    return out
+
+
 def draw_cases(seed, count):
     rnd = random.Random(seed)
     cases = []
@@ -164,6 +178,7 @@ def describe(c):
     return (f"{motion}, offset {c['offset']} s, drift {100 * c['drift']:.3f} %, {c['fps']} fps {c['size'][0]}x{c['size'][1]}, "
             f"angle {c['angle']}, {c['px_per_mm']} px/mm, noise {c['noise']}, contrast {c['contrast']}, {c['codec']}"
             + (", counter and clock" if c['counter'] else "")
+            + (f", recoded as H.264 {c['recoded'][0]} CRF {c['recoded'][1]}" if 'recoded' in c else "")
             + (f", damaged {c['damaged'][0]:.2f}-{c['damaged'][1]:.2f} s" if 'damaged' in c else ""))
 
 
@@ -183,7 +198,7 @@ def operator_marks(c, x):
     return ['--needle', ','.join(f'{v:.1f}' for v in (*p1, *p2)), '--roi', f'{lo[0]},{lo[1]},{hi[0] - lo[0]},{hi[1] - lo[1]}']
 
 
-def run_case(c, exe, root, x264_preset, damage=False, operator=False):
+def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=False):
     d = os.path.join(root, f"case{c['i']}")
     os.makedirs(d, exist_ok=True)
     if c['linear']:
@@ -197,6 +212,8 @@ def run_case(c, exe, root, x264_preset, damage=False, operator=False):
     t, x = read_run(run)
     video = os.path.join(d, 'video.mp4' if c['codec'] == 'libx264' else 'video.avi')
     draw_video(c, t, x, video, x264_preset)
+    if recode:
+        video = recode_video(c, video)
     if damage:
         c['damaged'] = damage_video(c, video)
     # A video that starts after the motion has ended (a short stroke, an offset well below
@@ -228,6 +245,8 @@ def main():
     ap.add_argument('--damage', action='store_true', help="overwrite a stretch of each video's packets (0.2-1.5 s)")
     ap.add_argument('--operator', action='store_true',
                     help="sync as an operator who draws the needle's line and a box around its path")
+    ap.add_argument('--recode', action='store_true',
+                    help="code each video again as H.264 (x264 preset ultrafast-slow and CRF 18-28 drawn per case), as a lab's conversion does")
     ap.add_argument('--x264-preset', default='medium',
                     help="x264's preset for the H.264 videos (medium, x264's own default; veryfast codes a noisy "
                          "1024x768 picture four times faster, with the same two B-frames)")
@@ -246,7 +265,7 @@ def main():
             print(f"one sync probe in {share} runs here (NB_CASE_SHARE); scripts/test-all-cases.sh runs them all")
             return 77
     seed = chosen_seed(a, 'sync_probe_matrix')
-    rerun = f"--seed {seed}{' --slow-small' if a.slow_small else ''}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}"
+    rerun = f"--seed {seed}{' --slow-small' if a.slow_small else ''}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}{' --recode' if a.recode else ''}"
     rerun += f" --x264-preset {a.x264_preset}" if a.x264_preset != 'medium' else ''
     print(f"sync_probe_matrix: seed {seed} (rerun with {rerun}), {a.cases} cases", flush=True)
     cases = (draw_slow_small_cases if a.slow_small else draw_cases)(seed, a.cases)
@@ -258,7 +277,7 @@ def main():
     worst = 0.0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.x264_preset, a.damage, a.operator), cases):
+            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.x264_preset, a.damage, a.operator, a.recode), cases):
                 if o.get('refused'):
                     if o['moving']:
                         misses += 1

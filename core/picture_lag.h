@@ -26,6 +26,11 @@ struct PictureCoding {
                                          // as the tip moves a pixel
 };
 
+// The most memory the pictures' noise can show (video/picture_memory): beyond it a coder has
+// dropped nearly all of the camera's noise, and with it what the lag's model reads its threshold
+// from. A video measured there shows the motion late by an amount the model does not know.
+inline constexpr double kMostMeasurableMemory = 0.95;
+
 // Frames by which a picture shows late a change of `change_grey` a frame in a pixel; 0 when the
 // coding carries nothing over (or is not known). At most 10.
 double pictureLag_frames(const PictureCoding& coding, double change_grey);

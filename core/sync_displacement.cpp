@@ -248,6 +248,21 @@ double medianOf(std::vector<double> v)
     return v[v.size() / 2];
 }
 
+// The coding that lags most of those whose noise the meter reads as `measured`: below the meter's
+// top reading it is the measured one; at it, the coder may hold more (core/picture_lag.h's most,
+// 0.99), and the camera's noise read through that memory is as much larger as a difference of two
+// pictures' noise, 2σ²(1 − ρ), says.
+PictureCoding mostLagging(const PictureCoding& measured)
+{
+    if (measured.memory < kMostMeasurableMemory)
+        return measured;
+    constexpr double kMost = 0.99;
+    PictureCoding most = measured;
+    most.memory = kMost;
+    most.noise_grey = measured.noise_grey * std::sqrt((1.0 - measured.memory) / (1.0 - kMost));
+    return most;
+}
+
 }  // namespace
 
 TimeSignal needlePosition(const Run& run) { return {run.time_s, run.position_mm}; }
@@ -418,7 +433,8 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     // a slow stroke timed the offset (probe seed 314159 case 1: a stroke whose start the video
     // missed, timed by its stop alone, claimed 0.29 frames and was 1.8 off at confidence 0.71;
     // what the free intercept and scale leave is a seventh of it).
-    double travel = 0.0, sa = 0.0, saa = 0.0, sax = 0.0, sx = 0.0, sxx = 0.0, lagged = 0.0;
+    double travel = 0.0, sa = 0.0, saa = 0.0, sax = 0.0, sx = 0.0, sxx = 0.0, lagged = 0.0, laggedAtMost = 0.0;
+    const PictureCoding mostCoding = mostLagging(o.coding);
     std::vector<double> cumulative(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
         const double tr = (v.t[i] - chosen.offset) / (1 + chosen.drift);
@@ -426,7 +442,9 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         const double dxdt = fit.slope * (positionAt(pos, tr + h) - positionAt(pos, tr - h)) / (2 * h);
         const double x = positionAt(pos, tr);
         // Each frame times the offset as much as its slope squared, and so weighs its own lag.
-        lagged += dxdt * dxdt * pictureLag_frames(o.coding, o.coding.edgeSlope_grey_per_px * std::abs(dxdt) * frame_s);
+        const double change_grey = o.coding.edgeSlope_grey_per_px * std::abs(dxdt) * frame_s;
+        lagged += dxdt * dxdt * pictureLag_frames(o.coding, change_grey);
+        laggedAtMost += dxdt * dxdt * pictureLag_frames(mostCoding, change_grey);
         sa += dxdt;
         saa += dxdt * dxdt;
         sax += dxdt * x;
@@ -475,14 +493,21 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     }
 
     // The coded pictures show the motion late (core/picture_lag.h): the instant they show is
-    // earlier by that lag. The lag is a model's, with the tip's edge coded as the noise is; a
-    // coder that follows the edge by motion compensation shows it sooner (H.264 at 15 frames/s,
-    // slow-small probe seed 5 case 10: 0.68 frames taken off, and the sync came out 0.74 early),
-    // so the offset is known no better than half of what was taken off.
+    // earlier by that lag. The lag is a model's, with the tip's edge coded as the noise is, and
+    // it misses both ways by about as much as it takes off: a coder that follows the edge by
+    // motion compensation shows it sooner (H.264 at 15 frames/s, slow-small probe seed 5 case 10:
+    // 0.68 frames taken off, and the sync came out 0.74 early); a video coded twice (a console's
+    // MPEG-4 made H.264 by the lab) shows it later than its last coder's noise says (0.78 frames
+    // taken off, 1.26 late; sync_probe_matrix.py --slow-small --recode, seeds 880117 and 4242:
+    // 0.3 to 1.6 times the lag left over). So the offset is known no better than the lag itself.
+    // Where the noise's memory is at the most the meter reads, the lag may be as long as the
+    // most lagging coder that memory allows (mostLagging) makes it: known no better than that
+    // either. A bold or fast edge is shown on time by any coder, and keeps its precision.
     if (saa > 0) {
         r.pictureLag_s = lagged / saa * frame_s;
         r.offset_s -= r.pictureLag_s;
-        r.uncertainty_s = std::max(r.uncertainty_s, 0.5 * r.pictureLag_s);
+        const double atMost_s = laggedAtMost / saa * frame_s;
+        r.uncertainty_s = std::max({r.uncertainty_s, r.pictureLag_s, atMost_s - r.pictureLag_s});
     }
 
     // Confidence: each factor is 1 when that part is convincing.

@@ -65,7 +65,7 @@ PictureCoding PictureMemoryMeter::coding() const
     if (!(aa > 0.0) || n < 1000.0)
         return {};
     PictureCoding out;
-    out.memory = std::clamp(1.0 + 2.0 * ab / aa, 0.0, 0.95);
+    out.memory = std::clamp(1.0 + 2.0 * ab / aa, 0.0, kMostMeasurableMemory);
     // The pictures' own noise: for noise correlated ρ from one picture to the next, a difference
     // of two has variance 2σ²(1 − ρ). The coder of core/picture_lag.h holds a pixel until it
     // passes, so the camera's noise is shown whole and this is also the camera's σ. (Read as a

@@ -321,6 +321,29 @@ private slots:
         QVERIFY2(worstFrames(knowing) < 0.15, qPrintable(QString::number(worstFrames(knowing))));
         QVERIFY2(worstFrames(unaware) > 0.5, qPrintable(QString::number(worstFrames(unaware))));
         QCOMPARE(unaware.pictureLag_s, 0.0);
+        // The lag is a model's, off by about as much as it takes off (sync_probe_recoded_honest):
+        // the offset is claimed no more precise than the lag.
+        QVERIFY2(knowing.uncertainty_s >= knowing.pictureLag_s,
+                 qPrintable(QStringLiteral("uncertainty %1 s, lag %2 s").arg(knowing.uncertainty_s).arg(knowing.pictureLag_s)));
+        // Where the pictures' noise shows the most memory the meter reads, the coder dropped the
+        // noise the model reads its threshold from: a faint edge's lag may be far longer, and the
+        // offset is not offered for acceptance. A bold edge is shown on time by any coder: its
+        // precision stays what the picture gives (fastNeedleInCleanH264 in test_accuracy).
+        nb::SyncOptions faintAtTheTop, boldAtTheTop;
+        faintAtTheTop.coding = {nb::kMostMeasurableMemory, 1.0, 3.0};
+        boldAtTheTop.coding = {nb::kMostMeasurableMemory, 0.5, 200.0};
+        const nb::SyncResult faint = nb::synchroniseDisplacement(picture, position, frame_s, faintAtTheTop);
+        const nb::SyncResult bold = nb::synchroniseDisplacement(picture, position, frame_s, boldAtTheTop);
+        qInfo("memory at the meter's most: a faint edge's lag %.2f frames, uncertainty %.2f frames, confidence %.2f; "
+              "a bold edge's lag %.2f frames, uncertainty %.2f frames (not told: %.2f)",
+              faint.pictureLag_s / frame_s, faint.uncertainty_s / frame_s, faint.confidence, bold.pictureLag_s / frame_s,
+              bold.uncertainty_s / frame_s, unaware.uncertainty_s / frame_s);
+        QVERIFY2(faint.uncertainty_s > faint.pictureLag_s && faint.uncertainty_s >= frame_s,
+                 qPrintable(QString::number(faint.uncertainty_s / frame_s)));
+        QVERIFY2(!faint.acceptable(), qPrintable(QString::number(faint.confidence)));
+        QVERIFY2(bold.pictureLag_s < 0.05 * frame_s, qPrintable(QString::number(bold.pictureLag_s / frame_s)));
+        QVERIFY2(bold.uncertainty_s < 1.1 * unaware.uncertainty_s + 0.05 * frame_s,
+                 qPrintable(QStringLiteral("%1 against %2 frames").arg(bold.uncertainty_s / frame_s).arg(unaware.uncertainty_s / frame_s)));
     }
 
     void renderedSimulatedRun()
