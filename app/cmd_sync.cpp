@@ -187,6 +187,8 @@ int cmdSync(const QStringList& args, Io io)
             o[QStringLiteral("scale_px_per_mm")] = r.scale_px_per_mm;
             o[QStringLiteral("picture_lag_s")] = r.pictureLag_s;
             o[QStringLiteral("picture_lag_frames")] = r.pictureLag_s / index.frameDuration();
+            o[QStringLiteral("picture_lag_uncertainty_s")] = r.pictureLagUncertainty_s;
+            o[QStringLiteral("picture_lag_uncertainty_frames")] = r.pictureLagUncertainty_s / index.frameDuration();
             o[QStringLiteral("method")] = r.method;
             o[QStringLiteral("accept_threshold")] = kSyncAcceptConfidence;
             o[QStringLiteral("acceptable")] = r.acceptable();
@@ -216,7 +218,9 @@ int cmdSync(const QStringList& args, Io io)
                        : moved  ? nb::TrCli::tr("uncertainty: unknown (what moved in the picture does not time the offset)\n")
                                 : nb::TrCli::tr("uncertainty: unknown (nothing in the picture moved with the recording)\n"));
             if (r.pictureLag_s > 0.0)
-                io.out << nb::TrCli::tr("coded late:  %1 frames (taken off the offset)\n").arg(r.pictureLag_s / index.frameDuration(), 0, 'f', 2);
+                io.out << nb::TrCli::tr("coded late:  %1 frames (taken off the offset), known to ±%2 frames\n")
+                              .arg(r.pictureLag_s / index.frameDuration(), 0, 'f', 2)
+                              .arg(r.pictureLagUncertainty_s / index.frameDuration(), 0, 'f', 2);
             if (!vs.track.time_s.empty()) {
                 const QLineF& a = vs.track.axis;
                 io.out << nb::TrCli::tr("needle:      %1,%2 to %3,%4 (%5)\n")
@@ -232,6 +236,10 @@ int cmdSync(const QStringList& args, Io io)
             if (!r.acceptable()) {
                 io.out << nb::TrCli::tr("LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it\n")
                               .arg(kSyncAcceptConfidence, 0, 'f', 2);
+                if (moved && r.lagLimitsPrecision())
+                    io.out << nb::TrCli::tr("the video's coder shows this slow, faint needle late by an amount known only to ±%1 frames: "
+                                            "a region or a needle line will not make it surer, an event marked in both will\n")
+                                  .arg(r.pictureLagUncertainty_s / index.frameDuration(), 0, 'f', 2);
                 if (limited)
                     io.out << nb::TrCli::tr("offsets were tried within ±%1 s (--max-offset): if the video started further from the "
                                             "recording than that, try a larger --max-offset\n")

@@ -506,8 +506,8 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     if (saa > 0) {
         r.pictureLag_s = lagged / saa * frame_s;
         r.offset_s -= r.pictureLag_s;
-        const double atMost_s = laggedAtMost / saa * frame_s;
-        r.uncertainty_s = std::max({r.uncertainty_s, r.pictureLag_s, atMost_s - r.pictureLag_s});
+        r.pictureLagUncertainty_s = std::max(r.pictureLag_s, laggedAtMost / saa * frame_s - r.pictureLag_s);
+        r.uncertainty_s = std::max(r.uncertainty_s, r.pictureLagUncertainty_s);
     }
 
     // Confidence: each factor is 1 when that part is convincing.

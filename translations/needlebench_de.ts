@@ -2296,12 +2296,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+719"/>
+        <location line="+723"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-690"/>
+        <location line="-694"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
@@ -2312,6 +2312,11 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+28"/>
+        <source>Low confidence: the video&apos;s coder shows this slow, faint needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
+        <translation>Geringe Konfidenz: Der Kodierer des Videos zeigt diese langsame, schwache Nadel verspätet, um %1 ms, auf ±%2 ms genau; den Versatz vor dem Übernehmen an einem Ereignis (Kontakt oder Durchstich) prüfen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again</source>
         <translation>Geringe Konfidenz: ist die Nadel schwach zu sehen oder liegt eingeblendeter Text auf ihrer Linie, die Linie mit Umschalt+Ziehen auf dem Video zeichnen (Schaft zur Spitze) und mit Ziehen einen Bereich um ihren Weg, dann erneut automatisch synchronisieren</translation>
     </message>
@@ -4844,7 +4849,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+57"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4915,13 +4920,13 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>coded late:  %1 frames (taken off the offset)
+        <source>coded late:  %1 frames (taken off the offset), known to ±%2 frames
 </source>
-        <translation>kodiert spät: %1 Bilder (vom Versatz abgezogen)
+        <translation>kodiert spät: %1 Bilder (vom Versatz abgezogen), auf ±%2 Bilder genau
 </translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>needle:      %1,%2 to %3,%4 (%5)
 </source>
         <translation>Nadel:       %1,%2 bis %3,%4 (%5)
@@ -4960,6 +4965,13 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>the video&apos;s coder shows this slow, faint needle late by an amount known only to ±%1 frames: a region or a needle line will not make it surer, an event marked in both will
+</source>
+        <translation>der Kodierer des Videos zeigt diese langsame, schwache Nadel um einen nur auf ±%1 Bilder bekannten Betrag verspätet: ein Bereich oder eine Nadellinie machen das nicht sicherer, ein in beiden markiertes Ereignis schon
+</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>offsets were tried within ±%1 s (--max-offset): if the video started further from the recording than that, try a larger --max-offset
 </source>
         <translation>Versätze wurden innerhalb ±%1 s versucht (--max-offset): begann das Video weiter von der Aufzeichnung entfernt, ein größeres --max-offset versuchen
@@ -4998,7 +5010,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Videodatei</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-139"/>
+        <location filename="../app/cmd_sync.cpp" line="-147"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation>Warnung: %1: %2</translation>

@@ -2290,12 +2290,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+719"/>
+        <location line="+723"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-690"/>
+        <location line="-694"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2306,6 +2306,11 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+28"/>
+        <source>Low confidence: the video&apos;s coder shows this slow, faint needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4772,7 +4777,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+57"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4833,12 +4838,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+2"/>
-        <source>coded late:  %1 frames (taken off the offset)
+        <source>coded late:  %1 frames (taken off the offset), known to ±%2 frames
 </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>needle:      %1,%2 to %3,%4 (%5)
 </source>
         <translation type="unfinished"></translation>
@@ -4873,6 +4878,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
+        <source>the video&apos;s coder shows this slow, faint needle late by an amount known only to ±%1 frames: a region or a needle line will not make it surer, an event marked in both will
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>offsets were tried within ±%1 s (--max-offset): if the video started further from the recording than that, try a larger --max-offset
 </source>
         <translation type="unfinished"></translation>
@@ -4910,7 +4921,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-139"/>
+        <location filename="../app/cmd_sync.cpp" line="-147"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation type="unfinished"></translation>

@@ -347,6 +347,26 @@ private slots:
         qInfo("%s damaged: found %.4f s (true %.4f s, %+.2f frames), confidence %.2f", qPrintable(file), found.offset_s, kOffset_s,
               (found.offset_s - kOffset_s) * kFps, found.confidence);
         QVERIFY2(std::abs(found.offset_s - kOffset_s) < 1.0 / kFps, qPrintable(QString::number(found.offset_s)));
+        // Coded twice, the faint tip shows later than the last coder's noise says (x264's veryfast
+        // put this sync 1.3 frames off): the lag taken off is known no better than itself, and where
+        // that is what keeps the offset from being accepted, the window and the command line say
+        // so, and what helps: an event, not a needle line.
+        if (!found.acceptable()) {
+            QVERIFY2(found.lagLimitsPrecision(), qPrintable(QStringLiteral("uncertainty %1 s, the lag's %2 s")
+                                                                .arg(found.uncertainty_s)
+                                                                .arg(found.pictureLagUncertainty_s)));
+            QVERIFY2(review->status().contains(QStringLiteral("the video's coder shows this slow, faint needle late")),
+                     qPrintable(review->status()));
+            QTest::qWait(300);
+            screenshot(QStringLiteral("review_coded_twice_low_confidence.png"));
+            QProcess sync;
+            sync.start(QStringLiteral(NB_EXECUTABLE), {QStringLiteral("sync"), sine, damaged});
+            QVERIFY(sync.waitForFinished(180000));
+            const QString said = QString::fromUtf8(sync.readAllStandardOutput());
+            QVERIFY2(sync.exitCode() == 0 && said.contains(QStringLiteral("LOW CONFIDENCE"))
+                         && said.contains(QStringLiteral("the video's coder shows this slow, faint needle late")),
+                     qPrintable(said + QString::fromUtf8(sync.readAllStandardError())));
+        }
 
         // Where the keyframes are known (H.264), a frame decoded across the damage says over the
         // picture that the decoder made it partly up; the keyframe after the damage says nothing.
