@@ -69,6 +69,10 @@ struct SyncResult {
     double offset_s = 0.0;         // video time minus recording time
     double correlation = 0.0;      // Pearson r at offset_s
     double confidence = 0.0;       // 0..1
+    // The confidence as the picture alone gives it, as if the coder had shown the motion on
+    // time: how well this track explains the recording. Tracks of one video (the needle, a line
+    // of text) are chosen by it, since the coder's lag says nothing of which is the needle.
+    double trackConfidence = 0.0;
     std::optional<double> onsetOffset_s;  // from the two motion onsets alone
     std::vector<std::pair<double, double>> curve;  // coarse scan: (offset, r), for display
     int pairs = 0;                 // samples compared at offset_s

@@ -503,6 +503,7 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     // Where the noise's memory is at the most the meter reads, the lag may be as long as the
     // most lagging coder that memory allows (mostLagging) makes it: known no better than that
     // either. A bold or fast edge is shown on time by any coder, and keeps its precision.
+    const double pictureUncertainty_s = r.uncertainty_s;
     if (saa > 0) {
         r.pictureLag_s = lagged / saa * frame_s;
         r.offset_s -= r.pictureLag_s;
@@ -518,14 +519,17 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
             second = std::max(second, r2s[p]);
         }
     const double qUnique = std::clamp((fit.r2 - second) / 0.05, 0.0, 1.0);
-    const double u = r.uncertainty_s / frame_s;
-    const double qPrecise = 1.0 / (1.0 + (u / 0.5) * (u / 0.5));
+    auto precise = [&](double uncertainty_s) {
+        const double u = uncertainty_s / frame_s;
+        return 1.0 / (1.0 + (u / 0.5) * (u / 0.5));
+    };
     double qOnset = 1.0;
     if (r.onsetOffset_s) {
         const double d = (chosen.offset - *r.onsetOffset_s) / 0.25;
         qOnset = std::exp(-d * d);
     }
-    r.confidence = std::clamp(qFit * qUnique * qPrecise * qOnset, 0.0, 1.0);
+    r.confidence = std::clamp(qFit * qUnique * precise(r.uncertainty_s) * qOnset, 0.0, 1.0);
+    r.trackConfidence = std::clamp(qFit * qUnique * precise(pictureUncertainty_s) * qOnset, 0.0, 1.0);
     // Where nothing times the offset (no onset, stop or turn seen, or no halves to compare),
     // its uncertainty is unknown, not the placeholder above: `sync` printed it as 15000000000
     // frames (video probe, a noise video).

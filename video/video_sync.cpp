@@ -111,7 +111,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
                 so.coding = track.coding;
                 const SyncResult r = synchroniseDisplacement({track.time_s, track.displacement_px}, needlePosition(run),
                                                              index.frameDuration(), so);
-                const double rank = r.confidence * looksLikeNeedle + 1e-3 * std::abs(r.correlation);
+                const double rank = r.trackConfidence * looksLikeNeedle + 1e-3 * std::abs(r.correlation);
                 if (!best || rank > bestRank) {
                     best = &track;
                     bestRank = rank;
@@ -132,7 +132,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
         // few: a short path of change found apart from the digits ranks low among the lines,
         // and on it a counter behind the tip held the track (slow-small probe seed 6 case 13:
         // the 18th line of 18, on the needle; tracked again, 0.54 frames off).
-        if (!(out.result.confidence >= kSyncAcceptConfidence) && !(cancel && cancel->load())) {
+        if (!(out.result.trackConfidence >= kSyncAcceptConfidence) && !(cancel && cancel->load())) {
             std::vector<NeedleAxis> again;
             std::vector<std::optional<AxisStretch>> without;
             std::vector<double> againLooks;
@@ -187,7 +187,7 @@ VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyn
     reader.leaveOutDecodedAcrossDamage(false);
     try {
         VideoSync with = syncOnce(reader, index, run, options, reach, progress, cancel);
-        if (with.result.confidence > without.result.confidence)
+        if (with.result.trackConfidence > without.result.trackConfidence)
             return with;
     } catch (const std::invalid_argument&) {
     }
