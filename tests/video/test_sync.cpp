@@ -341,6 +341,9 @@ private slots:
         QVERIFY2(faint.uncertainty_s > faint.pictureLag_s && faint.uncertainty_s >= frame_s,
                  qPrintable(QString::number(faint.uncertainty_s / frame_s)));
         QVERIFY2(!faint.acceptable(), qPrintable(QString::number(faint.confidence)));
+        // Which track is the needle, the picture alone says: the coder's lag does not lower that.
+        QVERIFY2(faint.trackConfidence > faint.confidence && faint.trackConfidence >= unaware.trackConfidence - 0.05,
+                 qPrintable(QStringLiteral("%1 against %2 (not told: %3)").arg(faint.trackConfidence).arg(faint.confidence).arg(unaware.trackConfidence)));
         QVERIFY2(bold.pictureLag_s < 0.05 * frame_s, qPrintable(QString::number(bold.pictureLag_s / frame_s)));
         QVERIFY2(bold.uncertainty_s < 1.1 * unaware.uncertainty_s + 0.05 * frame_s,
                  qPrintable(QStringLiteral("%1 against %2 frames").arg(bold.uncertainty_s / frame_s).arg(unaware.uncertainty_s / frame_s)));
