@@ -28,7 +28,7 @@ double pictureLag_frames(const PictureCoding& c, double change_grey)
     if (!(c.memory > 0.0) || !(c.noise_grey > 0.0) || !std::isfinite(change_grey))
         return 0.0;
     // The noise passes with probability 1 − memory: beyond ±threshold.
-    const double noisePass = 1.0 - std::min(c.memory, 0.99);
+    const double noisePass = 1.0 - std::min(c.memory, kMostModelledMemory);
     const double t = upperQuantile(0.5 * noisePass);
     const double z = std::abs(change_grey) / c.noise_grey;
     // The coder compares the camera's picture with the one it last showed, so a steady motion's

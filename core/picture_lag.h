@@ -30,6 +30,8 @@ struct PictureCoding {
 // dropped nearly all of the camera's noise, and with it what the lag's model reads its threshold
 // from. A video measured there shows the motion late by an amount the model does not know.
 inline constexpr double kMostMeasurableMemory = 0.95;
+// The most memory the lag's model takes: a coder holding more would never show a faint change.
+inline constexpr double kMostModelledMemory = 0.99;
 
 // Frames by which a picture shows late a change of `change_grey` a frame in a pixel; 0 when the
 // coding carries nothing over (or is not known). At most 10.

@@ -249,17 +249,16 @@ double medianOf(std::vector<double> v)
 }
 
 // The coding that lags most of those whose noise the meter reads as `measured`: below the meter's
-// top reading it is the measured one; at it, the coder may hold more (core/picture_lag.h's most,
-// 0.99), and the camera's noise read through that memory is as much larger as a difference of two
+// top reading it is the measured one; at it, the coder may hold as much as the model takes
+// (kMostModelledMemory), and the camera's noise read through that memory is as much larger as a difference of two
 // pictures' noise, 2σ²(1 − ρ), says.
 PictureCoding mostLagging(const PictureCoding& measured)
 {
     if (measured.memory < kMostMeasurableMemory)
         return measured;
-    constexpr double kMost = 0.99;
     PictureCoding most = measured;
-    most.memory = kMost;
-    most.noise_grey = measured.noise_grey * std::sqrt((1.0 - measured.memory) / (1.0 - kMost));
+    most.memory = kMostModelledMemory;
+    most.noise_grey = measured.noise_grey * std::sqrt((1.0 - measured.memory) / (1.0 - kMostModelledMemory));
     return most;
 }
 
@@ -528,8 +527,9 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         const double d = (chosen.offset - *r.onsetOffset_s) / 0.25;
         qOnset = std::exp(-d * d);
     }
-    r.confidence = std::clamp(qFit * qUnique * precise(r.uncertainty_s) * qOnset, 0.0, 1.0);
-    r.trackConfidence = std::clamp(qFit * qUnique * precise(pictureUncertainty_s) * qOnset, 0.0, 1.0);
+    const double seen = qFit * qUnique * qOnset;
+    r.confidence = std::clamp(seen * precise(r.uncertainty_s), 0.0, 1.0);
+    r.trackConfidence = std::clamp(seen * precise(pictureUncertainty_s), 0.0, 1.0);
     // Where nothing times the offset (no onset, stop or turn seen, or no halves to compare),
     // its uncertainty is unknown, not the placeholder above: `sync` printed it as 15000000000
     // frames (video probe, a noise video).
