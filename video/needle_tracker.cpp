@@ -278,7 +278,7 @@ struct AxisTracker {
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
 
     AxisTracker(const NeedleAxis& given, const FrameSamples& s, double frameDuration_s, const std::optional<AxisStretch>& notRead,
-                QRect within)
+                QRect within, bool mayTurn)
         : strip(given, s.width, s.height, within), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
     {
         if (strip.length < 20)
@@ -286,7 +286,7 @@ struct AxisTracker {
         std::vector<StripProfile> profiles = sampleStrip(strip, s);
         std::optional<AxisStretch> blind = notRead;
         // A line drawn by the operator may point either way (found ones are turned already).
-        if (shaftFromFarEnd(profiles)) {
+        if (mayTurn && shaftFromFarEnd(profiles)) {
             axis = NeedleAxis(given.p2(), given.p1());
             strip = NeedleStrip(axis, s.width, s.height, within);
             profiles = sampleStrip(strip, s);
@@ -753,7 +753,8 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
 
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,
-                                      const std::vector<std::optional<AxisStretch>>& notRead, QRect within)
+                                      const std::vector<std::optional<AxisStretch>>& notRead, QRect within,
+                                      const std::vector<char>& asPointed)
 {
     const FrameIndex& index = reader.index();
     const cv::Mat mean = framesMean(s);
@@ -765,7 +766,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
     std::vector<char> readable(axes.size(), 1);
     for (std::size_t a = 0; a < axes.size(); ++a) {
         trackers.emplace_back(settleOnShaft(mean, axes[a]), s, index.frameDuration(),
-                              a < notRead.size() ? notRead[a] : std::nullopt, within);
+                              a < notRead.size() ? notRead[a] : std::nullopt, within, !(a < asPointed.size() && asPointed[a]));
         readable[a] = trackers.back().strip.length >= 20;
         if (!readable[a] && within.isEmpty())
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));

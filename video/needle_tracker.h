@@ -68,10 +68,12 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
                                       const std::atomic_bool* cancel = nullptr,
                                       const std::vector<std::optional<AxisStretch>>& notRead = {}, QRect within = {});
 // The same, learning from `samples` (sampleFrames of this reader) instead of sampling again.
+// `asPointed` (empty, or one per axis): axes tracked the way they point, never turned round.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& samples, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
                                       const std::atomic_bool* cancel = nullptr,
-                                      const std::vector<std::optional<AxisStretch>>& notRead = {}, QRect within = {});
+                                      const std::vector<std::optional<AxisStretch>>& notRead = {}, QRect within = {},
+                                      const std::vector<char>& asPointed = {});
 
 // Tracks the tip along `axis` in every frame. Throws VideoError.
 NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis,

@@ -16,6 +16,7 @@ namespace nb::video {
 namespace {
 
 constexpr std::size_t kRetracked = 16;  // lines tracked again without the place they kept to (one more pass)
+constexpr std::size_t kTurned = 32;     // lines tracked again the other way round (in that pass)
 
 // The stretch of its axis that a track kept to, when it kept to one: the shortest stretch
 // holding three quarters of the frames in which a tip was read, when that is no longer than
@@ -136,14 +137,27 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             std::vector<NeedleAxis> again;
             std::vector<std::optional<AxisStretch>> without;
             std::vector<double> againLooks;
+            std::vector<char> asPointed;
             for (std::size_t a = 0; a < tracks.size() && again.size() < kRetracked; ++a)
                 if (const std::optional<AxisStretch> held = heldStretch(tracks[a])) {
                     again.push_back(tracks[a].axis);
                     without.push_back(held);
                     againLooks.push_back(looks[a]);
+                    asPointed.push_back(0);
                 }
+            // Every line is tracked the other way round too, as it points: which end a faint
+            // needle's shaft comes from, its frames may tell wrong, a clock's digits on the line
+            // voting with the tip, or a coder showing the tip late (probe seed 60613 case 14 and
+            // slow-small --recode seed 4242 case 9: the needle's line found and turned to point
+            // from the tip, the sync 223 and 226 frames off; tracked the other way, 0.0 and 0.5).
+            for (std::size_t a = 0; a < tracks.size() && a < kTurned; ++a) {
+                again.push_back(NeedleAxis(tracks[a].axis.p2(), tracks[a].axis.p1()));
+                without.push_back(std::nullopt);
+                againLooks.push_back(looks[a]);
+                asPointed.push_back(1);
+            }
             if (!again.empty()) {
-                retracked = trackNeedles(reader, samples, again, progress, cancel, without, options.roi);
+                retracked = trackNeedles(reader, samples, again, progress, cancel, without, options.roi, asPointed);
                 for (std::size_t a = 0; a < retracked.size(); ++a)
                     consider(retracked[a], againLooks[a]);
             }
