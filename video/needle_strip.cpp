@@ -452,11 +452,14 @@ bool shaftFromFarEnd(const std::vector<StripProfile>& profiles)
 // needle wider than the strip, a tip without a visible shaft) is the tip the strongest edge of
 // the sign that stands out more.
 
-TipModel tipModel(const std::vector<StripProfile>& profiles, const std::vector<std::vector<double>>& g, double sigma)
+TipModel tipModel(const std::vector<StripProfile>& profiles, const std::vector<std::vector<double>>& g, double sigma, int shaft)
 {
     TipModel m;
-    if (const int shaft = shaftSign(profiles)) {
-        m.polarity = -shaft;
+    if (shaft == 0)
+        shaft = shaftSign(profiles);
+    if (shaft != 0) {
+        m.shaftSeen = true;
+        m.polarity = shaft > 0 ? -1 : 1;
         m.still = staticPart(g, m.polarity);
         std::vector<double> strength;
         for (std::size_t k = 0; k < g.size(); ++k)

@@ -110,9 +110,11 @@ bool shaftFromFarEnd(const std::vector<StripProfile>& profiles);
 struct TipModel {
     int polarity = 1;
     bool gated = false;
+    bool shaftSeen = false;  // a shaft's sign decided the polarity (false: the stronger edges' sign)
     std::vector<double> still;
 };
-TipModel tipModel(const std::vector<StripProfile>& profiles, const std::vector<std::vector<double>>& g, double sigma);
+// `shaft` (+1 brighter than beside it, −1 darker) where the caller knows it; 0: as the frames show.
+TipModel tipModel(const std::vector<StripProfile>& profiles, const std::vector<std::vector<double>>& g, double sigma, int shaft = 0);
 // How strongly a frame shows the shaft (of sign `shaftSign`) over the strip's first quarter
 // (its median) and over its last 16 samples (their quarter point); NaN where the strip is too
 // short or no shaft is seen.

@@ -277,8 +277,10 @@ struct AxisTracker {
 
     NeedleAxis axis;  // as given, or turned to point from the shaft to the tip
 
+    bool shaftSeen = false;  // the tip model's (NeedleTrack::shaftSeen)
+
     AxisTracker(const NeedleAxis& given, const FrameSamples& s, double frameDuration_s, const std::optional<AxisStretch>& notRead,
-                QRect within, bool mayTurn)
+                QRect within, const AxisReading& reading)
         : strip(given, s.width, s.height, within), frame_s(frameDuration_s > 0 ? frameDuration_s : 1.0 / 30.0), axis(given)
     {
         if (strip.length < 20)
@@ -286,7 +288,7 @@ struct AxisTracker {
         std::vector<StripProfile> profiles = sampleStrip(strip, s);
         std::optional<AxisStretch> blind = notRead;
         // A line drawn by the operator may point either way (found ones are turned already).
-        if (mayTurn && shaftFromFarEnd(profiles)) {
+        if (!reading.asPointed && shaftFromFarEnd(profiles)) {
             axis = NeedleAxis(given.p2(), given.p1());
             strip = NeedleStrip(axis, s.width, s.height, within);
             profiles = sampleStrip(strip, s);
@@ -300,8 +302,9 @@ struct AxisTracker {
         if (blind)
             unread = unreadAbout({blind->from_px - strip.origin, blind->to_px - strip.origin}, g);
         sigma = robustSigma(g);
-        TipModel model = tipModel(profiles, g, sigma);
+        TipModel model = tipModel(profiles, g, sigma, reading.shaftSign);
         polarity = model.polarity;
+        shaftSeen = model.shaftSeen;
         gated = model.gated;
         // Frames whose shaft runs on to the strip's end show no tip (asked before the shaft's
         // background is taken off: where the tip is often beyond the end, that is the shaft).
@@ -754,7 +757,7 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress, const std::atomic_bool* cancel,
                                       const std::vector<std::optional<AxisStretch>>& notRead, QRect within,
-                                      const std::vector<char>& asPointed)
+                                      const std::vector<AxisReading>& readings)
 {
     const FrameIndex& index = reader.index();
     const cv::Mat mean = framesMean(s);
@@ -766,8 +769,11 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& s
     std::vector<char> readable(axes.size(), 1);
     for (std::size_t a = 0; a < axes.size(); ++a) {
         trackers.emplace_back(settleOnShaft(mean, axes[a]), s, index.frameDuration(),
-                              a < notRead.size() ? notRead[a] : std::nullopt, within, !(a < asPointed.size() && asPointed[a]));
+                              a < notRead.size() ? notRead[a] : std::nullopt, within,
+                              a < readings.size() ? readings[a] : AxisReading{});
         readable[a] = trackers.back().strip.length >= 20;
+        out[a].tipPolarity = readable[a] ? trackers.back().polarity : 0;
+        out[a].shaftSeen = trackers.back().shaftSeen;
         if (!readable[a] && within.isEmpty())
             throw VideoError(index.path, nb::TrDevices::tr("the needle line lies outside the picture"));
         out[a].axis = trackers.back().axis;

@@ -35,6 +35,11 @@ struct NeedleTrack {
     std::vector<double> displacement_px;  // tip position along the axis; NaN when masked
     NeedleAxis axis;
     bool axisDetected = false;            // false: the caller gave the axis
+    // The sign of the tip's edge along the axis (0: not read), and whether a shaft's sign told it;
+    // where none stood out it is the sign of the stronger edges, a coin toss for a faint needle at
+    // rest half the time.
+    int tipPolarity = 0;
+    bool shaftSeen = false;
     double edgeSnr = 0.0;                 // median tip edge strength over the gradient noise
     int masked = 0;                       // frames without a usable tip (duplicates included)
     int damaged = 0;                      // frames left out: in a damaged stretch of the file, not decodable
@@ -55,6 +60,12 @@ struct AxisStretch {
     double from_px = 0.0, to_px = 0.0;
 };
 
+// How to read an axis where the caller knows better than the frames.
+struct AxisReading {
+    bool asPointed = false;  // tracked the way it points, never turned round
+    int shaftSign = 0;       // +1 a shaft brighter than beside it, −1 darker; 0: as the frames show
+};
+
 // Tracks the tip along each axis in every frame, in one pass over the video. Each axis is
 // first moved (within 3° and 4 px) onto the shaft the video shows, and turned round when its
 // needle's shaft lies towards p2: an operator may draw the line roughly and either way. The
@@ -68,12 +79,12 @@ std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const std::vector<Nee
                                       const std::atomic_bool* cancel = nullptr,
                                       const std::vector<std::optional<AxisStretch>>& notRead = {}, QRect within = {});
 // The same, learning from `samples` (sampleFrames of this reader) instead of sampling again.
-// `asPointed` (empty, or one per axis): axes tracked the way they point, never turned round.
+// `readings` (empty, or one per axis): how to read each, where the caller knows.
 std::vector<NeedleTrack> trackNeedles(FrameReader& reader, const FrameSamples& samples, const std::vector<NeedleAxis>& axes,
                                       const std::function<void(int, int)>& progress = {},
                                       const std::atomic_bool* cancel = nullptr,
                                       const std::vector<std::optional<AxisStretch>>& notRead = {}, QRect within = {},
-                                      const std::vector<char>& asPointed = {});
+                                      const std::vector<AxisReading>& readings = {});
 
 // Tracks the tip along `axis` in every frame. Throws VideoError.
 NeedleTrack trackNeedle(FrameReader& reader, const NeedleAxis& axis,

@@ -137,27 +137,38 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             std::vector<NeedleAxis> again;
             std::vector<std::optional<AxisStretch>> without;
             std::vector<double> againLooks;
-            std::vector<char> asPointed;
+            std::vector<AxisReading> readings;
             for (std::size_t a = 0; a < tracks.size() && again.size() < kRetracked; ++a)
                 if (const std::optional<AxisStretch> held = heldStretch(tracks[a])) {
                     again.push_back(tracks[a].axis);
                     without.push_back(held);
                     againLooks.push_back(looks[a]);
-                    asPointed.push_back(0);
+                    readings.emplace_back();
                 }
             // Every line is tracked the other way round too, as it points: which end a faint
             // needle's shaft comes from, its frames may tell wrong, a clock's digits on the line
             // voting with the tip, or a coder showing the tip late (probe seed 60613 case 14 and
             // slow-small --recode seed 4242 case 9: the needle's line found and turned to point
             // from the tip, the sync 223 and 226 frames off; tracked the other way, 0.0 and 0.5).
+            // And where no shaft stood out along a line, its tip was read as the edge of whichever
+            // sign stood out more, a coin toss for a faint needle at rest half the time: read
+            // again as the end of a shaft of the other sign (slow-small seed 112358 case 18: a
+            // line 0.3° and 0.2 px off the needle, its tip read as the wrong edge, the sync 152
+            // frames off; read as a dark shaft's end, 0.2 frames).
             for (std::size_t a = 0; a < tracks.size() && a < kTurned; ++a) {
                 again.push_back(NeedleAxis(tracks[a].axis.p2(), tracks[a].axis.p1()));
                 without.push_back(std::nullopt);
                 againLooks.push_back(looks[a]);
-                asPointed.push_back(1);
+                readings.push_back({.asPointed = true});
+                if (!tracks[a].shaftSeen && tracks[a].tipPolarity != 0) {
+                    again.push_back(tracks[a].axis);
+                    without.push_back(std::nullopt);
+                    againLooks.push_back(looks[a]);
+                    readings.push_back({.asPointed = true, .shaftSign = tracks[a].tipPolarity});
+                }
             }
             if (!again.empty()) {
-                retracked = trackNeedles(reader, samples, again, progress, cancel, without, options.roi, asPointed);
+                retracked = trackNeedles(reader, samples, again, progress, cancel, without, options.roi, readings);
                 for (std::size_t a = 0; a < retracked.size(); ++a)
                     consider(retracked[a], againLooks[a]);
             }
