@@ -245,6 +245,7 @@ double lengthInside(int width, int height, int angle_deg, double rho)
 // median, the next line 7.3, and on the copy 360 px wide it is second).
 constexpr int kShaftLineMin_px = 40;
 constexpr std::size_t kShaftLines = 3;
+constexpr std::size_t kSpareShaftLines = 5;  // after them: spare lines (needleAxisCandidates)
 LineSums shaftLineSums(const cv::Mat& mean, cv::Mat& departure)
 {
     LineSums out;
@@ -560,7 +561,8 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi, int
     return needleAxisCandidates(sampleFrames(reader, sampleFrames_), roi, maxCount, scores);
 }
 
-std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, int maxCount, std::vector<double>* scores)
+std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, int maxCount, std::vector<double>* scores,
+                                             std::vector<std::pair<double, NeedleAxis>>* spares)
 {
     if (s.gray.size() < 3)
         return {};
@@ -633,11 +635,13 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     }
     // The lines along which a shaft stands out of the mean most (a faint needle on a grain as
     // fine as it: the ridge's lines are the grain's), refined onto the shaft's own sign.
-    std::vector<std::pair<double, NeedleAxis>> shafts;
+    std::vector<std::pair<double, NeedleAxis>> shafts, spareShafts;
     cv::Mat departure;
     const LineSums shaftSums = shaftLineSums(mean, departure);
     cv::resize(departure, departure, mean.size(), 0, 0, cv::INTER_LINEAR);
-    for (const LineCandidate& c : strongestLines(shaftSums, kShaftLines)) {
+    const std::vector<LineCandidate> shaftLines = strongestLines(shaftSums, kShaftLines + (spares ? kSpareShaftLines : 0));
+    for (std::size_t k = 0; k < shaftLines.size(); ++k) {
+        const LineCandidate& c = shaftLines[k];
         const std::optional<NeedleAxis> rough = clipped(shaftSums, c);
         if (!rough)
             continue;
@@ -649,7 +653,12 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
         // Ranked as a line of change is (what it shows moving, and the ridge under it), and
         // tracked even when that ranks it below the lines kept: a faint needle's ridge is low
         // and its tip's edge barely moves in single frames (246810 case 10: 17th of 17).
-        shafts.emplace_back(std::max(movingEdgeSnr(s, axis), 2.0) * std::sqrt(sumAlong(ridgeSums, axis)), axis);
+        const double score = std::max(movingEdgeSnr(s, axis), 2.0) * std::sqrt(sumAlong(ridgeSums, axis));
+        if (k >= kShaftLines) {
+            spareShafts.emplace_back(score, axis);
+            continue;
+        }
+        shafts.emplace_back(score, axis);
         scored.push_back(shafts.back());
     }
     std::vector<std::pair<double, std::pair<double, NeedleAxis>>> pathsByChange;  // (change on the path, (score, axis))
@@ -744,6 +753,16 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
             keep(scoredAxis.first, scoredAxis.second, 1.0, 3.0);
         added += out.size() - before;
     }
+    // Spare: the shafts of the frames' mean that ranked after those kept, when no line kept is
+    // alike them. Burnt-in text's rows outrank a faint shaft there (slow-small 112358 #17: the
+    // needle's line the fourth to eighth of them, 35 grey levels over grain of 25, the text
+    // rows first).
+    if (spares)
+        for (const auto& [score, axis] : spareShafts)
+            if ((roi.isEmpty() || crosses(axis))
+                && std::none_of(out.begin(), out.end(), [&](const NeedleAxis& o) { return alike(o, axis, 1.0, 3.0); })
+                && std::none_of(spares->begin(), spares->end(), [&](const auto& o) { return alike(o.second, axis, 1.0, 3.0); }))
+                spares->emplace_back(score, axis);
     return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include <QRect>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace nb::video {
@@ -23,7 +24,11 @@ std::optional<NeedleAxis> detectNeedleAxis(FrameReader& reader, QRect roi = {}, 
 // looks like a needle (a moving edge on a straight ridge).
 std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}, int maxCount = 4, int sampleFrames = 40,
                                              std::vector<double>* scores = nullptr);
+// `spares` (may be null) gets (score, line) of lines that look less like a needle and are alike
+// none returned, worth tracking when none of those explains the recording: the lines along which
+// a shaft stands out of the frames' mean after the few taken.
 std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& samples, QRect roi = {}, int maxCount = 4,
-                                             std::vector<double>* scores = nullptr);
+                                             std::vector<double>* scores = nullptr,
+                                             std::vector<std::pair<double, NeedleAxis>>* spares = nullptr);
 
 }  // namespace nb::video

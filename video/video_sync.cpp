@@ -65,6 +65,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
     out.tracked = reach.within(index.size());
     const bool detected = !options.axis;
     std::vector<double> scores;
+    std::vector<std::pair<double, NeedleAxis>> spares;
     // Every line that looks at all like a needle is tracked, not the few that look most like
     // one: a surface that moves across the picture (the tissue pushed by the needle) makes a
     // fan of lines crossing it at a shallow angle, along which its edge races, and those look
@@ -72,7 +73,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
     // seventh behind six of them). Which one is the needle, the fit to the recording decides.
     // One sampling serves the line finder and both passes of the tracker.
     const FrameSamples samples = sampleFrames(reader, 40, reach);
-    std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(samples, options.roi, 16, &scores)
+    std::vector<NeedleAxis> axes = detected ? needleAxisCandidates(samples, options.roi, 16, &scores, &spares)
                                             : std::vector<NeedleAxis>{*options.axis};
     if (!axes.empty()) {
         // Several lines may look like a needle (a plate's edge, a line of text): the one
@@ -166,6 +167,15 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
                     againLooks.push_back(looks[a]);
                     readings.push_back({.asPointed = true, .shaftSign = tracks[a].tipPolarity});
                 }
+            }
+            // And the spare lines the finder gave, which looked less like a needle than those
+            // tracked (slow-small 112358 #17: the needle's shaft ranked after the rows of
+            // burnt-in text in the frames' mean, and the sync was 163 frames off).
+            for (const auto& [score, axis] : spares) {
+                again.push_back(axis);
+                without.push_back(std::nullopt);
+                againLooks.push_back(scores.empty() || !(scores.front() > 0) ? 1.0 : std::sqrt(score / scores.front()));
+                readings.emplace_back();
             }
             if (!again.empty()) {
                 retracked = trackNeedles(reader, samples, again, progress, cancel, without, options.roi, readings);
