@@ -512,13 +512,15 @@ cv::Mat changingPatches(const cv::Mat& change)
     return patches;
 }
 
-// The short streaks of change (blobs of half the strongest change or more, 20 px long or more
-// and twice as long as wide), each as a rough line along it across the picture, the largest
-// first: a tip that moves a few millimetres draws a path too short to stand out of the line
-// sums, where the rows of a coder's blocks, summed over the whole picture, do (slow-small probe
-// seed 5 case 9: a path of 19 px by 10 at -94.6°, the 32 strongest lines of change all within
-// 11° of the rows).
-std::vector<NeedleAxis> streaksOfChange(const cv::Mat& counted, int width, int height)
+// The short streaks of change (blobs of half the strongest change or more, `minLength_px` long
+// or more (twice the blob's major semi-axis) and twice as long as wide), each as a rough line
+// along it across the picture, the largest first: a tip that moves a few millimetres draws a
+// path too short to stand out of the line sums, where the rows of a coder's blocks, summed over
+// the whole picture, do (slow-small probe seed 5 case 9: a path of 19 px by 10 at -94.6°, the 32
+// strongest lines of change all within 11° of the rows).
+constexpr double kStreakMin_px = 20.0;
+constexpr double kSpareStreakMin_px = 14.0;  // a tip's path of 12 px (a stroke of ±6 px)
+std::vector<NeedleAxis> streaksOfChange(const cv::Mat& counted, int width, int height, double minLength_px = kStreakMin_px)
 {
     double top = 0.0;
     cv::minMaxLoc(counted, nullptr, &top);
@@ -539,7 +541,7 @@ std::vector<NeedleAxis> streaksOfChange(const cv::Mat& counted, int width, int h
         const double common = std::sqrt(4.0 * mu11 * mu11 + (mu20 - mu02) * (mu20 - mu02));
         const double major = std::sqrt(std::max(0.0, 2.0 * (mu20 + mu02 + common)));
         const double minor = std::sqrt(std::max(0.0, 2.0 * (mu20 + mu02 - common)));
-        if (2.0 * major < 20.0 || major < 2.0 * std::max(minor, 1.0))
+        if (2.0 * major < minLength_px || major < 2.0 * std::max(minor, 1.0))
             continue;
         const double angle = 0.5 * std::atan2(2.0 * mu11, mu20 - mu02);
         const QPointF c(box.x + m.m10 / m.m00, box.y + m.m01 / m.m00), u(std::cos(angle), std::sin(angle));
@@ -757,12 +759,29 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     // alike them. Burnt-in text's rows outrank a faint shaft there (slow-small 112358 #17: the
     // needle's line the fourth to eighth of them, 35 grey levels over grain of 25, the text
     // rows first).
-    if (spares)
+    // And the short streaks of change, down to a tip's path of 12 px, whatever edge single frames
+    // show moving along them: a faint tip's path of 17 px by 8 at the top of a 320x240 MJPEG picture
+    // was the largest blob of change by twice, and the shaft behind it too faint to find in the
+    // mean; tracked, the sync was 0.4 frames off, where it had been 76 frames off (slow-small
+    // 112358 #5). A needle 26 grey levels over noise of 20.5 left a path of 23 px whose edge moves
+    // 0.95 times its noise in single frames (60613 #5, 47 frames off).
+    auto spare = [&](double score, const NeedleAxis& axis) {
+        if ((roi.isEmpty() || crosses(axis))
+            && std::none_of(out.begin(), out.end(), [&](const NeedleAxis& o) { return alike(o, axis, 1.0, 3.0); })
+            && std::none_of(spares->begin(), spares->end(), [&](const auto& o) { return alike(o.second, axis, 1.0, 3.0); }))
+            spares->emplace_back(score, axis);
+    };
+    if (spares) {
         for (const auto& [score, axis] : spareShafts)
-            if ((roi.isEmpty() || crosses(axis))
-                && std::none_of(out.begin(), out.end(), [&](const NeedleAxis& o) { return alike(o, axis, 1.0, 3.0); })
-                && std::none_of(spares->begin(), spares->end(), [&](const auto& o) { return alike(o.second, axis, 1.0, 3.0); }))
-                spares->emplace_back(score, axis);
+            spare(score, axis);
+        for (const NeedleAxis& rough : streaksOfChange(apart.counted, s.width, s.height, kSpareStreakMin_px)) {
+            const std::optional<PathLine> path = refinePath(apart.counted, apart.measured, 0.0, rough, s.width, s.height, kStreakLengthPerWidth);
+            if (!path)
+                continue;
+            const NeedleAxis axis = shaftBehindTip(s, path->axis);
+            spare(std::max(movingEdgeSnr(s, axis), 2.0) * std::sqrt(sumAlong(ridgeSums, rough)), axis);
+        }
+    }
     return out;
 }
 

@@ -26,7 +26,8 @@ std::vector<NeedleAxis> needleAxisCandidates(FrameReader& reader, QRect roi = {}
                                              std::vector<double>* scores = nullptr);
 // `spares` (may be null) gets (score, line) of lines that look less like a needle and are alike
 // none returned, worth tracking when none of those explains the recording: the lines along which
-// a shaft stands out of the frames' mean after the few taken.
+// a shaft stands out of the frames' mean after the few taken, and the short streaks of change
+// (a tip's path) too short or too faint to be taken.
 std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& samples, QRect roi = {}, int maxCount = 4,
                                              std::vector<double>* scores = nullptr,
                                              std::vector<std::pair<double, NeedleAxis>>* spares = nullptr);

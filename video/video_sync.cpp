@@ -170,13 +170,17 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             }
             // And the spare lines the finder gave, which looked less like a needle than those
             // tracked (slow-small 112358 #17: the needle's shaft ranked after the rows of
-            // burnt-in text in the frames' mean, and the sync was 163 frames off).
-            for (const auto& [score, axis] : spares) {
-                again.push_back(axis);
-                without.push_back(std::nullopt);
-                againLooks.push_back(scores.empty() || !(scores.front() > 0) ? 1.0 : std::sqrt(score / scores.front()));
-                readings.emplace_back();
-            }
+            // burnt-in text in the frames' mean, and the sync was 163 frames off), each way
+            // round: along a tip's short path the shaft behind it may be too faint for the
+            // frames to tell which way it points (112358 #5: tracked as the frames turned it,
+            // r −0.64 and 76 frames off; from the shaft's side, 0.6 frames).
+            for (const auto& [score, axis] : spares)
+                for (const NeedleAxis& way : {axis, NeedleAxis(axis.p2(), axis.p1())}) {
+                    again.push_back(way);
+                    without.push_back(std::nullopt);
+                    againLooks.push_back(scores.empty() || !(scores.front() > 0) ? 1.0 : std::sqrt(score / scores.front()));
+                    readings.push_back({.asPointed = true});
+                }
             if (!again.empty()) {
                 retracked = trackNeedles(reader, samples, again, progress, cancel, without, options.roi, readings);
                 for (std::size_t a = 0; a < retracked.size(); ++a)
