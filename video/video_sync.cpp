@@ -20,7 +20,10 @@ constexpr std::size_t kTurned = 32;     // lines tracked again the other way rou
 
 // The stretch of its axis that a track kept to, when it kept to one: the shortest stretch
 // holding three quarters of the frames in which a tip was read, when that is no longer than
-// three steps of the tip's edge detector (24 px) and a tip was read in half the frames at least.
+// six steps of the tip's edge detector (48 px) and a tip was read in half the frames at least.
+// Not three (24 px): a shaft that runs from a burnt-in counter held the track on two of its
+// digits 30 px apart, in turn (slow-small probe seed 161616 case 4, the operator's own line
+// 187 frames off; tracked again without them, 1.0 frames at confidence 0.48).
 std::optional<AxisStretch> heldStretch(const NeedleTrack& track)
 {
     std::vector<double> at;
@@ -35,7 +38,7 @@ std::optional<AxisStretch> heldStretch(const NeedleTrack& track)
     for (std::size_t i = 0; i + k <= at.size(); ++i)
         if (at[i + k - 1] - at[i] < at[best + k - 1] - at[best])
             best = i;
-    if (at[best + k - 1] - at[best] > 24.0)
+    if (at[best + k - 1] - at[best] > 48.0)
         return std::nullopt;
     return AxisStretch{at[best], at[best + k - 1]};
 }
@@ -156,11 +159,21 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             // again as the end of a shaft of the other sign (slow-small seed 112358 case 18: a
             // line 0.3° and 0.2 px off the needle, its tip read as the wrong edge, the sync 152
             // frames off; read as a dark shaft's end, 0.2 frames).
+            // Turned, a line whose track kept to one place is tracked without it as well: the
+            // digits of a counter a shaft runs from may hold the track either way round.
             for (std::size_t a = 0; a < tracks.size() && a < kTurned; ++a) {
-                again.push_back(NeedleAxis(tracks[a].axis.p2(), tracks[a].axis.p1()));
+                const NeedleAxis turned(tracks[a].axis.p2(), tracks[a].axis.p1());
+                again.push_back(turned);
                 without.push_back(std::nullopt);
                 againLooks.push_back(looks[a]);
                 readings.push_back({.asPointed = true});
+                if (const std::optional<AxisStretch> held = heldStretch(tracks[a])) {
+                    const double length = tracks[a].axis.length();
+                    again.push_back(turned);
+                    without.push_back(AxisStretch{length - held->to_px, length - held->from_px});
+                    againLooks.push_back(looks[a]);
+                    readings.push_back({.asPointed = true});
+                }
                 if (!tracks[a].shaftSeen && tracks[a].tipPolarity != 0) {
                     again.push_back(tracks[a].axis);
                     without.push_back(std::nullopt);
