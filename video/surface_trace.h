@@ -4,7 +4,9 @@
 // - its edges: the picture is summed across the needle's axis into a profile along it (a few
 //   hundred pixels a bin, so a faint, noisy edge still stands out), what stays put over the
 //   video (plates, overlays) is taken away, and the profile's gradient is matched from frame
-//   to frame; the surface's edge, spanning the picture beside the needle, dominates it;
+//   to frame; the surface's edge, spanning the picture beside the needle, dominates it. What
+//   stays put is what the profiles hold besides the surface moved as tracked (not their mean,
+//   which holds the surface's edge where it rests long), found and tracked on in turn;
 // - its texture: the tissue's shifts that video/tissue_tracker measures, added up and
 //   projected on the direction the picture moves in most.
 // Each fails on its own kind of picture (a faint texture under heavy noise; a surface whose
