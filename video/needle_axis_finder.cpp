@@ -512,15 +512,19 @@ cv::Mat changingPatches(const cv::Mat& change)
     return patches;
 }
 
-// The short streaks of change (blobs of half the strongest change or more, `minLength_px` long
-// or more (twice the blob's major semi-axis) and twice as long as wide), each as a rough line
-// along it across the picture, the largest first: a tip that moves a few millimetres draws a
-// path too short to stand out of the line sums, where the rows of a coder's blocks, summed over
+// The short streaks of change (blobs of half the strongest change or more, kSpareStreakMin_px
+// long or more (twice the blob's major semi-axis) and twice as long as wide), each as a rough
+// line along it across the picture, the largest first: a tip that moves a few millimetres draws
+// a path too short to stand out of the line sums, where the rows of a coder's blocks, summed over
 // the whole picture, do (slow-small probe seed 5 case 9: a path of 19 px by 10 at -94.6°, the 32
 // strongest lines of change all within 11° of the rows).
-constexpr double kStreakMin_px = 20.0;
-constexpr double kSpareStreakMin_px = 14.0;  // a tip's path of 12 px (a stroke of ±6 px)
-std::vector<NeedleAxis> streaksOfChange(const cv::Mat& counted, int width, int height, double minLength_px = kStreakMin_px)
+constexpr double kStreakMin_px = 20.0;       // taken as candidates
+constexpr double kSpareStreakMin_px = 14.0;  // spare: a tip's path of 12 px (a stroke of ±6 px)
+struct Streak {
+    double length_px = 0.0;
+    NeedleAxis line;
+};
+std::vector<Streak> streaksOfChange(const cv::Mat& counted, int width, int height)
 {
     double top = 0.0;
     cv::minMaxLoc(counted, nullptr, &top);
@@ -529,7 +533,7 @@ std::vector<NeedleAxis> streaksOfChange(const cv::Mat& counted, int width, int h
     const cv::Mat mask = counted >= 0.5 * top;
     cv::Mat labels, stats, centroids;
     const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
-    std::vector<std::pair<int, NeedleAxis>> streaks;  // (area, line)
+    std::vector<std::pair<int, Streak>> streaks;  // (area, streak)
     for (int i = 1; i < n; ++i) {
         const int area = stats.at<int>(i, cv::CC_STAT_AREA);
         if (area < 20)
@@ -541,17 +545,27 @@ std::vector<NeedleAxis> streaksOfChange(const cv::Mat& counted, int width, int h
         const double common = std::sqrt(4.0 * mu11 * mu11 + (mu20 - mu02) * (mu20 - mu02));
         const double major = std::sqrt(std::max(0.0, 2.0 * (mu20 + mu02 + common)));
         const double minor = std::sqrt(std::max(0.0, 2.0 * (mu20 + mu02 - common)));
-        if (2.0 * major < minLength_px || major < 2.0 * std::max(minor, 1.0))
+        if (2.0 * major < kSpareStreakMin_px || major < 2.0 * std::max(minor, 1.0))
             continue;
         const double angle = 0.5 * std::atan2(2.0 * mu11, mu20 - mu02);
         const QPointF c(box.x + m.m10 / m.m00, box.y + m.m01 / m.m00), u(std::cos(angle), std::sin(angle));
         if (const std::optional<NeedleAxis> line = acrossPicture(NeedleAxis(c - u * major, c + u * major), width, height))
-            streaks.emplace_back(area, *line);
+            streaks.emplace_back(area, Streak{2.0 * major, *line});
     }
-    std::sort(streaks.begin(), streaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::stable_sort(streaks.begin(), streaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<Streak> out;
+    for (const auto& [area, streak] : streaks)
+        out.push_back(streak);
+    return out;
+}
+
+// The first kStreaks of `streaks` at least `minLength_px` long.
+std::vector<NeedleAxis> longestFirst(const std::vector<Streak>& streaks, double minLength_px)
+{
     std::vector<NeedleAxis> out;
-    for (std::size_t k = 0; k < streaks.size() && k < kStreaks; ++k)
-        out.push_back(streaks[k].second);
+    for (const Streak& st : streaks)
+        if (st.length_px >= minLength_px && out.size() < kStreaks)
+            out.push_back(st.line);
     return out;
 }
 
@@ -730,20 +744,30 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     PictureChange apart{change.clone(), picture.measured.clone()};
     apart.counted.setTo(0.0f, patches);
     apart.measured.setTo(0.0f, patches);
-    std::vector<std::pair<double, std::pair<double, NeedleAxis>>> apartByChange;
-    auto addApart = [&](const NeedleAxis& rough, double ridgeThere, double lengthPerWidth) {
+    // A rough line refined onto the path of change on it: (change on the path, the line behind
+    // the tip, how clearly an edge moves along it).
+    struct ApartPath {
+        double changeOnPath = 0.0;
+        NeedleAxis axis;
+        double snr = 0.0;
+    };
+    auto pathApart = [&](const NeedleAxis& rough, double lengthPerWidth) -> std::optional<ApartPath> {
         const std::optional<PathLine> path = refinePath(apart.counted, apart.measured, 0.0, rough, s.width, s.height, lengthPerWidth);
         if (!path)
-            return;
+            return std::nullopt;
         const NeedleAxis axis = shaftBehindTip(s, path->axis);
-        const double snr = movingEdgeSnr(s, axis);
-        if (snr >= 2.0)
-            apartByChange.emplace_back(path->changeOnPath, std::pair{snr * std::sqrt(ridgeThere), axis});
+        return ApartPath{path->changeOnPath, axis, movingEdgeSnr(s, axis)};
+    };
+    std::vector<std::pair<double, std::pair<double, NeedleAxis>>> apartByChange;
+    auto addApart = [&](const NeedleAxis& rough, double ridgeThere, double lengthPerWidth) {
+        if (const std::optional<ApartPath> p = pathApart(rough, lengthPerWidth); p && p->snr >= 2.0)
+            apartByChange.emplace_back(p->changeOnPath, std::pair{p->snr * std::sqrt(ridgeThere), p->axis});
     };
     for (const LineCandidate& c : strongestLines(lineSums(apart.counted), 32))
         if (const std::optional<NeedleAxis> rough = clipped(ridgeSums, c))
             addApart(*rough, ridgeUnder(c), kPathLengthPerWidth);
-    for (const NeedleAxis& rough : streaksOfChange(apart.counted, s.width, s.height))
+    const std::vector<Streak> streaks = streaksOfChange(apart.counted, s.width, s.height);
+    for (const NeedleAxis& rough : longestFirst(streaks, kStreakMin_px))
         addApart(rough, sumAlong(ridgeSums, rough), kStreakLengthPerWidth);
     std::sort(apartByChange.begin(), apartByChange.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     std::size_t added = 0;
@@ -774,13 +798,9 @@ std::vector<NeedleAxis> needleAxisCandidates(const FrameSamples& s, QRect roi, i
     if (spares) {
         for (const auto& [score, axis] : spareShafts)
             spare(score, axis);
-        for (const NeedleAxis& rough : streaksOfChange(apart.counted, s.width, s.height, kSpareStreakMin_px)) {
-            const std::optional<PathLine> path = refinePath(apart.counted, apart.measured, 0.0, rough, s.width, s.height, kStreakLengthPerWidth);
-            if (!path)
-                continue;
-            const NeedleAxis axis = shaftBehindTip(s, path->axis);
-            spare(std::max(movingEdgeSnr(s, axis), 2.0) * std::sqrt(sumAlong(ridgeSums, rough)), axis);
-        }
+        for (const NeedleAxis& rough : longestFirst(streaks, kSpareStreakMin_px))
+            if (const std::optional<ApartPath> p = pathApart(rough, kStreakLengthPerWidth))
+                spare(std::max(p->snr, 2.0) * std::sqrt(sumAlong(ridgeSums, rough)), p->axis);
     }
     return out;
 }

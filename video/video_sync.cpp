@@ -142,13 +142,19 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             std::vector<std::optional<AxisStretch>> without;
             std::vector<double> againLooks;
             std::vector<AxisReading> readings;
+            auto trackAgain = [&](const NeedleAxis& axis, const std::optional<AxisStretch>& notRead, double looksLikeNeedle,
+                                  const AxisReading& reading) {
+                again.push_back(axis);
+                without.push_back(notRead);
+                againLooks.push_back(looksLikeNeedle);
+                readings.push_back(reading);
+            };
+            std::vector<std::optional<AxisStretch>> held;
+            for (const NeedleTrack& track : tracks)
+                held.push_back(heldStretch(track));
             for (std::size_t a = 0; a < tracks.size() && again.size() < kRetracked; ++a)
-                if (const std::optional<AxisStretch> held = heldStretch(tracks[a])) {
-                    again.push_back(tracks[a].axis);
-                    without.push_back(held);
-                    againLooks.push_back(looks[a]);
-                    readings.emplace_back();
-                }
+                if (held[a])
+                    trackAgain(tracks[a].axis, held[a], looks[a], {});
             // Every line is tracked the other way round too, as it points: which end a faint
             // needle's shaft comes from, its frames may tell wrong, a clock's digits on the line
             // voting with the tip, or a coder showing the tip late (probe seed 60613 case 14 and
@@ -163,23 +169,13 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             // digits of a counter a shaft runs from may hold the track either way round.
             for (std::size_t a = 0; a < tracks.size() && a < kTurned; ++a) {
                 const NeedleAxis turned(tracks[a].axis.p2(), tracks[a].axis.p1());
-                again.push_back(turned);
-                without.push_back(std::nullopt);
-                againLooks.push_back(looks[a]);
-                readings.push_back({.asPointed = true});
-                if (const std::optional<AxisStretch> held = heldStretch(tracks[a])) {
+                trackAgain(turned, std::nullopt, looks[a], {.asPointed = true});
+                if (held[a]) {
                     const double length = tracks[a].axis.length();
-                    again.push_back(turned);
-                    without.push_back(AxisStretch{length - held->to_px, length - held->from_px});
-                    againLooks.push_back(looks[a]);
-                    readings.push_back({.asPointed = true});
+                    trackAgain(turned, AxisStretch{length - held[a]->to_px, length - held[a]->from_px}, looks[a], {.asPointed = true});
                 }
-                if (!tracks[a].shaftSeen && tracks[a].tipPolarity != 0) {
-                    again.push_back(tracks[a].axis);
-                    without.push_back(std::nullopt);
-                    againLooks.push_back(looks[a]);
-                    readings.push_back({.asPointed = true, .shaftSign = tracks[a].tipPolarity});
-                }
+                if (!tracks[a].shaftSeen && tracks[a].tipPolarity != 0)
+                    trackAgain(tracks[a].axis, std::nullopt, looks[a], {.asPointed = true, .shaftSign = tracks[a].tipPolarity});
             }
             // And the spare lines the finder gave, which looked less like a needle than those
             // tracked (slow-small 112358 #17: the needle's shaft ranked after the rows of
@@ -187,13 +183,11 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             // round: along a tip's short path the shaft behind it may be too faint for the
             // frames to tell which way it points (112358 #5: tracked as the frames turned it,
             // r −0.64 and 76 frames off; from the shaft's side, 0.6 frames).
-            for (const auto& [score, axis] : spares)
-                for (const NeedleAxis& way : {axis, NeedleAxis(axis.p2(), axis.p1())}) {
-                    again.push_back(way);
-                    without.push_back(std::nullopt);
-                    againLooks.push_back(scores.empty() || !(scores.front() > 0) ? 1.0 : std::sqrt(score / scores.front()));
-                    readings.push_back({.asPointed = true});
-                }
+            for (const auto& [score, axis] : spares) {
+                const double looksLikeNeedle = scores.empty() || !(scores.front() > 0) ? 1.0 : std::sqrt(score / scores.front());
+                for (const NeedleAxis& way : {axis, NeedleAxis(axis.p2(), axis.p1())})
+                    trackAgain(way, std::nullopt, looksLikeNeedle, {.asPointed = true});
+            }
             if (!again.empty()) {
                 retracked = trackNeedles(reader, samples, again, progress, cancel, without, options.roi, readings);
                 for (std::size_t a = 0; a < retracked.size(); ++a)
