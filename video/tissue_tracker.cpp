@@ -134,6 +134,17 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     // within a few tenths of a pixel (the median disagreement: 0.1-0.2 px on clear pictures,
     // 0.4 px under heavy noise), and the reference keeps the slow tissue's motion whole.
     constexpr double kDisagree_px = 1.5;
+    // A repeated picture coded again by an inter-frame coder (a B-frame of the same camera
+    // frame) is not the same picture: it differs from the one before by requantised noise, a
+    // tenth to a third of what fresh noise and motion change between two pictures (H.264, seed
+    // 66063 phase case 16: 0.65 to 3.1 grey against 8 to 12). Read as a picture, it stops the
+    // tissue for a frame and the next one doubles its step, which the phases read as the tissue
+    // falling behind and catching up. Such a picture is left out too, one at a time: a run of
+    // them is a picture at rest, not a camera that repeats itself.
+    constexpr double kNearRepeat = 0.5;   // of the median change between successive pictures
+    constexpr std::size_t kRecentChanges = 15;
+    std::vector<double> recentChanges;    // the last kRecentChanges, oldest first
+    bool skippedNearRepeat = false;
     cv::Mat window, lastShown;
     Spectrum previous, reference;
     double previousTime = 0.0, clip = 0.0;
@@ -150,8 +161,18 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
             continue;  // in a damaged stretch of the file: left out, as a repeated picture is
         const cv::Mat shown = workingImage(*g, r, scale);
         const bool repeated = i > 0 && (index.frames[std::size_t(i)].duplicate || samePicture(lastShown, shown));
+        bool nearRepeat = false;
+        if (!repeated && !lastShown.empty() && lastShown.size == shown.size) {
+            const double change = cv::norm(shown, lastShown, cv::NORM_L1) / double(shown.total());
+            if (recentChanges.size() >= 3 && !skippedNearRepeat)
+                nearRepeat = change < kNearRepeat * quantileOf(recentChanges, 0.5);
+            recentChanges.push_back(change);
+            if (recentChanges.size() > kRecentChanges)
+                recentChanges.erase(recentChanges.begin());
+        }
+        skippedNearRepeat = nearRepeat;
         lastShown = shown;
-        if (repeated)
+        if (repeated || nearRepeat)
             continue;
         cv::Mat image = shown - background;
         // A few strong edges moving their own way (the needle's tip, bright against the

@@ -33,18 +33,18 @@ struct TissueShifts {
 
 // Frame-to-frame shifts of the picture inside `roi` (empty: everywhere), as differences of
 // the displacement measured against a reference picture, so that they add up to it. A picture
-// shown again (the index calls it a duplicate, or it decodes the same as the one before) is
-// skipped: the next is compared with the last distinct picture. Throws
-// VideoError.
+// shown again (the index calls it a duplicate, it decodes the same as the one before, or, coded
+// again by an inter-frame coder, nearly the same) is skipped: the next is compared with the last
+// distinct picture. Throws VideoError.
 TissueShifts trackTissueShifts(FrameReader& reader, QRect roi = {}, const std::function<void(int, int)>& progress = {},
                                const std::atomic_bool* cancel = nullptr);
+
+// The direction the picture moves in: the principal axis of the first `count` shifts (unit vector).
+std::pair<double, double> principalShiftAxis(const TissueShifts& shifts, std::size_t count);
 
 // The shifts as the tissue's velocity along the needle, on the recording's clock, in mm/s.
 // `problem` (may be null) says why the result is empty: too little motion in the picture or
 // no motion of the needle to scale it by.
-// The direction the picture moves in: the principal axis of the first `count` shifts (unit vector).
-std::pair<double, double> principalShiftAxis(const TissueShifts& shifts, std::size_t count);
-
 TissueMotion tissueMotionFromShifts(const TissueShifts& shifts, const Run& run, const TimelineMapping& mapping,
                                     QString* problem = nullptr);
 

@@ -84,6 +84,16 @@ private slots:
         checkDrawnCase(608326u, 21, [](const PhaseMatrixCase& d) { return d.frequency_hz < 0.2; }, QStringLiteral("too unclear to judge"));
     }
 
+    // Drawn by bench_accuracy --seed 424242 (case 20): liver3 at 0.99 Hz, a blurred picture with
+    // little texture coded as H.264, 1.5 px/mm. The picture is blind to the tissue's motion: it
+    // read it at rest in the force's every a (none of 19 readings carried), never impossible, and
+    // was trusted; it cut every a short (74.3 % with the video, 94.6 % without).
+    void blindPictureLeavesTheForce()
+    {
+        checkDrawnCase(424242u, 20, [](const PhaseMatrixCase& d) { return d.look == Look::Plain && d.frequency_hz > 0.95; },
+                       QStringLiteral("too unclear to judge"));
+    }
+
     // Cases drawn by bench_accuracy where the tissue slides only for the last few frames of
     // a stroke, while the needle slows into its turning point and moves the picture too
     // little to tell a tissue at rest from one carried. The picture's "kept up throughout"
@@ -101,6 +111,30 @@ private slots:
     void shortSlideAtTheTurn()
     {
         checkDrawnRow([](const PhaseMatrixCase& d) { return d.plateGap_mm > 0.65 * d.amplitude_mm; });
+    }
+
+    // Drawn by bench_accuracy --seed 66063 (case 16): liver7 at 0.75 Hz, a picture that drops
+    // and repeats frames, coded as H.264 with B-frames. A repeated picture came out of the coder
+    // as a B-frame near the one before, not the same: read as a picture, it stopped the tissue
+    // for a frame, and the picture cut a stroke's a to 28 ms where the force had it whole (with
+    // the video 90.5 %, without 95.6 %). A picture must not place the phases worse than the
+    // force alone did here.
+    void repeatsCodedAgain()
+    {
+        if (!nb::test::haveFfmpeg())
+            QSKIP("the ffmpeg tool is needed to encode the videos");
+        PhaseMatrixCase c;
+        QVERIFY2(drawnCase(66063u, 16, [](const PhaseMatrixCase& d) { return d.look == Look::VariableRate && d.codec == Codec::H264; }, c),
+                 qPrintable(c.describe()));
+        NB_SKIP_OUTSIDE_CASE_SHARE();
+        QTemporaryDir dir;
+        const PhaseMatrixOutcome o = runPhaseMatrixCase(c, QStringLiteral(NB_EXECUTABLE), dir.path());
+        QVERIFY2(o.ok, qPrintable(o.problem));
+        qInfo("%s: without video %.1f %%, with video %.1f %% (%s)", qPrintable(c.describe()), 100 * o.withoutVideo, 100 * o.withVideo,
+              qPrintable(o.videoSource));
+        QVERIFY2(o.videoSource.startsWith(QLatin1String("suggested from the tissue's motion")), qPrintable(o.videoSource));
+        QVERIFY2(o.withVideo >= std::max(0.9, o.withoutVideo - 0.02),
+                 qPrintable(QStringLiteral("with video %1, without %2").arg(o.withVideo).arg(o.withoutVideo)));
     }
 };
 
