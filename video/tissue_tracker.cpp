@@ -135,9 +135,9 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
     // 0.4 px under heavy noise), and the reference keeps the slow tissue's motion whole.
     constexpr double kDisagree_px = 1.5;
     // A repeated picture coded again by an inter-frame coder (a B-frame of the same camera
-    // frame) is not the same picture: it differs from the one before by requantised noise, a
-    // tenth to a third of what fresh noise and motion change between two pictures (H.264, seed
-    // 66063 phase case 16: 0.65 to 3.1 grey against 8 to 12). Read as a picture, it stops the
+    // frame) is not the same picture: it differs from the one before by requantised noise, under
+    // two fifths of what fresh noise and motion change between two pictures (H.264, seed 66063
+    // phase case 16: 0.65 to 3.1 grey against 8 to 12). Read as a picture, it stops the
     // tissue for a frame and the next one doubles its step, which the phases read as the tissue
     // falling behind and catching up. Such a picture is left out too, one at a time: a run of
     // them is a picture at rest, not a camera that repeats itself.
