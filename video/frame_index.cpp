@@ -14,6 +14,7 @@
 #include <opencv2/videoio.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 namespace nb::video {
@@ -104,10 +105,11 @@ QStringList indexWarnings(const FrameIndex& index)
     return w;
 }
 
-bool samePicture(const cv::Mat& a, const cv::Mat& b)
+double pictureChange(const cv::Mat& a, const cv::Mat& b)
 {
-    return !a.empty() && a.size == b.size && a.type() == b.type() &&
-           cv::norm(a, b, cv::NORM_L1) / double(b.total() * b.channels()) < 0.25;
+    if (a.empty() || a.size != b.size || a.type() != b.type())
+        return std::numeric_limits<double>::infinity();
+    return cv::norm(a, b, cv::NORM_L1) / double(b.total() * b.channels());
 }
 
 int FrameIndex::duplicateCount() const

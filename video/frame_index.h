@@ -100,10 +100,14 @@ inline constexpr int kRefusedPacketsTried = 1000;
 // tag, an index from packets.
 QStringList indexWarnings(const FrameIndex& index);
 
+// The mean absolute change per pixel (and channel) from one decoded picture to another;
+// infinite when they differ in size or type, or one is empty.
+double pictureChange(const cv::Mat& a, const cv::Mat& b);
 // Whether two decoded pictures are the same picture shown again. Lossy codecs re-encode a
 // repeated picture with a little coding noise (mean change ~0.1 grey level); a real picture
 // change, even sensor noise alone, is far above this. Any size and type, both alike.
-bool samePicture(const cv::Mat& a, const cv::Mat& b);
+inline constexpr double kSamePictureChange = 0.25;
+inline bool samePicture(const cv::Mat& a, const cv::Mat& b) { return pictureChange(a, b) < kSamePictureChange; }
 
 // Progress: frames indexed so far and the expected total (0 when unknown).
 using IndexProgress = std::function<void(int done, int expected)>;

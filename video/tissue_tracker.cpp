@@ -160,10 +160,10 @@ TissueShifts trackTissueShifts(FrameReader& reader, QRect roi, const std::functi
         if (!g)
             continue;  // in a damaged stretch of the file: left out, as a repeated picture is
         const cv::Mat shown = workingImage(*g, r, scale);
-        const bool repeated = i > 0 && (index.frames[std::size_t(i)].duplicate || samePicture(lastShown, shown));
+        const double change = pictureChange(lastShown, shown);
+        const bool repeated = i > 0 && (index.frames[std::size_t(i)].duplicate || change < kSamePictureChange);
         bool nearRepeat = false;
-        if (!repeated && !lastShown.empty() && lastShown.size == shown.size) {
-            const double change = cv::norm(shown, lastShown, cv::NORM_L1) / double(shown.total());
+        if (!repeated && std::isfinite(change)) {
             if (recentChanges.size() >= 3 && !skippedNearRepeat)
                 nearRepeat = change < kNearRepeat * quantileOf(recentChanges, 0.5);
             recentChanges.push_back(change);
