@@ -446,6 +446,9 @@ bool creepUnseen(const TissueMotion& tissue, const Creep& creep, double from_s, 
     return shown_mm < 0.5 * expected_mm;
 }
 
+// The time a jump in the force takes once smoothed (the smoothing spreads an instant over about
+// 20 ms).
+constexpr double kJump_s = 0.03;
 constexpr double kTrustSum_px = 3.0;  // how far the needle moves the picture in a reading that tests it
 // Clear readings a picture needs where the force is plain before it may overrule the force: one
 // that gives fewer (its noise above a slow needle's motion) is unchecked, not trusted.
@@ -641,6 +644,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         }
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
         std::optional<Creep> creep;  // the force read the tissue creeping to rest on the plate's soft part
+        std::optional<std::size_t> brokeAway;  // where the force jumped to static friction, the tissue carried until then
         QString source = forceSource;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)
@@ -746,8 +750,42 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                             top = fall;
                     for (std::size_t j = fall; j < last && over(top) - over(j) > tolerance; ++j)
                         ++down;
-                    if (fall < last && down >= std::max<std::size_t>(10, fall - (i + 1 - above)))
+                    if (fall < last && down >= std::max<std::size_t>(10, fall - (i + 1 - above))) {
                         cStart = fall;
+                        break;
+                    }
+                    // Neither back on the line nor down from the peak, and the peak reached by a
+                    // jump from a force that was rising along the stroke while the needle slowed:
+                    // that was no sliding (C + b·v falls as the needle slows), but the plate's
+                    // soft part pushing back through a tissue still carried, across the line.
+                    // The tissue broke away where it met the stiff part, whose losses act at
+                    // once, and stopped there (b2): a runs to the jump (bench_accuracy --seed
+                    // 31337 phase case 4: a read as ending 120 ms early, at the soft part). A
+                    // peak the force reaches from the line, falling as the needle slows, is the
+                    // tissue at rest stuck again as the needle slows into the band: c stands.
+                    // Only where the peak is the stroke's highest: static friction caps the
+                    // force while the tissue is stuck.
+                    std::size_t reached = i + 1 - above;
+                    while (reached < fall && over(reached) < 0.9 * over(top))
+                        ++reached;
+                    std::size_t before = reached;
+                    while (before > cStart && run.time_s[reached] - run.time_s[before - 1] <= kJump_s)
+                        --before;
+                    bool highest = true;
+                    for (std::size_t j = h.start; j < last && highest; ++j)
+                        highest = over(j) <= over(top) + tolerance;
+                    const double rise_N = over(reached) - over(before);
+                    const double pushed_N = h.direction * (force[before] - force[cStart]);
+                    const bool slowing = std::abs(v[before]) < std::abs(v[cStart]);
+                    if (highest && slowing && pushed_N >= tolerance && rise_N >= std::max(3.0 * tolerance, 0.6 * over(top))) {
+                        brokeAway = before;
+                        while (*brokeAway < reached && over(*brokeAway) < over(before) + 0.5 * rise_N)
+                            ++*brokeAway;
+                        std::size_t back = reached;
+                        while (back < last && over(back) > tolerance)
+                            ++back;
+                        cStart = back;
+                    }
                     break;
                 }
             }
@@ -846,9 +884,11 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             // b1/b2: the tissue bears on the plate progressively, then fully (the force
             // closes on the line, models.md 5: the relative velocity grows); b2 once the gap
             // to the line has closed to a quarter of what it was when the tissue met the plate.
+            if (brokeAway)
+                aEnd = *brokeAway;
             const double gap0 = aEnd < cStart ? std::abs(force[aEnd] - line(aEnd)) : 0.0;
-            b2Start = cStart;
-            while (!creep && b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
+            b2Start = brokeAway ? aEnd : cStart;
+            while (!creep && !brokeAway && b2Start > aEnd && std::abs(force[b2Start - 1] - line(b2Start - 1)) <= 0.25 * gap0)
                 --b2Start;
         } else {
             while (aEnd < h.end && std::abs(v[aEnd]) < o.zeroBand_mm_s / 2)

@@ -94,6 +94,16 @@ private slots:
                        QStringLiteral("too unclear to judge"));
     }
 
+    // Drawn by bench_accuracy --seed 31337 (case 4): liver1 at 0.49 Hz, ±4.1 mm over a 2.77 mm
+    // plate gap, a picture too noisy to judge, so the force decides. The tissue is carried
+    // across the plate's soft part and breaks away only on the stiff part; the force's a ended
+    // where it touched the plate, 120 ms early each withdrawal (85.3 %).
+    void carriedAcrossTheSoftPart()
+    {
+        checkDrawnCase(31337u, 4, [](const PhaseMatrixCase& d) { return d.plateGap_mm > 0.65 * d.amplitude_mm && d.look == Look::NoisyLowContrast; },
+                       QStringLiteral("too unclear to judge"));
+    }
+
     // Cases drawn by bench_accuracy where the tissue slides only for the last few frames of
     // a stroke, while the needle slows into its turning point and moves the picture too
     // little to tell a tissue at rest from one carried. The picture's "kept up throughout"
