@@ -700,7 +700,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
         const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
         const bool neverReleased = firstCarried && h.start == strokes.front()->start;
-        if (travel_mm(h) < 0.1 * usualTravel_mm || carried || neverReleased) {
+        if (travel_mm(h) < 0.1 * usualTravel_mm || carried || (neverReleased && !tissue)) {
             out.push_back({track, QStringLiteral("a"), t0, t1, carried ? carriedSource : forceSource});
             continue;
         }
@@ -1010,6 +1010,11 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             while (cStart < h.end && std::abs(run.force_N[cStart] - plateau) > o.settledFraction * step)
                 ++cStart;
             b2Start = aEnd + (cStart - std::min(cStart, aEnd)) / 2;
+        }
+        if (neverReleased) {  // carried throughout, as the force reads it; a trusted picture may still say otherwise
+            aEnd = cStart = b2Start = h.end;
+            creep.reset();
+            brokeAway.reset();
         }
         if (tissue) {
             // The picture measures the relative velocity itself, one value per pair of frames:
