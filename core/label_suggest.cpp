@@ -828,7 +828,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     // Only where the peak is the stroke's highest: static friction caps the
                     // force while the tissue is stuck.
                     std::size_t reached = i + 1 - above;
-                    while (reached < fall && over(reached) < 0.9 * over(top))
+                    while (reached + 1 < fall && over(reached) < 0.9 * over(top))
                         ++reached;
                     std::size_t before = reached;
                     while (before > cStart && run.time_s[reached] - run.time_s[before - 1] <= kJump_s)
@@ -965,6 +965,8 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 std::size_t first = aEnd;
                 while (first < last && h.direction * force[first] < strongest_N - tolerance)
                     ++first;
+                if (first >= last)  // never there before the needle slows into the band
+                    first = aEnd;
                 std::size_t before = first;
                 while (before > aEnd && run.time_s[first] - run.time_s[before - 1] <= kJump_s)
                     --before;
