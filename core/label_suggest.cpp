@@ -476,6 +476,58 @@ std::optional<FrictionFit> slidingLines(const Run& run)
     }
 }
 
+// Whether the run's first stroke, from the centre, never released the tissue (a throughout):
+// it may reach only the plate's soft part. The tissue breaks away only where the force reaches
+// static friction, which the run's whole strokes of that direction show as their strongest
+// force: the first stroke stays well below it (kReleased), and below the sliding line everywhere
+// (the tissue never slides). Its first moments are left out, where the stage starts at speed and
+// the tissue may slip for a moment in the gap, which is no phase; but it must be carried once the
+// stage is at speed (the force well below the sliding line), not go on sliding. `force` is the
+// smoothed force, `strokes` the run's strokes in order.
+bool firstStrokeCarried(const Run& run, const std::vector<double>& force, const std::vector<double>& v_mm_s,
+                        const std::vector<const HalfCycle*>& strokes, const FrictionFit& lines)
+{
+    if (strokes.size() < 5)
+        return false;
+    const HalfCycle& first = *strokes.front();
+    const KarnoppModel& m = lines.model;
+    auto along = [&](std::size_t i, const HalfCycle& h) { return h.direction * force[i]; };
+    auto sliding = [&](std::size_t i, const HalfCycle& h) {
+        return h.direction > 0 ? m.Cp_N + m.bp_Ns_per_m * v_mm_s[i] / 1000.0 : m.Cn_N - m.bn_Ns_per_m * v_mm_s[i] / 1000.0;
+    };
+    auto started = [&](std::size_t i) { return run.time_s[i] - run.time_s.front() >= kStartTransient_s; };
+    auto strongest_N = [&](const HalfCycle& h) {
+        double top = -std::numeric_limits<double>::infinity();
+        for (std::size_t i = h.start; i < h.end; ++i)
+            if (started(i))
+                top = std::max(top, along(i, h));
+        return top;
+    };
+    std::vector<double> tops;
+    for (std::size_t k = 1; k + 1 < strokes.size(); ++k)
+        if (strokes[k]->direction == first.direction)
+            tops.push_back(strongest_N(*strokes[k]));
+    if (tops.size() < 2)
+        return false;
+    std::nth_element(tops.begin(), tops.begin() + std::ptrdiff_t(tops.size() / 2), tops.end());
+    if (!(strongest_N(first) < kReleased * tops[tops.size() / 2]))
+        return false;
+    const double slidingMost_N = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
+    const double tolerance_N = std::clamp(3.0 * lines.rms_N, 0.1 * slidingMost_N, 0.25 * slidingMost_N);
+    double carried_N = 0.0, slidingSum_N = 0.0;
+    for (std::size_t i = first.start; i < first.end; ++i) {
+        if (!started(i))
+            continue;
+        if (along(i, first) - sliding(i, first) >= -tolerance_N)
+            return false;
+        if (run.time_s[i] - run.time_s.front() < 2.0 * kStartTransient_s) {
+            carried_N += along(i, first);
+            slidingSum_N += sliding(i, first);
+        }
+    }
+    return slidingSum_N > 0.0 && carried_N < 0.5 * slidingSum_N;
+}
+
 }  // namespace
 
 Labels suggestPhaseLabels(const Run& run, const SuggestOptions& o)
@@ -638,59 +690,11 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             usualTravel_mm = travels[travels.size() / 2];
         }
     }
-    // The run's first stroke, from the centre, may reach only the plate's soft part and never
-    // release the tissue (a throughout). The tissue breaks away only where the force reaches
-    // static friction, which the run's whole strokes of that direction show as their strongest
-    // force: the first stroke stays well below it, and below the sliding line everywhere (the
-    // tissue never slides). Leaving out its first moments, where the stage starts at speed and
-    // the tissue may slip for a moment in the gap, which is no phase; but it must be carried
-    // once the stage is at speed (the force well below the sliding line), not go on sliding.
     std::vector<const HalfCycle*> strokes;
     for (const HalfCycle& h : cycles)
         if (h.end > h.start + 4)
             strokes.push_back(&h);
-    auto firstStrokeCarried = [&]() {
-        if (!lines || strokes.size() < 5)
-            return false;
-        const HalfCycle& first = *strokes.front();
-        const KarnoppModel& m = lines->model;
-        auto along = [&](std::size_t i, const HalfCycle& h) { return h.direction * force[i]; };
-        auto sliding = [&](std::size_t i, const HalfCycle& h) {
-            return h.direction > 0 ? m.Cp_N + m.bp_Ns_per_m * v[i] / 1000.0 : m.Cn_N - m.bn_Ns_per_m * v[i] / 1000.0;
-        };
-        auto started = [&](std::size_t i) { return run.time_s[i] - run.time_s.front() >= kStartTransient_s; };
-        auto strongest_N = [&](const HalfCycle& h) {
-            double top = -std::numeric_limits<double>::infinity();
-            for (std::size_t i = h.start; i < h.end; ++i)
-                if (started(i))
-                    top = std::max(top, along(i, h));
-            return top;
-        };
-        std::vector<double> tops;
-        for (std::size_t k = 1; k + 1 < strokes.size(); ++k)
-            if (strokes[k]->direction == first.direction)
-                tops.push_back(strongest_N(*strokes[k]));
-        if (tops.size() < 2)
-            return false;
-        std::nth_element(tops.begin(), tops.begin() + std::ptrdiff_t(tops.size() / 2), tops.end());
-        if (!(strongest_N(first) < kReleased * tops[tops.size() / 2]))
-            return false;
-        const double slidingMost_N = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
-        const double tolerance_N = std::clamp(3.0 * lines->rms_N, 0.1 * slidingMost_N, 0.25 * slidingMost_N);
-        double carried_N = 0.0, slidingSum_N = 0.0;
-        for (std::size_t i = first.start; i < first.end; ++i) {
-            if (!started(i))
-                continue;
-            if (along(i, first) - sliding(i, first) >= -tolerance_N)
-                return false;
-            if (run.time_s[i] - run.time_s.front() < 2.0 * kStartTransient_s) {
-                carried_N += along(i, first);
-                slidingSum_N += sliding(i, first);
-            }
-        }
-        return slidingSum_N > 0.0 && carried_N < 0.5 * slidingSum_N;
-    };
-    const bool firstCarried = firstStrokeCarried();
+    const bool firstCarried = lines && firstStrokeCarried(run, force, v, strokes, *lines);
     const HalfCycle* lastStroke = nullptr;
     for (const HalfCycle& h : cycles) {
         if (h.end <= h.start + 4)
