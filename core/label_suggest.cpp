@@ -695,15 +695,13 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         if (h.end > h.start + 4)
             strokes.push_back(&h);
     const bool firstCarried = lines && firstStrokeCarried(run, force, v, strokes, *lines);
-    const HalfCycle* lastStroke = nullptr;
-    for (const HalfCycle& h : cycles) {
-        if (h.end <= h.start + 4)
-            continue;
-        lastStroke = &h;
+    const HalfCycle* lastStroke = strokes.empty() ? nullptr : strokes.back();
+    for (const HalfCycle* stroke : strokes) {
+        const HalfCycle& h = *stroke;
         const QString track = h.direction > 0 ? QStringLiteral("insertion") : QStringLiteral("withdrawal");
         // Up to where the next half-cycle starts, so that the phases tile the run without gaps.
         const double t0 = run.time_s[h.start], t1 = h.end < run.size() ? run.time_s[h.end] : run.time_s.back();
-        const bool neverReleased = firstCarried && h.start == strokes.front()->start;
+        const bool neverReleased = firstCarried && stroke == strokes.front();
         if (travel_mm(h) < 0.1 * usualTravel_mm || carried || (neverReleased && !tissue)) {
             out.push_back({track, QStringLiteral("a"), t0, t1, carried ? carriedSource : forceSource});
             continue;
@@ -711,6 +709,17 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
         std::size_t aEnd = h.start, cStart = h.start, b2Start = h.start;
         std::optional<Creep> creep;  // the force read the tissue creeping to rest on the plate's soft part
         std::optional<std::size_t> brokeAway;  // where the force jumped to static friction, the tissue carried until then
+        // A jump that reaches `level` at sample `at`: where it starts (kJump_s before, not before
+        // `floor`) and its middle, where `level` has risen half of it.
+        auto jumpInto = [&](std::size_t at, std::size_t floor, auto level) {
+            std::size_t before = at;
+            while (before > floor && run.time_s[at] - run.time_s[before - 1] <= kJump_s)
+                --before;
+            std::size_t middle = before;
+            while (middle < at && level(middle) - level(before) < 0.5 * (level(at) - level(before)))
+                ++middle;
+            return std::make_pair(before, middle);
+        };
         QString source = forceSource;
         if (lines) {
             // c: the force follows the sliding line (relative velocity = needle velocity)
@@ -834,9 +843,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     std::size_t reached = i + 1 - above;
                     while (reached + 1 < fall && over(reached) < 0.9 * over(top))
                         ++reached;
-                    std::size_t before = reached;
-                    while (before > cStart && run.time_s[reached] - run.time_s[before - 1] <= kJump_s)
-                        --before;
+                    const auto [before, middle] = jumpInto(reached, cStart, over);
                     bool highest = true;
                     for (std::size_t j = h.start; j < last && highest; ++j)
                         highest = over(j) <= over(top) + tolerance;
@@ -844,9 +851,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     const double pushed_N = h.direction * (force[before] - force[cStart]);
                     const bool slowing = std::abs(v[before]) < std::abs(v[cStart]);
                     if (highest && slowing && pushed_N >= tolerance && rise_N >= std::max(3.0 * tolerance, 0.6 * over(top))) {
-                        brokeAway = before;
-                        while (*brokeAway < reached && over(*brokeAway) < over(before) + 0.5 * rise_N)
-                            ++*brokeAway;
+                        brokeAway = middle;
                         std::size_t back = reached;
                         while (back < last && over(back) > tolerance)
                             ++back;
@@ -971,9 +976,8 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                     ++first;
                 if (first >= last)  // never there before the needle slows into the band
                     first = aEnd;
-                std::size_t before = first;
-                while (before > aEnd && run.time_s[first] - run.time_s[before - 1] <= kJump_s)
-                    --before;
+                auto along = [&](std::size_t i) { return h.direction * force[i]; };
+                const auto [before, middle] = jumpInto(first, aEnd, along);
                 const double jump_N = h.direction * (force[first] - force[before]);
                 const double pushed_N = h.direction * (force[before] - force[aEnd]);
                 bool reachedBefore = false, fell = false;
@@ -987,9 +991,7 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                 if (!reachedBefore && !fell && first < last && first <= cStart + (first - before) && before > aEnd &&
                     pushed_N >= tolerance && std::abs(v[before]) <= kSlowing * std::abs(v[aEnd]) && jump_N >= 3.0 * tolerance &&
                     (held[h.direction > 0 ? 0 : 1] || strongest_N - h.direction * line(before) > tolerance)) {
-                    brokeAway = before;
-                    while (*brokeAway < first && h.direction * (force[*brokeAway] - force[before]) < 0.5 * jump_N)
-                        ++*brokeAway;
+                    brokeAway = middle;
                     cStart = std::max(cStart, first);
                 }
             }
