@@ -6952,7 +6952,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+1133"/>
+        <location filename="../core/label_suggest.cpp" line="+234"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>
@@ -6972,7 +6972,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>keine Bilder nahe der Punktion</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+54"/>
         <source>the surface&apos;s motion around the puncture could not be fitted</source>
         <translation>die Bewegung der Oberfläche um die Punktion ließ sich nicht anpassen</translation>
     </message>
@@ -7396,7 +7396,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>unbekanntes Gewebe &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location filename="../video/frame_index.cpp" line="+281"/>
+        <location filename="../video/frame_index.cpp" line="+283"/>
         <location filename="../video/packet_index.cpp" line="+21"/>
         <source>no such file</source>
         <translation>Datei existiert nicht</translation>
@@ -7432,7 +7432,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kann nicht als Video geöffnet werden (keine Videodatei oder ein Format, das FFmpeg nicht liest)</translation>
     </message>
     <message>
-        <location line="-212"/>
+        <location line="-213"/>
         <source>the file says its picture is turned by %1°: shown turned, as players show it</source>
         <translation>laut Datei ist das Bild um %1° gedreht: gedreht gezeigt, wie Abspielprogramme es zeigen</translation>
     </message>
@@ -7466,14 +7466,14 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>die Datei enthält %1 Videospuren: nur die erste (%2x%3) wird gezeigt und vermessen</translation>
     </message>
     <message>
-        <location line="+276"/>
+        <location line="+277"/>
         <location filename="../video/packet_index.cpp" line="+45"/>
         <location line="+8"/>
         <source>no frame could be decoded (truncated or corrupt file?)</source>
         <translation>kein Bild konnte dekodiert werden (Datei abgeschnitten oder beschädigt?)</translation>
     </message>
     <message>
-        <location line="-298"/>
+        <location line="-299"/>
         <source>only %1 of %2 frames are readable: the file is cut off, or damaged after that frame</source>
         <translation>nur %1 von %2 Bildern sind lesbar: die Datei ist abgeschnitten oder nach diesem Bild beschädigt</translation>
     </message>
@@ -7877,7 +7877,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Treiber durch einen Fehler abgeschaltet (Übertemperatur oder Versorgung)</translation>
     </message>
     <message>
-        <location filename="../video/needle_tracker.cpp" line="+771"/>
+        <location filename="../video/needle_tracker.cpp" line="+778"/>
         <source>the needle line lies outside the picture</source>
         <translation>die Nadellinie liegt außerhalb des Bildes</translation>
     </message>
@@ -7917,7 +7917,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>kein Bild des Videos ließ sich dekodieren</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+158"/>
         <source>too few frames or samples to follow the tissue</source>
         <translation>zu wenige Bilder oder Messwerte, um dem Gewebe zu folgen</translation>
     </message>
