@@ -262,6 +262,17 @@ private slots:
             << QStringList{"--tissue", "liver3", "--frequency-hz", "0.8111", "--amplitude-mm", "4.769", "--plate-gap-mm", "3.910",
                            "--stick-band-mm-s", "4.35", "--force-noise-n", "0.0046", "--thickness-mm", "30.0", "--cycles", "3",
                            "--seed", "616232"} << 0.97;
+        // One direction never slid, and the other's "line" is a level: the force held at static
+        // friction against the plate near the turning point, read as c (65.8 % and 50.2 %; random
+        // draws at short reach and at the matrix's edge, seeds 4713 case 1 and 6060 case 32).
+        QTest::newRow("prostate 0.40 Hz gap 5.1 mm of 6.1, a level one way")
+            << QStringList{"--tissue", "prostate", "--frequency-hz", "0.3997", "--amplitude-mm", "6.147", "--plate-gap-mm", "5.051",
+                           "--stick-band-mm-s", "3.54", "--force-noise-n", "0.0011", "--thickness-mm", "30.0", "--cycles", "3",
+                           "--seed", "604811"} << 0.92;
+        QTest::newRow("liver3 0.18 Hz gap 2.8 mm of 4.1, a level one way")
+            << QStringList{"--tissue", "liver3", "--frequency-hz", "0.1821", "--amplitude-mm", "4.127", "--plate-gap-mm", "2.822",
+                           "--stick-band-mm-s", "2.09", "--force-noise-n", "0.0006", "--thickness-mm", "34.8", "--cycles", "3",
+                           "--seed", "181063"} << 0.82;
         // Not where the force does follow a line, however briefly the tissue slides and however
         // undetermined the fit's C and b (prostate at 0.11 Hz, reach 2 mm past the gap: 95.6 %,
         // 81.9 % when the withdrawals were read as carried; seed 9191 at the matrix's edge, case 29).
