@@ -335,12 +335,13 @@ PhaseLines phaseLines(const Run& run, const std::vector<double>& force, const st
                                    slides(lines->model.Cn_N, lines->seCn_N, lines->model.bn_Ns_per_m, lines->seBn_Ns_per_m)};
         out.neverSlid[0] = !(up.ok && up.c0_N > 0.0) && !fitSlides[0];
         out.neverSlid[1] = !(down.ok && down.c0_N < 0.0) && !fitSlides[1];
-        // The other direction's line, where one never slid, may be a level rather than a line (b = 0,
-        // flat over the speeds) with the fit seeing no sliding there either: the force held at
-        // static friction against the plate near the turning point, not sliding. Sliding acts on
-        // both directions alike, through the same tissue; the slab turned back at both plates
-        // (random draws at short reach: 65.8 % and 66.3 % read the level as c, seeds 4713 case 1
-        // and 4711 case 0; at the matrix's edge 50.2 %, seed 6060 case 32).
+        // The other direction's line, where one never slid, may be a level rather than a line
+        // (b = 0: slidingLine clamps a force that does not rise with speed to a level) with the fit
+        // seeing no sliding there either: the force held at static friction against the plate
+        // near the turning point, not sliding. Sliding acts on both directions alike, through the
+        // same tissue; the slab turned back at both plates (random draws at short reach: 65.8 %
+        // and 66.3 % read the level as c, seeds 4713 case 1 and 4711 case 0; at the matrix's edge
+        // 50.2 %, seed 6060 case 32).
         const bool level[2] = {up.ok && up.b_Ns_per_m == 0.0, down.ok && down.b_Ns_per_m == 0.0};
         for (int d : {0, 1})
             if (out.neverSlid[1 - d] && level[d] && !fitSlides[d])
