@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <iterator>
 #include <optional>
 
 namespace nb {
@@ -46,7 +45,6 @@ std::vector<double> velocity(const Run& run)
     }
     return s;
 }
-
 
 std::vector<HalfCycle> halfCycles(const std::vector<double>& v, double band)
 {
@@ -96,7 +94,9 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
                               tissue && tissue->time_s.size() > 1
                                   ? 0.5 * (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1)
                                   : 0.0,
-                              tissue && pictureTrusted(run, tissue, videoNoise_mm_s, o)};
+                              tissue && pictureTrusted(run, tissue, videoNoise_mm_s, o),
+                              tissue ? QStringLiteral("suggested from the tissue's motion in %1 (timed by force and position)").arg(tissue->source)
+                                     : QString()};
     const std::size_t n = run.size();
     const double rate = (n - 1) / std::max(1e-9, run.time_s.back() - run.time_s.front());
     const int half = std::max(1, int(0.01 * rate));

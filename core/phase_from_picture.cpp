@@ -215,7 +215,7 @@ QString placeByPicture(const HalfCycle& h, double t0, double t1, StrokeBounds& b
     const TissueMotion* tissue = p.tissue;
     const double videoNoise_mm_s = p.noise_mm_s, frameHalf_s = p.frameHalf_s;
     const bool videoTrusted = p.trusted;
-    const QString videoSource = QStringLiteral("suggested from the tissue's motion in %1 (timed by force and position)").arg(tissue->source);
+    const QString& videoSource = p.source;
     std::size_t &aEnd = b.aEnd, &cStart = b.cStart, &b2Start = b.b2Start;
     const std::optional<Creep>& creep = b.creep;
     QString source = forceSource;

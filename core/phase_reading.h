@@ -74,6 +74,7 @@ struct PictureView {
     double noise_mm_s = 0.0;   // the picture's velocity noise (pictureNoise_mm_s)
     double frameHalf_s = 0.0;
     bool trusted = false;      // it agrees with the force where the force is plain (pictureTrusted)
+    QString source;            // what labels the picture placed were suggested from
 };
 
 // From the force (phase_from_force.cpp).
