@@ -143,10 +143,14 @@ Labels suggestPhaseLabels(const Run& run, const TissueMotion* tissue, const Sugg
             out.push_back({track, QStringLiteral("a"), t0, t1, carried ? carriedSource : forceSource});
             continue;
         }
-        // The first stroke that never released the tissue, and a direction that never slid, are
-        // carried throughout as the force reads them; a trusted picture may still say otherwise.
-        StrokeBounds b = neverReleased || phaseLinesOfRun.neverSlid[h.direction > 0 ? 0 : 1] ? StrokeBounds{h.end, h.end, h.end, {}}
-                                                                                             : boundsFromForce(h, reading, o);
+        // The first stroke that never released the tissue, a stroke the tissue stayed stuck through
+        // into the turning point (pressed on the plate and taken back), and a direction that never
+        // slid are carried throughout as the force reads them; a trusted picture may still say
+        // otherwise.
+        const HalfCycle* next = &h + 1 < cycles.data() + cycles.size() ? &h + 1 : nullptr;
+        const bool stuck = next && stuckThroughTurn(run, force, h, *next, phaseLinesOfRun.noise_N);
+        StrokeBounds b = neverReleased || stuck || phaseLinesOfRun.neverSlid[h.direction > 0 ? 0 : 1] ? StrokeBounds{h.end, h.end, h.end, {}}
+                                                                                                      : boundsFromForce(h, reading, o);
         const QString source = tissue ? placeByPicture(h, t0, t1, b, picture, reading, forceSource, o) : forceSource;
         if (b.aEnd >= h.end) {
             out.push_back({track, QStringLiteral("a"), t0, t1, source});

@@ -234,6 +234,91 @@ bool carriedThroughout(const Run& run, const std::vector<double>& v_mm_s)
     return std::abs(difference[difference.size() / 2]) < 2.0 * sigma && largest < std::max(6.0 * sigma, 0.02);
 }
 
+namespace {
+
+// The force less what a tissue carried by the needle gives over stroke `h`, sample by sample.
+// Carried, the tissue pulls with its inertia only: a straight line over depth (m·a, and a sine's
+// acceleration follows its depth), fitted over the stroke's middle third, where the needle is
+// fastest and the plates farthest, leaving out what strays from it (the plate left behind at
+// the turning point still pushing) by more than four times the residuals' spread, or `floor_N`.
+auto lessCarried(const Run& run, const std::vector<double>& force, const HalfCycle& h, double floor_N)
+{
+    const std::size_t third = (h.end - h.start) / 3;
+    std::vector<std::size_t> use;
+    for (std::size_t i = h.start + third; i < h.end - third; ++i)
+        use.push_back(i);
+    auto median = [](std::vector<double> x) {
+        std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(x.size() / 2), x.end());
+        return x[x.size() / 2];
+    };
+    double c0 = 0.0, c1 = 0.0;
+    {
+        std::vector<double> f;
+        for (std::size_t i : use)
+            f.push_back(force[i]);
+        c0 = median(f);
+    }
+    for (int pass = 0; pass < 5; ++pass) {
+        std::vector<double> residual;
+        for (std::size_t i : use)
+            residual.push_back(std::abs(force[i] - c0 - c1 * run.position_mm[i]));
+        const double tolerance_N = std::max((pass == 0 ? 3.0 : 4.0) * 1.4826 * median(residual), floor_N);
+        double sx = 0, sf = 0, sxx = 0, sxf = 0, k = 0;
+        for (std::size_t j = 0; j < use.size(); ++j) {
+            if (residual[j] > tolerance_N)
+                continue;
+            const double x = run.position_mm[use[j]], f = force[use[j]];
+            sx += x, sf += f, sxx += x * x, sxf += x * f, k += 1;
+        }
+        const double det = k * sxx - sx * sx;
+        if (k < 10 || std::abs(det) < 1e-12)
+            break;
+        c1 = (k * sxf - sx * sf) / det;
+        c0 = (sf - c1 * sx) / k;
+    }
+    return [&run, &force, c0, c1](std::size_t i) { return force[i] - c0 - c1 * run.position_mm[i]; };
+}
+
+}  // namespace
+
+bool stuckThroughTurn(const Run& run, const std::vector<double>& force, const HalfCycle& h, const HalfCycle& next, double noise_N)
+{
+    if (h.end != next.start || h.end - h.start < 30 || next.end - next.start < 30)
+        return false;
+    // The carried force is a line only nearly (3 mN: a few per cent of the least push seen).
+    const double floor_N = std::max(3.0 * noise_N, 0.003);
+    const auto offIn = lessCarried(run, force, h, floor_N), offOut = lessCarried(run, force, next, floor_N);
+    const std::size_t middleIn = (h.start + h.end) / 2, middleOut = (next.start + next.end) / 2;
+    double top_N = 0.0;
+    for (std::size_t i = middleIn; i < h.end; ++i)
+        top_N = std::max(top_N, std::abs(offIn(i)));
+    for (std::size_t i = next.start; i < middleOut; ++i)
+        top_N = std::max(top_N, std::abs(offOut(i)));
+    // The plate's push must stand clear of the noise, and the carried level near zero beside it
+    // (a tissue sliding the whole stroke has no carried stretch to measure from).
+    if (!(top_N > 10.0 * floor_N) || std::abs(force[middleIn] - offIn(middleIn)) >= 0.25 * top_N ||
+        std::abs(force[middleOut] - offOut(middleOut)) >= 0.25 * top_N)
+        return false;
+    std::size_t in = middleIn;
+    while (in < h.end && std::abs(offIn(in)) <= 0.15 * top_N)
+        ++in;
+    std::size_t out = middleOut;
+    while (out > next.start && std::abs(offOut(out)) <= 0.15 * top_N)
+        --out;
+    // A push from the middle on is no carried stretch measured before it: the tissue met the
+    // plate at once, and the line through the middle third drawn partly through the push.
+    if (in >= h.end || out <= next.start || in - middleIn < (h.end - h.start) / 10 || middleOut - out < (next.end - next.start) / 10)
+        return false;
+    // From where the push is clear back to its foot, where it starts.
+    while (in > middleIn && std::abs(offIn(in - 1)) > 0.07 * top_N)
+        --in;
+    while (out < middleOut && std::abs(offOut(out + 1)) > 0.07 * top_N)
+        ++out;
+    const double reach_mm = h.direction * (run.position_mm[h.end] - run.position_mm[in]);
+    const double slid_mm = h.direction * (run.position_mm[out] - run.position_mm[in]);
+    return reach_mm > 0.0 && std::abs(slid_mm) < 0.03 * reach_mm;
+}
+
 std::optional<FrictionFit> slidingLines(const Run& run)
 {
     try {

@@ -104,6 +104,15 @@ std::optional<FrictionFit> slidingLines(const Run& run);
 bool firstStrokeCarried(const Run& run, const std::vector<double>& force, const std::vector<double>& v_mm_s,
                         const std::vector<const HalfCycle*>& strokes, const FrictionFit& lines);
 
+// Whether the tissue stayed stuck to the needle through the turning point between stroke `h` and
+// the `next`: pressed on the plate and back, it never slid. The tissue meets the plate at one of
+// its own positions (the gap), so the needle's depth where the plate starts to push going in and
+// where it stops coming out differ by exactly how far the needle slid through the tissue in
+// between. Read from `force` (forceLessHolder) against the force the carried tissue gives in
+// each stroke's middle third; stuck when that slide is within 3 % of the needle's travel from
+// where the push began to the turning point. `noise_N` is the smoothed force's.
+bool stuckThroughTurn(const Run& run, const std::vector<double>& force, const HalfCycle& h, const HalfCycle& next, double noise_N);
+
 // The force less the needle holder's inertia, lightly smoothed (a moving average over 2·half + 1 samples).
 std::vector<double> forceLessHolder(const Run& run, const std::vector<double>& v, int half);
 
