@@ -98,9 +98,10 @@ std::optional<FrictionFit> slidingLines(const Run& run);
 // static friction, which the run's whole strokes of that direction show as their strongest
 // force: the first stroke stays well below it (kReleased), and below the sliding line everywhere
 // (the tissue never slides). Its first moments are left out, where the stage starts at speed and
-// the tissue may slip for a moment in the gap, which is no phase; but it must be carried once the
-// stage is at speed (the force well below the sliding line), not go on sliding. `force` is the
-// smoothed force, `strokes` the run's strokes in order.
+// the tissue slips in the gap until it has caught up with the needle, which is no phase (50 ms at
+// least, until the force first falls under half the sliding line, within the stroke's first
+// third); but it must be carried from there (the force well below the sliding line), not go on
+// sliding. `force` is the smoothed force, `strokes` the run's strokes in order.
 bool firstStrokeCarried(const Run& run, const std::vector<double>& force, const std::vector<double>& v_mm_s,
                         const std::vector<const HalfCycle*>& strokes, const FrictionFit& lines);
 
