@@ -1,6 +1,7 @@
 #include "phase_reading.h"
 
 #include "models.h"
+#include "statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -247,10 +248,6 @@ auto lessCarried(const Run& run, const std::vector<double>& force, const HalfCyc
     std::vector<std::size_t> use;
     for (std::size_t i = h.start + third; i < h.end - third; ++i)
         use.push_back(i);
-    auto median = [](std::vector<double> x) {
-        std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(x.size() / 2), x.end());
-        return x[x.size() / 2];
-    };
     double c0 = 0.0, c1 = 0.0;
     {
         std::vector<double> f;
@@ -262,7 +259,7 @@ auto lessCarried(const Run& run, const std::vector<double>& force, const HalfCyc
         std::vector<double> residual;
         for (std::size_t i : use)
             residual.push_back(std::abs(force[i] - c0 - c1 * run.position_mm[i]));
-        const double tolerance_N = std::max((pass == 0 ? 3.0 : 4.0) * 1.4826 * median(residual), floor_N);
+        const double tolerance_N = std::max((pass == 0 ? 3.0 : 4.0) * robustSigma(residual), floor_N);
         double sx = 0, sf = 0, sxx = 0, sxf = 0, k = 0;
         for (std::size_t j = 0; j < use.size(); ++j) {
             if (residual[j] > tolerance_N)
@@ -346,8 +343,6 @@ bool firstStrokeCarried(const Run& run, const std::vector<double>& force, const 
     auto sliding = [&](std::size_t i, const HalfCycle& h) {
         return h.direction > 0 ? m.Cp_N + m.bp_Ns_per_m * v_mm_s[i] / 1000.0 : m.Cn_N - m.bn_Ns_per_m * v_mm_s[i] / 1000.0;
     };
-    const double slidingMost_N = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
-    const double tolerance_N = std::clamp(3.0 * lines.rms_N, 0.1 * slidingMost_N, 0.25 * slidingMost_N);
     // The stage starts at speed and the tissue, at rest, slides until friction has brought it
     // up to the needle's. A light slab, or a fast start, takes longer than kStartTransient_s
     // (90 ms for a 13 mm prostate slab at 30 mm/s): it has caught up where the force first falls
@@ -379,6 +374,8 @@ bool firstStrokeCarried(const Run& run, const std::vector<double>& force, const 
     std::nth_element(tops.begin(), tops.begin() + std::ptrdiff_t(tops.size() / 2), tops.end());
     if (!(strongest_N(first) < kReleased * tops[tops.size() / 2]))
         return false;
+    const double slidingMost_N = std::max(std::abs(m.Cp_N), std::abs(m.Cn_N));
+    const double tolerance_N = std::clamp(3.0 * lines.rms_N, 0.1 * slidingMost_N, 0.25 * slidingMost_N);
     double carried_N = 0.0, slidingSum_N = 0.0;
     for (std::size_t i = first.start; i < first.end; ++i) {
         if (!started(i))
