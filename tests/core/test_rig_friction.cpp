@@ -541,6 +541,44 @@ private slots:
                  qPrintable(QJsonDocument(why).toJson()));
     }
 
+    // Liver 3's Cp is small beside bp·v, so the slab's give as the needle slows (it springs
+    // back off the plate by Ḟ/k, some 0.3 mm/s) moves it by 5-10 %. The force's rate for the
+    // spring-back term was smoothed across each slide's ends, where the force changes its law,
+    // and read b/k as nothing: Cp 5.4 % and 9.7 % high with nothing said. Read within each
+    // slide, and kept at twice its standard error, it holds Cp or says it cannot. The third is
+    // a narrow sliding range (7-15 mm/s) whose term showed at only 2.5 standard errors: Cp 5.7 %
+    // high where three were asked for. Draws of bench/friction_cli_matrix.py --seed 2611 (r111,
+    // r67) and bench_accuracy --seed 552402 (rig set 7, 0.74 Hz).
+    void slabGivingAsTheNeedleSlows_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<bool>("flagAllowed");
+        QTest::newRow("liver3 0.51 Hz band 5.37") << QStringList{"--tissue", "liver3", "--amplitude-mm", "5.2", "--frequency-hz", "0.51",
+                                                                 "--stick-band-mm-s", "5.37", "--plate-gap-mm", "1.65", "--cycles", "7",
+                                                                 "--seed", "35383"}
+                                                  << false;
+        QTest::newRow("liver3 0.745 Hz gap 2.48") << QStringList{"--tissue", "liver3", "--frequency-hz", "0.7450", "--amplitude-mm", "5.551",
+                                                                 "--stick-band-mm-s", "4.801", "--plate-gap-mm", "2.484", "--force-noise-n",
+                                                                 "0.00053", "--cycles", "7", "--seed", "35307"}
+                                                  << true;
+        QTest::newRow("liver3 0.54 Hz narrow range") << QStringList{"--tissue", "liver3", "--amplitude-mm", "4.5", "--frequency-hz", "0.54",
+                                                                    "--stick-band-mm-s", "5.87", "--plate-gap-mm", "1.14", "--cycles", "7",
+                                                                    "--seed", "10054"}
+                                                     << false;
+    }
+    void slabGivingAsTheNeedleSlows()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(bool, flagAllowed);
+        Truth truth;
+        const QString file = simulate(QStringLiteral("giving_%1").arg(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('_')), args, &truth);
+        QVERIFY(!file.isEmpty());
+        const QJsonObject r = fit({file}).value(QStringLiteral("runs")).toArray().at(0).toObject();
+        const double eCp = ownCpError(r, truth);
+        const bool flagged = r.value(QStringLiteral("not_physical_values")).toArray().contains(QStringLiteral("Cp"));
+        QVERIFY2(eCp < 0.05 || (flagAllowed && flagged), qPrintable(QStringLiteral("Cp %1 % off, %2").arg(100 * eCp).arg(flagged ? "flagged" : "not flagged")));
+    }
+
     void oneFrequencyMakesNoLine()
     {
         Truth truth;
