@@ -160,11 +160,13 @@ std::optional<Line> lineThrough(const std::vector<double>& v, const std::vector<
 // slide's ends are where the force changes its law (the tissue still arriving at the plate, the
 // stick at the band), and a rate smoothed across them bends the spring-back column at the very
 // samples that pin C: on liver 3 at 0.74 Hz it read b/k as 0.0 ± 0.1 ms where the slab gives
-// 3.3 ms, and C came out 9.7 % high with nothing said. Zero where a slide has one sample.
+// 3.3 ms, and C came out 9.7 % high with nothing said. Zero where a slide has fewer than three
+// samples.
 std::vector<double> rateWithinSlides(const std::vector<std::size_t>& rows, const std::vector<double>& t, const std::vector<double>& y,
                                      int halfWidth)
 {
     std::vector<double> rate(y.size(), 0.0);
+    std::vector<double> since_s, value;
     for (std::size_t k = 0; k < rows.size();) {
         std::size_t end = k + 1;
         while (end < rows.size() && rows[end] == rows[end - 1] + 1)
@@ -172,16 +174,15 @@ std::vector<double> rateWithinSlides(const std::vector<std::size_t>& rows, const
         for (std::size_t r = k; r < end; ++r) {
             const std::size_t from = r >= k + std::size_t(halfWidth) ? r - std::size_t(halfWidth) : k;
             const std::size_t to = std::min(end, r + std::size_t(halfWidth) + 1);
-            double st = 0.0, sy = 0.0;
-            for (std::size_t q = from; q < to; ++q)
-                st += t[rows[q]], sy += y[rows[q]];
-            const double count = double(to - from), mt = st / count, my = sy / count;
-            double stt = 0.0, sty = 0.0;
+            since_s.clear();
+            value.clear();
+            // Times from the sample's own: the line's sums stay well conditioned late in a run.
             for (std::size_t q = from; q < to; ++q) {
-                stt += (t[rows[q]] - mt) * (t[rows[q]] - mt);
-                sty += (t[rows[q]] - mt) * (y[rows[q]] - my);
+                since_s.push_back(t[rows[q]] - t[rows[r]]);
+                value.push_back(y[rows[q]]);
             }
-            rate[rows[r]] = stt > 0.0 ? sty / stt : 0.0;
+            if (const std::optional<Line> l = lineThrough(since_s, value, 3))
+                rate[rows[r]] = l->b;
         }
         k = end;
     }
