@@ -66,18 +66,37 @@ def read_run(path):
     return np.array(t), np.array(x)
 
 
-def draw_video(c, t, x, path, x264_preset):
+def scene(c):
+    """What draw_video draws before its noise: the random stream (the noise follows the
+    background in it), the static background, and each pixel's place along and across the
+    needle's axis, in pixels from the picture's centre."""
     rng = np.random.default_rng(c['seed'])
     W, H = c['size']
-    fps = c['fps']
-    n = int((c['offset'] + t[-1] + 1.0) * fps)
     u = np.array([np.cos(np.radians(c['angle'])), np.sin(np.radians(c['angle']))])
     grain = rng.normal(0, 1, (H // 4 + 2, W // 4 + 2))
     background = 110 + 25 * np.kron(grain, np.ones((4, 4)))[:H, :W]
     yy, xx = np.mgrid[0:H, 0:W].astype(np.float32)
     along = (xx - W / 2) * u[0] + (yy - H / 2) * u[1]
     across = -(xx - W / 2) * u[1] + (yy - H / 2) * u[0]
+    return rng, background, along, across
+
+
+def needle(c, along, across, tip):
+    """The needle's brightness over the background with its tip at `tip` px along the axis."""
     shaft = c['contrast'] * np.exp(-0.5 * (across / 1.5) ** 2)
+    return shaft * (1.0 / (1.0 + np.exp(np.clip(along - tip, -50, 50))))
+
+
+def tip_px(c, t, x, k):
+    """Where frame k (video time k/fps) draws the tip: it shows recording time (k/fps)(1 + drift) - offset."""
+    return -40 + np.interp(np.asarray(k) / c['fps'] * (1 + c['drift']) - c['offset'], t, x) * c['px_per_mm']
+
+
+def draw_video(c, t, x, path, x264_preset):
+    W, H = c['size']
+    fps = c['fps']
+    n = int((c['offset'] + t[-1] + 1.0) * fps)
+    rng, background, along, across = scene(c)
     cmd = ['ffmpeg', '-y', '-loglevel', 'error', '-f', 'rawvideo', '-pix_fmt', 'gray', '-s', f'{W}x{H}', '-r', str(fps), '-i', '-']
     if c['counter']:
         cmd += ['-vf', "drawtext=text='%{n}':x=10:y=10:fontsize=24:fontcolor=white:box=1:boxcolor=black,"
@@ -87,11 +106,7 @@ def draw_video(c, t, x, path, x264_preset):
             'mpeg4': ['-c:v', 'mpeg4', '-q:v', '5']}[c['codec']] + [path]
     p = subprocess.Popen(cmd, stdin=subprocess.PIPE)
     for k in range(n):
-        # video time k/fps shows recording time (k/fps)(1 + drift) - offset
-        pos = np.interp(k / fps * (1 + c['drift']) - c['offset'], t, x)
-        tip = -40 + pos * c['px_per_mm']
-        ending = 1.0 / (1.0 + np.exp(np.clip(along - tip, -50, 50)))
-        img = background + shaft * ending + rng.normal(0, c['noise'], (H, W))
+        img = background + needle(c, along, across, tip_px(c, t, x, k)) + rng.normal(0, c['noise'], (H, W))
         raw = np.clip(img, 0, 255).astype(np.uint8)
         if k == 0 and raw.tobytes()[:3] == b'ID3':
             # ffmpeg would read the frames as an ID3 tag and skip as many bytes as it says
@@ -198,7 +213,9 @@ def operator_marks(c, x):
     return ['--needle', ','.join(f'{v:.1f}' for v in (*p1, *p2)), '--roi', f'{lo[0]},{lo[1]},{hi[0] - lo[0]},{hi[1] - lo[1]}']
 
 
-def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=False):
+def make_case(c, exe, root, x264_preset, damage=False, recode=False):
+    """Simulates the case's run and draws (and codes) its video under root/caseI; returns the
+    run's path, the video's, and the run's time and position."""
     d = os.path.join(root, f"case{c['i']}")
     os.makedirs(d, exist_ok=True)
     if c['linear']:
@@ -216,6 +233,11 @@ def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=Fal
         video = recode_video(c, video)
     if damage:
         c['damaged'] = damage_video(c, video)
+    return run, video, t, x
+
+
+def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=False):
+    run, video, t, x = make_case(c, exe, root, x264_preset, damage, recode)
     # A video that starts after the motion has ended (a short stroke, an offset well below
     # zero) shows nothing to sync on: the honest answer is a refusal or a low confidence, and
     # no error in frames means anything.
