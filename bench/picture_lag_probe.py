@@ -35,23 +35,27 @@ import sync_probe_matrix as matrix  # noqa: E402
 import numpy as np  # noqa: E402  (sync_probe_matrix has said so when it is missing)
 
 
-def decoded_frames(video, W, H):
-    raw = subprocess.run(['ffmpeg', '-v', 'error', '-i', video, '-f', 'rawvideo', '-pix_fmt', 'gray', '-'],
-                         capture_output=True, check=True).stdout
-    return np.frombuffer(raw, np.uint8).reshape(-1, H, W).astype(np.float32)
-
-
-def shown_tips(c, frames, drawn):
-    """Where each picture shows the tip, in px along the axis (as drawn: tip_px)."""
+def decoded_band(video, c, band):
+    """The band's pixels of every decoded picture, one row a picture (read a picture at a time:
+    a whole 1024x768 video held as floats would take gigabytes)."""
     W, H = c['size']
+    p = subprocess.Popen(['ffmpeg', '-v', 'error', '-i', video, '-f', 'rawvideo', '-pix_fmt', 'gray', '-'], stdout=subprocess.PIPE)
+    rows = []
+    while (raw := p.stdout.read(W * H)) and len(raw) == W * H:
+        rows.append(np.frombuffer(raw, np.uint8).reshape(H, W)[band].astype(np.float32))
+    if p.wait() != 0:
+        raise RuntimeError(f'ffmpeg could not decode {video}')
+    return np.array(rows)
+
+
+def shown_tips(c, video, drawn):
+    """Where each picture of the video shows the tip, in px along the axis (as drawn: tip_px)."""
     _, background, along, across = matrix.scene(c)
-    yy, xx = np.mgrid[0:H, 0:W]
-    band = (np.abs(across) < 4) & (along > drawn.min() - 8) & (along < drawn.max() + 8)
-    band &= ~((yy < 45) & (xx < 120)) & ~((yy > H - 45) & (xx > W - 210))  # the counter and the clock
+    band = (np.abs(across) < 4) & (along > drawn.min() - 8) & (along < drawn.max() + 8) & ~matrix.overlaid(c)
     grid = np.arange(drawn.min() - 8, drawn.max() + 8, 0.05)
     models = np.array([matrix.needle(c, along[band], across[band], g) for g in grid])
     models -= models.mean(axis=1, keepdims=True)
-    seen = frames[:, band] - background[band]
+    seen = decoded_band(video, c, band) - background[band]
     seen -= seen.mean(axis=1, keepdims=True)  # a coder's shift of the mean grey is no tip
     # |seen - model|² = |seen|² - 2 seen·model + |model|²: the first is the same for every tip
     cost = (models * models).sum(axis=1)[None, :] - 2.0 * seen @ models.T
@@ -77,9 +81,8 @@ def lag_of(c, t, x, shown):
 
 def probe(c, exe, root, recode):
     run, video, t, x = matrix.make_case(c, exe, root, 'medium', recode=recode)
-    W, H = c['size']
-    frames = decoded_frames(video, W, H)
-    pictures = lag_of(c, t, x, shown_tips(c, frames, matrix.tip_px(c, t, x, np.arange(len(frames)))))
+    frames = int((c['offset'] + t[-1] + 1.0) * c['fps'])  # as draw_video draws them
+    pictures = lag_of(c, t, x, shown_tips(c, video, matrix.tip_px(c, t, x, np.arange(frames))))
     r = subprocess.run([exe, 'sync', run, video, '--json'], capture_output=True, text=True)
     try:
         j = json.loads(r.stdout)
@@ -88,8 +91,7 @@ def probe(c, exe, root, recode):
     if j['offset_s'] is None:
         return c, pictures, None, None
     modelled = j.get('picture_lag_frames') or 0.0
-    middle = 0.5 * t[-1]
-    late = ((1 + j['drift']) * middle + j['offset_s'] - (middle + c['offset']) / (1 + c['drift'])) * c['fps'] + modelled
+    late = matrix.sync_error_frames(c, j, 0.5 * t[-1]) + modelled  # at the recording's middle
     return c, pictures, modelled, late
 
 

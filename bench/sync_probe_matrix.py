@@ -92,6 +92,22 @@ def tip_px(c, t, x, k):
     return -40 + np.interp(np.asarray(k) / c['fps'] * (1 + c['drift']) - c['offset'], t, x) * c['px_per_mm']
 
 
+def overlaid(c):
+    """Where draw_video's burnt-in counter (top left) and clock (bottom right) can cover the picture."""
+    W, H = c['size']
+    yy, xx = np.mgrid[0:H, 0:W]
+    if not c['counter']:
+        return np.zeros((H, W), bool)
+    return ((yy < 45) & (xx < 120)) | ((yy > H - 45) & (xx > W - 210))
+
+
+def sync_error_frames(c, j, tr):
+    """How many frames late `sync --json`'s answer j places recording times tr against the truth."""
+    # video time = (1 + drift)·t + offset (the tool's mapping)
+    truth = (tr + c['offset']) / (1 + c['drift'])
+    return ((1 + j['drift']) * tr + j['offset_s'] - truth) * c['fps']
+
+
 def draw_video(c, t, x, path, x264_preset):
     W, H = c['size']
     fps = c['fps']
@@ -251,11 +267,7 @@ def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=Fal
         return c, dict(refused=True, moving=moving), r.stderr.strip()[:300]
     if j['offset_s'] is None:  # nothing in the picture moved with the recording
         return c, dict(refused=True, moving=moving), 'no offset: nothing in the picture moved with the recording'
-    # video time = (1 + drift)·t + offset (the tool's mapping) against the truth
-    tr = np.linspace(0.0, t[-1], 100)
-    truth = (tr + c['offset']) / (1 + c['drift'])
-    found = (1 + j['drift']) * tr + j['offset_s']
-    err = (found - truth) * c['fps']
+    err = sync_error_frames(c, j, np.linspace(0.0, t[-1], 100))
     return c, dict(error=float(err[np.argmax(np.abs(err))]), confidence=j['confidence'], acceptable=j['acceptable'],
                    threshold=j['accept_threshold'], moving=moving), ''
 
