@@ -15,7 +15,7 @@ Printed per case, in frames: the pictures' lag; the lag `needlebench sync --json
 the recording: the tracker's and the fit's own share is the difference from the pictures' lag).
 Then the median and extremes of what the model missed (pictures' lag less the model's).
 
-  bench/picture_lag_probe.py [--seed N] [--cases 16] [--only 3,7] [--slow-small] [--recode] [--exe ...] [--keep DIR]
+  bench/picture_lag_probe.py [--seed N] [--cases 16] [--only 3,7] [--slow-small | --bold] [--recode] [--exe ...] [--keep DIR]
 
 Needs python3-numpy and ffmpeg; 16 slow-small cases take about a minute on 2 cores.
 """
@@ -99,12 +99,13 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     add_common_arguments(ap)
     ap.add_argument('--slow-small', action='store_true', help='the slow, short sines of a faint needle (as sync_probe_matrix.py)')
+    ap.add_argument('--bold', action='store_true', help='the slow, short sines of a bold needle on a quiet camera (as sync_probe_matrix.py)')
     ap.add_argument('--recode', action='store_true', help='code each video again as H.264 (as sync_probe_matrix.py)')
     a = ap.parse_args()
     seed = chosen_seed(a, 'picture_lag_probe')
-    print(f"picture_lag_probe: seed {seed} (rerun with --seed {seed}{' --slow-small' if a.slow_small else ''}"
+    print(f"picture_lag_probe: seed {seed} (rerun with --seed {seed}{matrix.family_options(a)}"
           f"{' --recode' if a.recode else ''}), {a.cases} cases", flush=True)
-    cases = (matrix.draw_slow_small_cases if a.slow_small else matrix.draw_cases)(seed, a.cases)
+    cases = matrix.draw_family(a, seed, a.cases)
     if a.only:
         wanted = {int(i) for i in a.only.split(',')}
         cases = [c for c in cases if c['i'] in wanted]

@@ -12,7 +12,7 @@ video shows no motion (it starts after a short stroke has ended) has no right of
 counted apart, and only a refusal or a confidence below the accept threshold is right for it.
 
   bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--expect-hits] [--exe build/app/needlebench] [--keep DIR]
-                             [--slow-small] [--expect-honest] [--damage] [--operator] [--recode]
+                             [--slow-small | --bold] [--expect-honest] [--damage] [--operator] [--recode]
 
 --damage overwrites each video's packets over a stretch of 0.2-1.5 s drawn from the case's
 seed (a bad copy, a bad sector): the frames there cannot be decoded, and the sync must still
@@ -27,6 +27,10 @@ preset ultrafast to slow and CRF 18-28, drawn from the case's seed): two coders'
 --slow-small draws the family the main draw meets rarely: two cycles of a slow, short sine
 (0.1-0.3 Hz, ±2.5-4 mm at 3-4 px/mm, so ±8-16 px), a faint needle (contrast 28-45, noise
 4-12) in a 320x240 or 640x480 picture, always with the counter and the clock.
+
+--bold draws the same slow, short sines with a bold needle on a quiet camera (contrast 60-150,
+noise 2-8), as a metal needle under CT-fluoro shows: a coder that drops the quiet camera's
+noise may still hold back the bold tip's slow motion (MPEG-4 showed it 0.2 to 1.6 frames late).
 
 Needs python3-numpy (with python3-pandas) and ffmpeg; 16 cases take about 3 minutes on 2 cores.
 """
@@ -204,6 +208,30 @@ def draw_slow_small_cases(seed, count):
     return cases
 
 
+def draw_slow_bold_cases(seed, count):
+    """The slow, short sines of draw_slow_small_cases with a bold needle on a quiet camera
+    (contrast 60-150, noise 2-8: a metal needle under CT-fluoro), drawn from a stream of their
+    own so that the other families' cases stay as they are."""
+    cases = draw_slow_small_cases(seed, count)
+    rnd = random.Random(f'bold {seed}')
+    for c in cases:
+        c['contrast'] = round(rnd.uniform(60, 150))
+        c['noise'] = round(rnd.uniform(2, 8), 1)
+    return cases
+
+
+def draw_family(a, seed, count):
+    """The cases of the family the options ask for (--slow-small, --bold, or the main draw)."""
+    if a.bold:
+        return draw_slow_bold_cases(seed, count)
+    return (draw_slow_small_cases if a.slow_small else draw_cases)(seed, count)
+
+
+def family_options(a):
+    """The options that redraw the same cases."""
+    return (' --slow-small' if a.slow_small else '') + (' --bold' if a.bold else '')
+
+
 def describe(c):
     motion = f"linear {c['velocity']} mm/s" if c['linear'] else f"sine {c['frequency']} Hz ±{c['amplitude']} mm"
     return (f"{motion}, offset {c['offset']} s, drift {100 * c['drift']:.3f} %, {c['fps']} fps {c['size'][0]}x{c['size'][1]}, "
@@ -276,6 +304,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[1])
     add_common_arguments(ap)
     ap.add_argument('--slow-small', action='store_true', help='draw slow, short sines of a faint needle with overlays')
+    ap.add_argument('--bold', action='store_true',
+                    help='draw the slow, short sines of --slow-small with a bold needle on a quiet camera (contrast 60-150, noise 2-8)')
     ap.add_argument('--damage', action='store_true', help="overwrite a stretch of each video's packets (0.2-1.5 s)")
     ap.add_argument('--operator', action='store_true',
                     help="sync as an operator who draws the needle's line and a box around its path")
@@ -299,10 +329,10 @@ def main():
             print(f"one sync probe in {share} runs here (NB_CASE_SHARE); scripts/test-all-cases.sh runs them all")
             return 77
     seed = chosen_seed(a, 'sync_probe_matrix')
-    rerun = f"--seed {seed}{' --slow-small' if a.slow_small else ''}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}{' --recode' if a.recode else ''}"
+    rerun = f"--seed {seed}{family_options(a)}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}{' --recode' if a.recode else ''}"
     rerun += f" --x264-preset {a.x264_preset}" if a.x264_preset != 'medium' else ''
     print(f"sync_probe_matrix: seed {seed} (rerun with {rerun}), {a.cases} cases", flush=True)
-    cases = (draw_slow_small_cases if a.slow_small else draw_cases)(seed, a.cases)
+    cases = draw_family(a, seed, a.cases)
     if a.only:
         wanted = {int(i) for i in a.only.split(',')}
         cases = [c for c in cases if c['i'] in wanted]
