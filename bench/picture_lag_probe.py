@@ -98,8 +98,7 @@ def probe(c, exe, root, recode):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     add_common_arguments(ap)
-    ap.add_argument('--slow-small', action='store_true', help='the slow, short sines of a faint needle (as sync_probe_matrix.py)')
-    ap.add_argument('--bold', action='store_true', help='the slow, short sines of a bold needle on a quiet camera (as sync_probe_matrix.py)')
+    matrix.add_family_arguments(ap)
     ap.add_argument('--recode', action='store_true', help='code each video again as H.264 (as sync_probe_matrix.py)')
     a = ap.parse_args()
     seed = chosen_seed(a, 'picture_lag_probe')

@@ -220,6 +220,14 @@ def draw_slow_bold_cases(seed, count):
     return cases
 
 
+def add_family_arguments(ap):
+    """The options that choose which family of cases is drawn (one at most)."""
+    family = ap.add_mutually_exclusive_group()
+    family.add_argument('--slow-small', action='store_true', help='draw slow, short sines of a faint needle with overlays')
+    family.add_argument('--bold', action='store_true',
+                        help='draw the slow, short sines of --slow-small with a bold needle on a quiet camera (contrast 60-150, noise 2-8)')
+
+
 def draw_family(a, seed, count):
     """The cases of the family the options ask for (--slow-small, --bold, or the main draw)."""
     if a.bold:
@@ -303,9 +311,7 @@ def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=Fal
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[1])
     add_common_arguments(ap)
-    ap.add_argument('--slow-small', action='store_true', help='draw slow, short sines of a faint needle with overlays')
-    ap.add_argument('--bold', action='store_true',
-                    help='draw the slow, short sines of --slow-small with a bold needle on a quiet camera (contrast 60-150, noise 2-8)')
+    add_family_arguments(ap)
     ap.add_argument('--damage', action='store_true', help="overwrite a stretch of each video's packets (0.2-1.5 s)")
     ap.add_argument('--operator', action='store_true',
                     help="sync as an operator who draws the needle's line and a box around its path")
