@@ -1,40 +1,64 @@
 #pragma once
-// How late a coded video shows a slow, faint motion. An inter-frame coder (H.264, MPEG-4 part 2)
-// codes each picture as the one before plus the changes worth their bits; a change smaller than
-// what its quantiser drops is carried on from picture to picture until it adds up. Noise fresh
-// in every camera frame comes out of such a coder correlated from one picture to the next, and
-// how much says how much of a picture is the one before it. A needle's edge that changes its
-// pixels by less than the noise is coded like the noise and shows as late; a bold edge, or a
-// fast one, changes them by far more than the coder drops and is shown on time. (Probe seed
-// 417293, slow faint sines: the tip read in the decoded pictures of MPEG-4 was 0.77 frames late
-// against the pictures drawn, of MJPEG 0.1; the sync 1.04 frames late and 0.15.)
+// How far behind the needle's tip a coded video shows it. An inter-frame coder (H.264, MPEG-4
+// part 2) codes each picture as the one before, moved and mended where the change is worth its
+// bits; a change smaller than what its quantiser drops is carried on until it adds up. A slowly
+// moving tip is shown where it was a moment ago: behind it by a trail that holds steady in
+// pixels whatever the speed, so its lag in time is the trail over the speed.
 //
-// The model: the coder passes a pixel's difference from what it last showed when, with the
-// camera's noise on it, it is beyond a threshold, and keeps the pixel otherwise. Fresh noise
-// passes at a rate of 1 − memory, which sets the threshold; a motion not yet shown differs by
-// more each frame, and is shown within a few frames however faint.
+// What sets the trail (picture_lag_probe on 116 slow strokes of the sync probes: faint needles
+// coded once and twice, bold needles on quiet cameras coded MPEG-4, H.264 and twice):
+//  - a faint edge, whose change is coded like the noise: about 0.04 + 0.53 × memory px, with the
+//    memory the noise's correlation from picture to picture (residuals within ±0.26 px);
+//  - a bold edge is passed once it has moved far enough for its change to beat the quantiser's
+//    threshold: about half that threshold over the edge's slope. MPEG-4 part 2 (half-pixel
+//    motion) trailed 3.5 grey / slope (0.15 to 0.41 px at slopes 21 to 5, ±0.16 px); H.264
+//    (quarter-pixel motion, x264's psychovisual tuning) 0.00 to 0.16 px at slopes 6 to 20;
+//  - the smaller of the two; and the first coder's, when the video was coded twice (a console's
+//    MPEG-4 made H.264 by the lab trailed as MPEG-4 does), which no container tells.
+
+#include <QString>
 
 namespace nb {
+
+// How finely a video's coder follows motion from one picture to the next.
+enum class MotionCoding {
+    Unknown,       // not said: as finely as any, or coded twice
+    Intra,         // every picture coded afresh (MJPEG, DV, uncompressed, lossless): no trail
+    HalfPixel,     // MPEG-1/2, MPEG-4 part 2, H.263
+    QuarterPixel,  // H.264, HEVC, VP8/9, AV1
+};
+
+// From a codec's name as FFmpeg gives it ("h264", "mpeg4") or the container's four-character
+// code ("avc1", "FMP4", "MJPG"); Unknown for a name it does not know.
+MotionCoding motionCodingOf(const QString& codec);
 
 struct PictureCoding {
     // Lag-one correlation of the picture's noise from one frame to the next: 0 when every picture
     // is coded afresh (MJPEG, DV, uncoded), towards 1 when the coder drops the noise.
     double memory = 0.0;
-    double noise_grey = 0.0;             // the noise per pixel in the pictures as decoded (σ), taken
-                                         // for the camera's: a coder that holds a pixel shows it whole
+    double noise_grey = 0.0;             // the noise per pixel in the pictures as decoded (σ)
     double edgeSlope_grey_per_px = 0.0;  // the tip's edge along the needle: how much a pixel changes
-                                         // as the tip moves a pixel
+                                         // as the tip moves a pixel; 0 when not measured
+    MotionCoding motion = MotionCoding::Unknown;
 };
 
 // The most memory the pictures' noise can show (video/picture_memory): beyond it a coder has
-// dropped nearly all of the camera's noise, and with it what the lag's model reads its threshold
-// from. A video measured there shows the motion late by an amount the model does not know.
+// dropped nearly all of the camera's noise, and with it what the faint edge's trail is read from.
+// A video measured there may trail by more than the memory says.
 inline constexpr double kMostMeasurableMemory = 0.95;
-// The most memory the lag's model takes: a coder holding more would never show a faint change.
-inline constexpr double kMostModelledMemory = 0.99;
 
-// Frames by which a picture shows late a change of `change_grey` a frame in a pixel; 0 when the
-// coding carries nothing over (or is not known). At most 10.
-double pictureLag_frames(const PictureCoding& coding, double change_grey);
+// How far behind the tip the pictures show it, in pixels along the needle: between `least_px`
+// and `most_px` for what is known of the coding (the second coder of a video coded twice shows
+// the first one's trail), give or take `residual_px`, what the model left unexplained in the
+// probes' strokes (less for a video coded once by halves than for one that may be coded twice).
+struct PictureTrail {
+    double least_px = 0.0;
+    double most_px = 0.0;
+    double residual_px = 0.0;
+    double likely_px() const { return 0.5 * (least_px + most_px); }
+    double uncertainty_px() const { return 0.5 * (most_px - least_px) + residual_px; }
+};
+
+PictureTrail pictureTrail(const PictureCoding& coding);
 
 }  // namespace nb

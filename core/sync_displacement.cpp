@@ -248,19 +248,6 @@ double medianOf(std::vector<double> v)
     return v[v.size() / 2];
 }
 
-// The coding that lags most of those whose noise the meter reads as `measured`: below the meter's
-// top reading it is the measured one; at it, the coder may hold as much as the model takes
-// (kMostModelledMemory), and the camera's noise read through that memory is as much larger as a difference of two
-// pictures' noise, 2σ²(1 − ρ), says.
-PictureCoding mostLagging(const PictureCoding& measured)
-{
-    if (measured.memory < kMostMeasurableMemory)
-        return measured;
-    PictureCoding most = measured;
-    most.memory = kMostModelledMemory;
-    most.noise_grey = measured.noise_grey * std::sqrt((1.0 - measured.memory) / (1.0 - kMostModelledMemory));
-    return most;
-}
 
 }  // namespace
 
@@ -432,18 +419,14 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     // a slow stroke timed the offset (probe seed 314159 case 1: a stroke whose start the video
     // missed, timed by its stop alone, claimed 0.29 frames and was 1.8 off at confidence 0.71;
     // what the free intercept and scale leave is a seventh of it).
-    double travel = 0.0, sa = 0.0, saa = 0.0, sax = 0.0, sx = 0.0, sxx = 0.0, lagged = 0.0, laggedAtMost = 0.0;
-    const PictureCoding mostCoding = mostLagging(o.coding);
+    double travel = 0.0, sa = 0.0, saa = 0.0, sax = 0.0, sx = 0.0, sxx = 0.0, speeds = 0.0;
     std::vector<double> cumulative(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
         const double tr = (v.t[i] - chosen.offset) / (1 + chosen.drift);
         const double h = 0.5 * frame_s;
         const double dxdt = fit.slope * (positionAt(pos, tr + h) - positionAt(pos, tr - h)) / (2 * h);
         const double x = positionAt(pos, tr);
-        // Each frame times the offset as much as its slope squared, and so weighs its own lag.
-        const double change_grey = o.coding.edgeSlope_grey_per_px * std::abs(dxdt) * frame_s;
-        lagged += dxdt * dxdt * pictureLag_frames(o.coding, change_grey);
-        laggedAtMost += dxdt * dxdt * pictureLag_frames(mostCoding, change_grey);
+        speeds += std::abs(dxdt);
         sa += dxdt;
         saa += dxdt * dxdt;
         sax += dxdt * x;
@@ -491,22 +474,17 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
         }
     }
 
-    // The coded pictures show the motion late (core/picture_lag.h): the instant they show is
-    // earlier by that lag. The lag is a model's, with the tip's edge coded as the noise is, and
-    // it misses both ways by about as much as it takes off: a coder that follows the edge by
-    // motion compensation shows it sooner (H.264 at 15 frames/s, slow-small probe seed 5 case 10:
-    // 0.68 frames taken off, and the sync came out 0.74 early); a video coded twice (a console's
-    // MPEG-4 made H.264 by the lab) shows it later than its last coder's noise says (0.78 frames
-    // taken off, 1.26 late; sync_probe_matrix.py --slow-small --recode, seeds 880117 and 4242:
-    // 0.3 to 1.6 times the lag left over). So the offset is known no better than the lag itself.
-    // Where the noise's memory is at the most the meter reads, the lag may be as long as the
-    // most lagging coder that memory allows (mostLagging) makes it: known no better than that
-    // either. A bold or fast edge is shown on time by any coder, and keeps its precision.
+    // The coded pictures show the tip a trail behind it (core/picture_lag.h): late by the trail
+    // over its speed. Each frame times the offset as much as its slope squared, and so weighs its
+    // own lag: trail · Σ|v| / Σv². The trail is known within a range (what the coder is and
+    // whether it was the first); the offset is taken at its middle and known no better than
+    // half of it.
     const double pictureUncertainty_s = r.uncertainty_s;
     if (saa > 0) {
-        r.pictureLag_s = lagged / saa * frame_s;
+        const PictureTrail trail = pictureTrail(o.coding);
+        r.pictureLag_s = trail.likely_px() * speeds / saa;
         r.offset_s -= r.pictureLag_s;
-        r.pictureLagUncertainty_s = std::max(r.pictureLag_s, laggedAtMost / saa * frame_s - r.pictureLag_s);
+        r.pictureLagUncertainty_s = trail.uncertainty_px() * speeds / saa;
         r.uncertainty_s = std::max(r.uncertainty_s, r.pictureLagUncertainty_s);
     }
 

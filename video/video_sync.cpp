@@ -113,6 +113,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
                 return;
             try {
                 SyncOptions so = options.sync;
+                track.coding.motion = motionCodingOf(index.codec);
                 so.coding = track.coding;
                 const SyncResult r = synchroniseDisplacement({track.time_s, track.displacement_px}, needlePosition(run),
                                                              index.frameDuration(), so);

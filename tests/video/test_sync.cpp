@@ -291,17 +291,20 @@ private slots:
     // takes that lag off the offset; not told, it is that much off.
     void picturesCarriedOverShowTheMotionLate()
     {
-        const double offset_s = 1.317, frame_s = 1.0 / 29.97, memory = 0.4;
+        // Pictures that show the tip a steady trail behind it, whichever way and however fast it
+        // moves (core/picture_lag.h): the trail the model gives a faint edge of this memory.
+        const double offset_s = 1.317, frame_s = 1.0 / 29.97, memory = 0.6;
+        const double trail_px = 0.04 + 0.53 * memory;
         auto positionAt = [](double t) { return t < 0.5 ? 0.0 : 3.0 * std::sin(2.0 * M_PI * 0.2 * (t - 0.5)); };
         const nb::TimeSignal position = recordedAt500Hz(positionAt, 11000);
         const nb::TimelineMapping truth{offset_s, 0.0};
         nb::TimeSignal picture;
         std::mt19937 rng(31);
         std::normal_distribution<double> noise(0.0, 0.1);
-        double shown = 0.0;
         for (int k = 0; k < 700; ++k) {
-            const double tv = k * frame_s, seen = 200.0 + 3.4 * positionAt(truth.toRecording(tv));
-            shown = k == 0 ? seen : memory * shown + (1.0 - memory) * seen;
+            const double tv = k * frame_s, t = truth.toRecording(tv);
+            const double way = positionAt(t + 0.001) - positionAt(t - 0.001);
+            const double shown = 200.0 + 3.4 * positionAt(t) - (way > 0 ? trail_px : way < 0 ? -trail_px : 0.0);
             picture.time_s.push_back(tv);
             picture.value.push_back(shown + noise(rng));
         }
@@ -312,23 +315,30 @@ private slots:
             return worst / frame_s;
         };
         nb::SyncOptions told;
-        told.coding = {memory, 6.0, 0.01};  // an edge whose change is nothing beside the noise
+        told.coding = {memory, 6.0, 0.5, nb::MotionCoding::HalfPixel};  // an edge faint beside the noise
         const nb::SyncResult knowing = nb::synchroniseDisplacement(picture, position, frame_s, told);
         const nb::SyncResult unaware = nb::synchroniseDisplacement(picture, position, frame_s);
         qInfo("told: %.2f frames off, lag %.2f frames; not told: %.2f frames off", worstFrames(knowing),
               knowing.pictureLag_s / frame_s, worstFrames(unaware));
-        QVERIFY(std::abs(knowing.pictureLag_s / frame_s - memory / (1.0 - memory)) < 0.01);
-        QVERIFY2(worstFrames(knowing) < 0.15, qPrintable(QString::number(worstFrames(knowing))));
-        QVERIFY2(worstFrames(unaware) > 0.5, qPrintable(QString::number(worstFrames(unaware))));
+        QVERIFY2(worstFrames(knowing) < 0.25, qPrintable(QString::number(worstFrames(knowing))));
+        QVERIFY2(worstFrames(unaware) > 0.6, qPrintable(QString::number(worstFrames(unaware))));
         QCOMPARE(unaware.pictureLag_s, 0.0);
-        // The lag is a model's, off by about as much as it takes off (sync_probe_recoded_honest):
-        // the offset is claimed no more precise than the lag.
-        QVERIFY2(knowing.uncertainty_s >= knowing.pictureLag_s,
-                 qPrintable(QStringLiteral("uncertainty %1 s, lag %2 s").arg(knowing.uncertainty_s).arg(knowing.pictureLag_s)));
+        // The same pictures, their codec named H.264 (quarter pixels): they might have been coded
+        // by halves first (a console's MPEG-4 made H.264), and the offset is known no better than
+        // the range between the two trails; the truth lies within it.
+        nb::SyncOptions quarter = told;
+        quarter.coding.edgeSlope_grey_per_px = 8.0;
+        quarter.coding.motion = nb::MotionCoding::QuarterPixel;
+        const nb::SyncResult eitherCoder = nb::synchroniseDisplacement(picture, position, frame_s, quarter);
+        qInfo("named H.264, edge 8 grey/px: lag %.2f ± %.2f frames, %.2f frames off", eitherCoder.pictureLag_s / frame_s,
+              eitherCoder.pictureLagUncertainty_s / frame_s, worstFrames(eitherCoder));
+        QVERIFY(eitherCoder.pictureLagUncertainty_s > 0.1 * frame_s && eitherCoder.uncertainty_s >= eitherCoder.pictureLagUncertainty_s);
+        QVERIFY2(worstFrames(eitherCoder) < eitherCoder.uncertainty_s / frame_s + 0.25,
+                 qPrintable(QStringLiteral("%1 frames off, uncertainty %2").arg(worstFrames(eitherCoder)).arg(eitherCoder.uncertainty_s / frame_s)));
         // Where the pictures' noise shows the most memory the meter reads, the coder dropped the
-        // noise the model reads its threshold from: a faint edge's lag may be far longer, and the
-        // offset is not offered for acceptance. A bold edge is shown on time by any coder: its
-        // precision stays what the picture gives (fastNeedleInCleanH264 in test_accuracy).
+        // noise the faint trail is read from: it may be far longer, and the offset is not offered
+        // for acceptance. A bold edge is shown nearly on time by any coder: its precision stays
+        // what the picture gives (fastNeedleInCleanH264 in test_accuracy).
         nb::SyncOptions faintAtTheTop, boldAtTheTop;
         faintAtTheTop.coding = {nb::kMostMeasurableMemory, 1.0, 3.0};
         boldAtTheTop.coding = {nb::kMostMeasurableMemory, 0.5, 200.0};
@@ -338,8 +348,7 @@ private slots:
               "a bold edge's lag %.2f frames, uncertainty %.2f frames (not told: %.2f)",
               faint.pictureLag_s / frame_s, faint.uncertainty_s / frame_s, faint.confidence, bold.pictureLag_s / frame_s,
               bold.uncertainty_s / frame_s, unaware.uncertainty_s / frame_s);
-        QVERIFY2(faint.uncertainty_s > faint.pictureLag_s && faint.uncertainty_s >= frame_s,
-                 qPrintable(QString::number(faint.uncertainty_s / frame_s)));
+        QVERIFY2(faint.uncertainty_s >= frame_s, qPrintable(QString::number(faint.uncertainty_s / frame_s)));
         QVERIFY2(!faint.acceptable(), qPrintable(QString::number(faint.confidence)));
         // Which track is the needle, the picture alone says: the coder's lag does not lower that.
         QVERIFY2(faint.trackConfidence > faint.confidence && faint.trackConfidence >= unaware.trackConfidence - 0.05,
