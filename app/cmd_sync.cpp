@@ -239,7 +239,7 @@ int cmdSync(const QStringList& args, Io io)
                 io.out << nb::TrCli::tr("LOW CONFIDENCE (below %1): check the offset by marking an event in both before using it\n")
                               .arg(kSyncAcceptConfidence, 0, 'f', 2);
                 if (moved && r.lagLimitsPrecision())
-                    io.out << nb::TrCli::tr("the video's coder shows this slow, faint needle late by an amount known only to ±%1 frames: "
+                    io.out << nb::TrCli::tr("the video's coder shows this slow needle late by an amount known only to ±%1 frames: "
                                             "a region or a needle line will not make it surer, an event marked in both will\n")
                                   .arg(r.pictureLagUncertainty_s / index.frameDuration(), 0, 'f', 2);
                 if (limited)

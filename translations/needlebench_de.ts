@@ -2312,8 +2312,8 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+28"/>
-        <source>Low confidence: the video&apos;s coder shows this slow, faint needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
-        <translation>Geringe Konfidenz: Der Kodierer des Videos zeigt diese langsame, schwache Nadel verspätet, um %1 ms, auf ±%2 ms genau; den Versatz vor dem Übernehmen an einem Ereignis (Kontakt oder Durchstich) prüfen</translation>
+        <source>Low confidence: the video&apos;s coder shows this slow needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
+        <translation>Geringe Konfidenz: Der Kodierer des Videos zeigt diese langsame Nadel verspätet, um %1 ms, auf ±%2 ms genau; den Versatz vor dem Übernehmen an einem Ereignis (Kontakt oder Durchstich) prüfen</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -4849,7 +4849,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation>Versatz:     %1 s (Videozeit minus Aufzeichnungszeit)
@@ -4965,9 +4965,9 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>the video&apos;s coder shows this slow, faint needle late by an amount known only to ±%1 frames: a region or a needle line will not make it surer, an event marked in both will
+        <source>the video&apos;s coder shows this slow needle late by an amount known only to ±%1 frames: a region or a needle line will not make it surer, an event marked in both will
 </source>
-        <translation>der Kodierer des Videos zeigt diese langsame, schwache Nadel um einen nur auf ±%1 Bilder bekannten Betrag verspätet: ein Bereich oder eine Nadellinie machen das nicht sicherer, ein in beiden markiertes Ereignis schon
+        <translation>der Kodierer des Videos zeigt diese langsame Nadel um einen nur auf ±%1 Bilder bekannten Betrag verspätet: ein Bereich oder eine Nadellinie machen das nicht sicherer, ein in beiden markiertes Ereignis schon
 </translation>
     </message>
     <message>
@@ -5010,7 +5010,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Videodatei</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-147"/>
+        <location filename="../app/cmd_sync.cpp" line="-149"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation>Warnung: %1: %2</translation>
@@ -6172,7 +6172,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+451"/>
+        <location filename="../core/friction_fit.cpp" line="+485"/>
         <source>sample %1 is not a finite number</source>
         <translation>Messwert %1 ist keine endliche Zahl</translation>
     </message>
@@ -6684,7 +6684,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>Bewegung nur in eine Richtung (%1 Messwerte einwärts, %2 auswärts)</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+84"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation>der Reibungsfit ist singulär (die Geschwindigkeit variiert innerhalb einer Richtung nicht)</translation>
     </message>
@@ -6744,12 +6744,12 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>%1 ist durch diesen Lauf nicht bestimmt: er gleitet nur zwischen %2 und %3 mm/s, ein zu schmaler Geschwindigkeitsbereich, um seine Gerade bis zur Geschwindigkeit null fortzuführen</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-268"/>
         <source>no sample moves faster than the zero-velocity band (±%1 mm/s), the needle&apos;s top speed being %2 mm/s: give a narrower --band-m-s, or label phase c</source>
         <translation>kein Messpunkt bewegt sich schneller als das Nullgeschwindigkeitsband (±%1 mm/s), bei einer Höchstgeschwindigkeit der Nadel von %2 mm/s: ein schmaleres --band-m-s angeben oder Phase c labeln</translation>
     </message>
     <message>
-        <location line="+306"/>
+        <location line="+308"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation>Dp und Dn sind nicht bestimmt: Der Lauf hat nicht in beiden Richtungen eine Strecke in Ruhe (Phase a), aus der sich die Haftgrenzen lesen lassen</translation>
     </message>
@@ -6952,7 +6952,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nominal (Gerät)</translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+234"/>
+        <location filename="../core/label_suggest.cpp" line="+238"/>
         <source>no puncture found in the force</source>
         <translation>keine Punktion in der Kraft gefunden</translation>
     </message>

@@ -2306,7 +2306,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+28"/>
-        <source>Low confidence: the video&apos;s coder shows this slow, faint needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
+        <source>Low confidence: the video&apos;s coder shows this slow needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4777,7 +4777,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>offset:      %1 s (video time minus recording time)
 </source>
         <translation type="unfinished"></translation>
@@ -4878,7 +4878,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <source>the video&apos;s coder shows this slow, faint needle late by an amount known only to ±%1 frames: a region or a needle line will not make it surer, an event marked in both will
+        <source>the video&apos;s coder shows this slow needle late by an amount known only to ±%1 frames: a region or a needle line will not make it surer, an event marked in both will
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -4921,7 +4921,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-147"/>
+        <location filename="../app/cmd_sync.cpp" line="-149"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation type="unfinished"></translation>
@@ -6059,7 +6059,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+451"/>
+        <location filename="../core/friction_fit.cpp" line="+485"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6571,7 +6571,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+84"/>
         <source>the friction fit is singular (velocity does not vary within a direction)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6631,12 +6631,12 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-268"/>
         <source>no sample moves faster than the zero-velocity band (±%1 mm/s), the needle&apos;s top speed being %2 mm/s: give a narrower --band-m-s, or label phase c</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+306"/>
+        <location line="+308"/>
         <source>Dp and Dn are not determined: the run has no stretch at rest (phase a) in both directions to read the static limits from</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6839,7 +6839,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../core/label_suggest.cpp" line="+234"/>
+        <location filename="../core/label_suggest.cpp" line="+238"/>
         <source>no puncture found in the force</source>
         <translation type="unfinished"></translation>
     </message>

@@ -171,7 +171,7 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
                 // What the operator can do about it: a needle too faint to be found, or a clock
                 // on its line, is read where its line and a region around its path are drawn.
                 if (!vs.result.acceptable() && vs.result.lagLimitsPrecision())
-                    showStatus(tr("Low confidence: the video's coder shows this slow, faint needle late, by %1 ms give or take %2 ms; "
+                    showStatus(tr("Low confidence: the video's coder shows this slow needle late, by %1 ms give or take %2 ms; "
                                   "check the offset on an event (contact or puncture) before accepting")
                                    .arg(localNumber(1000.0 * vs.result.pictureLag_s, 0), localNumber(1000.0 * vs.result.pictureLagUncertainty_s, 0)));
                 else if (!vs.result.acceptable() && video_->needleLine().isNull())

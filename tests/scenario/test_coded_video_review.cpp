@@ -355,7 +355,7 @@ private slots:
             QVERIFY2(found.lagLimitsPrecision(), qPrintable(QStringLiteral("uncertainty %1 s, the lag's %2 s")
                                                                 .arg(found.uncertainty_s)
                                                                 .arg(found.pictureLagUncertainty_s)));
-            QVERIFY2(review->status().contains(QStringLiteral("the video's coder shows this slow, faint needle late")),
+            QVERIFY2(review->status().contains(QStringLiteral("the video's coder shows this slow needle late")),
                      qPrintable(review->status()));
             QTest::qWait(300);
             screenshot(QStringLiteral("review_coded_twice_low_confidence.png"));
@@ -364,7 +364,7 @@ private slots:
             QVERIFY(sync.waitForFinished(180000));
             const QString said = QString::fromUtf8(sync.readAllStandardOutput());
             QVERIFY2(sync.exitCode() == 0 && said.contains(QStringLiteral("LOW CONFIDENCE"))
-                         && said.contains(QStringLiteral("the video's coder shows this slow, faint needle late")),
+                         && said.contains(QStringLiteral("the video's coder shows this slow needle late")),
                      qPrintable(said + QString::fromUtf8(sync.readAllStandardError())));
         }
 
