@@ -248,7 +248,6 @@ double medianOf(std::vector<double> v)
     return v[v.size() / 2];
 }
 
-
 }  // namespace
 
 TimeSignal needlePosition(const Run& run) { return {run.time_s, run.position_mm}; }
@@ -478,7 +477,7 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     // over its speed. Each frame times the offset as much as its slope squared, and so weighs its
     // own lag: trail · Σ|v| / Σv². The trail is known within a range (what the coder is and
     // whether it was the first); the offset is taken at its middle and known no better than
-    // half of it.
+    // half of it and what the model leaves unexplained.
     const double pictureUncertainty_s = r.uncertainty_s;
     if (saa > 0) {
         const PictureTrail trail = pictureTrail(o.coding);

@@ -77,6 +77,7 @@ nb::PictureCoding measured(const std::vector<cv::Mat>& frames)
 struct Coded {
     nb::PictureCoding coding;
     double noiseShown = 0.0;
+    nb::MotionCoding motion = nb::MotionCoding::Unknown;  // as the file's index names its codec
 };
 
 // The pictures encoded by the ffmpeg tool with `codec` (its arguments), decoded back through
@@ -106,7 +107,7 @@ std::optional<Coded> throughCoder(const QStringList& codec, const QString& name,
         meter.add(gray);
         decoded.push_back(gray);
     }
-    return Coded{meter.coding(), noiseShown(decoded)};
+    return Coded{meter.coding(), noiseShown(decoded), nb::motionCodingOf(index.codec)};
 }
 
 }  // namespace
@@ -166,6 +167,9 @@ private slots:
               mjpeg->coding.memory, mjpeg->coding.noise_grey, mjpeg->noiseShown, mpeg4->coding.memory, mpeg4->coding.noise_grey,
               mpeg4->noiseShown, kNoise);
         QVERIFY2(mjpeg->coding.memory < 0.05, qPrintable(QString::number(mjpeg->coding.memory)));
+        // The files name their coders, and with them how finely each follows motion.
+        QCOMPARE(mjpeg->motion, nb::MotionCoding::Intra);
+        QCOMPARE(mpeg4->motion, nb::MotionCoding::HalfPixel);
         QVERIFY2(mpeg4->coding.memory > 0.2, qPrintable(QString::number(mpeg4->coding.memory)));
         // Either coder's quantiser drops part of the noise; what is measured is what is shown.
         for (const Coded* c : {&*mjpeg, &*mpeg4})
