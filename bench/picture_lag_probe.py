@@ -11,9 +11,11 @@ known background at tips 0.05 px apart; the best fit is where the picture shows 
 picture's lag is the shift, in frames, that best fits those tips to the tips drawn.
 
 Printed per case, in frames: the pictures' lag; the lag `needlebench sync --json` took off
-(picture_lag_frames); how late the sync's offset was before it took that off (at the middle of
-the recording: the tracker's and the fit's own share is the difference from the pictures' lag).
-Then the median and extremes of what the model missed (pictures' lag less the model's).
+(picture_lag_frames) and how far it says that may be off (picture_lag_uncertainty_frames); how
+late the sync's offset was before it took that off (at the middle of the recording: the tracker's
+and the fit's own share is the difference from the pictures' lag). Then the median and extremes
+of what the model missed (pictures' lag less the model's), and in how many cases the miss was
+within what the model said.
 
   bench/picture_lag_probe.py [--seed N] [--cases 16] [--only 3,7] [--slow-small | --bold] [--recode] [--exe ...] [--keep DIR]
 
@@ -87,12 +89,13 @@ def probe(c, exe, root, recode):
     try:
         j = json.loads(r.stdout)
     except ValueError:
-        return c, pictures, None, None
+        return c, pictures, None, None, None
     if j['offset_s'] is None:
-        return c, pictures, None, None
+        return c, pictures, None, None, None
     modelled = j.get('picture_lag_frames') or 0.0
+    said = j.get('picture_lag_uncertainty_frames') or 0.0
     late = matrix.sync_error_frames(c, j, 0.5 * t[-1]) + modelled  # at the recording's middle
-    return c, pictures, modelled, late
+    return c, pictures, modelled, said, late
 
 
 def main():
@@ -109,15 +112,16 @@ def main():
         wanted = {int(i) for i in a.only.split(',')}
         cases = [c for c in cases if c['i'] in wanted]
     root = a.keep or tempfile.mkdtemp(prefix='picture_lag_probe_')
-    missed = []
+    missed, covered = [], 0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, pictures, modelled, late in pool.map(lambda c: probe(c, a.exe, root, a.recode), cases):
+            for c, pictures, modelled, said, late in pool.map(lambda c: probe(c, a.exe, root, a.recode), cases):
                 if modelled is None:
                     print(f"{c['i']:3d}  pictures {pictures:+5.2f} fr  sync refused  {matrix.describe(c)}", flush=True)
                     continue
                 missed.append(pictures - modelled)
-                print(f"{c['i']:3d}  pictures {pictures:+5.2f} fr  modelled {modelled:5.2f}  sync before it {late:+5.2f}  "
+                covered += abs(pictures - modelled) <= said
+                print(f"{c['i']:3d}  pictures {pictures:+5.2f} fr  modelled {modelled:5.2f} ± {said:4.2f}  sync before it {late:+5.2f}  "
                       f"missed {pictures - modelled:+5.2f}  {matrix.describe(c)}", flush=True)
     finally:
         if not a.keep:
@@ -126,7 +130,7 @@ def main():
         m = np.array(missed)
         print(f"picture lag probe: {len(m)} cases: the model missed the pictures' lag by median {np.median(m):+.2f} frames, "
               f"least {m.min():+.2f}, most {m.max():+.2f}; more than half a frame short in {int((m > 0.5).sum())}, "
-              f"more than half a frame over in {int((m < -0.5).sum())}")
+              f"more than half a frame over in {int((m < -0.5).sum())}; within the uncertainty it gave in {covered}")
     return 0
 
 
