@@ -201,8 +201,7 @@ int cmdSync(const QStringList& args, Io io)
                 o[QStringLiteral("picture_memory")] = vs.track.coding.memory;
                 o[QStringLiteral("picture_noise_grey")] = vs.track.coding.noise_grey;
                 o[QStringLiteral("edge_slope_grey_per_px")] = vs.track.coding.edgeSlope_grey_per_px;
-                const nb::PictureTrail trail = nb::pictureTrail(vs.track.coding);
-                o[QStringLiteral("picture_trail_px")] = QJsonArray{trail.least_px, trail.most_px};
+                o[QStringLiteral("picture_trail_px")] = QJsonArray{r.pictureTrail.least_px, r.pictureTrail.most_px};
             }
             printJson(io, o);
         } else {

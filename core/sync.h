@@ -83,6 +83,7 @@ struct SyncResult {
     double uncertainty_s = 0.0;    // how far the offset could be off (split halves, fit noise); infinite: unknown
     double pictureLag_s = 0.0;     // how late the coded pictures show the motion (taken off offset_s)
     double pictureLagUncertainty_s = 0.0;  // how far that lag may be off; uncertainty_s is no less
+    PictureTrail pictureTrail;     // the trail behind the tip that lag was read from (core/picture_lag.h)
     // Whether the coder's lag, known no better than pictureLagUncertainty_s, is what keeps the
     // offset uncertain: checking it on an event helps, drawing the needle's line does not.
     bool lagLimitsPrecision() const { return pictureLagUncertainty_s > 0.0 && pictureLagUncertainty_s >= uncertainty_s; }

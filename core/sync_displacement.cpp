@@ -479,11 +479,11 @@ SyncResult synchroniseDisplacement(const TimeSignal& video, const TimeSignal& po
     // whether it was the first); the offset is taken at its middle and known no better than
     // half of it and what the model leaves unexplained.
     const double pictureUncertainty_s = r.uncertainty_s;
+    r.pictureTrail = pictureTrail(o.coding);
     if (saa > 0) {
-        const PictureTrail trail = pictureTrail(o.coding);
-        r.pictureLag_s = trail.likely_px() * speeds / saa;
+        r.pictureLag_s = r.pictureTrail.likely_px() * speeds / saa;
         r.offset_s -= r.pictureLag_s;
-        r.pictureLagUncertainty_s = trail.uncertainty_px() * speeds / saa;
+        r.pictureLagUncertainty_s = r.pictureTrail.uncertainty_px() * speeds / saa;
         r.uncertainty_s = std::max(r.uncertainty_s, r.pictureLagUncertainty_s);
     }
 

@@ -67,6 +67,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
     out.frames = index.size();
     out.tracked = reach.within(index.size());
     const bool detected = !options.axis;
+    const MotionCoding motion = motionCodingOf(index.codec);  // the video's, whichever line is tracked
     std::vector<double> scores;
     std::vector<std::pair<double, NeedleAxis>> spares;
     // Every line that looks at all like a needle is tracked, not the few that look most like
@@ -113,8 +114,8 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
                 return;
             try {
                 SyncOptions so = options.sync;
-                track.coding.motion = motionCodingOf(index.codec);
                 so.coding = track.coding;
+                so.coding.motion = motion;
                 const SyncResult r = synchroniseDisplacement({track.time_s, track.displacement_px}, needlePosition(run),
                                                              index.frameDuration(), so);
                 const double rank = r.trackConfidence * looksLikeNeedle + 1e-3 * std::abs(r.correlation);

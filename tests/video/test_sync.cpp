@@ -640,6 +640,10 @@ private slots:
               r["picture_memory"].toDouble());
         QVERIFY2(std::abs(error_frames) < 1.0, qPrintable(QString::number(error_frames)));
         QVERIFY(r["acceptable"].toBool());
+        // The trail the lag was read from, as a range: least, then most.
+        const QJsonArray trail = r["picture_trail_px"].toArray();
+        QCOMPARE(trail.size(), 2);
+        QVERIFY(trail[0].toDouble() >= 0.0 && trail[0].toDouble() <= trail[1].toDouble());
     }
 
     // Suggested phases against the simulator's truth: the suggested c (dynamic friction)
