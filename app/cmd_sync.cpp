@@ -1,4 +1,4 @@
-// `needlebench sync RUN.csv VIDEO [--roi x,y,w,h] [--needle x1,y1,x2,y2] [--json]`: finds the
+// `needlebench sync RUN.csv VIDEO [--roi x,y,w,h] [--needle x1,y1,x2,y2] [--coded-once] [--json]`: finds the
 // offset (and drift) between the video and the force record from the needle's displacement
 // tracked in the picture (video/video_sync.h).
 #include "cli_support.h"
@@ -36,13 +36,16 @@ int cmdSync(const QStringList& args, Io io)
     const QCommandLineOption needle(QStringLiteral("needle"),
                                     nb::TrCli::tr("the needle's line in the picture, in pixels (default: found in the picture)"),
                                     QStringLiteral("x1,y1,x2,y2"));
+    const QCommandLineOption codedOnce(QStringLiteral("coded-once"),
+                                       nb::TrCli::tr("the video is as its camera or console coded it, never converted: its coder's lag "
+                                                     "is then known more closely"));
     const QCommandLineOption json(QStringLiteral("json"), nb::TrCli::tr("print JSON"));
     const QCommandLineOption trace(QStringLiteral("trace"),
                                    nb::TrCli::tr("also write the needle's tracked displacement per frame (time_s,displacement_px) to FILE"),
                                    QStringLiteral("FILE.csv"));
     const QCommandLineOption overwrite(QStringLiteral("overwrite"),
                                        nb::TrCli::tr("let --trace replace a file that is not a trace (an earlier trace is replaced without it)"));
-    parser.addOptions({roi, maxOffset, needle, trace, json, overwrite});
+    parser.addOptions({roi, maxOffset, needle, codedOnce, trace, json, overwrite});
     int code = Ok;
     if (!parseArgs(parser, QStringLiteral("sync"), args, io, 2, 2, &code))
         return code;
@@ -60,6 +63,7 @@ int cmdSync(const QStringList& args, Io io)
         region = QRect(v[0], v[1], v[2], v[3]);
     }
     video::VideoSyncOptions vso;
+    vso.codedOnce = parser.isSet(codedOnce);
     if (parser.isSet(needle)) {
         const QStringList p = parser.value(needle).split(QLatin1Char(','));
         bool ok = p.size() == 4;
@@ -189,6 +193,7 @@ int cmdSync(const QStringList& args, Io io)
             o[QStringLiteral("picture_lag_frames")] = r.pictureLag_s / index.frameDuration();
             o[QStringLiteral("picture_lag_uncertainty_s")] = r.pictureLagUncertainty_s;
             o[QStringLiteral("picture_lag_uncertainty_frames")] = r.pictureLagUncertainty_s / index.frameDuration();
+            o[QStringLiteral("coded_once")] = vso.codedOnce;
             o[QStringLiteral("method")] = r.method;
             o[QStringLiteral("accept_threshold")] = kSyncAcceptConfidence;
             o[QStringLiteral("acceptable")] = r.acceptable();
@@ -241,6 +246,11 @@ int cmdSync(const QStringList& args, Io io)
                     io.out << nb::TrCli::tr("the video's coder shows this slow needle late by an amount known only to ±%1 frames: "
                                             "a region or a needle line will not make it surer, an event marked in both will\n")
                                   .arg(r.pictureLagUncertainty_s / index.frameDuration(), 0, 'f', 2);
+                // Only a coder moving by quarter pixels may hide a first coder's coarser trail.
+                if (moved && r.lagLimitsPrecision() && !vso.codedOnce && r.pictureTrail.most_px > r.pictureTrail.least_px
+                    && motionCodingOf(index.codec) == MotionCoding::QuarterPixel)
+                    io.out << nb::TrCli::tr("if nobody converted this video (it is as its camera or console coded it), "
+                                            "--coded-once narrows that\n");
                 if (limited)
                     io.out << nb::TrCli::tr("offsets were tried within ±%1 s (--max-offset): if the video started further from the "
                                             "recording than that, try a larger --max-offset\n")

@@ -17,7 +17,7 @@ and the fit's own share is the difference from the pictures' lag). Then the medi
 of what the model missed (pictures' lag less the model's), and in how many cases the miss was
 within what the model said.
 
-  bench/picture_lag_probe.py [--seed N] [--cases 16] [--only 3,7] [--slow-small | --bold] [--recode] [--exe ...] [--keep DIR]
+  bench/picture_lag_probe.py [--seed N] [--cases 16] [--only 3,7] [--slow-small | --bold] [--recode] [--coded-once] [--exe ...] [--keep DIR]
 
 Needs python3-numpy and ffmpeg; 16 slow-small cases take about a minute on 2 cores.
 """
@@ -81,11 +81,11 @@ def lag_of(c, t, x, shown):
     return lag
 
 
-def probe(c, exe, root, recode):
+def probe(c, exe, root, recode, coded_once):
     run, video, t, x = matrix.make_case(c, exe, root, 'medium', recode=recode)
     frames = int((c['offset'] + t[-1] + 1.0) * c['fps'])  # as draw_video draws them
     pictures = lag_of(c, t, x, shown_tips(c, video, matrix.tip_px(c, t, x, np.arange(frames))))
-    r = subprocess.run([exe, 'sync', run, video, '--json'], capture_output=True, text=True)
+    r = subprocess.run([exe, 'sync', run, video, '--json'] + (['--coded-once'] if coded_once else []), capture_output=True, text=True)
     try:
         j = json.loads(r.stdout)
     except ValueError:
@@ -103,10 +103,11 @@ def main():
     add_common_arguments(ap)
     matrix.add_family_arguments(ap)
     ap.add_argument('--recode', action='store_true', help='code each video again as H.264 (as sync_probe_matrix.py)')
+    ap.add_argument('--coded-once', action='store_true', help='tell the sync each video was coded once (sync --coded-once)')
     a = ap.parse_args()
     seed = chosen_seed(a, 'picture_lag_probe')
     print(f"picture_lag_probe: seed {seed} (rerun with --seed {seed}{matrix.family_options(a)}"
-          f"{' --recode' if a.recode else ''}), {a.cases} cases", flush=True)
+          f"{' --recode' if a.recode else ''}{' --coded-once' if a.coded_once else ''}), {a.cases} cases", flush=True)
     cases = matrix.draw_family(a, seed, a.cases)
     if a.only:
         wanted = {int(i) for i in a.only.split(',')}
@@ -115,7 +116,7 @@ def main():
     missed, covered = [], 0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, pictures, modelled, said, late in pool.map(lambda c: probe(c, a.exe, root, a.recode), cases):
+            for c, pictures, modelled, said, late in pool.map(lambda c: probe(c, a.exe, root, a.recode, a.coded_once), cases):
                 if modelled is None:
                     print(f"{c['i']:3d}  pictures {pictures:+5.2f} fr  sync refused  {matrix.describe(c)}", flush=True)
                     continue

@@ -12,7 +12,7 @@ video shows no motion (it starts after a short stroke has ended) has no right of
 counted apart, and only a refusal or a confidence below the accept threshold is right for it.
 
   bench/sync_probe_matrix.py [--seed N] [--cases 16] [--only 3,7] [--expect-hits] [--exe build/app/needlebench] [--keep DIR]
-                             [--slow-small | --bold] [--expect-honest] [--damage] [--operator] [--recode]
+                             [--slow-small | --bold] [--expect-honest] [--damage] [--operator] [--recode] [--coded-once]
 
 --damage overwrites each video's packets over a stretch of 0.2-1.5 s drawn from the case's
 seed (a bad copy, a bad sector): the frames there cannot be decoded, and the sync must still
@@ -23,6 +23,10 @@ shaft towards the tip) and a box around the needle's path, leaving out the burnt
 
 --recode codes each video again as H.264, as a lab converting a console's export does (x264
 preset ultrafast to slow and CRF 18-28, drawn from the case's seed): two coders' lags add up.
+
+--coded-once syncs as an operator who says each video is as its coder wrote it (sync
+--coded-once): an H.264 file's lag is then known as its own coder's, not anywhere down to a
+first coder's. With --recode that is untrue, and the probe shows what believing it costs.
 
 --slow-small draws the family the main draw meets rarely: two cycles of a slow, short sine
 (0.1-0.3 Hz, ±2.5-4 mm at 3-4 px/mm, so ±8-16 px), a faint needle (contrast 28-45, noise
@@ -288,7 +292,7 @@ def make_case(c, exe, root, x264_preset, damage=False, recode=False):
     return run, video, t, x
 
 
-def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=False):
+def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=False, coded_once=False):
     run, video, t, x = make_case(c, exe, root, x264_preset, damage, recode)
     # A video that starts after the motion has ended (a short stroke, an offset well below
     # zero) shows nothing to sync on: the honest answer is a refusal or a low confidence, and
@@ -296,7 +300,8 @@ def run_case(c, exe, root, x264_preset, damage=False, operator=False, recode=Fal
     n = int((c['offset'] + t[-1] + 1.0) * c['fps'])
     seen = (t >= -c['offset'] / (1 + c['drift'])) & (t <= (n / c['fps'] - c['offset']) / (1 + c['drift']))
     moving = bool(seen.any()) and np.ptp(x[seen]) >= 0.05 * max(np.ptp(x), 1e-9)
-    r = subprocess.run([exe, 'sync', run, video, '--json'] + (operator_marks(c, x) if operator else []), capture_output=True, text=True)
+    r = subprocess.run([exe, 'sync', run, video, '--json'] + (operator_marks(c, x) if operator else []) + (['--coded-once'] if coded_once else []),
+                       capture_output=True, text=True)
     try:
         j = json.loads(r.stdout)
     except ValueError:
@@ -317,6 +322,9 @@ def main():
                     help="sync as an operator who draws the needle's line and a box around its path")
     ap.add_argument('--recode', action='store_true',
                     help="code each video again as H.264 (x264 preset ultrafast-slow and CRF 18-28 drawn per case), as a lab's conversion does")
+    ap.add_argument('--coded-once', action='store_true',
+                    help="sync as an operator who says each video is as its coder wrote it (sync --coded-once); "
+                         "with --recode that is not so, and the probe shows what believing it costs")
     ap.add_argument('--x264-preset', default='medium',
                     help="x264's preset for the H.264 videos (medium, x264's own default; veryfast codes a noisy "
                          "1024x768 picture four times faster, with the same two B-frames)")
@@ -335,7 +343,7 @@ def main():
             print(f"one sync probe in {share} runs here (NB_CASE_SHARE); scripts/test-all-cases.sh runs them all")
             return 77
     seed = chosen_seed(a, 'sync_probe_matrix')
-    rerun = f"--seed {seed}{family_options(a)}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}{' --recode' if a.recode else ''}"
+    rerun = f"--seed {seed}{family_options(a)}{' --damage' if a.damage else ''}{' --operator' if a.operator else ''}{' --recode' if a.recode else ''}{' --coded-once' if a.coded_once else ''}"
     rerun += f" --x264-preset {a.x264_preset}" if a.x264_preset != 'medium' else ''
     print(f"sync_probe_matrix: seed {seed} (rerun with {rerun}), {a.cases} cases", flush=True)
     cases = draw_family(a, seed, a.cases)
@@ -347,7 +355,7 @@ def main():
     worst = 0.0
     try:
         with ThreadPoolExecutor(2) as pool:
-            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.x264_preset, a.damage, a.operator, a.recode), cases):
+            for c, o, problem in pool.map(lambda c: run_case(c, a.exe, root, a.x264_preset, a.damage, a.operator, a.recode, a.coded_once), cases):
                 if o.get('refused'):
                     if o['moving']:
                         misses += 1

@@ -48,14 +48,17 @@ PictureTrail pictureTrail(const PictureCoding& c)
     // pixels, 0.75 for one moving by quarters.
     const double halfPixel_px = edgeKnown ? 3.5 / c.edgeSlope_grey_per_px : kInf;
     const double quarterPixel_px = edgeKnown ? 0.75 / c.edgeSlope_grey_per_px : kInf;
-    PictureTrail t;
-    t.most_px = std::min({atTop ? kInf : faint_px, halfPixel_px, kMostTrail_px});
     // A video whose coder moves by quarter pixels (or is not known) may have been coded by one
-    // moving by halves first.
-    t.least_px = std::min({faint_px, c.motion == MotionCoding::HalfPixel ? halfPixel_px : quarterPixel_px, t.most_px});
+    // moving by halves first, unless the operator says it was coded once.
+    const bool byHalves = c.motion == MotionCoding::HalfPixel;
+    const bool once = byHalves || (c.codedOnce && c.motion == MotionCoding::QuarterPixel);
+    const double own_px = byHalves ? halfPixel_px : quarterPixel_px;
+    PictureTrail t;
+    t.most_px = std::min({atTop ? kInf : faint_px, once ? own_px : halfPixel_px, kMostTrail_px});
+    t.least_px = std::min({faint_px, own_px, t.most_px});
     // What the model left unexplained in the probes' strokes: coded once by halves, 0.06 px (root
     // mean square; at most 0.16); coded twice, 0.15 (0.29 below the meter's top).
-    t.residual_px = c.motion == MotionCoding::HalfPixel ? 0.10 : 0.15;
+    t.residual_px = once ? 0.10 : 0.15;
     return t;
 }
 

@@ -40,6 +40,10 @@ struct PictureCoding {
     double edgeSlope_grey_per_px = 0.0;  // the tip's edge along the needle: how much a pixel changes
                                          // as the tip moves a pixel; 0 when not measured
     MotionCoding motion = MotionCoding::Unknown;
+    // The operator says the file was coded once, by the coder its container names (the console
+    // or camera wrote it so, nobody converted it): a video whose coder moves by quarter pixels
+    // then trails as that coder does, not anywhere down to a first coder's trail.
+    bool codedOnce = false;
 };
 
 // The most memory the pictures' noise can show (video/picture_memory): beyond it a coder has
@@ -50,7 +54,7 @@ inline constexpr double kMostMeasurableMemory = 0.95;
 // How far behind the tip the pictures show it, in pixels along the needle: between `least_px`
 // and `most_px` for what is known of the coding (the second coder of a video coded twice shows
 // the first one's trail), give or take `residual_px`, what the model left unexplained in the
-// probes' strokes (less for a video coded once by halves than for one that may be coded twice).
+// probes' strokes (less for a video known to be coded once than for one that may be coded twice).
 struct PictureTrail {
     double least_px = 0.0;
     double most_px = 0.0;

@@ -59,6 +59,17 @@ FrameSpan framesInReach(const FrameIndex& index, const Run& run, const SyncOptio
     return FrameSpan{index.frameAt(from_s), index.frameAt(to_s)}.within(index.size());
 }
 
+// One line's track fitted to the recording, with the coder's trail as the track's pictures and
+// the operator say.
+SyncResult fitTrack(const NeedleTrack& track, const FrameIndex& index, const Run& run, const VideoSyncOptions& options)
+{
+    SyncOptions so = options.sync;
+    so.coding = track.coding;
+    so.coding.motion = motionCodingOf(index.codec);  // the video's, whichever line is tracked
+    so.coding.codedOnce = options.codedOnce;
+    return synchroniseDisplacement({track.time_s, track.displacement_px}, needlePosition(run), index.frameDuration(), so);
+}
+
 // One sync over the frames `reader` gives.
 VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run, const VideoSyncOptions& options,
                    const FrameSpan reach, const std::function<void(int, int)>& progress, const std::atomic_bool* cancel)
@@ -67,7 +78,6 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
     out.frames = index.size();
     out.tracked = reach.within(index.size());
     const bool detected = !options.axis;
-    const MotionCoding motion = motionCodingOf(index.codec);  // the video's, whichever line is tracked
     std::vector<double> scores;
     std::vector<std::pair<double, NeedleAxis>> spares;
     // Every line that looks at all like a needle is tracked, not the few that look most like
@@ -113,11 +123,7 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
             if (best && looksLikeNeedle + 1e-3 <= bestRank)
                 return;
             try {
-                SyncOptions so = options.sync;
-                so.coding = track.coding;
-                so.coding.motion = motion;
-                const SyncResult r = synchroniseDisplacement({track.time_s, track.displacement_px}, needlePosition(run),
-                                                             index.frameDuration(), so);
+                const SyncResult r = fitTrack(track, index, run, options);
                 const double rank = r.trackConfidence * looksLikeNeedle + 1e-3 * std::abs(r.correlation);
                 if (!best || rank > bestRank) {
                     best = &track;
@@ -212,6 +218,14 @@ VideoSync syncOnce(FrameReader& reader, const FrameIndex& index, const Run& run,
 }
 
 }  // namespace
+
+VideoSync refitVideoSync(VideoSync done, const FrameIndex& index, const Run& run, const VideoSyncOptions& options)
+{
+    if (done.track.time_s.empty())
+        return done;  // no needle was followed: the picture's motion has no coder's trail
+    done.result = fitTrack(done.track, index, run, options);
+    return done;
+}
 
 VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyncOptions& options,
                          const std::function<void(int, int)>& progress, const std::atomic_bool* cancel)

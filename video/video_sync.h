@@ -20,6 +20,7 @@ namespace nb::video {
 struct VideoSyncOptions {
     QRect roi;                        // where to look for the needle; empty: everywhere
     std::optional<NeedleAxis> axis;   // the needle's line, when the operator drew it
+    bool codedOnce = false;           // the operator says nobody coded the file again (PictureCoding::codedOnce)
     SyncOptions sync;
 };
 
@@ -34,5 +35,11 @@ struct VideoSync {
 VideoSync syncVideoToRun(const FrameIndex& index, const Run& run, const VideoSyncOptions& options = {},
                          const std::function<void(int, int)>& progress = {},
                          const std::atomic_bool* cancel = nullptr);
+
+// `done` (from syncVideoToRun with the same index, run and marks) fitted again as `options` say
+// the video was coded, without tracking it again. Which line is the needle, and which pass over
+// a damaged file is kept, go by how well each track explains the recording with no coder's lag
+// (SyncResult::trackConfidence), which the coding does not change.
+VideoSync refitVideoSync(VideoSync done, const FrameIndex& index, const Run& run, const VideoSyncOptions& options);
 
 }  // namespace nb::video

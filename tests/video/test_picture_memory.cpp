@@ -195,7 +195,7 @@ private slots:
     // The trail (core/picture_lag.h): none for a coder that codes every picture afresh or where
     // nothing was measured; for a faint edge it grows with the memory; for a bold one it is half
     // the quantiser's threshold over the edge's slope, smaller for a coder that moves by quarter
-    // pixels, whose video may yet have been coded by halves first.
+    // pixels, whose video may yet have been coded by halves first, unless the operator says not.
     void trailFollowsTheCoder()
     {
         using nb::MotionCoding;
@@ -222,6 +222,23 @@ private slots:
         QVERIFY(trail(0.9, 20.0, MotionCoding::HalfPixel).likely_px() < half.likely_px());
         QVERIFY(quarter.least_px < 0.1 && std::abs(quarter.most_px - half.most_px) < 1e-9);
         QVERIFY(trail(0.9, 14.0, MotionCoding::Unknown).most_px == quarter.most_px);
+        // Said to be coded once, by quarter pixels: its own trail alone, known as closely as one
+        // coded once by halves. Said of a coder by halves, or of one not known, it changes nothing.
+        auto once = [](double memory, double edge, MotionCoding motion) {
+            nb::PictureCoding c{memory, 5.0, edge, motion};
+            c.codedOnce = true;
+            return nb::pictureTrail(c);
+        };
+        const nb::PictureTrail quarterOnce = once(0.9, 14.0, MotionCoding::QuarterPixel);
+        QVERIFY(std::abs(quarterOnce.least_px - 0.75 / 14.0) < 1e-9 && quarterOnce.most_px == quarterOnce.least_px);
+        QVERIFY(quarterOnce.uncertainty_px() < quarter.uncertainty_px());
+        QCOMPARE(quarterOnce.residual_px, half.residual_px);
+        QVERIFY(std::abs(once(0.4, 2.0, MotionCoding::QuarterPixel).likely_px() - (0.04 + 0.53 * 0.4)) < 1e-9);
+        const nb::PictureTrail halfOnce = once(0.9, 14.0, MotionCoding::HalfPixel), unknownOnce = once(0.9, 14.0, MotionCoding::Unknown);
+        QVERIFY(halfOnce.least_px == half.least_px && halfOnce.most_px == half.most_px && halfOnce.residual_px == half.residual_px);
+        const nb::PictureTrail unknown = trail(0.9, 14.0, MotionCoding::Unknown);
+        QVERIFY(unknownOnce.least_px == unknown.least_px && unknownOnce.most_px == unknown.most_px && unknownOnce.residual_px == unknown.residual_px);
+        QCOMPARE(once(0.6, 4.0, MotionCoding::Intra).most_px, 0.0);
         // At the top of the meter the memory says only "at least": a faint edge may trail far
         // more than the memory gives, up to what its edge allows.
         const nb::PictureTrail top = trail(nb::kMostMeasurableMemory, 4.0, MotionCoding::HalfPixel);
