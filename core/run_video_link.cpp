@@ -137,6 +137,7 @@ std::optional<RunVideoLink> readRunVideoLink(const QString& runPath, QString* pr
         link.marks.region = QRect(int((*r)[0]), int((*r)[1]), int((*r)[2]), int((*r)[3]));
     if (const auto n = fourNumbers(o.value(QStringLiteral("needle"))))
         link.marks.needle = QLineF((*n)[0], (*n)[1], (*n)[2], (*n)[3]);
+    link.codedOnce = o.value(QStringLiteral("coded_once")).toBool(false);
     return link;
 }
 
@@ -166,6 +167,8 @@ void writeRunVideoLink(const QString& runPath, const std::optional<RunVideoLink>
         const QLineF& n = link->marks.needle;
         if (!n.isNull())
             o.insert(QStringLiteral("needle"), QJsonArray{n.x1(), n.y1(), n.x2(), n.y2()});
+        if (link->codedOnce)
+            o.insert(QStringLiteral("coded_once"), true);
         runs.insert(run.fileName(), o);
     } else {
         runs.remove(run.fileName());

@@ -42,6 +42,9 @@ struct RunVideoLink {
     SyncMethod method = SyncMethod::None;
     std::optional<double> confidence;  // 0..1, from the automatic sync
     PictureMarks marks;
+    // The operator says the video is as its camera or console coded it (never converted): the
+    // coder's lag on a slow needle is then known more closely (PictureCoding::codedOnce).
+    bool codedOnce = false;
 };
 
 QString videoLinksPath(const QString& sessionDir);

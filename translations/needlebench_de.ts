@@ -2286,7 +2286,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+101"/>
+        <location filename="../widgets/review_workspace.cpp" line="+102"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation>Video wird indiziert: %1 von %2 Bildern</translation>
     </message>
@@ -2296,12 +2296,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Video wird indiziert: %1 Bilder</translation>
     </message>
     <message>
-        <location line="+723"/>
+        <location line="+738"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-694"/>
+        <location line="-709"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation>%1 (nicht zugeordnet: der Lauf behält sein bisheriges Video)</translation>
     </message>
@@ -2311,17 +2311,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>über eine beschädigte Strecke hinweg dekodiert: teils vom Decoder ergänzt</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+1136"/>
         <source>Low confidence: the video&apos;s coder shows this slow needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
         <translation>Geringe Konfidenz: Der Kodierer des Videos zeigt diese langsame Nadel verspätet, um %1 ms, auf ±%2 ms genau; den Versatz vor dem Übernehmen an einem Ereignis (Kontakt oder Durchstich) prüfen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again</source>
         <translation>Geringe Konfidenz: ist die Nadel schwach zu sehen oder liegt eingeblendeter Text auf ihrer Linie, die Linie mit Umschalt+Ziehen auf dem Video zeichnen (Schaft zur Spitze) und mit Ziehen einen Bereich um ihren Weg, dann erneut automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-1104"/>
         <source>Automatic sync failed: %1</source>
         <translation>Automatische Synchronisierung fehlgeschlagen: %1</translation>
     </message>
@@ -2377,12 +2377,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1094"/>
+        <location line="+1164"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1091"/>
+        <location line="-1161"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2408,12 +2408,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+610"/>
+        <location line="+631"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-610"/>
+        <location line="-631"/>
         <source>play / pause (Space)</source>
         <translation>Abspielen / Pause (Leertaste)</translation>
     </message>
@@ -2537,12 +2537,22 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+880"/>
+        <location line="+952"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-680"/>
+        <location line="-940"/>
+        <source>coded once</source>
+        <translation>einmal kodiert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>tick when the video is as its camera or console wrote it, never converted (as a lab converts a console&apos;s export to H.264): the coder&apos;s lag on a slow needle, and the offset with it, are then known more closely. Kept with the run&apos;s video.</source>
+        <translation>ankreuzen, wenn das Video so vorliegt, wie Kamera oder Konsole es schrieben, nie umgewandelt (wie ein Labor den Export einer Konsole in H.264 umwandelt): Die Verspätung des Kodierers bei einer langsamen Nadel und mit ihr der Versatz sind dann genauer bekannt. Wird mit dem Video des Laufs gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+200"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation>die Label-Datei konnte nicht beiseitegelegt werden: das nächste gespeicherte Label ersetzt sie</translation>
     </message>
@@ -2572,7 +2582,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>%1 geöffnet: %2 Messwerte, %3 Labels gelesen</translation>
     </message>
     <message>
-        <location line="+305"/>
+        <location line="+311"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation>Der Cursor (%1 s) liegt außerhalb der Aufzeichnung (%2 bis %3 s): Labels und Kraftmarken gehören auf die Aufzeichnung</translation>
     </message>
@@ -2602,7 +2612,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Sie werden in %1 aufbewahrt und neben dem Lauf gespeichert, sobald er wieder geöffnet wird und sein Ordner beschreibbar ist.</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+89"/>
+        <source>Low confidence: the video&apos;s coder shows this slow needle late, by %1 ms give or take %2 ms, as it may have been converted; if it is as the camera or console coded it, tick “coded once”, else check the offset on an event (contact or puncture) before accepting</source>
+        <translation>Geringe Konfidenz: Der Kodierer des Videos zeigt diese langsame Nadel verspätet, um %1 ms, auf ±%2 ms genau, da es umgewandelt sein kann; liegt es so vor, wie Kamera oder Konsole es kodierten, „einmal kodiert“ ankreuzen, sonst den Versatz vor dem Übernehmen an einem Ereignis (Kontakt oder Durchstich) prüfen</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Sync fitted again for a video coded once: confidence %1</source>
+        <translation>Synchronisation für ein einmal kodiertes Video neu angepasst: Konfidenz %1</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>Automatic sync stopped</source>
         <translation>Automatische Synchronisation abgebrochen</translation>
     </message>
@@ -2622,7 +2642,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Nadel verfolgen und ihre Verschiebung an die aufgezeichnete Position anpassen. Auf dem Video einen Bereich aufziehen: die Nadel wird nur darin gelesen (eingeblendete Uhren und Zähler außen lassen). Mit Umschalt vom Schaft zur Spitze ziehen, um die Nadellinie zu zeichnen, wo sie nicht gefunden wird.</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+69"/>
         <source>needle tracked (offset found)</source>
         <translation>verfolgte Nadel (gefundener Versatz)</translation>
     </message>
@@ -2632,7 +2652,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-999"/>
+        <location line="-1054"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2647,7 +2667,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Kein Lauf geöffnet: einen in der Sitzungsliste doppelt anklicken</translation>
     </message>
     <message numerus="yes">
-        <location line="+25"/>
+        <location line="+27"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>Labels: %n</numerusform>
@@ -2655,7 +2675,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation>Zuerst einen Lauf öffnen (Doppelklick in der Sitzungsliste), dann sein Video anhängen</translation>
@@ -2686,7 +2706,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Das Video dieses Laufs, %1, fehlt. Bitte dort neu öffnen, wo es jetzt liegt.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>Video and sync not kept: %1</source>
         <translation>Video und Synchronisation nicht gespeichert: %1</translation>
     </message>
@@ -2761,7 +2781,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+126"/>
         <source>correlating: frame %1 of %2…</source>
         <translation>korreliere: Bild %1 von %2…</translation>
     </message>
@@ -2781,7 +2801,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-967"/>
+        <location line="-1022"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2841,17 +2861,17 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Label-Satz für %1 gespeichert: %2 Labels</translation>
     </message>
     <message>
-        <location line="+163"/>
+        <location line="+165"/>
         <source>Indexing the video…</source>
         <translation>Video wird indiziert…</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Videos (%1);;All files (*)</source>
         <translation>Videos (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+156"/>
+        <location line="+158"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -2896,7 +2916,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Labels vorschlagen</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+68"/>
         <source>Open a run and a video first</source>
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>
@@ -2906,7 +2926,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>korreliere…</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+120"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation>%1 s gefunden (Konfidenz %2, r = %3)</translation>
     </message>
@@ -3261,7 +3281,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
         <location line="+295"/>
-        <location filename="../app/cmd_sync.cpp" line="+39"/>
+        <location filename="../app/cmd_sync.cpp" line="+42"/>
         <location filename="../app/cmd_video.cpp" line="+50"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -3303,7 +3323,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <location filename="../app/cmd_fit.cpp" line="-302"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
-        <location filename="../app/cmd_sync.cpp" line="+65"/>
+        <location filename="../app/cmd_sync.cpp" line="+66"/>
         <source>warning: %1
 </source>
         <translation>Warnung: %1
@@ -4096,7 +4116,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_sync.cpp" line="-74"/>
+        <location filename="../app/cmd_sync.cpp" line="-78"/>
         <source>the run file</source>
         <translation>die Laufdatei</translation>
     </message>
@@ -4785,6 +4805,11 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Linie der Nadel im Bild, in Pixeln (Standard: im Bild gefunden)</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>the video is as its camera or console coded it, never converted: its coder&apos;s lag is then known more closely</source>
+        <translation>das Video liegt so vor, wie Kamera oder Konsole es kodierten, nie umgewandelt: Die Verspätung seines Kodierers ist dann genauer bekannt</translation>
+    </message>
+    <message>
         <location line="+4"/>
         <source>also write the needle&apos;s tracked displacement per frame (time_s,displacement_px) to FILE</source>
         <translation>zusätzlich die verfolgte Verschiebung der Nadel je Bild (time_s,displacement_px) in DATEI schreiben</translation>
@@ -4804,7 +4829,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points
 
 </source>
@@ -4971,7 +4996,14 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
 </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>if nobody converted this video (it is as its camera or console coded it), --coded-once narrows that
+</source>
+        <translation>hat niemand dieses Video umgewandelt (liegt es so vor, wie Kamera oder Konsole es kodierten), engt --coded-once das ein
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>offsets were tried within ±%1 s (--max-offset): if the video started further from the recording than that, try a larger --max-offset
 </source>
         <translation>Versätze wurden innerhalb ±%1 s versucht (--max-offset): begann das Video weiter von der Aufzeichnung entfernt, ein größeres --max-offset versuchen
@@ -5010,7 +5042,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>die Videodatei</translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-149"/>
+        <location filename="../app/cmd_sync.cpp" line="-154"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation>Warnung: %1: %2</translation>
@@ -6608,7 +6640,7 @@ Exit-Status: 0 erledigt; 1 fehlgeschlagen (die Meldung sagt warum und nennt die 
         <translation>nicht synchronisiert</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+92"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation>nicht schreibbar (%1)</translation>

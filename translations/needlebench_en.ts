@@ -2280,7 +2280,7 @@ Stop the stage now (emergency stop) and quit?</source>
 <context>
     <name>nb::ReviewWorkspace</name>
     <message>
-        <location filename="../widgets/review_workspace.cpp" line="+101"/>
+        <location filename="../widgets/review_workspace.cpp" line="+102"/>
         <source>Indexing the video: %1 of %2 frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2290,12 +2290,12 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+723"/>
+        <location line="+738"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-694"/>
+        <location line="-709"/>
         <source>%1 (not attached: the run keeps the video it had)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2305,17 +2305,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+1136"/>
         <source>Low confidence: the video&apos;s coder shows this slow needle late, by %1 ms give or take %2 ms; check the offset on an event (contact or puncture) before accepting</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-1104"/>
         <source>Automatic sync failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2371,12 +2371,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1094"/>
+        <location line="+1164"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1091"/>
+        <location line="-1161"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2402,12 +2402,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+610"/>
+        <location line="+631"/>
         <source>Play</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-610"/>
+        <location line="-631"/>
         <source>play / pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2531,12 +2531,22 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+880"/>
+        <location line="+952"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-680"/>
+        <location line="-940"/>
+        <source>coded once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>tick when the video is as its camera or console wrote it, never converted (as a lab converts a console&apos;s export to H.264): the coder&apos;s lag on a slow needle, and the offset with it, are then known more closely. Kept with the run&apos;s video.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+200"/>
         <source>the labels file could not be copied aside: the next label saved replaces it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2566,7 +2576,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+305"/>
+        <location line="+311"/>
         <source>The cursor (%1 s) is outside the recording (%2 to %3 s): labels and force marks go on the recording</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2596,7 +2606,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+89"/>
+        <source>Low confidence: the video&apos;s coder shows this slow needle late, by %1 ms give or take %2 ms, as it may have been converted; if it is as the camera or console coded it, tick “coded once”, else check the offset on an event (contact or puncture) before accepting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Sync fitted again for a video coded once: confidence %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>Automatic sync stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2616,7 +2636,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+69"/>
         <source>needle tracked (offset found)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2626,7 +2646,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-999"/>
+        <location line="-1054"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2641,7 +2661,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+25"/>
+        <location line="+27"/>
         <source>labels: %n</source>
         <translation>
             <numerusform>labels: %n</numerusform>
@@ -2649,7 +2669,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <location line="+22"/>
         <source>Open a run first (double-click it in the session list), then attach its video</source>
         <translation type="unfinished"></translation>
@@ -2680,7 +2700,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>Video and sync not kept: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2753,7 +2773,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+126"/>
         <source>correlating: frame %1 of %2…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2773,7 +2793,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-967"/>
+        <location line="-1022"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2833,17 +2853,17 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+163"/>
+        <location line="+165"/>
         <source>Indexing the video…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Videos (%1);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+156"/>
+        <location line="+158"/>
         <source>Pause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2888,7 +2908,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+68"/>
         <source>Open a run and a video first</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2898,7 +2918,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+120"/>
         <source>found %1 s (confidence %2, r = %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3253,7 +3273,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <location filename="../app/cmd_plan.cpp" line="+78"/>
         <location line="+169"/>
         <location line="+295"/>
-        <location filename="../app/cmd_sync.cpp" line="+39"/>
+        <location filename="../app/cmd_sync.cpp" line="+42"/>
         <location filename="../app/cmd_video.cpp" line="+50"/>
         <location line="+36"/>
         <source>print JSON</source>
@@ -3293,7 +3313,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <location filename="../app/cmd_fit.cpp" line="-302"/>
         <location line="+20"/>
         <location filename="../app/cmd_labels.cpp" line="+118"/>
-        <location filename="../app/cmd_sync.cpp" line="+65"/>
+        <location filename="../app/cmd_sync.cpp" line="+66"/>
         <source>warning: %1
 </source>
         <translation type="unfinished"></translation>
@@ -4049,7 +4069,7 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cmd_sync.cpp" line="-74"/>
+        <location filename="../app/cmd_sync.cpp" line="-78"/>
         <source>the run file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4721,6 +4741,11 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>the video is as its camera or console coded it, never converted: its coder&apos;s lag is then known more closely</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+4"/>
         <source>also write the needle&apos;s tracked displacement per frame (time_s,displacement_px) to FILE</source>
         <translation type="unfinished"></translation>
@@ -4738,7 +4763,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>needlebench sync: --needle wants x1,y1,x2,y2 in pixels, two distinct points
 
 </source>
@@ -4883,7 +4908,13 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>if nobody converted this video (it is as its camera or console coded it), --coded-once narrows that
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>offsets were tried within ±%1 s (--max-offset): if the video started further from the recording than that, try a larger --max-offset
 </source>
         <translation type="unfinished"></translation>
@@ -4921,7 +4952,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cmd_sync.cpp" line="-149"/>
+        <location filename="../app/cmd_sync.cpp" line="-154"/>
         <location filename="../app/cmd_video.cpp" line="-24"/>
         <source>warning: %1: %2</source>
         <translation type="unfinished"></translation>
@@ -6495,7 +6526,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+92"/>
         <location line="+3"/>
         <source>cannot write (%1)</source>
         <translation type="unfinished"></translation>

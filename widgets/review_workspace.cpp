@@ -12,6 +12,7 @@
 #include "core/data_names.h"
 #include "core/label_suggest.h"
 #include "core/labels.h"
+#include "core/picture_lag.h"
 #include "core/run_file.h"
 #include "video/frame_reader.h"
 #include "video/video_sync.h"
@@ -166,17 +167,11 @@ ReviewWorkspace::ReviewWorkspace(QWidget* parent)
         }
         try {
             video::VideoSync vs = syncWatcher_.result();
+            if (jobOptions_.codedOnce != codedOnceBox_->isChecked())
+                vs = video::refitVideoSync(std::move(vs), *index_, run_, syncOptions());  // ticked or cleared meanwhile
             if (forOperator) {
                 pendingSync_ = vs.result;
-                // What the operator can do about it: a needle too faint to be found, or a clock
-                // on its line, is read where its line and a region around its path are drawn.
-                if (!vs.result.acceptable() && vs.result.lagLimitsPrecision())
-                    showStatus(tr("Low confidence: the video's coder shows this slow needle late, by %1 ms give or take %2 ms; "
-                                  "check the offset on an event (contact or puncture) before accepting")
-                                   .arg(localNumber(1000.0 * vs.result.pictureLag_s, 0), localNumber(1000.0 * vs.result.pictureLagUncertainty_s, 0)));
-                else if (!vs.result.acceptable() && video_->needleLine().isNull())
-                    showStatus(tr("Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the "
-                                  "video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again"));
+                sayWhatHelps(vs.result);
             }
             tracked_ = std::move(vs);
             trackedMarks_ = jobMarks_;
@@ -409,6 +404,21 @@ void ReviewWorkspace::buildUi()
             startAutoSync();
     });
     autoSyncButton_->setObjectName(QStringLiteral("autoSync"));
+    // Under Auto sync, in the height the result beside it takes anyway: the row has no width to spare.
+    syncFind->removeWidget(autoSyncButton_);
+    auto* autoSyncColumn = new QVBoxLayout;
+    autoSyncColumn->setSpacing(2);
+    autoSyncColumn->addWidget(autoSyncButton_);
+    codedOnceBox_ = new QCheckBox(tr("coded once"), this);
+    codedOnceBox_->setObjectName(QStringLiteral("codedOnce"));
+    codedOnceBox_->setFocusPolicy(Qt::NoFocus);
+    codedOnceBox_->setToolTip(tr("tick when the video is as its camera or console wrote it, never converted (as a lab converts "
+                                 "a console's export to H.264): the coder's lag on a slow needle, and the offset with it, are "
+                                 "then known more closely. Kept with the run's video."));
+    connect(codedOnceBox_, &QCheckBox::toggled, this, [this] { codedOnceChanged(); });
+    autoSyncColumn->addWidget(codedOnceBox_);
+    autoSyncColumn->addStretch();
+    syncFind->addLayout(autoSyncColumn);
     syncLabel_ = new QLabel(this);
     syncLabel_->setObjectName(QStringLiteral("syncResult"));
     // A long result wraps in the space there is instead of widening the window.
@@ -688,6 +698,8 @@ void ReviewWorkspace::openVideo(const QString& path)
         // Kept with the link when the new video is attached, not before (nothing to store yet).
         const QSignalBlocker quiet(video_);
         video_->setMarks({});
+        const QSignalBlocker alsoQuiet(codedOnceBox_);
+        codedOnceBox_->setChecked(false);  // said of another file
     }
     videoPath_ = path;
     index_.reset();
@@ -724,6 +736,8 @@ void ReviewWorkspace::clearVideo()
     {
         const QSignalBlocker quiet(video_);  // the marks went with the video they were drawn on
         video_->setMarks({});
+        const QSignalBlocker alsoQuiet(codedOnceBox_);
+        codedOnceBox_->setChecked(false);
     }
     // What the decoder still does for the video gone (indexing it, reading a frame of a file
     // since deleted) is no longer this run's: it said "cannot reopen the video" or "Indexing
@@ -812,6 +826,8 @@ void ReviewWorkspace::restoreVideoLink()
     if (!videoPath_.isEmpty()) {
         const QSignalBlocker quiet(video_);  // read from the store, nothing to store
         video_->setMarks(link ? link->marks : PictureMarks{});
+        const QSignalBlocker alsoQuiet(codedOnceBox_);
+        codedOnceBox_->setChecked(link && link->codedOnce);
     }
     if (!problem.isEmpty())
         showStatus(problem);
@@ -830,7 +846,7 @@ void ReviewWorkspace::storeVideoLink()
     if (runPath_.isEmpty() || attachPending_)
         return;
     try {
-        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_, video_->marks()};
+        RunVideoLink link{videoPath_, mapping_, syncMethod_, syncConfidence_, video_->marks(), codedOnceBox_->isChecked()};
         const bool empty = videoPath_.isEmpty() && mapping_ == TimelineMapping{} && syncMethod_ == SyncMethod::None;
         writeRunVideoLink(runPath_, empty ? std::nullopt : std::optional(link));
         emit videoLinkChanged();
@@ -1239,6 +1255,57 @@ void ReviewWorkspace::applySuggestion(const Labels& suggested, const QString& fr
     emit labelsSuggested();
 }
 
+video::VideoSyncOptions ReviewWorkspace::syncOptions() const
+{
+    video::VideoSyncOptions options;
+    const PictureMarks marks = video_->marks();
+    options.roi = marks.region;
+    if (!marks.needle.isNull())
+        options.axis = marks.needle;
+    options.codedOnce = codedOnceBox_->isChecked();
+    return options;
+}
+
+void ReviewWorkspace::sayWhatHelps(const SyncResult& r)
+{
+    if (r.acceptable())
+        return;
+    // What the operator can do about it: say the file was coded once where only that is in doubt,
+    // else check it on an event; and a needle too faint to be found, or a clock on its line, is
+    // read where its line and a region around its path are drawn.
+    const QString lag = localNumber(1000.0 * r.pictureLag_s, 0), give = localNumber(1000.0 * r.pictureLagUncertainty_s, 0);
+    if (r.lagLimitsPrecision() && !codedOnceBox_->isChecked() && r.pictureTrail.most_px > r.pictureTrail.least_px && index_
+        && motionCodingOf(index_->codec) == MotionCoding::QuarterPixel)
+        showStatus(tr("Low confidence: the video's coder shows this slow needle late, by %1 ms give or take %2 ms, as it may have "
+                      "been converted; if it is as the camera or console coded it, tick “coded once”, else check the offset on an "
+                      "event (contact or puncture) before accepting").arg(lag, give));
+    else if (r.lagLimitsPrecision())
+        showStatus(tr("Low confidence: the video's coder shows this slow needle late, by %1 ms give or take %2 ms; "
+                      "check the offset on an event (contact or puncture) before accepting").arg(lag, give));
+    else if (video_->needleLine().isNull())
+        showStatus(tr("Low confidence: if the needle is faint or burnt-in text lies on its line, draw the line on the "
+                      "video with Shift+drag (shaft to tip) and a region around its path with a drag, then Auto sync again"));
+}
+
+void ReviewWorkspace::codedOnceChanged()
+{
+    storeVideoLink();
+    // The needle's track does not change with what the operator says of the file, only its fit:
+    // the answer waiting for Accept (or the one Auto sync would take) is fitted again at once.
+    if (!tracked_ || !index_)
+        return;
+    tracked_ = video::refitVideoSync(std::move(*tracked_), *index_, run_, syncOptions());
+    if (!pendingSync_)
+        return;
+    pendingSync_ = tracked_->result;
+    updateSyncUi();
+    updateTrace();
+    if (pendingSync_->acceptable())
+        showStatus(tr("Sync fitted again for a video coded once: confidence %1").arg(localNumber(pendingSync_->confidence, 2)));
+    else
+        sayWhatHelps(*pendingSync_);
+}
+
 void ReviewWorkspace::startAutoSync()
 {
     if (!index_ || run_.size() == 0) {
@@ -1297,11 +1364,9 @@ void ReviewWorkspace::startSyncJob(bool forOperator)
     watchedGeneration_ = jobGeneration_;
     wantPending_ = forOperator;
     jobMarks_ = video_->marks();
+    jobOptions_ = syncOptions();
     const video::FrameIndex index = *index_;
-    video::VideoSyncOptions options;
-    options.roi = jobMarks_.region;
-    if (!jobMarks_.needle.isNull())
-        options.axis = jobMarks_.needle;
+    const video::VideoSyncOptions options = jobOptions_;
     const Run run = run_;
     const std::shared_ptr<std::atomic_bool> cancel = jobCancel_;
     // How far the tracking is, while the operator waits for it: a long video showed

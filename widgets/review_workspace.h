@@ -111,6 +111,8 @@ public:
     void acceptSync();
     QPushButton* acceptButton() const { return acceptButton_; }
     QCheckBox* acceptOverride() const { return overrideBox_; }
+    // "coded once": the operator says the video was never converted (RunVideoLink::codedOnce).
+    QCheckBox* codedOnceBox() const { return codedOnceBox_; }
     void rejectSync();
     // Correlation against offset of the pending automatic sync, the offset found marked;
     // visible from the end of Auto sync until Accept/Reject.
@@ -227,12 +229,17 @@ private:
     bool operatorStopped_ = false;  // the operator stopped Auto sync: no tracking in the background
     void updateAutoSyncButton();
     QCheckBox* overrideBox_ = nullptr;
+    QCheckBox* codedOnceBox_ = nullptr;
+    video::VideoSyncOptions syncOptions() const;  // for the marks drawn and what is said of the file
+    void codedOnceChanged();
+    void sayWhatHelps(const SyncResult& r);  // in the status line, for a result below the threshold
     QPushButton* rejectButton_ = nullptr;
     QLabel* status_ = nullptr;
     QLabel* keysHelp_ = nullptr;
     QFutureWatcher<video::VideoSync> syncWatcher_;
     std::shared_ptr<std::atomic_bool> jobCancel_;
     PictureMarks jobMarks_;  // what the operator had drawn on the video when the job began
+    video::VideoSyncOptions jobOptions_;  // and what it was told
     int jobGeneration_ = 0, watchedGeneration_ = -1;
     bool wantPending_ = false;
     std::optional<video::VideoSync> tracked_;  // the last job's answer for this run and video

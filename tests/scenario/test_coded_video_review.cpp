@@ -20,6 +20,7 @@
 #include "widgets/video_view.h"
 
 #include <QAbstractButton>
+#include <QCheckBox>
 #include <QApplication>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -45,11 +46,19 @@ namespace {
 constexpr double kFps = 30000.0 / 1001.0, kOffset_s = 1.4, kPxPerMm = 3.6;
 constexpr int kWidth = 320, kHeight = 240;
 
+// How the needle looks and how the file was coded.
+struct Look {
+    double contrast_grey = 33.0;
+    double noise_grey = 6.8;
+    QStringList coder{"-c:v", "mpeg4", "-q:v", "5"};
+};
+
 // The picture of a needle seen through a CT-fluoro console: fixed grain of 4 px (25 grey levels)
-// around grey 110, a thin shaft 33 grey levels over it at 30° ending softly at the tip, and
-// fresh noise of 6.8 in every picture. The tip follows the run's position, the video starting
-// kOffset_s before the recording. Encoded by the ffmpeg tool as MPEG-4 part 2 at -q:v 5.
-QString writeCodedVideo(const nb::Run& run, const QString& path)
+// around grey 110, a thin shaft (by default faint: 33 grey levels over it) at 30° ending softly
+// at the tip, and fresh noise (6.8) in every picture. The tip follows the run's position, the
+// video starting kOffset_s before the recording. Encoded by the ffmpeg tool (by default as
+// MPEG-4 part 2 at -q:v 5).
+QString writeCodedVideo(const nb::Run& run, const QString& path, const Look& look = {})
 {
     cv::RNG rng(91);
     cv::Mat squares(kHeight / 4 + 1, kWidth / 4 + 1, CV_32F), grain;
@@ -62,12 +71,12 @@ QString writeCodedVideo(const nb::Run& run, const QString& path)
         for (int x = 0; x < kWidth; ++x) {
             const double dx = x - kWidth / 2.0, dy = y - kHeight / 2.0, across = -dx * uy + dy * ux;
             along.at<float>(y, x) = float(dx * ux + dy * uy);
-            shaft.at<float>(y, x) = float(33.0 * std::exp(-0.5 * across * across / (1.5 * 1.5)));
+            shaft.at<float>(y, x) = float(look.contrast_grey * std::exp(-0.5 * across * across / (1.5 * 1.5)));
         }
     QProcess ffmpeg;
-    ffmpeg.start(QStringLiteral("ffmpeg"), {"-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "gray", "-s",
-                                            QStringLiteral("%1x%2").arg(kWidth).arg(kHeight), "-r", "30000/1001", "-i", "-",
-                                            "-c:v", "mpeg4", "-q:v", "5", path});
+    ffmpeg.start(QStringLiteral("ffmpeg"), QStringList{"-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "gray", "-s",
+                                                       QStringLiteral("%1x%2").arg(kWidth).arg(kHeight), "-r", "30000/1001", "-i", "-"}
+                                               + look.coder + QStringList{path});
     if (!ffmpeg.waitForStarted())
         return QStringLiteral("the ffmpeg tool does not start (scripts/install-deps.sh installs it)");
     const int frames = int((kOffset_s + run.time_s.back() + 1.0) * kFps);
@@ -79,7 +88,7 @@ QString writeCodedVideo(const nb::Run& run, const QString& path)
         const double tip = -40.0 + run.position_mm[i] * kPxPerMm;
         cv::Mat ending = tip - along;  // > 0 behind the tip
         ending.forEach<float>([](float& v, const int*) { v = 1.0f / (1.0f + std::exp(-std::clamp(v, -50.0f, 50.0f))); });
-        rng.fill(noise, cv::RNG::NORMAL, 0.0, 6.8);
+        rng.fill(noise, cv::RNG::NORMAL, 0.0, look.noise_grey);
         picture = grain + shaft.mul(ending) + noise;
         picture.convertTo(out, CV_8U);  // saturates at 0 and 255
         if (k == 0)
@@ -280,6 +289,112 @@ private slots:
             QCOMPARE(w.reviewWorkspace()->videoView()->needleLine(), marks.second);
             QTest::qWait(300);
             screenshot(QStringLiteral("review_marks_after_restart_%1.png").arg(language));
+        }
+    }
+
+    // A bold needle on a quiet camera, its video coded once by H.264 (as a console or camera that
+    // writes H.264 does), opened in Review while the stage moves. Its slow tip is shown a little
+    // late, by a trail the sync knows only within the range from H.264's own to that of an MPEG-4
+    // coder that might have come first (a converted file): Auto sync gives a low confidence and
+    // says what would help. The operator ticks "coded once" under Auto sync: the answer is fitted
+    // again at once, to the frame and acceptable, and is accepted; the tick is kept with the
+    // run's video after a restart, and unticking it is kept too.
+    void codedOnceTickedWhileTheStageMoves_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("de") << QStringLiteral("de");
+    }
+    void codedOnceTickedWhileTheStageMoves()
+    {
+        QFETCH(QString, language);
+        nb::setPreferredLanguage(language);
+        nb::installTranslation(*QCoreApplication::instance());
+        const QString sessionDir = session_ + QStringLiteral("_once_") + language;
+        QVERIFY(QDir().mkpath(sessionDir));
+        const QString sine = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
+        QFile::remove(sine);
+        QVERIFY(QFile::copy(sine_, sine));
+        const QString video = QDir(sessionDir).filePath(QStringLiteral("run_001_imaging.mp4"));
+        const QString problem = writeCodedVideo(nb::readRunFile(sine).run, video,
+                                                Look{60.0, 3.0, {"-c:v", "libx264", "-preset", "medium", "-crf", "23", "-bf", "2",
+                                                                 "-pix_fmt", "yuv420p"}});
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        nb::TimelineMapping accepted;
+        {
+            std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
+            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true, &rig));
+            w.resize(1366, 768);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            startSlowInsertion(w);
+            if (QTest::currentTestFailed())
+                return;
+            nb::ControlPanel* p = w.controlPanel();
+            w.reviewRun(sine);
+            nb::ReviewWorkspace* review = w.reviewWorkspace();
+            QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
+            QVERIFY(review->attachVideo(video));
+            QVERIFY(opened.count() > 0 || opened.wait(60000));
+            QCheckBox* once = review->codedOnceBox();
+            QVERIFY(once && once->isVisible() && once->isEnabled() && !once->isChecked());
+            QSignalSpy synced(review, &nb::ReviewWorkspace::syncFinished);
+            QVERIFY(p->interlockState().moving);
+            review->startAutoSync();
+            QVERIFY(synced.wait(120000));
+            QVERIFY(review->pendingSync());
+            const nb::SyncResult doubted = *review->pendingSync();
+            qInfo("%s: not said: %+.2f frames off, confidence %.2f, lag %.2f ± %.2f frames", qPrintable(language),
+                  (doubted.offset_s - kOffset_s) * kFps, doubted.confidence, doubted.pictureLag_s * kFps, doubted.pictureLagUncertainty_s * kFps);
+            QVERIFY2(!doubted.acceptable() && doubted.lagLimitsPrecision(), qPrintable(QString::number(doubted.confidence)));
+            QVERIFY(!review->acceptButton()->isEnabled());
+            const QString tick = QCoreApplication::translate("nb::ReviewWorkspace", "coded once");
+            QVERIFY2(review->status().contains(tick), qPrintable(review->status()));
+            QCOMPARE(once->text(), tick);
+            QTest::qWait(300);
+            screenshot(QStringLiteral("review_coded_once_doubted_%1.png").arg(language));
+
+            // Ticked with the mouse, as the stage still moves: fitted again at once, no tracking.
+            QVERIFY(p->interlockState().moving);
+            QTest::mouseClick(once, Qt::LeftButton, Qt::NoModifier, QPoint(8, once->height() / 2));
+            QVERIFY(once->isChecked());
+            QVERIFY(!review->isTracking());
+            QVERIFY(review->pendingSync());
+            const nb::SyncResult sure = *review->pendingSync();
+            qInfo("%s: coded once: %+.2f frames off, confidence %.2f, lag %.2f ± %.2f frames", qPrintable(language),
+                  (sure.offset_s - kOffset_s) * kFps, sure.confidence, sure.pictureLag_s * kFps, sure.pictureLagUncertainty_s * kFps);
+            QVERIFY2(std::abs(sure.offset_s - kOffset_s) < 1.0 / kFps, qPrintable(QString::number((sure.offset_s - kOffset_s) * kFps)));
+            QVERIFY2(sure.acceptable(), qPrintable(QString::number(sure.confidence)));
+            QVERIFY(sure.pictureLagUncertainty_s < doubted.pictureLagUncertainty_s);
+            QVERIFY(review->acceptButton()->isEnabled());
+            QTest::qWait(300);
+            screenshot(QStringLiteral("review_coded_once_ticked_%1.png").arg(language));
+            review->acceptButton()->click();
+            accepted = review->mapping();
+            QCOMPARE(accepted.offset_s, sure.offset_s);
+            expectEndedWhole(w);
+        }
+        // Restarted: the tick is there with the video and the sync accepted.
+        {
+            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
+            w.resize(1366, 768);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QSignalSpy opened(w.reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
+            w.reviewRun(sine);
+            QVERIFY(opened.count() > 0 || opened.wait(60000));
+            QCOMPARE(w.reviewWorkspace()->mapping(), accepted);
+            QVERIFY(w.reviewWorkspace()->codedOnceBox()->isChecked());
+            // Said wrongly, it is unticked, and that is kept too.
+            w.reviewWorkspace()->codedOnceBox()->click();
+            QVERIFY(!w.reviewWorkspace()->codedOnceBox()->isChecked());
+        }
+        {
+            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
+            QSignalSpy opened(w.reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
+            w.reviewRun(sine);
+            QVERIFY(opened.count() > 0 || opened.wait(60000));
+            QVERIFY(!w.reviewWorkspace()->codedOnceBox()->isChecked());
         }
     }
 

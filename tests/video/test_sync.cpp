@@ -5,6 +5,8 @@
 #include "core/run_file.h"
 #include "core/sync.h"
 #include "needle_video.h"
+#include "video/frame_index.h"
+#include "video/video_sync.h"
 #include "support/needlebench_cli.h"
 #include "support/case_share.h"
 
@@ -644,6 +646,31 @@ private slots:
         const QJsonArray trail = r["picture_trail_px"].toArray();
         QCOMPARE(trail.size(), 2);
         QVERIFY(trail[0].toDouble() >= 0.0 && trail[0].toDouble() <= trail[1].toDouble());
+        QVERIFY(!r["coded_once"].toBool());
+        // Said to be coded once (it was: rendered, then coded by x264 alone), its trail is its own
+        // coder's: no range, and the lag known at least as closely.
+        const QJsonObject once = runJson({"sync", run, coded, "--json", "--coded-once"}, &code);
+        QCOMPARE(code, 0);
+        const QJsonArray onceTrail = once["picture_trail_px"].toArray();
+        qInfo("said to be coded once: %.2f frames off, confidence %.2f, trail %.3f px (not said: %.3f to %.3f)",
+              (once["offset_s"].toDouble() - 1.617) * 29.97, once["confidence"].toDouble(), onceTrail[0].toDouble(),
+              trail[0].toDouble(), trail[1].toDouble());
+        QVERIFY(once["coded_once"].toBool());
+        QCOMPARE(onceTrail[0].toDouble(), onceTrail[1].toDouble());
+        QVERIFY(once["picture_lag_uncertainty_s"].toDouble() <= r["picture_lag_uncertainty_s"].toDouble());
+        QVERIFY2(std::abs((once["offset_s"].toDouble() - 1.617) * 29.97) < 1.0, qPrintable(QString::number(once["offset_s"].toDouble())));
+        // What the window does when the box is ticked after a sync: the sync's track fitted again,
+        // not tracked again, gives what a sync told from the start gives.
+        const nb::Run held = nb::readRunFile(run).run;
+        const nb::video::FrameIndex index = nb::video::buildFrameIndex(coded);
+        nb::video::VideoSyncOptions told;
+        told.codedOnce = true;
+        const nb::video::VideoSync fromTheStart = nb::video::syncVideoToRun(index, held, told);
+        const nb::video::VideoSync refitted = nb::video::refitVideoSync(nb::video::syncVideoToRun(index, held), index, held, told);
+        QCOMPARE(refitted.result.offset_s, fromTheStart.result.offset_s);
+        QCOMPARE(refitted.result.confidence, fromTheStart.result.confidence);
+        QCOMPARE(refitted.result.pictureLagUncertainty_s, fromTheStart.result.pictureLagUncertainty_s);
+        QCOMPARE(refitted.track.axis, fromTheStart.track.axis);
     }
 
     // Suggested phases against the simulator's truth: the suggested c (dynamic friction)
