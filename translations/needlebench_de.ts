@@ -2377,12 +2377,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1164"/>
+        <location line="+1169"/>
         <source>needle tracked in the video</source>
         <translation>im Video verfolgte Nadel</translation>
     </message>
     <message>
-        <location line="-1161"/>
+        <location line="-1166"/>
         <source>position [mm]</source>
         <translation>Position [mm]</translation>
     </message>
@@ -2537,12 +2537,12 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+952"/>
+        <location line="+957"/>
         <source>Auto sync</source>
         <translation>Automatisch synchronisieren</translation>
     </message>
     <message>
-        <location line="-940"/>
+        <location line="-945"/>
         <source>coded once</source>
         <translation>einmal kodiert</translation>
     </message>
@@ -2617,12 +2617,22 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Geringe Konfidenz: Der Kodierer des Videos zeigt diese langsame Nadel verspätet, um %1 ms, auf ±%2 ms genau, da es umgewandelt sein kann; liegt es so vor, wie Kamera oder Konsole es kodierten, „einmal kodiert“ ankreuzen, sonst den Versatz vor dem Übernehmen an einem Ereignis (Kontakt oder Durchstich) prüfen</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+21"/>
+        <source>Kept with the video: Auto sync now fits the offset for it at once</source>
+        <translation>Beim Video gespeichert: Automatisch synchronisieren passt den Versatz nun sofort dafür an</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Sync fitted again for a video coded once: confidence %1</source>
         <translation>Synchronisation für ein einmal kodiertes Video neu angepasst: Konfidenz %1</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+2"/>
+        <source>Sync fitted again for a video that may have been converted: confidence %1</source>
+        <translation>Synchronisation für ein möglicherweise umgewandeltes Video neu angepasst: Konfidenz %1</translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>Automatic sync stopped</source>
         <translation>Automatische Synchronisation abgebrochen</translation>
     </message>
@@ -2652,7 +2662,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>gefundene Synchronisation übernehmen</translation>
     </message>
     <message>
-        <location line="-1054"/>
+        <location line="-1059"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation>r: Korrelation der verfolgten Nadelverschiebung mit der aufgezeichneten Position beim gefundenen Versatz; die Konfidenz berücksichtigt auch, wie eindeutig das Maximum ist, ob beide Hälften des Videos übereinstimmen, und die Bewegungsanfänge</translation>
     </message>
@@ -2781,7 +2791,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         </translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+131"/>
         <source>correlating: frame %1 of %2…</source>
         <translation>korreliere: Bild %1 von %2…</translation>
     </message>
@@ -2801,7 +2811,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>GERINGE KONFIDENZ: %1; vor dem Annehmen an einem Ereignis prüfen</translation>
     </message>
     <message>
-        <location line="-1022"/>
+        <location line="-1027"/>
         <source>Accept</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2916,7 +2926,7 @@ Achse jetzt anhalten (Not-Halt) und beenden?</translation>
         <translation>Labels vorschlagen</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+73"/>
         <source>Open a run and a video first</source>
         <translation>Zuerst einen Lauf und ein Video öffnen</translation>
     </message>

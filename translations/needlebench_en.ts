@@ -2371,12 +2371,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1164"/>
+        <location line="+1169"/>
         <source>needle tracked in the video</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1161"/>
+        <location line="-1166"/>
         <source>position [mm]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2531,12 +2531,12 @@ Stop the stage now (emergency stop) and quit?</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+952"/>
+        <location line="+957"/>
         <source>Auto sync</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-940"/>
+        <location line="-945"/>
         <source>coded once</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2611,12 +2611,22 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+21"/>
+        <source>Kept with the video: Auto sync now fits the offset for it at once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Sync fitted again for a video coded once: confidence %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+2"/>
+        <source>Sync fitted again for a video that may have been converted: confidence %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>Automatic sync stopped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2646,7 +2656,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1054"/>
+        <location line="-1059"/>
         <source>r: correlation of the needle&apos;s tracked displacement with the recorded position at the offset found; confidence also weighs how unique the peak is, whether both halves of the video agree and the motion onsets</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2773,7 +2783,7 @@ Stop the stage now (emergency stop) and quit?</source>
         </translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+131"/>
         <source>correlating: frame %1 of %2…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2793,7 +2803,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-1022"/>
+        <location line="-1027"/>
         <source>Accept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2908,7 +2918,7 @@ Stop the stage now (emergency stop) and quit?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+73"/>
         <source>Open a run and a video first</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1295,15 +1295,20 @@ void ReviewWorkspace::codedOnceChanged()
     if (!tracked_ || !index_)
         return;
     tracked_ = video::refitVideoSync(std::move(*tracked_), *index_, run_, syncOptions());
-    if (!pendingSync_)
+    if (!pendingSync_) {
+        // The offset in use stays what the operator accepted or set.
+        showStatus(tr("Kept with the video: Auto sync now fits the offset for it at once"));
         return;
+    }
     pendingSync_ = tracked_->result;
     updateSyncUi();
     updateTrace();
-    if (pendingSync_->acceptable())
+    if (!pendingSync_->acceptable())
+        sayWhatHelps(*pendingSync_);
+    else if (codedOnceBox_->isChecked())
         showStatus(tr("Sync fitted again for a video coded once: confidence %1").arg(localNumber(pendingSync_->confidence, 2)));
     else
-        sayWhatHelps(*pendingSync_);
+        showStatus(tr("Sync fitted again for a video that may have been converted: confidence %1").arg(localNumber(pendingSync_->confidence, 2)));
 }
 
 void ReviewWorkspace::startAutoSync()

@@ -11,6 +11,7 @@
 #include "support/simulated_window.h"
 #include "translation.h"
 
+#include "core/local_number.h"
 #include "core/run_file.h"
 #include "core/sync.h"
 #include "video/frame_index.h"
@@ -366,6 +367,8 @@ private slots:
             QVERIFY2(std::abs(sure.offset_s - kOffset_s) < 1.0 / kFps, qPrintable(QString::number((sure.offset_s - kOffset_s) * kFps)));
             QVERIFY2(sure.acceptable(), qPrintable(QString::number(sure.confidence)));
             QVERIFY(sure.pictureLagUncertainty_s < doubted.pictureLagUncertainty_s);
+            QCOMPARE(review->status(), QCoreApplication::translate("nb::ReviewWorkspace", "Sync fitted again for a video coded once: confidence %1")
+                                           .arg(nb::localNumber(sure.confidence, 2)));
             QVERIFY(review->acceptButton()->isEnabled());
             QTest::qWait(300);
             screenshot(QStringLiteral("review_coded_once_ticked_%1.png").arg(language));
