@@ -484,6 +484,11 @@ private slots:
             QVERIFY2(sync.exitCode() == 0 && said.contains(QStringLiteral("LOW CONFIDENCE"))
                          && said.contains(QStringLiteral("the video's coder shows this slow needle late")),
                      qPrintable(said + QString::fromUtf8(sync.readAllStandardError())));
+            // An H.264 file may be a conversion (this one is): the operator who knows it is not is
+            // told how to say so; an MPEG-4 file has nothing to say.
+            QVERIFY2(said.contains(QStringLiteral("--coded-once")) == file.endsWith(QLatin1String(".mp4")), qPrintable(said));
+            QVERIFY2(review->status().contains(QStringLiteral("coded once")) == file.endsWith(QLatin1String(".mp4")),
+                     qPrintable(review->status()));
         }
 
         // Where the keyframes are known (H.264), a frame decoded across the damage says over the
