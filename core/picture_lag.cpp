@@ -39,33 +39,25 @@ PictureTrail pictureTrail(const PictureCoding& c)
     if (c.motion == MotionCoding::Intra || !(c.noise_grey > 0.0) || !(c.memory >= 0.0))
         return {};
     constexpr double kInf = std::numeric_limits<double>::infinity();
-    // With no edge measured, the most a faint edge may trail: coded once, 1.5 px; coded twice
-    // (1.60 px in the probes), 2.
-    constexpr double kMostTrailOnce_px = 1.5, kMostTrailTwice_px = 2.0;
+    // With no edge measured, the most a faint edge trailed in the probes (1.08 px, coded twice).
+    constexpr double kMostTrail_px = 1.5;
     const bool atTop = c.memory >= kMostMeasurableMemory;
     const double faint_px = 0.04 + 0.53 * std::min(c.memory, kMostMeasurableMemory);
-    // At the meter's top the memory says only "at least": no bound from the faint edge.
-    const double faintBound_px = atTop ? kInf : faint_px;
     const bool edgeKnown = c.edgeSlope_grey_per_px > 0.0 && std::isfinite(c.edgeSlope_grey_per_px);
     // Half the quantiser's threshold over the edge's slope: 3.5 grey for a coder moving by half
     // pixels, 0.75 for one moving by quarters.
     const double halfPixel_px = edgeKnown ? 3.5 / c.edgeSlope_grey_per_px : kInf;
     const double quarterPixel_px = edgeKnown ? 0.75 / c.edgeSlope_grey_per_px : kInf;
+    // A video whose coder moves by quarter pixels (or is not known) may have been coded by one
+    // moving by halves first, unless the operator says it was coded once.
     const bool byHalves = c.motion == MotionCoding::HalfPixel;
     const bool once = byHalves || (c.codedOnce && c.motion == MotionCoding::QuarterPixel);
     const double own_px = byHalves ? halfPixel_px : quarterPixel_px;
     PictureTrail t;
-    // A video whose coder moves by quarter pixels (or is not known) may have been coded by one
-    // moving by halves first, unless the operator says it was coded once. The second coder then
-    // codes pictures that already show the tip late, and shows them late again: the two trails
-    // add up (80 twice-coded strokes of the probes: the larger of the two alone left 14 beyond
-    // the uncertainty it gave, both together 4).
-    t.most_px = once ? std::min({faintBound_px, own_px, kMostTrailOnce_px})
-                     : std::min(std::min(faintBound_px, halfPixel_px) + std::min(faintBound_px, own_px), kMostTrailTwice_px);
+    t.most_px = std::min({atTop ? kInf : faint_px, once ? own_px : halfPixel_px, kMostTrail_px});
     t.least_px = std::min({faint_px, own_px, t.most_px});
-    // What the model left unexplained in the probes' strokes: coded once, 0.07 px root mean
-    // square (at most 0.15 in 38 strokes of earlier seeds, 0.13 in 10 fresh ones); coded twice,
-    // the two trails added, 0.15 left 76 of 80 strokes within the range it gave.
+    // What the model left unexplained in the probes' strokes: coded once by halves, 0.06 px (root
+    // mean square; at most 0.16); coded twice, 0.15 (0.29 below the meter's top).
     t.residual_px = once ? 0.10 : 0.15;
     return t;
 }

@@ -13,9 +13,8 @@
 //    threshold: about half that threshold over the edge's slope. MPEG-4 part 2 (half-pixel
 //    motion) trailed 3.5 grey / slope (0.15 to 0.41 px at slopes 21 to 5, ±0.16 px); H.264
 //    (quarter-pixel motion, x264's psychovisual tuning) 0.00 to 0.16 px at slopes 6 to 20;
-//  - the smaller of the two; and when the video was coded twice (a console's MPEG-4 made H.264
-//    by the lab), which no container tells, the first coder's trail and the second's added: the
-//    second codes pictures that already show the tip late.
+//  - the smaller of the two; and the first coder's, when the video was coded twice (a console's
+//    MPEG-4 made H.264 by the lab trailed as MPEG-4 does), which no container tells.
 
 #include <QString>
 
@@ -53,9 +52,9 @@ struct PictureCoding {
 inline constexpr double kMostMeasurableMemory = 0.95;
 
 // How far behind the tip the pictures show it, in pixels along the needle: between `least_px`
-// and `most_px` for what is known of the coding (a video that may have been coded twice may
-// trail by both coders' trails), give or take `residual_px`, the most the model left
-// unexplained in the probes' strokes.
+// and `most_px` for what is known of the coding (the second coder of a video coded twice shows
+// the first one's trail), give or take `residual_px`, what the model left unexplained in the
+// probes' strokes (less for a video known to be coded once than for one that may be coded twice).
 struct PictureTrail {
     double least_px = 0.0;
     double most_px = 0.0;
