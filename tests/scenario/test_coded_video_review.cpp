@@ -134,6 +134,25 @@ void expectEndedWhole(nb::MainWindow& w)
     QVERIFY2(widest < 1.5e-3, qPrintable(QStringLiteral("a gap of %1 s in %2").arg(widest).arg(w.lastRunPath())));
 }
 
+// The rows of a test run in each language.
+void languageRows()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("en") << QStringLiteral("en");
+    QTest::newRow("de") << QStringLiteral("de");
+}
+
+// The window in `language`, and a session folder of its own holding a copy of the sine run;
+// returns the copy's path (empty when it could not be made).
+QString sessionWithSine(const QString& sessionDir, const QString& sine, const QString& language)
+{
+    nb::setPreferredLanguage(language);
+    nb::installTranslation(*QCoreApplication::instance());
+    const QString copy = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
+    QFile::remove(copy);
+    return QDir().mkpath(sessionDir) && QFile::copy(sine, copy) ? copy : QString();
+}
+
 }  // namespace
 
 
@@ -162,23 +181,14 @@ private slots:
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 
-    void syncWhileTheStageMoves_data()
-    {
-        QTest::addColumn<QString>("language");
-        QTest::newRow("en") << QStringLiteral("en");
-        QTest::newRow("de") << QStringLiteral("de");
-    }
+    void syncWhileTheStageMoves_data() { languageRows(); }
 
     void syncWhileTheStageMoves()
     {
         QFETCH(QString, language);
-        nb::setPreferredLanguage(language);
-        nb::installTranslation(*QCoreApplication::instance());
         const QString sessionDir = session_ + QLatin1Char('_') + language;
-        QVERIFY(QDir().mkpath(sessionDir));
-        QFile::remove(QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv")));
-        QVERIFY(QFile::copy(sine_, QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"))));
-        const QString sine = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
+        const QString sine = sessionWithSine(sessionDir, sine_, language);
+        QVERIFY(!sine.isEmpty());
         nb::TimelineMapping accepted;
         std::pair<QRect, QLineF> marks;
         {
@@ -300,22 +310,13 @@ private slots:
     // says what would help. The operator ticks "coded once" under Auto sync: the answer is fitted
     // again at once, to the frame and acceptable, and is accepted; the tick is kept with the
     // run's video after a restart, and unticking it is kept too.
-    void codedOnceTickedWhileTheStageMoves_data()
-    {
-        QTest::addColumn<QString>("language");
-        QTest::newRow("en") << QStringLiteral("en");
-        QTest::newRow("de") << QStringLiteral("de");
-    }
+    void codedOnceTickedWhileTheStageMoves_data() { languageRows(); }
     void codedOnceTickedWhileTheStageMoves()
     {
         QFETCH(QString, language);
-        nb::setPreferredLanguage(language);
-        nb::installTranslation(*QCoreApplication::instance());
         const QString sessionDir = session_ + QStringLiteral("_once_") + language;
-        QVERIFY(QDir().mkpath(sessionDir));
-        const QString sine = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
-        QFile::remove(sine);
-        QVERIFY(QFile::copy(sine_, sine));
+        const QString sine = sessionWithSine(sessionDir, sine_, language);
+        QVERIFY(!sine.isEmpty());
         const QString video = QDir(sessionDir).filePath(QStringLiteral("run_001_imaging.mp4"));
         const QString problem = writeCodedVideo(nb::readRunFile(sine).run, video,
                                                 Look{60.0, 3.0, {"-c:v", "libx264", "-preset", "medium", "-crf", "23", "-bf", "2",
@@ -420,13 +421,9 @@ private slots:
     {
         QFETCH(QString, file);
         QFETCH(QStringList, recode);
-        nb::setPreferredLanguage(QStringLiteral("en"));
-        nb::installTranslation(*QCoreApplication::instance());
         const QString sessionDir = session_ + QStringLiteral("_damaged_") + QFileInfo(file).suffix();
-        QVERIFY(QDir().mkpath(sessionDir));
-        const QString sine = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
-        QFile::remove(sine);
-        QVERIFY(QFile::copy(sine_, sine));
+        const QString sine = sessionWithSine(sessionDir, sine_, QStringLiteral("en"));
+        QVERIFY(!sine.isEmpty());
         QString whole = video_;
         if (!recode.isEmpty()) {
             whole = QDir(sessionDir).filePath(QStringLiteral("whole.") + QFileInfo(file).suffix());
