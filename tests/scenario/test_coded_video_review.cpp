@@ -38,6 +38,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 
 using nb::Control;
@@ -151,6 +152,22 @@ QString sessionWithSine(const QString& sessionDir, const QString& sine, const QS
     const QString copy = QDir(sessionDir).filePath(QStringLiteral("run_001_sine.csv"));
     QFile::remove(copy);
     return QDir().mkpath(sessionDir) && QFile::copy(sine, copy) ? copy : QString();
+}
+
+// The window started again on the session, at the laptop's size, with `run` opened in Review
+// and its video open; null when it did not come up.
+std::unique_ptr<nb::MainWindow> reopened(const QString& sessionDir, const QString& run)
+{
+    auto w = std::make_unique<nb::MainWindow>(nbtest::simulatedWindow(sessionDir, true));
+    w->resize(1366, 768);
+    w->show();
+    if (!QTest::qWaitForWindowExposed(w.get()))
+        return nullptr;
+    QSignalSpy opened(w->reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
+    w->reviewRun(run);
+    if (opened.count() == 0 && !opened.wait(60000))
+        return nullptr;
+    return w;
 }
 
 }  // namespace
@@ -285,13 +302,9 @@ private slots:
         }
         // Restarted: the run's video and the sync accepted are kept.
         {
-            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
-            w.resize(1366, 768);
-            w.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&w));
-            QSignalSpy opened(w.reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
-            w.reviewRun(sine);
-            QVERIFY(opened.count() > 0 || opened.wait(60000));
+            const auto restarted = reopened(sessionDir, sine);
+            QVERIFY(restarted);
+            nb::MainWindow& w = *restarted;
             QCOMPARE(QFileInfo(w.reviewWorkspace()->videoPath()).canonicalFilePath(), QFileInfo(video_).canonicalFilePath());
             QCOMPARE(w.reviewWorkspace()->mapping(), accepted);
             QCOMPARE(w.reviewWorkspace()->syncMethod(), nb::SyncMethod::Automatic);
@@ -380,13 +393,9 @@ private slots:
         }
         // Restarted: the tick is there with the video and the sync accepted.
         {
-            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
-            w.resize(1366, 768);
-            w.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&w));
-            QSignalSpy opened(w.reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
-            w.reviewRun(sine);
-            QVERIFY(opened.count() > 0 || opened.wait(60000));
+            const auto restarted = reopened(sessionDir, sine);
+            QVERIFY(restarted);
+            nb::MainWindow& w = *restarted;
             QCOMPARE(w.reviewWorkspace()->mapping(), accepted);
             QVERIFY(w.reviewWorkspace()->codedOnceBox()->isChecked());
             // Said wrongly, it is unticked, and that is kept too.
@@ -394,11 +403,9 @@ private slots:
             QVERIFY(!w.reviewWorkspace()->codedOnceBox()->isChecked());
         }
         {
-            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true));
-            QSignalSpy opened(w.reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
-            w.reviewRun(sine);
-            QVERIFY(opened.count() > 0 || opened.wait(60000));
-            QVERIFY(!w.reviewWorkspace()->codedOnceBox()->isChecked());
+            const auto restarted = reopened(sessionDir, sine);
+            QVERIFY(restarted);
+            QVERIFY(!restarted->reviewWorkspace()->codedOnceBox()->isChecked());
         }
     }
 
