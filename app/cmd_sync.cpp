@@ -246,9 +246,7 @@ int cmdSync(const QStringList& args, Io io)
                     io.out << nb::TrCli::tr("the video's coder shows this slow needle late by an amount known only to ±%1 frames: "
                                             "a region or a needle line will not make it surer, an event marked in both will\n")
                                   .arg(r.pictureLagUncertainty_s / index.frameDuration(), 0, 'f', 2);
-                // Only a coder moving by quarter pixels may hide a first coder's coarser trail.
-                if (moved && r.lagLimitsPrecision() && !vso.codedOnce && r.pictureTrail.most_px > r.pictureTrail.least_px
-                    && motionCodingOf(index.codec) == MotionCoding::QuarterPixel)
+                if (moved && r.codedOnceWouldHelp())
                     io.out << nb::TrCli::tr("if nobody converted this video (it is as its camera or console coded it), "
                                             "--coded-once narrows that\n");
                 if (limited)

@@ -59,6 +59,7 @@ PictureTrail pictureTrail(const PictureCoding& c)
     // What the model left unexplained in the probes' strokes: coded once by halves, 0.06 px (root
     // mean square; at most 0.16); coded twice, 0.15 (0.29 below the meter's top).
     t.residual_px = once ? 0.10 : 0.15;
+    t.narrowsIfCodedOnce = c.motion == MotionCoding::QuarterPixel && !c.codedOnce && t.most_px > t.least_px;
     return t;
 }
 

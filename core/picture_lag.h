@@ -59,6 +59,9 @@ struct PictureTrail {
     double least_px = 0.0;
     double most_px = 0.0;
     double residual_px = 0.0;
+    // The range is a first coder's that may hide behind a coder moving by quarter pixels: an
+    // operator who knows the file was never converted narrows it (PictureCoding::codedOnce).
+    bool narrowsIfCodedOnce = false;
     double likely_px() const { return 0.5 * (least_px + most_px); }
     double uncertainty_px() const { return 0.5 * (most_px - least_px) + residual_px; }
 };

@@ -87,6 +87,8 @@ struct SyncResult {
     // Whether the coder's lag, known no better than pictureLagUncertainty_s, is what keeps the
     // offset uncertain: checking it on an event helps, drawing the needle's line does not.
     bool lagLimitsPrecision() const { return pictureLagUncertainty_s > 0.0 && pictureLagUncertainty_s >= uncertainty_s; }
+    // And that lag is known only within a range that saying the video was coded once would close.
+    bool codedOnceWouldHelp() const { return lagLimitsPrecision() && pictureTrail.narrowsIfCodedOnce; }
     QString method;                // what was compared, for the run's metadata
 
     TimelineMapping mapping() const { return {offset_s, drift}; }

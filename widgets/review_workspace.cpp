@@ -12,7 +12,6 @@
 #include "core/data_names.h"
 #include "core/label_suggest.h"
 #include "core/labels.h"
-#include "core/picture_lag.h"
 #include "core/run_file.h"
 #include "video/frame_reader.h"
 #include "video/video_sync.h"
@@ -1274,8 +1273,7 @@ void ReviewWorkspace::sayWhatHelps(const SyncResult& r)
     // else check it on an event; and a needle too faint to be found, or a clock on its line, is
     // read where its line and a region around its path are drawn.
     const QString lag = localNumber(1000.0 * r.pictureLag_s, 0), give = localNumber(1000.0 * r.pictureLagUncertainty_s, 0);
-    if (r.lagLimitsPrecision() && !codedOnceBox_->isChecked() && r.pictureTrail.most_px > r.pictureTrail.least_px && index_
-        && motionCodingOf(index_->codec) == MotionCoding::QuarterPixel)
+    if (r.codedOnceWouldHelp())
         showStatus(tr("Low confidence: the video's coder shows this slow needle late, by %1 ms give or take %2 ms, as it may have "
                       "been converted; if it is as the camera or console coded it, tick “coded once”, else check the offset on an "
                       "event (contact or puncture) before accepting").arg(lag, give));

@@ -239,6 +239,8 @@ private slots:
         const nb::PictureTrail unknown = trail(0.9, 14.0, MotionCoding::Unknown);
         QVERIFY(unknownOnce.least_px == unknown.least_px && unknownOnce.most_px == unknown.most_px && unknownOnce.residual_px == unknown.residual_px);
         QCOMPARE(once(0.6, 4.0, MotionCoding::Intra).most_px, 0.0);
+        // Only the range a first coder may hide behind quarter pixels is one saying so would close.
+        QVERIFY(quarter.narrowsIfCodedOnce && !quarterOnce.narrowsIfCodedOnce && !half.narrowsIfCodedOnce && !unknown.narrowsIfCodedOnce);
         // At the top of the meter the memory says only "at least": a faint edge may trail far
         // more than the memory gives, up to what its edge allows.
         const nb::PictureTrail top = trail(nb::kMostMeasurableMemory, 4.0, MotionCoding::HalfPixel);
