@@ -154,6 +154,25 @@ QString sessionWithSine(const QString& sessionDir, const QString& sine, const QS
     return QDir().mkpath(sessionDir) && QFile::copy(sine, copy) ? copy : QString();
 }
 
+// The window on the session at the laptop's size, a slow insertion recording, and `run` open in
+// Review with `video` attached as Open video… does; null when any of that failed.
+std::unique_ptr<nb::MainWindow> reviewingWhileInserting(const QString& sessionDir, const QString& run, const QString& video)
+{
+    auto w = std::make_unique<nb::MainWindow>(nbtest::simulatedWindow(sessionDir, true));
+    w->resize(1366, 768);
+    w->show();
+    if (!QTest::qWaitForWindowExposed(w.get()))
+        return nullptr;
+    startSlowInsertion(*w);
+    if (QTest::currentTestFailed())
+        return nullptr;
+    w->reviewRun(run);
+    QSignalSpy opened(w->reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
+    if (!w->reviewWorkspace()->attachVideo(video) || (opened.count() == 0 && !opened.wait(60000)))
+        return nullptr;
+    return w;
+}
+
 // The window started again on the session, at the laptop's size, with `run` opened in Review
 // and its video open; null when it did not come up.
 std::unique_ptr<nb::MainWindow> reopened(const QString& sessionDir, const QString& run)
@@ -337,20 +356,11 @@ private slots:
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
         nb::TimelineMapping accepted;
         {
-            std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
-            nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true, &rig));
-            w.resize(1366, 768);
-            w.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&w));
-            startSlowInsertion(w);
-            if (QTest::currentTestFailed())
-                return;
+            const auto window = reviewingWhileInserting(sessionDir, sine, video);
+            QVERIFY(window);
+            nb::MainWindow& w = *window;
             nb::ControlPanel* p = w.controlPanel();
-            w.reviewRun(sine);
             nb::ReviewWorkspace* review = w.reviewWorkspace();
-            QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
-            QVERIFY(review->attachVideo(video));
-            QVERIFY(opened.count() > 0 || opened.wait(60000));
             QCheckBox* once = review->codedOnceBox();
             QVERIFY(once && once->isVisible() && once->isEnabled() && !once->isChecked());
             QSignalSpy synced(review, &nb::ReviewWorkspace::syncFinished);
@@ -441,21 +451,11 @@ private slots:
         const QString damaged = QDir(sessionDir).filePath(file);
         QVERIFY(nb::test::writeScratched(whole, damaged, 5.0, 5.5) >= 10);
 
-        std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
-        nb::MainWindow w(nbtest::simulatedWindow(sessionDir, true, &rig));
-        w.resize(1366, 768);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        startSlowInsertion(w);
-        if (QTest::currentTestFailed())
-            return;
+        const auto window = reviewingWhileInserting(sessionDir, sine, damaged);
+        QVERIFY(window);
+        nb::MainWindow& w = *window;
         nb::ControlPanel* p = w.controlPanel();
-
-        w.reviewRun(sine);
         nb::ReviewWorkspace* review = w.reviewWorkspace();
-        QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
-        QVERIFY(review->attachVideo(damaged));  // as Open video… does
-        QVERIFY(opened.count() > 0 || opened.wait(60000));
         QVERIFY2(review->status().contains(file) && review->status().contains(QStringLiteral("damaged between")), qPrintable(review->status()));
         // Opened again, the run keeps its video open, and says again that it is damaged.
         w.reviewRun(sine);
