@@ -9,11 +9,14 @@ namespace nb {
 
 double SettlingFit::at(double t_s) const
 {
+    t_s = std::min(t_s, stop_s);
     return t_s < t0_s ? d0 + v * (t_s - t0_s) : rest + (d0 - rest) * std::exp(-(t_s - t0_s) / tau_s);
 }
 
 double SettlingFit::speedAt(double t_s) const
 {
+    if (t_s >= stop_s)
+        return 0.0;
     return t_s < t0_s ? v : (rest - d0) / tau_s * std::exp(-(t_s - t0_s) / tau_s);
 }
 
@@ -149,30 +152,42 @@ SettlingFit fitSettling(const std::vector<double>& t, const std::vector<double>&
     return fitSettlingAt(t, d, w, onsets[bestOnset], taus[bestTau], lo, hi);
 }
 
-SettlingFit fitSettlingFrom(const std::vector<double>& t, const std::vector<double>& d, double t0, double tauFrom, double tauTo, int steps)
+SettlingFit fitSettlingFromOrStop(const std::vector<double>& t, const std::vector<double>& d, double t0, double tauFrom, double tauTo,
+                                  int steps, const std::vector<double>& stops)
 {
     SettlingFit best;
     const std::size_t n = std::min(t.size(), d.size());
     std::vector<double> decay(n);
+    std::vector<double> ends{std::numeric_limits<double>::infinity()};
+    ends.insert(ends.end(), stops.begin(), stops.end());
     for (int k = 0; k < steps; ++k) {
         const double tau = tauFrom * std::pow(tauTo / tauFrom, double(k) / std::max(1, steps - 1));
-        // d = rest + (d0 − rest)·decay: a straight line in decay.
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            decay[i] = std::exp(-std::max(0.0, t[i] - t0) / tau);
-            sx += decay[i], sy += d[i], sxx += decay[i] * decay[i], sxy += decay[i] * d[i];
+        for (const double stop : ends) {
+            // d = rest + (d0 − rest)·decay: a straight line in decay.
+            double sx = 0, sy = 0, sxx = 0, sxy = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                decay[i] = std::exp(-std::max(0.0, std::min(t[i], stop) - t0) / tau);
+                sx += decay[i], sy += d[i], sxx += decay[i] * decay[i], sxy += decay[i] * d[i];
+            }
+            const double m = double(n), den = m * sxx - sx * sx;
+            if (std::abs(den) < 1e-12)
+                continue;
+            const double slope = (m * sxy - sx * sy) / den, offset = (sy - slope * sx) / m;
+            double sse = 0;
+            for (std::size_t i = 0; i < n; ++i)
+                sse += std::pow(offset + slope * decay[i] - d[i], 2);
+            if (sse < best.sse) {
+                best.sse = sse, best.t0_s = t0, best.tau_s = tau, best.d0 = offset + slope, best.v = 0.0, best.rest = offset;
+                best.stop_s = stop;
+            }
         }
-        const double m = double(n), den = m * sxx - sx * sx;
-        if (std::abs(den) < 1e-12)
-            continue;
-        const double slope = (m * sxy - sx * sy) / den, offset = (sy - slope * sx) / m;
-        double sse = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            sse += std::pow(offset + slope * decay[i] - d[i], 2);
-        if (sse < best.sse)
-            best.sse = sse, best.t0_s = t0, best.tau_s = tau, best.d0 = offset + slope, best.v = 0.0, best.rest = offset;
     }
     return best;
+}
+
+SettlingFit fitSettlingFrom(const std::vector<double>& t, const std::vector<double>& d, double t0, double tauFrom, double tauTo, int steps)
+{
+    return fitSettlingFromOrStop(t, d, t0, tauFrom, tauTo, steps, {});
 }
 
 }  // namespace nb

@@ -14,6 +14,8 @@ struct SettlingFit {
     double sse = std::numeric_limits<double>::infinity();  // weighted; infinite: no fit
     double t0_s = 0, tau_s = 0;
     double d0 = 0, v = 0, rest = 0;  // value at the onset, speed before it, value at rest
+    // Where the settling meets something stiff and stops short of `rest` (infinite: it does not).
+    double stop_s = std::numeric_limits<double>::infinity();
 
     double at(double t_s) const;
     double speedAt(double t_s) const;  // d'(t)
@@ -35,5 +37,11 @@ SettlingFit fitSettling(const std::vector<double>& t_s, const std::vector<double
 // to tauTo.
 SettlingFit fitSettlingFrom(const std::vector<double>& t_s, const std::vector<double>& d, double t0_s, double tauFrom_s, double tauTo_s,
                             int steps);
+
+// As fitSettlingFrom, but the settling may also stop short, all at once, at any of `stops_s`
+// (it meets something stiff on its way to rest); each stop is tried with each τ, and so is
+// not stopping at all.
+SettlingFit fitSettlingFromOrStop(const std::vector<double>& t_s, const std::vector<double>& d, double t0_s, double tauFrom_s,
+                                  double tauTo_s, int steps, const std::vector<double>& stops_s);
 
 }  // namespace nb

@@ -7,6 +7,7 @@
 #include <QtTest>
 
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <random>
 
@@ -87,6 +88,57 @@ private slots:
             QVERIFY2(std::abs(f.tau_s / tau - 1.0) < 0.12, qPrintable(QStringLiteral("case %1: tau %2, drawn %3").arg(i).arg(f.tau_s).arg(tau)));
             QVERIFY2(std::abs(f.rest - f.d0 - travel) < 0.05 * travel + 0.05,
                      qPrintable(QStringLiteral("case %1: travel %2, drawn %3").arg(i).arg(f.rest - f.d0).arg(travel)));
+        }
+    }
+
+    // A tissue slowing on a soft support meets a stiff one and stops at once, short of where
+    // it was settling to: the fit that may stop finds where, and the τ it was slowing with;
+    // one that did not stop is fitted as not stopping.
+    void settlingThatStopsShort()
+    {
+        std::mt19937 rng(drawSeed(620417u));
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        for (int i = 0; i < 30; ++i) {
+            const double frame_s = 1.0 / 29.97, t0 = 2.0, tau = frame_s * (1.0 + 2.0 * u(rng)), travel = 1.0 + 3.0 * u(rng);
+            // Stopped between one and two and a half τ after the onset, while still plainly
+            // moving (later, the stop hardly shows), or never.
+            const bool stops = i % 3 != 0;
+            const double stop = stops ? t0 + tau * (1.0 + 1.5 * u(rng)) : std::numeric_limits<double>::infinity();
+            std::normal_distribution<double> noise(0.0, 0.01);
+            std::vector<double> t{t0 - 0.5 * frame_s}, d{0.0}, stops_s;
+            for (double time = t0 + 0.5 * frame_s; time < t0 + 8.0 * tau + 4 * frame_s; time += frame_s) {
+                t.push_back(time);
+                d.push_back(travel * (1.0 - std::exp(-(std::min(time, stop) - t0) / tau)) + noise(rng));
+            }
+            for (double s = t0 + 0.25 * frame_s; s < t.back(); s += 0.25 * frame_s)
+                stops_s.push_back(s);
+            const nb::SettlingFit f = nb::fitSettlingFromOrStop(t, d, t0, frame_s / 3.0, 10.0 * frame_s, 60, stops_s);
+            const QString what = QStringLiteral("case %1: tau %2 (drawn %3), stop %4 (drawn %5)")
+                                     .arg(i)
+                                     .arg(f.tau_s)
+                                     .arg(tau)
+                                     .arg(f.stop_s - t0)
+                                     .arg(stop - t0);
+            // τ, where four frames or more show the slowing (two or three fit a range of curves).
+            if (stop - t0 >= 4.0 * frame_s)
+                QVERIFY2(std::abs(f.tau_s / tau - 1.0) < 0.4, qPrintable(what));
+            // Where it ends, and how fast it moves before then.
+            QVERIFY2(std::abs(f.at(t.back()) - d.front() - travel * (1.0 - std::exp(-(std::min(stop, t.back()) - t0) / tau))) < 0.05,
+                     qPrintable(what));
+            if (stops) {
+                QVERIFY2(std::abs(f.stop_s - stop) < frame_s, qPrintable(what));
+                QCOMPARE(f.speedAt(f.stop_s + 1e-6), 0.0);
+                QVERIFY(f.speedAt(f.stop_s - 1e-3) > 0.0);
+            } else {
+                // Not stopping, or stopping where it has all but settled (the noise in its tail).
+                QVERIFY2(!std::isfinite(f.stop_s) || std::abs(f.rest - f.at(f.stop_s)) < 0.05 * travel, qPrintable(what));
+            }
+            // The fit that may not stop reads the same settling with a shorter τ (it must bend
+            // sooner to stay flat after the stop): the stop is what makes τ true.
+            if (stops && stop - t0 < 1.5 * tau) {
+                const nb::SettlingFit plain = nb::fitSettlingFrom(t, d, t0, frame_s / 3.0, 10.0 * frame_s, 60);
+                QVERIFY2(plain.sse > f.sse, qPrintable(what));
+            }
         }
     }
 
