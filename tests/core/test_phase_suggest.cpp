@@ -56,6 +56,23 @@ double agreement(const Simulated& s, const nb::Labels& labels)
     return counted ? double(agree) / counted : 0.0;
 }
 
+// Each true start of c after the first half second (the needle jumping to speed from rest),
+// against the suggested start of c nearest it: suggested minus true, in seconds.
+std::vector<double> cStartErrors_s(const Simulated& s, const nb::Labels& labels)
+{
+    std::vector<double> errors;
+    for (std::size_t i = 1; i < s.truth.size(); ++i) {
+        if (s.truth[i] != QLatin1String("c") || s.truth[i - 1] == QLatin1String("c") || s.truth[i - 1].isEmpty() || s.blind.time_s[i] < 0.5)
+            continue;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const nb::Label& l : labels)
+            if (l.label == QLatin1String("c") && std::abs(l.start_s - s.blind.time_s[i]) < std::abs(nearest))
+                nearest = l.start_s - s.blind.time_s[i];
+        errors.push_back(nearest);
+    }
+    return errors;
+}
+
 // The tissue's velocity as a 30 frames/s picture would give it: one value per pair of frames.
 nb::TissueMotion fromFrames(const Simulated& s, const QString& name)
 {
@@ -488,20 +505,11 @@ private slots:
         nb::TissueMotion m = fromFrames(s, QStringLiteral("stop.avi"));
         m.px_per_mm = 7.3;  // the rendered view's scale in that case
         const nb::Labels labels = nb::suggestPhaseLabels(s.blind, &m);
-        const QStringList suggested = nb::phasePerSample(labels, s.blind.time_s);
-        // Each true start of c after the first turning point, against the suggested one nearest.
-        int strokes = 0;
+        const std::vector<double> errors = cStartErrors_s(s, labels);
+        const int strokes = int(errors.size());
         double off_s = 0.0;
-        for (std::size_t i = 1; i < s.truth.size(); ++i) {
-            if (s.truth[i] != QLatin1String("c") || s.truth[i - 1] == QLatin1String("c") || s.truth[i - 1].isEmpty() || s.blind.time_s[i] < 0.5)
-                continue;
-            double nearest = std::numeric_limits<double>::infinity();
-            for (const nb::Label& l : labels)
-                if (l.label == QLatin1String("c") && std::abs(l.start_s - s.blind.time_s[i]) < std::abs(nearest))
-                    nearest = l.start_s - s.blind.time_s[i];
-            off_s += std::abs(nearest);
-            ++strokes;
-        }
+        for (double e : errors)
+            off_s += std::abs(e);
         QVERIFY(strokes >= 5);
         const QString figures = QStringLiteral("c off by %1 s on average over %2 strokes; agreement %3").arg(off_s / strokes).arg(strokes).arg(agreement(s, labels));
         qInfo("%s", qPrintable(figures));
@@ -540,18 +548,12 @@ private slots:
         nb::TissueMotion m = fromFrames(s, QStringLiteral("short.avi"));
         m.px_per_mm = pxPerMm;
         const nb::Labels labels = nb::suggestPhaseLabels(s.blind, &m);
-        int strokes = 0;
+        const std::vector<double> errors = cStartErrors_s(s, labels);
+        const int strokes = int(errors.size());
         double off_s = 0.0, early_s = 0.0;
-        for (std::size_t i = 1; i < s.truth.size(); ++i) {
-            if (s.truth[i] != QLatin1String("c") || s.truth[i - 1] == QLatin1String("c") || s.truth[i - 1].isEmpty() || s.blind.time_s[i] < 0.5)
-                continue;
-            double nearest = std::numeric_limits<double>::infinity();
-            for (const nb::Label& l : labels)
-                if (l.label == QLatin1String("c") && std::abs(l.start_s - s.blind.time_s[i]) < std::abs(nearest))
-                    nearest = l.start_s - s.blind.time_s[i];
-            off_s += std::abs(nearest);
-            early_s = std::min(early_s, nearest);
-            ++strokes;
+        for (double e : errors) {
+            off_s += std::abs(e);
+            early_s = std::min(early_s, e);
         }
         QVERIFY(strokes >= 5);
         const QString figures = QStringLiteral("c off by %1 s on average over %2 strokes, at most %3 s early; agreement %4")
