@@ -91,14 +91,9 @@ std::optional<double> laterRest(const TissueMotion& tissue, double from_s, doubl
         const double end_s = tissue.time_s[k] + 0.5 * frame_s;
         if (end_s <= from_s || end_s > to_s || !std::isfinite(tissue.velocity_mm_s[k]))
             continue;
-        const double start_s = tissue.time_s[k] - 0.5 * frame_s;
         if (t.empty()) {
-            t.push_back(std::max(start_s, from_s));
+            t.push_back(tissue.time_s[k] - 0.5 * frame_s);
             y.push_back(0.0);
-            // A first pair of frames that began before `from_s` holds the tissue still carried
-            // with the needle up to there: that part is no settling (left in, it reads as a
-            // tissue that set off at once and settled within half a frame).
-            moved_mm -= std::max(0.0, from_s - start_s) * std::abs(needle_mm_s(from_s));
         }
         moved_mm += direction * tissue.velocity_mm_s[k] * frame_s;
         t.push_back(end_s);
