@@ -75,7 +75,7 @@ PictureReading pictureReading(const Run& run, const TissueMotion& tissue, std::s
 // short, all at once, if it does: a tissue slowing on the plate's soft part meets its stiff
 // part still moving and stops there. Fitted without that stop, the curve bends too soon to
 // stay flat after it, and puts the rest (and the tissue's travel left) too early (liver5 at
-// 0.93 Hz, ±3.1 mm on a 15 mm slab: c called 3 frames early in one stroke, where it stood).
+// 0.93 Hz, ±3.1 mm on a 15 mm slab: c called 3 frames early in one stroke, now within a frame).
 // `direction` is the stroke's.
 // nullopt, and `c_s` stands, unless the picture shows the settling: at `c_s` the tissue still
 // has 1.5 px to go and moves a pixel a frame, and it takes half a frame or more (a faster stop
