@@ -38,8 +38,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
-#include <memory>
 #include <cmath>
+#include <memory>
 
 using nb::Control;
 
@@ -154,14 +154,24 @@ QString sessionWithSine(const QString& sessionDir, const QString& sine, const QS
     return QDir().mkpath(sessionDir) && QFile::copy(sine, copy) ? copy : QString();
 }
 
-// The window on the session at the laptop's size, a slow insertion recording, and `run` open in
-// Review with `video` attached as Open video… does; null when any of that failed.
-std::unique_ptr<nb::MainWindow> reviewingWhileInserting(const QString& sessionDir, const QString& run, const QString& video)
+// The window on the session's simulated rig, shown at the laptop's size (1366x768); null when
+// it was not exposed.
+std::unique_ptr<nb::MainWindow> shownAtLaptopSize(const QString& sessionDir)
 {
     auto w = std::make_unique<nb::MainWindow>(nbtest::simulatedWindow(sessionDir, true));
     w->resize(1366, 768);
     w->show();
     if (!QTest::qWaitForWindowExposed(w.get()))
+        return nullptr;
+    return w;
+}
+
+// The window on the session at the laptop's size, a slow insertion recording, and `run` open in
+// Review with `video` attached as Open video… does; null when any of that failed.
+std::unique_ptr<nb::MainWindow> reviewingWhileInserting(const QString& sessionDir, const QString& run, const QString& video)
+{
+    auto w = shownAtLaptopSize(sessionDir);
+    if (!w)
         return nullptr;
     startSlowInsertion(*w);
     if (QTest::currentTestFailed())
@@ -177,10 +187,8 @@ std::unique_ptr<nb::MainWindow> reviewingWhileInserting(const QString& sessionDi
 // and its video open; null when it did not come up.
 std::unique_ptr<nb::MainWindow> reopened(const QString& sessionDir, const QString& run)
 {
-    auto w = std::make_unique<nb::MainWindow>(nbtest::simulatedWindow(sessionDir, true));
-    w->resize(1366, 768);
-    w->show();
-    if (!QTest::qWaitForWindowExposed(w.get()))
+    auto w = shownAtLaptopSize(sessionDir);
+    if (!w)
         return nullptr;
     QSignalSpy opened(w->reviewWorkspace(), &nb::ReviewWorkspace::videoOpened);
     w->reviewRun(run);
