@@ -498,6 +498,17 @@ int fitFrictionCommand(const QStringList& args, Io io)
             if (f.springBackN_s > 0.0)
                 springBack.insert(QStringLiteral("slab_stiffness_negative_N_per_m"), f.model.bn_Ns_per_m / f.springBackN_s);
             o.insert(QStringLiteral("spring_back"), springBack);
+            // The slab's give against its plate, read where it was carried into it (null: not shown).
+            auto give = [](const std::optional<nb::PlateGive>& g) {
+                if (!g)
+                    return QJsonValue();
+                return QJsonValue(QJsonObject{{QStringLiteral("stiffness_N_per_m"), g->stiffness_N_per_m},
+                                              {QStringLiteral("up_to_N"), g->upTo_N},
+                                              {QStringLiteral("losses_Ns_per_m"), g->losses_Ns_per_m},
+                                              {QStringLiteral("rises"), qint64(g->rises)}});
+            };
+            o.insert(QStringLiteral("plate_give"),
+                     QJsonObject{{QStringLiteral("positive"), give(f.plateGiveP)}, {QStringLiteral("negative"), give(f.plateGiveN)}});
             o.insert(QStringLiteral("residual_to_noise"),
                      QJsonObject{{QStringLiteral("positive"), f.residualToNoiseP}, {QStringLiteral("negative"), f.residualToNoiseN}});
             // How far C moves (a fraction of it) when the sliding line may bend.
@@ -633,6 +644,12 @@ int fitFrictionCommand(const QStringList& args, Io io)
                                     "%2 in + motion, %3 in - motion); C and b are taken against the tissue's motion\n")
                           .arg(name, stiffness(f.model.bp_Ns_per_m, f.springBackP_s), stiffness(f.model.bn_Ns_per_m, f.springBackN_s));
         }
+        for (const auto& [give, direction] : {std::pair{&f.plateGiveP, nb::TrCli::tr("+ motion")}, std::pair{&f.plateGiveN, nb::TrCli::tr("- motion")}})
+            if (*give)
+                io.out << nb::TrCli::tr("%1: in %2 the slab gives against the plate by %3 N/m up to %4 N (read where the needle carries it in, "
+                                        "%5 times); C and b are taken against the tissue's motion where it rests on that give\n")
+                              .arg(name, direction, num((*give)->stiffness_N_per_m, 3), num((*give)->upTo_N, 3))
+                              .arg((*give)->rises);
         for (const QString& why : f.notPhysical)
             io.out << nb::TrCli::tr("%1: NOT A RESULT (not physical, or not determined by this run): %2\n").arg(name, why);
         if (peakLine) {

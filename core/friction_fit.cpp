@@ -24,6 +24,9 @@ constexpr std::size_t kBreakAwaySamples = 2;
 // A direction's sliding residual above this many times the force's noise is a shape the line
 // does not follow (fitFriction).
 constexpr double kShapeToNoise = 2.0;
+// How much more a sliding line with the slab's give may scatter than one without, and still be
+// taken (the give's rate of the force brings noise of its own).
+constexpr double kGiveScatterOverPlain = 2.0;
 // C moving by more than this fraction when the sliding line may bend (fitFriction) is not a
 // result: the accuracy a friction coefficient must hold (issue 13: C within 5 %).
 constexpr double kBendShift = 0.05;
@@ -66,6 +69,9 @@ ConditionedSignals conditionSignals(const Run& run, double smoothing_s)
     ConditionedSignals c;
     c.window = windowForDuration(run.time_s, smoothing_s);
     const std::vector<double> x = movingAverage(run.position_mm, c.window);
+    c.x_m.reserve(x.size());
+    for (double e : x)
+        c.x_m.push_back(e / 1000.0);
     c.v_m_s = movingAverage(derivative(run.time_s, x), c.window);
     for (double& e : c.v_m_s)
         e /= 1000.0;  // mm/s -> m/s
@@ -373,6 +379,131 @@ ArrivalSpeeds arrivalSpeeds(const std::vector<std::size_t>& rows, const std::vec
     return cut;
 }
 
+// Where the tissue may be carried before it breaks away, [from, to) sample ranges moving `sign`
+// wards: phase a as labelled, else each half-cycle whole. Without phases the band cannot say
+// where the break-away is: a carried rise at the needle's top speed can pass through the sliding
+// line, and a half-cycle's extreme force is its break-away wherever static friction exceeds the
+// sliding (plate_give.h checks that the force falls past it).
+struct Stretch {
+    std::size_t from, to;
+    int sign;
+};
+std::vector<Stretch> carriedStretches(const QStringList& phases, const std::vector<double>& v, std::size_t from, std::size_t to)
+{
+    std::vector<Stretch> out;
+    if (!phases.isEmpty()) {
+        for (std::size_t i = from; i < to;) {
+            if (phases[qsizetype(i)] != QLatin1String("a")) {
+                ++i;
+                continue;
+            }
+            const std::size_t start = i;
+            while (i < to && phases[qsizetype(i)] == QLatin1String("a"))
+                ++i;
+            if (start > from && i < to && v[i - 1] != 0.0)
+                out.push_back({start, i, v[i - 1] > 0.0 ? 1 : -1});
+        }
+        return out;
+    }
+    // Turning points with hysteresis (a fiftieth of the top speed): a slow needle's velocity
+    // crosses zero many times in the noise as it turns.
+    double top = 0.0;
+    for (std::size_t i = from; i < to; ++i)
+        top = std::max(top, std::fabs(v[i]));
+    const double moving = 0.02 * top;
+    std::size_t turn = 0;  // none yet: the run's start is no turning point
+    int sign = 0;
+    for (std::size_t i = from; i < to; ++i) {
+        const int now = v[i] > moving ? 1 : v[i] < -moving ? -1 : sign;
+        if (now != sign && sign != 0) {
+            if (turn > 0)
+                out.push_back({turn, i, sign});
+            turn = i;
+        }
+        sign = now;
+    }
+    return out;
+}
+
+// The slab's give against its plate per direction (plate_give.h), where the run shows one that
+// explains its sliding force, and the tissue's velocity on it.
+struct SlabOnPlate {
+    std::optional<PlateGive> give[2];
+    std::vector<double> tissue_m_s[2];  // restingTissueVelocity, per direction
+    // The tissue's velocity (m/s) at a sliding sample. A slide no break-away was read before (the
+    // run's first) takes the slab to follow the force at once, within the force the give was
+    // read to.
+    double tissueAt(std::size_t i, double v, double friction_N, double forceRate_N_s) const
+    {
+        const int d = v > 0.0 ? 0 : 1;
+        if (!give[d])
+            return 0.0;
+        if (std::isfinite(tissue_m_s[d][i]))
+            return tissue_m_s[d][i];
+        return std::fabs(friction_N) <= give[d]->upTo_N ? forceRate_N_s / give[d]->stiffness_N_per_m : 0.0;
+    }
+};
+
+// Reads it from the stretches where the tissue is carried (from the force averaged over 3
+// samples only: a fast stroke crosses a soft contact within a few smoothing windows), and takes
+// out of `rows` the samples where, by it, the tissue was still carried or settling.
+SlabOnPlate slabOnPlate(const Run& run, const ConditionedSignals& c, const std::vector<double>& friction,
+                        const std::vector<double>& forceRate, const QStringList& phases, double mass_kg, std::size_t trim,
+                        std::vector<std::size_t>& rows)
+{
+    const std::size_t n = run.size();
+    const std::vector<double>& v = c.v_m_s;
+    const int w = std::max(1, c.window);
+    std::vector<double> friction3 = movingAverage(run.force_N, 3);
+    for (std::size_t i = 0; i < n; ++i)
+        friction3[i] -= mass_kg * c.a_m_s2[i];
+    const double noise3_N = c.noise_N * std::sqrt(double(w) / 3.0);
+    const std::vector<Stretch> carried = carriedStretches(phases, v, trim, n - trim);
+    SlabOnPlate slab;
+    // The scatter of one direction's samples about a line in the needle's speed, less the
+    // tissue's where `withGive`.
+    auto scatter = [&](const std::vector<std::size_t>& among, int sign, bool withGive) {
+        std::vector<double> speed, force;
+        for (std::size_t i : among)
+            if (sign * v[i] > 0.0) {
+                speed.push_back(v[i] - (withGive ? slab.tissueAt(i, v[i], friction[i], forceRate[i]) : 0.0));
+                force.push_back(friction[i]);
+            }
+        const std::optional<Line> l = lineThrough(speed, force);
+        return l ? l->sd : INFINITY;
+    };
+    for (int d : {0, 1}) {
+        const int sign = d == 0 ? 1 : -1;
+        std::vector<std::pair<std::size_t, std::size_t>> own;
+        for (const Stretch& stretch : carried)
+            if (stretch.sign == sign)
+                own.emplace_back(stretch.from, stretch.to);
+        slab.give[d] = plateGive(c.x_m, v, friction, friction3, own, sign, noise3_N, std::size_t(w));
+        if (!slab.give[d])
+            continue;
+        slab.tissue_m_s[d] = restingTissueVelocity(*slab.give[d], run.time_s, v, friction, sign);
+        std::vector<std::size_t> settled = withoutCarried(rows, *slab.give[d]);
+        // Left out while the slab settles, unless that would leave the direction too few to fit
+        // (short slides): then their line shows what the settling does to it.
+        if (std::vector<std::size_t> after = withoutSettling(settled, *slab.give[d], run.time_s, v, friction, sign);
+            std::count_if(after.begin(), after.end(), [&](std::size_t i) { return sign * v[i] > 0.0; }) >= 3 * w)
+            settled = std::move(after);
+        // Taken only where it explains the sliding force about as well as the needle's velocity
+        // alone, or within the noise's reach: the slab's motion is read with noise of its own (a
+        // rate of the force), and a line in the needle's speed that leans to take in the creep
+        // explains it well, only with the wrong C. A rise read from something else (the tissue
+        // striking the plate while it already slips, on a fast stroke without phases) leaves
+        // 109 times the noise.
+        if (scatter(settled, sign, true) <= std::max(kGiveScatterOverPlain * scatter(rows, sign, false), kShapeToNoise * c.noise_N)) {
+            rows = std::move(settled);
+        } else {
+            slab.give[d].reset();
+            slab.tissue_m_s[d].clear();
+        }
+    }
+    return slab;
+}
+
 }  // namespace
 
 BandEstimate estimateBand(const Run& run, const FrictionOptions& options)
@@ -552,6 +683,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     std::erase_if(rows, [&](std::size_t i) { return v[i] * a[i] <= 0.0 && std::fabs(v[i]) > arriving.of(v[i]); });
     const std::vector<double> forceRate = rateWithinSlides(rows, run.time_s, friction, w);
     rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N, forceRate);
+    // Without a measured trace, a slab resting on a soft contact still moves (plate_give.h).
+    const SlabOnPlate slab = relative ? SlabOnPlate{} : slabOnPlate(run, c, friction, forceRate, usePhases ? phases : QStringList(), options.mass_kg, trim, rows);
     // Per direction (0: +, 1: -): how many sliding samples, and the needle speeds they span.
     std::size_t pos = 0, neg = 0;
     double slowest[2] = {INFINITY, INFINITY}, fastest[2] = {0.0, 0.0};
@@ -628,7 +761,7 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
                 tissueSmoothed[rows[r]] = slide.velocity[r - k];
             k = end;
         }
-    auto slip = [&](std::size_t i) { return relative ? v[i] - tissueSmoothed[i] : v[i]; };
+    auto slip = [&](std::size_t i) { return relative ? v[i] - tissueSmoothed[i] : v[i] - slab.tissueAt(i, v[i], friction[i], forceRate[i]); };
 
     const int off = options.estimateMass ? 1 : 0;
     // Columns follow eq. 19/21: [a], s+, s+·v, s-, s-·v, s- = -1 for v < 0 (F = -Cn + bn·v),
@@ -765,6 +898,8 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
         seC = std::hypot(seC, curved - straight);
         seB = std::hypot(seB, bent->p(off + 2 * d + 1) - p(off + 2 * d + 1));
     }
+    fit.plateGiveP = slab.give[0];
+    fit.plateGiveN = slab.give[1];
     if (solved->springP >= 0)
         fit.springBackP_s = p(solved->springP);
     if (solved->springN >= 0)

@@ -4,6 +4,7 @@
 // estimated (eq. 19) or known and removed (eq. 21).
 
 #include "models.h"
+#include "plate_give.h"
 #include "run.h"
 
 #include <QString>
@@ -88,6 +89,10 @@ struct FrictionFit {
     // F = C + b·(v - Ḟ/k) and reports b/k in s per direction (0: not shown by the run, the
     // plain line). k = b / springBack is the slab's stiffness against the plate, N/m.
     double springBackP_s = 0.0, springBackN_s = 0.0;
+    // Each direction's slab give against its plate, read where the tissue is carried into it
+    // (core/plate_give.h), where the run shows one: the sliding line is then written in
+    // v - Ḟ/k for the samples resting within the force it was read to (no tissue trace given).
+    std::optional<PlateGive> plateGiveP, plateGiveN;
     // Each direction's sliding residual (rms) over the force's noise: about 1 when the line
     // explains the force; above 2 its C and b are flagged as not determined.
     double residualToNoiseP = 0.0, residualToNoiseN = 0.0;
@@ -128,7 +133,7 @@ double estimateBand_m_s(const Run& run, const FrictionOptions& options);  // the
 // and smoothed again. SI units.
 struct ConditionedSignals {
     int window = 1;                       // samples in the moving average
-    std::vector<double> v_m_s, a_m_s2, force_N;
+    std::vector<double> x_m, v_m_s, a_m_s2, force_N;
     double noise_N = 0.0;                 // of the smoothed force (robust, from the raw samples)
 };
 ConditionedSignals conditionSignals(const Run& run, double smoothing_s);

@@ -13,6 +13,10 @@ namespace nb::devices::sim {
 
 class FrictionPlatform {
 public:
+    // The plate's law against the slab past its free travel: soft over its first kSoft_mm,
+    // stiff beyond (the knee at kSoft_N_per_m · kSoft_mm), critically damped in contact.
+    static constexpr double kSoft_mm = 1.0, kSoft_N_per_m = 200.0, kStiff_N_per_m = 5000.0;
+
     FrictionPlatform(const TissuePreset& preset, const RigConfig& config);
     // Needle velocity/acceleration in mm/s, mm/s^2; returns the force on the needle.
     double step(double t, double dt, double v_mm_s, double a_mm_s2, GroundTruth& truth);
@@ -28,7 +32,7 @@ private:
     KarnoppModel k_;
     double band_m_s_;      // Δv, the whole width of the zero band
     double m_;
-    double gap_, w1_ = 1.0e-3, k1_ = 200.0, k2_ = 5000.0, damping_, dampingB1_;
+    double gap_, w1_ = kSoft_mm / 1000.0, k1_ = kSoft_N_per_m, k2_ = kStiff_N_per_m, damping_, dampingB1_;
     double y_ = 0.0, vy_ = 0.0;
     bool stuck_ = true;
     char phase_ = 0;

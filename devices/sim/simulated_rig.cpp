@@ -386,6 +386,12 @@ QJsonObject SimulatedRig::truthJson() const
                  toJson(f));
     if (config_.boneDepth_mm)
         model.insert(QStringLiteral("bone_depth_mm"), *config_.boneDepth_mm);
+    if (config_.setup == Setup::Platform)
+        model.insert(QStringLiteral("plate"), QJsonObject{{QStringLiteral("gap_mm"), config_.plateGap_mm},
+                                                          {QStringLiteral("soft_mm"), FrictionPlatform::kSoft_mm},
+                                                          {QStringLiteral("soft_N_per_m"), FrictionPlatform::kSoft_N_per_m},
+                                                          {QStringLiteral("stiff_N_per_m"), FrictionPlatform::kStiff_N_per_m},
+                                                          {QStringLiteral("tissue_mass_kg"), tissue_.tissueMass_kg}});
     if (tissue_.capsule)
         model.insert(QStringLiteral("mean_puncture_force_N"), tissue_.punctureForce_N);
     if (g.capsule) {

@@ -11,7 +11,9 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <random>
 
 namespace {
 
@@ -20,6 +22,18 @@ struct Truth {
 };
 
 double relErr(double got, double want) { return std::fabs(got - want) / std::fabs(want); }
+
+// A fixed draw unless NB_ACCURACY_SEED repeats another (or "random" draws afresh); printed.
+unsigned drawSeed(unsigned fixed)
+{
+    bool ok = false;
+    const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
+    unsigned seed = wanted.toUInt(&ok);
+    if (!ok)
+        seed = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000) : fixed;
+    qInfo("seed %u (repeat with NB_ACCURACY_SEED=%u)", seed, seed);
+    return seed;
+}
 
 // The peak-speed line's errors per length against the truth; all 1 (100 %) when there is none.
 struct LineErrors {
@@ -577,6 +591,77 @@ private slots:
         const double eCp = ownCpError(r, truth);
         const bool flagged = r.value(QStringLiteral("not_physical_values")).toArray().contains(QStringLiteral("Cp"));
         QVERIFY2(eCp < 0.05 || (flagAllowed && flagged), qPrintable(QStringLiteral("Cp %1 % off, %2").arg(100 * eCp).arg(flagged ? "flagged" : "not flagged")));
+    }
+
+    // Liver 3 moving in rests on the soft part of its plate: its friction (Cp small against bp)
+    // stays under what that part carries, so the slab creeps back by about 1 mm/s all through
+    // the slide as the friction falls, and a line in the needle's speed took that for C (Cp
+    // 15-25 % high, its residual at the noise, nothing flagged; bench/friction_cli_matrix.py
+    // --seed 2701, r27 and r176). The give is read where the needle carries the slab into the
+    // plate (plate_give in the JSON) and the creep taken out: Cp within 5 % or flagged, from
+    // the run's phases and from force and position alone, on slow strokes drawn at random.
+    void slabRestingOnTheSoftPartOfItsPlate()
+    {
+        std::mt19937 rng(drawSeed(40263u));
+        auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+        int fits = 0, right = 0, gives = 0;
+        for (int k = 0; k < 6; ++k) {
+            // The top speed keeps the friction at the top (0.085 N + 16.7 N·s/m · v) under the
+            // soft part's 0.2 N; the stroke reaches at least 1.5 mm past the plate, and the band
+            // is narrow enough to leave it a slide.
+            const double amplitude = uniform(2.5, 5.0), top_mm_s = uniform(3.0, 6.0);
+            const RigCase rig{QStringLiteral("liver3"), QString::number(top_mm_s / (2.0 * M_PI * amplitude), 'f', 4),
+                              QString::number(amplitude, 'f', 2), QString::number(uniform(0.5, 1.5), 'f', 2),
+                              QString::number(uniform(0.5, amplitude - 1.5), 'f', 2), QStringLiteral("0.0006"),
+                              std::uniform_int_distribution<int>(1, 99999)(rng)};
+            const QString name = QStringLiteral("soft_%1").arg(k);
+            const QString drawn = QStringLiteral("%1 %2 Hz ±%3 mm band ±%4 mm/s gap %5 mm seed %6")
+                                      .arg(rig.tissue, rig.frequency_hz, rig.amplitude_mm, rig.stickBand_mm_s, rig.plateGap_mm)
+                                      .arg(rig.seed);
+            Truth truth;
+            const QString blind = simulate(name, rig.args(), &truth);
+            QVERIFY(!blind.isEmpty());
+            const QJsonObject plate = nbtest::readJsonFile(dir_.filePath(name + QStringLiteral(".truth.json")))
+                                          .value(QStringLiteral("model")).toObject().value(QStringLiteral("plate")).toObject();
+            const double soft_N_per_m = plate.value(QStringLiteral("soft_N_per_m")).toDouble();
+            QVERIFY(soft_N_per_m > 0.0);
+            for (const QString& file : {dir_.filePath(name + QStringLiteral(".full.csv")), blind}) {
+                const auto out = nbtest::runCli(QStringList{QStringLiteral("fit"), QStringLiteral("friction"), QStringLiteral("--thickness-mm"),
+                                                            QStringLiteral("30"), QStringLiteral("--json"), file});
+                ++fits;
+                if (out.code != 0) {
+                    // A refusal names the run and why (a band as wide as the stroke's slow part
+                    // leaves no sliding in one direction): no value, so nothing wrong printed.
+                    qInfo("%s: refused: %s", qPrintable(drawn), qPrintable(out.err.trimmed()));
+                    QVERIFY2(out.err.contains(file.section(QLatin1Char('/'), -1)), qPrintable(out.err));
+                    continue;
+                }
+                const QJsonObject r = out.json().value(QStringLiteral("runs")).toArray().at(0).toObject();
+                QVERIFY2(!r.isEmpty(), qPrintable(drawn + QStringLiteral(": ") + file));
+                const double eCp = ownCpError(r, truth);
+                const bool flagged = r.value(QStringLiteral("not_physical_values")).toArray().contains(QStringLiteral("Cp"));
+                const QJsonValue give = r.value(QStringLiteral("plate_give")).toObject().value(QStringLiteral("positive"));
+                const double k_N_per_m = give.toObject().value(QStringLiteral("stiffness_N_per_m")).toDouble();
+                const QString what = QStringLiteral("%1 (%2): Cp %3 % off%4, give %5 N/m")
+                                         .arg(drawn, file == blind ? QStringLiteral("force only") : QStringLiteral("phases"))
+                                         .arg(100 * eCp, 0, 'f', 1)
+                                         .arg(flagged ? QStringLiteral(", flagged") : QString())
+                                         .arg(give.isObject() ? QString::number(k_N_per_m, 'f', 0) : QStringLiteral("none"));
+                qInfo("%s", qPrintable(what));
+                QVERIFY2(eCp < 0.05 || flagged, qPrintable(what));
+                if (give.isObject()) {
+                    ++gives;
+                    QVERIFY2(relErr(k_N_per_m, soft_N_per_m) < 0.15, qPrintable(what + QStringLiteral(", true %1 N/m").arg(soft_N_per_m)));
+                }
+                right += eCp < 0.05 && !flagged;
+            }
+        }
+        // Not by flagging them all: a third or more are results, and most read the give. (The
+        // rest are flagged mostly because the slide left after the settling spans too few
+        // speeds for its line to be sure of C, c_shift_if_bent.)
+        qInfo("%d of %d fits right and not flagged, %d with the give read", right, fits, gives);
+        QVERIFY2(3 * right >= fits, qPrintable(QStringLiteral("%1 of %2 right").arg(right).arg(fits)));
+        QVERIFY2(2 * gives >= fits, qPrintable(QStringLiteral("%1 of %2 read the give").arg(gives).arg(fits)));
     }
 
     void oneFrequencyMakesNoLine()
