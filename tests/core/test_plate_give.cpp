@@ -4,25 +4,14 @@
 // contact held; it reads nothing from a stretch that only leaves the other plate, or whose force
 // never falls from its top; and the tissue it drives at rest moves as the contact's law says.
 #include "core/plate_give.h"
+#include "support/accuracy_seed.h"
 
 #include <QtTest>
 
-#include <chrono>
 #include <cmath>
 #include <random>
 
 namespace {
-
-unsigned drawSeed(unsigned fixed)
-{
-    bool ok = false;
-    const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
-    unsigned seed = wanted.toUInt(&ok);
-    if (!ok)
-        seed = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000) : fixed;
-    qInfo("seed %u (repeat with NB_ACCURACY_SEED=%u)", seed, seed);
-    return seed;
-}
 
 std::vector<double> averaged(const std::vector<double>& x, int window)
 {
@@ -73,7 +62,7 @@ class TestPlateGive : public QObject {
 private slots:
     void readsTheContactFromCarriedStrokes()
     {
-        std::mt19937 rng(drawSeed(52871u));
+        std::mt19937 rng(nb::test::accuracySeed(52871u));
         auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
         for (int draw = 0; draw < 30; ++draw) {
             const double k = uniform(100.0, 400.0), c = uniform(10.0, 25.0), speed = uniform(0.002, 0.008), soft = uniform(0.0006, 0.0015);

@@ -1,6 +1,7 @@
 // Friction fits on the simulated rig's own runs through the command line, as a lab scripts
 // them: `simulate --protocol friction` writes the runs, the simulator's phase and tissue
 // columns are removed (a real rig has neither), `fit friction --json` fits them.
+#include "support/accuracy_seed.h"
 #include "support/needlebench_cli.h"
 
 #include <QFile>
@@ -11,7 +12,6 @@
 #include <QTextStream>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -22,18 +22,6 @@ struct Truth {
 };
 
 double relErr(double got, double want) { return std::fabs(got - want) / std::fabs(want); }
-
-// A fixed draw unless NB_ACCURACY_SEED repeats another (or "random" draws afresh); printed.
-unsigned drawSeed(unsigned fixed)
-{
-    bool ok = false;
-    const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
-    unsigned seed = wanted.toUInt(&ok);
-    if (!ok)
-        seed = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000) : fixed;
-    qInfo("seed %u (repeat with NB_ACCURACY_SEED=%u)", seed, seed);
-    return seed;
-}
 
 // The peak-speed line's errors per length against the truth; all 1 (100 %) when there is none.
 struct LineErrors {
@@ -602,7 +590,7 @@ private slots:
     // the run's phases and from force and position alone, on slow strokes drawn at random.
     void slabRestingOnTheSoftPartOfItsPlate()
     {
-        std::mt19937 rng(drawSeed(40263u));
+        std::mt19937 rng(nb::test::accuracySeed(40263u));
         auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
         int fits = 0, right = 0, gives = 0;
         for (int k = 0; k < 6; ++k) {

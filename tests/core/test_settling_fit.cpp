@@ -3,28 +3,13 @@
 // with pixel noise, it finds the onset, τ and the rest it was drawn with; it says when there
 // is nothing to fit.
 #include "core/settling_fit.h"
+#include "support/accuracy_seed.h"
 
 #include <QtTest>
 
-#include <chrono>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <random>
-
-namespace {
-
-unsigned drawSeed(unsigned fixed)
-{
-    bool ok = false;
-    const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
-    unsigned seed = wanted.toUInt(&ok);
-    if (!ok)
-        seed = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000) : fixed;
-    qInfo("seed %u (repeat with NB_ACCURACY_SEED=%u)", seed, seed);
-    return seed;
-}
-
-}  // namespace
 
 class TestSettlingFit : public QObject {
     Q_OBJECT
@@ -32,7 +17,7 @@ class TestSettlingFit : public QObject {
 private slots:
     void findsOnsetTauAndRest()
     {
-        std::mt19937 rng(drawSeed(771203u));
+        std::mt19937 rng(nb::test::accuracySeed(771203u));
         std::uniform_real_distribution<double> u(0.0, 1.0);
         double worstOnset_frames = 0.0, worstTau = 0.0, sumTau = 0.0;
         const int cases = 30;
@@ -70,7 +55,7 @@ private slots:
 
     void knownOnsetFitsTauAndRest()
     {
-        std::mt19937 rng(drawSeed(409117u));
+        std::mt19937 rng(nb::test::accuracySeed(409117u));
         std::uniform_real_distribution<double> u(0.0, 1.0);
         for (int i = 0; i < 30; ++i) {
             const double frame_s = 1.0 / 29.97, t0 = 2.0, tau = frame_s * (0.7 + 6.0 * u(rng)), travel = 1.0 + 4.0 * u(rng);
@@ -96,7 +81,7 @@ private slots:
     // one that did not stop is fitted as not stopping.
     void settlingThatStopsShort()
     {
-        std::mt19937 rng(drawSeed(620417u));
+        std::mt19937 rng(nb::test::accuracySeed(620417u));
         std::uniform_real_distribution<double> u(0.0, 1.0);
         for (int i = 0; i < 30; ++i) {
             const double frame_s = 1.0 / 29.97, t0 = 2.0, tau = frame_s * (1.0 + 2.0 * u(rng)), travel = 1.0 + 3.0 * u(rng);
@@ -146,7 +131,7 @@ private slots:
     // every point of the grid on its own picks, windows and weights as they come.
     void gridPicksWhatEveryPointPicks()
     {
-        std::mt19937 rng(drawSeed(552871u));
+        std::mt19937 rng(nb::test::accuracySeed(552871u));
         std::uniform_real_distribution<double> u(0.0, 1.0);
         for (int i = 0; i < 12; ++i) {
             const double frame_s = 1.0 / (u(rng) < 0.5 ? 25.0 : 29.97), t0 = 1.0 + u(rng), tau = 0.02 + 0.3 * u(rng);

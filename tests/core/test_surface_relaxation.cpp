@@ -4,10 +4,10 @@
 // frames/s at a random phase, with pixel noise. And what it must refuse: a still picture, a
 // trace that lost the surface, a video that ends too soon.
 #include "core/surface_relaxation.h"
+#include "support/accuracy_seed.h"
 
 #include <QtTest>
 
-#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -43,16 +43,7 @@ class TestSurfaceRelaxation : public QObject {
 private slots:
     void findsWhenTheSurfaceHasComeToRest()
     {
-        // One draw by default (its seed drawn once, not chosen for the result); NB_ACCURACY_SEED
-        // repeats another, NB_ACCURACY_SEED=random draws afresh.
-        bool ok = false;
-        const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
-        unsigned seed = wanted.toUInt(&ok);
-        if (!ok)
-            seed = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000)
-                                                     : 530302u;
-        qInfo("seed %u (repeat with NB_ACCURACY_SEED=%u)", seed, seed);
-        std::mt19937 rng(seed);
+        std::mt19937 rng(nb::test::accuracySeed(530302u));
         std::uniform_real_distribution<double> u(0.0, 1.0);
         for (int i = 0; i < 40; ++i) {
             Truth t;

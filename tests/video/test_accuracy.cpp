@@ -2,6 +2,7 @@
 // NB_ACCURACY_SEED repeats a draw): real simulated runs, real encoded videos, the real sync
 // pipeline; synthetic friction runs through the real fit. bench/bench_accuracy prints the
 // full table.
+#include "support/accuracy_seed.h"
 #include "support/case_share.h"
 #include "video/accuracy_matrix.h"
 #include "video/video_fixtures.h"
@@ -13,7 +14,6 @@
 
 #include <opencv2/videoio.hpp>
 
-#include <chrono>
 #include <cstring>
 
 using namespace nb::accuracy;
@@ -41,16 +41,8 @@ class TestAccuracy : public QObject {
 private slots:
     void initTestCase()
     {
-        bool ok = false;
-        // CI must not pass or fail by the draw: the suite repeats one draw (itself drawn at
-        // random once, not chosen for the result). NB_ACCURACY_SEED=random draws a fresh one,
-        // and bench_accuracy draws a fresh matrix every time; their misses are findings.
-        const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
-        seed_ = wanted.toUInt(&ok);
-        if (!ok)
-            seed_ = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000)
-                                                      : 371381u;
-        qInfo("accuracy matrix seed %u (repeat with NB_ACCURACY_SEED=%u)", seed_, seed_);
+        // bench_accuracy draws a fresh matrix every time; its misses are findings.
+        seed_ = nb::test::accuracySeed(371381u, "accuracy matrix seed");
     }
 
     void syncWithinAFrameAndHonest()

@@ -3,6 +3,7 @@
 // runs through `needlebench simulate`, their imaging video rendered, given a look and encoded
 // with the ffmpeg tool, read back with the real decoder. bench/bench_accuracy prints the full
 // table.
+#include "support/accuracy_seed.h"
 #include "video/phase_case_check.h"
 #include "video/phase_matrix.h"
 #include "video/video_fixtures.h"
@@ -10,7 +11,6 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <chrono>
 
 using namespace nb::accuracy;
 
@@ -23,13 +23,7 @@ private slots:
         if (!nb::test::haveFfmpeg())
             QSKIP("the ffmpeg tool is needed to encode the videos");
         // CI repeats one draw (its seed drawn at random once, not chosen for the result).
-        bool ok = false;
-        const QString wanted = qEnvironmentVariable("NB_ACCURACY_SEED");
-        unsigned seed = wanted.toUInt(&ok);
-        if (!ok)
-            seed = wanted == QLatin1String("random") ? unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 1000000)
-                                                     : 603917u;
-        qInfo("phase matrix seed %u (repeat with NB_ACCURACY_SEED=%u)", seed, seed);
+        const unsigned seed = nb::test::accuracySeed(603917u, "phase matrix seed");
         std::mt19937 rng(seed ^ 0x9e3779b9u);
         QTemporaryDir dir;
         const std::vector<PhaseMatrixCase> cases = drawPhaseMatrix(rng, 6, true);
