@@ -171,9 +171,10 @@ std::vector<double> restingTissueVelocity(const PlateGive& give, std::span<const
         for (std::size_t i = from + 1; i < n && sign * v_m_s[i] > 0.0; ++i) {
             const double dt = time_s[i] - time_s[i - 1];
             const double load = sign * force_N[i];
-            // The depth the force would hold the slab at, and the slab's way there: at once
-            // without losses, else over c/k (the exact step of the linear law for constant load).
-            const double toward = std::min(deepest, load / k);
+            // The depth the force would hold the slab at (none once it pulls the slab off the
+            // plate), and the slab's way there: at once without losses, else over c/k (the exact
+            // step of the linear law for a constant load).
+            const double toward = std::clamp(load / k, 0.0, deepest);
             const double next = c > 0.0 ? toward + (s - toward) * std::exp(-k * dt / c) : toward;
             out[i] = dt > 0.0 ? sign * (next - s) / dt : 0.0;
             s = next;
