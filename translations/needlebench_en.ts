@@ -6116,7 +6116,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../core/friction_fit.cpp" line="+537"/>
+        <location filename="../core/friction_fit.cpp" line="+616"/>
         <source>sample %1 is not a finite number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6603,7 +6603,7 @@ Exit status: 0 done; 1 failed (the message says why, naming the file or device);
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+61"/>
         <source>no phase c in the phases: the tissue never rested while the needle slid through it (a stroke longer than the slab&apos;s free travel gives phase c), so C and b cannot be measured</source>
         <translation type="unfinished"></translation>
     </message>
