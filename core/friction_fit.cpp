@@ -405,23 +405,14 @@ std::vector<Stretch> carriedStretches(const QStringList& phases, const std::vect
         }
         return out;
     }
-    // Turning points with hysteresis (a fiftieth of the top speed): a slow needle's velocity
-    // crosses zero many times in the noise as it turns.
+    // Between turning points (a fiftieth of the top speed either way), the run's first and last
+    // half-cycles left out: they start or end with the run, not at a turning point.
     double top = 0.0;
     for (std::size_t i = from; i < to; ++i)
         top = std::max(top, std::fabs(v[i]));
-    const double moving = 0.02 * top;
-    std::size_t turn = 0;  // none yet: the run's start is no turning point
-    int sign = 0;
-    for (std::size_t i = from; i < to; ++i) {
-        const int now = v[i] > moving ? 1 : v[i] < -moving ? -1 : sign;
-        if (now != sign && sign != 0) {
-            if (turn > 0)
-                out.push_back({turn, i, sign});
-            turn = i;
-        }
-        sign = now;
-    }
+    const std::vector<HalfCycle> cycles = halfCycles(std::span(v).subspan(from, to - from), 0.04 * top);
+    for (std::size_t k = 1; k + 1 < cycles.size(); ++k)
+        out.push_back({from + cycles[k].start, from + cycles[k].end, cycles[k].direction});
     return out;
 }
 
@@ -448,15 +439,15 @@ struct SlabOnPlate {
 // samples only: a fast stroke crosses a soft contact within a few smoothing windows), and takes
 // out of `rows` the samples where, by it, the tissue was still carried or settling.
 SlabOnPlate slabOnPlate(const Run& run, const ConditionedSignals& c, const std::vector<double>& friction,
-                        const std::vector<double>& forceRate, const QStringList& phases, double mass_kg, std::size_t trim,
-                        std::vector<std::size_t>& rows)
+                        const std::vector<double>& force3, const std::vector<double>& forceRate, const QStringList& phases,
+                        double mass_kg, std::size_t trim, std::vector<std::size_t>& rows)
 {
     const std::size_t n = run.size();
     const std::vector<double>& v = c.v_m_s;
     const int w = std::max(1, c.window);
-    std::vector<double> friction3 = movingAverage(run.force_N, 3);
+    std::vector<double> friction3(n);
     for (std::size_t i = 0; i < n; ++i)
-        friction3[i] -= mass_kg * c.a_m_s2[i];
+        friction3[i] = force3[i] - mass_kg * c.a_m_s2[i];
     const double noise3_N = c.noise_N * std::sqrt(double(w) / 3.0);
     const std::vector<Stretch> carried = carriedStretches(phases, v, trim, n - trim);
     SlabOnPlate slab;
@@ -683,8 +674,12 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     std::erase_if(rows, [&](std::size_t i) { return v[i] * a[i] <= 0.0 && std::fabs(v[i]) > arriving.of(v[i]); });
     const std::vector<double> forceRate = rateWithinSlides(rows, run.time_s, friction, w);
     rows = consistentlySliding(rows, v, a, f, mass0, c.noise_N, forceRate);
+    // The force averaged over 3 samples only: the break-aways (the slab's give, static friction)
+    // are sharp.
+    const std::vector<double> f3 = movingAverage(run.force_N, 3);
     // Without a measured trace, a slab resting on a soft contact still moves (plate_give.h).
-    const SlabOnPlate slab = relative ? SlabOnPlate{} : slabOnPlate(run, c, friction, forceRate, usePhases ? phases : QStringList(), options.mass_kg, trim, rows);
+    const SlabOnPlate slab =
+        relative ? SlabOnPlate{} : slabOnPlate(run, c, friction, f3, forceRate, usePhases ? phases : QStringList(), options.mass_kg, trim, rows);
     // Per direction (0: +, 1: -): how many sliding samples, and the needle speeds they span.
     std::size_t pos = 0, neg = 0;
     double slowest[2] = {INFINITY, INFINITY}, fastest[2] = {0.0, 0.0};
@@ -917,7 +912,6 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // its extreme in the direction of the motion that follows it; the other extreme is the
     // force left over from the previous direction, not a static limit. A 3-sample average
     // only: the stretches are short and a wider window would flatten the peaks.
-    const std::vector<double> f3 = movingAverage(run.force_N, 3);
     const std::size_t last = n - trim;
     auto sticking = [&](std::size_t i) {
         return usePhases ? phases[qsizetype(i)] == QLatin1String("a") : std::fabs(v[i]) < half;

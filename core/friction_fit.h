@@ -90,8 +90,9 @@ struct FrictionFit {
     // plain line). k = b / springBack is the slab's stiffness against the plate, N/m.
     double springBackP_s = 0.0, springBackN_s = 0.0;
     // Each direction's slab give against its plate, read where the tissue is carried into it
-    // (core/plate_give.h), where the run shows one: the sliding line is then written in
-    // v - Ḟ/k for the samples resting within the force it was read to (no tissue trace given).
+    // (core/plate_give.h), where the run shows one that explains its sliding force: the sliding
+    // line is then written in the needle's velocity less the resting tissue's, driven by that
+    // give (restingTissueVelocity). Never read when a tissue trace is given.
     std::optional<PlateGive> plateGiveP, plateGiveN;
     // Each direction's sliding residual (rms) over the force's noise: about 1 when the line
     // explains the force; above 2 its C and b are flagged as not determined.

@@ -7,6 +7,7 @@
 #include "label_suggest.h"
 #include "run.h"
 #include "settling_fit.h"
+#include "signal.h"
 #include "tissue_motion.h"
 
 #include <QString>
@@ -18,11 +19,7 @@
 
 namespace nb::phase_reading {
 
-// Half-cycles [start, end) between turning points, with their direction.
-struct HalfCycle {
-    std::size_t start, end;
-    int direction;
-};
+using nb::HalfCycle;  // core/signal.h
 
 // A creep read from the force (creepRest).
 struct Creep {

@@ -43,8 +43,9 @@ struct PlateGive {
 // within a few of the fit's smoothing windows), and `smooth_N` the same over `window` samples,
 // which finds the rise. `carried`: [from, to) sample ranges in which the tissue is carried in
 // the direction `sign` (+1, -1), each holding where it breaks away: the force's extreme that
-// way, sought up to a few samples past `to`, which it must fall from. `noise_N`: `force_N`'s noise. nullopt where fewer
-// than two stretches, or fewer than half of them, show a rise to a break-away.
+// way, sought up to a few samples past `to`, which it must fall from. `noise_N`: `force_N`'s
+// noise. nullopt where fewer than two stretches, or fewer than half of them, show a rise to a
+// break-away.
 std::optional<PlateGive> plateGive(std::span<const double> x_m, std::span<const double> v_m_s, std::span<const double> smooth_N,
                                    std::span<const double> force_N, std::span<const std::pair<std::size_t, std::size_t>> carried, int sign,
                                    double noise_N, std::size_t window);

@@ -56,4 +56,31 @@ int windowForDuration(std::span<const double> time_s, double seconds)
     return std::max(1, int(std::lround(seconds / step)));
 }
 
+std::vector<HalfCycle> halfCycles(std::span<const double> v, double band)
+{
+    std::vector<HalfCycle> out;
+    int dir = 0;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const int d = v[i] > band / 2 ? 1 : (v[i] < -band / 2 ? -1 : 0);
+        if (d == 0 || d == dir)
+            continue;
+        // The turning point is where the velocity crossed zero before this sample.
+        std::size_t turn = i;
+        while (turn > start && v[turn - 1] * d > 0)
+            --turn;
+        if (dir != 0)
+            out.push_back({start, turn, dir});
+        start = turn;
+        dir = d;
+    }
+    if (dir != 0) {
+        std::size_t end = v.size();
+        while (end > start + 1 && std::abs(v[end - 1]) < band / 2)
+            --end;  // the needle at rest after the last stroke belongs to no phase
+        out.push_back({start, end, dir});
+    }
+    return out;
+}
+
 }  // namespace nb

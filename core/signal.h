@@ -20,4 +20,14 @@ std::vector<double> derivative(std::span<const double> time_s, std::span<const d
 // Moving-average window [samples] covering `seconds` at the run's median sample rate (>= 1).
 int windowForDuration(std::span<const double> time_s, double seconds);
 
+// Half-cycles [start, end) of a to-and-fro motion between its turning points, with their
+// direction (+1, -1): a new one begins where the velocity `v` crosses zero before it leaves
+// ±band/2 the other way (a slow needle's velocity crosses zero many times in the noise as it
+// turns). The needle at rest after the last stroke belongs to none.
+struct HalfCycle {
+    std::size_t start, end;
+    int direction;
+};
+std::vector<HalfCycle> halfCycles(std::span<const double> v, double band);
+
 }  // namespace nb
