@@ -117,6 +117,50 @@ private slots:
         QVERIFY2(r.err.contains(QStringLiteral("no phase c in the phases")), qPrintable(r.err));
     }
 
+    // A plate gap nearly the stroke's width (5.7 mm of ±7 mm): the slab is carried most of each
+    // stroke and meets the plate only near its end. As the needle starts from a turning point the
+    // slab, pushed off the plate behind, slips and falls behind for a frame or two, then catches
+    // up and is carried on: a, in the simulator as in the thesis, since it has not met the plate
+    // ahead. The sliding line is drawn from little here, and the band found (±15 mm/s) is wider
+    // than half the needle's top speed; a catch-up was believed only above twice the band's
+    // edge, so a ended at the slip in every stroke moving in (62 % of samples agreed; a random
+    // draw of slabs with wide gaps, seed 9503 case 15, outside bench_accuracy's matrix).
+    void aSlipAfterTheTurnIsNotThePlate()
+    {
+        const QString full = dir_.filePath(QStringLiteral("slip.csv")), video = dir_.filePath(QStringLiteral("slip.avi"));
+        nbtest::CliResult r = nbtest::runCli({"simulate", "--protocol", "friction", "--tissue", "liver5", "--frequency-hz", "0.6765",
+                                              "--amplitude-mm", "7.0525", "--plate-gap-mm", "5.7194", "--stick-band-mm-s", "4.8859",
+                                              "--force-noise-n", "0.0036", "--thickness-mm", "10.3534", "--cycles", "4", "--seed", "138564",
+                                              "--out", full, "--video", video, "--video-offset-s", "0"},
+                                             240000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        nb::Run run = nb::readRunFile(full).run;
+        const std::vector<QString> truth = *run.textColumn(QStringLiteral("phase"));
+        run.text.clear();
+        run.numeric.erase(std::remove_if(run.numeric.begin(), run.numeric.end(),
+                                         [](const auto& c) { return c.first == QLatin1String("tissue_position_mm"); }),
+                          run.numeric.end());
+        const QString blind = dir_.filePath(QStringLiteral("slip-blind.csv")), out = dir_.filePath(QStringLiteral("slip.labels.csv"));
+        nb::writeRunFile(blind, run);
+        r = nbtest::runCli({"labels", "suggest", blind, "--video", video, "--video-offset-s", "0", "--out", out, "--json"}, 240000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.json()["video"].toObject()["used"].toBool(), qPrintable(r.out + r.err));
+        const QStringList suggested = nb::phasePerSample(nb::readLabelsFile(out), run.time_s);
+        int inA = 0, readA = 0, inPhase = 0, agreed = 0;
+        for (std::size_t i = 0; i < truth.size(); ++i) {
+            if (truth[i].isEmpty())
+                continue;
+            ++inPhase;
+            agreed += suggested.value(qsizetype(i)) == truth[i];
+            if (truth[i] == QLatin1String("a"))
+                ++inA, readA += suggested.value(qsizetype(i)) == QLatin1String("a");
+        }
+        const QString figures = QStringLiteral("a read as a: %1 of %2; agreement %3 of %4").arg(readA).arg(inA).arg(agreed).arg(inPhase);
+        qInfo("%s", qPrintable(figures));
+        QVERIFY2(readA >= 0.95 * inA, qPrintable(figures));
+        QVERIFY2(agreed >= 0.85 * inPhase, qPrintable(figures));
+    }
+
     // Without a video the command is what it was: the same keys, labels from force and position.
     void withoutAVideo()
     {
