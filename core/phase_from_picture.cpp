@@ -314,16 +314,10 @@ QString placeByPicture(const HalfCycle& h, double t0, double t1, StrokeBounds& b
         }
         // Two readings in a row decide: one may be a repeated or garbled frame. Readings
         // summed over a few pairs share frames, and one repeated frame pulls down each
-        // reading that holds it, so the second must be over frames of its own. Or so far
-        // behind that it would be even with those shared frames carried in full: near the
-        // turning point, where the needle moves the picture little, the second reading adds
-        // up pairs back into the first's, and the stroke may end before a third (liver2 at
-        // 0.93 Hz, ±4.5 mm: the tissue seen stopping in each withdrawal, read as carried to
-        // the turning point).
+        // reading that holds it, so the second must be over frames of its own.
         if (!firstBehind) {
-            const double shared = std::clamp(std::round((pendingBehindEnd_s - r.from_s) / frame_s), 0.0, double(r.pairs));
             if ((clear && vtk < 0.5 * vn) || shortfall_mm > noise_mm + 0.4 * needle_mm) {
-                if (pendingBehind && (r.from_s >= pendingBehindEnd_s - 1e-9 || (clear && vtk < 0.5 * vn * (r.pairs - shared) / r.pairs))) {
+                if (pendingBehind && r.from_s >= pendingBehindEnd_s - 1e-9) {
                     firstBehind = pendingBehind;
                 } else if (!pendingBehind) {
                     pendingBehind = at_s + frameHalf_s;
