@@ -243,6 +243,7 @@ QString placeByPicture(const HalfCycle& h, double t0, double t1, StrokeBounds& b
     std::optional<double> firstBehind, pendingBehind, pendingRest;
     double pendingBehindEnd_s = t0;  // where the frames of the pending reading end
     bool followed = false, measured = false, anyClear = false, wasNotResting = false;
+    bool behindOnSharedFrames = false;
     double lastFollow = t0, lastMoving = t0, lastClearFollow = t0;
     const double frame_s = 2.0 * frameHalf_s;
     std::optional<double> reference_mm;
@@ -314,10 +315,24 @@ QString placeByPicture(const HalfCycle& h, double t0, double t1, StrokeBounds& b
         }
         // Two readings in a row decide: one may be a repeated or garbled frame. Readings
         // summed over a few pairs share frames, and one repeated frame pulls down each
-        // reading that holds it, so the second must be over frames of its own.
+        // reading that holds it, so the second must be over frames of its own. Or so far
+        // behind that it would be even with those shared frames carried in full: near the
+        // turning point, where the needle moves the picture little, the second reading adds
+        // up pairs back into the first's, and the stroke may end before a third (liver2 at
+        // 0.93 Hz, ±4.5 mm: the tissue seen stopping in each withdrawal, read as carried to
+        // the turning point).
         if (!firstBehind) {
             if ((clear && vtk < 0.5 * vn) || shortfall_mm > noise_mm + 0.4 * needle_mm) {
-                if (pendingBehind && r.from_s >= pendingBehindEnd_s - 1e-9) {
+                const bool ownFrames = r.from_s >= pendingBehindEnd_s - 1e-9;
+                auto behindBeyondShared = [&] {
+                    if (!clear)
+                        return false;
+                    // The pairs of frames of the first reading within this one.
+                    const double shared = std::clamp(std::round((pendingBehindEnd_s - r.from_s) / frame_s), 0.0, double(r.pairs));
+                    return vtk < 0.5 * vn * (r.pairs - shared) / r.pairs;
+                };
+                if (pendingBehind && (ownFrames || behindBeyondShared())) {
+                    behindOnSharedFrames = !ownFrames;
                     firstBehind = pendingBehind;
                 } else if (!pendingBehind) {
                     pendingBehind = at_s + frameHalf_s;
@@ -353,6 +368,12 @@ QString placeByPicture(const HalfCycle& h, double t0, double t1, StrokeBounds& b
         }
         wasNotResting = !resting;
     }
+    // Confirmed on shared frames only as far as the picture then sees the tissue rest: a stop
+    // not seen at rest may be the picture a frame behind a tissue still moving, and without a
+    // rest to place c by, the force's c would be given up for none (liver1 at 0.57 Hz, the
+    // rendered view coded as DV: 4 of 6 withdrawals lost their c).
+    if (behindOnSharedFrames && !cWindow)
+        firstBehind.reset();
     // The tissue slows down once it meets the plate (b1) and still reads as keeping up
     // in the pair of frames it does so: a may have ended a frame before lastFollow.
     if (firstBehind)

@@ -176,6 +176,44 @@ private slots:
         QVERIFY2(agreed >= 0.85 * inPhase, qPrintable(figures));
     }
 
+    // A short fast stroke (liver2 at 0.93 Hz, ±4.5 mm, a 3.3 mm gap): the tissue meets the plate
+    // late in each withdrawal and stops there within a frame, a few frames before the turning
+    // point. The picture reads it behind the needle and at rest in the last two readings, but the
+    // second, as the needle slows, adds up pairs of frames back into the first's and the stroke
+    // ends before a third: one repeated frame could have made both, so the stop was not believed
+    // and the withdrawal read as carried to its turning point (2 of 3 such strokes). A reading so
+    // far behind that it would be behind even with the shared frames carried in full is believed,
+    // where the picture then sees the tissue rest.
+    void aStopSeenNearTheTurnIsRest()
+    {
+        const std::optional<Simulated> s =
+            simulateWithVideo(dir_, QStringLiteral("stop"),
+                              {"--tissue", "liver2", "--frequency-hz", "0.9337", "--amplitude-mm", "4.4648", "--plate-gap-mm", "3.3073",
+                               "--stick-band-mm-s", "1.1523", "--force-noise-n", "0.0008", "--thickness-mm", "20.6163", "--cycles", "4", "--seed", "425003"},
+                              QStringLiteral("0.8"));
+        QVERIFY(s);
+        const std::vector<QString>& truth = s->truth;
+        const nb::Run& run = s->blind;
+        const QString out = dir_.filePath(QStringLiteral("stop.labels.csv"));
+        const nbtest::CliResult r = nbtest::runCli({"labels", "suggest", s->blindPath, "--video", s->video, "--video-offset-s", "0.8", "--out", out}, 240000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const nb::Labels labels = nb::readLabelsFile(out);
+        // Each true start of c in a withdrawal after the first second, against the nearest
+        // suggested start of c.
+        int stops = 0;
+        for (std::size_t i = 1; i < truth.size(); ++i) {
+            if (truth[i] != QLatin1String("c") || truth[i - 1] == QLatin1String("c") || run.time_s[i] < 1.0 || run.position_mm[i] >= run.position_mm[i - 1])
+                continue;
+            ++stops;
+            double nearest_s = 1e9;
+            for (const nb::Label& l : labels)
+                if (l.label == QLatin1String("c"))
+                    nearest_s = std::min(nearest_s, std::abs(l.start_s - run.time_s[i]));
+            QVERIFY2(nearest_s <= 2.0 / 29.97, qPrintable(QStringLiteral("c at %1 s suggested %2 s away").arg(run.time_s[i]).arg(nearest_s)));
+        }
+        QCOMPARE(stops, 3);
+    }
+
     // Without a video the command is what it was: the same keys, labels from force and position.
     void withoutAVideo()
     {
