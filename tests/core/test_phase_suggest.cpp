@@ -315,6 +315,16 @@ private slots:
             << QStringList{"--tissue", "liver2", "--frequency-hz", "0.6350", "--amplitude-mm", "3.172", "--plate-gap-mm", "2.263",
                            "--stick-band-mm-s", "4.12", "--force-noise-n", "0.0014", "--thickness-mm", "30.0", "--cycles", "3",
                            "--seed", "530634"} << 0.90;
+        // One direction carried all the way to the plate and taken back before it slides (a
+        // gap 5.7 mm of a 7.1 mm stroke, a thin heavy slab): the slab's inertia, pulling ahead as
+        // the needle speeds up and holding back as it slows, drew a line rising with speed from
+        // below zero (C −0.17 ± 0.03 N, b above two standard errors), read as sliding: c from
+        // mid-stroke on (62.4 %; random draw at short reach, seed 9503 case 15). A C clearly
+        // below zero is no sliding, whatever b does.
+        QTest::newRow("liver5 0.68 Hz gap 5.7 mm of 7.1, carried one way")
+            << QStringList{"--tissue", "liver5", "--frequency-hz", "0.6765", "--amplitude-mm", "7.0525", "--plate-gap-mm", "5.7194",
+                           "--stick-band-mm-s", "4.8859", "--force-noise-n", "0.0036", "--thickness-mm", "10.3534", "--cycles", "4",
+                           "--seed", "138564"} << 0.85;
         // Not where the slab, thrown back off the plate at a fast reversal, slipped back about as
         // far as it had slid in: the push ends 0.1 mm (4.6 % of its reach) from where it began
         // (liver2 at 0.95 Hz, 55 mm/s; seed 4713 case 28: 90.9 %, 89.3 % read as never slid).
