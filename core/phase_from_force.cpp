@@ -642,6 +642,20 @@ StrokeBounds boundsFromForce(const HalfCycle& h, const ForceReading& f, const Su
         std::size_t fitEnd = last;
         while (fitEnd > cStart && std::abs(v[fitEnd - 1]) < 2.0 * slowest)
             --fitEnd;
+        // Nor past where the tissue sticks again (the force back above the line by more than
+        // its tolerance, after the break-away's peak and the creep's shortfall below it): the
+        // settling's level would bend to meet that jump.
+        std::size_t fallFrom = cStart;
+        while (fallFrom + 1 < fitEnd && over(fallFrom + 1) >= over(fallFrom))
+            ++fallFrom;
+        bool under = false;
+        for (std::size_t i = fallFrom; i < fitEnd; ++i) {
+            if (under && over(i) > tolerance) {
+                fitEnd = i;
+                break;
+            }
+            under = under || over(i) < 0.0;
+        }
         if (cStart + 10 < fitEnd && !held[h.direction > 0 ? 0 : 1]) {
             std::vector<double> ts, speed, shortfall;
             for (std::size_t i = cStart; i < fitEnd; ++i) {
