@@ -190,7 +190,7 @@ bool pictureTrusted(const Run& run, const TissueMotion* tissue, double videoNois
     if (tissue && tissue->px_per_mm > 0.0 && tissue->time_s.size() > 1) {
         const double frame_s = (tissue->time_s.back() - tissue->time_s.front()) / double(tissue->time_s.size() - 1);
         const QStringList plain = phasePerSample(suggestPhaseLabels(run, nullptr, o), tissue->time_s);
-        int judged = 0, agreed = 0, impossible = 0, judgedInA = 0, carriedInA = 0;
+        int judged = 0, agreed = 0, impossible = 0, impossibleBeyondNoise = 0, judgedInA = 0, carriedInA = 0;
         for (std::size_t k = 0; k < tissue->time_s.size() && k < tissue->velocity_mm_s.size(); ++k) {
             const PictureReading r = pictureReading(run, *tissue, k, run.time_s.front(), videoNoise_mm_s, 0.5 * frame_s, kTrustSum_px);
             if (!r.clear)
@@ -204,13 +204,25 @@ bool pictureTrusted(const Run& run, const TissueMotion* tissue, double videoNois
             const bool carried = ratio >= 0.5 && ratio <= 1.5, resting = std::abs(ratio) < 0.25;
             agreed += p == QLatin1String("a") ? carried : resting;
             impossible += ratio < -0.25 || ratio > 1.5;
+            // The ratio's own noise: the reading's over the needle's speed.
+            const double noise = videoNoise_mm_s / std::sqrt(double(r.pairs)) / std::abs(r.needle_mm_s());
+            impossibleBeyondNoise += ratio < -0.25 - noise || ratio > 1.5 + noise;
             if (p == QLatin1String("a")) {
                 ++judgedInA;
                 carriedInA += carried;
             }
         }
         const bool seesCarried = judgedInA < kMinJudged / 2 || 2 * carriedInA >= judgedInA;
-        videoTrusted = judged >= kMinJudged && (agreed >= 0.9 * judged || (impossible <= 0.04 * judged && seesCarried));
+        // A slow needle moves the picture a pixel or two a frame, and single readings scatter
+        // past what a tissue can do by their own noise (liver5 at 0.34 Hz, ±2.7 mm: 6 % of
+        // them, the force wrong by 0.2 s in every stroke and the picture right; seed 9303 case
+        // 4 at the matrix's edge, 82.7 % from the force). That is no garbled picture where it
+        // sees the tissue carried nearly everywhere the force has it so. A noisy one that sees
+        // it carried in 72 % of them stays unchecked (bench_accuracy --seed 612302 phase case
+        // 0, heavy noise: 98.5 % from the force, 93.4 % had it been trusted).
+        const bool seesCarriedClearly = judgedInA >= kMinJudged && carriedInA >= 0.8 * judgedInA;
+        videoTrusted = judged >= kMinJudged && (agreed >= 0.9 * judged || (impossible <= 0.04 * judged && seesCarried) ||
+                                                (impossibleBeyondNoise <= 0.04 * judged && seesCarriedClearly));
     }
     return videoTrusted;
 }
