@@ -196,6 +196,14 @@ private slots:
         QTest::newRow("prostate 0.166 Hz band 5.65")
             << QStringList{"--tissue", "prostate", "--frequency-hz", "0.166", "--amplitude-mm", "5.15", "--stick-band-mm-s", "5.65",
                            "--plate-gap-mm", "0.8", "--cycles", "3", "--seed", "228564"} << 0.9;
+        // Held so, the force also dips for 50 ms to 38 % of its level every 0.2-0.4 s, the tissue
+        // sticking again for a moment; the deepest dip ended c there, 1.9 s late in each
+        // withdrawal (80.1 %; liver3 at 0.08 Hz, random draw at the matrix's edge, seed 9306
+        // case 16).
+        QTest::newRow("liver3 0.081 Hz band 5.34, dips while held")
+            << QStringList{"--tissue", "liver3", "--frequency-hz", "0.0814", "--amplitude-mm", "8.1776", "--plate-gap-mm", "0.3808",
+                           "--stick-band-mm-s", "5.3373", "--force-noise-n", "0.0056", "--thickness-mm", "34.2039", "--cycles", "2",
+                           "--seed", "406378"} << 0.9;
         // A thin slab of a heavy lobe (19 and 12 mm, 0.69 kg): its sliding force is small beside
         // the plate's losses, so as the tissue leaves the plate behind at a turning point the
         // force dips almost to the sliding line of the new direction, then stays low while the

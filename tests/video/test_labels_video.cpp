@@ -20,7 +20,7 @@ namespace {
 struct Simulated {
     nb::Run blind;
     std::vector<QString> truth;  // the simulator's phase per sample
-    QString blindPath, video;
+    QString blindPath, video, videoOffset_s;
 };
 
 // `name`.csv and `name`.avi in `dir`, the video starting `videoOffset_s` early; `args` say the
@@ -31,6 +31,7 @@ std::optional<Simulated> simulateWithVideo(const QTemporaryDir& dir, const QStri
     const QString full = dir.filePath(name + QStringLiteral(".csv"));
     s.video = dir.filePath(name + QStringLiteral(".avi"));
     s.blindPath = dir.filePath(name + QStringLiteral("-blind.csv"));
+    s.videoOffset_s = videoOffset_s;
     const nbtest::CliResult r = nbtest::runCli(QStringList{"simulate", "--protocol", "friction"} + args +
                                                    QStringList{"--out", full, "--video", s.video, "--video-offset-s", videoOffset_s},
                                                240000);
@@ -46,6 +47,13 @@ std::optional<Simulated> simulateWithVideo(const QTemporaryDir& dir, const QStri
                           s.blind.numeric.end());
     nb::writeRunFile(s.blindPath, s.blind);
     return s;
+}
+
+// labels suggest on the run without its truth, with its video at the offset it was made with.
+nbtest::CliResult suggestWithItsVideo(const Simulated& s, const QString& out, const QStringList& extra = {})
+{
+    return nbtest::runCli(QStringList{"labels", "suggest", s.blindPath, "--video", s.video, "--video-offset-s", s.videoOffset_s, "--out", out} + extra,
+                          240000);
 }
 
 // The share of samples with a true phase whose suggested phase (from the labels file) is the
@@ -159,8 +167,8 @@ private slots:
                                "--stick-band-mm-s", "4.8859", "--force-noise-n", "0.0036", "--thickness-mm", "10.3534", "--cycles", "4", "--seed", "138564"},
                               QStringLiteral("0"));
         QVERIFY(s);
-        const QString &blind = s->blindPath, &video = s->video, out = dir_.filePath(QStringLiteral("slip.labels.csv"));
-        nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind, "--video", video, "--video-offset-s", "0", "--out", out, "--json"}, 240000);
+        const QString out = dir_.filePath(QStringLiteral("slip.labels.csv"));
+        const nbtest::CliResult r = suggestWithItsVideo(*s, out, {"--json"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY2(r.json()["video"].toObject()["used"].toBool(), qPrintable(r.out + r.err));
         const double readA = samplesAgreeing(s->truth, s->blind.time_s, out, QStringLiteral("a")),
@@ -190,7 +198,7 @@ private slots:
         const std::vector<QString>& truth = s->truth;
         const nb::Run& run = s->blind;
         const QString out = dir_.filePath(QStringLiteral("stop.labels.csv"));
-        const nbtest::CliResult r = nbtest::runCli({"labels", "suggest", s->blindPath, "--video", s->video, "--video-offset-s", "0.8", "--out", out}, 240000);
+        const nbtest::CliResult r = suggestWithItsVideo(*s, out);
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const nb::Labels labels = nb::readLabelsFile(out);
         // Each true start of c in a withdrawal after the first second, against the nearest
@@ -209,7 +217,6 @@ private slots:
         QCOMPARE(stops, 3);
     }
 
-    // Without a video the command is what it was: the same keys, labels from force and position.
     // A slow short stroke (liver5 at 0.34 Hz, ±2.7 mm, 5.8 mm/s at most) carries the tissue across
     // the plate's soft part, the force rising all the way, until it breaks away on the stiff part.
     // The force alone ends a where the soft part is met, 0.2 s early in every stroke, and the
@@ -226,8 +233,8 @@ private slots:
                                "--stick-band-mm-s", "1.7395", "--force-noise-n", "0.0017", "--thickness-mm", "18.6901", "--cycles", "4", "--seed", "655155"},
                               QStringLiteral("0"));
         QVERIFY(s);
-        const QString &blind = s->blindPath, &video = s->video, out = dir_.filePath(QStringLiteral("slowcarry.labels.csv"));
-        nbtest::CliResult r = nbtest::runCli({"labels", "suggest", blind, "--video", video, "--video-offset-s", "0", "--out", out}, 240000);
+        const QString out = dir_.filePath(QStringLiteral("slowcarry.labels.csv"));
+        const nbtest::CliResult r = suggestWithItsVideo(*s, out);
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QFile file(out);
         QVERIFY(file.open(QIODevice::ReadOnly));
@@ -240,6 +247,7 @@ private slots:
         QVERIFY2(readA >= 0.9, qPrintable(figures));
     }
 
+    // Without a video the command is what it was: the same keys, labels from force and position.
     void withoutAVideo()
     {
         const QString out = dir_.filePath(QStringLiteral("plain.labels.csv"));
