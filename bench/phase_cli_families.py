@@ -25,7 +25,7 @@ import subprocess
 import sys
 import tempfile
 
-TISSUES = ['liver1', 'liver2', 'liver3', 'liver5', 'liver7', 'prostate']
+from friction_cli_matrix import TISSUES, strip_truth
 PHASES = ('a', 'b1', 'b2', 'c')
 
 
@@ -61,17 +61,10 @@ def arguments(c):
     return out
 
 
-def read_run(path):
-    """Header lines, column names and rows of a run file."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    header = [l for l in lines if l.startswith('#')]
-    rows = list(csv.reader(l for l in lines if not l.startswith('#')))
-    return header, rows[0], rows[1:]
-
-
 def agreement(run_path, labels_path):
-    _, names, rows = read_run(run_path)
+    with open(run_path) as f:
+        rows = list(csv.reader(l for l in f if not l.startswith('#')))
+    names, rows = rows[0], rows[1:]
     t_col, p_col = names.index('time_s'), names.index('phase')
     with open(labels_path) as f:
         labels = [l for l in csv.DictReader(l for l in f if not l.startswith('#'))
@@ -102,13 +95,7 @@ def one(exe, work, i, c, video):
     p = subprocess.run(make, capture_output=True, text=True)
     if p.returncode:
         return i, None, p.stderr.strip()
-    header, names, rows = read_run(run)
-    keep = [k for k, n in enumerate(names) if n not in ('phase', 'tissue_position_mm')]
-    with open(blind, 'w', newline='') as f:
-        f.write(''.join(h + '\n' for h in header))
-        w = csv.writer(f, lineterminator='\n')
-        w.writerow([names[k] for k in keep])
-        w.writerows([row[k] for k in keep] for row in rows)
+    strip_truth(run, blind)
     p = subprocess.run(suggest, capture_output=True, text=True)
     if p.returncode:
         return i, None, p.stderr.strip()

@@ -483,7 +483,7 @@ StrokeBounds boundsFromForce(const HalfCycle& h, const ForceReading& f, const Su
     const std::vector<double>& v = f.v;
     const std::vector<double>& force = f.force;
     const std::optional<FrictionFit>& lines = f.lines.fit;
-    const bool* held = f.lines.held;
+    const bool held = f.lines.held[h.direction > 0 ? 0 : 1];  // this direction's force held at static friction
     const double noise_N = f.lines.noise_N;
     const int half = f.half;
     const double rate = f.rate;
@@ -558,9 +558,9 @@ StrokeBounds boundsFromForce(const HalfCycle& h, const ForceReading& f, const Su
                 off = 0;
                 onLine = true;
                 cStart = i - 1;
-            } else if (held[h.direction > 0 ? 0 : 1] && off_N >= -0.5 * std::abs(line(i - 1))) {
+            } else if (held && off_N >= -0.5 * std::abs(line(i - 1))) {
                 continue;  // stuck again against the plate for a moment: still at rest there
-            } else if (onLine && ++off >= 5 && (!held[h.direction > 0 ? 0 : 1] || run.time_s[cStart] - run.time_s[i - 1] > kHeldDip_s)) {
+            } else if (onLine && ++off >= 5 && (!held || run.time_s[cStart] - run.time_s[i - 1] > kHeldDip_s)) {
                 break;
             }
         }
@@ -662,7 +662,7 @@ StrokeBounds boundsFromForce(const HalfCycle& h, const ForceReading& f, const Su
             }
             under = under || over(i) < 0.0;
         }
-        if (cStart + 10 < fitEnd && !held[h.direction > 0 ? 0 : 1]) {
+        if (cStart + 10 < fitEnd && !held) {
             std::vector<double> ts, speed, shortfall;
             for (std::size_t i = cStart; i < fitEnd; ++i) {
                 ts.push_back(run.time_s[i]);
@@ -784,7 +784,7 @@ StrokeBounds boundsFromForce(const HalfCycle& h, const ForceReading& f, const Su
             }
             if (!reachedBefore && !fell && first < last && first <= cStart + (first - before) && before > aEnd &&
                 pushed_N >= tolerance && std::abs(v[before]) <= kSlowing * std::abs(v[aEnd]) && jump_N >= 3.0 * tolerance &&
-                (held[h.direction > 0 ? 0 : 1] || strongest_N - h.direction * line(before) > tolerance)) {
+                (held || strongest_N - h.direction * line(before) > tolerance)) {
                 brokeAway = middle;
                 cStart = std::max(cStart, first);
             }

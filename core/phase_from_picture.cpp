@@ -203,10 +203,11 @@ bool pictureTrusted(const Run& run, const TissueMotion* tissue, double videoNois
             // Carried: with the needle, not faster; resting: still, not moving backwards.
             const bool carried = ratio >= 0.5 && ratio <= 1.5, resting = std::abs(ratio) < 0.25;
             agreed += p == QLatin1String("a") ? carried : resting;
-            impossible += ratio < -0.25 || ratio > 1.5;
-            // The ratio's own noise: the reading's over the needle's speed.
-            const double noise = videoNoise_mm_s / std::sqrt(double(r.pairs)) / std::abs(r.needle_mm_s());
-            impossibleBeyondNoise += ratio < -0.25 - noise || ratio > 1.5 + noise;
+            // Backwards, or faster than half again the needle, by more than `margin`; the ratio's
+            // own noise is the reading's over the needle's speed.
+            auto impossibleBy = [&](double margin) { return ratio < -0.25 - margin || ratio > 1.5 + margin; };
+            impossible += impossibleBy(0.0);
+            impossibleBeyondNoise += impossibleBy(videoNoise_mm_s / std::sqrt(double(r.pairs)) / std::abs(r.needle_mm_s()));
             if (p == QLatin1String("a")) {
                 ++judgedInA;
                 carriedInA += carried;
