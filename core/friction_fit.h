@@ -95,7 +95,9 @@ struct FrictionFit {
     // give (restingTissueVelocity). Never read when a tissue trace is given.
     std::optional<PlateGive> plateGiveP, plateGiveN;
     // Each direction's sliding residual (rms) over the force's noise: about 1 when the line
-    // explains the force; above 2 its C and b are flagged as not determined.
+    // explains the force; above 2 its C and b are flagged as not determined. The larger of the
+    // line's through the samples it is fitted to and the one through those the force-rate check
+    // left out as well (friction_fit.cpp, steadilySliding).
     double residualToNoiseP = 0.0, residualToNoiseN = 0.0;
     // The needle speeds (m/s, magnitudes) of each direction's sliding samples: C is the line
     // carried from there down to zero speed.

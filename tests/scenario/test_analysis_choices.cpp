@@ -151,11 +151,13 @@ private slots:
         QSettings().clear();
     }
 
-    // One noisy liver 3 slab at three frequencies (bench_accuracy --seed 88, rig set 2), force
-    // and position only, read in the real window's Analysis while the stage moves and records
-    // the next insertion. Each run's own Cp is 6-8 % high; the line through the
-    // runs' peak speeds is within 2 %. Before, the set had no such line and no run was named;
-    // now the summary carries the line and the status names the run that departs from it.
+    // One noisy liver 3 slab at three frequencies (after bench_accuracy --seed 88, rig set 2),
+    // force and position only, read in the real window's Analysis while the stage moves and
+    // records the next insertion. The 0.51 Hz run's own Cp is 5.6 % high, 6.0 % from the line
+    // through the runs' peak speeds (the draw test_rig_friction's
+    // runsOffTheLineAreToldWhateverTheirOwnError takes). Before, the set had no such line and no
+    // run was named; now the summary carries the line and the status names the run that departs
+    // from it.
     void runOffThePeakSpeedLineIsNamed()
     {
         QTemporaryDir tmp;
@@ -168,7 +170,7 @@ private slots:
                 {QStringLiteral("simulate"), QStringLiteral("--protocol"), QStringLiteral("friction"), QStringLiteral("--tissue"), QStringLiteral("liver3"),
                  QStringLiteral("--frequency-hz"), hz[k], QStringLiteral("--amplitude-mm"), QStringLiteral("7.009"), QStringLiteral("--stick-band-mm-s"),
                  QStringLiteral("3.465"), QStringLiteral("--plate-gap-mm"), QStringLiteral("1.431"), QStringLiteral("--force-noise-n"),
-                 QStringLiteral("0.00930"), QStringLiteral("--cycles"), QStringLiteral("7"), QStringLiteral("--seed"), QString::number(83899 + k),
+                 QStringLiteral("0.00930"), QStringLiteral("--cycles"), QStringLiteral("7"), QStringLiteral("--seed"), QString::number(83923 + k),
                  QStringLiteral("--out"), full});
             QVERIFY2(sim.code == 0, qPrintable(sim.err));
             nb::writeRunFile(QDir(sessionDir).filePath(QStringLiteral("run_00%1_sine.csv").arg(k + 1)),
