@@ -167,8 +167,10 @@ bool FrameIndex::decodedAcrossDamage(int n) const
         // test_frame_reader madeUpTimesAfterDamageAreLeftOut): the 60 frames from it were made up.
         if (at_s > d.after_s)
             return key_s < d.before_s;
+        // The last picture given before the refusals may be made up itself (a P-frame the damage
+        // began in), and the B-frames shown before it are decoded after it: all of them.
         const int lastShown = frameAt(d.after_s);
-        return n > lastShown - reorderFrames;
+        return n >= lastShown - reorderFrames;
     });
 }
 

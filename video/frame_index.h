@@ -86,8 +86,8 @@ struct FrameIndex {
     // Whether frame n is decoded from pictures a damaged stretch took: it follows the stretch's
     // start with no keyframe after the stretch between (a codec that codes each picture alone
     // flags every frame a keyframe; a keyframe within the stretch may be damaged itself), or it is
-    // one of the B-frames shown just before it. Its picture is what the decoder made up for the
-    // lost ones. False when the keyframes are not known.
+    // the last picture given before it or one of the B-frames shown just before that. Its picture
+    // is what the decoder made up for the lost ones. False when the keyframes are not known.
     bool decodedAcrossDamage(int n) const;
 };
 
