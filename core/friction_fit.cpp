@@ -348,7 +348,7 @@ std::vector<std::size_t> steadilySliding(const std::vector<std::size_t>& rows, c
             const double centre = median(dev);
             for (double& e : dev)
                 e = std::fabs(e - centre);
-            const double spread = 1.4826 * median(dev);
+            const double spread = robustSigma(std::move(dev));
             if (!(spread > 0.0))
                 break;
             std::vector<std::size_t> next;
@@ -922,25 +922,26 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // no single stiffness follows it: C was 20-27 % off there, at 2.5-3x the noise, against at
     // most 1.0x for every run whose C was right.)
     {
-        double top[2] = {0.0, 0.0}, sum[2] = {0.0, 0.0};
-        std::size_t count[2] = {0, 0};
-        for (std::size_t r = 0; r < rows.size(); ++r) {
-            const int d = v[rows[r]] > 0.0 ? 0 : 1;
-            sum[d] += res(Eigen::Index(r)) * res(Eigen::Index(r));
-            count[d] += 1;
-            top[d] = std::max(top[d], std::fabs(f[rows[r]]));
-        }
-        double uncheckedSum[2] = {0.0, 0.0};
-        std::size_t uncheckedCount[2] = {0, 0};
-        if (unchecked)
-            for (std::size_t r = 0; r < beforeSteady.size(); ++r) {
-                const int d = v[beforeSteady[r]] > 0.0 ? 0 : 1;
-                uncheckedSum[d] += unchecked->res(Eigen::Index(r)) * unchecked->res(Eigen::Index(r));
-                uncheckedCount[d] += 1;
+        // Each direction's rms residual of a solution over the rows it was solved on.
+        auto rmsByDirection = [&](const std::vector<std::size_t>& on, const Eigen::VectorXd& r, double out[2]) {
+            double sum[2] = {0.0, 0.0};
+            std::size_t count[2] = {0, 0};
+            for (std::size_t k = 0; k < on.size(); ++k) {
+                const int d = v[on[k]] > 0.0 ? 0 : 1;
+                sum[d] += r(Eigen::Index(k)) * r(Eigen::Index(k));
+                count[d] += 1;
             }
+            for (int d : {0, 1})
+                out[d] = std::sqrt(sum[d] / double(std::max<std::size_t>(1, count[d])));
+        };
+        double top[2] = {0.0, 0.0}, checked[2], all[2] = {0.0, 0.0};
+        for (std::size_t i : rows)
+            top[v[i] > 0.0 ? 0 : 1] = std::max(top[v[i] > 0.0 ? 0 : 1], std::fabs(f[i]));
+        rmsByDirection(rows, res, checked);
+        if (unchecked)
+            rmsByDirection(beforeSteady, unchecked->res, all);
         for (int d : {0, 1}) {
-            const double rms = std::max(std::sqrt(sum[d] / double(std::max<std::size_t>(1, count[d]))),
-                                        std::sqrt(uncheckedSum[d] / double(std::max<std::size_t>(1, uncheckedCount[d]))));
+            const double rms = std::max(checked[d], all[d]);
             (d == 0 ? fit.residualToNoiseP : fit.residualToNoiseN) = c.noise_N > 0.0 ? rms / c.noise_N : 0.0;
             shapeLeft[d] = rms > kShapeToNoise * c.noise_N && rms > 0.002 * top[d];
         }
