@@ -42,7 +42,11 @@ public:
             reader_ = std::make_unique<FrameReader>(std::move(index), 96);
             emit opened(path, shared);
         } catch (const VideoError& e) {
-            emit failed(path, e.message());
+            // An index stopped because another open was asked is no failure of the file, and the
+            // file asked for next may be this same one (the run's own video attached again while
+            // it was still indexed): "no frame could be decoded" undid that attach.
+            if (!cancel->load())
+                emit failed(path, e.message());
         }
     }
 
