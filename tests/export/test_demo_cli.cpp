@@ -29,13 +29,19 @@ class TestDemoCli : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     QString demo_;
+    nbtest::CliResult demoRun_;
 
 private slots:
-    void initTestCase() { demo_ = QDir(dir_.path()).filePath(QStringLiteral("demo")); }
+    // One demo for every function, made here so that each can be run alone.
+    void initTestCase()
+    {
+        demo_ = QDir(dir_.path()).filePath(QStringLiteral("demo"));
+        demoRun_ = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), demo_});
+    }
 
     void demoRunsAShortSession()
     {
-        const nbtest::CliResult r = run({QStringLiteral("demo"), QStringLiteral("--short"), QStringLiteral("--out"), demo_});
+        const nbtest::CliResult& r = demoRun_;
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
         QVERIFY(r.out.contains(QStringLiteral("simulated run_001_linear.csv")));
         QVERIFY(r.out.contains(QStringLiteral("Where everything went")));

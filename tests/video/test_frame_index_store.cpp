@@ -157,6 +157,7 @@ private slots:
 
     void aChangedVideoIsIndexedAgain()
     {
+        loadOrBuildFrameIndex(video_, {}, nullptr, nullptr, store_);  // stored, if no function before did
         QVERIFY(loadStoredFrameIndex(video_, store_));
         const QString other = dir_.filePath(QStringLiteral("other.mp4"));
         VideoSpec spec;
