@@ -442,6 +442,7 @@ private slots:
         std::shared_ptr<nb::devices::sim::SimulatedRig> rig;
         nb::MainWindow w(options(tmp.filePath(QStringLiteral("s")), true, &rig));
         w.show();
+        w.activateWindow();  // under X without a window manager (xvfb-run) nothing else does
         QVERIFY(QTest::qWaitForWindowActive(&w));
         setLinear(w, 5.0, 60.0);
         nbtest::prepareToRecord(w);
