@@ -19,7 +19,6 @@ namespace nb {
 Timeline::Timeline(LabelModel* model, QUndoStack* undo, QWidget* parent) : QWidget(parent), model_(model), undo_(undo)
 {
     setMouseTracking(true);
-    setMinimumHeight(60);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     connect(model_, &LabelModel::labelsChanged, this, [this] {
         updateGeometry();
@@ -31,6 +30,10 @@ Timeline::Timeline(LabelModel* model, QUndoStack* undo, QWidget* parent) : QWidg
 }
 
 QSize Timeline::sizeHint() const { return {600, 8 + rowHeight() * int(std::max<qsizetype>(1, model_->tracks().size())) + 18}; }
+
+// Never less than the tracks and the time axis under them: with the sync's plot shown at
+// 1366x768 the layout gave it 60 px of 70, and the axis numbers were cut off.
+QSize Timeline::minimumSizeHint() const { return {160, sizeHint().height()}; }
 
 void Timeline::setRange(double s, double e)
 {

@@ -32,6 +32,7 @@ public:
     // A started interval not yet closed (shown dashed), or none.
     void setPending(const QString& track, const QString& label, std::optional<double> start);
     QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
 
     // Geometry, public for tests that drive the mouse.
     int xOf(double t) const;

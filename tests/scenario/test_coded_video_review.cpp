@@ -18,6 +18,7 @@
 #include "video/video_fixtures.h"
 #include "widgets/control_panel.h"
 #include "widgets/review_workspace.h"
+#include "widgets/timeline.h"
 #include "widgets/video_view.h"
 
 #include <QAbstractButton>
@@ -294,6 +295,15 @@ private slots:
             QVERIFY(synced.wait(120000));
             qInfo("%s: the stage %s when the sync ended", qPrintable(language), p->interlockState().moving ? "still moved" : "had stopped");
             QVERIFY(review->pendingSync());
+            // With the sync's correlation plot shown at the laptop's size, the label timeline keeps
+            // the height its tracks and time axis need: it was squeezed to 60 px of 70, its axis
+            // numbers cut off under the tracks.
+            QCoreApplication::processEvents();
+            QVERIFY2(review->timeline()->height() >= review->timeline()->sizeHint().height(),
+                     qPrintable(QStringLiteral("%1: the timeline has %2 px of the %3 it needs")
+                                    .arg(language)
+                                    .arg(review->timeline()->height())
+                                    .arg(review->timeline()->sizeHint().height())));
             const nb::SyncResult found = *review->pendingSync();
             qInfo("%s: found %.4f s (true %.4f s, %+.2f frames), confidence %.2f, coded pictures %.1f ms late", qPrintable(language),
                   found.offset_s, kOffset_s, (found.offset_s - kOffset_s) * kFps, found.confidence, 1000.0 * found.pictureLag_s);
