@@ -170,11 +170,18 @@ void Timeline::paintEvent(QPaintEvent*)
     const double minStep = span * 60.0 / std::max(1, axisWidth());
     const double decade = std::pow(10.0, std::floor(std::log10(std::max(minStep, 1e-6))));
     const double step = minStep <= decade ? decade : minStep <= 2 * decade ? 2 * decade : minStep <= 5 * decade ? 5 * decade : 10 * decade;
+    // The numbers are not clipped to the axis: the last one (10 of 0-10 s) begins at the axis'
+    // end and was cut to its first digit. Each is written right of its tick, or left of it where
+    // the widget ends first.
+    p.setClipping(false);
     for (double t = std::ceil(start_ / step) * step; t <= end_; t += step) {
         const int x = xOf(t);
         p.drawLine(x, axisY, x, axisY + 4);
-        p.drawText(x + 2, axisY + 14, QString::number(std::abs(t) < 1e-9 * step ? 0.0 : t, 'g', 6));
+        const QString text = QString::number(std::abs(t) < 1e-9 * step ? 0.0 : t, 'g', 6);
+        const int textWidth = fontMetrics().horizontalAdvance(text);
+        p.drawText(x + 2 + textWidth <= width() ? x + 2 : x - 2 - textWidth, axisY + 14, text);
     }
+    p.setClipping(true);
     p.setPen(QPen(QColor(220, 0, 0), 2));
     p.drawLine(xOf(cursor_), 0, xOf(cursor_), height());
 }

@@ -17,6 +17,37 @@ nb::Label phase(const char* name, double start_s, double end_s) { return {QStrin
 class TestTimeline : public QObject {
     Q_OBJECT
 private slots:
+private slots:
+    void theLastTimeIsWrittenWhole()
+    {
+        // Under the force plot the axis ends where the plot's does, before the widget's edge: the
+        // last number (10 of 0-10 s) was clipped at the axis' end to a sliver of its first digit.
+        nb::LabelModel model;
+        model.setDefinitions(nb::protocolLabelSet(QStringLiteral("friction")));
+        QUndoStack undo;
+        nb::Timeline timeline(&model, &undo);
+        timeline.resize(800, timeline.sizeHint().height());
+        timeline.setRange(0.0, 10.0);
+        // Ink columns beside a tick, in the numbers' band at the bottom.
+        auto inkColumns = [&timeline](double t, bool right) {
+            const QImage image = timeline.grab().toImage();
+            const int x = timeline.xOf(t);
+            int columns = 0;
+            for (int c = right ? x + 1 : x - 30; c < (right ? x + 30 : x); ++c) {
+                bool ink = false;
+                for (int y = image.height() - 14; y < image.height() && c >= 0 && c < image.width(); ++y)
+                    ink = ink || qGray(image.pixel(c, y)) < 128;
+                columns += ink;
+            }
+            return columns;
+        };
+        timeline.setAxisPixels(80, 800 - 80 - 50);  // room after the axis, as under the plot
+        const int eight = inkColumns(8.0, true), ten = inkColumns(10.0, true);
+        QVERIFY2(eight > 0 && ten > eight, qPrintable(QStringLiteral("ink columns: '8' %1, '10' %2").arg(eight).arg(ten)));
+        timeline.setAxisPixels(80, 800 - 80);  // none: written left of its tick, within the widget
+        QVERIFY2(inkColumns(10.0, false) > eight, qPrintable(QStringLiteral("ink columns left of the end: %1").arg(inkColumns(10.0, false))));
+    }
+
     void namesNeverOverlap()
     {
         nb::LabelModel model;
