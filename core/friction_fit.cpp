@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 #include <QCoreApplication>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <random>
@@ -923,9 +924,9 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
     // most 1.0x for every run whose C was right.)
     {
         // Each direction's rms residual of a solution over the rows it was solved on.
-        auto rmsByDirection = [&](const std::vector<std::size_t>& on, const Eigen::VectorXd& r, double out[2]) {
-            double sum[2] = {0.0, 0.0};
-            std::size_t count[2] = {0, 0};
+        auto rmsByDirection = [&](const std::vector<std::size_t>& on, const Eigen::VectorXd& r) {
+            std::array<double, 2> sum{0.0, 0.0}, out{0.0, 0.0};
+            std::array<std::size_t, 2> count{0, 0};
             for (std::size_t k = 0; k < on.size(); ++k) {
                 const int d = v[on[k]] > 0.0 ? 0 : 1;
                 sum[d] += r(Eigen::Index(k)) * r(Eigen::Index(k));
@@ -933,13 +934,15 @@ FrictionFit fitFriction(const Run& run, const FrictionOptions& givenOptions, con
             }
             for (int d : {0, 1})
                 out[d] = std::sqrt(sum[d] / double(std::max<std::size_t>(1, count[d])));
+            return out;
         };
-        double top[2] = {0.0, 0.0}, checked[2], all[2] = {0.0, 0.0};
-        for (std::size_t i : rows)
-            top[v[i] > 0.0 ? 0 : 1] = std::max(top[v[i] > 0.0 ? 0 : 1], std::fabs(f[i]));
-        rmsByDirection(rows, res, checked);
-        if (unchecked)
-            rmsByDirection(beforeSteady, unchecked->res, all);
+        double top[2] = {0.0, 0.0};
+        for (std::size_t i : rows) {
+            const int d = v[i] > 0.0 ? 0 : 1;
+            top[d] = std::max(top[d], std::fabs(f[i]));
+        }
+        const std::array<double, 2> checked = rmsByDirection(rows, res);
+        const std::array<double, 2> all = unchecked ? rmsByDirection(beforeSteady, unchecked->res) : std::array<double, 2>{0.0, 0.0};
         for (int d : {0, 1}) {
             const double rms = std::max(checked[d], all[d]);
             (d == 0 ? fit.residualToNoiseP : fit.residualToNoiseN) = c.noise_N > 0.0 ? rms / c.noise_N : 0.0;

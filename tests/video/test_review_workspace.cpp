@@ -918,40 +918,38 @@ private slots:
         // The run's own video (RUN.avi beside it) is still being indexed when the operator
         // attaches that same file, or opens the run again: the first indexing, stopped, said "no
         // frame could be decoded" of the file now asked for, and the attach was undone. Copies in
-        // a folder of their own, so no index is stored for them yet.
-        QTemporaryDir fresh;
-        QVERIFY(fresh.isValid());
-        const QString run = fresh.filePath("run.csv"), video = fresh.filePath("run.avi");
-        QVERIFY(QFile::copy(run_, run) && QFile::copy(video_, video));
+        // folders of their own, so no index is stored for them yet.
+        QTemporaryDir fresh, other;
+        QVERIFY(fresh.isValid() && other.isValid());
+        for (const QTemporaryDir* d : {&fresh, &other})
+            QVERIFY(QFile::copy(run_, d->filePath("run.csv")) && QFile::copy(video_, d->filePath("run.avi")));
         nb::ReviewWorkspace ws;
         ws.resize(1280, 820);
         ws.show();
         QSignalSpy opened(&ws, &nb::ReviewWorkspace::videoOpened);
         QSignalSpy failed(ws.decoder(), &nb::video::VideoDecoder::failed);
+        auto saidFailed = [&failed] { return failed.isEmpty() ? QString() : failed.first().first().toString(); };
+        const QString run = fresh.filePath("run.csv"), video = QFileInfo(fresh.filePath("run.avi")).absoluteFilePath();
         QVERIFY(ws.openRun(run));
-        QCOMPARE(ws.videoPath(), QFileInfo(video).absoluteFilePath());
+        QCOMPARE(ws.videoPath(), video);
         QVERIFY(ws.attachVideo(video));  // before the first indexing has answered
         QVERIFY(opened.wait(60000));
         QTest::qWait(500);  // anything the stopped indexing still had to say
-        QVERIFY2(failed.isEmpty(), qPrintable(failed.isEmpty() ? QString() : failed.first().first().toString()));
+        QVERIFY2(failed.isEmpty(), qPrintable(saidFailed()));
         QVERIFY2(!ws.status().contains(QStringLiteral("not attached")), qPrintable(ws.status()));
         const auto link = nb::readRunVideoLink(run);
         QVERIFY(link);
-        QCOMPARE(link->video, QFileInfo(video).absoluteFilePath());
+        QCOMPARE(link->video, video);
 
-        // Another copy opened twice in a row, as a double-click that lands twice: its video is
+        // The other copy opened twice in a row, as a double-click that lands twice: its video is
         // shown, and nothing is said to be wrong with it.
-        QTemporaryDir other;
-        QVERIFY(other.isValid());
-        const QString run2 = other.filePath("run.csv"), video2 = other.filePath("run.avi");
-        QVERIFY(QFile::copy(run_, run2) && QFile::copy(video_, video2));
         opened.clear();
-        QVERIFY(ws.openRun(run2) && ws.openRun(run2));
+        QVERIFY(ws.openRun(other.filePath("run.csv")) && ws.openRun(other.filePath("run.csv")));
         QVERIFY(opened.wait(60000));
         QTest::qWait(500);
-        QVERIFY2(failed.isEmpty(), qPrintable(failed.isEmpty() ? QString() : failed.first().first().toString()));
+        QVERIFY2(failed.isEmpty(), qPrintable(saidFailed()));
         QVERIFY2(!ws.videoView()->message().contains(QStringLiteral("decoded")), qPrintable(ws.videoView()->message()));
-        QCOMPARE(ws.videoPath(), QFileInfo(video2).absoluteFilePath());
+        QCOMPARE(ws.videoPath(), QFileInfo(other.filePath("run.avi")).absoluteFilePath());
     }
 
     void aVideoThatFailsToOpenIsNotAttached()
