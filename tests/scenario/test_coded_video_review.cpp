@@ -26,6 +26,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QProcess>
@@ -532,6 +533,54 @@ private slots:
             }
         }
         expectEndedWhole(w);
+    }
+
+    // The operator opens a run in Review while the stage moves; its own video (RUN.avi beside
+    // it) starts indexing, and before it has answered they choose that same file through
+    // Open video…, as one does who has not noticed it was found already. The stopped first
+    // indexing said "no frame could be decoded" of it, and the window undid the attach of a good
+    // video. The video is shown, nothing is said to be wrong with it, the run keeps it after a
+    // restart, and the insertion recorded meanwhile loses no sample.
+    void runsOwnVideoChosenWhileItIsIndexed()
+    {
+        const QString sessionDir = session_ + QStringLiteral("_own");
+        const QString sine = sessionWithSine(sessionDir, sine_, QStringLiteral("en"));
+        QVERIFY(!sine.isEmpty());
+        // A copy no index is stored for yet, so that its indexing takes a while.
+        const QString own = QFileInfo(QDir(sessionDir).filePath(QStringLiteral("run_001_sine.avi"))).absoluteFilePath();
+        QFile::remove(own);
+        QVERIFY(QFile::copy(video_, own));
+        {
+            const auto window = shownAtLaptopSize(sessionDir);
+            QVERIFY(window);
+            nb::MainWindow& w = *window;
+            startSlowInsertion(w);
+            if (QTest::currentTestFailed())
+                return;
+            nb::ReviewWorkspace* review = w.reviewWorkspace();
+            QSignalSpy opened(review, &nb::ReviewWorkspace::videoOpened);
+            QSignalSpy failed(review->decoder(), &nb::video::VideoDecoder::failed);
+            w.reviewRun(sine);
+            QCOMPARE(review->videoPath(), own);
+            QVERIFY2(opened.isEmpty(), "the video answered before it could be chosen again: no indexing to overlap");
+            review->chooseVideo();
+            QFileDialog* chooser = nullptr;
+            QTRY_VERIFY((chooser = w.findChild<QFileDialog*>()) && chooser->isVisible());
+            chooser->selectFile(own);
+            static_cast<QDialog*>(chooser)->accept();  // Open, as the button does
+            QVERIFY(opened.count() > 0 || opened.wait(60000));
+            QTest::qWait(500);  // anything the stopped indexing still had to say
+            QVERIFY2(failed.isEmpty(), qPrintable(failed.isEmpty() ? QString() : failed.first().first().toString()));
+            QVERIFY2(!review->status().contains(QStringLiteral("not attached")), qPrintable(review->status()));
+            QVERIFY2(!review->videoView()->message().contains(QStringLiteral("decoded")), qPrintable(review->videoView()->message()));
+            QCOMPARE(review->videoPath(), own);
+            QVERIFY(w.controlPanel()->interlockState().moving);
+            nbtest::endRun(w);
+            expectEndedWhole(w);
+        }
+        const auto restarted = reopened(sessionDir, sine);
+        QVERIFY(restarted);
+        QCOMPARE(restarted->reviewWorkspace()->videoPath(), own);
     }
 };
 
