@@ -125,9 +125,13 @@ void startSlowInsertion(nb::MainWindow& w)
     QTRY_VERIFY_WITH_TIMEOUT(p->interlockState().moving && p->interlockState().recording, 20000);
 }
 
-// The window's first run, once ended, has no gap between samples wider than 1.5 ms.
+// The window's first run, ended by the operator (Stop, End run) where it still records, has
+// no gap between samples wider than 1.5 ms. Its 27 s insertion is not waited out: the sample
+// lost, if any, was lost while the video was worked on, which is over by now.
 void expectEndedWhole(nb::MainWindow& w)
 {
+    if (w.runsEnded() == 0)
+        nbtest::endRun(w);
     QTRY_COMPARE_WITH_TIMEOUT(w.runsEnded(), 1, 90000);
     const nb::Run recorded = nb::readRunFile(w.lastRunPath()).run;
     QVERIFY(recorded.size() > 1000);
@@ -575,7 +579,6 @@ private slots:
             QVERIFY2(!review->videoView()->message().contains(QStringLiteral("decoded")), qPrintable(review->videoView()->message()));
             QCOMPARE(review->videoPath(), own);
             QVERIFY(w.controlPanel()->interlockState().moving);
-            nbtest::endRun(w);
             expectEndedWhole(w);
         }
         const auto restarted = reopened(sessionDir, sine);
