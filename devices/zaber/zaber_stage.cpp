@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDebug>
 #include <QThread>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -15,6 +16,11 @@ using namespace zaber;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+
+// How far ahead on the sine each waypoint lies: several read-backs (the engine reads the stage
+// once per batch of samples, every 10-20 ms), so that the stage is steered again well before it
+// arrives, and short enough that the chase cuts little off the sine's turning points.
+constexpr double kSineLookahead_s = 0.08;
 
 double nowSeconds()
 {
@@ -195,8 +201,6 @@ void ZaberStage::moveSine(const SineMotion& motion)
     sineCentre_ = config_.units.mm(pos.data.toDouble());
     if (sineCentre_ - motion.amplitude_mm < config_.minPosition_mm || sineCentre_ + motion.amplitude_mm > config_.maxPosition_mm)
         fail(nb::TrDevices::tr("sine of %1 mm around %2 mm leaves the travel").arg(motion.amplitude_mm).arg(sineCentre_));
-    // Velocity moves accelerate at the controller's own limit; give them headroom.
-    request("set maxspeed " + QByteArray::number(qlonglong(config_.units.speedData(config_.maxSpeed_mm_s))));
     sine_ = motion;
     sineStart_s_ = nowSeconds();
     sineActive_ = true;
@@ -213,12 +217,21 @@ void ZaberStage::steerSine(double now_s, double position_mm)
         request("move abs " + QByteArray::number(qlonglong(config_.units.steps(sineCentre_))));
         return;
     }
-    // Feed-forward velocity plus a proportional correction of the position error, so the
-    // stream of velocity commands does not drift from x(t) = centre + A sin(wt).
-    const double wanted = sineCentre_ + sine_.amplitude_mm * std::sin(w * t);
-    const double v = sine_.amplitude_mm * w * std::cos(w * t) + 5.0 * (wanted - position_mm);
-    const double limited = std::clamp(v, -config_.maxSpeed_mm_s, config_.maxSpeed_mm_s);
-    request("move vel " + QByteArray::number(qlonglong(config_.units.speedData(limited))));
+    // The sine is streamed as a chase of waypoints on it: each read-back sends the stage to where
+    // the sine will be a short while ahead (or to the turning point, where one comes first), at
+    // the speed that gets it there then. The controller stops at the waypoint by itself, so a
+    // host that stops steering (a stalled thread, a busy machine, a crash) leaves the needle
+    // inside the sine's travel. A stream of velocities ran on at the last one: 1.73 mm on a sine
+    // of ±1 mm, seen on a busy machine.
+    const double halfPeriod_s = 0.5 / sine_.frequency_hz;
+    const double nextTurn_s = (std::floor((t - 0.5 * halfPeriod_s) / halfPeriod_s) + 1.5) * halfPeriod_s;
+    const double at_s = std::min({t + kSineLookahead_s, nextTurn_s, sine_.cycles / sine_.frequency_hz});
+    const double waypoint = sineCentre_ + sine_.amplitude_mm * std::sin(w * at_s);
+    // Not faster than the lookahead allows when the turning point is all but reached.
+    const double speed = std::min(std::abs(waypoint - position_mm) / std::max(at_s - t, kSineLookahead_s / 8.0), config_.maxSpeed_mm_s);
+    // The controller takes no speed below one unit of its own.
+    request("set maxspeed " + QByteArray::number(std::max<qlonglong>(1, qlonglong(config_.units.speedData(speed)))));
+    request("move abs " + QByteArray::number(qlonglong(config_.units.steps(waypoint))));
 }
 
 void ZaberStage::stop()

@@ -34,7 +34,8 @@ public:
     void enable(bool on) override;
     void zero() override;
     void moveLinear(const LinearMotion& motion) override;
-    // Host-streamed: state() sends a velocity command tracking x(t) on every poll.
+    // Host-streamed: each state() sends the stage on to a waypoint a little ahead on x(t), where
+    // it stops by itself if no state() follows.
     void moveSine(const SineMotion& motion) override;
     void stop() override;
     void emergencyStop() override;

@@ -6,7 +6,11 @@
 #include <QElapsedTimer>
 #include <QTest>
 #include <QThread>
+#include <algorithm>
+#include <cmath>
 #include <memory>
+#include <numbers>
+#include <vector>
 
 using namespace nb::devices;
 using nb::test::ZaberEmulator;
@@ -119,18 +123,53 @@ private slots:
         QCOMPARE(s.state().position_mm, at);
     }
 
-    void sineIsStreamedAsVelocityCommands()
+    // Streamed as waypoints on the sine, chased from read-back to read-back: it reaches close to
+    // both turning points and never past them.
+    void sineIsStreamedAsWaypoints()
     {
         ZaberStage s(config());
         s.enable(true);
         s.zero();
         s.moveSine({1.0, 1.0, 1});
+        QElapsedTimer clock;
+        clock.start();
+        std::vector<double> seen;
+        double worst_mm = 0.0;  // from the sine at the time of each read-back
+        for (bool moving = true; moving && clock.elapsed() < 5000; QThread::msleep(20)) {
+            const double t = clock.nsecsElapsed() * 1e-9;
+            const StageState st = s.state();
+            seen.push_back(st.position_mm);
+            moving = st.moving;
+            if (t < 1.0)
+                worst_mm = std::max(worst_mm, std::abs(st.position_mm - std::sin(2.0 * std::numbers::pi * t)));
+        }
+        const auto [lo, hi] = std::minmax_element(seen.begin(), seen.end());
+        // How closely it follows depends on how promptly it is read back (a figure, not a bound:
+        // 0.07 mm on a quiet machine, the read-back's own three requests at 6.3 mm/s).
+        qInfo("reached %+.3f and %+.3f mm of ±1 mm, at most %.3f mm from the sine", *lo, *hi, worst_mm);
+        QVERIFY2(*hi > 0.9 && *hi <= 1.0 + 1e-3, qPrintable(QString::number(*hi)));
+        QVERIFY2(*lo < -0.9 && *lo >= -1.0 - 1e-3, qPrintable(QString::number(*lo)));
+        QVERIFY(emu_->absoluteMoves() > 10);
+        QCOMPARE(emu_->velocityCommands(), 0);
+        QVERIFY(std::abs(seen.back()) < 1e-3);  // ends back at the centre
+    }
+
+    // The host stops steering at the sine's fastest (a stalled thread, a machine busy with other
+    // work): the stage stops at the waypoint it was sent to, on the sine. A stream of velocities
+    // ran on at 6.3 mm/s, 2.5 mm past the centre in the 0.4 s, on a sine of ±1 mm.
+    void aHostThatStopsSteeringLeavesTheNeedleInsideTheSine()
+    {
+        ZaberStage s(config());
+        s.enable(true);
+        s.zero();
+        s.moveSine({1.0, 1.0, 1});  // from the centre at its top speed
+        QThread::msleep(400);
+        const double stalledAt = s.state().position_mm;
+        QVERIFY2(stalledAt > 0.0 && stalledAt <= 1.0, qPrintable(QString::number(stalledAt)));
         const auto seen = pollUntilIdle(s);
         const auto [lo, hi] = std::minmax_element(seen.begin(), seen.end());
-        QVERIFY2(*hi > 0.5 && *hi < 1.5, qPrintable(QString::number(*hi)));
-        QVERIFY2(*lo < -0.5 && *lo > -1.5, qPrintable(QString::number(*lo)));
-        QVERIFY(emu_->velocityCommands() > 10);
-        QVERIFY(std::abs(seen.back()) < 1e-3);  // ends back at the centre
+        QVERIFY2(*hi <= 1.0 + 1e-3 && *lo >= -1.0 - 1e-3, qPrintable(QStringLiteral("%1 .. %2").arg(*lo).arg(*hi)));
+        QVERIFY(std::abs(seen.back()) < 1e-3);
     }
 
     void noiseOnTheLineIsSkipped()

@@ -195,6 +195,7 @@ QByteArray ZaberEmulator::answer(const QByteArray& line)
         if (words[1] == "abs") {
             if (v < lo || v > hi)
                 return reject("BADDATA");
+            ++absoluteMoves_;
             target_ = v;
             mode_ = Mode::Absolute;
         } else {

@@ -41,6 +41,7 @@ public:
     double position_mm() const;
     int commands() const { return commands_; }
     int velocityCommands() const { return velocityCommands_; }
+    int absoluteMoves() const { return absoluteMoves_; }
 
 private:
     void run();
@@ -54,7 +55,7 @@ private:
     int master_ = -1, slave_ = -1;
     std::thread thread_;
     std::atomic<bool> quit_{false}, silent_{false}, noise_{false};
-    std::atomic<int> commands_{0}, velocityCommands_{0};
+    std::atomic<int> commands_{0}, velocityCommands_{0}, absoluteMoves_{0};
     mutable std::mutex mutex_;
     enum class Mode { Idle, Absolute, Velocity } mode_ = Mode::Idle;
     double pos_ = 0.0;             // micro-steps
